@@ -1,0 +1,15 @@
+#pragma once
+// The subcommands of maze_mapper. Each add_*_command registers its options and a callback
+// with CLI11; the callback does the work and stores the process exit status in `status`.
+// User errors are thrown as common::InputError and reported by main().
+
+#include <CLI/CLI.hpp>
+
+namespace app {
+
+struct CommandContext {
+  int status = 0;  // exit status of the command that ran
+};
+
+
+}  // namespace app

@@ -1,0 +1,64 @@
+// maze_mapper: map a maze cell by cell into a 4D log-odds occupancy grid (see README.md).
+// This is the composition root: the only place that wires the world side to the controller.
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "common/error.hpp"
+
+namespace {
+
+constexpr int kExitUsage = 2;
+constexpr int kExitFailure = 1;
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot and map it into a "
+               "4D log-odds occupancy grid",
+               "maze_mapper"};
+  cli.set_version_flag("--version", std::string(MAZE_MAPPER_VERSION));
+  cli.require_subcommand(0, 1);
+
+  app::CommandContext context;
+
+  try {
+    cli.parse(argc, argv);
+    std::cout.flush();
+    if (!std::cout) {
+      fmt::print(stderr, "error: could not write to standard output\n");
+      return kExitFailure;
+    }
+    return context.status;
+  } catch (const CLI::CallForHelp &e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp &e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion &e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError &e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitUsage;
+  } catch (const common::InputError &e) {
+    std::cout.flush();
+    fmt::print(stderr, "{}\n", e.diagnostic());
+    return kExitUsage;
+  } catch (const common::RuntimeFailure &e) {
+    std::cout.flush();
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitFailure;
+  } catch (const std::bad_alloc &) {
+    fmt::print(stderr, "error: out of memory\n");
+    return kExitFailure;
+  } catch (const std::exception &e) {
+    fmt::print(stderr, "error: internal failure: {}\n", e.what());
+    return kExitFailure;
+  }
+}

@@ -1,0 +1,134 @@
+#pragma once
+// The occupancy grid: a 4D array of log-odds, H rows x W columns of cells x K x K sub-cells.
+//
+// Storage: cell (x, y) at row-major cell index y * W + x; the K * K sub-cells of one cell are
+// contiguous, row i (from the north) then column j (from the west). So one cell's matrix is
+// a K x K row-major block that prints north-up as it is stored.
+//
+// Values are log-odds in the sensor model's base, starting at l(prior).
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mapping/grid_types.hpp"
+
+namespace mapping {
+
+// Where the grid lies in the world and how it is cut.
+struct GridGeometry {
+  int width_cells = 0;   // W, 1 ... 4096
+  int height_cells = 0;  // H, 1 ... 4096
+  int subcells = 3;      // K, odd, 3 ... 9
+  double cell_size_m = 1.0;
+  Point origin;          // world position of the south-west corner of cell (0, 0)
+
+  double subcell_size_m() const { return cell_size_m / subcells; }
+  int width_subcells() const { return width_cells * subcells; }
+  int height_subcells() const { return height_cells * subcells; }
+};
+
+inline constexpr int kMinSubcells = 3;
+inline constexpr int kMaxSubcells = 9;
+inline constexpr int kMaxCellsPerSide = 4096;
+
+// Bytes the grid of this geometry takes (values and the per-scan update marker).
+std::uint64_t grid_bytes(const GridGeometry &geometry);
+
+// Throws common::InputError when the geometry is unusable: K even or outside 3 ... 9, a side
+// outside 1 ... 4096 cells, a cell size that is not a positive finite number, or a grid that
+// would take more than max_bytes (the message says how much it would take).
+void validate(const GridGeometry &geometry, std::uint64_t max_bytes);
+
+inline constexpr std::uint64_t kDefaultMaxGridBytes = std::uint64_t{4} << 30;  // 4 GiB
+
+using CellMatrix = Eigen::Map<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>;
+
+class OccupancyGrid {
+ public:
+  // Validates the geometry (throws common::InputError) before allocating anything.
+  OccupancyGrid(const GridGeometry &geometry, float initial_log_odds,
+                std::uint64_t max_bytes = kDefaultMaxGridBytes);
+
+  const GridGeometry &geometry() const { return geometry_; }
+  int width() const { return geometry_.width_cells; }
+  int height() const { return geometry_.height_cells; }
+  int k() const { return geometry_.subcells; }
+
+  bool contains(Cell c) const {
+    return c.x >= 0 && c.y >= 0 && c.x < geometry_.width_cells && c.y < geometry_.height_cells;
+  }
+  bool contains(SubCell s) const {
+    return s.x >= 0 && s.y >= 0 && s.x < geometry_.width_subcells() &&
+           s.y < geometry_.height_subcells();
+  }
+
+  // Flat index of a sub-cell in the 4D array; the argument must be inside the grid.
+  std::size_t index(Cell c, LocalSubCell s) const {
+    const auto k = static_cast<std::size_t>(geometry_.subcells);
+    const auto cell = static_cast<std::size_t>(c.y) * static_cast<std::size_t>(geometry_.width_cells) +
+                      static_cast<std::size_t>(c.x);
+    return (cell * k + static_cast<std::size_t>(s.i)) * k + static_cast<std::size_t>(s.j);
+  }
+  std::size_t index(SubCell s) const { return index(cell_of(s, k()), local_of(s, k())); }
+
+  float at(Cell c, LocalSubCell s) const { return values_[index(c, s)]; }
+  float at(SubCell s) const { return values_[index(s)]; }
+  float &at(Cell c, LocalSubCell s) { return values_[index(c, s)]; }
+  float &at(SubCell s) { return values_[index(s)]; }
+  float at_index(std::size_t flat) const { return values_[flat]; }
+  float &at_index(std::size_t flat) { return values_[flat]; }
+
+  // One cell's K x K log-odds, row 0 = north band, column 0 = west band.
+  CellMatrix cell_matrix(Cell c) const;
+
+  // The sub-cell containing a world point, or nothing when the point is outside the grid.
+  std::optional<SubCell> subcell_at(Point p) const;
+  // The world position of a sub-cell's centre.
+  Point centre_of(SubCell s) const;
+  Point centre_of(Cell c) const;
+
+  std::span<const float> values() const { return values_; }
+  std::size_t size() const { return values_.size(); }
+
+ private:
+  friend class ScanUpdate;
+  GridGeometry geometry_;
+  std::vector<float> values_;
+  std::vector<std::uint32_t> marks_;  // per-scan update marker, see ScanUpdate
+  std::uint32_t epoch_ = 0;
+};
+
+class SensorModel;
+
+// Gather, then apply (DESIGN §3): a scan marks the sub-cells it saw free and the ones it
+// saw occupied; occupied wins; apply() then gives each marked sub-cell exactly one update.
+// Marks outside the grid are ignored. One ScanUpdate serves many scans; apply() clears it.
+class ScanUpdate {
+ public:
+  void mark_free(std::size_t flat_index) { free_.push_back(flat_index); }
+  void mark_occupied(std::size_t flat_index) { occupied_.push_back(flat_index); }
+
+  // Applies every mark once and returns how many sub-cells were updated.
+  std::size_t apply(OccupancyGrid &grid, const SensorModel &model);
+
+  // Applies custom increments (models with their own p's): occupied wins over free.
+  std::size_t apply(OccupancyGrid &grid, const SensorModel &model, double free_increment,
+                    double occupied_increment);
+
+  bool empty() const { return free_.empty() && occupied_.empty(); }
+  void clear() {
+    free_.clear();
+    occupied_.clear();
+  }
+
+ private:
+  std::vector<std::size_t> free_;
+  std::vector<std::size_t> occupied_;
+};
+
+}  // namespace mapping

@@ -1,0 +1,108 @@
+#pragma once
+// The true maze: W x H cells, a wall flag on every cell side, a start, goals and the
+// physical set-up. This is the world side; the controller never sees it.
+//
+// Cells (x, y): column x from the west (0 ... W-1), row y from the south (0 ... H-1).
+// A wall between two cells is stored once, so the two sides always agree.
+
+#include <compare>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+namespace maze {
+
+struct Cell {
+  int x = 0;
+  int y = 0;
+  friend constexpr auto operator<=>(const Cell &, const Cell &) = default;
+};
+
+enum class Side { north, east, south, west };
+
+inline constexpr Side kSides[] = {Side::north, Side::east, Side::south, Side::west};
+
+constexpr Side opposite(Side s) { return static_cast<Side>((static_cast<int>(s) + 2) % 4); }
+constexpr Cell neighbour(Cell c, Side s) {
+  switch (s) {
+    case Side::north: return {c.x, c.y + 1};
+    case Side::east: return {c.x + 1, c.y};
+    case Side::south: return {c.x, c.y - 1};
+    case Side::west: return {c.x - 1, c.y};
+  }
+  return c;
+}
+std::string_view to_string(Side s);  // "north", "east", ...
+
+// A wall as a segment on the cell grid, in metres (the wall's centre line, without thickness).
+struct WallSegment {
+  double x1_m, y1_m, x2_m, y2_m;
+};
+
+inline constexpr int kMaxMazeSide = 4096;
+inline constexpr double kDefaultCellSize_m = 1.0;
+inline constexpr double kDefaultWallThickness_m = 0.012;
+
+class Maze {
+ public:
+  // An enclosed maze with no interior walls; asserts 1 <= width, height <= kMaxMazeSide.
+  Maze(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool contains(Cell c) const { return c.x >= 0 && c.y >= 0 && c.x < width_ && c.y < height_; }
+
+  // Whether side s of cell c is walled. The outer boundary is a side like any other.
+  bool has_wall(Cell c, Side s) const;
+  // Sets the wall on side s of c (and so on the opposite side of the neighbour).
+  void set_wall(Cell c, Side s, bool present);
+
+  Cell start() const { return start_; }
+  Side start_heading() const { return start_heading_; }
+  void set_start(Cell c, Side heading) {
+    start_ = c;
+    start_heading_ = heading;
+  }
+
+  const std::vector<Cell> &goals() const { return goals_; }
+  void add_goal(Cell c) { goals_.push_back(c); }
+  void clear_goals() { goals_.clear(); }
+
+  double cell_size_m() const { return cell_size_m_; }
+  double wall_thickness_m() const { return wall_thickness_m_; }
+  double origin_x_m() const { return origin_x_m_; }
+  double origin_y_m() const { return origin_y_m_; }
+  void set_physical(double cell_size_m, double wall_thickness_m, double origin_x_m,
+                    double origin_y_m);
+
+  // Cells that can be reached from the start through openings; reachable[y * W + x].
+  std::vector<bool> reachable_from_start() const;
+  std::size_t reachable_count() const;
+
+  // Every wall as a segment in metres, horizontal runs joined, then vertical runs joined.
+  std::vector<WallSegment> wall_segments() const;
+
+  friend bool operator==(const Maze &, const Maze &) = default;
+
+ private:
+  // Horizontal walls: (W) x (H + 1), index y * W + x is the wall on the south side of row y.
+  // Vertical walls: (W + 1) x H, index y * (W + 1) + x is the wall on the west side of column x.
+  std::size_t horizontal_index(int x, int y_line) const;
+  std::size_t vertical_index(int x_line, int y) const;
+
+  int width_;
+  int height_;
+  std::vector<std::uint8_t> horizontal_;
+  std::vector<std::uint8_t> vertical_;
+  Cell start_{0, 0};
+  Side start_heading_ = Side::north;
+  std::vector<Cell> goals_;
+  double cell_size_m_ = kDefaultCellSize_m;
+  double wall_thickness_m_ = kDefaultWallThickness_m;
+  double origin_x_m_ = 0.0;
+  double origin_y_m_ = 0.0;
+};
+
+}  // namespace maze

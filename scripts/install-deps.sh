@@ -1,0 +1,29 @@
+#!/bin/sh
+# Installs the Debian 12 packages maze_mapper needs to build and test.
+# Idempotent: packages already present are left alone and apt is not called.
+set -eu
+
+PACKAGES="cmake ninja-build g++ clang libclang-rt-14-dev \
+libeigen3-dev libfmt-dev doctest-dev libcli11-dev libtinyxml2-dev"
+
+missing=""
+for pkg in $PACKAGES; do
+    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+        missing="$missing $pkg"
+    fi
+done
+
+if [ -z "$missing" ]; then
+    exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+    echo "error: missing packages:$missing (run this script as root, or install them)" >&2
+    exit 2
+fi
+
+echo "installing:$missing"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+# shellcheck disable=SC2086
+apt-get install -y -qq --no-install-recommends $missing >/dev/null
