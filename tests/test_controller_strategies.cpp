@@ -101,7 +101,7 @@ Generated generate(int w, int h, std::uint64_t seed) {
   common::Rng rng(seed);
   std::vector<char> seen(static_cast<std::size_t>(w * h), 0);
   std::vector<Cell> stack{{0, 0}};
-  seen[0] = 1;
+  seen.at(0) = 1;
   while (!stack.empty()) {
     const Cell c = stack.back();
     std::vector<Heading> options;
