@@ -1,0 +1,116 @@
+#pragma once
+// Exploration strategies: deterministic, pure logic over the known walls, the cells visited,
+// the current cell and heading, and the maze size. Each answers "the heading to move next,
+// or done". Walls are what the robot knows (read from its grid), never the truth; a side
+// leading out of the W x H grid is always a wall; a move is only made through a side known
+// to be open (floodfill also through unknown sides, as micromouse flooding assumes).
+//
+//   dfs        depth-first with backtracking (default). Neighbours tried relative to the
+//              heading: ahead, right, left, back. Backtracks along the path it came by.
+//   frontier   to the nearest unvisited cell through known openings (breadth-first search
+//              over visited cells; neighbours expanded N, E, S, W, so ties go to the cell
+//              found first in that order); follows the planned path, re-plans on arrival or
+//              when a side on it turns out closed.
+//   left-wall  keep the left hand on the wall: left, ahead, right, back.
+//   right-wall right, ahead, left, back.
+//   floodfill  micromouse flooding: distances to the goal cells by breadth-first search,
+//              unknown sides taken as open; move to the neighbour one step nearer (ahead,
+//              right, left, back on ties); re-flooded before every move.
+//
+// Ending: dfs and frontier when no known-open unvisited cell remains next to a visited one
+// (every reachable cell visited); wall followers when back at the start about to repeat
+// their first move (a full circuit); floodfill on a goal cell, or when no goal is
+// reachable through the sides not known to be walls.
+//
+// Cost per move: dfs O(1). frontier O(cells searched), bounded by the visited cells within
+// the distance of the nearest unvisited one, and only when it re-plans. floodfill O(cells)
+// per move (the flood stops once it reaches the robot's cell) - acceptable at the maze sizes
+// floodfill is meant for. Buffers are allocated once, O(W * H).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "mapping/grid_types.hpp"
+#include "mapping/walls.hpp"
+
+namespace explore {
+
+enum class StrategyKind { dfs, frontier, left_wall, right_wall, floodfill };
+
+std::string_view to_string(StrategyKind kind);
+// "dfs", "frontier", "left-wall", "right-wall", "floodfill"; throws common::InputError
+// naming --strategy and the choices otherwise.
+StrategyKind parse_strategy(std::string_view name);
+
+// What the robot knows about side h of cell c (c inside the grid).
+using WallQuery = std::function<mapping::SideState(mapping::Cell, mapping::Heading)>;
+
+struct ExplorerOptions {
+  StrategyKind kind = StrategyKind::dfs;
+  int width_cells = 0;
+  int height_cells = 0;
+  mapping::Cell start;
+  std::vector<mapping::Cell> goals;  // floodfill's targets (micromouse knowledge, not walls)
+};
+
+// Throws common::InputError when the size is not positive, the start is outside, or
+// floodfill has no goal or a goal outside the maze.
+void validate(const ExplorerOptions &options);
+
+class Explorer {
+ public:
+  explicit Explorer(const ExplorerOptions &options);
+
+  // The robot stands at `current` facing `heading`, having scanned it. Records the cell as
+  // visited, then answers the heading of the next move (to an adjacent cell), or nothing
+  // when the strategy is done. Call once per cell the robot arrives in, start included.
+  std::optional<mapping::Heading> next(mapping::Cell current, mapping::Heading heading,
+                                       const WallQuery &walls);
+
+  // Cells recorded as visited so far, and unvisited cells known to be reachable.
+  int visited_count() const { return visited_count_; }
+  int frontier_count() const { return frontier_count_; }
+
+ private:
+  enum class Mark : std::uint8_t { unseen, frontier, visited };
+
+  std::size_t flat(mapping::Cell c) const {
+    return static_cast<std::size_t>(c.y) * static_cast<std::size_t>(options_.width_cells) +
+           static_cast<std::size_t>(c.x);
+  }
+  bool inside(mapping::Cell c) const {
+    return c.x >= 0 && c.y >= 0 && c.x < options_.width_cells && c.y < options_.height_cells;
+  }
+  bool open(const WallQuery &walls, mapping::Cell c, mapping::Heading h) const;
+  void visit(mapping::Cell c, const WallQuery &walls);
+
+  std::optional<mapping::Heading> next_dfs(mapping::Cell c, mapping::Heading h, const WallQuery &walls);
+  std::optional<mapping::Heading> next_frontier(mapping::Cell c, const WallQuery &walls);
+  std::optional<mapping::Heading> next_follower(mapping::Cell c, mapping::Heading h, const WallQuery &walls);
+  std::optional<mapping::Heading> next_floodfill(mapping::Cell c, mapping::Heading h, const WallQuery &walls);
+  bool plan_frontier(mapping::Cell c, const WallQuery &walls);
+
+  ExplorerOptions options_;
+  std::vector<Mark> marks_;
+  int visited_count_ = 0;
+  int frontier_count_ = 0;
+  bool started_ = false;
+
+  std::vector<mapping::Cell> stack_;               // dfs: the path from the start
+  std::vector<mapping::Heading> plan_;             // frontier: remaining moves, last first
+  std::optional<mapping::Heading> first_move_;     // followers
+  std::vector<std::uint8_t> goal_;                 // floodfill: 1 on goal cells
+
+  // Breadth-first search buffers, allocated once; a cell is seen when seen_[i] == epoch_.
+  std::vector<std::uint32_t> seen_;
+  std::vector<std::int32_t> distance_;
+  std::vector<mapping::Heading> arrived_by_;
+  std::vector<mapping::Cell> queue_;
+  std::uint32_t epoch_ = 0;
+  void new_search();
+};
+
+}  // namespace explore

@@ -1,0 +1,47 @@
+#pragma once
+// One planar lidar scan, independent of Webots: where it was taken and its ranges.
+//
+// Beam order is the Webots range-image order (DESIGN §2): beam i points at
+//   fov/2 - i * fov / N   radians from the heading, counter-clockwise positive,
+// so with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right.
+//
+// Readings:
+//   finite, within [min_range_m, max_range_m]   a return at that range (a hit)
+//   +infinity, or finite beyond max_range_m      no return (nothing within max range)
+//   NaN, negative, or below min_range_m          invalid: ignored, never stored
+
+#include <optional>
+#include <span>
+
+#include "mapping/grid_types.hpp"
+
+namespace mapping {
+
+enum class ReadingKind { hit, no_return, invalid };
+
+struct LidarScan {
+  Point origin;             // sensor position in the world, m
+  double yaw_rad = 0.0;     // sensor heading in the world: 0 east, pi/2 north
+  double fov_rad = 0.0;     // (0, 2 pi]
+  double min_range_m = 0.0;
+  double max_range_m = 0.0;
+  std::span<const float> ranges;  // N readings, m, beam order above; not owned
+
+  int beam_count() const { return static_cast<int>(ranges.size()); }
+
+  // Angle of beam i relative to the heading, rad.
+  double beam_angle_rad(int i) const;
+  // Angle of beam i in the world frame (yaw + beam angle), rad, not wrapped.
+  double beam_world_angle_rad(int i) const { return yaw_rad + beam_angle_rad(i); }
+
+  ReadingKind kind(int i) const;
+
+  // The beam whose direction is nearest to a world direction, or nothing when that
+  // direction is outside the field of view (or the scan has no beams).
+  std::optional<int> beam_towards(double world_angle_rad) const;
+};
+
+// Angle wrapped into (-pi, pi].
+double wrap_angle_rad(double angle_rad);
+
+}  // namespace mapping

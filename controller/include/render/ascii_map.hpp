@@ -1,0 +1,49 @@
+#pragma once
+// The map as text (DESIGN §7): H*K lines of W*K characters, north at the top, one character
+// a sub-cell, each line ending in '\n':
+//   an arrow  at the centre of a visited cell: the last heading the robot had there
+//             (↑ → ↓ ←, or ^ > v < with ascii)
+//   W         an observed sub-cell whose log-odds is above 0 (more likely occupied)
+//   unknown   a never-observed sub-cell (value still the initial l(prior)), when asked
+//   ' '       anything else (free, or never observed without an unknown character)
+// A never-observed sub-cell is never drawn as W, even when the prior is above 0.5.
+
+#include <optional>
+#include <string>
+
+#include "explore/visits.hpp"
+#include "mapping/grid_types.hpp"
+#include "mapping/occupancy_grid.hpp"
+
+namespace render {
+
+struct MapStyle {
+  bool ascii = false;            // --ascii: ^ > v < instead of ↑ → ↓ ←
+  std::optional<char> unknown;   // --unknown CHAR
+  float initial_log_odds = 0.0f; // the grid's initial value, to tell never-observed sub-cells
+};
+
+// Appends sub-cell rows [first_row, first_row + row_count) counted from the top (north) line
+// of the map; the range must lie within 0 ... H*K. Cost: row_count * W * K.
+void render_rows(std::string &out, const mapping::OccupancyGrid &grid, const explore::Visits &visits,
+                 const MapStyle &style, int first_row, int row_count);
+
+// The whole map (all H*K lines).
+std::string render_map(const mapping::OccupancyGrid &grid, const explore::Visits &visits,
+                       const MapStyle &style);
+
+// One cell's K x K log-odds, north row first: each value signed with 2 decimals, right-aligned
+// to the widest value in the matrix, separated by one space, each row ending in '\n':
+//   +0.41 +0.41 +0.41
+//   +0.41 -0.85 -0.85
+//   +0.41 -0.85 +0.00
+// A value that rounds to zero prints as +0.00.
+std::string format_cell_matrix(const mapping::OccupancyGrid &grid, mapping::Cell c);
+
+// "step 412  cell (2,3)  heading N  visited 7/16" (no newline).
+std::string format_status(long step, mapping::Cell c, mapping::Heading h, int visited, int total);
+
+// The arrow for a heading: "↑" "→" "↓" "←", or "^" ">" "v" "<" with ascii.
+const char *arrow(mapping::Heading h, bool ascii);
+
+}  // namespace render

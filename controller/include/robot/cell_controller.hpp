@@ -1,0 +1,130 @@
+#pragma once
+// The robot's controller: a Webots-style loop that moves cell by cell, maps with the lidar
+// into the 4D log-odds grid and asks a strategy where to go next. It sees the world only
+// through the webots:: device API (public members only), so this file and its source
+// compile unchanged against a real Webots installation.
+//
+// Each move: turn in place to the heading (IMU yaw, proportional control slowing near the
+// target), drive one cell (encoders; GPS when the robot has one corrects the distance and
+// the lateral drift), stop at the cell centre and take one step to come to rest; then read
+// the lidar, update the grid, and ask the strategy. The controller is told the maze size,
+// cell size, origin, K, start cell and heading, and goal cells - never the walls.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "explore/strategies.hpp"
+#include "explore/visits.hpp"
+#include "mapping/grid_types.hpp"
+#include "mapping/models.hpp"
+#include "mapping/occupancy_grid.hpp"
+#include "mapping/sensor_model.hpp"
+
+namespace webots {
+class Robot;
+}
+
+namespace robot {
+
+// Device names, as a robot profile gives them (the hambot's by default).
+struct DeviceNames {
+  std::string left_motor = "left motor";
+  std::string right_motor = "right motor";
+  std::string left_encoder = "left wheel sensor";
+  std::string right_encoder = "right wheel sensor";
+  std::string imu = "imu";
+  std::string gps = "gps";      // optional device: used when the robot has it
+  std::string lidar = "lidar";
+};
+
+struct MotionOptions {
+  int time_step_ms = 0;               // 0: the world's basic time step
+  double wheel_radius_m = 0.045;      // hambot
+  double axle_m = 0.184;              // distance between the wheels, hambot
+  double cruise_speed_rad_s = 10.0;   // wheel speed driving (capped by the motor's maximum)
+  double turn_speed_rad_s = 5.0;      // wheel speed turning in place (capped likewise)
+  double yaw_tolerance_rad = 0.002;   // a turn ends within this of the target yaw
+  double position_tolerance_m = 0.002;  // a drive ends within this of the cell centre
+  // Proportional gains as the fraction of the remaining error to close in one time step
+  // (0, 1]: smaller is smoother, 1 would aim to arrive in one step.
+  double turn_gain = 0.5;
+  double drive_gain = 0.5;
+  // Steering while driving, rad of heading correction per metre of lateral offset (GPS).
+  double lateral_gain = 2.0;
+  // No progress: a move whose distance (m) or yaw (rad) changes by less than
+  // stall_epsilon over stall_steps consecutive steps is reported as a failure.
+  int stall_steps = 60;
+  double stall_epsilon = 1e-4;
+  std::int64_t max_steps = 2'000'000;  // --max-steps: control steps, the whole run
+};
+
+struct ControllerOptions {
+  mapping::GridGeometry geometry;      // W, H, K, cell size, origin (what the lab gives)
+  mapping::Cell start;
+  mapping::Heading start_heading = mapping::Heading::north;
+  std::vector<mapping::Cell> goals;    // micromouse-style targets (floodfill)
+  mapping::SensorModelOptions sensor;
+  mapping::MappingOptions mapping;
+  explore::StrategyKind strategy = explore::StrategyKind::dfs;
+  MotionOptions motion;
+  DeviceNames devices;
+};
+
+// Throws common::InputError when an option is unusable (each concern's own validate, then
+// the motion numbers: positive sizes and speeds, gains in (0, 1], max_steps >= 1).
+void validate(const ControllerOptions &options);
+
+enum class EndReason { done, max_steps, no_progress, simulation_ended };
+std::string_view to_string(EndReason reason);  // "done", "max steps", "no progress", "simulation ended"
+
+// What the observer sees after the start scan and after every move into a cell.
+struct MoveReport {
+  std::int64_t step = 0;      // control steps so far
+  int moves = 0;              // cell-to-cell moves so far (0 at the start)
+  double sim_time_s = 0.0;
+  mapping::Cell cell;
+  mapping::Heading heading = mapping::Heading::north;
+  bool new_cell = false;      // first time in this cell (always true at the start)
+  const mapping::OccupancyGrid *grid = nullptr;
+  const explore::Visits *visits = nullptr;
+};
+
+using Observer = std::function<void(const MoveReport &)>;
+
+struct RunResult {
+  EndReason reason = EndReason::done;
+  std::string message;        // for no_progress: what stalled, where
+  std::int64_t steps = 0;
+  int moves = 0;
+  int visited = 0;
+  double sim_time_s = 0.0;
+  mapping::OccupancyGrid grid;
+  explore::Visits visits;
+  std::vector<mapping::Cell> path;  // cells in order of arrival, start first
+};
+
+class CellController {
+ public:
+  // Validates the options (common::InputError) and finds the devices; throws
+  // common::InputError naming a required device the robot lacks. The robot must outlive
+  // the controller.
+  CellController(webots::Robot &robot, const ControllerOptions &options);
+  ~CellController();
+  CellController(const CellController &) = delete;
+  CellController &operator=(const CellController &) = delete;
+
+  // Runs until the strategy is done, max_steps, no progress, or the simulation ends.
+  // Call once.
+  RunResult run(const Observer &observer = {});
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace robot

@@ -1,0 +1,71 @@
+// Options of the cell controller and their validation, apart from the control loop so that
+// they are usable (and testable) without a simulation.
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+#include "robot/cell_controller.hpp"
+
+namespace robot {
+namespace {
+
+void require_positive(const char *what, double value) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw common::InputError(fmt::format("{} must be a positive number (got {})", what, value));
+  }
+}
+
+void require_gain(const char *what, double value) {
+  if (!std::isfinite(value) || value <= 0.0 || value > 1.0) {
+    throw common::InputError(fmt::format("{} must be in (0, 1] (got {})", what, value));
+  }
+}
+
+void validate(const MotionOptions &m) {
+  if (m.time_step_ms < 0) {
+    throw common::InputError(fmt::format("time step must be 0 (the world's) or positive ms (got {})",
+                                         m.time_step_ms));
+  }
+  require_positive("wheel radius", m.wheel_radius_m);
+  require_positive("axle length", m.axle_m);
+  require_positive("cruise speed", m.cruise_speed_rad_s);
+  require_positive("turn speed", m.turn_speed_rad_s);
+  require_positive("yaw tolerance", m.yaw_tolerance_rad);
+  require_positive("position tolerance", m.position_tolerance_m);
+  require_positive("lateral gain", m.lateral_gain);
+  require_positive("stall epsilon", m.stall_epsilon);
+  require_gain("turn gain", m.turn_gain);
+  require_gain("drive gain", m.drive_gain);
+  if (m.stall_steps < 1) {
+    throw common::InputError(fmt::format("stall steps must be at least 1 (got {})", m.stall_steps));
+  }
+  if (m.max_steps < 1) {
+    throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", m.max_steps));
+  }
+}
+
+}  // namespace
+
+std::string_view to_string(EndReason reason) {
+  switch (reason) {
+    case EndReason::done: return "done";
+    case EndReason::max_steps: return "max steps";
+    case EndReason::no_progress: return "no progress";
+    case EndReason::simulation_ended: return "simulation ended";
+  }
+  return "?";
+}
+
+void validate(const ControllerOptions &options) {
+  mapping::validate(options.geometry, mapping::kDefaultMaxGridBytes);
+  mapping::validate(options.sensor);
+  mapping::validate(options.mapping);
+  explore::validate(explore::ExplorerOptions{options.strategy, options.geometry.width_cells,
+                                             options.geometry.height_cells, options.start,
+                                             options.goals});
+  validate(options.motion);
+}
+
+}  // namespace robot

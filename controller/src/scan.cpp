@@ -1,0 +1,39 @@
+#include "mapping/scan.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace mapping {
+
+double wrap_angle_rad(double angle_rad) {
+  constexpr double two_pi = 2.0 * std::numbers::pi;
+  double a = std::fmod(angle_rad, two_pi);
+  if (a <= -std::numbers::pi) a += two_pi;
+  if (a > std::numbers::pi) a -= two_pi;
+  return a;
+}
+
+double LidarScan::beam_angle_rad(int i) const {
+  return fov_rad / 2.0 - i * fov_rad / beam_count();
+}
+
+ReadingKind LidarScan::kind(int i) const {
+  const float r = ranges[static_cast<std::size_t>(i)];
+  if (std::isnan(r) || r < 0.0f || r < min_range_m) return ReadingKind::invalid;
+  if (std::isinf(r) || r > max_range_m) return ReadingKind::no_return;
+  return ReadingKind::hit;
+}
+
+std::optional<int> LidarScan::beam_towards(double world_angle_rad) const {
+  const int n = beam_count();
+  if (n == 0 || !(fov_rad > 0.0)) return std::nullopt;
+  const double relative = wrap_angle_rad(world_angle_rad - yaw_rad);
+  const double step = fov_rad / n;
+  const long nearest = std::lround((fov_rad / 2.0 - relative) / step);
+  const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
+  if (full_circle) return static_cast<int>(((nearest % n) + n) % n);
+  if (nearest < 0 || nearest >= n) return std::nullopt;
+  return static_cast<int>(nearest);
+}
+
+}  // namespace mapping

@@ -1,0 +1,266 @@
+#include "explore/strategies.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+#include "explore/visits.hpp"
+
+namespace explore {
+
+using mapping::Cell;
+using mapping::Heading;
+using mapping::SideState;
+
+namespace {
+
+// Relative preference orders.
+std::array<Heading, 4> ahead_right_left_back(Heading h) {
+  return {h, mapping::turned_right(h), mapping::turned_left(h), mapping::opposite(h)};
+}
+std::array<Heading, 4> left_hand(Heading h) {
+  return {mapping::turned_left(h), h, mapping::turned_right(h), mapping::opposite(h)};
+}
+std::array<Heading, 4> right_hand(Heading h) {
+  return {mapping::turned_right(h), h, mapping::turned_left(h), mapping::opposite(h)};
+}
+
+// The heading from a cell to an adjacent one.
+Heading direction(Cell from, Cell to) {
+  if (to.x > from.x) return Heading::east;
+  if (to.x < from.x) return Heading::west;
+  if (to.y > from.y) return Heading::north;
+  assert(to.y < from.y);
+  return Heading::south;
+}
+
+}  // namespace
+
+// ---- Visits ----
+
+Visits::Visits(int width_cells, int height_cells)
+    : width_(width_cells),
+      height_(height_cells),
+      heading_plus_one_(static_cast<std::size_t>(width_cells) * static_cast<std::size_t>(height_cells), 0) {
+  assert(width_cells > 0 && height_cells > 0);
+}
+
+void Visits::record(Cell c, Heading h) {
+  assert(contains(c));
+  auto &slot = heading_plus_one_[flat(c)];
+  if (slot == 0) ++count_;
+  slot = static_cast<std::uint8_t>(static_cast<int>(h) + 1);
+}
+
+std::optional<Heading> Visits::heading(Cell c) const {
+  const auto v = heading_plus_one_[flat(c)];
+  if (v == 0) return std::nullopt;
+  return static_cast<Heading>(v - 1);
+}
+
+// ---- names and options ----
+
+std::string_view to_string(StrategyKind kind) {
+  switch (kind) {
+    case StrategyKind::dfs: return "dfs";
+    case StrategyKind::frontier: return "frontier";
+    case StrategyKind::left_wall: return "left-wall";
+    case StrategyKind::right_wall: return "right-wall";
+    case StrategyKind::floodfill: return "floodfill";
+  }
+  return "?";
+}
+
+StrategyKind parse_strategy(std::string_view name) {
+  for (const StrategyKind k : {StrategyKind::dfs, StrategyKind::frontier, StrategyKind::left_wall,
+                               StrategyKind::right_wall, StrategyKind::floodfill}) {
+    if (name == to_string(k)) return k;
+  }
+  throw common::InputError(fmt::format(
+      "unknown --strategy '{}' (choose dfs, frontier, left-wall, right-wall or floodfill)", name));
+}
+
+void validate(const ExplorerOptions &o) {
+  if (o.width_cells < 1 || o.height_cells < 1) {
+    throw common::InputError(
+        fmt::format("maze size must be positive (got {}x{})", o.width_cells, o.height_cells));
+  }
+  const auto inside = [&](Cell c) {
+    return c.x >= 0 && c.y >= 0 && c.x < o.width_cells && c.y < o.height_cells;
+  };
+  if (!inside(o.start)) {
+    throw common::InputError(fmt::format("start cell ({},{}) is outside the {}x{} maze",
+                                         o.start.x, o.start.y, o.width_cells, o.height_cells));
+  }
+  for (const Cell g : o.goals) {
+    if (!inside(g)) {
+      throw common::InputError(fmt::format("goal cell ({},{}) is outside the {}x{} maze", g.x,
+                                           g.y, o.width_cells, o.height_cells));
+    }
+  }
+  if (o.kind == StrategyKind::floodfill && o.goals.empty()) {
+    throw common::InputError("--strategy floodfill needs a goal cell (the world has none)");
+  }
+}
+
+// ---- Explorer ----
+
+Explorer::Explorer(const ExplorerOptions &options) : options_(options) {
+  validate(options_);
+  const auto cells = static_cast<std::size_t>(options_.width_cells) *
+                     static_cast<std::size_t>(options_.height_cells);
+  marks_.assign(cells, Mark::unseen);
+  if (options_.kind == StrategyKind::frontier || options_.kind == StrategyKind::floodfill) {
+    seen_.assign(cells, 0);
+    distance_.assign(cells, 0);
+    arrived_by_.assign(cells, Heading::north);
+    queue_.reserve(cells);
+  }
+  if (options_.kind == StrategyKind::floodfill) {
+    goal_.assign(cells, 0);
+    for (const Cell g : options_.goals) goal_[flat(g)] = 1;
+  }
+}
+
+bool Explorer::open(const WallQuery &walls, Cell c, Heading h) const {
+  return inside(mapping::neighbour(c, h)) && walls(c, h) == SideState::open;
+}
+
+void Explorer::visit(Cell c, const WallQuery &walls) {
+  Mark &m = marks_[flat(c)];
+  if (m == Mark::visited) return;
+  if (m == Mark::frontier) --frontier_count_;
+  m = Mark::visited;
+  ++visited_count_;
+  for (const Heading h : mapping::kHeadings) {
+    if (!open(walls, c, h)) continue;
+    Mark &n = marks_[flat(mapping::neighbour(c, h))];
+    if (n != Mark::unseen) continue;
+    n = Mark::frontier;
+    ++frontier_count_;
+  }
+}
+
+std::optional<Heading> Explorer::next(Cell current, Heading heading, const WallQuery &walls) {
+  assert(inside(current));
+  if (!started_) {
+    started_ = true;
+    stack_.push_back(current);
+  }
+  visit(current, walls);
+  switch (options_.kind) {
+    case StrategyKind::dfs: return next_dfs(current, heading, walls);
+    case StrategyKind::frontier: return next_frontier(current, walls);
+    case StrategyKind::left_wall:
+    case StrategyKind::right_wall: return next_follower(current, heading, walls);
+    case StrategyKind::floodfill: return next_floodfill(current, heading, walls);
+  }
+  return std::nullopt;
+}
+
+std::optional<Heading> Explorer::next_dfs(Cell c, Heading h, const WallQuery &walls) {
+  assert(!stack_.empty() && stack_.back() == c);
+  if (frontier_count_ == 0) return std::nullopt;
+  for (const Heading d : ahead_right_left_back(h)) {
+    if (!open(walls, c, d)) continue;
+    const Cell n = mapping::neighbour(c, d);
+    if (marks_[flat(n)] == Mark::visited) continue;
+    stack_.push_back(n);
+    return d;
+  }
+  stack_.pop_back();
+  if (stack_.empty()) return std::nullopt;
+  return direction(c, stack_.back());
+}
+
+void Explorer::new_search() {
+  if (++epoch_ == 0) {
+    std::fill(seen_.begin(), seen_.end(), 0);
+    epoch_ = 1;
+  }
+  queue_.clear();
+}
+
+std::optional<Heading> Explorer::next_frontier(Cell c, const WallQuery &walls) {
+  if (frontier_count_ == 0) return std::nullopt;
+  const bool still_good = !plan_.empty() && open(walls, c, plan_.back());
+  if (!still_good && !plan_frontier(c, walls)) return std::nullopt;
+  const Heading d = plan_.back();
+  plan_.pop_back();
+  return d;
+}
+
+bool Explorer::plan_frontier(Cell c, const WallQuery &walls) {
+  plan_.clear();
+  new_search();
+  seen_[flat(c)] = epoch_;
+  queue_.push_back(c);
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const Cell u = queue_[head];
+    if (marks_[flat(u)] != Mark::visited) {
+      for (Cell v = u; v != c; v = mapping::neighbour(v, mapping::opposite(arrived_by_[flat(v)]))) {
+        plan_.push_back(arrived_by_[flat(v)]);
+      }
+      return true;
+    }
+    for (const Heading h : mapping::kHeadings) {
+      if (!open(walls, u, h)) continue;
+      const Cell v = mapping::neighbour(u, h);
+      if (seen_[flat(v)] == epoch_) continue;
+      seen_[flat(v)] = epoch_;
+      arrived_by_[flat(v)] = h;
+      queue_.push_back(v);
+    }
+  }
+  return false;
+}
+
+std::optional<Heading> Explorer::next_follower(Cell c, Heading h, const WallQuery &walls) {
+  const auto order = options_.kind == StrategyKind::left_wall ? left_hand(h) : right_hand(h);
+  for (const Heading d : order) {
+    if (!open(walls, c, d)) continue;
+    if (first_move_ && c == options_.start && d == *first_move_) return std::nullopt;
+    if (!first_move_) first_move_ = d;
+    return d;
+  }
+  return std::nullopt;
+}
+
+std::optional<Heading> Explorer::next_floodfill(Cell c, Heading h, const WallQuery &walls) {
+  if (goal_[flat(c)] != 0) return std::nullopt;
+  // Flood from the goals over sides not known to be walls, until the robot's cell is reached.
+  new_search();
+  for (const Cell g : options_.goals) {
+    if (seen_[flat(g)] == epoch_) continue;
+    seen_[flat(g)] = epoch_;
+    distance_[flat(g)] = 0;
+    queue_.push_back(g);
+  }
+  bool reached = false;
+  for (std::size_t head = 0; head < queue_.size() && !reached; ++head) {
+    const Cell u = queue_[head];
+    for (const Heading d : mapping::kHeadings) {
+      const Cell v = mapping::neighbour(u, d);
+      if (!inside(v) || seen_[flat(v)] == epoch_ || walls(u, d) == SideState::wall) continue;
+      seen_[flat(v)] = epoch_;
+      distance_[flat(v)] = distance_[flat(u)] + 1;
+      queue_.push_back(v);
+      reached = reached || v == c;
+    }
+  }
+  if (!reached) return std::nullopt;
+  const std::int32_t want = distance_[flat(c)] - 1;
+  for (const Heading d : ahead_right_left_back(h)) {
+    const Cell n = mapping::neighbour(c, d);
+    if (!inside(n) || walls(c, d) == SideState::wall) continue;
+    if (seen_[flat(n)] == epoch_ && distance_[flat(n)] == want) return d;
+  }
+  assert(false && "a flooded cell always has a neighbour one step nearer");
+  return std::nullopt;
+}
+
+}  // namespace explore

@@ -1,0 +1,322 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/random.hpp"
+#include "mapping/models.hpp"
+#include "mapping/occupancy_grid.hpp"
+#include "mapping/sensor_model.hpp"
+#include "render/ascii_map.hpp"
+#include "synthetic_world.hpp"
+
+using mapping::Cell;
+using mapping::GridGeometry;
+using mapping::MappingOptions;
+using mapping::ModelKind;
+using mapping::OccupancyGrid;
+using mapping::SubCell;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// 3 x 3 cells of 1 m; only the centre cell's north and west sides are walls.
+const char *const kNorthWest =
+    "o   o   o   o\n"
+    "             \n"
+    "o   o---o   o\n"
+    "    |        \n"
+    "o   o   o   o\n"
+    "             \n"
+    "o   o   o   o";
+
+GridGeometry geometry(int k, int w = 3, int h = 3) {
+  GridGeometry g;
+  g.width_cells = w;
+  g.height_cells = h;
+  g.subcells = k;
+  g.cell_size_m = 1.0;
+  return g;
+}
+
+// One noiseless scan from the centre of cell (1, 1) of kNorthWest, then the cell's matrix.
+std::string one_scan(ModelKind kind, int k, const mapping::SensorModelOptions &sensor = {},
+                     double yaw = kPi / 2, int scans = 1, Cell shown = {1, 1}) {
+  const testing_world::TextMaze maze(kNorthWest);
+  const auto boxes = testing_world::wall_boxes(maze, 1.0, 0.012);
+  const mapping::Point origin{1.5, 1.5};
+  const auto ranges = testing_world::range_image(boxes, origin, yaw, 360, 2 * kPi, 0.05, 12.0);
+  const mapping::SensorModel model(sensor);
+  OccupancyGrid grid(geometry(k), static_cast<float>(model.prior_log_odds()));
+  mapping::ScanUpdate update;
+  MappingOptions options;
+  options.kind = kind;
+  for (int n = 0; n < scans; ++n) {
+    mapping::integrate_scan(options, grid, testing_world::hambot_scan(origin, yaw, ranges),
+                            Cell{1, 1}, model, update);
+  }
+  return render::format_cell_matrix(grid, shown);
+}
+
+}  // namespace
+
+TEST_CASE("cell model, K = 3: walls N and W, open E and S, one scan with the defaults") {
+  CHECK(one_scan(ModelKind::cell, 3) ==
+        "+0.41 +0.41 +0.41\n"
+        "+0.41 -0.85 -0.85\n"
+        "+0.41 -0.85 +0.00\n");
+}
+
+TEST_CASE("cell model, K = 5: the path to each band, corners of walled bands only") {
+  CHECK(one_scan(ModelKind::cell, 5) ==
+        "+0.41 +0.00 +0.41 +0.00 +0.41\n"
+        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.41 -0.85 -0.85 -0.85 -0.85\n"
+        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.41 +0.00 -0.85 +0.00 +0.00\n");
+}
+
+TEST_CASE("cell model: the world-frame beams are picked whatever the robot's yaw") {
+  for (const double yaw : {0.0, kPi / 2, kPi, -kPi / 2, 0.3, -2.0}) {
+    CAPTURE(yaw);
+    CHECK(one_scan(ModelKind::cell, 3, {}, yaw) ==
+          "+0.41 +0.41 +0.41\n"
+          "+0.41 -0.85 -0.85\n"
+          "+0.41 -0.85 +0.00\n");
+  }
+}
+
+TEST_CASE("cell model: nothing outside the robot's cell is updated") {
+  CHECK(one_scan(ModelKind::cell, 3, {}, kPi / 2, 1, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+}
+
+TEST_CASE("ray model, K = 3 and 5: every sub-cell of the cell crossed; walls where beams end") {
+  CHECK(one_scan(ModelKind::ray, 3) ==
+        "+0.41 +0.41 +0.41\n"
+        "+0.41 -0.85 -0.85\n"
+        "+0.41 -0.85 -0.85\n");
+  CHECK(one_scan(ModelKind::ray, 5) ==
+        "+0.41 +0.41 +0.41 +0.41 +0.41\n"
+        "+0.41 -0.85 -0.85 -0.85 -0.85\n"
+        "+0.41 -0.85 -0.85 -0.85 -0.85\n"
+        "+0.41 -0.85 -0.85 -0.85 -0.85\n"
+        "+0.41 -0.85 -0.85 -0.85 -0.85\n");
+  // Beyond the walls nothing; through the openings, free up to the grid's edge.
+  CHECK(one_scan(ModelKind::ray, 3, {}, kPi / 2, 1, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(one_scan(ModelKind::ray, 3, {}, kPi / 2, 1, Cell{2, 0}) ==
+        "-0.85 -0.85 -0.85\n"
+        "-0.85 -0.85 -0.85\n"
+        "-0.85 -0.85 -0.85\n");
+}
+
+TEST_CASE("models honour the sensor options: base 10, other p's, a prior, clamping") {
+  mapping::SensorModelOptions ten;
+  ten.base = mapping::LogBase::ten;
+  CHECK(one_scan(ModelKind::cell, 3, ten) ==
+        "+0.18 +0.18 +0.18\n"
+        "+0.18 -0.37 -0.37\n"
+        "+0.18 -0.37 +0.00\n");
+
+  mapping::SensorModelOptions sharp;
+  sharp.p_free = 0.2;
+  sharp.p_occ = 0.9;
+  CHECK(one_scan(ModelKind::ray, 3, sharp) ==
+        "+2.20 +2.20 +2.20\n"
+        "+2.20 -1.39 -1.39\n"
+        "+2.20 -1.39 -1.39\n");
+
+  // Prior 0.4: a sub-cell starts at l(0.4) = -0.41; one update gives l(p) exactly, the
+  // second adds l(p) - l(prior) again (the classroom rule).
+  mapping::SensorModelOptions prior;
+  prior.prior = 0.4;
+  CHECK(one_scan(ModelKind::cell, 3, prior) ==
+        "+0.41 +0.41 +0.41\n"
+        "+0.41 -0.85 -0.85\n"
+        "+0.41 -0.85 -0.41\n");
+  CHECK(one_scan(ModelKind::cell, 3, prior, kPi / 2, 2) ==
+        "+1.22 +1.22 +1.22\n"
+        "+1.22 -1.29 -1.29\n"
+        "+1.22 -1.29 -0.41\n");
+
+  // Many scans: without a clamp the values keep growing; with -2 / 3.5 they stop there.
+  CHECK(one_scan(ModelKind::cell, 3, {}, kPi / 2, 13) ==
+        " +5.27  +5.27  +5.27\n"
+        " +5.27 -11.01 -11.01\n"
+        " +5.27 -11.01  +0.00\n");
+  mapping::SensorModelOptions clamped;
+  clamped.clamp = mapping::Clamp{-2.0, 3.5};
+  CHECK(one_scan(ModelKind::ray, 3, clamped, kPi / 2, 10) ==
+        "+3.50 +3.50 +3.50\n"
+        "+3.50 -2.00 -2.00\n"
+        "+3.50 -2.00 -2.00\n");
+}
+
+namespace {
+
+// A scan of beams that all look east (a field of view of a nanoradian) from (0.5, 0.5).
+mapping::LidarScan east_beams(const std::vector<float> &ranges) {
+  mapping::LidarScan s;
+  s.origin = {0.5, 0.5};
+  s.yaw_rad = 0.0;
+  s.fov_rad = 1e-9;
+  s.min_range_m = 0.05;
+  s.max_range_m = 12.0;
+  s.ranges = ranges;
+  return s;
+}
+
+// Row of sub-cells y = 1 (through the robot) of a 3 x 1 grid, K = 3: values as text.
+std::string east_row(const std::vector<float> &ranges, const MappingOptions &options) {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3, 3, 1), 0.0f);
+  mapping::ScanUpdate update;
+  mapping::integrate_scan(options, grid, east_beams(ranges), Cell{0, 0}, model, update);
+  std::string out;
+  for (int x = 0; x < 9; ++x) {
+    const float v = grid.at(SubCell{x, 1});
+    out += v > 0.0f ? 'X' : (v < 0.0f ? '.' : '?');
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("ray model: occupied wins within a scan; each sub-cell updated once") {
+  MappingOptions ray;
+  ray.kind = ModelKind::ray;
+  // Beam 0 ends at x = 1.2 (sub-cell 3); beam 1 passes through it and ends at x = 1.9 (5).
+  const std::vector<float> ranges{0.7f, 1.4f, 1.4f};
+  CHECK(east_row(ranges, ray) == "?..X.X???");  // sub-cell 0 is behind the robot
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3, 3, 1), 0.0f);
+  mapping::ScanUpdate update;
+  CHECK(mapping::integrate_scan(ray, grid, east_beams(ranges), Cell{0, 0}, model, update) == 5);
+  CHECK(grid.at(SubCell{3, 1}) == doctest::Approx(0.405465));
+  CHECK(grid.at(SubCell{4, 1}) == doctest::Approx(-0.847298));
+  CHECK(grid.at(SubCell{1, 1}) == doctest::Approx(-0.847298));
+  CHECK(grid.at(SubCell{0, 1}) == 0.0f);
+}
+
+TEST_CASE("ray model: hit depth, no-return beams, invalid readings") {
+  MappingOptions ray;
+  ray.kind = ModelKind::ray;
+  CHECK(east_row({0.7f}, ray) == "?..X?????");
+  ray.hit_depth = 2;
+  CHECK(east_row({0.7f}, ray) == "?..XXX???");
+  ray.hit_depth = 0;
+  // No return: free to max range, or to the grid's edge.
+  const float inf = std::numeric_limits<float>::infinity();
+  CHECK(east_row({inf}, ray) == "?........");
+  CHECK(east_row({13.0f}, ray) == "?........");  // beyond max range counts as no return
+  ray.ignore_no_return = true;
+  CHECK(east_row({inf}, ray) == "?????????");
+  // NaN, negative and below-min readings are ignored, never stored.
+  CHECK(east_row({std::numeric_limits<float>::quiet_NaN(), -1.0f, 0.01f}, ray) == "?????????");
+}
+
+TEST_CASE("model options: names and validation messages") {
+  CHECK(mapping::parse_model("cell") == ModelKind::cell);
+  CHECK(mapping::parse_model("ray") == ModelKind::ray);
+  CHECK(mapping::to_string(ModelKind::ray) == "ray");
+  try {
+    mapping::parse_model("cone");
+    FAIL("no error");
+  } catch (const common::InputError &e) {
+    CHECK(e.diagnostic() == "error: unknown --model 'cone' (choose cell or ray)");
+  }
+  MappingOptions o;
+  o.hit_depth = 9;
+  try {
+    mapping::validate(o);
+    FAIL("no error");
+  } catch (const common::InputError &e) {
+    CHECK(e.diagnostic() == "error: --hit-depth must be between 0 and 8 (got 9)");
+  }
+}
+
+// ---- Amanatides-Woo traversal ----
+
+namespace {
+
+// 2 x 2 cells of 3 m with K = 3: 6 x 6 sub-cells of 1 m, so sub-cell indices are floor(x), floor(y).
+GridGeometry unit_subcells() {
+  GridGeometry g;
+  g.width_cells = 2;
+  g.height_cells = 2;
+  g.subcells = 3;
+  g.cell_size_m = 3.0;
+  return g;
+}
+
+std::vector<SubCell> walk(mapping::Point a, mapping::Point b) {
+  return mapping::subcells_on_segment(unit_subcells(), a, b);
+}
+
+using V = std::vector<SubCell>;
+
+}  // namespace
+
+TEST_CASE("traversal: axis-aligned, both ways") {
+  CHECK(walk({0.5, 0.5}, {3.5, 0.5}) == V{{0, 0}, {1, 0}, {2, 0}, {3, 0}});
+  CHECK(walk({3.5, 0.5}, {0.5, 0.5}) == V{{3, 0}, {2, 0}, {1, 0}, {0, 0}});
+  CHECK(walk({1.5, 3.5}, {1.5, 0.2}) == V{{1, 3}, {1, 2}, {1, 1}, {1, 0}});
+  CHECK(walk({1.5, 0.5}, {1.5, 2.7}) == V{{1, 0}, {1, 1}, {1, 2}});
+  CHECK(walk({1.5, 1.5}, {1.7, 1.2}) == V{{1, 1}});
+}
+
+TEST_CASE("traversal: diagonals through corners step diagonally") {
+  CHECK(walk({0.5, 0.5}, {3.5, 3.5}) == V{{0, 0}, {1, 1}, {2, 2}, {3, 3}});
+  CHECK(walk({3.5, 3.5}, {0.5, 0.5}) == V{{3, 3}, {2, 2}, {1, 1}, {0, 0}});
+  CHECK(walk({0.5, 3.5}, {3.5, 0.5}) == V{{0, 3}, {1, 2}, {2, 1}, {3, 0}});
+}
+
+TEST_CASE("traversal: shallow and negative directions cross every sub-cell in order") {
+  // (3.5, 2.2) -> (0.5, 1.4): x = 3 at y 2.067, y = 2 at x 2.75, x = 2 at y 1.8, x = 1 at y 1.533.
+  CHECK(walk({3.5, 2.2}, {0.5, 1.4}) == V{{3, 2}, {2, 2}, {2, 1}, {1, 1}, {0, 1}});
+  // (0.2, 0.5) -> (2.6, 1.7): y = 1 at x 1.2, x = 1 first at y 0.9.
+  CHECK(walk({0.2, 0.5}, {2.6, 1.7}) == V{{0, 0}, {1, 0}, {1, 1}, {2, 1}});
+}
+
+TEST_CASE("traversal: stops at the grid's edge") {
+  CHECK(walk({4.5, 2.5}, {10.0, 2.5}) == V{{4, 2}, {5, 2}});
+  CHECK(walk({0.5, 0.5}, {-3.0, -3.0}) == V{{0, 0}});
+  CHECK(walk({-1.0, 0.5}, {2.0, 0.5}).empty());  // starting outside: nothing
+}
+
+TEST_CASE("traversal: matches dense sampling on random segments") {
+  common::Rng rng(7);
+  const GridGeometry g = unit_subcells();
+  for (int n = 0; n < 300; ++n) {
+    const mapping::Point a{rng.uniform(0.0, 6.0), rng.uniform(0.0, 6.0)};
+    const mapping::Point b{rng.uniform(0.0, 6.0), rng.uniform(0.0, 6.0)};
+    const V cells = mapping::subcells_on_segment(g, a, b);
+    REQUIRE(!cells.empty());
+    // Consecutive sub-cells share a side (random segments never hit a corner exactly).
+    for (std::size_t i = 1; i < cells.size(); ++i) {
+      CHECK(std::abs(cells[i].x - cells[i - 1].x) + std::abs(cells[i].y - cells[i - 1].y) == 1);
+    }
+    // Every sample point lies in a listed sub-cell, and every listed sub-cell gets samples
+    // in the order listed.
+    std::size_t at = 0;
+    constexpr int kSamples = 4000;
+    for (int s = 0; s <= kSamples && at < cells.size(); ++s) {
+      const double t = static_cast<double>(s) / kSamples;
+      const SubCell p{static_cast<int>(std::floor(a.x_m + t * (b.x_m - a.x_m))),
+                      static_cast<int>(std::floor(a.y_m + t * (b.y_m - a.y_m)))};
+      while (at < cells.size() && !(cells[at] == p)) ++at;
+    }
+    CHECK(at < cells.size());
+    CHECK(cells.back() == SubCell{static_cast<int>(b.x_m), static_cast<int>(b.y_m)});
+  }
+}
