@@ -29,7 +29,8 @@ namespace detail {
 // ".NAME.tmp.PID" beside the target.
 inline std::string temporary_path_for(const std::string &path) {
   const std::filesystem::path target(path);
-  const std::string name = "." + target.filename().string() + ".tmp." + std::to_string(::getpid());
+  // fmt rather than operator+: g++ 12 -O3 warns falsely (-Wrestrict) on "." + string.
+  const std::string name = fmt::format(".{}.tmp.{}", target.filename().string(), ::getpid());
   return (target.parent_path() / name).string();
 }
 
