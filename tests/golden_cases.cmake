@@ -1,1 +1,12 @@
 # The golden cases, one add_golden_test() a case. Refresh: scripts/refresh-goldens.sh
+
+# The 1-D log-odds exercise and the model's numbers (issue 2). No arguments runs demo 1d for now.
+add_golden_test(main_no_arguments)
+add_golden_test(demo_1d_default ARGS demo 1d)
+add_golden_test(demo_1d_log_base_10 ARGS demo 1d --log-base 10)
+add_golden_test(demo_1d_shuffle ARGS demo 1d --order shuffle --seed 7)
+add_golden_test(explain_default ARGS explain)
+add_golden_test(explain_clamp ARGS explain --clamp -2 3.5)
+add_golden_test(demo_1d_bad_resolution STATUS 2 STDERR ARGS demo 1d --resolution 0)
+add_golden_test(demo_1d_bad_measurement STATUS 2 STDERR ARGS demo 1d --measurements "101, 82,abc")
+add_golden_test(demo_1d_svg_unwritable STATUS 2 STDERR ARGS demo 1d --svg /nonexistent-dir/plot.svg)

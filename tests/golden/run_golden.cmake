@@ -1,23 +1,36 @@
-# Runs one golden case and compares its standard output, byte for byte, with the golden file.
+# Runs one golden case and compares its standard output, byte for byte, with the golden file
+# (and, when GOLDEN_STDERR is given, its standard error with that file).
 #
-#   cmake -DPROGRAM=... -DARGS="a;b;c" -DGOLDEN=file.out -DEXPECT_STATUS=0 -DWORKDIR=dir
-#         -P run_golden.cmake
+#   cmake -DPROGRAM=... -DARGC=3 -DARG0=a -DARG1=b -DARG2=c -DGOLDEN=file.out
+#         [-DGOLDEN_STDERR=file.err] -DEXPECT_STATUS=0 -DWORKDIR=dir -P run_golden.cmake
+#
+# One definition an argument (not one list in -DARGS=): ctest's escaping of a semicolon
+# list reaches this script as "a\;b\;c", which became a single argument.
 #
 # Lines "wall_time_ms: N" are the one thing that differs between runs; they are written as
 # "wall_time_ms: (elided)" before comparing. With the environment variable
-# MAZE_MAPPER_UPDATE_GOLDEN=1 the golden file is rewritten instead (scripts/refresh-goldens.sh);
-# review `git diff tests/golden` after that.
+# MAZE_MAPPER_UPDATE_GOLDEN=1 the golden files are rewritten instead
+# (scripts/refresh-goldens.sh); review `git diff tests/golden` after that.
 
 cmake_minimum_required(VERSION 3.25)
 
 if(NOT DEFINED EXPECT_STATUS)
   set(EXPECT_STATUS 0)
 endif()
-string(RANDOM LENGTH 8 _tag)
-set(_actual "${GOLDEN}.actual")
+if(NOT DEFINED ARGC)
+  set(ARGC 0)
+endif()
+
+set(_command "${PROGRAM}")
+if(ARGC GREATER 0)
+  math(EXPR _last "${ARGC} - 1")
+  foreach(_i RANGE ${_last})
+    list(APPEND _command "${ARG${_i}}")
+  endforeach()
+endif()
 
 execute_process(
-  COMMAND ${PROGRAM} ${ARGS}
+  COMMAND ${_command}
   WORKING_DIRECTORY "${WORKDIR}"
   OUTPUT_VARIABLE _stdout
   ERROR_VARIABLE _stderr
@@ -29,20 +42,27 @@ if(NOT "${_status}" STREQUAL "${EXPECT_STATUS}")
   message(FATAL_ERROR "exit status ${_status}, expected ${EXPECT_STATUS}\nstderr:\n${_stderr}")
 endif()
 
-if("$ENV{MAZE_MAPPER_UPDATE_GOLDEN}" STREQUAL "1")
-  file(WRITE "${GOLDEN}" "${_stdout}")
-  message(STATUS "updated ${GOLDEN}")
-  return()
-endif()
+# Rewrites `golden` with `text` (update mode), or fails with a diff when they differ.
+function(compare_with_golden golden text)
+  if("$ENV{MAZE_MAPPER_UPDATE_GOLDEN}" STREQUAL "1")
+    file(WRITE "${golden}" "${text}")
+    message(STATUS "updated ${golden}")
+    return()
+  endif()
+  if(NOT EXISTS "${golden}")
+    message(FATAL_ERROR "no golden file ${golden}; create it with scripts/refresh-goldens.sh")
+  endif()
+  file(READ "${golden}" _expected)
+  if(NOT text STREQUAL _expected)
+    set(_actual "${golden}.actual")
+    file(WRITE "${_actual}" "${text}")
+    execute_process(COMMAND diff -u "${golden}" "${_actual}" OUTPUT_VARIABLE _diff)
+    file(REMOVE "${_actual}")
+    message(FATAL_ERROR "output differs from ${golden}:\n${_diff}")
+  endif()
+endfunction()
 
-if(NOT EXISTS "${GOLDEN}")
-  message(FATAL_ERROR "no golden file ${GOLDEN}; create it with scripts/refresh-goldens.sh")
-endif()
-
-file(READ "${GOLDEN}" _expected)
-if(NOT _stdout STREQUAL _expected)
-  file(WRITE "${_actual}" "${_stdout}")
-  execute_process(COMMAND diff -u "${GOLDEN}" "${_actual}" OUTPUT_VARIABLE _diff)
-  file(REMOVE "${_actual}")
-  message(FATAL_ERROR "output differs from ${GOLDEN}:\n${_diff}")
+compare_with_golden("${GOLDEN}" "${_stdout}")
+if(DEFINED GOLDEN_STDERR)
+  compare_with_golden("${GOLDEN_STDERR}" "${_stderr}")
 endif()
