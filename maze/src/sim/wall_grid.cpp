@@ -10,6 +10,8 @@ namespace maze::sim {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// An overlap smaller than this is rounding, not a collision.
+constexpr double kSlop_m = 1e-12;
 
 // Distance t >= 0 at which the ray (ox, oy) + t (dx, dy) enters the closed box, or +infinity.
 double entry_distance(double ox, double oy, double dx, double dy, const Box &b) {
@@ -208,7 +210,7 @@ bool WallGrid::push_out(double &x_m, double &y_m, double radius_m) const {
       const double ex = x_m - qx;
       const double ey = y_m - qy;
       const double d = std::hypot(ex, ey);
-      if (d >= radius_m) continue;
+      if (d >= radius_m - kSlop_m) continue;
       if (d > 0.0) {
         x_m += ex / d * (radius_m - d);
         y_m += ey / d * (radius_m - d);

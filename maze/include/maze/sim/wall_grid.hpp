@@ -55,7 +55,8 @@ class WallGrid {
   // Distance from (x, y) along the direction angle_rad (0 east, counter-clockwise) to the
   // first wall surface, or +infinity when there is none within max_range_m. Walks the cells
   // the ray crosses (Amanatides-Woo) and tests only the solid boxes of those cells.
-  // A ray starting inside a wall returns 0.
+  // The origin must not be inside a wall (check it with inside_wall); on a wall's surface,
+  // a ray into the wall returns 0.
   double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
 
   // Pushes a disc of radius_m centred at (x, y) out of every wall it overlaps (the smallest
