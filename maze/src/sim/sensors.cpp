@@ -11,6 +11,12 @@
 
 namespace maze::sim {
 
+common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step) {
+  const auto d = static_cast<std::uint64_t>(device) + 1;
+  const auto s = static_cast<std::uint64_t>(step);
+  return common::Rng(seed ^ (d * 0x9e3779b97f4a7c15ULL) ^ (s * 0xd1b54a32d192ed03ULL));
+}
+
 void check_pose_free(const WallGrid &walls, const Pose &pose) {
   if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.yaw_rad)) {
     throw common::InputError("the pose must be finite numbers");

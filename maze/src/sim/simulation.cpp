@@ -195,9 +195,7 @@ bool Simulation::fresh(DeviceState &state) {
 }
 
 common::Rng Simulation::rng_for(int device) const {
-  const auto d = static_cast<std::uint64_t>(device) + 1;
-  const auto s = static_cast<std::uint64_t>(steps_);
-  return common::Rng(options_.seed ^ (d * 0x9e3779b97f4a7c15ULL) ^ (s * 0xd1b54a32d192ed03ULL));
+  return maze::sim::sensor_rng(options_.seed, device, steps_);
 }
 
 double Simulation::lidar_noise(const maze::sim::LidarSpec &spec) const {

@@ -2,6 +2,7 @@
 // What the simulated sensors measure at a pose: pure functions of the walls, the sensor's
 // spec and a random source. The embedded simulator's devices and `maze_mapper scan` use them.
 
+#include <cstdint>
 #include <span>
 
 #include "common/random.hpp"
@@ -16,6 +17,10 @@ struct Pose {
   double y_m = 0.0;
   double yaw_rad = 0.0;
 };
+
+// The random stream of a device's reading at a step: readings depend on (seed, device,
+// step) only, not on when or how often they are read.
+common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step);
 
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
