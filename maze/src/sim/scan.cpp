@@ -39,7 +39,8 @@ std::string format_scan(const Maze &maze, const ScanRequest &request) {
   std::vector<float> ranges(static_cast<std::size_t>(lidar.horizontal_resolution));
   // The lidar is the simulation's first device; its reading at step 0 uses this stream.
   common::Rng rng = sensor_rng(request.seed, 0, 0);
-  range_image(walls, lidar, request.noise.value_or(lidar.noise), request.pose, rng, ranges);
+  LidarModel(lidar).range_image(walls, request.noise.value_or(lidar.noise), request.pose, rng,
+                               ranges);
   std::string out;
   for (int i = 0; i < lidar.horizontal_resolution; ++i) {
     fmt::format_to(std::back_inserter(out), "{} {:.6f} {:.6f}\n", i, beam_angle_rad(lidar, i),

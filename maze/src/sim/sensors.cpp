@@ -42,18 +42,30 @@ double beam_angle_rad(const LidarSpec &lidar, int i) {
   return lidar.fov_rad / 2.0 - i * lidar.fov_rad / lidar.horizontal_resolution;
 }
 
-void range_image(const WallGrid &walls, const LidarSpec &lidar, double noise, const Pose &pose,
-                 common::Rng &rng, std::span<float> out) {
-  assert(out.size() == static_cast<std::size_t>(lidar.horizontal_resolution));
-  const double sigma_m = noise * lidar.max_range_m;
+LidarModel::LidarModel(const LidarSpec &spec) : spec_(spec) {
+  assert(spec.horizontal_resolution >= 1);
+  for (int i = 0; i < spec.horizontal_resolution; ++i) {
+    cos_.push_back(std::cos(beam_angle_rad(spec, i)));
+    sin_.push_back(std::sin(beam_angle_rad(spec, i)));
+  }
+}
+
+void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &pose,
+                             common::Rng &rng, std::span<float> out) const {
+  assert(out.size() == cos_.size());
+  const double sigma_m = noise * spec_.max_range_m;
+  // Cast a little past max range so that noise can bring a far hit back into range.
+  const double reach_m = spec_.max_range_m + 6.0 * sigma_m;
+  const double c = std::cos(pose.yaw_rad);
+  const double s = std::sin(pose.yaw_rad);
   constexpr float kNoReturn = std::numeric_limits<float>::infinity();
-  for (int i = 0; i < lidar.horizontal_resolution; ++i) {
-    const double angle = pose.yaw_rad + beam_angle_rad(lidar, i);
-    // Cast a little past max range so that noise can bring a far hit back into range.
-    double range = walls.cast(pose.x_m, pose.y_m, angle, lidar.max_range_m + 6.0 * sigma_m);
+  for (std::size_t i = 0; i < cos_.size(); ++i) {
+    const double dx = c * cos_[i] - s * sin_[i];
+    const double dy = s * cos_[i] + c * sin_[i];
+    double range = walls.cast_direction(pose.x_m, pose.y_m, dx, dy, reach_m);
     if (sigma_m > 0.0) range += rng.normal(0.0, sigma_m);
-    const bool in_range = range >= lidar.min_range_m && range <= lidar.max_range_m;
-    out[static_cast<std::size_t>(i)] = in_range ? static_cast<float>(range) : kNoReturn;
+    const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
+    out[i] = in_range ? static_cast<float>(range) : kNoReturn;
   }
 }
 

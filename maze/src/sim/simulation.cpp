@@ -101,6 +101,7 @@ Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &pr
           pose_.x_m, pose_.y_m));
     }
   }
+  for (const maze::sim::LidarSpec &spec : profile_.lidars) lidar_models_.emplace_back(spec);
   for (int i = 0; i < static_cast<int>(profile_.lidars.size()); ++i) {
     add_device<Lidar>(profile_.lidars[static_cast<std::size_t>(i)].name, Kind::lidar, i);
   }
@@ -213,7 +214,8 @@ const float *Simulation::lidar_range_image(int device) {
   if (!fresh(state)) {
     state.ranges.resize(static_cast<std::size_t>(spec.horizontal_resolution));
     common::Rng rng = rng_for(device);
-    maze::sim::range_image(walls_, spec, lidar_noise(spec), pose_, rng, state.ranges);
+    lidar_models_[static_cast<std::size_t>(state.spec)].range_image(walls_, lidar_noise(spec),
+                                                                     pose_, rng, state.ranges);
   }
   return state.ranges.data();
 }

@@ -13,26 +13,29 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // An overlap smaller than this is rounding, not a collision.
 constexpr double kSlop_m = 1e-12;
 
-// Distance t >= 0 at which the ray (ox, oy) + t (dx, dy) enters the closed box, or +infinity.
-double entry_distance(double ox, double oy, double dx, double dy, const Box &b) {
+// A ray (ox, oy) + t (dx, dy), with the inverses of its direction precomputed.
+struct Ray {
+  double ox, oy, dx, dy, inv_dx, inv_dy;
+};
+
+// Distance t >= 0 at which the ray enters the closed box, or +infinity.
+double entry_distance(const Ray &r, double x_min, double y_min, double x_max, double y_max) {
   double t_min = 0.0;
   double t_max = kInfinity;
-  if (dx == 0.0) {
-    if (ox < b.x_min_m || ox > b.x_max_m) return kInfinity;
+  if (r.dx == 0.0) {
+    if (r.ox < x_min || r.ox > x_max) return kInfinity;
   } else {
-    const double inv = 1.0 / dx;
-    double a = (b.x_min_m - ox) * inv;
-    double c = (b.x_max_m - ox) * inv;
+    double a = (x_min - r.ox) * r.inv_dx;
+    double c = (x_max - r.ox) * r.inv_dx;
     if (a > c) std::swap(a, c);
     t_min = std::max(t_min, a);
     t_max = std::min(t_max, c);
   }
-  if (dy == 0.0) {
-    if (oy < b.y_min_m || oy > b.y_max_m) return kInfinity;
+  if (r.dy == 0.0) {
+    if (r.oy < y_min || r.oy > y_max) return kInfinity;
   } else {
-    const double inv = 1.0 / dy;
-    double a = (b.y_min_m - oy) * inv;
-    double c = (b.y_max_m - oy) * inv;
+    double a = (y_min - r.oy) * r.inv_dy;
+    double c = (y_max - r.oy) * r.inv_dy;
     if (a > c) std::swap(a, c);
     t_min = std::max(t_min, a);
     t_max = std::min(t_max, c);
@@ -81,10 +84,11 @@ WallGrid::WallGrid(const Maze &maze)
       if (maze.has_wall({x, y}, Side::east)) f |= kEast;
       if (maze.has_wall({x, y}, Side::south)) f |= kSouth;
       if (maze.has_wall({x, y}, Side::west)) f |= kWest;
-      if (vertex_solid(x + 1, y + 1)) f |= kCornerNE;
-      if (vertex_solid(x, y + 1)) f |= kCornerNW;
-      if (vertex_solid(x, y)) f |= kCornerSW;
-      if (vertex_solid(x + 1, y)) f |= kCornerSE;
+      // A corner square already inside one of this cell's strips needs no box of its own.
+      if (!(f & (kNorth | kEast)) && vertex_solid(x + 1, y + 1)) f |= kCornerNE;
+      if (!(f & (kNorth | kWest)) && vertex_solid(x, y + 1)) f |= kCornerNW;
+      if (!(f & (kSouth | kWest)) && vertex_solid(x, y)) f |= kCornerSW;
+      if (!(f & (kSouth | kEast)) && vertex_solid(x + 1, y)) f |= kCornerSE;
       flags_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
              static_cast<std::size_t>(x)] = f;
     }
@@ -142,14 +146,16 @@ bool WallGrid::inside_wall(double x_m, double y_m) const {
 }
 
 double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range_m) const {
+  return cast_direction(x_m, y_m, std::cos(angle_rad), std::sin(angle_rad), max_range_m);
+}
+
+double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
+                                double max_range_m) const {
   if (!inside_maze(x_m, y_m)) return kInfinity;
-  const double dx = std::cos(angle_rad);
-  const double dy = std::sin(angle_rad);
   const double s = cell_size_m_;
-  const double lx = x_m - origin_x_m_;
-  const double ly = y_m - origin_y_m_;
-  int cx = std::min(static_cast<int>(std::floor(lx / s)), width_ - 1);
-  int cy = std::min(static_cast<int>(std::floor(ly / s)), height_ - 1);
+  const Ray ray{x_m - origin_x_m_, y_m - origin_y_m_, dx, dy, 1.0 / dx, 1.0 / dy};
+  int cx = std::min(static_cast<int>(ray.ox / s), width_ - 1);
+  int cy = std::min(static_cast<int>(ray.oy / s), height_ - 1);
 
   // Only boxes with a face turned towards the ray can be entered from inside a cell; the
   // others are continued by a solid box of the cell the ray came from.
@@ -161,10 +167,10 @@ double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range
 
   const int step_x = dx > 0.0 ? 1 : -1;
   const int step_y = dy > 0.0 ? 1 : -1;
-  const double t_delta_x = dx != 0.0 ? s / std::abs(dx) : kInfinity;
-  const double t_delta_y = dy != 0.0 ? s / std::abs(dy) : kInfinity;
-  double t_max_x = dx != 0.0 ? ((cx + (dx > 0.0 ? 1 : 0)) * s - lx) / dx : kInfinity;
-  double t_max_y = dy != 0.0 ? ((cy + (dy > 0.0 ? 1 : 0)) * s - ly) / dy : kInfinity;
+  const double t_delta_x = dx != 0.0 ? s * std::abs(ray.inv_dx) : kInfinity;
+  const double t_delta_y = dy != 0.0 ? s * std::abs(ray.inv_dy) : kInfinity;
+  double t_max_x = dx != 0.0 ? ((cx + (dx > 0.0 ? 1 : 0)) * s - ray.ox) * ray.inv_dx : kInfinity;
+  double t_max_y = dy != 0.0 ? ((cy + (dy > 0.0 ? 1 : 0)) * s - ray.oy) * ray.inv_dy : kInfinity;
 
   const double h = half_thickness_m_;
   for (;;) {
@@ -175,17 +181,14 @@ double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range
       const double x1 = x0 + s;
       const double y1 = y0 + s;
       double best = kInfinity;
-      const auto test = [&](std::uint8_t bit, Box b) {
-        if (f & bit) best = std::min(best, entry_distance(lx, ly, dx, dy, b));
-      };
-      test(kNorth, {x0, y1 - h, x1, y1});
-      test(kSouth, {x0, y0, x1, y0 + h});
-      test(kEast, {x1 - h, y0, x1, y1});
-      test(kWest, {x0, y0, x0 + h, y1});
-      test(kCornerNE, {x1 - h, y1 - h, x1, y1});
-      test(kCornerNW, {x0, y1 - h, x0 + h, y1});
-      test(kCornerSW, {x0, y0, x0 + h, y0 + h});
-      test(kCornerSE, {x1 - h, y0, x1, y0 + h});
+      if (f & kNorth) best = std::min(best, entry_distance(ray, x0, y1 - h, x1, y1));
+      if (f & kSouth) best = std::min(best, entry_distance(ray, x0, y0, x1, y0 + h));
+      if (f & kEast) best = std::min(best, entry_distance(ray, x1 - h, y0, x1, y1));
+      if (f & kWest) best = std::min(best, entry_distance(ray, x0, y0, x0 + h, y1));
+      if (f & kCornerNE) best = std::min(best, entry_distance(ray, x1 - h, y1 - h, x1, y1));
+      if (f & kCornerNW) best = std::min(best, entry_distance(ray, x0, y1 - h, x0 + h, y1));
+      if (f & kCornerSW) best = std::min(best, entry_distance(ray, x0, y0, x0 + h, y0 + h));
+      if (f & kCornerSE) best = std::min(best, entry_distance(ray, x1 - h, y0, x1, y0 + h));
       if (best < kInfinity) return best <= max_range_m ? best : kInfinity;
     }
     if (std::min(t_max_x, t_max_y) > max_range_m) return kInfinity;

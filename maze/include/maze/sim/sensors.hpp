@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "common/random.hpp"
 #include "maze/sim/profile.hpp"
@@ -29,12 +30,23 @@ void check_pose_free(const WallGrid &walls, const Pose &pose);
 // 360 beams over 2 pi index 0 looks back, 90 left, 180 ahead, 270 right.
 double beam_angle_rad(const LidarSpec &lidar, int i);
 
-// The lidar's range image at pose, in out (lidar.horizontal_resolution values, m): the
-// distance to the first wall plus Gaussian noise of sigma noise x max range, +infinity when
-// that is outside [min range, max range]. One normal variate is drawn per beam, in index
-// order, whether or not the beam returns; noise 0 draws none.
-void range_image(const WallGrid &walls, const LidarSpec &lidar, double noise, const Pose &pose,
-                 common::Rng &rng, std::span<float> out);
+// A lidar with its beam directions computed once.
+class LidarModel {
+ public:
+  explicit LidarModel(const LidarSpec &spec);
+  const LidarSpec &spec() const { return spec_; }
+
+  // The range image at pose, in out (spec.horizontal_resolution values, m): the distance to
+  // the first wall plus Gaussian noise of sigma noise x max range, +infinity when that is
+  // outside [min range, max range]. One normal variate is drawn per beam, in index order,
+  // whether or not the beam returns; noise 0 draws none.
+  void range_image(const WallGrid &walls, double noise, const Pose &pose, common::Rng &rng,
+                   std::span<float> out) const;
+
+ private:
+  LidarSpec spec_;
+  std::vector<double> cos_, sin_;  // of beam_angle_rad(spec_, i)
+};
 
 // A distance sensor on the rim of a body of body_radius_m: its rays spread evenly over the
 // aperture, each ray's distance (the table's last distance when nothing is nearer) weighted

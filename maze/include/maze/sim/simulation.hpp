@@ -141,6 +141,7 @@ class Simulation {
   std::int64_t steps_ = 0;
   bool stop_requested_ = false;
   bool ended_ = false;
+  std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
   std::vector<DeviceState> states_;
   std::vector<std::unique_ptr<Device>> devices_;
   std::unique_ptr<Robot> robot_;

@@ -58,6 +58,8 @@ class WallGrid {
   // The origin must not be inside a wall (check it with inside_wall); on a wall's surface,
   // a ray into the wall returns 0.
   double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
+  // The same along the unit vector (dx, dy).
+  double cast_direction(double x_m, double y_m, double dx, double dy, double max_range_m) const;
 
   // Pushes a disc of radius_m centred at (x, y) out of every wall it overlaps (the smallest
   // move, so motion along a wall slides and motion into it stops). Returns whether it moved.
