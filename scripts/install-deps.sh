@@ -4,7 +4,7 @@
 set -eu
 
 PACKAGES="cmake ninja-build g++ clang libclang-rt-14-dev \
-libeigen3-dev libfmt-dev doctest-dev libcli11-dev libtinyxml2-dev"
+libeigen3-dev libfmt-dev doctest-dev libcli11-dev libtinyxml2-dev libbenchmark-dev"
 
 missing=""
 for pkg in $PACKAGES; do

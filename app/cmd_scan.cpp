@@ -1,0 +1,53 @@
+// maze_mapper scan WORLD --pose X Y YAW [--robot NAME] [--noise X] [--seed N]
+// Prints one lidar range image at a pose: `index angle_rad range_m` a line, `inf` for no return.
+
+#include <cstdint>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "maze/sim/scan.hpp"
+#include "maze/world_io.hpp"
+
+namespace app {
+
+namespace {
+
+struct ScanArgs {
+  std::string world;
+  std::vector<double> pose;
+  std::string robot = "hambot";
+  std::optional<double> noise;
+  std::uint64_t seed = common::kDefaultSeed;
+};
+
+}  // namespace
+
+void add_scan_command(CLI::App &cli, CommandContext &context) {
+  auto args = std::make_shared<ScanArgs>();
+  CLI::App *scan = cli.add_subcommand(
+      "scan", "print one lidar range image at a pose: `index angle_rad range_m` a line");
+  scan->add_option("WORLD", args->world, "maze file")->required();
+  scan->add_option("--pose", args->pose, "X Y YAW: position (m, world frame) and heading (rad)")
+      ->expected(3)
+      ->required();
+  scan->add_option("--robot", args->robot, "robot profile (default hambot)");
+  scan->add_option("--noise", args->noise, "lidar noise as a fraction of max range (0: exact)");
+  scan->add_option("--seed", args->seed, "seed of the noise");
+  scan->callback([args, &context] {
+    const maze::Maze maze = maze::load_world(args->world);
+    maze::sim::ScanRequest request;
+    request.pose = {args->pose[0], args->pose[1], args->pose[2]};
+    request.robot = args->robot;
+    request.noise = args->noise;
+    request.seed = args->seed;
+    std::cout << maze::sim::format_scan(maze, request);
+    context.status = 0;
+  });
+}
+
+}  // namespace app

@@ -1,0 +1,166 @@
+#pragma once
+// The embedded simulator: a maze, one robot built from a profile, and simulated time, behind
+// the webots:: device API (DESIGN §2). The composition root builds one and hands the robot
+// to the controller, exactly as Webots starts a controller process:
+//
+//   maze::sim::SimulationOptions options;          // 32 ms basic step, seed, noise, limit
+//   options.time_limit_s = 600.0;
+//   webots::embedded::Simulation simulation(maze, maze::sim::find_profile("hambot"), options);
+//   webots::embedded::CurrentSimulation current(simulation);  // for `webots::Robot robot;`
+//   run_controller();   // controller code: webots::Robot robot; ... robot.step(32) ...
+//
+// A default-constructed webots::Robot attaches to the simulation made current by a live
+// CurrentSimulation (per thread); simulation.robot() is the same robot without that step.
+//
+// Physics: differential drive integrated exactly (arcs) in sub-steps short enough that the
+// body moves at most a tenth of its radius; a body that would overlap a wall is pushed out
+// along the contact normal, so motion into a wall stops and motion along it slides. Wheels
+// slip against a wall: the encoders count what the motors turned.
+// Sensors are lazy: a device computes its reading when read, at most once per basic step;
+// noise comes from a Rng seeded by (seed, device, step), so readings do not depend on the
+// order or number of reads. Readings reflect the current state as soon as a device is
+// enabled (Webots waits for the first sampling period; a controller that steps before it
+// reads sees no difference). A disabled device reads NaN (Lidar: nullptr).
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/random.hpp"
+#include "maze/maze.hpp"
+#include "maze/sim/profile.hpp"
+#include "maze/sim/sensors.hpp"
+#include "maze/sim/wall_grid.hpp"
+
+namespace webots {
+class Device;
+class Robot;
+}  // namespace webots
+
+namespace maze::sim {
+
+struct SimulationOptions {
+  int basic_time_step_ms = 32;
+  std::uint64_t seed = common::kDefaultSeed;
+  double time_limit_s = 0.0;  // 0: none; else Robot::step returns -1 once it is reached
+  // Overrides the profile's lidar noise (fraction of max range). 0 also turns off the
+  // distance sensors' lookup-table noise: `--noise 0` makes every sensor exact.
+  std::optional<double> noise;
+  double gps_noise_m = 0.0;        // Gaussian sigma per coordinate
+  double imu_noise_rad = 0.0;      // Gaussian sigma on yaw
+  double encoder_noise_rad = 0.0;  // Gaussian sigma on each wheel angle
+  // Where the robot starts; default: the centre of the maze's start cell, facing its start
+  // heading.
+  std::optional<Pose> start;
+
+  // Throws common::InputError naming the first bad option.
+  void validate() const;
+};
+
+}  // namespace maze::sim
+
+namespace webots::embedded {
+
+class Simulation {
+ public:
+  // Validates options and the start pose (inside the maze, the body clear of the walls);
+  // throws common::InputError otherwise.
+  Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
+             const maze::sim::SimulationOptions &options);
+  ~Simulation();
+  Simulation(const Simulation &) = delete;
+  Simulation &operator=(const Simulation &) = delete;
+
+  Robot &robot() { return *robot_; }
+  const maze::sim::RobotProfile &profile() const { return profile_; }
+  const maze::sim::WallGrid &walls() const { return walls_; }
+
+  // The truth, for the composition root, evaluation and tests (never the controller).
+  const maze::sim::Pose &pose() const { return pose_; }
+  std::int64_t time_ms() const { return time_ms_; }
+  // The next Robot::step returns -1 (as when Webots quits).
+  void request_stop() { stop_requested_ = true; }
+
+  // ---- plumbing for the webots:: device classes (maze/src/webots/) ----
+  int step(int duration_ms);
+  int basic_time_step_ms() const { return options_.basic_time_step_ms; }
+  Device *device(const std::string &name);
+
+  void set_sampling_period(int device, int period_ms);
+  int sampling_period(int device) const;
+
+  const float *lidar_range_image(int device);
+  const maze::sim::LidarSpec &lidar_spec(int device) const;
+
+  void motor_set_position(int device, double position_rad);
+  void motor_set_velocity(int device, double velocity_rad_s);
+  double motor_velocity(int device) const;
+  double motor_max_velocity() const { return profile_.max_wheel_velocity_rad_s; }
+
+  double encoder_value(int device);
+  const double *imu_roll_pitch_yaw(int device);
+  const double *gps_values(int device);
+  double touch_value(int device);
+  double distance_value(int device);
+  const maze::sim::DistanceSensorSpec &distance_spec(int device) const;
+
+ private:
+  enum class Kind { lidar, motor, encoder, imu, gps, touch, distance };
+  struct Wheel {
+    double angle_rad = 0.0;
+    double target_rad = 0.0;  // +infinity: velocity control
+    double velocity_rad_s = 0.0;
+  };
+  // One entry per device, in creation order; `spec` indexes the profile's list of that kind
+  // (for motors and encoders: 0 left, 1 right).
+  struct DeviceState {
+    Kind kind;
+    int spec = 0;
+    int sampling_period_ms = 0;
+    std::int64_t read_at_step = -1;  // the step whose reading `cache` holds
+    std::vector<float> ranges;
+    double cache[3] = {0.0, 0.0, 0.0};
+  };
+
+  template <typename D>
+  void add_device(const std::string &name, Kind kind, int spec);
+  void advance(double dt_s);
+  double wheel_rate(const Wheel &wheel, double dt_s) const;
+  bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
+  common::Rng rng_for(int device) const;
+  double lidar_noise(const maze::sim::LidarSpec &spec) const;
+
+  maze::sim::RobotProfile profile_;
+  maze::sim::SimulationOptions options_;
+  maze::sim::WallGrid walls_;
+  maze::sim::Pose pose_;
+  Wheel wheels_[2];
+  std::int64_t time_ms_ = 0;
+  std::int64_t steps_ = 0;
+  bool stop_requested_ = false;
+  bool ended_ = false;
+  std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
+  std::vector<DeviceState> states_;
+  std::vector<std::unique_ptr<Device>> devices_;
+  std::unique_ptr<Robot> robot_;
+};
+
+// Makes a simulation current for webots::Robot's default constructor while alive (per
+// thread; nests, restoring the previous one when destroyed).
+class CurrentSimulation {
+ public:
+  explicit CurrentSimulation(Simulation &simulation);
+  ~CurrentSimulation();
+  CurrentSimulation(const CurrentSimulation &) = delete;
+  CurrentSimulation &operator=(const CurrentSimulation &) = delete;
+
+ private:
+  Simulation *previous_;
+};
+
+// The simulation a default-constructed Robot attaches to, or nullptr.
+Simulation *current_simulation();
+
+}  // namespace webots::embedded

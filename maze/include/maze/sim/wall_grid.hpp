@@ -1,0 +1,94 @@
+#pragma once
+// The maze's walls as solid geometry, for ray casting and collisions (DESIGN §4).
+//
+// A wall on a cell side is a rectangle centred on that side, as long as the side plus the
+// wall thickness and as thick as the wall. Cut along the cell grid, the solid part inside
+// one cell is at most four side strips (half a wall thick) and four corner squares (half a
+// wall thick on each side), the corner square being solid when any wall meets that grid
+// vertex. WallGrid stores those eight flags per cell, built once from the maze; every
+// query then looks only at the cells it crosses, never at the whole maze.
+//
+//          NW corner    north strip     NE corner
+//              +--+-------------------+--+
+//              |##|###################|##|   <- half a wall thickness (h = t / 2)
+//              +--+                   +--+
+//   west strip |##|       free        |##| east strip
+//              +--+                   +--+
+//              |##|###################|##|
+//              +--+-------------------+--+
+//          SW corner    south strip     SE corner
+//
+// Rectangles are closed: a ray that touches a wall's face or corner hits it.
+
+#include <cstdint>
+#include <vector>
+
+#include "maze/maze.hpp"
+
+namespace maze::sim {
+
+// An axis-aligned solid box in world metres.
+struct Box {
+  double x_min_m, y_min_m, x_max_m, y_max_m;
+};
+
+// A point on a wall's surface within reach of a disc, and the disc centre's distance to it.
+struct Contact {
+  double x_m, y_m, distance_m;
+};
+
+class WallGrid {
+ public:
+  // O(width x height) once; afterwards no query is proportional to the maze.
+  explicit WallGrid(const Maze &maze);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  double cell_size_m() const { return cell_size_m_; }
+  double wall_thickness_m() const { return 2.0 * half_thickness_m_; }
+
+  // Whether the point lies within the maze's outer edge (the outer walls' centre lines).
+  bool inside_maze(double x_m, double y_m) const;
+  // Whether the point lies inside (or on the surface of) a wall.
+  bool inside_wall(double x_m, double y_m) const;
+
+  // Distance from (x, y) along the direction angle_rad (0 east, counter-clockwise) to the
+  // first wall surface, or +infinity when there is none within max_range_m. Walks the cells
+  // the ray crosses (Amanatides-Woo) and tests only the solid boxes of those cells.
+  // The origin must not be inside a wall (check it with inside_wall); on a wall's surface,
+  // a ray into the wall returns 0.
+  double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
+  // The same along the unit vector (dx, dy).
+  double cast_direction(double x_m, double y_m, double dx, double dy, double max_range_m) const;
+
+  // Pushes a disc of radius_m centred at (x, y) out of every wall it overlaps (the smallest
+  // move, so motion along a wall slides and motion into it stops). Returns whether it moved.
+  bool push_out(double &x_m, double &y_m, double radius_m) const;
+
+  // The nearest surface point of each solid box within reach_m of (x, y).
+  std::vector<Contact> contacts(double x_m, double y_m, double reach_m) const;
+
+ private:
+  enum Flag : std::uint8_t {
+    kNorth = 1, kEast = 2, kSouth = 4, kWest = 8,
+    kCornerNE = 16, kCornerNW = 32, kCornerSW = 64, kCornerSE = 128,
+  };
+  std::uint8_t flags(int cx, int cy) const {
+    return flags_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) +
+                  static_cast<std::size_t>(cx)];
+  }
+  // The solid boxes of cell (cx, cy) whose flags are in mask, appended to out.
+  void boxes(int cx, int cy, std::uint8_t mask, std::vector<Box> &out) const;
+  // The solid boxes of every cell meeting the square of half-side reach_m around (x, y).
+  std::vector<Box> boxes_near(double x_m, double y_m, double reach_m) const;
+
+  int width_;
+  int height_;
+  double cell_size_m_;
+  double half_thickness_m_;
+  double origin_x_m_;
+  double origin_y_m_;
+  std::vector<std::uint8_t> flags_;  // flags_[y * width + x]
+};
+
+}  // namespace maze::sim

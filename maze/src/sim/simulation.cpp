@@ -1,0 +1,306 @@
+#include "maze/sim/simulation.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include <webots/DistanceSensor.hpp>
+#include <webots/GPS.hpp>
+#include <webots/InertialUnit.hpp>
+#include <webots/Lidar.hpp>
+#include <webots/Motor.hpp>
+#include <webots/PositionSensor.hpp>
+#include <webots/Robot.hpp>
+#include <webots/TouchSensor.hpp>
+
+#include "common/error.hpp"
+
+namespace maze::sim {
+
+namespace {
+
+void require_non_negative(double value, const char *what) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw common::InputError(fmt::format("{} must be a finite number >= 0 (got {})", what, value));
+  }
+}
+
+}  // namespace
+
+void SimulationOptions::validate() const {
+  if (basic_time_step_ms <= 0) {
+    throw common::InputError(
+        fmt::format("the basic time step must be at least 1 ms (got {})", basic_time_step_ms));
+  }
+  require_non_negative(time_limit_s, "the time limit");
+  if (noise) require_non_negative(*noise, "--noise");
+  require_non_negative(gps_noise_m, "the GPS noise");
+  require_non_negative(imu_noise_rad, "the IMU noise");
+  require_non_negative(encoder_noise_rad, "the encoder noise");
+}
+
+}  // namespace maze::sim
+
+namespace webots::embedded {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kLeft = 0;
+constexpr int kRight = 1;
+
+double heading_rad(maze::Side s) {
+  switch (s) {
+    case maze::Side::north: return std::numbers::pi / 2.0;
+    case maze::Side::east: return 0.0;
+    case maze::Side::south: return -std::numbers::pi / 2.0;
+    case maze::Side::west: return std::numbers::pi;
+  }
+  return 0.0;
+}
+
+maze::sim::Pose start_pose(const maze::Maze &maze) {
+  const double s = maze.cell_size_m();
+  return {maze.origin_x_m() + (maze.start().x + 0.5) * s,
+          maze.origin_y_m() + (maze.start().y + 0.5) * s, heading_rad(maze.start_heading())};
+}
+
+thread_local Simulation *g_current = nullptr;
+
+}  // namespace
+
+Simulation *current_simulation() { return g_current; }
+
+CurrentSimulation::CurrentSimulation(Simulation &simulation) : previous_(g_current) {
+  g_current = &simulation;
+}
+
+CurrentSimulation::~CurrentSimulation() { g_current = previous_; }
+
+template <typename D>
+void Simulation::add_device(const std::string &name, Kind kind, int spec) {
+  if (name.empty()) return;
+  const int index = static_cast<int>(states_.size());
+  states_.push_back({kind, spec, 0, -1, {}, {0.0, 0.0, 0.0}});
+  devices_.push_back(std::unique_ptr<Device>(new D(name, *this, index)));
+}
+
+Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
+                       const maze::sim::SimulationOptions &options)
+    : profile_(profile), options_(options), walls_(maze), pose_(options.start.value_or(start_pose(maze))) {
+  options_.validate();
+  maze::sim::check_pose_free(walls_, pose_);
+  for (const maze::sim::Contact &c : walls_.contacts(pose_.x_m, pose_.y_m, profile_.body_radius_m)) {
+    if (c.distance_m < profile_.body_radius_m - 1e-9) {
+      throw common::InputError(fmt::format(
+          "the robot's body (radius {} m) overlaps a wall at ({}, {})", profile_.body_radius_m,
+          pose_.x_m, pose_.y_m));
+    }
+  }
+  for (const maze::sim::LidarSpec &spec : profile_.lidars) lidar_models_.emplace_back(spec);
+  for (int i = 0; i < static_cast<int>(profile_.lidars.size()); ++i) {
+    add_device<Lidar>(profile_.lidars[static_cast<std::size_t>(i)].name, Kind::lidar, i);
+  }
+  add_device<Motor>(profile_.left_motor, Kind::motor, kLeft);
+  add_device<Motor>(profile_.right_motor, Kind::motor, kRight);
+  add_device<PositionSensor>(profile_.left_encoder, Kind::encoder, kLeft);
+  add_device<PositionSensor>(profile_.right_encoder, Kind::encoder, kRight);
+  add_device<InertialUnit>(profile_.imu, Kind::imu, 0);
+  add_device<GPS>(profile_.gps, Kind::gps, 0);
+  for (int i = 0; i < static_cast<int>(profile_.bumpers.size()); ++i) {
+    add_device<TouchSensor>(profile_.bumpers[static_cast<std::size_t>(i)].name, Kind::touch, i);
+  }
+  for (int i = 0; i < static_cast<int>(profile_.distance_sensors.size()); ++i) {
+    add_device<DistanceSensor>(profile_.distance_sensors[static_cast<std::size_t>(i)].name,
+                               Kind::distance, i);
+  }
+  // A Webots motor starts in position control at position 0, at up to its maximum velocity.
+  for (Wheel &w : wheels_) w.velocity_rad_s = profile_.max_wheel_velocity_rad_s;
+  robot_ = std::unique_ptr<Robot>(new Robot(*this));
+}
+
+Simulation::~Simulation() = default;
+
+Device *Simulation::device(const std::string &name) {
+  for (const auto &d : devices_) {
+    if (d->getName() == name) return d.get();
+  }
+  return nullptr;
+}
+
+int Simulation::step(int duration_ms) {
+  if (stop_requested_ || ended_) return -1;
+  const int basic = options_.basic_time_step_ms;
+  const int count = std::max(1, (duration_ms + basic - 1) / basic);
+  const auto limit_ms = static_cast<std::int64_t>(std::llround(options_.time_limit_s * 1000.0));
+  for (int i = 0; i < count; ++i) {
+    advance(basic / 1000.0);
+    time_ms_ += basic;
+    ++steps_;
+    if (limit_ms > 0 && time_ms_ >= limit_ms) {
+      ended_ = true;
+      return -1;
+    }
+  }
+  return stop_requested_ ? -1 : 0;
+}
+
+double Simulation::wheel_rate(const Wheel &wheel, double dt_s) const {
+  if (std::isinf(wheel.target_rad)) return wheel.velocity_rad_s;
+  // Position control: towards the target at up to the set velocity, stopping on it.
+  const double limit = std::abs(wheel.velocity_rad_s);
+  return std::clamp((wheel.target_rad - wheel.angle_rad) / dt_s, -limit, limit);
+}
+
+void Simulation::advance(double dt_s) {
+  const double r = profile_.wheel_radius_m;
+  const double fastest =
+      std::max(std::abs(wheels_[kLeft].velocity_rad_s), std::abs(wheels_[kRight].velocity_rad_s));
+  const double longest_m = fastest * r * dt_s;
+  const int substeps =
+      std::max(1, static_cast<int>(std::ceil(longest_m / (0.1 * profile_.body_radius_m))));
+  const double h = dt_s / substeps;
+  for (int k = 0; k < substeps; ++k) {
+    const double left = wheel_rate(wheels_[kLeft], h);
+    const double right = wheel_rate(wheels_[kRight], h);
+    wheels_[kLeft].angle_rad += left * h;
+    wheels_[kRight].angle_rad += right * h;
+    const double v = r * (left + right) / 2.0;
+    const double turn = r * (right - left) / profile_.axle_m * h;
+    // Exact arc: the chord of length v h sinc(turn / 2) along the mean heading.
+    const double half = turn / 2.0;
+    const double chord = v * h * (half == 0.0 ? 1.0 : std::sin(half) / half);
+    pose_.x_m += chord * std::cos(pose_.yaw_rad + half);
+    pose_.y_m += chord * std::sin(pose_.yaw_rad + half);
+    pose_.yaw_rad = maze::sim::wrap_angle(pose_.yaw_rad + turn);
+    walls_.push_out(pose_.x_m, pose_.y_m, profile_.body_radius_m);
+  }
+}
+
+void Simulation::set_sampling_period(int device, int period_ms) {
+  states_[static_cast<std::size_t>(device)].sampling_period_ms = std::max(0, period_ms);
+}
+
+int Simulation::sampling_period(int device) const {
+  return states_[static_cast<std::size_t>(device)].sampling_period_ms;
+}
+
+bool Simulation::fresh(DeviceState &state) {
+  if (state.read_at_step == steps_) return true;
+  state.read_at_step = steps_;
+  return false;
+}
+
+common::Rng Simulation::rng_for(int device) const {
+  return maze::sim::sensor_rng(options_.seed, device, steps_);
+}
+
+double Simulation::lidar_noise(const maze::sim::LidarSpec &spec) const {
+  return options_.noise.value_or(spec.noise);
+}
+
+const maze::sim::LidarSpec &Simulation::lidar_spec(int device) const {
+  return profile_.lidars[static_cast<std::size_t>(states_[static_cast<std::size_t>(device)].spec)];
+}
+
+const float *Simulation::lidar_range_image(int device) {
+  DeviceState &state = states_[static_cast<std::size_t>(device)];
+  if (state.sampling_period_ms == 0) return nullptr;
+  const maze::sim::LidarSpec &spec = lidar_spec(device);
+  if (!fresh(state)) {
+    state.ranges.resize(static_cast<std::size_t>(spec.horizontal_resolution));
+    common::Rng rng = rng_for(device);
+    lidar_models_[static_cast<std::size_t>(state.spec)].range_image(walls_, lidar_noise(spec),
+                                                                     pose_, rng, state.ranges);
+  }
+  return state.ranges.data();
+}
+
+void Simulation::motor_set_position(int device, double position_rad) {
+  wheels_[states_[static_cast<std::size_t>(device)].spec].target_rad = position_rad;
+}
+
+void Simulation::motor_set_velocity(int device, double velocity_rad_s) {
+  // Webots clamps a velocity above the maximum (with a warning).
+  const double max = profile_.max_wheel_velocity_rad_s;
+  wheels_[states_[static_cast<std::size_t>(device)].spec].velocity_rad_s =
+      std::clamp(velocity_rad_s, -max, max);
+}
+
+double Simulation::motor_velocity(int device) const {
+  return wheels_[states_[static_cast<std::size_t>(device)].spec].velocity_rad_s;
+}
+
+double Simulation::encoder_value(int device) {
+  DeviceState &state = states_[static_cast<std::size_t>(device)];
+  if (state.sampling_period_ms == 0) return kNaN;
+  if (!fresh(state)) {
+    common::Rng rng = rng_for(device);
+    const double angle = wheels_[state.spec].angle_rad;
+    state.cache[0] = options_.encoder_noise_rad > 0.0
+                         ? angle + rng.normal(0.0, options_.encoder_noise_rad)
+                         : angle;
+  }
+  return state.cache[0];
+}
+
+const double *Simulation::imu_roll_pitch_yaw(int device) {
+  DeviceState &state = states_[static_cast<std::size_t>(device)];
+  if (state.sampling_period_ms == 0) {
+    state.cache[0] = state.cache[1] = state.cache[2] = kNaN;
+    state.read_at_step = -1;
+  } else if (!fresh(state)) {
+    common::Rng rng = rng_for(device);
+    double yaw = pose_.yaw_rad;
+    if (options_.imu_noise_rad > 0.0) yaw += rng.normal(0.0, options_.imu_noise_rad);
+    state.cache[0] = 0.0;
+    state.cache[1] = 0.0;
+    state.cache[2] = maze::sim::wrap_angle(yaw);
+  }
+  return state.cache;
+}
+
+const double *Simulation::gps_values(int device) {
+  DeviceState &state = states_[static_cast<std::size_t>(device)];
+  if (state.sampling_period_ms == 0) {
+    state.cache[0] = state.cache[1] = state.cache[2] = kNaN;
+    state.read_at_step = -1;
+  } else if (!fresh(state)) {
+    common::Rng rng = rng_for(device);
+    const double sigma = options_.gps_noise_m;
+    state.cache[0] = pose_.x_m + (sigma > 0.0 ? rng.normal(0.0, sigma) : 0.0);
+    state.cache[1] = pose_.y_m + (sigma > 0.0 ? rng.normal(0.0, sigma) : 0.0);
+    state.cache[2] = sigma > 0.0 ? rng.normal(0.0, sigma) : 0.0;
+  }
+  return state.cache;
+}
+
+double Simulation::touch_value(int device) {
+  const DeviceState &state = states_[static_cast<std::size_t>(device)];
+  if (state.sampling_period_ms == 0) return kNaN;
+  const maze::sim::BumperSpec &bumper = profile_.bumpers[static_cast<std::size_t>(state.spec)];
+  return maze::sim::bumper_pressed(walls_, bumper, profile_.body_radius_m, pose_) ? 1.0 : 0.0;
+}
+
+const maze::sim::DistanceSensorSpec &Simulation::distance_spec(int device) const {
+  return profile_.distance_sensors[static_cast<std::size_t>(
+      states_[static_cast<std::size_t>(device)].spec)];
+}
+
+double Simulation::distance_value(int device) {
+  DeviceState &state = states_[static_cast<std::size_t>(device)];
+  if (state.sampling_period_ms == 0) return kNaN;
+  if (!fresh(state)) {
+    common::Rng rng = rng_for(device);
+    const bool noisy = !(options_.noise && *options_.noise == 0.0);
+    state.cache[0] = maze::sim::distance_sensor_value(walls_, distance_spec(device),
+                                                      profile_.body_radius_m, pose_, noisy, rng);
+  }
+  return state.cache[0];
+}
+
+}  // namespace webots::embedded

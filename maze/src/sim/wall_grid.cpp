@@ -1,0 +1,249 @@
+#include "maze/sim/wall_grid.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace maze::sim {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// An overlap smaller than this is rounding, not a collision.
+constexpr double kSlop_m = 1e-12;
+
+// A ray (ox, oy) + t (dx, dy), with the inverses of its direction precomputed.
+struct Ray {
+  double ox, oy, dx, dy, inv_dx, inv_dy;
+};
+
+// Distance t >= 0 at which the ray enters the closed box, or +infinity.
+double entry_distance(const Ray &r, double x_min, double y_min, double x_max, double y_max) {
+  double t_min = 0.0;
+  double t_max = kInfinity;
+  if (r.dx == 0.0) {
+    if (r.ox < x_min || r.ox > x_max) return kInfinity;
+  } else {
+    double a = (x_min - r.ox) * r.inv_dx;
+    double c = (x_max - r.ox) * r.inv_dx;
+    if (a > c) std::swap(a, c);
+    t_min = std::max(t_min, a);
+    t_max = std::min(t_max, c);
+  }
+  if (r.dy == 0.0) {
+    if (r.oy < y_min || r.oy > y_max) return kInfinity;
+  } else {
+    double a = (y_min - r.oy) * r.inv_dy;
+    double c = (y_max - r.oy) * r.inv_dy;
+    if (a > c) std::swap(a, c);
+    t_min = std::max(t_min, a);
+    t_max = std::min(t_max, c);
+  }
+  return t_min <= t_max ? t_min : kInfinity;
+}
+
+// The point of the box nearest to (x, y).
+void nearest_point(const Box &b, double x, double y, double &qx, double &qy) {
+  qx = std::clamp(x, b.x_min_m, b.x_max_m);
+  qy = std::clamp(y, b.y_min_m, b.y_max_m);
+}
+
+}  // namespace
+
+WallGrid::WallGrid(const Maze &maze)
+    : width_(maze.width()),
+      height_(maze.height()),
+      cell_size_m_(maze.cell_size_m()),
+      half_thickness_m_(maze.wall_thickness_m() / 2.0),
+      origin_x_m_(maze.origin_x_m()),
+      origin_y_m_(maze.origin_y_m()),
+      flags_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0) {
+  // A grid vertex is solid when any of the (up to four) walls meeting there is present.
+  const auto vertex_solid = [&maze](int vx, int vy) {
+    bool solid = false;
+    if (vx > 0 && vy > 0) {
+      solid = solid || maze.has_wall({vx - 1, vy - 1}, Side::north) ||
+              maze.has_wall({vx - 1, vy - 1}, Side::east);
+    }
+    if (vx < maze.width() && vy < maze.height()) {
+      solid = solid || maze.has_wall({vx, vy}, Side::south) || maze.has_wall({vx, vy}, Side::west);
+    }
+    if (vx > 0 && vy < maze.height()) {
+      solid = solid || maze.has_wall({vx - 1, vy}, Side::south);
+    }
+    if (vx < maze.width() && vy > 0) {
+      solid = solid || maze.has_wall({vx, vy - 1}, Side::west);
+    }
+    return solid;
+  };
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      std::uint8_t f = 0;
+      if (maze.has_wall({x, y}, Side::north)) f |= kNorth;
+      if (maze.has_wall({x, y}, Side::east)) f |= kEast;
+      if (maze.has_wall({x, y}, Side::south)) f |= kSouth;
+      if (maze.has_wall({x, y}, Side::west)) f |= kWest;
+      // A corner square already inside one of this cell's strips needs no box of its own.
+      if (!(f & (kNorth | kEast)) && vertex_solid(x + 1, y + 1)) f |= kCornerNE;
+      if (!(f & (kNorth | kWest)) && vertex_solid(x, y + 1)) f |= kCornerNW;
+      if (!(f & (kSouth | kWest)) && vertex_solid(x, y)) f |= kCornerSW;
+      if (!(f & (kSouth | kEast)) && vertex_solid(x + 1, y)) f |= kCornerSE;
+      flags_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+             static_cast<std::size_t>(x)] = f;
+    }
+  }
+}
+
+bool WallGrid::inside_maze(double x_m, double y_m) const {
+  const double lx = x_m - origin_x_m_;
+  const double ly = y_m - origin_y_m_;
+  return lx >= 0.0 && ly >= 0.0 && lx <= width_ * cell_size_m_ && ly <= height_ * cell_size_m_;
+}
+
+void WallGrid::boxes(int cx, int cy, std::uint8_t mask, std::vector<Box> &out) const {
+  const std::uint8_t f = flags(cx, cy) & mask;
+  if (f == 0) return;
+  const double s = cell_size_m_;
+  const double h = half_thickness_m_;
+  const double x0 = origin_x_m_ + cx * s;
+  const double y0 = origin_y_m_ + cy * s;
+  const double x1 = x0 + s;
+  const double y1 = y0 + s;
+  if (f & kNorth) out.push_back({x0, y1 - h, x1, y1});
+  if (f & kSouth) out.push_back({x0, y0, x1, y0 + h});
+  if (f & kEast) out.push_back({x1 - h, y0, x1, y1});
+  if (f & kWest) out.push_back({x0, y0, x0 + h, y1});
+  if (f & kCornerNE) out.push_back({x1 - h, y1 - h, x1, y1});
+  if (f & kCornerNW) out.push_back({x0, y1 - h, x0 + h, y1});
+  if (f & kCornerSW) out.push_back({x0, y0, x0 + h, y0 + h});
+  if (f & kCornerSE) out.push_back({x1 - h, y0, x1, y0 + h});
+}
+
+std::vector<Box> WallGrid::boxes_near(double x_m, double y_m, double reach_m) const {
+  const double s = cell_size_m_;
+  const auto cell_of = [s](double v, int n) {
+    return std::clamp(static_cast<int>(std::floor(v / s)), 0, n - 1);
+  };
+  const double lx = x_m - origin_x_m_;
+  const double ly = y_m - origin_y_m_;
+  const int x_lo = cell_of(lx - reach_m, width_);
+  const int x_hi = cell_of(lx + reach_m, width_);
+  const int y_lo = cell_of(ly - reach_m, height_);
+  const int y_hi = cell_of(ly + reach_m, height_);
+  std::vector<Box> out;
+  for (int cy = y_lo; cy <= y_hi; ++cy) {
+    for (int cx = x_lo; cx <= x_hi; ++cx) boxes(cx, cy, 0xff, out);
+  }
+  return out;
+}
+
+bool WallGrid::inside_wall(double x_m, double y_m) const {
+  for (const Box &b : boxes_near(x_m, y_m, 0.0)) {
+    if (x_m >= b.x_min_m && x_m <= b.x_max_m && y_m >= b.y_min_m && y_m <= b.y_max_m) return true;
+  }
+  return false;
+}
+
+double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range_m) const {
+  return cast_direction(x_m, y_m, std::cos(angle_rad), std::sin(angle_rad), max_range_m);
+}
+
+double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
+                                double max_range_m) const {
+  if (!inside_maze(x_m, y_m)) return kInfinity;
+  const double s = cell_size_m_;
+  const Ray ray{x_m - origin_x_m_, y_m - origin_y_m_, dx, dy, 1.0 / dx, 1.0 / dy};
+  int cx = std::min(static_cast<int>(ray.ox / s), width_ - 1);
+  int cy = std::min(static_cast<int>(ray.oy / s), height_ - 1);
+
+  // Only boxes with a face turned towards the ray can be entered from inside a cell; the
+  // others are continued by a solid box of the cell the ray came from.
+  std::uint8_t mask = 0;
+  if (dx > 0.0) mask |= kEast | kCornerNE | kCornerSE;
+  if (dx < 0.0) mask |= kWest | kCornerNW | kCornerSW;
+  if (dy > 0.0) mask |= kNorth | kCornerNE | kCornerNW;
+  if (dy < 0.0) mask |= kSouth | kCornerSW | kCornerSE;
+
+  const int step_x = dx > 0.0 ? 1 : -1;
+  const int step_y = dy > 0.0 ? 1 : -1;
+  const double t_delta_x = dx != 0.0 ? s * std::abs(ray.inv_dx) : kInfinity;
+  const double t_delta_y = dy != 0.0 ? s * std::abs(ray.inv_dy) : kInfinity;
+  double t_max_x = dx != 0.0 ? ((cx + (dx > 0.0 ? 1 : 0)) * s - ray.ox) * ray.inv_dx : kInfinity;
+  double t_max_y = dy != 0.0 ? ((cy + (dy > 0.0 ? 1 : 0)) * s - ray.oy) * ray.inv_dy : kInfinity;
+
+  const double h = half_thickness_m_;
+  for (;;) {
+    const std::uint8_t f = flags(cx, cy) & mask;
+    if (f != 0) {
+      const double x0 = cx * s;
+      const double y0 = cy * s;
+      const double x1 = x0 + s;
+      const double y1 = y0 + s;
+      double best = kInfinity;
+      if (f & kNorth) best = std::min(best, entry_distance(ray, x0, y1 - h, x1, y1));
+      if (f & kSouth) best = std::min(best, entry_distance(ray, x0, y0, x1, y0 + h));
+      if (f & kEast) best = std::min(best, entry_distance(ray, x1 - h, y0, x1, y1));
+      if (f & kWest) best = std::min(best, entry_distance(ray, x0, y0, x0 + h, y1));
+      if (f & kCornerNE) best = std::min(best, entry_distance(ray, x1 - h, y1 - h, x1, y1));
+      if (f & kCornerNW) best = std::min(best, entry_distance(ray, x0, y1 - h, x0 + h, y1));
+      if (f & kCornerSW) best = std::min(best, entry_distance(ray, x0, y0, x0 + h, y0 + h));
+      if (f & kCornerSE) best = std::min(best, entry_distance(ray, x1 - h, y0, x1, y0 + h));
+      if (best < kInfinity) return best <= max_range_m ? best : kInfinity;
+    }
+    if (std::min(t_max_x, t_max_y) > max_range_m) return kInfinity;
+    if (t_max_x < t_max_y) {
+      cx += step_x;
+      t_max_x += t_delta_x;
+    } else {
+      cy += step_y;
+      t_max_y += t_delta_y;
+    }
+    if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_) return kInfinity;
+  }
+}
+
+bool WallGrid::push_out(double &x_m, double &y_m, double radius_m) const {
+  bool moved = false;
+  for (int pass = 0; pass < 4; ++pass) {
+    bool moved_this_pass = false;
+    for (const Box &b : boxes_near(x_m, y_m, radius_m)) {
+      double qx = 0.0, qy = 0.0;
+      nearest_point(b, x_m, y_m, qx, qy);
+      const double ex = x_m - qx;
+      const double ey = y_m - qy;
+      const double d = std::hypot(ex, ey);
+      if (d >= radius_m - kSlop_m) continue;
+      if (d > 0.0) {
+        x_m += ex / d * (radius_m - d);
+        y_m += ey / d * (radius_m - d);
+      } else {
+        // The centre is inside the box: leave through the nearest face.
+        const double left = x_m - b.x_min_m, right = b.x_max_m - x_m;
+        const double down = y_m - b.y_min_m, up = b.y_max_m - y_m;
+        const double least = std::min({left, right, down, up});
+        if (least == left) x_m = b.x_min_m - radius_m;
+        else if (least == right) x_m = b.x_max_m + radius_m;
+        else if (least == down) y_m = b.y_min_m - radius_m;
+        else y_m = b.y_max_m + radius_m;
+      }
+      moved_this_pass = true;
+    }
+    if (!moved_this_pass) break;
+    moved = true;
+  }
+  return moved;
+}
+
+std::vector<Contact> WallGrid::contacts(double x_m, double y_m, double reach_m) const {
+  std::vector<Contact> out;
+  for (const Box &b : boxes_near(x_m, y_m, reach_m)) {
+    double qx = 0.0, qy = 0.0;
+    nearest_point(b, x_m, y_m, qx, qy);
+    const double d = std::hypot(x_m - qx, y_m - qy);
+    if (d <= reach_m) out.push_back({qx, qy, d});
+  }
+  return out;
+}
+
+}  // namespace maze::sim
