@@ -28,6 +28,9 @@ int main(int argc, char **argv) {
   cli.require_subcommand(0, 1);
 
   app::CommandContext context;
+  app::add_show_command(cli, context);
+  app::add_convert_command(cli, context);
+  app::add_generate_command(cli, context);
 
   try {
     cli.parse(argc, argv);

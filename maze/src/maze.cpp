@@ -98,6 +98,30 @@ std::size_t Maze::reachable_count() const {
   return count;
 }
 
+std::size_t Maze::passage_count() const {
+  std::size_t open = 0;
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      if (x + 1 < width_ && !has_wall({x, y}, Side::east)) ++open;
+      if (y + 1 < height_ && !has_wall({x, y}, Side::north)) ++open;
+    }
+  }
+  return open;
+}
+
+std::size_t Maze::interior_side_count() const {
+  const auto w = static_cast<std::size_t>(width_);
+  const auto h = static_cast<std::size_t>(height_);
+  return w * (h - 1) + h * (w - 1);
+}
+
+bool Maze::is_goal(Cell c) const {
+  for (const Cell g : goals_) {
+    if (g == c) return true;
+  }
+  return false;
+}
+
 std::vector<WallSegment> Maze::wall_segments() const {
   std::vector<WallSegment> segments;
   const double s = cell_size_m_;

@@ -81,6 +81,13 @@ class Maze {
   std::vector<bool> reachable_from_start() const;
   std::size_t reachable_count() const;
 
+  // Open sides between two cells of the maze, each shared side counted once. A perfect maze
+  // (one path between any two cells) has width * height - 1.
+  std::size_t passage_count() const;
+  // Sides between two cells of the maze, open or walled: W(H-1) + H(W-1).
+  std::size_t interior_side_count() const;
+  bool is_goal(Cell c) const;
+
   // Every wall as a segment in metres, horizontal runs joined, then vertical runs joined.
   std::vector<WallSegment> wall_segments() const;
 
