@@ -1,5 +1,6 @@
 #include "maze/maze.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <deque>
 
@@ -113,6 +114,11 @@ std::size_t Maze::interior_side_count() const {
   const auto w = static_cast<std::size_t>(width_);
   const auto h = static_cast<std::size_t>(height_);
   return w * (h - 1) + h * (w - 1);
+}
+
+void Maze::add_goal(Cell c) {
+  const auto at = std::lower_bound(goals_.begin(), goals_.end(), c);
+  if (at == goals_.end() || *at != c) goals_.insert(at, c);
 }
 
 bool Maze::is_goal(Cell c) const {

@@ -78,18 +78,19 @@ struct Parser {
 
   Entry entry(std::string_view line, std::size_t offset, int line_number) const {
     const auto tokens = tokens_of(line);
+    Entry e{offset, 0, 0, 0};
+    for (std::size_t i = 0; i < std::min<std::size_t>(tokens.size(), 6); ++i) {
+      const int index = static_cast<int>(i);
+      const int value = field(tokens[i], index, line_number, index < 2 ? kMaxMazeSide : 2);
+      if (index == 0) e.x = static_cast<std::uint16_t>(value);
+      if (index == 1) e.y = static_cast<std::uint16_t>(value);
+      if (index >= 2 && value != 0) e.walls = static_cast<std::uint8_t>(e.walls | (1u << (index - 2)));
+    }
     if (tokens.size() != 6) {
       const std::size_t column = tokens.size() > 6 ? tokens[6].column : line.size();
       throw error(line_number, column,
-                  fmt::format("expected 6 integers 'X Y N E S W', got {}", tokens.size() > 6 ? "more" : std::to_string(tokens.size())));
-    }
-    Entry e{offset, 0, 0, 0};
-    e.x = static_cast<std::uint16_t>(field(tokens[0], 0, line_number, kMaxMazeSide));
-    e.y = static_cast<std::uint16_t>(field(tokens[1], 1, line_number, kMaxMazeSide));
-    for (int s = 0; s < 4; ++s) {
-      if (field(tokens[static_cast<std::size_t>(2 + s)], 2 + s, line_number, 2) != 0) {
-        e.walls = static_cast<std::uint8_t>(e.walls | (1u << s));
-      }
+                  fmt::format("expected 6 integers 'X Y N E S W', got {}",
+                              tokens.size() > 6 ? "more" : std::to_string(tokens.size())));
     }
     return e;
   }

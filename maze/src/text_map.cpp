@@ -52,15 +52,15 @@ void split_maze_lines(std::string_view text, Reader &r) {
   }
 }
 
-void check_line_count(const Reader &r) {
+void check_line_count(Reader &r) {
   const std::size_t n = r.lines.size();
-  if (n == 0) throw r.error(0, 0, "expected a maze: the first line must be a post line ('o---o...')");
   if (n < 3) {
     throw r.error(n, 0, fmt::format("a maze needs at least 3 lines (2H+1 for H rows), found {}", n));
   }
   if (n % 2 == 0) {
     throw r.error(n - 1, 0, "the maze's last line must be a post line ('o---o...'), not a cell line");
   }
+  r.height = static_cast<int>((n - 1) / 2);
 }
 
 // The side of which cell a character at (line, column) belongs to; line and column from 0.
@@ -124,6 +124,7 @@ std::optional<common::InputError> check_wall_drawn_whole(const Reader &r, std::s
 }
 
 void check_width(Reader &r) {
+  if (r.lines.empty()) throw r.error(0, 0, "expected a maze: the first line must be a post line ('o---o...')");
   const std::size_t length = r.lines[0].size();
   if (length > kMaxLineLength) {
     throw r.error(0, kMaxLineLength,
@@ -136,7 +137,6 @@ void check_width(Reader &r) {
                               length));
   }
   r.width = static_cast<int>((length - 1) / 4);
-  r.height = static_cast<int>((r.lines.size() - 1) / 2);
 }
 
 void check_line(const Reader &r, std::size_t line) {
@@ -219,8 +219,8 @@ void read_marks(const Reader &r, RawMaze &raw) {
 Maze read_text_map(std::string_view text, const std::string &file) {
   Reader r{file, {}};
   split_maze_lines(text, r);
-  check_line_count(r);
   check_width(r);
+  check_line_count(r);
   for (std::size_t line = 0; line < r.lines.size(); ++line) check_line(r, line);
 
   RawMaze raw;
@@ -249,7 +249,9 @@ std::string write_text_map(const Maze &maze) {
     for (int x = 0; x < maze.width(); ++x) {
       out += maze.has_wall({x, y}, Side::west) ? '|' : ' ';
       const Cell c{x, y};
-      out += c == maze.start() ? " S " : maze.is_goal(c) ? " G " : "   ";
+      const bool start = c == maze.start();
+      const bool goal = maze.is_goal(c);
+      out += start && goal ? " SG" : start ? " S " : goal ? " G " : "   ";
     }
     out += maze.has_wall({maze.width() - 1, y}, Side::east) ? "|\n" : " \n";
   }

@@ -130,9 +130,7 @@ Maze build_maze(const RawMaze &raw) {
     }
   }
   maze.set_start(raw.start, raw.start_heading);
-  for (const Cell g : raw.goals) {
-    if (!maze.is_goal(g)) maze.add_goal(g);
-  }
+  for (const Cell g : raw.goals) maze.add_goal(g);
   maze.set_physical(raw.cell_size_m, raw.wall_thickness_m, raw.origin_x_m, raw.origin_y_m);
   return maze;
 }
@@ -159,7 +157,7 @@ std::optional<std::string> unreachable_summary(const Maze &maze) {
 
 std::string describe_byte(char c) {
   const auto u = static_cast<unsigned char>(c);
-  if (c == '\t') return "a tab";
+  if (c == '\t') return "tab";
   if (u >= 0x20 && u < 0x7f) return fmt::format("'{}'", c);
   return fmt::format("byte 0x{:02x}", u);
 }

@@ -1,9 +1,11 @@
 #include "maze/xml_format.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -20,8 +22,6 @@ namespace {
 
 // How far (in cells) a wall end may sit from a grid point; files round to a few decimals.
 constexpr double kGridTolerance = 1e-3;
-// Two coordinates closer than this fraction of the maze's extent are the same grid line.
-constexpr double kSameLine = 1e-6;
 constexpr double kHeadingTolerance_rad = 0.01;
 
 struct Source {
@@ -36,7 +36,8 @@ struct Source {
     }
   }
 
-  // The element's line, and the column of `attribute="` on that line if it is there.
+  // The element's line, and the column of `attribute=` on that line if it is there. Several
+  // elements on one line are told apart by counting the earlier siblings of the same name.
   common::SourceLocation at(const tinyxml2::XMLElement &e, const char *attribute = nullptr) const {
     const int line = e.GetLineNum();
     if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {file, 0, 0};
@@ -45,13 +46,35 @@ struct Source {
                                 ? line_starts[static_cast<std::size_t>(line)]
                                 : text.size();
     const std::string_view text_of_line = text.substr(begin, end - begin);
-    std::size_t column = text_of_line.find(fmt::format("<{}", e.Name()));
+    std::size_t column = find_tag(text_of_line, e.Name(), earlier_on_same_line(e));
     if (attribute != nullptr && column != std::string_view::npos) {
       column = text_of_line.find(fmt::format(" {}=", attribute), column);
       if (column != std::string_view::npos) ++column;
     }
     if (column == std::string_view::npos) return {file, line, 0};
     return {file, line, static_cast<int>(column + 1)};
+  }
+
+  static std::size_t earlier_on_same_line(const tinyxml2::XMLElement &e) {
+    std::size_t n = 0;
+    for (auto *p = e.PreviousSiblingElement(e.Name()); p != nullptr && p->GetLineNum() == e.GetLineNum();
+         p = p->PreviousSiblingElement(e.Name())) {
+      ++n;
+    }
+    return n;
+  }
+
+  // Where the (skip + 1)-th tag `<name` starts in the line.
+  static std::size_t find_tag(std::string_view line, std::string_view name, std::size_t skip) {
+    const std::string tag = fmt::format("<{}", name);
+    for (std::size_t at = line.find(tag); at != std::string_view::npos; at = line.find(tag, at + 1)) {
+      const std::size_t after = at + tag.size();
+      const bool whole = after == line.size() || std::string_view(" \t\r\n/>").find(line[after]) != std::string_view::npos;
+      if (!whole) continue;
+      if (skip == 0) return at;
+      --skip;
+    }
+    return std::string_view::npos;
   }
 
   common::InputError error(const tinyxml2::XMLElement &e, const char *attribute, std::string message) const {
@@ -125,18 +148,10 @@ struct Grid {
   int width, height;
 };
 
-// The smallest gap between distinct grid lines, over both axes.
-double infer_cell_size(const std::vector<Segment> &segments, double origin_x, double origin_y, double extent) {
-  std::vector<double> offsets;
-  for (const Segment &s : segments) {
-    for (const double v : {s.x1 - origin_x, s.x2 - origin_x, s.y1 - origin_y, s.y2 - origin_y}) offsets.push_back(v);
-  }
-  std::sort(offsets.begin(), offsets.end());
-  double cell = extent;
-  for (std::size_t i = 1; i < offsets.size(); ++i) {
-    const double gap = offsets[i] - offsets[i - 1];
-    if (gap > kSameLine * extent) cell = std::min(cell, gap);
-  }
+// The shortest wall's length: a maze with any interior wall has a wall one cell long.
+double infer_cell_size(const std::vector<Segment> &segments) {
+  double cell = std::numeric_limits<double>::infinity();
+  for (const Segment &s : segments) cell = std::min(cell, (s.x2 - s.x1) + (s.y2 - s.y1));
   return cell;
 }
 
@@ -148,8 +163,7 @@ Grid infer_grid(const std::vector<Segment> &segments, const Source &src, const t
     max_x = std::max({max_x, s.x1, s.x2});
     max_y = std::max({max_y, s.y1, s.y2});
   }
-  const double extent = std::max(max_x - min_x, max_y - min_y);
-  Grid g{min_x, min_y, infer_cell_size(segments, min_x, min_y, extent), 0, 0};
+  Grid g{min_x, min_y, infer_cell_size(segments), 0, 0};
   const double w = std::round((max_x - min_x) / g.cell);
   const double h = std::round((max_y - min_y) / g.cell);
   if (w < 1 || h < 1) throw src.error(world, nullptr, "the walls enclose no area: they all lie on one line");
@@ -237,10 +251,18 @@ void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, cons
   }
 }
 
+// tinyxml2's XML_ERROR_MISMATCHED_ELEMENT as "mismatched element".
+std::string error_name(tinyxml2::XMLError id) {
+  std::string name = tinyxml2::XMLDocument::ErrorIDToName(id);
+  if (name.starts_with("XML_ERROR_")) name.erase(0, 10);
+  for (char &c : name) c = c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
 const tinyxml2::XMLElement &parse(tinyxml2::XMLDocument &doc, const Source &src) {
   if (doc.Parse(src.text.data(), src.text.size()) != tinyxml2::XML_SUCCESS) {
     throw common::InputError(common::SourceLocation{src.file, doc.ErrorLineNum(), 0},
-                             fmt::format("not well-formed XML: {}", doc.ErrorName()));
+                             fmt::format("not well-formed XML: {}", error_name(doc.ErrorID())));
   }
   const tinyxml2::XMLElement *root = doc.RootElement();
   if (root == nullptr) throw common::InputError(common::SourceLocation{src.file, 0, 0}, "no XML element: expected <world>");

@@ -66,8 +66,10 @@ class Maze {
     start_heading_ = heading;
   }
 
+  // Goal cells in (x, y) order, each once.
   const std::vector<Cell> &goals() const { return goals_; }
-  void add_goal(Cell c) { goals_.push_back(c); }
+  // Adds c to the goals (nothing if it is one already).
+  void add_goal(Cell c);
   void clear_goals() { goals_.clear(); }
 
   double cell_size_m() const { return cell_size_m_; }

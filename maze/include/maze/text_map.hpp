@@ -15,7 +15,8 @@
 //     notes may follow the maze. CRLF line ends and a UTF-8 byte-order mark are accepted.
 //   - Columns in messages count bytes from 1, as compilers do.
 //
-// The canonical form (what write_text_map gives) uses 'o', '---', '|', ' S ', ' G ' and '\n'.
+// The canonical form (what write_text_map gives) uses 'o', '---', '|', ' S ', ' G ' (' SG' for
+// a start that is also a goal) and '\n'.
 
 #include <string>
 #include <string_view>

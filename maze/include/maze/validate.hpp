@@ -60,7 +60,7 @@ Maze build_maze(const RawMaze &raw);
 // "N cells cannot be reached from the start: (3,3), (3,2)" (the first few), or nothing.
 std::optional<std::string> unreachable_summary(const Maze &maze);
 
-// A byte as a message shows it: 'x', "a tab", "byte 0xe2".
+// A byte as a message shows it: 'x', "tab", "byte 0xe2".
 std::string describe_byte(char c);
 
 }  // namespace maze

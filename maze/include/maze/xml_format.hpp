@@ -16,8 +16,9 @@
 //
 //   - A wall is horizontal or vertical and runs between grid points; it may span several
 //     cells. `width` (m, default 0.012) is the wall thickness; all walls share one.
-//   - Origin: the smallest x and y of any wall end. Cell size: the smallest gap between two
-//     grid lines that walls use. Every wall end must lie on that grid ("off the grid").
+//   - Origin: the smallest x and y of any wall end. Cell size: the shortest wall's length
+//     (write walls one cell side each, as write_xml does, and any maze reads back). Every
+//     wall end must then lie on that grid, else it is "off the grid".
 //   - The first <pos> is the start: its cell, and theta (rad, 0 east, pi/2 north, default
 //     pi/2) rounded to N, E, S or W; no <startPositions>: (0,0) facing north.
 //   - <goal x y> marks the cell holding that point. Other elements are ignored.
