@@ -2,6 +2,7 @@
 // Prints one lidar range image at a pose: `index angle_rad range_m` a line, `inf` for no return.
 
 #include <cstdint>
+#include <memory>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -11,7 +12,6 @@
 
 #include "commands.hpp"
 #include "maze/sim/scan.hpp"
-#include "maze/world_io.hpp"
 
 namespace app {
 
@@ -39,7 +39,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   scan->add_option("--noise", args->noise, "lidar noise as a fraction of max range (0: exact)");
   scan->add_option("--seed", args->seed, "seed of the noise");
   scan->callback([args, &context] {
-    const maze::Maze maze = maze::load_world(args->world);
+    const maze::Maze maze = load_world_reporting(args->world).maze;
     maze::sim::ScanRequest request;
     request.pose = {args->pose[0], args->pose[1], args->pose[2]};
     request.robot = args->robot;

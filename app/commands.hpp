@@ -3,7 +3,11 @@
 // with CLI11; the callback does the work and stores the process exit status in `status`.
 // User errors are thrown as common::InputError and reported by main().
 
+#include <string>
+
 #include <CLI/CLI.hpp>
+
+#include "maze/world.hpp"
 
 namespace app {
 
@@ -16,5 +20,17 @@ void add_demo_command(CLI::App &cli, CommandContext &context);
 
 // maze_mapper explain: the sensor model's numbers (cmd_explain.cpp).
 void add_explain_command(CLI::App &cli, CommandContext &context);
+
+// Loads a world (maze::load_world) and prints its warnings on stderr, one a line.
+maze::World load_world_reporting(const std::string &path);
+
+// `show WORLD`: the canonical text map on stdout, nothing else.
+void add_show_command(CLI::App &cli, CommandContext &context);
+// `convert WORLD OUT`: writes OUT in the format its extension names (.txt, .num, .xml, .wbt).
+void add_convert_command(CLI::App &cli, CommandContext &context);
+// `generate WxH [--seed N] [--loops F] [--algorithm dfs|kruskal|prim] [-o FILE]`.
+void add_generate_command(CLI::App &cli, CommandContext &context);
+// `scan WORLD --pose X Y YAW`: one lidar range image, `index angle_rad range_m` a line.
+void add_scan_command(CLI::App &cli, CommandContext &context);
 
 }  // namespace app

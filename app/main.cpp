@@ -30,6 +30,10 @@ int main(int argc, char **argv) {
   app::CommandContext context;
   app::add_demo_command(cli, context);
   app::add_explain_command(cli, context);
+  app::add_show_command(cli, context);
+  app::add_convert_command(cli, context);
+  app::add_generate_command(cli, context);
+  app::add_scan_command(cli, context);
 
   try {
     if (argc <= 1) {

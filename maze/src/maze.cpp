@@ -1,5 +1,6 @@
 #include "maze/maze.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <deque>
 
@@ -96,6 +97,35 @@ std::size_t Maze::reachable_count() const {
   std::size_t count = 0;
   for (const bool r : reachable_from_start()) count += r ? 1 : 0;
   return count;
+}
+
+std::size_t Maze::passage_count() const {
+  std::size_t open = 0;
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      if (x + 1 < width_ && !has_wall({x, y}, Side::east)) ++open;
+      if (y + 1 < height_ && !has_wall({x, y}, Side::north)) ++open;
+    }
+  }
+  return open;
+}
+
+std::size_t Maze::interior_side_count() const {
+  const auto w = static_cast<std::size_t>(width_);
+  const auto h = static_cast<std::size_t>(height_);
+  return w * (h - 1) + h * (w - 1);
+}
+
+void Maze::add_goal(Cell c) {
+  const auto at = std::lower_bound(goals_.begin(), goals_.end(), c);
+  if (at == goals_.end() || *at != c) goals_.insert(at, c);
+}
+
+bool Maze::is_goal(Cell c) const {
+  for (const Cell g : goals_) {
+    if (g == c) return true;
+  }
+  return false;
 }
 
 std::vector<WallSegment> Maze::wall_segments() const {

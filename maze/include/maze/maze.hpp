@@ -66,8 +66,10 @@ class Maze {
     start_heading_ = heading;
   }
 
+  // Goal cells in (x, y) order, each once.
   const std::vector<Cell> &goals() const { return goals_; }
-  void add_goal(Cell c) { goals_.push_back(c); }
+  // Adds c to the goals (nothing if it is one already).
+  void add_goal(Cell c);
   void clear_goals() { goals_.clear(); }
 
   double cell_size_m() const { return cell_size_m_; }
@@ -80,6 +82,13 @@ class Maze {
   // Cells that can be reached from the start through openings; reachable[y * W + x].
   std::vector<bool> reachable_from_start() const;
   std::size_t reachable_count() const;
+
+  // Open sides between two cells of the maze, each shared side counted once. A perfect maze
+  // (one path between any two cells) has width * height - 1.
+  std::size_t passage_count() const;
+  // Sides between two cells of the maze, open or walled: W(H-1) + H(W-1).
+  std::size_t interior_side_count() const;
+  bool is_goal(Cell c) const;
 
   // Every wall as a segment in metres, horizontal runs joined, then vertical runs joined.
   std::vector<WallSegment> wall_segments() const;

@@ -1,0 +1,78 @@
+// The world subcommands: show, convert, generate.
+
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "maze/generator.hpp"
+#include "maze/text_map.hpp"
+#include "maze/world.hpp"
+
+namespace app {
+
+maze::World load_world_reporting(const std::string &path) {
+  maze::World world = maze::load_world(path);
+  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  return world;
+}
+
+void add_show_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("show", "Print a world as a canonical micromouse text map");
+  auto world = std::make_shared<std::string>();
+  cmd->add_option("WORLD", *world, "maze file: text map, num or XML (detected by content)")->required();
+  cmd->callback([world, &context] {
+    std::cout << maze::write_text_map(load_world_reporting(*world).maze);
+    context.status = 0;
+  });
+}
+
+void add_convert_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("convert", "Write a world in the format OUT's extension names");
+  struct Args {
+    std::string world, out;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
+  cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
+  cmd->callback([args, &context] {
+    maze::format_for_output(args->out);  // a bad extension fails before any reading
+    maze::save_world(load_world_reporting(args->world).maze, args->out);
+    context.status = 0;
+  });
+}
+
+void add_generate_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("generate", "Generate a random maze and print it as a text map");
+  struct Args {
+    std::string size, algorithm = "dfs", out;
+    std::uint64_t seed = common::kDefaultSeed;
+    double loops = 0.0;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WxH", args->size, "maze size in cells, e.g. 16x16 (1 to 4096 each way)")->required();
+  cmd->add_option("--seed", args->seed, "random seed; the same seed gives the same maze")->capture_default_str();
+  cmd->add_option("--loops", args->loops, "fraction (0 to 1) of the perfect maze's interior walls removed")
+      ->capture_default_str();
+  cmd->add_option("--algorithm", args->algorithm, "dfs, kruskal or prim")->capture_default_str();
+  cmd->add_option("-o,--output", args->out, "write to FILE (format by extension) instead of standard output");
+  cmd->callback([args, &context] {
+    const maze::Cell size = maze::parse_size(args->size);
+    maze::GeneratorOptions options{size.x, size.y, args->seed, args->loops, maze::parse_algorithm(args->algorithm)};
+    options.validate();
+    if (!args->out.empty()) maze::format_for_output(args->out);
+    const maze::Maze m = maze::generate_maze(options);
+    if (args->out.empty()) {
+      std::cout << maze::write_text_map(m);
+    } else {
+      maze::save_world(m, args->out);
+    }
+    context.status = 0;
+  });
+}
+
+}  // namespace app
