@@ -30,6 +30,10 @@ void add_show_command(CLI::App &cli, CommandContext &context);
 void add_convert_command(CLI::App &cli, CommandContext &context);
 // `generate WxH [--seed N] [--loops F] [--algorithm dfs|kruskal|prim] [-o FILE]`.
 void add_generate_command(CLI::App &cli, CommandContext &context);
+// `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp).
+void add_run_command(CLI::App &cli, CommandContext &context);
+// The default world: worlds/lab4x4.txt from the working directory, else the source tree's.
+std::string default_world();
 // `scan WORLD --pose X Y YAW`: one lidar range image, `index angle_rad range_m` a line.
 void add_scan_command(CLI::App &cli, CommandContext &context);
 

@@ -28,6 +28,7 @@ int main(int argc, char **argv) {
   cli.require_subcommand(0, 1);
 
   app::CommandContext context;
+  app::add_run_command(cli, context);
   app::add_demo_command(cli, context);
   app::add_explain_command(cli, context);
   app::add_show_command(cli, context);
@@ -37,9 +38,8 @@ int main(int argc, char **argv) {
 
   try {
     if (argc <= 1) {
-      // For now the main job without arguments is the 1-D exercise (a later issue makes it
-      // the maze run).
-      const std::vector<std::string> as_if{argc == 1 ? argv[0] : "maze_mapper", "demo", "1d"};
+      // No arguments: the main job, mapping the default world.
+      const std::vector<std::string> as_if{argc == 1 ? argv[0] : "maze_mapper", "run"};
       std::vector<const char *> as_if_argv;
       for (const std::string &word : as_if) as_if_argv.push_back(word.c_str());
       cli.parse(static_cast<int>(as_if_argv.size()), as_if_argv.data());
