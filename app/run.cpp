@@ -116,19 +116,23 @@ std::string percent(double value) { return fmt::format("{:.2f}%", value); }
 }  // namespace
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
-  const auto started = std::chrono::steady_clock::now();
   const maze::World world = maze::load_world(options.world);
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  return run_maze(options, world.maze, out);
+}
+
+RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out) {
+  const auto started = std::chrono::steady_clock::now();
   const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
   require_lidar(options, profile);
 
-  const robot::ControllerOptions controller_opts = controller_options(options, world.maze, profile);
+  const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   robot::validate(controller_opts);
 
   maze::sim::SimulationOptions sim_opts;
   sim_opts.seed = options.seed;
   sim_opts.noise = options.noise;
-  webots::embedded::Simulation simulation(world.maze, profile, sim_opts);
+  webots::embedded::Simulation simulation(truth, profile, sim_opts);
 
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style;
@@ -138,18 +142,18 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
 
   robot::CellController controller(simulation.robot(), controller_opts);
   robot::Observer observer;
-  if (!options.quiet) observer = ProgressPrinter(out, style, world.maze.width() * world.maze.height());
+  if (!options.quiet) observer = ProgressPrinter(out, style, truth.width() * truth.height());
   const robot::RunResult result = controller.run(observer);
 
   RunSummary summary;
   summary.reason = result.reason;
   summary.message = result.message;
-  summary.width = world.maze.width();
-  summary.height = world.maze.height();
+  summary.width = truth.width();
+  summary.height = truth.height();
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;
-  summary.score = score(world.maze, result, style.initial_log_odds);
+  summary.score = score(truth, result, style.initial_log_odds);
   summary.sim_time_s = result.sim_time_s;
 
   out << render::render_map(result.grid, result.visits, style) << '\n';

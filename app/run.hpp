@@ -13,6 +13,7 @@
 
 #include "app/evaluation.hpp"
 #include "common/random.hpp"
+#include "maze/maze.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/models.hpp"
 #include "mapping/sensor_model.hpp"
@@ -50,9 +51,14 @@ struct RunSummary {
   double wall_time_ms = 0.0;
 };
 
-// Runs the world and writes the progress (unless quiet), the final map and the summary
-// block to out. Throws common::InputError for unusable options or world files.
+// Loads options.world (its warnings go to stderr) and runs it with run_maze().
+// Throws common::InputError for unusable options or world files.
 RunSummary run_world(const RunOptions &options, std::ostream &out);
+
+// Runs one maze and writes the progress (unless quiet), the final map and the summary
+// block to out; options.world only names it in the summary. Throws common::InputError for
+// unusable options.
+RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out);
 
 // The summary block (DESIGN §9), one `key: value` a line.
 std::string format_summary(const RunOptions &options, const RunSummary &summary);

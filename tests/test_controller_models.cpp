@@ -320,3 +320,42 @@ TEST_CASE("traversal: matches dense sampling on random segments") {
     CHECK(cells.back() == SubCell{static_cast<int>(b.x_m), static_cast<int>(b.y_m)});
   }
 }
+
+TEST_CASE("ray model: beams grazing a corridor wall keep its band; crossing an opening frees it") {
+  // A 12 x 1 corridor, enclosed, scanned from its west end. Far down the corridor 1-degree
+  // beams land more than a sub-cell apart on the walls, so some band sub-cells are crossed
+  // by beams that end further on and hit by none: they must not be freed.
+  const testing_world::TextMaze maze(
+      "o---o---o---o---o---o---o---o---o---o---o---o---o\n"
+      "|                                               |\n"
+      "o---o---o---o---o---o---o---o---o---o---o---o---o");
+  const auto boxes = testing_world::wall_boxes(maze, 1.0, 0.012);
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3, 12, 1), 0.0f);
+  mapping::ScanUpdate update;
+  MappingOptions ray;
+  ray.kind = ModelKind::ray;
+  const mapping::Point origin{0.5, 0.5};
+  const auto ranges = testing_world::range_image(boxes, origin, 0.0, 360, 2 * kPi, 0.05, 12.0);
+  for (int scan = 0; scan < 3; ++scan) {
+    mapping::integrate_scan(ray, grid, testing_world::hambot_scan(origin, 0.0, ranges), Cell{0, 0},
+                            model, update);
+  }
+  int hit_bands = 0;
+  for (int x = 0; x < 12; ++x) {
+    CAPTURE(x);
+    // North and south band middles: walls, or not seen; never freed.
+    for (const int i : {0, 2}) {
+      const float l = grid.at(Cell{x, 0}, mapping::LocalSubCell{i, 1});
+      CHECK(l >= 0.0f);
+      hit_bands += l > 0.0f ? 1 : 0;
+    }
+  }
+  CHECK(hit_bands >= 8);  // the near walls are seen
+  // Openings between cells: the beam along the corridor crosses them and frees both bands.
+  for (int x = 0; x < 11; ++x) {
+    CAPTURE(x);
+    CHECK(grid.at(Cell{x, 0}, mapping::LocalSubCell{1, 2}) < 0.0f);
+    CHECK(grid.at(Cell{x + 1, 0}, mapping::LocalSubCell{1, 0}) < 0.0f);
+  }
+}
