@@ -153,6 +153,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;
+  if (!result.path.empty()) {
+    const mapping::Cell last = result.path.back();
+    summary.reached_goal = truth.is_goal(maze::Cell{last.x, last.y});
+  }
   summary.score = score(truth, result, style.initial_log_odds);
   summary.sim_time_s = result.sim_time_s;
 
@@ -180,6 +184,9 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("steps", std::to_string(s.steps));
   line("moves", std::to_string(s.moves));
   line("visited", std::to_string(s.visited));
+  if (options.strategy == explore::StrategyKind::floodfill) {
+    line("goal", s.reached_goal ? "reached" : "not reached");
+  }
   line("reachable", std::to_string(s.score.reachable_cells));
   line("coverage", percent(s.score.coverage_percent()));
   line("wall_accuracy", percent(s.score.wall_accuracy_percent()));

@@ -46,6 +46,7 @@ struct RunSummary {
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
+  bool reached_goal = false;  // the run ended on one of the maze's goal cells
   MapScore score;
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;

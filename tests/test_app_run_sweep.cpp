@@ -1,0 +1,115 @@
+// Acceptance over generated mazes (issue 5): whole runs, simulator and controller together.
+// These are the `acceptance` suite: CTest runs them in optimised builds only (see
+// tests/CMakeLists.txt); they take tens of seconds.
+
+#include <doctest/doctest.h>
+
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "app/run.hpp"
+#include "maze/generator.hpp"
+
+namespace {
+
+// 100 seeds; sizes from 4 x 4 to 64 x 64, most of them small so the sweep stays quick.
+constexpr int kSeeds = 100;
+int size_for(int seed) { return seed % 20 == 19 ? 64 : 4 + (seed * 7) % 29; }
+
+maze::Maze perfect_maze(int seed) {
+  maze::GeneratorOptions g;
+  g.width = size_for(seed);
+  g.height = size_for(seed + 3);
+  g.seed = static_cast<std::uint64_t>(seed);
+  return maze::generate_maze(g);
+}
+
+app::RunSummary run_quietly(app::RunOptions options, const maze::Maze &m, int seed) {
+  options.world = fmt::format("generated {}x{} seed {}", m.width(), m.height(), seed);
+  options.quiet = true;
+  options.seed = static_cast<std::uint64_t>(seed);
+  std::ostringstream sink;
+  return app::run_maze(options, m, sink);
+}
+
+void check_perfect_mapping(mapping::ModelKind model, int k, explore::StrategyKind strategy) {
+  app::RunOptions options;
+  options.model = model;
+  options.subcells = k;
+  options.strategy = strategy;
+  options.noise = 0.0;
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    const maze::Maze m = perfect_maze(seed);
+    const app::RunSummary s = run_quietly(options, m, seed);
+    CAPTURE(seed);
+    CAPTURE(m.width());
+    CAPTURE(m.height());
+    CAPTURE(s.message);
+    REQUIRE(s.reason == robot::EndReason::done);
+    CHECK(s.score.coverage_percent() == 100.0);
+    CHECK(s.score.wall_accuracy_percent() == 100.0);
+  }
+}
+
+}  // namespace
+
+TEST_SUITE("acceptance") {
+  TEST_CASE("noise off with the cell model: every perfect maze is mapped exactly for K 3 and 5 with dfs and frontier") {
+    for (const int k : {3, 5}) {
+      for (const auto strategy : {explore::StrategyKind::dfs, explore::StrategyKind::frontier}) {
+        CAPTURE(k);
+        CAPTURE(explore::to_string(strategy));
+        check_perfect_mapping(mapping::ModelKind::cell, k, strategy);
+      }
+    }
+  }
+
+  TEST_CASE("noise off with the ray model: every perfect maze is mapped exactly for K 3 and 5 with dfs and frontier") {
+    for (const int k : {3, 5}) {
+      for (const auto strategy : {explore::StrategyKind::dfs, explore::StrategyKind::frontier}) {
+        CAPTURE(k);
+        CAPTURE(explore::to_string(strategy));
+        check_perfect_mapping(mapping::ModelKind::ray, k, strategy);
+      }
+    }
+  }
+
+  TEST_CASE("default noise: wall_accuracy at least 99.9 % over the same mazes") {
+    for (const auto model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+      for (const int k : {3, 5}) {
+        app::RunOptions options;
+        options.model = model;
+        options.subcells = k;
+        std::size_t sides = 0, correct = 0;
+        for (int seed = 0; seed < kSeeds; ++seed) {
+          const maze::Maze m = perfect_maze(seed);
+          const app::RunSummary s = run_quietly(options, m, seed);
+          CAPTURE(seed);
+          CAPTURE(s.message);
+          REQUIRE(s.reason == robot::EndReason::done);
+          CHECK(s.score.coverage_percent() == 100.0);
+          CHECK(s.score.wall_accuracy_percent() >= 99.9);
+          sides += s.score.sides;
+          correct += s.score.sides_correct;
+        }
+        MESSAGE(fmt::format("{} K={}: {} of {} sides right over {} mazes", mapping::to_string(model), k,
+                            correct, sides, kSeeds));
+      }
+    }
+  }
+
+  TEST_CASE("floodfill reaches the goal on every maze with noise on") {
+    app::RunOptions options;
+    options.strategy = explore::StrategyKind::floodfill;
+    for (int seed = 0; seed < kSeeds; ++seed) {
+      const maze::Maze m = perfect_maze(seed);
+      const app::RunSummary s = run_quietly(options, m, seed);
+      CAPTURE(seed);
+      CAPTURE(s.message);
+      REQUIRE(s.reason == robot::EndReason::done);
+      CHECK(s.reached_goal);
+    }
+  }
+}
