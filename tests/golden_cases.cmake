@@ -27,3 +27,4 @@ add_golden_test(run_maze8_frontier_quiet ARGS run worlds/maze8x8.txt --strategy 
 add_golden_test(run_bad_p_occ STATUS 2 STDERR ARGS run --p-occ 0.4)
 add_golden_test(run_bad_subcells STATUS 2 STDERR ARGS run --subcells 4)
 add_golden_test(run_unknown_strategy STATUS 2 STDERR ARGS run --strategy spiral)
+add_golden_test(run_max_steps_quiet ARGS run worlds/lab4x4.txt --max-steps 500 --quiet)
