@@ -137,9 +137,12 @@ void prepare_output_dir(const std::string &dir) {
     return;
   }
   const fs::path created = first_missing(path);
-  if (!fs::create_directories(path, ec) || ec) {
+  errno = 0;
+  fs::create_directories(path, ec);
+  if (ec || !fs::is_directory(path)) {
+    const std::string reason = ec ? ec.message() : std::string(std::strerror(errno != 0 ? errno : EACCES));
     if (!created.empty()) fs::remove_all(created, ec);
-    fail_out(dir, fmt::format("cannot create the directory: {}", ec.message()));
+    fail_out(dir, fmt::format("cannot create the directory: {}", reason));
   }
   try {
     probe_writable(dir);
@@ -216,7 +219,7 @@ std::string png_file(const mapping::OccupancyGrid &grid, const mapping::SensorMo
   }
   if (!path.empty()) {
     const auto [sx, sy] = centre(path.front());
-    canvas.fill(sx - scale, sy - scale, 2 * scale + 1, kStartColour);
+    canvas.fill(sx - scale / 2, sy - scale / 2, scale, kStartColour);
   }
   return encode_png(canvas);
 }
