@@ -32,6 +32,8 @@ void add_convert_command(CLI::App &cli, CommandContext &context);
 void add_generate_command(CLI::App &cli, CommandContext &context);
 // `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp).
 void add_run_command(CLI::App &cli, CommandContext &context);
+// `batch WORLD... [--jobs N] [--csv FILE] [run options]` (cmd_batch.cpp, batch.hpp).
+void add_batch_command(CLI::App &cli, CommandContext &context);
 // The default world: worlds/lab4x4.txt from the working directory, else the source tree's.
 std::string default_world();
 // `scan WORLD --pose X Y YAW`: one lidar range image, `index angle_rad range_m` a line.

@@ -29,6 +29,7 @@ int main(int argc, char **argv) {
 
   app::CommandContext context;
   app::add_run_command(cli, context);
+  app::add_batch_command(cli, context);
   app::add_demo_command(cli, context);
   app::add_explain_command(cli, context);
   app::add_show_command(cli, context);

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <istream>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,6 +17,8 @@
 #include "maze/world.hpp"
 #include "mapping/walls.hpp"
 #include "render/ascii_map.hpp"
+#include "app/outputs.hpp"
+#include "app/terminal.hpp"
 
 namespace app {
 namespace {
@@ -72,7 +76,13 @@ class ProgressPrinter {
     std::string text = render::format_status(static_cast<long>(report.step), report.cell,
                                              report.heading, report.visits->count(), total_cells_);
     text += '\n';
-    text += render::render_map(*report.grid, *report.visits, style_);
+    render::MapStyle style = style_;
+    if (style.color) {
+      const int k = report.grid->k();
+      style.robot = render::RobotMark{mapping::to_global(report.cell, {k / 2, k / 2}, k),
+                                      render::arrow(report.heading, style.ascii)};
+    }
+    text += render::render_map(*report.grid, *report.visits, style);
     if (report.new_cell) {
       text += fmt::format("cell ({},{}) log-odds, north row first:\n", report.cell.x, report.cell.y);
       text += render::format_cell_matrix(*report.grid, report.cell);
@@ -113,15 +123,44 @@ MapScore score(const maze::Maze &truth, const robot::RunResult &result, float in
 
 std::string percent(double value) { return fmt::format("{:.2f}%", value); }
 
+struct RunState {
+  bool quit = false;          // q at a --step prompt
+  bool stepping = true;       // false once --step's input has ended
+  bool interrupted = false;   // Ctrl-C
+  std::string trace;          // trace.csv, when --out
+};
+
+// --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
+// of the input the run goes on to its end without stopping.
+void wait_for_step(const RunControls &controls, const robot::MoveReport &report, RunState &state) {
+  if (!state.stepping || controls.in == nullptr) return;
+  if (controls.prompt != nullptr) {
+    *controls.prompt << fmt::format("-- cell ({},{}), step {}: Enter goes on, q quits -- ",
+                                    report.cell.x, report.cell.y, report.step)
+                     << std::flush;
+  }
+  std::string line;
+  if (!std::getline(*controls.in, line)) {
+    state.stepping = false;
+    return;
+  }
+  if (line == "q" || line == "quit" || line == "Q") state.quit = true;
+}
+
 }  // namespace
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
-  const maze::World world = maze::load_world(options.world);
-  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
-  return run_maze(options, world.maze, out);
+  return run_world(options, out, RunControls{});
 }
 
-RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out) {
+RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls) {
+  const maze::World world = maze::load_world(options.world);
+  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  return run_maze(options, world.maze, out, controls);
+}
+
+RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
+                    const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
   const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
   require_lidar(options, profile);
@@ -139,15 +178,60 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   style.ascii = options.ascii;
   style.unknown = options.unknown;
   style.initial_log_odds = static_cast<float>(model.prior_log_odds());
+  style.color = options.color;
+
+  if (!options.out_dir.empty()) prepare_output_dir(options.out_dir);
 
   robot::CellController controller(simulation.robot(), controller_opts);
-  robot::Observer observer;
-  if (!options.quiet) observer = ProgressPrinter(out, style, truth.width() * truth.height());
-  const robot::RunResult result = controller.run(observer);
+  RunState state;
+  if (!options.out_dir.empty()) state.trace = trace_header();
+  std::optional<ScreenGuard> screen;
+  std::optional<Animator> animator;
+  if (options.animate) {
+    screen.emplace(out);
+    animator.emplace(out, style,
+                     AnimationOptions{options.fps, options.speed, terminal_size(controls.terminal_fd)});
+  }
+  robot::RunHooks hooks;
+  std::optional<ProgressPrinter> printer;
+  if (!options.quiet && !options.animate) {
+    printer.emplace(out, style, truth.width() * truth.height());
+  }
+  if (printer || animator || options.step) {
+    hooks.on_move = [&](const robot::MoveReport &report) {
+      if (printer) (*printer)(report);
+      if (animator) {
+        const maze::sim::Pose &pose = simulation.pose();
+        animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,
+                                            robot::Action::rest, 0, report.grid, report.visits},
+                          pose.x_m, pose.y_m, true);
+      }
+      if (options.step && !state.quit) wait_for_step(controls, report, state);
+    };
+  }
+  if (!options.out_dir.empty() || animator || options.step || controls.interrupted) {
+    hooks.on_step = [&](const robot::StepReport &step) {
+      if (controls.interrupted && controls.interrupted()) {
+        state.interrupted = true;
+        return false;
+      }
+      if (state.quit) return false;
+      const maze::sim::Pose &pose = simulation.pose();
+      if (!options.out_dir.empty()) append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad);
+      if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
+      return true;
+    };
+  }
+  const robot::RunResult result = controller.run(hooks);
+  screen.reset();
 
   RunSummary summary;
   summary.reason = result.reason;
   summary.message = result.message;
+  if (result.reason == robot::EndReason::stopped) {
+    summary.interrupted = state.interrupted;
+    summary.message = state.interrupted ? "interrupted by Ctrl-C" : "quit with q";
+  }
   summary.width = truth.width();
   summary.height = truth.height();
   summary.steps = result.steps;
@@ -160,9 +244,20 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   summary.score = score(truth, result, style.initial_log_odds);
   summary.sim_time_s = result.sim_time_s;
 
+  if (options.color && !result.path.empty()) {
+    const mapping::Cell last = result.path.back();
+    const int mid = options.subcells / 2;
+    style.robot = render::RobotMark{mapping::to_global(last, {mid, mid}, options.subcells),
+                                    render::arrow(result.visits.heading(last).value_or(mapping::Heading::north),
+                                                  options.ascii)};
+  }
   out << render::render_map(result.grid, result.visits, style) << '\n';
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  if (!options.out_dir.empty()) {
+    write_outputs(options.out_dir, options, summary,
+                  RunFiles{&result.grid, &model, &result.path, &state.trace});
+  }
   out << format_summary(options, summary);
   return summary;
 }
@@ -201,6 +296,7 @@ int exit_status(const RunSummary &summary) {
     case robot::EndReason::max_steps: return 0;
     case robot::EndReason::no_progress:
     case robot::EndReason::simulation_ended: return 1;
+    case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
   }
   return 1;
 }

@@ -36,6 +36,20 @@ struct RunOptions {
   std::optional<char> unknown;
   bool quiet = false;                   // final map and summary only
   std::int64_t max_steps = 2'000'000;
+  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, summary.json, trace.csv
+  bool color = false;                   // ANSI colours in the map (a terminal, no --no-color)
+  bool animate = false;                 // --animate: the map redrawn in place
+  double fps = 30.0;                    // --fps
+  double speed = 10.0;                  // --speed: simulated seconds per wall-clock second
+  bool step = false;                    // --step: wait for Enter (or q) after each cell
+};
+
+// What a run reads besides its options (all optional).
+struct RunControls {
+  std::istream *in = nullptr;           // --step reads lines here
+  std::ostream *prompt = nullptr;       // --step's prompt, when set
+  bool (*interrupted)() = nullptr;      // polled every step: true stops the run (Ctrl-C)
+  int terminal_fd = -1;                 // --animate: the screen size comes from here
 };
 
 struct RunSummary {
@@ -50,22 +64,29 @@ struct RunSummary {
   MapScore score;
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;
+  bool interrupted = false;             // stopped by Ctrl-C (not by q)
 };
 
 // Loads options.world (its warnings go to stderr) and runs it with run_maze().
 // Throws common::InputError for unusable options or world files.
 RunSummary run_world(const RunOptions &options, std::ostream &out);
+// Likewise, with --step input, Ctrl-C and --animate. With out_dir set, the directory is
+// prepared (prepare_output_dir) after the world and options are checked and before the
+// robot moves, and the files are written when the run ends, however it ends.
+RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls);
 
 // Runs one maze and writes the progress (unless quiet), the final map and the summary
 // block to out; options.world only names it in the summary. Throws common::InputError for
 // unusable options.
-RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out);
+RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
+                    const RunControls &controls = {});
 
 // The summary block (DESIGN §9), one `key: value` a line.
 std::string format_summary(const RunOptions &options, const RunSummary &summary);
 
 // The exit status a run ends with: 0 when it ended as planned (done, or stopped at
-// --max-steps), 1 when the robot could not make progress or the simulation ended first.
+// --max-steps, or quit with q), 130 when stopped by Ctrl-C (as a shell reports SIGINT), 1 when
+// the robot could not make progress or the simulation ended first.
 int exit_status(const RunSummary &summary);
 
 }  // namespace app

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -24,35 +25,80 @@ const char *arrow(mapping::Heading h, bool ascii) {
   return "?";
 }
 
-void render_rows(std::string &out, const mapping::OccupancyGrid &grid, const explore::Visits &visits,
-                 const MapStyle &style, int first_row, int row_count) {
+namespace {
+
+constexpr const char *kReset = "\x1b[0m";
+constexpr const char *kWallColor = "\x1b[1;34m";
+constexpr const char *kUnknownColor = "\x1b[48;5;236m";
+constexpr const char *kArrowColor = "\x1b[32m";
+constexpr const char *kRobotColor = "\x1b[1;31m";
+
+enum class Glyph { plain, wall, unknown, arrow, robot };
+
+void put(std::string &out, const MapStyle &style, Glyph kind, std::string_view text) {
+  if (!style.color || kind == Glyph::plain) {
+    out += text;
+    return;
+  }
+  switch (kind) {
+    case Glyph::wall: out += kWallColor; break;
+    case Glyph::unknown: out += kUnknownColor; break;
+    case Glyph::arrow: out += kArrowColor; break;
+    case Glyph::robot: out += kRobotColor; break;
+    case Glyph::plain: break;
+  }
+  out += text;
+  out += kReset;
+}
+
+void put_subcell(std::string &out, const mapping::OccupancyGrid &grid, const explore::Visits &visits,
+                 const MapStyle &style, int row, int col) {
   const int k = grid.k();
   const int mid = k / 2;
-  assert(first_row >= 0 && row_count >= 0 && first_row + row_count <= grid.height() * k);
-  out.reserve(out.size() + static_cast<std::size_t>(row_count) *
-                               (static_cast<std::size_t>(grid.width() * k) + 1));
-  for (int row = first_row; row < first_row + row_count; ++row) {
-    const int y = grid.height() - 1 - row / k;
-    const int i = row % k;
-    for (int x = 0; x < grid.width(); ++x) {
-      const Cell c{x, y};
-      for (int j = 0; j < k; ++j) {
-        if (i == mid && j == mid) {
-          if (const auto h = visits.heading(c)) {
-            out += arrow(*h, style.ascii);
-            continue;
-          }
-        }
-        const float v = grid.at(c, LocalSubCell{i, j});
-        if (!mapping::observed(v, style.initial_log_odds)) {
-          out += style.unknown.value_or(' ');
-        } else {
-          out += v > 0.0f ? 'W' : ' ';
-        }
-      }
+  const Cell c{col / k, grid.height() - 1 - row / k};
+  const LocalSubCell s{row % k, col % k};
+  if (style.robot && style.robot->at == mapping::to_global(c, s, k)) {
+    put(out, style, Glyph::robot, style.robot->glyph);
+    return;
+  }
+  if (s.i == mid && s.j == mid) {
+    if (const auto h = visits.heading(c)) {
+      put(out, style, Glyph::arrow, arrow(*h, style.ascii));
+      return;
+    }
+  }
+  const float v = grid.at(c, s);
+  if (!mapping::observed(v, style.initial_log_odds)) {
+    const char blank = style.unknown.value_or(' ');
+    put(out, style, Glyph::unknown, std::string_view(&blank, 1));
+  } else if (v > 0.0f) {
+    put(out, style, Glyph::wall, "W");
+  } else {
+    out += ' ';
+  }
+}
+
+}  // namespace
+
+void render_window(std::string &out, const mapping::OccupancyGrid &grid,
+                   const explore::Visits &visits, const MapStyle &style, const MapWindow &w) {
+  [[maybe_unused]] const int k = grid.k();
+  assert(w.first_row >= 0 && w.row_count >= 0 && w.first_row + w.row_count <= grid.height() * k);
+  assert(w.first_col >= 0 && w.col_count >= 0 && w.first_col + w.col_count <= grid.width() * k);
+  out.reserve(out.size() + static_cast<std::size_t>(w.row_count) *
+                               (static_cast<std::size_t>(w.col_count) + 1));
+  for (int row = w.first_row; row < w.first_row + w.row_count; ++row) {
+    for (int col = w.first_col; col < w.first_col + w.col_count; ++col) {
+      put_subcell(out, grid, visits, style, row, col);
     }
     out += '\n';
   }
+}
+
+void render_rows(std::string &out, const mapping::OccupancyGrid &grid, const explore::Visits &visits,
+                 const MapStyle &style, int first_row, int row_count) {
+  render_window(out, grid, visits, style,
+                MapWindow{first_row, row_count, 0, grid.width() * grid.k()});
 }
 
 std::string render_map(const mapping::OccupancyGrid &grid, const explore::Visits &visits,

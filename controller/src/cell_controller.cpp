@@ -29,7 +29,7 @@ using mapping::Point;
 
 namespace {
 
-enum class Motion { ok, max_steps, no_progress, ended };
+enum class Motion { ok, max_steps, no_progress, ended, stopped };
 
 template <typename Device>
 Device *require(Device *device, const std::string &name) {
@@ -98,11 +98,23 @@ struct CellController::Impl {
     set_wheels(0.0, 0.0);
   }
 
-  Motion step() {
+  Motion step(Action action) {
+    if (!flush_step()) return Motion::stopped;
     if (steps >= options.motion.max_steps) return Motion::max_steps;
     if (robot.step(time_step_ms) == -1) return Motion::ended;
     ++steps;
+    if (hooks.on_step) {
+      pending = StepReport{steps, robot.getTime(), cell, heading, action, 0, &grid, &visits};
+      has_pending = true;
+    }
     return Motion::ok;
+  }
+
+  // Reports the last step (once its scan, if any, is done); false when the observer stops.
+  bool flush_step() {
+    if (!has_pending) return true;
+    has_pending = false;
+    return hooks.on_step(pending);
   }
 
   double yaw() const { return imu->getRollPitchYaw()[2]; }
@@ -135,7 +147,7 @@ struct CellController::Impl {
 
   Motion come_to_rest() {
     set_wheels(0.0, 0.0);
-    return step();
+    return step(Action::rest);
   }
 
   Motion turn_to(Heading h) {
@@ -152,7 +164,7 @@ struct CellController::Impl {
       const double w = std::min(m.turn_gain * std::abs(error) / dt_s, max_w);
       set_body(0.0, std::copysign(w, error));
       moved = true;
-      if (const Motion s = step(); s != Motion::ok) return s;
+      if (const Motion s = step(Action::turn); s != Motion::ok) return s;
       turned += mapping::wrap_angle_rad(yaw() - last);
       last = yaw();
       if (watch.stalled(turned)) {
@@ -190,7 +202,7 @@ struct CellController::Impl {
       const double error = mapping::wrap_angle_rad(target_yaw - yaw()) - m.lateral_gain * offset;
       const double w = std::clamp(m.turn_gain * error / dt_s, -max_w, max_w);
       set_body(v, w);
-      if (const Motion s = step(); s != Motion::ok) return s;
+      if (const Motion s = step(Action::drive); s != Motion::ok) return s;
       std::tie(remaining, offset) = remaining_and_offset();
       if (watch.stalled(remaining)) {
         message = fmt::format("driving {} to cell ({},{}) made no progress for {} steps ({:.3f} m to go)",
@@ -212,7 +224,8 @@ struct CellController::Impl {
     s.min_range_m = lidar->getMinRange();
     s.max_range_m = lidar->getMaxRange();
     s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar->getHorizontalResolution()));
-    mapping::integrate_scan(options.mapping, grid, s, c, model, update);
+    const std::size_t updated = mapping::integrate_scan(options.mapping, grid, s, c, model, update);
+    if (has_pending) pending.subcells_updated += updated;
   }
 
   void notify(const Observer &observer, Cell c, Heading h, bool new_cell) const {
@@ -222,9 +235,11 @@ struct CellController::Impl {
 
   EndReason explore(const Observer &observer) {
     enable_devices();
-    if (step() != Motion::ok) return EndReason::simulation_ended;
-    Cell cell = options.start;
-    Heading heading = options.start_heading;
+    cell = options.start;
+    heading = options.start_heading;
+    if (const Motion s = step(Action::start); s != Motion::ok) {
+      return s == Motion::ended ? EndReason::simulation_ended : to_reason(s);
+    }
     path.push_back(cell);
     visits.record(cell, heading);
     scan(cell);
@@ -234,7 +249,7 @@ struct CellController::Impl {
     };
     for (;;) {
       const auto next = explorer.next(cell, heading, walls);
-      if (!next) return EndReason::done;
+      if (!next) return flush_step() ? EndReason::done : EndReason::stopped;
       Motion s = turn_to(*next);
       if (s == Motion::ok) {
         heading = *next;
@@ -257,6 +272,7 @@ struct CellController::Impl {
       case Motion::max_steps: return EndReason::max_steps;
       case Motion::no_progress: return EndReason::no_progress;
       case Motion::ended: return EndReason::simulation_ended;
+      case Motion::stopped: return EndReason::stopped;
       case Motion::ok: break;
     }
     assert(false && "not an ending");
@@ -285,6 +301,12 @@ struct CellController::Impl {
   double left0 = 0.0;
   double right0 = 0.0;
 
+  RunHooks hooks;
+  StepReport pending;
+  bool has_pending = false;
+  Cell cell;                  // where the robot is (the cell it left, while it moves)
+  Heading heading = Heading::north;
+
   std::int64_t steps = 0;
   int moves = 0;
   std::vector<Cell> path;
@@ -298,10 +320,18 @@ CellController::CellController(webots::Robot &robot, const ControllerOptions &op
 CellController::~CellController() = default;
 
 RunResult CellController::run(const Observer &observer) {
+  RunHooks hooks;
+  hooks.on_move = observer;
+  return run(hooks);
+}
+
+RunResult CellController::run(const RunHooks &hooks) {
   Impl &s = *impl_;
   assert(!s.ran && "CellController::run is called once");
   s.ran = true;
-  const EndReason reason = s.explore(observer);
+  s.hooks = hooks;
+  const EndReason reason = s.explore(hooks.on_move);
+  if (reason != EndReason::stopped) s.flush_step();
   return RunResult{reason,
                    std::move(s.message),
                    s.steps,

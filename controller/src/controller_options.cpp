@@ -54,6 +54,17 @@ std::string_view to_string(EndReason reason) {
     case EndReason::max_steps: return "max steps";
     case EndReason::no_progress: return "no progress";
     case EndReason::simulation_ended: return "simulation ended";
+    case EndReason::stopped: return "stopped";
+  }
+  return "?";
+}
+
+std::string_view to_string(Action action) {
+  switch (action) {
+    case Action::start: return "start";
+    case Action::turn: return "turn";
+    case Action::drive: return "drive";
+    case Action::rest: return "rest";
   }
   return "?";
 }

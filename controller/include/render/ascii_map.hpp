@@ -17,11 +17,34 @@
 
 namespace render {
 
+// The robot drawn over the map at a sub-cell (instead of what is there).
+struct RobotMark {
+  mapping::SubCell at;
+  const char *glyph = "@";       // one column wide (UTF-8 allowed)
+};
+
 struct MapStyle {
   bool ascii = false;            // --ascii: ^ > v < instead of ↑ → ↓ ←
   std::optional<char> unknown;   // --unknown CHAR
   float initial_log_odds = 0.0f; // the grid's initial value, to tell never-observed sub-cells
+  // ANSI colours (a terminal): W bold blue, never-observed sub-cells on a dark grey
+  // background, arrows green, the robot bold red. Off: plain text, as in the golden files.
+  bool color = false;
+  std::optional<RobotMark> robot;
 };
+
+// The part of the map drawn: sub-cell rows and columns counted from the north-west corner.
+struct MapWindow {
+  int first_row = 0;
+  int row_count = 0;
+  int first_col = 0;
+  int col_count = 0;
+};
+
+// Appends the window's rows, each ending in '\n'; the window must lie within the map
+// (H*K rows, W*K columns). Cost: row_count * col_count.
+void render_window(std::string &out, const mapping::OccupancyGrid &grid,
+                   const explore::Visits &visits, const MapStyle &style, const MapWindow &window);
 
 // Appends sub-cell rows [first_row, first_row + row_count) counted from the top (north) line
 // of the map; the range must lie within 0 ... H*K. Cost: row_count * W * K.

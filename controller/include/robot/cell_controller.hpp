@@ -79,8 +79,9 @@ struct ControllerOptions {
 // the motion numbers: positive sizes and speeds, gains in (0, 1], max_steps >= 1).
 void validate(const ControllerOptions &options);
 
-enum class EndReason { done, max_steps, no_progress, simulation_ended };
-std::string_view to_string(EndReason reason);  // "done", "max steps", "no progress", "simulation ended"
+enum class EndReason { done, max_steps, no_progress, simulation_ended, stopped };
+// "done", "max steps", "no progress", "simulation ended", "stopped"
+std::string_view to_string(EndReason reason);
 
 // What the observer sees after the start scan and after every move into a cell.
 struct MoveReport {
@@ -96,9 +97,35 @@ struct MoveReport {
 
 using Observer = std::function<void(const MoveReport &)>;
 
+// What the controller was doing in a control step.
+enum class Action { start, turn, drive, rest };
+std::string_view to_string(Action action);  // "start", "turn", "drive", "rest"
+
+// What the step observer sees once per control step, after robot.step() returned and after
+// the scan that step ended with (so subcells_updated counts that scan's updates).
+struct StepReport {
+  std::int64_t step = 0;       // 1-based control step
+  double sim_time_s = 0.0;
+  mapping::Cell cell;          // the cell the robot is in (the one it left, until it arrives)
+  mapping::Heading heading = mapping::Heading::north;  // last heading reached (the old one while turning)
+  Action action = Action::start;
+  std::size_t subcells_updated = 0;  // by the scan at the end of this step (0: no scan)
+  const mapping::OccupancyGrid *grid = nullptr;
+  const explore::Visits *visits = nullptr;
+};
+
+// Returns false to stop the run: it then ends with EndReason::stopped before the next step.
+using StepObserver = std::function<bool(const StepReport &)>;
+
+// Optional hooks of a run; an empty hook costs one test per step.
+struct RunHooks {
+  Observer on_move;        // after the start scan and after every move into a cell
+  StepObserver on_step;    // after every control step
+};
+
 struct RunResult {
   EndReason reason = EndReason::done;
-  std::string message;        // for no_progress: what stalled, where
+  std::string message;        // for no_progress: what stalled, where; for stopped: why
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
@@ -121,6 +148,7 @@ class CellController {
   // Runs until the strategy is done, max_steps, no progress, or the simulation ends.
   // Call once.
   RunResult run(const Observer &observer = {});
+  RunResult run(const RunHooks &hooks);
 
  private:
   struct Impl;

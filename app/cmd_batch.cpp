@@ -1,0 +1,76 @@
+// maze_mapper batch WORLD... [--jobs N] [--csv FILE] [run options] (see app/batch.hpp).
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/batch.hpp"
+#include "app/run_cli.hpp"
+#include "app/terminal.hpp"
+#include "commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace app {
+namespace {
+
+struct BatchInput {
+  std::vector<std::string> worlds;
+  int jobs = 0;
+  std::string csv;
+};
+
+// "[#########           ] 9/20" on one line of stderr, redrawn in place.
+void draw_progress(std::size_t done, std::size_t total) {
+  constexpr std::size_t kWidth = 30;
+  const std::size_t filled = total == 0 ? kWidth : done * kWidth / total;
+  fmt::print(stderr, "\r[{}{}] {}/{}", std::string(filled, '#'), std::string(kWidth - filled, ' '),
+             done, total);
+  if (done == total) fmt::print(stderr, "\r\x1b[K");
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+void add_batch_command(CLI::App &cli, CommandContext &context) {
+  auto input = std::make_shared<RunInput>();
+  auto batch = std::make_shared<BatchInput>();
+  CLI::App *command = cli.add_subcommand(
+      "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
+  command->add_option("WORLD", batch->worlds, "maze files or folders")->required();
+  command->add_option("--jobs", batch->jobs, "parallel runs (default: all cores)");
+  command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
+  add_mapping_run_options(*command, *input);
+  command->callback([input, batch, &context] {
+    RunOptions options = to_run_options(*input);
+    options.quiet = true;
+    if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
+    const int jobs = batch->jobs > 0 ? batch->jobs
+                                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const std::vector<std::string> worlds = expand_worlds(batch->worlds);
+    if (worlds.empty()) throw common::InputError("no world to run (the folders hold no loadable world)");
+    const auto started = std::chrono::steady_clock::now();
+    std::function<void(std::size_t, std::size_t)> progress;
+    if (is_terminal(STDERR_FILENO)) progress = draw_progress;
+    const std::vector<BatchItem> items = run_batch(options, worlds, jobs, progress);
+    const double elapsed_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    for (const BatchItem &item : items) {
+      if (!item.ok && item.summary.width == 0) fmt::print(stderr, "{}\n", item.error);
+    }
+    std::cout << format_batch_table(items, elapsed_ms);
+    if (!batch->csv.empty()) common::write_file_atomically(batch->csv, format_batch_csv(items));
+    context.status = batch_exit_status(items);
+  });
+}
+
+}  // namespace app

@@ -1,0 +1,291 @@
+#include "app/outputs.hpp"
+
+#include <fcntl.h>
+#include <png.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "mapping/walls.hpp"
+
+namespace app {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail_out(const std::string &dir, const std::string &reason) {
+  throw common::InputError(fmt::format("--out {}: {}", dir, reason));
+}
+
+// The first missing ancestor of dir (dir itself when only it is missing), to remove on failure.
+fs::path first_missing(const fs::path &dir) {
+  fs::path missing;
+  for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    if (fs::exists(p, ec) || ec) break;
+    missing = p;
+    if (p == p.parent_path()) break;
+  }
+  return missing;
+}
+
+void probe_writable(const std::string &dir) {
+  const fs::path probe = fs::path(dir) / fmt::format(".maze_mapper.probe.{}", ::getpid());
+  const std::string name = probe.string();
+  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) fail_out(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
+  ::close(fd);
+  ::unlink(name.c_str());
+}
+
+struct Rgb {
+  unsigned char r, g, b;
+};
+
+class Canvas {
+ public:
+  Canvas(int width, int height) : width_(width), height_(height),
+        pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {}
+  void set(int x, int y, Rgb c) {
+    if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
+    const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+                            static_cast<std::size_t>(x)) * 3;
+    pixels_[at] = c.r;
+    pixels_[at + 1] = c.g;
+    pixels_[at + 2] = c.b;
+  }
+  void fill(int x0, int y0, int size, Rgb c) {
+    for (int y = y0; y < y0 + size; ++y) {
+      for (int x = x0; x < x0 + size; ++x) set(x, y, c);
+    }
+  }
+  // A line of square dots `thickness` wide between two pixel centres (Bresenham).
+  void line(int x0, int y0, int x1, int y1, int thickness, Rgb c) {
+    const int dx = std::abs(x1 - x0);
+    const int dy = -std::abs(y1 - y0);
+    const int sx = x0 < x1 ? 1 : -1;
+    const int sy = y0 < y1 ? 1 : -1;
+    int err = dx + dy;
+    for (;;) {
+      fill(x0 - thickness / 2, y0 - thickness / 2, thickness, c);
+      if (x0 == x1 && y0 == y1) break;
+      const int e2 = 2 * err;
+      if (e2 >= dy) { err += dy; x0 += sx; }
+      if (e2 <= dx) { err += dx; y0 += sy; }
+    }
+  }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const std::vector<unsigned char> &pixels() const { return pixels_; }
+
+ private:
+  int width_;
+  int height_;
+  std::vector<unsigned char> pixels_;
+};
+
+constexpr Rgb kPathColour{220, 30, 30};
+constexpr Rgb kStartColour{20, 170, 40};
+
+unsigned char grey(float log_odds, float initial, const mapping::SensorModel &model) {
+  if (!mapping::observed(log_odds, initial)) return 128;
+  const double p = model.probability_of(static_cast<double>(log_odds));
+  return static_cast<unsigned char>(std::lround(255.0 * (1.0 - p)));
+}
+
+std::string encode_png(const Canvas &canvas) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(canvas.width());
+  image.height = static_cast<png_uint_32>(canvas.height());
+  image.format = PNG_FORMAT_RGB;
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, canvas.pixels().data(), 0, nullptr)) {
+    throw common::RuntimeFailure(fmt::format("libpng: {}", image.message));
+  }
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, canvas.pixels().data(), 0, nullptr)) {
+    throw common::RuntimeFailure(fmt::format("libpng: {}", image.message));
+  }
+  bytes.resize(size);
+  return bytes;
+}
+
+std::string fixed(double v, int decimals) { return fmt::format("{:.{}f}", v, decimals); }
+
+}  // namespace
+
+void prepare_output_dir(const std::string &dir) {
+  if (dir.empty()) fail_out(dir, "an empty path");
+  const fs::path path(dir);
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status)) {
+    if (!fs::is_directory(status)) fail_out(dir, "exists and is not a directory");
+    probe_writable(dir);
+    return;
+  }
+  const fs::path created = first_missing(path);
+  errno = 0;
+  fs::create_directories(path, ec);
+  if (ec || !fs::is_directory(path)) {
+    const std::string reason = ec ? ec.message() : std::string(std::strerror(errno != 0 ? errno : EACCES));
+    if (!created.empty()) fs::remove_all(created, ec);
+    fail_out(dir, fmt::format("cannot create the directory: {}", reason));
+  }
+  try {
+    probe_writable(dir);
+  } catch (const common::InputError &) {
+    if (!created.empty()) fs::remove_all(created, ec);
+    throw;
+  }
+}
+
+unsigned char pgm_pixel(float log_odds, float initial_log_odds) {
+  if (!mapping::observed(log_odds, initial_log_odds)) return 205;
+  return log_odds > 0.0f ? 0 : 254;
+}
+
+std::string pgm_file(const mapping::OccupancyGrid &grid, float initial_log_odds) {
+  const mapping::GridGeometry &g = grid.geometry();
+  const int w = g.width_subcells();
+  const int h = g.height_subcells();
+  std::string out = fmt::format("P5\n# maze_mapper occupancy grid, one pixel a sub-cell\n{} {}\n255\n", w, h);
+  out.reserve(out.size() + static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  for (int row = 0; row < h; ++row) {
+    for (int x = 0; x < w; ++x) {
+      const float v = grid.at(mapping::SubCell{x, h - 1 - row});
+      out += static_cast<char>(pgm_pixel(v, initial_log_odds));
+    }
+  }
+  return out;
+}
+
+std::string map_yaml(const mapping::GridGeometry &geometry, const std::string &image_file) {
+  return fmt::format(
+      "image: {}\n"
+      "resolution: {}\n"
+      "origin: [{}, {}, 0.0]\n"
+      "negate: 0\n"
+      "occupied_thresh: 0.65\n"
+      "free_thresh: 0.196\n"
+      "mode: trinary\n",
+      image_file, fixed(geometry.subcell_size_m(), 6), fixed(geometry.origin.x_m, 6),
+      fixed(geometry.origin.y_m, 6));
+}
+
+int png_scale(const mapping::GridGeometry &geometry) {
+  const int k = geometry.subcells;
+  const int wanted = (100 + k - 1) / k;
+  const int side = std::max(geometry.width_subcells(), geometry.height_subcells());
+  return std::clamp(4096 / side, 1, wanted);
+}
+
+std::string png_file(const mapping::OccupancyGrid &grid, const mapping::SensorModel &model,
+                     const std::vector<mapping::Cell> &path) {
+  const mapping::GridGeometry &g = grid.geometry();
+  const int scale = png_scale(g);
+  const int w = g.width_subcells();
+  const int h = g.height_subcells();
+  const auto initial = static_cast<float>(model.prior_log_odds());
+  Canvas canvas(w * scale, h * scale);
+  for (int row = 0; row < h; ++row) {
+    for (int x = 0; x < w; ++x) {
+      const unsigned char v = grey(grid.at(mapping::SubCell{x, h - 1 - row}), initial, model);
+      canvas.fill(x * scale, row * scale, scale, Rgb{v, v, v});
+    }
+  }
+  const int k = g.subcells;
+  const int cell_px = k * scale;
+  const auto centre = [&](mapping::Cell c) {
+    return std::pair{c.x * cell_px + cell_px / 2, (g.height_cells - 1 - c.y) * cell_px + cell_px / 2};
+  };
+  const int thickness = std::max(1, scale / 3);
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const auto [x0, y0] = centre(path[i - 1]);
+    const auto [x1, y1] = centre(path[i]);
+    canvas.line(x0, y0, x1, y1, thickness, kPathColour);
+  }
+  if (!path.empty()) {
+    const auto [sx, sy] = centre(path.front());
+    canvas.fill(sx - scale / 2, sy - scale / 2, scale, kStartColour);
+  }
+  return encode_png(canvas);
+}
+
+std::string summary_json(const RunOptions &o, const RunSummary &s) {
+  nlohmann::ordered_json j;
+  j["world"] = o.world;
+  j["size"] = fmt::format("{}x{}", s.width, s.height);
+  j["width"] = s.width;
+  j["height"] = s.height;
+  j["subcells"] = o.subcells;
+  j["model"] = std::string(mapping::to_string(o.model));
+  j["strategy"] = std::string(explore::to_string(o.strategy));
+  j["robot"] = o.robot;
+  j["seed"] = o.seed;
+  j["end"] = std::string(robot::to_string(s.reason));
+  j["end_message"] = s.message;
+  j["steps"] = s.steps;
+  j["moves"] = s.moves;
+  j["visited"] = s.visited;
+  j["reachable"] = s.score.reachable_cells;
+  j["coverage"] = std::round(s.score.coverage_percent() * 100.0) / 100.0;
+  j["wall_accuracy"] = std::round(s.score.wall_accuracy_percent() * 100.0) / 100.0;
+  j["sim_time_s"] = s.sim_time_s;
+  j["wall_time_ms"] = s.wall_time_ms;
+  nlohmann::ordered_json opt;
+  opt["subcells"] = o.subcells;
+  opt["model"] = std::string(mapping::to_string(o.model));
+  opt["hit_depth"] = o.hit_depth;
+  opt["ignore_no_return"] = o.ignore_no_return;
+  opt["strategy"] = std::string(explore::to_string(o.strategy));
+  opt["robot"] = o.robot;
+  opt["seed"] = o.seed;
+  opt["noise"] = o.noise ? nlohmann::ordered_json(*o.noise) : nlohmann::ordered_json(nullptr);
+  opt["p_free"] = o.sensor.p_free;
+  opt["p_occ"] = o.sensor.p_occ;
+  opt["prior"] = o.sensor.prior;
+  opt["log_base"] = o.sensor.base == mapping::LogBase::ten ? "10" : "e";
+  opt["clamp"] = o.sensor.clamp ? nlohmann::ordered_json::array({o.sensor.clamp->min, o.sensor.clamp->max})
+                                : nlohmann::ordered_json(nullptr);
+  opt["max_steps"] = o.max_steps;
+  opt["out"] = o.out_dir;
+  j["options"] = opt;
+  return j.dump(2) + "\n";
+}
+
+std::string trace_header() {
+  return "time_s,x_m,y_m,yaw_rad,cell_x,cell_y,action,subcells_updated\n";
+}
+
+void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
+                      double yaw_rad) {
+  fmt::format_to(std::back_inserter(csv), "{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}\n",
+                 step.sim_time_s, x_m, y_m, yaw_rad, step.cell.x, step.cell.y,
+                 robot::to_string(step.action), step.subcells_updated);
+}
+
+void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
+                   const RunFiles &files) {
+  const fs::path d(dir);
+  const auto initial = static_cast<float>(files.model->prior_log_odds());
+  common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
+  common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
+  common::write_file_atomically((d / "map.png").string(), png_file(*files.grid, *files.model, *files.path));
+  common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
+  common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
+}
+
+}  // namespace app

@@ -1,0 +1,107 @@
+#include "app/terminal.hpp"
+
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cassert>
+#include <ostream>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+namespace app {
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void on_sigint(int) { g_interrupted.store(true); }
+
+}  // namespace
+
+bool is_terminal(int fd) { return ::isatty(fd) == 1; }
+
+TerminalSize terminal_size(int fd) {
+  winsize ws{};
+  if (::ioctl(fd, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 && ws.ws_row > 0) {
+    return {ws.ws_col, ws.ws_row};
+  }
+  return {};
+}
+
+SigintGuard::SigintGuard() {
+  g_interrupted.store(false);
+  struct sigaction action {};
+  action.sa_handler = on_sigint;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &previous_);
+}
+
+SigintGuard::~SigintGuard() { sigaction(SIGINT, &previous_, nullptr); }
+
+bool SigintGuard::interrupted() { return g_interrupted.load(); }
+
+ScreenGuard::ScreenGuard(std::ostream &out) : out_(out) {
+  out_ << "\x1b[?1049h\x1b[?25l\x1b[H\x1b[2J" << std::flush;
+}
+
+ScreenGuard::~ScreenGuard() { out_ << "\x1b[0m\x1b[?25h\x1b[?1049l" << std::flush; }
+
+int follow(int at, int size, int total) {
+  if (size >= total) return 0;
+  return std::clamp(at - size / 2, 0, total - size);
+}
+
+Animator::Animator(std::ostream &out, const render::MapStyle &style, const AnimationOptions &options)
+    : out_(out), style_(style), options_(options), next_frame_(std::chrono::steady_clock::now()) {}
+
+void Animator::on_step(const robot::StepReport &step, double x_m, double y_m, bool force) {
+  const double frame_sim_s = options_.speed / options_.fps;
+  if (!force && last_sim_s_ >= 0.0 && step.sim_time_s - last_sim_s_ < frame_sim_s) return;
+  std::this_thread::sleep_until(next_frame_);
+  last_sim_s_ = step.sim_time_s;
+  next_frame_ = std::chrono::steady_clock::now() +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(1.0 / options_.fps));
+  draw(step, x_m, y_m);
+}
+
+void Animator::draw(const robot::StepReport &step, double x_m, double y_m) {
+  const mapping::OccupancyGrid &grid = *step.grid;
+  const int map_rows = grid.height() * grid.k();
+  const int map_cols = grid.width() * grid.k();
+  const int rows = std::min(map_rows, std::max(1, options_.screen.rows - 2));
+  const int cols = std::min(map_cols, std::max(1, options_.screen.columns));
+  render::MapStyle style = style_;
+  int at_row = map_rows / 2;
+  int at_col = map_cols / 2;
+  if (const auto s = grid.subcell_at(mapping::Point{x_m, y_m})) {
+    style.robot = render::RobotMark{*s, "@"};
+    at_row = map_rows - 1 - s->y;
+    at_col = s->x;
+  }
+  const render::MapWindow window{follow(at_row, rows, map_rows), rows, follow(at_col, cols, map_cols), cols};
+  std::string frame = "\x1b[H";
+  frame += render::format_status(static_cast<long>(step.step), step.cell, step.heading,
+                                 step.visits->count(), grid.width() * grid.height());
+  frame += fmt::format("  t {:.1f} s", step.sim_time_s);
+  if (rows < map_rows || cols < map_cols) {
+    frame += fmt::format("  view {},{} of {}x{}", window.first_col, window.first_row, map_cols, map_rows);
+  }
+  if (frame.size() > static_cast<std::size_t>(options_.screen.columns) + 3) {
+    frame.resize(static_cast<std::size_t>(options_.screen.columns) + 3);
+  }
+  frame += "\x1b[K\n";
+  std::string map;
+  render::render_window(map, grid, *step.visits, style, window);
+  for (const char ch : map) {
+    if (ch == '\n') frame += "\x1b[K";
+    frame += ch;
+  }
+  frame += "\x1b[J";
+  out_ << frame << std::flush;
+}
+
+}  // namespace app

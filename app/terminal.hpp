@@ -1,0 +1,80 @@
+#pragma once
+// The terminal side of `run`: its size, the alternate screen for --animate, Ctrl-C.
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <iosfwd>
+
+#include "render/ascii_map.hpp"
+#include "robot/cell_controller.hpp"
+
+namespace app {
+
+bool is_terminal(int fd);
+
+struct TerminalSize {
+  int columns = 80;
+  int rows = 24;
+};
+// ioctl(TIOCGWINSZ) on fd; 80 x 24 when fd is not a terminal or reports 0.
+TerminalSize terminal_size(int fd);
+
+// While alive: SIGINT sets a flag instead of killing the process. Restores the previous
+// handler when destroyed. One at a time.
+class SigintGuard {
+ public:
+  SigintGuard();
+  ~SigintGuard();
+  SigintGuard(const SigintGuard &) = delete;
+  SigintGuard &operator=(const SigintGuard &) = delete;
+  static bool interrupted();
+
+ private:
+  struct sigaction previous_ {};
+};
+
+// While alive: the alternate screen, the cursor hidden. Destroying it (also on an exception
+// or after Ctrl-C) shows the cursor and returns to the normal screen, which is unchanged.
+class ScreenGuard {
+ public:
+  explicit ScreenGuard(std::ostream &out);
+  ~ScreenGuard();
+  ScreenGuard(const ScreenGuard &) = delete;
+  ScreenGuard &operator=(const ScreenGuard &) = delete;
+
+ private:
+  std::ostream &out_;
+};
+
+// The first row or column of a window of `size` that keeps `at` in its middle, within
+// [0, total - size] (0 when the window is as big as the map).
+int follow(int at, int size, int total);
+
+struct AnimationOptions {
+  double fps = 30.0;          // frames per wall-clock second, at most
+  double speed = 10.0;        // simulated seconds per wall-clock second
+  TerminalSize screen;
+};
+
+// Draws frames in place: cursor home, a status line, the part of the map that fits the
+// screen, following the robot (drawn as @ at its true position).
+class Animator {
+ public:
+  Animator(std::ostream &out, const render::MapStyle &style, const AnimationOptions &options);
+
+  // Draws a frame when the simulated time since the last frame reached speed / fps, after
+  // waiting out the rest of the frame period; always when forced.
+  void on_step(const robot::StepReport &step, double x_m, double y_m, bool force);
+
+ private:
+  void draw(const robot::StepReport &step, double x_m, double y_m);
+
+  std::ostream &out_;
+  render::MapStyle style_;
+  AnimationOptions options_;
+  double last_sim_s_ = -1.0;
+  std::chrono::steady_clock::time_point next_frame_;
+};
+
+}  // namespace app

@@ -1,0 +1,290 @@
+// run --out's files read back by independent readers (libpng's, nlohmann's), --step, Ctrl-C,
+// an unusable --out, and batch.
+#include <doctest/doctest.h>
+
+#include <png.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/batch.hpp"
+#include "app/outputs.hpp"
+#include "app/run.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path &path) {
+  std::string bytes(static_cast<std::size_t>(fs::file_size(path)), '\0');
+  std::FILE *file = std::fopen(path.c_str(), "rb");
+  REQUIRE(file != nullptr);
+  const std::size_t read = std::fread(bytes.data(), 1, bytes.size(), file);
+  std::fclose(file);
+  REQUIRE(read == bytes.size());
+  return bytes;
+}
+
+// The lines of a text, without their '\n'.
+std::vector<std::string> lines_of(const std::string &text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  for (std::size_t end = text.find('\n'); end != std::string::npos; end = text.find('\n', start)) {
+    lines.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
+}
+
+// A fresh directory under the system's temporary directory, removed at the end.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() / ("maze_mapper_test_" + std::to_string(::getpid()) + "_" +
+                                        std::to_string(counter()++));
+    fs::remove_all(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  static int &counter() {
+    static int n = 0;
+    return n;
+  }
+};
+
+app::RunOptions lab_options() {
+  app::RunOptions o;
+  o.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  o.noise = 0.0;
+  o.quiet = true;
+  return o;
+}
+
+struct Pgm {
+  int width = 0;
+  int height = 0;
+  std::string pixels;
+  unsigned char at(int col, int row) const {
+    return static_cast<unsigned char>(pixels[static_cast<std::size_t>(row * width + col)]);
+  }
+};
+
+Pgm read_pgm(const std::string &bytes) {
+  // "P5\n# comment\nW H\n255\n" then W * H bytes.
+  const std::vector<std::string> header = lines_of(bytes.substr(0, 200));
+  REQUIRE(header.size() >= 4);
+  REQUIRE(header[0] == "P5");
+  REQUIRE(header[1].front() == '#');
+  Pgm pgm;
+  REQUIRE(std::sscanf(header[2].c_str(), "%d %d", &pgm.width, &pgm.height) == 2);
+  REQUIRE(header[3] == "255");
+  const std::size_t offset = header[0].size() + header[1].size() + header[2].size() + header[3].size() + 4;
+  pgm.pixels = bytes.substr(offset);
+  REQUIRE(pgm.pixels.size() == static_cast<std::size_t>(pgm.width * pgm.height));
+  return pgm;
+}
+
+struct Png {
+  int width = 0;
+  int height = 0;
+  std::vector<unsigned char> rgb;
+  std::vector<int> at(int x, int y) const {
+    const auto i = static_cast<std::size_t>((y * width + x) * 3);
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+Png read_png(const std::string &bytes) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  REQUIRE(png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()) != 0);
+  image.format = PNG_FORMAT_RGB;
+  Png png;
+  png.width = static_cast<int>(image.width);
+  png.height = static_cast<int>(image.height);
+  png.rgb.resize(PNG_IMAGE_SIZE(image));
+  REQUIRE(png_image_finish_read(&image, nullptr, png.rgb.data(), 0, nullptr) != 0);
+  return png;
+}
+
+int g_polls = 0;
+bool interrupt_after_100_steps() { return ++g_polls > 100; }
+
+}  // namespace
+
+TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's content") {
+  const TempDir dir;
+  app::RunOptions options = lab_options();
+  options.out_dir = (dir.path / "out").string();
+  std::ostringstream out;
+  const app::RunSummary summary = app::run_world(options, out);
+  REQUIRE(summary.reason == robot::EndReason::done);
+
+  const Pgm pgm = read_pgm(read_all(dir.path / "out" / "map.pgm"));
+  CHECK(pgm.width == 12);
+  CHECK(pgm.height == 12);
+  // Row 0 is the north edge: the NW corner and the whole north band are walls; the centre
+  // of the start cell (0,0), bottom-left, is free.
+  CHECK(pgm.at(0, 0) == 0);
+  CHECK(pgm.at(1, 0) == 0);
+  CHECK(pgm.at(1, 10) == 254);
+  CHECK(pgm.at(0, 10) == 0);  // the west edge
+  for (const char p : pgm.pixels) {
+    const auto v = static_cast<unsigned char>(p);
+    CHECK((v == 0 || v == 254 || v == 205));
+  }
+
+  const std::string yaml = read_all(dir.path / "out" / "map.yaml");
+  CHECK(yaml ==
+        "image: map.pgm\nresolution: 0.333333\norigin: [0.000000, 0.000000, 0.0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n");
+
+  const Png png = read_png(read_all(dir.path / "out" / "map.png"));
+  CHECK(png.width == 12 * 34);
+  CHECK(png.height == 12 * 34);
+  CHECK(png.width >= 400);
+  const std::vector<int> corner = png.at(17, 17);  // NW corner sub-cell: a wall, dark grey
+  CHECK(corner[0] == corner[1]);
+  CHECK(corner[0] < 100);
+  const std::vector<int> path = png.at(1 * 102 + 51, 10 * 34 + 17);  // centre of cell (1,0)... on the path
+  CHECK(path == std::vector<int>{220, 30, 30});
+  const std::vector<int> start = png.at(51, 11 * 34 - 17);  // centre of cell (0,0): the start
+  CHECK(start == std::vector<int>{20, 170, 40});
+
+  const nlohmann::json json = nlohmann::json::parse(read_all(dir.path / "out" / "summary.json"));
+  CHECK(json.at("size") == "4x4");
+  CHECK(json.at("steps") == summary.steps);
+  CHECK(json.at("moves") == 29);
+  CHECK(json.at("visited") == 16);
+  CHECK(json.at("coverage") == 100.0);
+  CHECK(json.at("wall_accuracy") == 100.0);
+  CHECK(json.at("end") == "done");
+  CHECK(json.at("options").at("subcells") == 3);
+  CHECK(json.at("options").at("noise") == 0.0);
+  CHECK(json.at("options").at("p_occ") == 0.6);
+  CHECK(json.at("options").at("clamp").is_null());
+
+  const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
+  REQUIRE(!csv.empty());
+  CHECK(csv[0] == "time_s,x_m,y_m,yaw_rad,cell_x,cell_y,action,subcells_updated");
+  CHECK(csv[1] == "0.032,0.5000,0.5000,1.5708,0,0,start,8");
+  std::size_t updated = 0;
+  for (std::size_t i = 1; i < csv.size(); ++i) updated += std::stoul(csv[i].substr(csv[i].rfind(',') + 1));
+  CHECK(static_cast<std::int64_t>(csv.size()) - 1 == summary.steps);
+  CHECK(updated > 0);
+
+  // Nothing but the five files (no temporaries).
+  CHECK(std::distance(fs::directory_iterator(dir.path / "out"), fs::directory_iterator()) == 5);
+}
+
+TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {
+  const TempDir dir;
+  fs::create_directories(dir.path);
+  common::write_file_atomically((dir.path / "file").string(), "x");
+  app::RunOptions options = lab_options();
+
+  options.out_dir = (dir.path / "file").string();
+  std::ostringstream out;
+  CHECK_THROWS_WITH_AS(app::run_world(options, out),
+                       ("--out " + options.out_dir + ": exists and is not a directory").c_str(),
+                       common::InputError);
+  CHECK(out.str().empty());
+
+  options.out_dir = (dir.path / "file" / "a" / "b").string();
+  CHECK_THROWS_WITH_AS(app::run_world(options, out),
+                       ("--out " + options.out_dir + ": cannot create the directory: Not a directory").c_str(),
+                       common::InputError);
+  CHECK(out.str().empty());
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
+
+  // A bad world is found before the directory is made.
+  options.world = std::string(TEST_DATA_DIR) + "/worlds/inconsistent.num";
+  options.out_dir = (dir.path / "new").string();
+  CHECK_THROWS_AS(app::run_world(options, out), common::InputError);
+  CHECK_FALSE(fs::exists(dir.path / "new"));
+}
+
+TEST_CASE("--step: Enter goes on, q stops the run cleanly with a summary") {
+  app::RunOptions options = lab_options();
+  options.step = true;
+  std::istringstream in("\n\nq\n");
+  app::RunControls controls;
+  controls.in = &in;
+  std::ostringstream out;
+  const app::RunSummary summary = app::run_world(options, out, controls);
+  CHECK(summary.reason == robot::EndReason::stopped);
+  CHECK(summary.moves == 2);
+  CHECK(app::exit_status(summary) == 0);
+  CHECK(out.str().find("end: stopped (quit with q)\n") != std::string::npos);
+
+  std::istringstream short_input("\n");  // input ends: the run goes on to its end
+  controls.in = &short_input;
+  const app::RunSummary full = app::run_world(options, out, controls);
+  CHECK(full.reason == robot::EndReason::done);
+  CHECK(full.moves == 29);
+}
+
+TEST_CASE("an interrupt stops the run at the next step; exit status 130") {
+  app::RunOptions options = lab_options();
+  g_polls = 0;
+  app::RunControls controls;
+  controls.interrupted = interrupt_after_100_steps;
+  std::ostringstream out;
+  const app::RunSummary summary = app::run_world(options, out, controls);
+  CHECK(summary.reason == robot::EndReason::stopped);
+  CHECK(summary.interrupted);
+  CHECK(summary.steps == 101);  // polled after each step: the 101st poll stops it
+  CHECK(app::exit_status(summary) == 130);
+  CHECK(out.str().find("end: stopped (interrupted by Ctrl-C)\n") != std::string::npos);
+}
+
+TEST_CASE("batch: a bad world is reported and does not stop the others; input order") {
+  const std::string good = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  const std::string bad = std::string(TEST_DATA_DIR) + "/worlds/inconsistent.num";
+  const std::string eight = std::string(WORLDS_DIR) + "/maze8x8.txt";
+  app::RunOptions options = lab_options();
+  std::size_t calls = 0;
+  const std::vector<app::BatchItem> items =
+      app::run_batch(options, {eight, bad, good}, 3, [&](std::size_t, std::size_t) { ++calls; });
+  REQUIRE(items.size() == 3);
+  CHECK(calls == 3);
+  CHECK(items[0].world == eight);
+  CHECK(items[0].ok);
+  CHECK(items[0].summary.width == 8);
+  CHECK(items[1].bad_input);
+  CHECK(items[1].error.find(bad + ":25:11: error:") == 0);
+  CHECK(items[2].ok);
+  CHECK(items[2].summary.moves == 29);
+  CHECK(app::batch_exit_status(items) == 1);
+  const std::string table = app::format_batch_table(items, 1.0);
+  CHECK(table.find(eight) < table.find(bad));
+  CHECK(table.find(bad) < table.find(good));
+  CHECK(table.find("total: 3 worlds, 2 ok, 1 failed; moves 144;") != std::string::npos);
+  const std::string csv = app::format_batch_csv(items);
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 4);
+
+  const std::vector<app::BatchItem> all_bad = app::run_batch(options, {bad, bad}, 1, {});
+  CHECK(app::batch_exit_status(all_bad) == 2);
+
+  // The same table with one job as with three.
+  const std::vector<app::BatchItem> serial = app::run_batch(options, {eight, bad, good}, 1, {});
+  for (std::size_t i = 0; i < 3; ++i) CHECK(serial[i].summary.moves == items[i].summary.moves);
+}
+
+TEST_CASE("a folder expands to the files in it that load, sorted") {
+  const std::vector<std::string> worlds = app::expand_worlds({std::string(TEST_DATA_DIR) + "/worlds"});
+  CHECK(std::is_sorted(worlds.begin(), worlds.end()));
+  for (const std::string &w : worlds) CHECK(w.find("inconsistent") == std::string::npos);
+  CHECK_THROWS_AS(app::expand_worlds({"/nonexistent-folder"}), common::InputError);
+}
