@@ -1,6 +1,8 @@
 // maze_mapper run [WORLD] [options]: explore and map one world (see app/run.hpp).
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -24,6 +26,9 @@ struct RunInput {
   std::string strategy = "dfs";
   int hit_depth = 0;
   bool ignore_no_return = false;
+  std::optional<double> threshold;
+  double pie_beta_deg = 10.0;
+  double pie_alpha_m = mapping::RangeModelOptions{}.pie_contact_m;
   std::string robot = "hambot";
   std::uint64_t seed = common::kDefaultSeed;
   std::optional<double> noise;
@@ -41,6 +46,13 @@ RunOptions to_run_options(const RunInput &input) {
   o.model = mapping::parse_model(input.model);
   o.hit_depth = input.hit_depth;
   o.ignore_no_return = input.ignore_no_return;
+  if (input.threshold && !std::isfinite(*input.threshold)) {
+    throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *input.threshold));
+  }
+  o.threshold = input.threshold;
+  o.range_model.pie_half_angle_rad = input.pie_beta_deg * std::numbers::pi / 180.0;
+  o.range_model.pie_contact_m = input.pie_alpha_m;
+  mapping::validate(o.range_model);
   o.strategy = explore::parse_strategy(input.strategy);
   o.robot = input.robot;
   o.seed = input.seed;
@@ -82,7 +94,12 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
       "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
   run->add_option("WORLD", input->world, "maze file (default worlds/lab4x4.txt)");
   run->add_option("--subcells", input->subcells, "K: sub-cells per cell side, odd, 3 to 9 (default 3)");
-  run->add_option("--model", input->model, "mapping model: cell (default) or ray");
+  run->add_option("--model", input->model,
+                  "mapping model: cell (default), ray (lidar); bump (bumpers); depth, pie, cone (range sensors)");
+  run->add_option("--threshold", input->threshold,
+                  "L: a sub-cell is occupied when its log-odds >= L (map, walls; default: > 0)");
+  run->add_option("--pie-beta", input->pie_beta_deg, "pie model: slice half-angle, degrees (default 10)");
+  run->add_option("--pie-alpha", input->pie_alpha_m, "pie model: contact slice length, m (default 0.1)");
   run->add_option("--hit-depth", input->hit_depth, "ray model: sub-cells behind a hit also occupied (default 0)");
   run->add_flag("--ignore-no-return", input->ignore_no_return,
                 "ray model: a beam with no return frees nothing (default: free up to max range)");

@@ -31,6 +31,22 @@ mapping::Heading to_heading(maze::Side s) {
   return mapping::Heading::north;
 }
 
+// The robot's description as the controller gets it (like a URDF): where each bumper and
+// range sensor sits and what it sees. Range sensors sit on the body's rim; their value is
+// metres, the far end of the lookup table is their max range and its noise their error.
+robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
+  robot::SensingOptions s;
+  for (const maze::sim::BumperSpec &b : profile.bumpers) {
+    s.bumpers.push_back({b.name, b.angle_rad, profile.body_radius_m});
+  }
+  for (const maze::sim::DistanceSensorSpec &d : profile.distance_sensors) {
+    const maze::sim::LookupRow &far = d.lookup_table.back();
+    s.ranges.push_back({d.name, d.angle_rad, profile.body_radius_m, far.value, d.aperture_rad,
+                        far.noise_fraction});
+  }
+  return s;
+}
+
 // What a maze lab tells the robot's programmer: never the walls.
 robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
                                             const maze::sim::RobotProfile &profile) {
@@ -52,14 +68,40 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps;
   if (!profile.lidars.empty()) c.devices.lidar = profile.lidars.front().name;
+  c.sensing = sensing_of(profile);
+  c.sensing.range_model = options.range_model;
+  if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
   return c;
 }
 
-void require_lidar(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  if (profile.lidars.empty()) {
-    throw common::InputError(fmt::format(
-        "robot '{}' has no lidar, which the '{}' model needs (robots with a lidar: hambot)",
-        profile.name, mapping::to_string(options.model)));
+// The robot names that have what a model needs, for the error message.
+std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
+  std::string names;
+  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) {
+    if (!has(p)) continue;
+    if (!names.empty()) names += ", ";
+    names += p.name;
+  }
+  return names;
+}
+
+void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
+  const auto lidar = [](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); };
+  const auto bumpers = [](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); };
+  const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
+  bool (*has)(const maze::sim::RobotProfile &) = ranges;
+  const char *what = "range sensors";
+  if (mapping::uses_lidar(options.model)) {
+    has = lidar;
+    what = "a lidar";
+  } else if (options.model == mapping::ModelKind::bump) {
+    has = bumpers;
+    what = "bumpers";
+  }
+  if (!has(profile)) {
+    throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
+                                         profile.name, what, mapping::to_string(options.model),
+                                         what, robots_with(has)));
   }
 }
 
@@ -96,7 +138,8 @@ LearnedSide to_learned(mapping::SideState s) {
   return LearnedSide::unknown;
 }
 
-MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds) {
+MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds,
+               std::optional<float> threshold) {
   std::vector<bool> visited(static_cast<std::size_t>(truth.width()) *
                             static_cast<std::size_t>(truth.height()));
   for (int y = 0; y < truth.height(); ++y) {
@@ -106,7 +149,7 @@ MapScore score(const maze::Maze &truth, const robot::RunResult &result, float in
     }
   }
   const auto learned = [&](maze::Cell c, maze::Side s) {
-    return to_learned(mapping::side_state(result.grid, initial_log_odds, to_mapping(c), to_heading(s)));
+    return to_learned(mapping::side_state(result.grid, initial_log_odds, to_mapping(c), to_heading(s), threshold));
   };
   return score_map(truth, visited, learned);
 }
@@ -120,7 +163,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   const maze::World world = maze::load_world(options.world);
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
   const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
-  require_lidar(options, profile);
+  require_sensors(options, profile);
 
   const robot::ControllerOptions controller_opts = controller_options(options, world.maze, profile);
   robot::validate(controller_opts);
@@ -135,6 +178,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   style.ascii = options.ascii;
   style.unknown = options.unknown;
   style.initial_log_odds = static_cast<float>(model.prior_log_odds());
+  style.threshold = controller_opts.occupied_threshold;
 
   robot::CellController controller(simulation.robot(), controller_opts);
   robot::Observer observer;
@@ -149,7 +193,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;
-  summary.score = score(world.maze, result, style.initial_log_odds);
+  summary.score = score(world.maze, result, style.initial_log_odds, style.threshold);
   summary.sim_time_s = result.sim_time_s;
 
   out << render::render_map(result.grid, result.visits, style) << '\n';
@@ -168,6 +212,7 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("size", fmt::format("{}x{}", s.width, s.height));
   line("subcells", std::to_string(options.subcells));
   line("model", std::string(mapping::to_string(options.model)));
+  if (options.threshold) line("threshold", fmt::format("{:.3f}", *options.threshold));
   line("strategy", std::string(explore::to_string(options.strategy)));
   line("robot", options.robot);
   line("seed", std::to_string(options.seed));

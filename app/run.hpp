@@ -15,6 +15,7 @@
 #include "common/random.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/models.hpp"
+#include "mapping/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "robot/cell_controller.hpp"
 
@@ -26,6 +27,8 @@ struct RunOptions {
   mapping::ModelKind model = mapping::ModelKind::cell;
   int hit_depth = 0;                    // --hit-depth (ray model)
   bool ignore_no_return = false;        // --ignore-no-return (ray model)
+  std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
+  mapping::RangeModelOptions range_model;  // --pie-beta, --pie-alpha (pie model)
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   std::string robot = "hambot";
   std::uint64_t seed = common::kDefaultSeed;

@@ -47,7 +47,7 @@ void render_rows(std::string &out, const mapping::OccupancyGrid &grid, const exp
         if (!mapping::observed(v, style.initial_log_odds)) {
           out += style.unknown.value_or(' ');
         } else {
-          out += v > 0.0f ? 'W' : ' ';
+          out += mapping::is_occupied(v, style.threshold) ? 'W' : ' ';
         }
       }
     }

@@ -3,7 +3,8 @@
 // a sub-cell, each line ending in '\n':
 //   an arrow  at the centre of a visited cell: the last heading the robot had there
 //             (↑ → ↓ ←, or ^ > v < with ascii)
-//   W         an observed sub-cell whose log-odds is above 0 (more likely occupied)
+//   W         an observed sub-cell whose log-odds is above 0 (more likely occupied), or
+//             at least the --threshold when one is given
 //   unknown   a never-observed sub-cell (value still the initial l(prior)), when asked
 //   ' '       anything else (free, or never observed without an unknown character)
 // A never-observed sub-cell is never drawn as W, even when the prior is above 0.5.
@@ -21,6 +22,7 @@ struct MapStyle {
   bool ascii = false;            // --ascii: ^ > v < instead of ↑ → ↓ ←
   std::optional<char> unknown;   // --unknown CHAR
   float initial_log_odds = 0.0f; // the grid's initial value, to tell never-observed sub-cells
+  std::optional<float> threshold;  // --threshold: W when log-odds >= this (default: > 0)
 };
 
 // Appends sub-cell rows [first_row, first_row + row_count) counted from the top (north) line
