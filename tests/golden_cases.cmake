@@ -27,3 +27,14 @@ add_golden_test(run_maze8_frontier_quiet ARGS run worlds/maze8x8.txt --strategy 
 add_golden_test(run_bad_p_occ STATUS 2 STDERR ARGS run --p-occ 0.4)
 add_golden_test(run_bad_subcells STATUS 2 STDERR ARGS run --subcells 4)
 add_golden_test(run_unknown_strategy STATUS 2 STDERR ARGS run --strategy spiral)
+
+# The other classroom set-ups (issue 6): bump, depth, IR pie-slice and IR/sonar cone runs.
+add_golden_test(run_lab4x4_bump ARGS run worlds/lab4x4.txt --robot bumper-depth --model bump --log-base 10)
+add_golden_test(run_lab4x4_bump_threshold_quiet ARGS run worlds/lab4x4.txt --robot bumper-depth --model bump --log-base 10 --threshold -0.5 --quiet)
+add_golden_test(run_lab4x4_depth ARGS run worlds/lab4x4.txt --robot bumper-depth --model depth --log-base 10)
+add_golden_test(run_lab4x4_pie_quiet STATUS 1 ARGS run worlds/lab4x4.txt --robot ir-ring --model pie --quiet)
+add_golden_test(run_lab4x4_pie_k9_quiet ARGS run worlds/lab4x4.txt --robot ir-ring --model pie --subcells 9 --quiet)
+add_golden_test(run_lab4x4_cone_ir ARGS run worlds/lab4x4.txt --robot ir-ring --model cone)
+add_golden_test(run_lab4x4_cone_sonar_quiet ARGS run worlds/lab4x4.txt --robot sonar-ring --model cone --quiet)
+add_golden_test(run_depth_on_hambot STATUS 2 STDERR ARGS run --model depth)
+add_golden_test(run_bad_pie_beta STATUS 2 STDERR ARGS run --robot ir-ring --model pie --pie-beta 95)

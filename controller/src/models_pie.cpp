@@ -26,8 +26,11 @@ Part part_of(const RangeReading &r, double beta, double clear_m, double contact_
 
 void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const RangeReading &r,
               LeveledUpdate &update) {
-  const bool contacting = r.range_m < r.max_range_m;
-  const double clear_m = contacting ? std::max(r.range_m, 0.0) : r.max_range_m;
+  const bool contacting = r.range_m < r.max_range_m * (1.0 - r.range_error);
+  // A clear reading frees up to what it measured, less its error: noise near max range
+  // must not free a wall just short of max.
+  const double clear_m = contacting ? std::max(r.range_m, 0.0)
+                                    : std::min(r.range_m, r.max_range_m) * (1.0 - r.range_error);
   const double outer_m = contacting ? clear_m + options.pie_contact_m : clear_m;
   const GridGeometry &g = grid.geometry();
   const double size = g.subcell_size_m();

@@ -9,8 +9,8 @@
 //   depth  each ray with a reading strictly between 0 and its max range: the hit sub-cell
 //          p = 0.99999, the sub-cells the ray crosses before it p = 0.4, the robot's own
 //          sub-cell p = 0.3 (base 10: 5.000, -0.176, -0.368). Readings of 0 or max: ignored.
-//   pie    a reading d < max is "contacting", else "clear". The clear slice reaches d (or
-//          max), half-angle beta around the sensor's direction; a contacting reading adds a
+//   pie    a reading d < max is "contacting", else "clear". The clear slice reaches d (see
+//          below for noise near max), half-angle beta around the sensor's direction; a contacting reading adds a
 //          contact slice reaching d + alpha. Each sub-cell's four corners and centre are
 //          tested: a point in the contact slice but not in the clear one makes the sub-cell
 //          occupied (p = 0.7), else a point in the clear slice makes it free (p = 0.4).
@@ -20,6 +20,9 @@
 //          sub-cell's angular size at that range (and radially at half a sub-cell), so every
 //          sub-cell it covers is visited. A reading at max range frees the cone up to
 //          max (1 - eps) and marks no arc.
+// pie: a reading within the distance error of max (>= max (1 - eps)) is clear, and a clear
+// slice reaches the reading (1 - eps): the sensor's noise near max range would otherwise
+// report phantom contacts, or free a wall just short of max.
 // Per scan each sub-cell is updated once; the strongest evidence wins (occupied over the
 // robot's own sub-cell over free along a ray). Increments are SensorModel::increment_for(p),
 // i.e. l(p) - l(prior) in the model's base.
