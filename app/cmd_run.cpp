@@ -1,6 +1,7 @@
 // maze_mapper run [WORLD] [options]: explore and map one world (see app/run.hpp).
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "app/run.hpp"
 #include "commands.hpp"
 #include "common/error.hpp"
+#include "maze/world.hpp"
 #include "model_options.hpp"
 
 namespace app {
@@ -37,7 +39,23 @@ struct RunInput {
   std::string unknown;
   bool quiet = false;
   std::int64_t max_steps = RunOptions{}.max_steps;
+  std::string plan_from;
+  std::string plan_to;
+  int dilate = 0;
 };
+
+// "X,Y" -> cell; throws common::InputError naming the option.
+std::optional<mapping::Cell> parse_cell(const std::string &text, const char *option) {
+  if (text.empty()) return std::nullopt;
+  int x = 0;
+  int y = 0;
+  char comma = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+    throw common::InputError(fmt::format("{} must be X,Y (got '{}')", option, text));
+  }
+  return mapping::Cell{x, y};
+}
 
 RunOptions to_run_options(const RunInput &input) {
   RunOptions o;
@@ -77,6 +95,9 @@ RunOptions to_run_options(const RunInput &input) {
     throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", input.max_steps));
   }
   o.max_steps = input.max_steps;
+  o.plan_from = parse_cell(input.plan_from, "--from");
+  o.plan_to = parse_cell(input.plan_to, input.plan_from.empty() ? "--plan-to" : "--to");
+  o.dilate = input.dilate;
   return o;
 }
 
@@ -88,10 +109,10 @@ std::string default_world() {
   return std::string(MAZE_MAPPER_WORLDS_DIR) + "/lab4x4.txt";
 }
 
-void add_run_command(CLI::App &cli, CommandContext &context) {
-  auto input = std::make_shared<RunInput>();
-  CLI::App *run = cli.add_subcommand(
-      "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
+namespace {
+
+// The options run and plan share.
+void add_exploration_options(CLI::App *run, RunInput *input) {
   run->add_option("WORLD", input->world, "maze file (default worlds/lab4x4.txt)");
   run->add_option("--subcells", input->subcells, "K: sub-cells per cell side, odd, 3 to 9 (default 3)");
   run->add_option("--model", input->model,
@@ -113,10 +134,43 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
   add_clamp_option(*run, input->sensor);
   run->add_flag("--ascii", input->ascii, "heading arrows as ^ > v < instead of ↑ → ↓ ←");
   run->add_option("--unknown", input->unknown, "CHAR drawn for never-observed sub-cells (default blank)");
-  run->add_flag("--quiet", input->quiet, "print only the final map and the summary");
   run->add_option("--max-steps", input->max_steps, "stop after this many control steps (default 2000000)");
+  run->add_option("--dilate", input->dilate, "planning: grow obstacles by N sub-cells (default 0)");
+}
+
+}  // namespace
+
+void add_run_command(CLI::App &cli, CommandContext &context) {
+  auto input = std::make_shared<RunInput>();
+  CLI::App *run = cli.add_subcommand(
+      "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
+  add_exploration_options(run, input.get());
+  run->add_flag("--quiet", input->quiet, "print only the final map and the summary");
+  run->add_option("--plan-to", input->plan_to,
+                  "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run->callback([input, &context] {
     const RunOptions options = to_run_options(*input);
+    const RunSummary summary = run_world(options, std::cout);
+    context.status = exit_status(summary);
+  });
+
+  auto plan_input = std::make_shared<RunInput>();
+  CLI::App *plan = cli.add_subcommand(
+      "plan", "explore a world quietly, then plan a path on the learned map (wavefront) and draw it");
+  add_exploration_options(plan, plan_input.get());
+  plan->add_option("--from", plan_input->plan_from, "X,Y: start cell of the path (default: the maze's start)");
+  plan->add_option("--to", plan_input->plan_to, "X,Y: goal cell of the path (default: the maze's first goal)");
+  plan->callback([plan_input, &context] {
+    RunInput in = *plan_input;
+    in.quiet = true;
+    RunOptions options = to_run_options(in);
+    options.plan_only = true;
+    const maze::World world = maze::load_world(options.world);
+    if (!options.plan_from) options.plan_from = mapping::Cell{world.maze.start().x, world.maze.start().y};
+    if (!options.plan_to) {
+      if (world.maze.goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");
+      options.plan_to = mapping::Cell{world.maze.goals().front().x, world.maze.goals().front().y};
+    }
     const RunSummary summary = run_world(options, std::cout);
     context.status = exit_status(summary);
   });

@@ -14,6 +14,7 @@
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
 #include "mapping/walls.hpp"
+#include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
 
 namespace app {
@@ -156,6 +157,37 @@ MapScore score(const maze::Maze &truth, const robot::RunResult &result, float in
 
 std::string percent(double value) { return fmt::format("{:.2f}%", value); }
 
+void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option) {
+  if (c.x < 0 || c.y < 0 || c.x >= maze.width() || c.y >= maze.height()) {
+    throw common::InputError(fmt::format("{} {},{} is outside the {}x{} maze", option, c.x, c.y,
+                                         maze.width(), maze.height()));
+  }
+}
+
+// Plans on the learned grid and prints the map with the path drawn as '*'.
+PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
+                      const mapping::SensorModel &model, render::MapStyle style, std::ostream &out) {
+  PlanSummary p;
+  p.from = options.plan_from.value_or(result.path.back());
+  p.to = *options.plan_to;
+  plan::WavefrontOptions wave;
+  wave.dilate = options.dilate;
+  const auto path = plan::wavefront(result.grid, model, p.from, p.to, wave);
+  if (!path) {
+    out << fmt::format("no path from ({},{}) to ({},{}) on the learned map\n\n", p.from.x, p.from.y,
+                       p.to.x, p.to.y);
+    return p;
+  }
+  p.found = true;
+  p.length_subcells = path->length_subcells;
+  p.length_cells = path->length_cells;
+  const std::vector<bool> mask = plan::path_mask(result.grid, *path);
+  style.path = &mask;
+  out << fmt::format("planned path ({},{}) -> ({},{}):\n", p.from.x, p.from.y, p.to.x, p.to.y);
+  out << render::render_map(result.grid, result.visits, style) << '\n';
+  return p;
+}
+
 }  // namespace
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
@@ -167,6 +199,9 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
 
   const robot::ControllerOptions controller_opts = controller_options(options, world.maze, profile);
   robot::validate(controller_opts);
+  plan::validate(plan::WavefrontOptions{0.6, options.dilate});
+  if (options.plan_from) require_inside(world.maze, *options.plan_from, "--from");
+  if (options.plan_to) require_inside(world.maze, *options.plan_to, options.plan_from ? "--to" : "--plan-to");
 
   maze::sim::SimulationOptions sim_opts;
   sim_opts.seed = options.seed;
@@ -196,7 +231,10 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   summary.score = score(world.maze, result, style.initial_log_odds, style.threshold);
   summary.sim_time_s = result.sim_time_s;
 
-  out << render::render_map(result.grid, result.visits, style) << '\n';
+  if (!options.plan_only) out << render::render_map(result.grid, result.visits, style) << '\n';
+  if (options.plan_to) {
+    summary.plan = plan_path(options, result, model, style, out);
+  }
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   out << format_summary(options, summary);
@@ -224,6 +262,13 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("reachable", std::to_string(s.score.reachable_cells));
   line("coverage", percent(s.score.coverage_percent()));
   line("wall_accuracy", percent(s.score.wall_accuracy_percent()));
+  if (s.plan) {
+    line("plan", fmt::format("({},{}) -> ({},{}) dilate {}", s.plan->from.x, s.plan->from.y,
+                             s.plan->to.x, s.plan->to.y, options.dilate));
+    line("plan_length", s.plan->found ? fmt::format("{} sub-cells, {} cells", s.plan->length_subcells,
+                                                    s.plan->length_cells)
+                                      : std::string("no path"));
+  }
   line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
   line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
   return text;

@@ -38,6 +38,21 @@ struct RunOptions {
   std::optional<char> unknown;
   bool quiet = false;                   // final map and summary only
   std::int64_t max_steps = 2'000'000;
+  // Wavefront planning on the learned grid after the run (--plan-to; `plan` sets both ends):
+  // from plan_from (default: where the robot ended) to plan_to.
+  std::optional<mapping::Cell> plan_from;
+  std::optional<mapping::Cell> plan_to;
+  int dilate = 0;                       // --dilate N sub-cells
+  bool plan_only = false;               // `plan`: print only the planned map and the summary
+};
+
+// What the planner found, for the summary.
+struct PlanSummary {
+  mapping::Cell from;
+  mapping::Cell to;
+  bool found = false;
+  int length_subcells = 0;
+  int length_cells = 0;
 };
 
 struct RunSummary {
@@ -51,6 +66,7 @@ struct RunSummary {
   MapScore score;
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;
+  std::optional<PlanSummary> plan;
 };
 
 // Runs the world and writes the progress (unless quiet), the final map and the summary

@@ -38,3 +38,8 @@ add_golden_test(run_lab4x4_cone_ir ARGS run worlds/lab4x4.txt --robot ir-ring --
 add_golden_test(run_lab4x4_cone_sonar_quiet ARGS run worlds/lab4x4.txt --robot sonar-ring --model cone --quiet)
 add_golden_test(run_depth_on_hambot STATUS 2 STDERR ARGS run --model depth)
 add_golden_test(run_bad_pie_beta STATUS 2 STDERR ARGS run --robot ir-ring --model pie --pie-beta 95)
+add_golden_test(plan_lab4x4 ARGS plan worlds/lab4x4.txt)
+add_golden_test(plan_lab4x4_depth_k5 ARGS plan worlds/lab4x4.txt --robot bumper-depth --model depth --subcells 5 --from 3,0 --to 0,3)
+add_golden_test(run_lab4x4_floodfill_plan_to_start ARGS run worlds/lab4x4.txt --strategy floodfill --plan-to 0,0 --quiet)
+add_golden_test(plan_outside STATUS 2 STDERR ARGS plan worlds/lab4x4.txt --to 4,0)
+add_golden_test(plan_bad_cell STATUS 2 STDERR ARGS plan worlds/lab4x4.txt --from 1:2)

@@ -37,6 +37,10 @@ void render_rows(std::string &out, const mapping::OccupancyGrid &grid, const exp
     for (int x = 0; x < grid.width(); ++x) {
       const Cell c{x, y};
       for (int j = 0; j < k; ++j) {
+        if (style.path != nullptr && (*style.path)[grid.index(c, LocalSubCell{i, j})]) {
+          out += '*';
+          continue;
+        }
         if (i == mid && j == mid) {
           if (const auto h = visits.heading(c)) {
             out += arrow(*h, style.ascii);

@@ -1,6 +1,7 @@
 #pragma once
 // The map as text (DESIGN §7): H*K lines of W*K characters, north at the top, one character
 // a sub-cell, each line ending in '\n':
+//   *         a sub-cell of a planned path, when one is given (over everything else)
 //   an arrow  at the centre of a visited cell: the last heading the robot had there
 //             (↑ → ↓ ←, or ^ > v < with ascii)
 //   W         an observed sub-cell whose log-odds is above 0 (more likely occupied), or
@@ -11,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "explore/visits.hpp"
 #include "mapping/grid_types.hpp"
@@ -23,6 +25,7 @@ struct MapStyle {
   std::optional<char> unknown;   // --unknown CHAR
   float initial_log_odds = 0.0f; // the grid's initial value, to tell never-observed sub-cells
   std::optional<float> threshold;  // --threshold: W when log-odds >= this (default: > 0)
+  const std::vector<bool> *path = nullptr;  // per flat grid index: '*' (a planned path)
 };
 
 // Appends sub-cell rows [first_row, first_row + row_count) counted from the top (north) line
