@@ -1,7 +1,11 @@
 // maze_mapper run [WORLD] [options]: explore and map one world (see app/run.hpp).
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
 #include <filesystem>
 #include <numbers>
 #include <iostream>
@@ -138,6 +142,73 @@ void add_exploration_options(CLI::App *run, RunInput *input) {
   run->add_option("--dilate", input->dilate, "planning: grow obstacles by N sub-cells (default 0)");
 }
 
+// Display width of UTF-8 text: code points (the map's arrows are one column each).
+std::size_t display_width(const std::string &text) {
+  std::size_t n = 0;
+  for (const char ch : text) n += (static_cast<unsigned char>(ch) & 0xC0) != 0x80 ? 1 : 0;
+  return n;
+}
+
+std::vector<std::string> split_lines(const std::string &text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+// compare: one quiet run per K, printed as columns (map, blank line, summary).
+int compare_runs(const RunInput &input, const std::string &subcells, std::ostream &out) {
+  std::vector<int> ks;
+  for (const std::string &part : split_lines([&] {
+         std::string t = subcells;
+         for (char &ch : t) ch = ch == ',' ? '\n' : ch;
+         return t;
+       }())) {
+    char *end = nullptr;
+    const long k = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || *end != '\0') {
+      throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
+    }
+    ks.push_back(static_cast<int>(k));
+  }
+  std::vector<RunOptions> runs;
+  for (const int k : ks) {
+    RunInput one = input;
+    one.subcells = k;
+    runs.push_back(to_run_options(one));
+  }
+  std::vector<std::vector<std::string>> columns;
+  std::vector<std::size_t> widths;
+  int status = 0;
+  for (const RunOptions &options : runs) {
+    std::ostringstream text;
+    const RunSummary summary = run_world(options, text);
+    status = std::max(status, exit_status(summary));
+    columns.push_back(split_lines(text.str()));
+    std::size_t width = 0;
+    for (const std::string &line : columns.back()) width = std::max(width, display_width(line));
+    widths.push_back(width);
+  }
+  std::size_t rows = 0;
+  for (const auto &column : columns) rows = std::max(rows, column.size());
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::string line;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::string cell = r < columns[c].size() ? columns[c][r] : std::string();
+      line += cell;
+      if (c + 1 < columns.size()) line += std::string(widths[c] - display_width(cell) + 3, ' ');
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << line << '\n';
+  }
+  return status;
+}
+
 }  // namespace
 
 void add_run_command(CLI::App &cli, CommandContext &context) {
@@ -153,6 +224,22 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
     const RunSummary summary = run_world(options, std::cout);
     context.status = exit_status(summary);
   });
+
+  auto compare_input = std::make_shared<RunInput>();
+  auto compare_k = std::make_shared<std::string>("3,5");
+  CLI::App *compare = cli.add_subcommand(
+      "compare", "run the same world at several resolutions; maps and summaries side by side");
+  add_exploration_options(compare, compare_input.get());
+  compare->get_option("--subcells")->description("K1,K2,...: the resolutions to compare (default 3,5)");
+  compare->get_option("--subcells")->type_name("TEXT");
+  compare_input->subcells = 0;
+  compare->callback([compare_input, compare_k, &context] {
+    RunInput in = *compare_input;
+    in.quiet = true;
+    context.status = compare_runs(in, *compare_k, std::cout);
+  });
+  compare->remove_option(compare->get_option("--subcells"));
+  compare->add_option("--subcells", *compare_k, "K1,K2,...: the resolutions to compare (default 3,5)");
 
   auto plan_input = std::make_shared<RunInput>();
   CLI::App *plan = cli.add_subcommand(

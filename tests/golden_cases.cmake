@@ -43,3 +43,6 @@ add_golden_test(plan_lab4x4_depth_k5 ARGS plan worlds/lab4x4.txt --robot bumper-
 add_golden_test(run_lab4x4_floodfill_plan_to_start ARGS run worlds/lab4x4.txt --strategy floodfill --plan-to 0,0 --quiet)
 add_golden_test(plan_outside STATUS 2 STDERR ARGS plan worlds/lab4x4.txt --to 4,0)
 add_golden_test(plan_bad_cell STATUS 2 STDERR ARGS plan worlds/lab4x4.txt --from 1:2)
+add_golden_test(compare_lab4x4_k3_k5 ARGS compare worlds/lab4x4.txt --subcells 3,5)
+add_golden_test(compare_lab4x4_depth ARGS compare worlds/lab4x4.txt --robot bumper-depth --model depth --subcells 3,5,7)
+add_golden_test(compare_bad_list STATUS 2 STDERR ARGS compare worlds/lab4x4.txt --subcells 3,x)
