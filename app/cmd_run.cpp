@@ -46,6 +46,7 @@ struct RunInput {
   std::string plan_from;
   std::string plan_to;
   int dilate = 0;
+  bool speed_run = false;
 };
 
 // "X,Y" -> cell; throws common::InputError naming the option.
@@ -102,6 +103,7 @@ RunOptions to_run_options(const RunInput &input) {
   o.plan_from = parse_cell(input.plan_from, "--from");
   o.plan_to = parse_cell(input.plan_to, input.plan_from.empty() ? "--plan-to" : "--to");
   o.dilate = input.dilate;
+  o.speed_run = input.speed_run;
   return o;
 }
 
@@ -217,6 +219,8 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
       "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
   add_exploration_options(run, input.get());
   run->add_flag("--quiet", input->quiet, "print only the final map and the summary");
+  run->add_flag("--speed-run", input->speed_run,
+                "after exploring, drive the wavefront path on the learned map back to the start (with floodfill: a micromouse speed run)");
   run->add_option("--plan-to", input->plan_to,
                   "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run->callback([input, &context] {

@@ -69,6 +69,7 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps;
   if (!profile.lidars.empty()) c.devices.lidar = profile.lidars.front().name;
+  c.speed_run = options.speed_run;
   c.sensing = sensing_of(profile);
   c.sensing.range_model = options.range_model;
   if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
@@ -230,6 +231,9 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   summary.visited = result.visited;
   summary.score = score(world.maze, result, style.initial_log_odds, style.threshold);
   summary.sim_time_s = result.sim_time_s;
+  summary.explore_time_s = result.explore_time_s;
+  summary.speed_run_time_s = result.speed_run_time_s;
+  summary.speed_run_cells = result.speed_run_cells;
 
   if (!options.plan_only) out << render::render_map(result.grid, result.visits, style) << '\n';
   if (options.plan_to) {
@@ -268,6 +272,13 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
     line("plan_length", s.plan->found ? fmt::format("{} sub-cells, {} cells", s.plan->length_subcells,
                                                     s.plan->length_cells)
                                       : std::string("no path"));
+  }
+  if (options.speed_run) {
+    line("explore_time_s", fmt::format("{:.3f}", s.explore_time_s));
+    line("speed_run", s.speed_run_time_s
+                          ? fmt::format("{} cells back to the start in {:.3f} s", s.speed_run_cells,
+                                        *s.speed_run_time_s)
+                          : std::string("none (exploring did not finish, or no path back)"));
   }
   line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
   line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));

@@ -43,7 +43,8 @@ struct RunOptions {
   std::optional<mapping::Cell> plan_from;
   std::optional<mapping::Cell> plan_to;
   int dilate = 0;                       // --dilate N sub-cells
-  bool plan_only = false;               // `plan`: print only the planned map and the summary
+  bool plan_only = false;
+  bool speed_run = false;               // --speed-run: drive the planned path back to the start               // `plan`: print only the planned map and the summary
 };
 
 // What the planner found, for the summary.
@@ -67,6 +68,9 @@ struct RunSummary {
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;
   std::optional<PlanSummary> plan;
+  double explore_time_s = 0.0;
+  std::optional<double> speed_run_time_s;
+  int speed_run_cells = 0;
 };
 
 // Runs the world and writes the progress (unless quiet), the final map and the summary

@@ -46,3 +46,4 @@ add_golden_test(plan_bad_cell STATUS 2 STDERR ARGS plan worlds/lab4x4.txt --from
 add_golden_test(compare_lab4x4_k3_k5 ARGS compare worlds/lab4x4.txt --subcells 3,5)
 add_golden_test(compare_lab4x4_depth ARGS compare worlds/lab4x4.txt --robot bumper-depth --model depth --subcells 3,5,7)
 add_golden_test(compare_bad_list STATUS 2 STDERR ARGS compare worlds/lab4x4.txt --subcells 3,x)
+add_golden_test(run_lab4x4_floodfill_speed_run ARGS run worlds/lab4x4.txt --strategy floodfill --speed-run --quiet)

@@ -22,6 +22,7 @@
 #include "common/error.hpp"
 #include "mapping/scan.hpp"
 #include "mapping/walls.hpp"
+#include "plan/wavefront.hpp"
 
 namespace robot {
 
@@ -398,7 +399,11 @@ struct CellController::Impl {
     if (const Motion s = arrive(true); s != Motion::ok) return to_reason(s);
     for (;;) {
       const auto next = explorer.next(cell, heading, walls);
-      if (!next) return EndReason::done;
+      if (!next) {
+        final_cell = cell;
+        final_heading = heading;
+        return EndReason::done;
+      }
       Motion s = turn_to(*next);
       if (s == Motion::ok) {
         heading = *next;
@@ -413,6 +418,34 @@ struct CellController::Impl {
       path.push_back(cell);
       if (const Motion a = arrive(new_cell); a != Motion::ok) return to_reason(a);
     }
+  }
+
+  // Drives the wavefront path from `cell` back to the start, cell by cell, without mapping.
+  EndReason speed_run(Cell cell, Heading heading) {
+    plan::WavefrontOptions known_free;
+    known_free.unknown_blocked = true;
+    const auto route = plan::wavefront(grid, model, cell, options.start, known_free);
+    if (!route) return EndReason::done;
+    const double started = robot.getTime();
+    int cells = 0;
+    const int k = grid.k();
+    for (const mapping::SubCell s : route->subcells) {
+      const Cell next = mapping::cell_of(s, k);
+      if (next == cell) continue;
+      for (const Heading h : mapping::kHeadings) {
+        if (mapping::neighbour(cell, h) == next) heading = h;
+      }
+      Motion m = turn_to(heading);
+      if (m == Motion::ok) m = drive_to(next, heading);
+      if (m != Motion::ok) return to_reason(m);
+      cell = next;
+      ++cells;
+      path.push_back(cell);
+      visits.record(cell, heading);
+    }
+    speed_run_cells = cells;
+    speed_run_time_s = robot.getTime() - started;
+    return EndReason::done;
   }
 
   static EndReason to_reason(Motion s) {
@@ -456,6 +489,10 @@ struct CellController::Impl {
 
   std::int64_t steps = 0;
   int moves = 0;
+  Cell final_cell;
+  Heading final_heading = Heading::north;
+  std::optional<double> speed_run_time_s;
+  int speed_run_cells = 0;
   std::vector<Cell> path;
   std::string message;
   bool ran = false;
@@ -470,7 +507,9 @@ RunResult CellController::run(const Observer &observer) {
   Impl &s = *impl_;
   assert(!s.ran && "CellController::run is called once");
   s.ran = true;
-  const EndReason reason = s.explore(observer);
+  EndReason reason = s.explore(observer);
+  const double explore_time_s = s.robot.getTime();
+  if (reason == EndReason::done && s.options.speed_run) reason = s.speed_run(s.final_cell, s.final_heading);
   return RunResult{reason,
                    std::move(s.message),
                    s.steps,
@@ -479,7 +518,10 @@ RunResult CellController::run(const Observer &observer) {
                    s.robot.getTime(),
                    std::move(s.grid),
                    std::move(s.visits),
-                   std::move(s.path)};
+                   std::move(s.path),
+                   explore_time_s,
+                   s.speed_run_time_s,
+                   s.speed_run_cells};
 }
 
 }  // namespace robot

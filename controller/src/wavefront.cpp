@@ -10,6 +10,13 @@
 #include "common/error.hpp"
 
 namespace plan {
+namespace {
+
+// Grid values are floats: l(0.6) stored and read back is p = 0.59999997, which must still
+// count as "not below 0.6" (one observation with the default p_occ is an obstacle).
+constexpr double kProbabilityTolerance = 1e-6;
+
+}  // namespace
 
 using mapping::Cell;
 using mapping::SubCell;
@@ -32,7 +39,12 @@ std::vector<bool> obstacles(const mapping::OccupancyGrid &grid, const mapping::S
   std::vector<bool> blocked(grid.size(), false);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      if (model.probability_of(grid.at(SubCell{x, y})) < options.free_below_p) continue;
+      const float value = grid.at(SubCell{x, y});
+      const bool unknown = value == static_cast<float>(model.prior_log_odds());
+      if (!(options.unknown_blocked && unknown) &&
+          model.probability_of(value) < options.free_below_p - kProbabilityTolerance) {
+        continue;
+      }
       const int n = options.dilate;
       for (int yy = std::max(0, y - n); yy <= std::min(h - 1, y + n); ++yy) {
         for (int xx = std::max(0, x - n); xx <= std::min(w - 1, x + n); ++xx) {

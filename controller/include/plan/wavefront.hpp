@@ -1,7 +1,8 @@
 #pragma once
 // The wavefront planner on the learned sub-cell grid (issue 6).
 //
-// A sub-cell is free when its probability is below free_below_p (0.6 by default; a
+// A sub-cell is free when its probability is below free_below_p (0.6 by default, compared
+// with a 1e-6 tolerance for the float storage; a
 // never-observed sub-cell at the prior 0.5 counts as free); the others are obstacles, grown
 // by `dilate` sub-cells in every direction (a square, Chebyshev distance). The wave spreads
 // from the goal cell's centre sub-cell over free sub-cells, 4 neighbours, cost 1 a step;
@@ -22,6 +23,9 @@ inline constexpr int kMaxDilate = 8;
 struct WavefrontOptions {
   double free_below_p = 0.6;
   int dilate = 0;  // --dilate N, 0 ... kMaxDilate
+  // Never-observed sub-cells (still at l(prior)) are obstacles too: a path only through
+  // what was seen free (the speed run's choice).
+  bool unknown_blocked = false;
 };
 
 // Throws common::InputError when dilate is outside 0 ... kMaxDilate or free_below_p

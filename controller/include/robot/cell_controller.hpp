@@ -107,6 +107,9 @@ struct ControllerOptions {
   // --threshold: a sub-cell is occupied when its log-odds >= this (walls the explorer reads);
   // none: occupied when > 0.
   std::optional<float> occupied_threshold;
+  // After exploring (ended "done"), plan a wavefront path on the learned grid from where the
+  // robot is back to the start and drive it (a micromouse speed run; floodfill's use).
+  bool speed_run = false;
 };
 
 // Throws common::InputError when an option is unusable (each concern's own validate, then
@@ -140,6 +143,11 @@ struct RunResult {
   mapping::OccupancyGrid grid;
   explore::Visits visits;
   std::vector<mapping::Cell> path;  // cells in order of arrival, start first
+  double explore_time_s = 0.0;       // simulated time when exploring ended
+  // Speed run: simulated seconds and cells driven; nothing when none was made (not asked,
+  // exploring did not end "done", or no path back on the learned grid).
+  std::optional<double> speed_run_time_s;
+  int speed_run_cells = 0;
 };
 
 class CellController {
