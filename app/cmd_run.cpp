@@ -187,11 +187,16 @@ int compare_runs(const RunInput &input, const std::string &subcells, std::ostrea
   std::vector<std::vector<std::string>> columns;
   std::vector<std::size_t> widths;
   int status = 0;
+  double total_ms = 0.0;
   for (const RunOptions &options : runs) {
     std::ostringstream text;
     const RunSummary summary = run_world(options, text);
     status = std::max(status, exit_status(summary));
-    columns.push_back(split_lines(text.str()));
+    // The wall time varies from run to run: one total line at the end keeps columns stable.
+    std::vector<std::string> lines = split_lines(text.str());
+    std::erase_if(lines, [](const std::string &l) { return l.starts_with("wall_time_ms: "); });
+    total_ms += summary.wall_time_ms;
+    columns.push_back(std::move(lines));
     std::size_t width = 0;
     for (const std::string &line : columns.back()) width = std::max(width, display_width(line));
     widths.push_back(width);
@@ -208,6 +213,7 @@ int compare_runs(const RunInput &input, const std::string &subcells, std::ostrea
     while (!line.empty() && line.back() == ' ') line.pop_back();
     out << line << '\n';
   }
+  out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);
   return status;
 }
 
