@@ -1,11 +1,20 @@
-// maze_mapper run [WORLD] [options]: explore and map one world (see app/run.hpp).
+// maze_mapper run [WORLD] [options]: explore and map one world (see app/run.hpp), and the
+// commands built on a run: compare (several K side by side) and plan (wavefront on the
+// learned map).
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numbers>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -15,6 +24,7 @@
 #include "app/terminal.hpp"
 #include "commands.hpp"
 #include "common/error.hpp"
+#include "maze/world.hpp"
 #include "model_options.hpp"
 
 namespace app {
@@ -36,11 +46,29 @@ void check_positive(const char *option, double value) {
   }
 }
 
+// "X,Y" -> cell; throws common::InputError naming the option.
+std::optional<mapping::Cell> parse_cell(const std::string &text, const char *option) {
+  if (text.empty()) return std::nullopt;
+  int x = 0;
+  int y = 0;
+  char comma = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+    throw common::InputError(fmt::format("{} must be X,Y (got '{}')", option, text));
+  }
+  return mapping::Cell{x, y};
+}
+
 }  // namespace
 
 void add_mapping_run_options(CLI::App &run, RunInput &input) {
   run.add_option("--subcells", input.subcells, "K: sub-cells per cell side, odd, 3 to 9 (default 3)");
-  run.add_option("--model", input.model, "mapping model: cell (default) or ray");
+  run.add_option("--model", input.model,
+                 "mapping model: cell (default), ray (lidar); bump (bumpers); depth, pie, cone (range sensors)");
+  run.add_option("--threshold", input.threshold,
+                 "L: a sub-cell is occupied when its log-odds >= L (map, walls; default: > 0)");
+  run.add_option("--pie-beta", input.pie_beta_deg, "pie model: slice half-angle, degrees (default 10)");
+  run.add_option("--pie-alpha", input.pie_alpha_m, "pie model: contact slice length, m (default 0.1)");
   run.add_option("--hit-depth", input.hit_depth, "ray model: sub-cells behind a hit also occupied (default 0)");
   run.add_flag("--ignore-no-return", input.ignore_no_return,
                "ray model: a beam with no return frees nothing (default: free up to max range)");
@@ -53,6 +81,7 @@ void add_mapping_run_options(CLI::App &run, RunInput &input) {
   add_model_options(run, input.sensor);
   add_clamp_option(run, input.sensor);
   run.add_option("--max-steps", input.max_steps, "stop after this many control steps (default 2000000)");
+  run.add_option("--dilate", input.dilate, "planning: grow obstacles by N sub-cells (default 0)");
 }
 
 RunOptions to_run_options(const RunInput &input) {
@@ -62,6 +91,13 @@ RunOptions to_run_options(const RunInput &input) {
   o.model = mapping::parse_model(input.model);
   o.hit_depth = input.hit_depth;
   o.ignore_no_return = input.ignore_no_return;
+  if (input.threshold && !std::isfinite(*input.threshold)) {
+    throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *input.threshold));
+  }
+  o.threshold = input.threshold;
+  o.range_model.pie_half_angle_rad = input.pie_beta_deg * std::numbers::pi / 180.0;
+  o.range_model.pie_contact_m = input.pie_alpha_m;
+  mapping::validate(o.range_model);
   o.strategy = explore::parse_strategy(input.strategy);
   o.robot = input.robot;
   o.seed = input.seed;
@@ -86,6 +122,10 @@ RunOptions to_run_options(const RunInput &input) {
     throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", input.max_steps));
   }
   o.max_steps = input.max_steps;
+  o.plan_from = parse_cell(input.plan_from, "--from");
+  o.plan_to = parse_cell(input.plan_to, input.plan_from.empty() ? "--plan-to" : "--to");
+  o.dilate = input.dilate;
+  o.speed_run = input.speed_run;
   return o;
 }
 
@@ -95,16 +135,107 @@ std::string default_world() {
   return std::string(MAZE_MAPPER_WORLDS_DIR) + "/lab4x4.txt";
 }
 
+namespace {
+
+// The options run, compare and plan share: the world, the mapping options, the map's look.
+void add_exploration_options(CLI::App &command, RunInput &input) {
+  command.add_option("WORLD", input.world, "maze file (default worlds/lab4x4.txt)");
+  add_mapping_run_options(command, input);
+  command.add_flag("--ascii", input.ascii, "heading arrows as ^ > v < instead of ↑ → ↓ ←");
+  command.add_option("--unknown", input.unknown, "CHAR drawn for never-observed sub-cells (default blank)");
+}
+
+RunOptions with_default_world(RunOptions options) {
+  if (options.world.empty()) options.world = default_world();
+  return options;
+}
+
+// Display width of UTF-8 text: code points (the map's arrows are one column each).
+std::size_t display_width(const std::string &text) {
+  std::size_t n = 0;
+  for (const char ch : text) n += (static_cast<unsigned char>(ch) & 0xC0) != 0x80 ? 1 : 0;
+  return n;
+}
+
+std::vector<std::string> split_lines(const std::string &text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+// compare: one quiet run per K, printed as columns (map, blank line, summary).
+int compare_runs(const RunInput &input, const std::string &subcells, std::ostream &out) {
+  std::vector<int> ks;
+  for (const std::string &part : split_lines([&] {
+         std::string t = subcells;
+         for (char &ch : t) ch = ch == ',' ? '\n' : ch;
+         return t;
+       }())) {
+    char *end = nullptr;
+    const long k = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || *end != '\0') {
+      throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
+    }
+    ks.push_back(static_cast<int>(k));
+  }
+  std::vector<RunOptions> runs;
+  for (const int k : ks) {
+    RunInput one = input;
+    one.subcells = k;
+    runs.push_back(with_default_world(to_run_options(one)));
+  }
+  std::vector<std::vector<std::string>> columns;
+  std::vector<std::size_t> widths;
+  int status = 0;
+  double total_ms = 0.0;
+  for (const RunOptions &options : runs) {
+    std::ostringstream text;
+    const RunSummary summary = run_world(options, text);
+    status = std::max(status, exit_status(summary));
+    // The wall time varies from run to run: one total line at the end keeps columns stable.
+    std::vector<std::string> lines = split_lines(text.str());
+    std::erase_if(lines, [](const std::string &l) { return l.starts_with("wall_time_ms: "); });
+    total_ms += summary.wall_time_ms;
+    columns.push_back(std::move(lines));
+    std::size_t width = 0;
+    for (const std::string &line : columns.back()) width = std::max(width, display_width(line));
+    widths.push_back(width);
+  }
+  std::size_t rows = 0;
+  for (const auto &column : columns) rows = std::max(rows, column.size());
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::string line;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::string cell = r < columns[c].size() ? columns[c][r] : std::string();
+      line += cell;
+      if (c + 1 < columns.size()) line += std::string(widths[c] - display_width(cell) + 3, ' ');
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << line << '\n';
+  }
+  out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);
+  return status;
+}
+
+}  // namespace
+
 void add_run_command(CLI::App &cli, CommandContext &context) {
   auto input = std::make_shared<RunInput>();
   auto only = std::make_shared<RunOnlyInput>();
   CLI::App *run = cli.add_subcommand(
       "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
-  run->add_option("WORLD", input->world, "maze file (default worlds/lab4x4.txt)");
-  add_mapping_run_options(*run, *input);
-  run->add_flag("--ascii", input->ascii, "heading arrows as ^ > v < instead of ↑ → ↓ ←");
-  run->add_option("--unknown", input->unknown, "CHAR drawn for never-observed sub-cells (default blank)");
+  add_exploration_options(*run, *input);
   run->add_flag("--quiet", input->quiet, "print only the final map and the summary");
+  run->add_flag("--speed-run", input->speed_run,
+                "after exploring, drive the wavefront path on the learned map back to the start (with floodfill: a micromouse speed run)");
+  run->add_option("--plan-to", input->plan_to,
+                  "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run->add_option("--out", only->out,
                   "DIR: write map.pgm + map.yaml (ROS map_server), map.png, summary.json, trace.csv");
   run->add_flag("--no-color", only->no_color, "no ANSI colours (default: colours when stdout is a terminal)");
@@ -114,8 +245,7 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
                   "--animate: simulated seconds per wall-clock second (default 10)");
   run->add_flag("--step", only->step, "stop after each cell: Enter goes on, q quits");
   run->callback([input, only, &context] {
-    RunOptions options = to_run_options(*input);
-    if (options.world.empty()) options.world = default_world();
+    RunOptions options = with_default_world(to_run_options(*input));
     check_positive("--fps", only->fps);
     check_positive("--speed", only->speed);
     options.out_dir = only->out;
@@ -131,6 +261,43 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
     controls.terminal_fd = STDOUT_FILENO;
     const SigintGuard sigint;
     const RunSummary summary = run_world(options, std::cout, controls);
+    context.status = exit_status(summary);
+  });
+
+  auto compare_input = std::make_shared<RunInput>();
+  auto compare_k = std::make_shared<std::string>("3,5");
+  CLI::App *compare = cli.add_subcommand(
+      "compare", "run the same world at several resolutions; maps and summaries side by side");
+  add_exploration_options(*compare, *compare_input);
+  compare->get_option("--subcells")->description("K1,K2,...: the resolutions to compare (default 3,5)");
+  compare->get_option("--subcells")->type_name("TEXT");
+  compare_input->subcells = 0;
+  compare->callback([compare_input, compare_k, &context] {
+    RunInput in = *compare_input;
+    in.quiet = true;
+    context.status = compare_runs(in, *compare_k, std::cout);
+  });
+  compare->remove_option(compare->get_option("--subcells"));
+  compare->add_option("--subcells", *compare_k, "K1,K2,...: the resolutions to compare (default 3,5)");
+
+  auto plan_input = std::make_shared<RunInput>();
+  CLI::App *plan = cli.add_subcommand(
+      "plan", "explore a world quietly, then plan a path on the learned map (wavefront) and draw it");
+  add_exploration_options(*plan, *plan_input);
+  plan->add_option("--from", plan_input->plan_from, "X,Y: start cell of the path (default: the maze's start)");
+  plan->add_option("--to", plan_input->plan_to, "X,Y: goal cell of the path (default: the maze's first goal)");
+  plan->callback([plan_input, &context] {
+    RunInput in = *plan_input;
+    in.quiet = true;
+    RunOptions options = with_default_world(to_run_options(in));
+    options.plan_only = true;
+    const maze::World world = maze::load_world(options.world);
+    if (!options.plan_from) options.plan_from = mapping::Cell{world.maze.start().x, world.maze.start().y};
+    if (!options.plan_to) {
+      if (world.maze.goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");
+      options.plan_to = mapping::Cell{world.maze.goals().front().x, world.maze.goals().front().y};
+    }
+    const RunSummary summary = run_world(options, std::cout);
     context.status = exit_status(summary);
   });
 }

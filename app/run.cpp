@@ -1,5 +1,6 @@
 #include "app/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <istream>
@@ -16,6 +17,7 @@
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
 #include "mapping/walls.hpp"
+#include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
 #include "app/outputs.hpp"
 #include "app/terminal.hpp"
@@ -33,6 +35,22 @@ mapping::Heading to_heading(maze::Side s) {
     case maze::Side::west: return mapping::Heading::west;
   }
   return mapping::Heading::north;
+}
+
+// The robot's description as the controller gets it (like a URDF): where each bumper and
+// range sensor sits and what it sees. Range sensors sit on the body's rim; their value is
+// metres, the far end of the lookup table is their max range and its noise their error.
+robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
+  robot::SensingOptions s;
+  for (const maze::sim::BumperSpec &b : profile.bumpers) {
+    s.bumpers.push_back({b.name, b.angle_rad, profile.body_radius_m});
+  }
+  for (const maze::sim::DistanceSensorSpec &d : profile.distance_sensors) {
+    const maze::sim::LookupRow &far = d.lookup_table.back();
+    s.ranges.push_back({d.name, d.angle_rad, profile.body_radius_m, far.value, d.aperture_rad,
+                        far.noise_fraction});
+  }
+  return s;
 }
 
 // What a maze lab tells the robot's programmer: never the walls.
@@ -56,14 +74,41 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps;
   if (!profile.lidars.empty()) c.devices.lidar = profile.lidars.front().name;
+  c.speed_run = options.speed_run;
+  c.sensing = sensing_of(profile);
+  c.sensing.range_model = options.range_model;
+  if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
   return c;
 }
 
-void require_lidar(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  if (profile.lidars.empty()) {
-    throw common::InputError(fmt::format(
-        "robot '{}' has no lidar, which the '{}' model needs (robots with a lidar: hambot)",
-        profile.name, mapping::to_string(options.model)));
+// The robot names that have what a model needs, for the error message.
+std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
+  std::string names;
+  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) {
+    if (!has(p)) continue;
+    if (!names.empty()) names += ", ";
+    names += p.name;
+  }
+  return names;
+}
+
+void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
+  const auto lidar = [](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); };
+  const auto bumpers = [](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); };
+  const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
+  bool (*has)(const maze::sim::RobotProfile &) = ranges;
+  const char *what = "range sensors";
+  if (mapping::uses_lidar(options.model)) {
+    has = lidar;
+    what = "a lidar";
+  } else if (options.model == mapping::ModelKind::bump) {
+    has = bumpers;
+    what = "bumpers";
+  }
+  if (!has(profile)) {
+    throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
+                                         profile.name, what, mapping::to_string(options.model),
+                                         what, robots_with(has)));
   }
 }
 
@@ -106,7 +151,8 @@ LearnedSide to_learned(mapping::SideState s) {
   return LearnedSide::unknown;
 }
 
-MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds) {
+MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds,
+               std::optional<float> threshold) {
   std::vector<bool> visited(static_cast<std::size_t>(truth.width()) *
                             static_cast<std::size_t>(truth.height()));
   for (int y = 0; y < truth.height(); ++y) {
@@ -116,7 +162,7 @@ MapScore score(const maze::Maze &truth, const robot::RunResult &result, float in
     }
   }
   const auto learned = [&](maze::Cell c, maze::Side s) {
-    return to_learned(mapping::side_state(result.grid, initial_log_odds, to_mapping(c), to_heading(s)));
+    return to_learned(mapping::side_state(result.grid, initial_log_odds, to_mapping(c), to_heading(s), threshold));
   };
   return score_map(truth, visited, learned);
 }
@@ -147,6 +193,37 @@ void wait_for_step(const RunControls &controls, const robot::MoveReport &report,
   if (line == "q" || line == "quit" || line == "Q") state.quit = true;
 }
 
+void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option) {
+  if (c.x < 0 || c.y < 0 || c.x >= maze.width() || c.y >= maze.height()) {
+    throw common::InputError(fmt::format("{} {},{} is outside the {}x{} maze", option, c.x, c.y,
+                                         maze.width(), maze.height()));
+  }
+}
+
+// Plans on the learned grid and prints the map with the path drawn as '*'.
+PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
+                      const mapping::SensorModel &model, render::MapStyle style, std::ostream &out) {
+  PlanSummary p;
+  p.from = options.plan_from.value_or(result.path.back());
+  p.to = *options.plan_to;
+  plan::WavefrontOptions wave;
+  wave.dilate = options.dilate;
+  const auto path = plan::wavefront(result.grid, model, p.from, p.to, wave);
+  if (!path) {
+    out << fmt::format("no path from ({},{}) to ({},{}) on the learned map\n\n", p.from.x, p.from.y,
+                       p.to.x, p.to.y);
+    return p;
+  }
+  p.found = true;
+  p.length_subcells = path->length_subcells;
+  p.length_cells = path->length_cells;
+  const std::vector<bool> mask = plan::path_mask(result.grid, *path);
+  style.path = &mask;
+  out << fmt::format("planned path ({},{}) -> ({},{}):\n", p.from.x, p.from.y, p.to.x, p.to.y);
+  out << render::render_map(result.grid, result.visits, style) << '\n';
+  return p;
+}
+
 }  // namespace
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
@@ -163,10 +240,13 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
                     const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
   const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
-  require_lidar(options, profile);
+  require_sensors(options, profile);
 
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   robot::validate(controller_opts);
+  plan::validate(plan::WavefrontOptions{0.6, options.dilate});
+  if (options.plan_from) require_inside(truth, *options.plan_from, "--from");
+  if (options.plan_to) require_inside(truth, *options.plan_to, options.plan_from ? "--to" : "--plan-to");
 
   maze::sim::SimulationOptions sim_opts;
   sim_opts.seed = options.seed;
@@ -181,6 +261,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   style.color = options.color;
 
   if (!options.out_dir.empty()) prepare_output_dir(options.out_dir);
+  style.threshold = controller_opts.occupied_threshold;
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
@@ -237,12 +318,14 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;
-  if (!result.path.empty()) {
-    const mapping::Cell last = result.path.back();
-    summary.reached_goal = truth.is_goal(maze::Cell{last.x, last.y});
-  }
-  summary.score = score(truth, result, style.initial_log_odds);
+  summary.reached_goal = std::any_of(result.path.begin(), result.path.end(), [&](mapping::Cell c) {
+    return truth.is_goal(maze::Cell{c.x, c.y});
+  });
+  summary.score = score(truth, result, style.initial_log_odds, style.threshold);
   summary.sim_time_s = result.sim_time_s;
+  summary.explore_time_s = result.explore_time_s;
+  summary.speed_run_time_s = result.speed_run_time_s;
+  summary.speed_run_cells = result.speed_run_cells;
 
   if (options.color && !result.path.empty()) {
     const mapping::Cell last = result.path.back();
@@ -251,7 +334,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
                                     render::arrow(result.visits.heading(last).value_or(mapping::Heading::north),
                                                   options.ascii)};
   }
-  out << render::render_map(result.grid, result.visits, style) << '\n';
+  if (!options.plan_only) out << render::render_map(result.grid, result.visits, style) << '\n';
+  if (options.plan_to) {
+    summary.plan = plan_path(options, result, model, style, out);
+  }
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   if (!options.out_dir.empty()) {
@@ -271,6 +357,7 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("size", fmt::format("{}x{}", s.width, s.height));
   line("subcells", std::to_string(options.subcells));
   line("model", std::string(mapping::to_string(options.model)));
+  if (options.threshold) line("threshold", fmt::format("{:.3f}", *options.threshold));
   line("strategy", std::string(explore::to_string(options.strategy)));
   line("robot", options.robot);
   line("seed", std::to_string(options.seed));
@@ -285,6 +372,20 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("reachable", std::to_string(s.score.reachable_cells));
   line("coverage", percent(s.score.coverage_percent()));
   line("wall_accuracy", percent(s.score.wall_accuracy_percent()));
+  if (s.plan) {
+    line("plan", fmt::format("({},{}) -> ({},{}) dilate {}", s.plan->from.x, s.plan->from.y,
+                             s.plan->to.x, s.plan->to.y, options.dilate));
+    line("plan_length", s.plan->found ? fmt::format("{} sub-cells, {} cells", s.plan->length_subcells,
+                                                    s.plan->length_cells)
+                                      : std::string("no path"));
+  }
+  if (options.speed_run) {
+    line("explore_time_s", fmt::format("{:.3f}", s.explore_time_s));
+    line("speed_run", s.speed_run_time_s
+                          ? fmt::format("{} cells back to the start in {:.3f} s", s.speed_run_cells,
+                                        *s.speed_run_time_s)
+                          : std::string("none (exploring did not finish, or no path back)"));
+  }
   line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
   line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
   return text;

@@ -16,6 +16,7 @@
 #include "maze/maze.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/models.hpp"
+#include "mapping/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "robot/cell_controller.hpp"
 
@@ -27,6 +28,8 @@ struct RunOptions {
   mapping::ModelKind model = mapping::ModelKind::cell;
   int hit_depth = 0;                    // --hit-depth (ray model)
   bool ignore_no_return = false;        // --ignore-no-return (ray model)
+  std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
+  mapping::RangeModelOptions range_model;  // --pie-beta, --pie-alpha (pie model)
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   std::string robot = "hambot";
   std::uint64_t seed = common::kDefaultSeed;
@@ -42,6 +45,13 @@ struct RunOptions {
   double fps = 30.0;                    // --fps
   double speed = 10.0;                  // --speed: simulated seconds per wall-clock second
   bool step = false;                    // --step: wait for Enter (or q) after each cell
+  // Wavefront planning on the learned grid after the run (--plan-to; `plan` sets both ends):
+  // from plan_from (default: where the robot ended) to plan_to.
+  std::optional<mapping::Cell> plan_from;
+  std::optional<mapping::Cell> plan_to;
+  int dilate = 0;                       // --dilate N sub-cells
+  bool plan_only = false;               // `plan`: print only the planned map and the summary
+  bool speed_run = false;               // --speed-run: drive the planned path back to the start
 };
 
 // What a run reads besides its options (all optional).
@@ -52,6 +62,15 @@ struct RunControls {
   int terminal_fd = -1;                 // --animate: the screen size comes from here
 };
 
+// What the planner found, for the summary.
+struct PlanSummary {
+  mapping::Cell from;
+  mapping::Cell to;
+  bool found = false;
+  int length_subcells = 0;
+  int length_cells = 0;
+};
+
 struct RunSummary {
   robot::EndReason reason = robot::EndReason::done;
   std::string message;
@@ -60,11 +79,15 @@ struct RunSummary {
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
-  bool reached_goal = false;  // the run ended on one of the maze's goal cells
+  bool reached_goal = false;  // the robot stood on one of the maze's goal cells
   MapScore score;
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;
   bool interrupted = false;             // stopped by Ctrl-C (not by q)
+  std::optional<PlanSummary> plan;
+  double explore_time_s = 0.0;
+  std::optional<double> speed_run_time_s;
+  int speed_run_cells = 0;
 };
 
 // Loads options.world (its warnings go to stderr) and runs it with run_maze().

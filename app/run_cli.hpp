@@ -21,6 +21,9 @@ struct RunInput {
   std::string strategy = "dfs";
   int hit_depth = 0;
   bool ignore_no_return = false;
+  std::optional<double> threshold;
+  double pie_beta_deg = 10.0;
+  double pie_alpha_m = mapping::RangeModelOptions{}.pie_contact_m;
   std::string robot = "hambot";
   std::uint64_t seed = common::kDefaultSeed;
   std::optional<double> noise;
@@ -29,10 +32,15 @@ struct RunInput {
   std::string unknown;
   bool quiet = false;
   std::int64_t max_steps = RunOptions{}.max_steps;
+  std::string plan_from;  // X,Y (plan --from)
+  std::string plan_to;    // X,Y (plan --to, run --plan-to)
+  int dilate = 0;
+  bool speed_run = false;
 };
 
-// The mapping options both commands take: --subcells --model --hit-depth --ignore-no-return
-// --strategy --robot --seed --noise --p-free --p-occ --prior --log-base --clamp --max-steps.
+// The mapping options run, batch, compare and plan take: --subcells --model --threshold
+// --pie-beta --pie-alpha --hit-depth --ignore-no-return --strategy --robot --seed --noise
+// --p-free --p-occ --prior --log-base --clamp --max-steps --dilate.
 void add_mapping_run_options(CLI::App &command, RunInput &input);
 
 // Checks and converts; throws common::InputError naming the bad option. world is left

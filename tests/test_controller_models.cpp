@@ -230,10 +230,11 @@ TEST_CASE("model options: names and validation messages") {
   CHECK(mapping::parse_model("ray") == ModelKind::ray);
   CHECK(mapping::to_string(ModelKind::ray) == "ray");
   try {
-    mapping::parse_model("cone");
+    mapping::parse_model("sonar");
     FAIL("no error");
   } catch (const common::InputError &e) {
-    CHECK(e.diagnostic() == "error: unknown --model 'cone' (choose cell or ray)");
+    CHECK(e.diagnostic() ==
+          "error: unknown --model 'sonar' (choose cell, ray, bump, depth, pie or cone)");
   }
   MappingOptions o;
   o.hit_depth = 9;

@@ -61,6 +61,10 @@ void put_subcell(std::string &out, const mapping::OccupancyGrid &grid, const exp
     put(out, style, Glyph::robot, style.robot->glyph);
     return;
   }
+  if (style.path != nullptr && (*style.path)[grid.index(c, s)]) {
+    out += '*';
+    return;
+  }
   if (s.i == mid && s.j == mid) {
     if (const auto h = visits.heading(c)) {
       put(out, style, Glyph::arrow, arrow(*h, style.ascii));
@@ -71,7 +75,7 @@ void put_subcell(std::string &out, const mapping::OccupancyGrid &grid, const exp
   if (!mapping::observed(v, style.initial_log_odds)) {
     const char blank = style.unknown.value_or(' ');
     put(out, style, Glyph::unknown, std::string_view(&blank, 1));
-  } else if (v > 0.0f) {
+  } else if (mapping::is_occupied(v, style.threshold)) {
     put(out, style, Glyph::wall, "W");
   } else {
     out += ' ';

@@ -10,16 +10,19 @@
 
 #include <fmt/format.h>
 
+#include <webots/DistanceSensor.hpp>
 #include <webots/GPS.hpp>
 #include <webots/InertialUnit.hpp>
 #include <webots/Lidar.hpp>
 #include <webots/Motor.hpp>
 #include <webots/PositionSensor.hpp>
 #include <webots/Robot.hpp>
+#include <webots/TouchSensor.hpp>
 
 #include "common/error.hpp"
 #include "mapping/scan.hpp"
 #include "mapping/walls.hpp"
+#include "plan/wavefront.hpp"
 
 namespace robot {
 
@@ -62,6 +65,15 @@ class StallWatch {
 
 }  // namespace
 
+mapping::LeveledUpdate range_update_for(const ControllerOptions &o) {
+  switch (o.mapping.kind) {
+    case mapping::ModelKind::depth: return mapping::make_depth_update();
+    case mapping::ModelKind::pie: return mapping::make_pie_update();
+    case mapping::ModelKind::cone: return mapping::make_cone_update(o.sensor);
+    default: return mapping::make_bump_update();
+  }
+}
+
 struct CellController::Impl {
   Impl(webots::Robot &r, const ControllerOptions &o)
       : robot(r),
@@ -78,7 +90,17 @@ struct CellController::Impl {
     left_encoder = require(robot.getPositionSensor(d.left_encoder), d.left_encoder);
     right_encoder = require(robot.getPositionSensor(d.right_encoder), d.right_encoder);
     imu = require(robot.getInertialUnit(d.imu), d.imu);
-    lidar = require(robot.getLidar(d.lidar), d.lidar);
+    if (mapping::uses_lidar(options.mapping.kind)) {
+      lidar = require(robot.getLidar(d.lidar), d.lidar);
+    } else if (options.mapping.kind == mapping::ModelKind::bump) {
+      for (const BumperMount &b : options.sensing.bumpers) {
+        bumpers.push_back(require(robot.getTouchSensor(b.name), b.name));
+      }
+    } else {
+      for (const RangeSensorMount &mount : options.sensing.ranges) {
+        range_sensors.push_back(require(robot.getDistanceSensor(mount.name), mount.name));
+      }
+    }
     gps = robot.getGPS(d.gps);
     time_step_ms = options.motion.time_step_ms > 0
                        ? options.motion.time_step_ms
@@ -91,7 +113,9 @@ struct CellController::Impl {
     left_encoder->enable(time_step_ms);
     right_encoder->enable(time_step_ms);
     imu->enable(time_step_ms);
-    lidar->enable(time_step_ms);
+    if (lidar != nullptr) lidar->enable(time_step_ms);
+    for (webots::TouchSensor *b : bumpers) b->enable(time_step_ms);
+    for (webots::DistanceSensor *r : range_sensors) r->enable(time_step_ms);
     if (gps != nullptr) gps->enable(time_step_ms);
     left->setPosition(INFINITY);
     right->setPosition(INFINITY);
@@ -177,8 +201,16 @@ struct CellController::Impl {
   }
 
   Motion drive_to(Cell target_cell, Heading h) {
+    return drive_to_point(grid.centre_of(target_cell), h, options.geometry.cell_size_m,
+                          fmt::format("cell ({},{})", target_cell.x, target_cell.y), nullptr);
+  }
+
+  // Drives along heading h (backwards when the target is behind) to the point `target`,
+  // distance_m away by the encoders when there is no GPS. on_step, when given, runs after
+  // every control step.
+  Motion drive_to_point(Point target, Heading h, double distance_m, const std::string &what,
+                        const std::function<void()> &on_step) {
     const MotionOptions &m = options.motion;
-    const Point target = grid.centre_of(target_cell);
     const double dir_x = mapping::dx(h);
     const double dir_y = mapping::dy(h);
     const double target_yaw = mapping::yaw_rad(h);
@@ -186,7 +218,6 @@ struct CellController::Impl {
     const double max_w = std::min(m.turn_speed_rad_s, max_wheel_rad_s) * 2.0 * m.wheel_radius_m / m.axle_m;
     left0 = left_encoder->getValue();
     right0 = right_encoder->getValue();
-    const double distance_m = options.geometry.cell_size_m;
     const auto remaining_and_offset = [&]() -> std::pair<double, double> {
       if (gps == nullptr) return {distance_m - travelled_m(), 0.0};
       const Point p = gps_point();
@@ -203,18 +234,142 @@ struct CellController::Impl {
       const double w = std::clamp(m.turn_gain * error / dt_s, -max_w, max_w);
       set_body(v, w);
       if (const Motion s = step(Action::drive); s != Motion::ok) return s;
+      if (on_step) on_step();
       std::tie(remaining, offset) = remaining_and_offset();
       if (watch.stalled(remaining)) {
-        message = fmt::format("driving {} to cell ({},{}) made no progress for {} steps ({:.3f} m to go)",
-                              mapping::to_char(h), target_cell.x, target_cell.y, m.stall_steps,
-                              remaining);
+        message = fmt::format("driving {} to {} made no progress for {} steps ({:.3f} m to go)",
+                              mapping::to_char(h), what, m.stall_steps, remaining);
         return Motion::no_progress;
       }
     }
     return come_to_rest();
   }
 
+  Point position(Cell c) const { return gps != nullptr ? gps_point() : grid.centre_of(c); }
+
+  // A point offset_m from the robot's centre along angle_rad relative to its heading.
+  Point mounted(Point centre, double angle_rad, double offset_m) const {
+    const double a = yaw() + angle_rad;
+    return {centre.x_m + offset_m * std::cos(a), centre.y_m + offset_m * std::sin(a)};
+  }
+
+  // The bumpers as read now, marked into bump_update (not applied).
+  bool gather_bumps(Cell c) {
+    const Point centre = position(c);
+    bump_readings.clear();
+    bool pressed = false;
+    for (std::size_t i = 0; i < bumpers.size(); ++i) {
+      const BumperMount &mount = options.sensing.bumpers[i];
+      const bool on = bumpers[i]->getValue() > 0.5;
+      pressed = pressed || on;
+      bump_readings.push_back({mounted(centre, mount.angle_rad, mount.offset_m), on});
+    }
+    mapping::mark_bumps(grid, centre, bump_readings, bump_update);
+    return pressed;
+  }
+
+  void read_ranges(Cell c) {
+    const Point centre = position(c);
+    range_readings.clear();
+    for (std::size_t i = 0; i < range_sensors.size(); ++i) {
+      const RangeSensorMount &mount = options.sensing.ranges[i];
+      range_readings.push_back({mounted(centre, mount.angle_rad, mount.offset_m),
+                                yaw() + mount.angle_rad, range_sensors[i]->getValue(), mount.max_range_m,
+                                mount.aperture_rad, mount.range_error});
+    }
+  }
+
   void scan(Cell c) {
+    switch (options.mapping.kind) {
+      case mapping::ModelKind::cell:
+      case mapping::ModelKind::ray: scan_lidar(c); return;
+      case mapping::ModelKind::bump:
+        gather_bumps(c);
+        bump_update.apply(grid, model);
+        return;
+      case mapping::ModelKind::depth:
+        read_ranges(c);
+        mapping::mark_depth(grid, position(c), range_readings, range_update);
+        break;
+      case mapping::ModelKind::pie:
+        read_ranges(c);
+        mapping::mark_pie(grid, options.sensing.range_model, range_readings, range_update);
+        break;
+      case mapping::ModelKind::cone:
+        read_ranges(c);
+        mapping::mark_cone(grid, range_readings, range_update);
+        break;
+    }
+    range_update.apply(grid, model);
+  }
+
+  // Bump model: feels for the wall on side h of cell c (see the header), then backs to the
+  // centre. Each pass is one scan.
+  Motion probe(Cell c, Heading h) {
+    if (const Motion s = turn_to(h); s != Motion::ok) return s;
+    const MotionOptions &m = options.motion;
+    const Point centre = grid.centre_of(c);
+    const double dir_x = mapping::dx(h);
+    const double dir_y = mapping::dy(h);
+    const double limit_m = options.geometry.cell_size_m / 2.0 + options.geometry.subcell_size_m() / 2.0;
+    const double max_w = std::min(m.turn_speed_rad_s, max_wheel_rad_s) * 2.0 * m.wheel_radius_m / m.axle_m;
+    left0 = left_encoder->getValue();
+    right0 = right_encoder->getValue();
+    const auto along_and_offset = [&]() -> std::pair<double, double> {
+      if (gps == nullptr) return {travelled_m(), 0.0};
+      const Point p = gps_point();
+      const double ex = p.x_m - centre.x_m;
+      const double ey = p.y_m - centre.y_m;
+      return {ex * dir_x + ey * dir_y, ex * -dir_y + ey * dir_x};
+    };
+    auto [along, offset] = along_and_offset();
+    StallWatch watch(along, m.stall_epsilon, m.stall_steps);
+    while (!gather_bumps(c) && along < limit_m) {
+      const double error = mapping::wrap_angle_rad(mapping::yaw_rad(h) - yaw()) - m.lateral_gain * offset;
+      set_body(m.creep_speed_m_s, std::clamp(m.turn_gain * error / dt_s, -max_w, max_w));
+      if (const Motion s = step(Action::probe); s != Motion::ok) return s;
+      std::tie(along, offset) = along_and_offset();
+      if (watch.stalled(along)) {
+        message = fmt::format("probing {} of cell ({},{}) made no progress for {} steps",
+                              mapping::to_char(h), c.x, c.y, m.stall_steps);
+        return Motion::no_progress;
+      }
+    }
+    bump_update.apply(grid, model);
+    if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+    const Motion back = drive_to_point(centre, h, -travelled_m(),
+                                       fmt::format("the centre of cell ({},{})", c.x, c.y),
+                                       [this, c] { gather_bumps(c); });
+    bump_update.apply(grid, model);
+    return back;
+  }
+
+  // Depth model: the rays fan over the front 120 deg only, and a ray grazing a side frees its
+  // band; so in a new cell the robot faces each side in turn (the one it faces first) and
+  // scans, which puts the straight-ahead ray on every band middle.
+  Motion look_around(Cell c, Heading &facing) {
+    for (const Heading h : {mapping::turned_right(facing), mapping::opposite(facing),
+                            mapping::turned_left(facing)}) {
+      if (const Motion s = turn_to(h); s != Motion::ok) return s;
+      facing = h;
+      visits.record(c, facing);
+      scan(c);
+    }
+    return Motion::ok;
+  }
+
+  // Bump model: probes every side of c that is still unknown (the maze's outer walls too).
+  Motion probe_unknown_sides(Cell c, Heading &facing, const explore::WallQuery &walls) {
+    for (const Heading h : mapping::kHeadings) {
+      if (walls(c, h) != mapping::SideState::unknown) continue;
+      if (const Motion s = probe(c, h); s != Motion::ok) return s;
+      facing = h;
+      visits.record(c, facing);
+    }
+    return Motion::ok;
+  }
+
+  void scan_lidar(Cell c) {
     const float *ranges = lidar->getRangeImage();
     if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
     mapping::LidarScan s;
@@ -242,11 +397,21 @@ struct CellController::Impl {
     }
     path.push_back(cell);
     visits.record(cell, heading);
-    scan(cell);
-    notify(observer, cell, heading, true);
     const explore::WallQuery walls = [this](Cell c, Heading h) {
-      return mapping::side_state(grid, initial, c, h);
+      return mapping::side_state(grid, initial, c, h, options.occupied_threshold);
     };
+    const bool bump = options.mapping.kind == mapping::ModelKind::bump;
+    const bool depth = options.mapping.kind == mapping::ModelKind::depth;
+    // Scan on arrival (the bump model then probes the unknown sides), then report.
+    const auto arrive = [&](bool new_cell) {
+      scan(cell);
+      Motion s = Motion::ok;
+      if (bump) s = probe_unknown_sides(cell, heading, walls);
+      if (depth && new_cell) s = look_around(cell, heading);
+      notify(observer, cell, heading, new_cell);
+      return s;
+    };
+    if (const Motion s = arrive(true); s != Motion::ok) return to_reason(s);
     for (;;) {
       const auto next = explorer.next(cell, heading, walls);
       if (!next) return flush_step() ? EndReason::done : EndReason::stopped;
@@ -262,9 +427,37 @@ struct CellController::Impl {
       const bool new_cell = !visits.visited(cell);
       visits.record(cell, heading);
       path.push_back(cell);
-      scan(cell);
-      notify(observer, cell, heading, new_cell);
+      if (const Motion a = arrive(new_cell); a != Motion::ok) return to_reason(a);
     }
+  }
+
+  // Drives the wavefront path from the robot's cell back to the start, cell by cell, without
+  // mapping; keeps `cell` and `heading` current.
+  EndReason speed_run() {
+    plan::WavefrontOptions known_free;
+    known_free.unknown_blocked = true;
+    const auto route = plan::wavefront(grid, model, cell, options.start, known_free);
+    if (!route) return EndReason::done;
+    const double started = robot.getTime();
+    int cells = 0;
+    const int k = grid.k();
+    for (const mapping::SubCell s : route->subcells) {
+      const Cell next = mapping::cell_of(s, k);
+      if (next == cell) continue;
+      for (const Heading h : mapping::kHeadings) {
+        if (mapping::neighbour(cell, h) == next) heading = h;
+      }
+      Motion m = turn_to(heading);
+      if (m == Motion::ok) m = drive_to(next, heading);
+      if (m != Motion::ok) return to_reason(m);
+      cell = next;
+      ++cells;
+      path.push_back(cell);
+      visits.record(cell, heading);
+    }
+    speed_run_cells = cells;
+    speed_run_time_s = robot.getTime() - started;
+    return EndReason::done;
   }
 
   static EndReason to_reason(Motion s) {
@@ -287,6 +480,10 @@ struct CellController::Impl {
   explore::Visits visits;
   explore::Explorer explorer;
   mapping::ScanUpdate update;
+  mapping::LeveledUpdate bump_update = mapping::make_bump_update();
+  mapping::LeveledUpdate range_update = range_update_for(options);
+  std::vector<mapping::BumpReading> bump_readings;
+  std::vector<mapping::RangeReading> range_readings;
 
   webots::Motor *left = nullptr;
   webots::Motor *right = nullptr;
@@ -295,6 +492,8 @@ struct CellController::Impl {
   webots::InertialUnit *imu = nullptr;
   webots::Lidar *lidar = nullptr;
   webots::GPS *gps = nullptr;  // optional
+  std::vector<webots::TouchSensor *> bumpers;      // bump model, as options.sensing.bumpers
+  std::vector<webots::DistanceSensor *> range_sensors;    // depth, pie, cone, as options.sensing.ranges
   int time_step_ms = 0;
   double dt_s = 0.0;
   double max_wheel_rad_s = 0.0;
@@ -309,6 +508,8 @@ struct CellController::Impl {
 
   std::int64_t steps = 0;
   int moves = 0;
+  std::optional<double> speed_run_time_s;
+  int speed_run_cells = 0;
   std::vector<Cell> path;
   std::string message;
   bool ran = false;
@@ -330,7 +531,9 @@ RunResult CellController::run(const RunHooks &hooks) {
   assert(!s.ran && "CellController::run is called once");
   s.ran = true;
   s.hooks = hooks;
-  const EndReason reason = s.explore(hooks.on_move);
+  EndReason reason = s.explore(hooks.on_move);
+  const double explore_time_s = s.robot.getTime();
+  if (reason == EndReason::done && s.options.speed_run) reason = s.speed_run();
   if (reason != EndReason::stopped) s.flush_step();
   return RunResult{reason,
                    std::move(s.message),
@@ -340,7 +543,10 @@ RunResult CellController::run(const RunHooks &hooks) {
                    s.robot.getTime(),
                    std::move(s.grid),
                    std::move(s.visits),
-                   std::move(s.path)};
+                   std::move(s.path),
+                   explore_time_s,
+                   s.speed_run_time_s,
+                   s.speed_run_cells};
 }
 
 }  // namespace robot

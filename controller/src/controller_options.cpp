@@ -65,6 +65,7 @@ std::string_view to_string(Action action) {
     case Action::turn: return "turn";
     case Action::drive: return "drive";
     case Action::rest: return "rest";
+    case Action::probe: return "probe";
   }
   return "?";
 }
@@ -77,6 +78,19 @@ void validate(const ControllerOptions &options) {
                                              options.geometry.height_cells, options.start,
                                              options.goals});
   validate(options.motion);
+  require_positive("creep speed", options.motion.creep_speed_m_s);
+  mapping::validate(options.sensing.range_model);
+  if (options.occupied_threshold && !std::isfinite(*options.occupied_threshold)) {
+    throw common::InputError("--threshold must be a finite log-odds value");
+  }
+  const mapping::ModelKind kind = options.mapping.kind;
+  if (kind == mapping::ModelKind::bump && options.sensing.bumpers.empty()) {
+    throw common::InputError("the bump model needs a robot with bumpers");
+  }
+  if (!mapping::uses_lidar(kind) && kind != mapping::ModelKind::bump && options.sensing.ranges.empty()) {
+    throw common::InputError(fmt::format("the {} model needs a robot with range sensors",
+                                         mapping::to_string(kind)));
+  }
 }
 
 }  // namespace robot

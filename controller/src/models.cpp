@@ -158,12 +158,25 @@ void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
 
 }  // namespace
 
-std::string_view to_string(ModelKind kind) { return kind == ModelKind::cell ? "cell" : "ray"; }
+std::string_view to_string(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::cell: return "cell";
+    case ModelKind::ray: return "ray";
+    case ModelKind::bump: return "bump";
+    case ModelKind::depth: return "depth";
+    case ModelKind::pie: return "pie";
+    case ModelKind::cone: return "cone";
+  }
+  return "?";
+}
 
 ModelKind parse_model(std::string_view name) {
-  if (name == "cell") return ModelKind::cell;
-  if (name == "ray") return ModelKind::ray;
-  throw common::InputError(fmt::format("unknown --model '{}' (choose cell or ray)", name));
+  for (const ModelKind kind : {ModelKind::cell, ModelKind::ray, ModelKind::bump, ModelKind::depth,
+                               ModelKind::pie, ModelKind::cone}) {
+    if (name == to_string(kind)) return kind;
+  }
+  throw common::InputError(fmt::format(
+      "unknown --model '{}' (choose cell, ray, bump, depth, pie or cone)", name));
 }
 
 void validate(const MappingOptions &options) {
@@ -179,6 +192,7 @@ void validate(const MappingOptions &options) {
 
 void mark_scan(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
                Cell robot_cell, ScanUpdate &update) {
+  assert(uses_lidar(options.kind));
   if (options.kind == ModelKind::cell) {
     mark_cell_model(options, grid, scan, robot_cell, update);
   } else {

@@ -25,13 +25,18 @@ LocalSubCell band_middle(Heading h, int k) {
 }
 
 SideState side_state(const OccupancyGrid &grid, float initial_log_odds, Cell c, Heading h) {
+  return side_state(grid, initial_log_odds, c, h, std::nullopt);
+}
+
+SideState side_state(const OccupancyGrid &grid, float initial_log_odds, Cell c, Heading h,
+                     std::optional<float> threshold) {
   assert(grid.contains(c));
   bool seen = false;
   bool wall = false;
   const auto judge = [&](float value) {
     if (!observed(value, initial_log_odds)) return;
     seen = true;
-    wall = wall || value > 0.0f;
+    wall = wall || is_occupied(value, threshold);
   };
   judge(grid.at(c, band_middle(h, grid.k())));
   const Cell n = neighbour(c, h);

@@ -37,10 +37,14 @@
 
 namespace mapping {
 
-enum class ModelKind { cell, ray };
+// bump, depth, pie and cone read bumpers or range sensors (mapping/range_models.hpp).
+enum class ModelKind { cell, ray, bump, depth, pie, cone };
+
+// True for the models that read a lidar scan (cell, ray).
+constexpr bool uses_lidar(ModelKind kind) { return kind == ModelKind::cell || kind == ModelKind::ray; }
 
 std::string_view to_string(ModelKind kind);
-// "cell" or "ray"; throws common::InputError naming --model and the choices otherwise.
+// "cell", "ray", "bump", "depth", "pie" or "cone"; throws common::InputError naming --model and the choices otherwise.
 ModelKind parse_model(std::string_view name);
 
 struct MappingOptions {

@@ -15,6 +15,7 @@
 // corners are not used: they are shared with the perpendicular bands.
 
 #include <cstdint>
+#include <optional>
 
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
@@ -34,5 +35,16 @@ inline bool observed(float value, float initial_log_odds) { return value != init
 // The state of side h of cell c (c inside the grid). initial_log_odds is the value the grid
 // was created with (SensorModel::prior_log_odds() as a float).
 SideState side_state(const OccupancyGrid &grid, float initial_log_odds, Cell c, Heading h);
+
+// The binary map's rule: occupied when log-odds > 0, or >= threshold when one is given
+// (--threshold L; the course's -0.5 in base 10 calls a sub-cell occupied unless it was seen
+// free more than once: better wrongly occupied than wrongly free).
+inline bool is_occupied(float value, std::optional<float> threshold) {
+  return threshold ? value >= *threshold : value > 0.0f;
+}
+
+// side_state with the binary map's threshold instead of p > 0.5.
+SideState side_state(const OccupancyGrid &grid, float initial_log_odds, Cell c, Heading h,
+                     std::optional<float> threshold);
 
 }  // namespace mapping

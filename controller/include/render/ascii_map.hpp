@@ -1,15 +1,18 @@
 #pragma once
 // The map as text (DESIGN §7): H*K lines of W*K characters, north at the top, one character
 // a sub-cell, each line ending in '\n':
+//   *         a sub-cell of a planned path, when one is given (over everything else)
 //   an arrow  at the centre of a visited cell: the last heading the robot had there
 //             (↑ → ↓ ←, or ^ > v < with ascii)
-//   W         an observed sub-cell whose log-odds is above 0 (more likely occupied)
+//   W         an observed sub-cell whose log-odds is above 0 (more likely occupied), or
+//             at least the --threshold when one is given
 //   unknown   a never-observed sub-cell (value still the initial l(prior)), when asked
 //   ' '       anything else (free, or never observed without an unknown character)
 // A never-observed sub-cell is never drawn as W, even when the prior is above 0.5.
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "explore/visits.hpp"
 #include "mapping/grid_types.hpp"
@@ -31,6 +34,8 @@ struct MapStyle {
   // background, arrows green, the robot bold red. Off: plain text, as in the golden files.
   bool color = false;
   std::optional<RobotMark> robot;
+  std::optional<float> threshold;  // --threshold: W when log-odds >= this (default: > 0)
+  const std::vector<bool> *path = nullptr;  // per flat grid index: '*' (a planned path)
 };
 
 // The part of the map drawn: sub-cell rows and columns counted from the north-west corner.

@@ -7,7 +7,11 @@
 // Each move: turn in place to the heading (IMU yaw, proportional control slowing near the
 // target), drive one cell (encoders; GPS when the robot has one corrects the distance and
 // the lateral drift), stop at the cell centre and take one step to come to rest; then read
-// the lidar, update the grid, and ask the strategy. The controller is told the maze size,
+// the sensors (the lidar, or the range sensors / bumpers of SensingOptions), update the grid,
+// and ask the strategy. With the bump model the robot first probes each side of the cell
+// whose state is unknown: it turns to it and creeps forward until a bumper presses or its
+// centre is half a sub-cell into the neighbouring cell, then backs to the centre. Each pass
+// (forward, back) is one scan: bump readings of every step gathered, applied once. The controller is told the maze size,
 // cell size, origin, K, start cell and heading, and goal cells - never the walls.
 
 #include <cstdint>
@@ -23,6 +27,7 @@
 #include "mapping/grid_types.hpp"
 #include "mapping/models.hpp"
 #include "mapping/occupancy_grid.hpp"
+#include "mapping/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 
 namespace webots {
@@ -61,6 +66,31 @@ struct MotionOptions {
   int stall_steps = 60;
   double stall_epsilon = 1e-4;
   std::int64_t max_steps = 2'000'000;  // --max-steps: control steps, the whole run
+  double creep_speed_m_s = 0.1;       // bump probing: forward speed while feeling for a wall
+};
+
+// Where a range sensor sits and what it can see, as a robot's description (URDF-like) gives
+// it: the composition root fills this in, the controller never asks the world.
+struct RangeSensorMount {
+  std::string name;              // a webots::DistanceSensor whose value is metres
+  double angle_rad = 0.0;        // direction relative to the heading, counter-clockwise positive
+  double offset_m = 0.0;         // from the robot's centre along that direction
+  double max_range_m = 0.0;      // a value at or beyond this saw nothing
+  double aperture_rad = 0.0;     // full beam width (cone model)
+  double range_error = 0.0;      // relative distance error (cone model)
+};
+
+struct BumperMount {
+  std::string name;              // a webots::TouchSensor, 1 when pressed
+  double angle_rad = 0.0;        // centre of its arc relative to the heading
+  double offset_m = 0.0;         // contact point: this far from the centre along angle_rad
+};
+
+// The sensing step of the non-lidar models (bump, depth, pie, cone).
+struct SensingOptions {
+  std::vector<RangeSensorMount> ranges;
+  std::vector<BumperMount> bumpers;
+  mapping::RangeModelOptions range_model;
 };
 
 struct ControllerOptions {
@@ -73,6 +103,13 @@ struct ControllerOptions {
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   MotionOptions motion;
   DeviceNames devices;
+  SensingOptions sensing;            // used by the bump, depth, pie and cone models
+  // --threshold: a sub-cell is occupied when its log-odds >= this (walls the explorer reads);
+  // none: occupied when > 0.
+  std::optional<float> occupied_threshold;
+  // After exploring (ended "done"), plan a wavefront path on the learned grid from where the
+  // robot is back to the start and drive it (a micromouse speed run; floodfill's use).
+  bool speed_run = false;
 };
 
 // Throws common::InputError when an option is unusable (each concern's own validate, then
@@ -98,8 +135,8 @@ struct MoveReport {
 using Observer = std::function<void(const MoveReport &)>;
 
 // What the controller was doing in a control step.
-enum class Action { start, turn, drive, rest };
-std::string_view to_string(Action action);  // "start", "turn", "drive", "rest"
+enum class Action { start, turn, drive, rest, probe };
+std::string_view to_string(Action action);  // "start", "turn", "drive", "rest", "probe" (bump)
 
 // What the step observer sees once per control step, after robot.step() returned and after
 // the scan that step ended with (so subcells_updated counts that scan's updates).
@@ -133,6 +170,11 @@ struct RunResult {
   mapping::OccupancyGrid grid;
   explore::Visits visits;
   std::vector<mapping::Cell> path;  // cells in order of arrival, start first
+  double explore_time_s = 0.0;       // simulated time when exploring ended
+  // Speed run: simulated seconds and cells driven; nothing when none was made (not asked,
+  // exploring did not end "done", or no path back on the learned grid).
+  std::optional<double> speed_run_time_s;
+  int speed_run_cells = 0;
 };
 
 class CellController {

@@ -1,0 +1,108 @@
+#pragma once
+// Inverse sensor models for the robots without a lidar (issue 6): bumpers, depth rays, an IR
+// ring (pie-slice model) and a sonar/IR ring (cone model). Each turns one set of readings
+// into marks on the grid; the controller reads the devices, these functions never do.
+//
+//   bump   p = 0.99999 at the contact point of a pressed bumper; p = 0.3 at the robot's own
+//          sub-cell and at the contact points of the bumpers not pressed. Base 10:
+//          l(0.99999) = 5.000, l(0.3) = -0.368 (the course numbers).
+//   depth  each ray with a reading strictly between 0 and its max range: the hit sub-cell
+//          p = 0.99999, the sub-cells the ray crosses before it p = 0.4, the robot's own
+//          sub-cell p = 0.3 (base 10: 5.000, -0.176, -0.368). Readings of 0 or max: ignored.
+//   pie    a reading d < max is "contacting", else "clear". The clear slice reaches d (see
+//          below for noise near max), half-angle beta around the sensor's direction; a contacting reading adds a
+//          contact slice reaching d + alpha. Each sub-cell's four corners and centre are
+//          tested: a point in the contact slice but not in the clear one makes the sub-cell
+//          occupied (p = 0.7), else a point in the clear slice makes it free (p = 0.4).
+//   cone   reading d, beam width sigma (full aperture), distance error eps: the arc between
+//          d(1 - eps) and d(1 + eps) across the beam is occupied (the model's p_occ), the
+//          cone inside d(1 - eps) free (p_free); swept at an angular step of half a
+//          sub-cell's angular size at that range (and radially at half a sub-cell), so every
+//          sub-cell it covers is visited. A reading at max range frees the cone up to
+//          max (1 - eps) and marks no arc.
+// pie: a reading within the distance error of max (>= max (1 - eps)) is clear, and a clear
+// slice reaches the reading (1 - eps): the sensor's noise near max range would otherwise
+// report phantom contacts, or free a wall just short of max.
+// Per scan each sub-cell is updated once; the strongest evidence wins (occupied over the
+// robot's own sub-cell over free along a ray). Increments are SensorModel::increment_for(p),
+// i.e. l(p) - l(prior) in the model's base.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "mapping/grid_types.hpp"
+#include "mapping/occupancy_grid.hpp"
+#include "mapping/sensor_model.hpp"
+
+namespace mapping {
+
+inline constexpr double kBumpOccupiedP = 0.99999;
+inline constexpr double kBumpFreeP = 0.3;
+inline constexpr double kDepthHitP = 0.99999;
+inline constexpr double kDepthRayP = 0.4;
+inline constexpr double kDepthRobotP = 0.3;
+inline constexpr double kPieOccupiedP = 0.7;
+inline constexpr double kPieFreeP = 0.4;
+
+// One bumper as read: where it touches (robot centre + mounting offset along its angle).
+struct BumpReading {
+  Point contact;
+  bool pressed = false;
+};
+
+// One range reading in the world frame.
+struct RangeReading {
+  Point origin;             // the sensor, m
+  double angle_rad = 0.0;   // its direction in the world, rad
+  double range_m = 0.0;     // the reading, m
+  double max_range_m = 0.0; // readings at or beyond this are "nothing seen"
+  double aperture_rad = 0.0;  // full beam width (cone model)
+  double range_error = 0.0;   // relative distance error eps (cone model)
+};
+
+struct RangeModelOptions {
+  double pie_half_angle_rad = 0.17453292519943295;  // beta, --pie-beta (deg on the command line)
+  double pie_contact_m = 0.1;                        // alpha, --pie-alpha
+};
+
+// Throws common::InputError when beta is not in (0, 90 deg) or alpha not positive.
+void validate(const RangeModelOptions &options);
+
+// Marks with their own probabilities, gathered per scan: each sub-cell is updated once with
+// the mark of the lowest level (level 0 strongest). Marks outside the grid are ignored.
+class LeveledUpdate {
+ public:
+  explicit LeveledUpdate(std::vector<double> level_p) : level_p_(std::move(level_p)) {}
+  void mark(const OccupancyGrid &grid, SubCell s, int level);
+  void mark(const OccupancyGrid &grid, Point p, int level);
+  // Applies l += increment_for(p of the level) once per marked sub-cell; returns the count.
+  std::size_t apply(OccupancyGrid &grid, const SensorModel &model);
+  bool empty() const { return marks_.empty(); }
+
+ private:
+  std::vector<double> level_p_;
+  std::vector<std::pair<std::size_t, int>> marks_;
+};
+
+// Levels: 0 occupied 0.99999, 1 free 0.3.
+LeveledUpdate make_bump_update();
+void mark_bumps(const OccupancyGrid &grid, Point robot, std::span<const BumpReading> bumpers,
+                LeveledUpdate &update);
+
+// Levels: 0 hit 0.99999, 1 robot 0.3, 2 along the ray 0.4.
+LeveledUpdate make_depth_update();
+void mark_depth(const OccupancyGrid &grid, Point robot, std::span<const RangeReading> rays,
+                LeveledUpdate &update);
+
+// Levels: 0 occupied 0.7, 1 free 0.4.
+LeveledUpdate make_pie_update();
+void mark_pie(const OccupancyGrid &grid, const RangeModelOptions &options,
+              std::span<const RangeReading> readings, LeveledUpdate &update);
+
+// Levels: 0 occupied (p_occ), 1 free (p_free) of the sensor model.
+LeveledUpdate make_cone_update(const SensorModelOptions &sensor);
+void mark_cone(const OccupancyGrid &grid, std::span<const RangeReading> readings,
+               LeveledUpdate &update);
+
+}  // namespace mapping

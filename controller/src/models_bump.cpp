@@ -1,0 +1,57 @@
+// The bump model and the leveled update the range models share (mapping/range_models.hpp).
+
+#include <algorithm>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+#include "mapping/range_models.hpp"
+
+namespace mapping {
+
+void validate(const RangeModelOptions &options) {
+  const double right_angle = std::numbers::pi / 2.0;
+  if (!(options.pie_half_angle_rad > 0.0 && options.pie_half_angle_rad < right_angle)) {
+    throw common::InputError(fmt::format("--pie-beta must be more than 0 and less than 90 degrees (got {})",
+                                         options.pie_half_angle_rad * 180.0 / std::numbers::pi));
+  }
+  if (!(options.pie_contact_m > 0.0 && options.pie_contact_m < 1e3)) {
+    throw common::InputError(
+        fmt::format("--pie-alpha must be a positive length in m (got {})", options.pie_contact_m));
+  }
+}
+
+void LeveledUpdate::mark(const OccupancyGrid &grid, SubCell s, int level) {
+  if (!grid.contains(s)) return;
+  marks_.emplace_back(grid.index(s), level);
+}
+
+void LeveledUpdate::mark(const OccupancyGrid &grid, Point p, int level) {
+  if (const auto s = grid.subcell_at(p)) mark(grid, *s, level);
+}
+
+std::size_t LeveledUpdate::apply(OccupancyGrid &grid, const SensorModel &model) {
+  std::sort(marks_.begin(), marks_.end());
+  std::size_t updated = 0;
+  for (std::size_t n = 0; n < marks_.size(); ++n) {
+    if (n > 0 && marks_[n].first == marks_[n - 1].first) continue;  // a stronger mark came first
+    const auto [index, level] = marks_[n];
+    const double increment = model.increment_for(level_p_[static_cast<std::size_t>(level)]);
+    grid.at_index(index) =
+        static_cast<float>(mapping::apply(grid.at_index(index), increment, model.options().clamp));
+    ++updated;
+  }
+  marks_.clear();
+  return updated;
+}
+
+LeveledUpdate make_bump_update() { return LeveledUpdate({kBumpOccupiedP, kBumpFreeP}); }
+
+void mark_bumps(const OccupancyGrid &grid, Point robot, std::span<const BumpReading> bumpers,
+                LeveledUpdate &update) {
+  update.mark(grid, robot, 1);
+  for (const BumpReading &b : bumpers) update.mark(grid, b.contact, b.pressed ? 0 : 1);
+}
+
+}  // namespace mapping

@@ -1,0 +1,186 @@
+// One-scan matrices of the bump, depth, pie and cone models (issue 6), as literal K x K
+// tables of the centre cell of a 3 x 3 grid of 1 m cells, and the course's base-10 numbers.
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "common/error.hpp"
+#include "mapping/models.hpp"
+#include "mapping/range_models.hpp"
+#include "mapping/sensor_model.hpp"
+#include "render/ascii_map.hpp"
+
+using mapping::BumpReading;
+using mapping::Cell;
+using mapping::OccupancyGrid;
+using mapping::Point;
+using mapping::RangeReading;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kNorth = kPi / 2.0;
+
+mapping::GridGeometry geometry(int k) {
+  mapping::GridGeometry g;
+  g.width_cells = 3;
+  g.height_cells = 3;
+  g.subcells = k;
+  g.cell_size_m = 1.0;
+  return g;
+}
+
+mapping::SensorModel base10() {
+  mapping::SensorModelOptions o;
+  o.base = mapping::LogBase::ten;
+  return mapping::SensorModel(o);
+}
+
+// The hambot's rim sensor looking north from the centre of cell (1, 1); a wall face 0.006 m
+// south of y = 2 is 0.404 m ahead.
+const Point kRim{1.5, 1.59};
+constexpr double kToNorthWall = 0.404;
+
+RangeReading reading(double angle_rad, double range_m, double max_m, double aperture = 0.0,
+                     double error = 0.0) {
+  return RangeReading{kRim, angle_rad, range_m, max_m, aperture, error};
+}
+
+}  // namespace
+
+TEST_CASE("range models: the course's base-10 numbers") {
+  const mapping::SensorModel model = base10();
+  CHECK(model.increment_for(mapping::kBumpOccupiedP) == doctest::Approx(5.000).epsilon(1e-4));
+  CHECK(model.increment_for(mapping::kBumpFreeP) == doctest::Approx(-0.368).epsilon(1e-3));
+  CHECK(model.increment_for(mapping::kDepthRayP) == doctest::Approx(-0.176).epsilon(1e-3));
+  CHECK(model.increment_for(mapping::kDepthHitP) == doctest::Approx(5.000).epsilon(1e-4));
+}
+
+TEST_CASE("bump model: pressed front bumper against the north wall, K = 3, base 10") {
+  const mapping::SensorModel model = base10();
+  OccupancyGrid grid(geometry(3), 0.0f);
+  const Point robot{1.5, 1.904};  // body radius 0.09 from the wall face
+  const double d = 0.09 / std::numbers::sqrt2;
+  const std::vector<BumpReading> bumpers{{{1.5, 1.994}, true},
+                                         {{1.5 - d, 1.904 + d}, false},
+                                         {{1.5 + d, 1.904 + d}, false}};
+  mapping::LeveledUpdate update = mapping::make_bump_update();
+  mapping::mark_bumps(grid, robot, bumpers, update);
+  CHECK(update.apply(grid, model) == 1);  // everything in the band middle: occupied wins
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +5.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  // Back at the centre, nothing pressed: the centre is freed once.
+  mapping::mark_bumps(grid, Point{1.5, 1.5},
+                      std::vector<BumpReading>{{{1.5, 1.59}, false}, {{1.5 - d, 1.5 + d}, false}},
+                      update);
+  CHECK(update.apply(grid, model) == 1);
+  CHECK(grid.at(Cell{1, 1}, {1, 1}) == doctest::Approx(-0.368).epsilon(1e-3));
+  CHECK(grid.at(Cell{1, 1}, {0, 1}) == doctest::Approx(5.000).epsilon(1e-4));
+}
+
+TEST_CASE("depth model: a hit north, a ray west, ignored readings, K = 3, base 10") {
+  const mapping::SensorModel model = base10();
+  OccupancyGrid grid(geometry(3), 0.0f);
+  const std::vector<RangeReading> rays{
+      reading(kNorth, kToNorthWall, 4.0),
+      RangeReading{Point{1.41, 1.5}, kPi, 0.9, 4.0, 0.0, 0.0},  // hits x = 0.51, cell (0, 1)
+      reading(0.0, 4.0, 4.0),   // max: ignored
+      reading(-kNorth, 0.0, 4.0)};  // 0: ignored
+  mapping::LeveledUpdate update = mapping::make_depth_update();
+  mapping::mark_depth(grid, Point{1.5, 1.5}, rays, update);
+  update.apply(grid, model);
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +5.00 +0.00\n"
+        "-0.18 -0.37 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(render::format_cell_matrix(grid, Cell{0, 1}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +5.00 -0.18\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(grid.at(Cell{1, 1}, {1, 0}) == doctest::Approx(-0.176).epsilon(1e-3));
+}
+
+TEST_CASE("pie model: contacting north reading, K = 3, beta 25 deg, base e") {
+  const mapping::SensorModel model;  // prior 0.5: increments are logit(0.7), logit(0.4)
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::RangeModelOptions options;
+  options.pie_half_angle_rad = 25.0 * kPi / 180.0;
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  const std::vector<RangeReading> one{reading(kNorth, kToNorthWall, 1.5)};
+  mapping::mark_pie(grid, options, one, update);
+  update.apply(grid, model);
+  // The band's three sub-cells share the corners (x 1.333, 1.667; y 2) in the contact part.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.85 +0.85 +0.85\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(grid.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
+}
+
+TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  const std::vector<RangeReading> one{reading(kNorth, 1.5, 1.5)};
+  mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+  update.apply(grid, model);
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 -0.41 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  // The slice widens: at y = 2.667 its half-width (0.19 m) takes in the corners x = 1.333, 1.667.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "-0.41 -0.41 -0.41\n"
+        "-0.41 -0.41 -0.41\n"
+        "+0.00 -0.41 +0.00\n");
+}
+
+TEST_CASE("cone model: IR reading north, K = 3, defaults") {
+  const mapping::SensorModel model;  // p_occ 0.6 -> +0.41, p_free 0.3 -> -0.85
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  const std::vector<RangeReading> one{reading(kNorth, kToNorthWall, 1.5, 0.03, 0.03)};
+  mapping::mark_cone(grid, one, update);
+  update.apply(grid, model);
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +0.41 +0.00\n"
+        "+0.00 -0.85 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  // The arc reaches d (1 + eps) = 0.416 m: past the boundary into the neighbour's band.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.41 +0.00\n");
+}
+
+TEST_CASE("cone model: a sonar's arc at 0.4 m stays within one 0.2 m column, K = 5") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(5), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  const std::vector<RangeReading> one{reading(kNorth, kToNorthWall, 5.0, 0.4, 0.066)};
+  mapping::mark_cone(grid, one, update);
+  update.apply(grid, model);
+  // Half the aperture (0.2 rad) at 0.43 m is 0.086 m across: x 1.414 ... 1.586, column 2.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +0.00 +0.41 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00 +0.00 +0.00\n");
+}
+
+TEST_CASE("range model options are validated") {
+  mapping::RangeModelOptions o;
+  o.pie_half_angle_rad = 0.0;
+  CHECK_THROWS_AS(mapping::validate(o), common::InputError);
+  o = {};
+  o.pie_contact_m = -0.1;
+  CHECK_THROWS_AS(mapping::validate(o), common::InputError);
+  CHECK(mapping::parse_model("bump") == mapping::ModelKind::bump);
+  CHECK(mapping::to_string(mapping::ModelKind::cone) == "cone");
+}
