@@ -2,6 +2,8 @@
 
 #include <cassert>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <string>
 
 #include <fmt/format.h>
@@ -69,9 +71,73 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
   }
 }
 
+// trace_ray's traversal, the same arithmetic step for step (so the same sub-cells and exit
+// distances), but carrying the sub-cell's flat index in the grid's layout instead of
+// (x, y): a step is an add, never a division. visit(flat, exit_m) returns false to stop.
+template <typename Visit>
+void trace_flat(const OccupancyGrid &grid, Point from, double dir_x, double dir_y, Visit &&visit) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const GridGeometry &g = grid.geometry();
+  const double size = g.subcell_size_m();
+  const double px = (from.x_m - g.origin.x_m) / size;
+  const double py = (from.y_m - g.origin.y_m) / size;
+  const int width = g.width_subcells();
+  const int height = g.height_subcells();
+  if (!(px >= 0.0 && py >= 0.0 && px < width && py < height)) return;
+  int x = static_cast<int>(px);
+  int y = static_cast<int>(py);
+  const int step_x = dir_x > 0.0 ? 1 : (dir_x < 0.0 ? -1 : 0);
+  const int step_y = dir_y > 0.0 ? 1 : (dir_y < 0.0 ? -1 : 0);
+  const double delta_x = step_x != 0 ? size / std::abs(dir_x) : inf;
+  const double delta_y = step_y != 0 ? size / std::abs(dir_y) : inf;
+  double next_x = step_x > 0 ? (x + 1 - px) * delta_x : (step_x < 0 ? (px - x) * delta_x : inf);
+  double next_y = step_y > 0 ? (y + 1 - py) * delta_y : (step_y < 0 ? (py - y) * delta_y : inf);
+  // Flat index and position inside the cell: j from the west, r from the south (i = K-1-r).
+  const std::ptrdiff_t k = g.subcells;
+  const std::ptrdiff_t row_of_cells = static_cast<std::ptrdiff_t>(g.width_cells) * k * k;
+  int j = x % g.subcells;
+  int r = y % g.subcells;
+  auto flat = static_cast<std::ptrdiff_t>(grid.index(SubCell{x, y}));
+  // Steps of the flat index: inside a cell, and across into the next cell.
+  const std::ptrdiff_t x_inside = step_x;
+  const std::ptrdiff_t x_across = step_x * (k * k - k + 1);
+  const std::ptrdiff_t y_inside = -step_y * k;
+  const std::ptrdiff_t y_across = step_y * (row_of_cells + (k - 1) * k);
+  const int j_edge = step_x > 0 ? g.subcells - 1 : 0;
+  const int j_wrap = g.subcells - 1 - j_edge;
+  const int r_edge = step_y > 0 ? g.subcells - 1 : 0;
+  const int r_wrap = g.subcells - 1 - r_edge;
+  for (;;) {
+    const double exit_m = std::min(next_x, next_y);
+    if (!visit(static_cast<std::size_t>(flat), exit_m) || exit_m == inf) return;
+    if (next_x <= next_y) {
+      x += step_x;
+      next_x += delta_x;
+      if (j == j_edge) {
+        j = j_wrap;
+        flat += x_across;
+      } else {
+        j += step_x;
+        flat += x_inside;
+      }
+    }
+    if (next_y <= exit_m) {
+      y += step_y;
+      next_y += delta_y;
+      if (r == r_edge) {
+        r = r_wrap;
+        flat += y_across;
+      } else {
+        r += step_y;
+        flat += y_inside;
+      }
+    }
+    if (x < 0 || y < 0 || x >= width || y >= height) return;
+  }
+}
+
 void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
                     const LidarScan &scan, ScanUpdate &update) {
-  const GridGeometry &g = grid.geometry();
   for (int i = 0; i < scan.beam_count(); ++i) {
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
@@ -81,20 +147,20 @@ void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
     const double dir_y = std::sin(angle);
     if (kind == ReadingKind::no_return) {
       const double length = scan.max_range_m;
-      trace_ray(g, scan.origin, dir_x, dir_y, [&](SubCell s, double exit_m) {
-        update.mark_free(grid.index(s));
+      trace_flat(grid, scan.origin, dir_x, dir_y, [&](std::size_t flat, double exit_m) {
+        update.mark_free(flat);
         return exit_m < length;
       });
       continue;
     }
     const double range = scan.ranges[static_cast<std::size_t>(i)];
     int behind = -1;  // -1 before the hit sub-cell, then the count of occupied sub-cells after it
-    trace_ray(g, scan.origin, dir_x, dir_y, [&](SubCell s, double exit_m) {
+    trace_flat(grid, scan.origin, dir_x, dir_y, [&](std::size_t flat, double exit_m) {
       if (behind < 0 && exit_m < range) {
-        update.mark_free(grid.index(s));
+        update.mark_free(flat);
         return true;
       }
-      update.mark_occupied(grid.index(s));
+      update.mark_occupied(flat);
       ++behind;
       return behind < options.hit_depth;
     });
