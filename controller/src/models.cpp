@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -136,15 +137,44 @@ void trace_flat(const OccupancyGrid &grid, Point from, double dir_x, double dir_
   }
 }
 
+// cos and sin of every beam's angle relative to the heading, for one beam count and field
+// of view (computed again only when those change, so not per scan).
+class BeamTable {
+ public:
+  void prepare(const LidarScan &scan) {
+    if (scan.beam_count() == count_ && scan.fov_rad == fov_rad_) return;
+    count_ = scan.beam_count();
+    fov_rad_ = scan.fov_rad;
+    cos_.resize(static_cast<std::size_t>(count_));
+    sin_.resize(static_cast<std::size_t>(count_));
+    for (int i = 0; i < count_; ++i) {
+      cos_[static_cast<std::size_t>(i)] = std::cos(scan.beam_angle_rad(i));
+      sin_[static_cast<std::size_t>(i)] = std::sin(scan.beam_angle_rad(i));
+    }
+  }
+  double cos(int i) const { return cos_[static_cast<std::size_t>(i)]; }
+  double sin(int i) const { return sin_[static_cast<std::size_t>(i)]; }
+
+ private:
+  int count_ = -1;
+  double fov_rad_ = 0.0;
+  std::vector<double> cos_, sin_;
+};
+
 void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
                     const LidarScan &scan, ScanUpdate &update) {
+  thread_local BeamTable table;  // per thread: no sharing, no per-scan allocation
+  table.prepare(scan);
+  // World direction of beam i: the beam's direction rotated by the yaw (two sin/cos per
+  // scan instead of two per beam).
+  const double cy = std::cos(scan.yaw_rad);
+  const double sy = std::sin(scan.yaw_rad);
   for (int i = 0; i < scan.beam_count(); ++i) {
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
     if (kind == ReadingKind::no_return && options.ignore_no_return) continue;
-    const double angle = scan.beam_world_angle_rad(i);
-    const double dir_x = std::cos(angle);
-    const double dir_y = std::sin(angle);
+    const double dir_x = cy * table.cos(i) - sy * table.sin(i);
+    const double dir_y = sy * table.cos(i) + cy * table.sin(i);
     if (kind == ReadingKind::no_return) {
       const double length = scan.max_range_m;
       trace_flat(grid, scan.origin, dir_x, dir_y, [&](std::size_t flat, double exit_m) {
