@@ -31,17 +31,18 @@ sizes=${*:-64 256 512 1024}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-printf '%-11s %9s %9s %9s %9s %12s %13s\n' size wall_s cpu_s visited moves us_per_cell peak_rss_MiB
+printf '%-11s %9s %9s %9s %9s %12s %13s  %s\n' size wall_s cpu_s visited moves us_per_cell peak_rss_MiB end
 for n in $sizes; do
     maze="$work/maze$n.txt"
     "$prog" generate "${n}x${n}" --seed "$n" -o "$maze" >/dev/null
-    /usr/bin/time -v -o "$work/time$n" "$prog" run "$maze" --quiet >"$work/out$n"
+    /usr/bin/time -v -o "$work/time$n" "$prog" run "$maze" --quiet --max-steps 1000000000 >"$work/out$n"
     wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' "$work/time$n" |
            awk -F: '{ s = 0; for (i = 1; i <= NF; i++) s = s * 60 + $i; print s }')
     cpu=$(awk -F': ' '/User time|System time/ {s += $2} END {print s}' "$work/time$n")
     rss=$(awk -F': ' '/Maximum resident set size/ {print $2}' "$work/time$n")
     visited=$(awk '/^visited:/ {print $2}' "$work/out$n")
     moves=$(awk '/^moves:/ {print $2}' "$work/out$n")
-    awk -v n="$n" -v w="$wall" -v c="$cpu" -v v="$visited" -v m="$moves" -v r="$rss" 'BEGIN {
-        printf "%-11s %9.2f %9.2f %9d %9d %12.1f %13.1f\n", n "x" n, w, c, v, m, w * 1e6 / v, r / 1024 }'
+    end=$(awk -F': ' '/^end:/ {print $2}' "$work/out$n")
+    awk -v n="$n" -v w="$wall" -v c="$cpu" -v v="$visited" -v m="$moves" -v r="$rss" -v e="$end" 'BEGIN {
+        printf "%-11s %9.2f %9.2f %9d %9d %12.1f %13.1f  %s\n", n "x" n, w, c, v, m, w * 1e6 / v, r / 1024, e }'
 done
