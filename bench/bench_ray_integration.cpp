@@ -10,7 +10,7 @@
 // Times are the thread's CPU time (CLOCK_THREAD_CPUTIME_ID).
 //
 // Prints one `key: value` line per number (bench/run_all.sh reads them).
-//   ./build/bench/bin/bench_ray_integration [--repeat N]
+//   ./build/bench/bin/bench_ray_integration [--repeat N] [--grid-only]
 
 #include <algorithm>
 #include <ctime>
@@ -198,11 +198,14 @@ Result best_of(int repeat, Result (*run)(const Workload &), const Workload &w) {
 
 int main(int argc, char **argv) {
   int repeat = 5;
+  bool grid_only = false;  // the grid workload alone (for profiling it)
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
       repeat = std::max(1, std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], "--grid-only") == 0) {
+      grid_only = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--repeat N]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--repeat N] [--grid-only]\n", argv[0]);
       return 2;
     }
   }
@@ -214,6 +217,7 @@ int main(int argc, char **argv) {
   std::printf("grid_rays_per_s: %.3e\n", rays / mine.seconds);
   std::printf("grid_updates_per_s: %.3e\n", static_cast<double>(mine.updates) / mine.seconds);
   std::printf("grid_ns_per_ray: %.1f\n", mine.seconds / rays * 1e9);
+  if (grid_only) return 0;
 #ifdef MAZE_MAPPER_HAVE_OCTOMAP
   const Result octo = best_of(repeat, run_octomap, w);
   std::printf("octomap_rays_per_s: %.3e\n", rays / octo.seconds);
