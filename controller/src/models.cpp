@@ -2,7 +2,10 @@
 
 #include <cassert>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -69,6 +72,109 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
   }
 }
 
+// One sub-cell of trace_flat's traversal.
+struct FlatStep {
+  std::size_t flat;     // index in the grid's layout
+  double exit_m;        // path length at which the ray leaves the sub-cell
+  bool crossed_side;    // entered across a cell side (not for the first sub-cell)
+  bool interior;        // not in any of its cell's bands
+};
+
+// trace_ray's traversal, the same arithmetic step for step (so the same sub-cells and exit
+// distances), but carrying the sub-cell's flat index in the grid's layout instead of
+// (x, y): a step is an add, never a division. visit(const FlatStep &) returns false to stop.
+template <typename Visit>
+void trace_flat(const OccupancyGrid &grid, Point from, double dir_x, double dir_y, Visit &&visit) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const GridGeometry &g = grid.geometry();
+  const double size = g.subcell_size_m();
+  const double px = (from.x_m - g.origin.x_m) / size;
+  const double py = (from.y_m - g.origin.y_m) / size;
+  const int width = g.width_subcells();
+  const int height = g.height_subcells();
+  if (!(px >= 0.0 && py >= 0.0 && px < width && py < height)) return;
+  int x = static_cast<int>(px);
+  int y = static_cast<int>(py);
+  const int step_x = dir_x > 0.0 ? 1 : (dir_x < 0.0 ? -1 : 0);
+  const int step_y = dir_y > 0.0 ? 1 : (dir_y < 0.0 ? -1 : 0);
+  const double delta_x = step_x != 0 ? size / std::abs(dir_x) : inf;
+  const double delta_y = step_y != 0 ? size / std::abs(dir_y) : inf;
+  double next_x = step_x > 0 ? (x + 1 - px) * delta_x : (step_x < 0 ? (px - x) * delta_x : inf);
+  double next_y = step_y > 0 ? (y + 1 - py) * delta_y : (step_y < 0 ? (py - y) * delta_y : inf);
+  // Flat index and position inside the cell: j from the west, r from the south (i = K-1-r).
+  const std::ptrdiff_t k = g.subcells;
+  const std::ptrdiff_t row_of_cells = static_cast<std::ptrdiff_t>(g.width_cells) * k * k;
+  int j = x % g.subcells;
+  int r = y % g.subcells;
+  auto flat = static_cast<std::ptrdiff_t>(grid.index(SubCell{x, y}));
+  // Steps of the flat index: inside a cell, and across into the next cell.
+  const std::ptrdiff_t x_inside = step_x;
+  const std::ptrdiff_t x_across = step_x * (k * k - k + 1);
+  const std::ptrdiff_t y_inside = -step_y * k;
+  const std::ptrdiff_t y_across = step_y * (row_of_cells + (k - 1) * k);
+  const int j_edge = step_x > 0 ? g.subcells - 1 : 0;
+  const int j_wrap = g.subcells - 1 - j_edge;
+  const int r_edge = step_y > 0 ? g.subcells - 1 : 0;
+  const int r_wrap = g.subcells - 1 - r_edge;
+  const int last = g.subcells - 1;
+  bool crossed = false;
+  for (;;) {
+    const double exit_m = std::min(next_x, next_y);
+    const bool interior = j > 0 && j < last && r > 0 && r < last;
+    if (!visit(FlatStep{static_cast<std::size_t>(flat), exit_m, crossed, interior}) || exit_m == inf) return;
+    crossed = false;
+    if (next_x <= next_y) {
+      x += step_x;
+      next_x += delta_x;
+      if (j == j_edge) {
+        j = j_wrap;
+        flat += x_across;
+        crossed = true;
+      } else {
+        j += step_x;
+        flat += x_inside;
+      }
+    }
+    if (next_y <= exit_m) {
+      y += step_y;
+      next_y += delta_y;
+      if (r == r_edge) {
+        r = r_wrap;
+        flat += y_across;
+        crossed = true;
+      } else {
+        r += step_y;
+        flat += y_inside;
+      }
+    }
+    if (x < 0 || y < 0 || x >= width || y >= height) return;
+  }
+}
+
+// cos and sin of every beam's angle relative to the heading, for one beam count and field
+// of view (computed again only when those change, so not per scan).
+class BeamTable {
+ public:
+  void prepare(const LidarScan &scan) {
+    if (scan.beam_count() == count_ && scan.fov_rad == fov_rad_) return;
+    count_ = scan.beam_count();
+    fov_rad_ = scan.fov_rad;
+    cos_.resize(static_cast<std::size_t>(count_));
+    sin_.resize(static_cast<std::size_t>(count_));
+    for (int i = 0; i < count_; ++i) {
+      cos_[static_cast<std::size_t>(i)] = std::cos(scan.beam_angle_rad(i));
+      sin_[static_cast<std::size_t>(i)] = std::sin(scan.beam_angle_rad(i));
+    }
+  }
+  double cos(int i) const { return cos_[static_cast<std::size_t>(i)]; }
+  double sin(int i) const { return sin_[static_cast<std::size_t>(i)]; }
+
+ private:
+  int count_ = -1;
+  double fov_rad_ = 0.0;
+  std::vector<double> cos_, sin_;
+};
+
 // Frees the sub-cells a beam passes before it ends, as the ray model sees them (DESIGN §6).
 //
 // Walls stand on cell sides, and the band of sub-cells beside a side stands for that side.
@@ -79,63 +185,53 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
 // fills 4 % of a 1/3 m sub-cell and most of a band is air.
 class BeamFreeMarker {
  public:
-  BeamFreeMarker(const OccupancyGrid &grid, ScanUpdate &update) : grid_(grid), update_(update) {}
+  explicit BeamFreeMarker(ScanUpdate &update) : update_(update) {}
 
-  // The next sub-cell the beam enters, before its end.
-  void pass(SubCell s) {
-    const int k = grid_.k();
-    if (has_previous_ && crosses_cell_side(previous_, s, k)) update_.mark_free(grid_.index(previous_));
-    if (is_interior(s, k) || (has_previous_ && crosses_cell_side(previous_, s, k))) {
-      update_.mark_free(grid_.index(s));
-    }
-    previous_ = s;
+  // The next sub-cell the beam passes, before its end.
+  void pass(const FlatStep &s) {
+    if (s.crossed_side && has_previous_) update_.mark_free(previous_);
+    if (s.interior || s.crossed_side) update_.mark_free(s.flat);
+    previous_ = s.flat;
     has_previous_ = true;
+  }
+
+  // The beam's end sub-cell: the side crossed into it (if any) frees the sub-cell before it.
+  void end(const FlatStep &s) {
+    if (s.crossed_side && has_previous_) update_.mark_free(previous_);
   }
 
   // The beam left the grid after the last sub-cell passed: it crossed that cell's outer side.
   void leave_grid() {
-    if (has_previous_) update_.mark_free(grid_.index(previous_));
-  }
-
-  // The beam's end sub-cell: the side crossed into it (if any) frees the sub-cell before it.
-  void end(SubCell s) {
-    if (has_previous_ && crosses_cell_side(previous_, s, grid_.k())) {
-      update_.mark_free(grid_.index(previous_));
-    }
+    if (has_previous_) update_.mark_free(previous_);
   }
 
  private:
-  static bool crosses_cell_side(SubCell from, SubCell to, int k) {
-    return cell_of(from, k) != cell_of(to, k);
-  }
-  static bool is_interior(SubCell s, int k) {
-    const LocalSubCell l = local_of(s, k);
-    return l.i > 0 && l.j > 0 && l.i < k - 1 && l.j < k - 1;
-  }
-
-  const OccupancyGrid &grid_;
   ScanUpdate &update_;
-  SubCell previous_;
+  std::size_t previous_ = 0;
   bool has_previous_ = false;
 };
 
 void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
                     const LidarScan &scan, ScanUpdate &update) {
-  const GridGeometry &g = grid.geometry();
+  thread_local BeamTable table;  // per thread: no sharing, no per-scan allocation
+  table.prepare(scan);
+  // World direction of beam i: the beam's direction rotated by the yaw (two sin/cos per
+  // scan instead of two per beam).
+  const double cy = std::cos(scan.yaw_rad);
+  const double sy = std::sin(scan.yaw_rad);
   for (int i = 0; i < scan.beam_count(); ++i) {
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
     if (kind == ReadingKind::no_return && options.ignore_no_return) continue;
-    const double angle = scan.beam_world_angle_rad(i);
-    const double dir_x = std::cos(angle);
-    const double dir_y = std::sin(angle);
-    BeamFreeMarker free_marker(grid, update);
+    const double dir_x = cy * table.cos(i) - sy * table.sin(i);
+    const double dir_y = sy * table.cos(i) + cy * table.sin(i);
+    BeamFreeMarker free_marker(update);
     if (kind == ReadingKind::no_return) {
       const double length = scan.max_range_m;
       bool within_length = true;
-      trace_ray(g, scan.origin, dir_x, dir_y, [&](SubCell s, double exit_m) {
+      trace_flat(grid, scan.origin, dir_x, dir_y, [&](const FlatStep &s) {
         free_marker.pass(s);
-        within_length = exit_m < length;
+        within_length = s.exit_m < length;
         return within_length;
       });
       if (within_length) free_marker.leave_grid();  // stopped at the grid's edge, not at max range
@@ -143,13 +239,13 @@ void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
     }
     const double range = scan.ranges[static_cast<std::size_t>(i)];
     int behind = -1;  // -1 before the hit sub-cell, then the count of occupied sub-cells after it
-    trace_ray(g, scan.origin, dir_x, dir_y, [&](SubCell s, double exit_m) {
-      if (behind < 0 && exit_m < range) {
+    trace_flat(grid, scan.origin, dir_x, dir_y, [&](const FlatStep &s) {
+      if (behind < 0 && s.exit_m < range) {
         free_marker.pass(s);
         return true;
       }
       if (behind < 0) free_marker.end(s);
-      update.mark_occupied(grid.index(s));
+      update.mark_occupied(s.flat);
       ++behind;
       return behind < options.hit_depth;
     });

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -117,6 +119,39 @@ std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model) {
   return apply(grid, model, model.free_increment(), model.occupied_increment());
 }
 
+namespace {
+
+// Gives each listed sub-cell not yet marked this scan one update l <- clamp(l + delta)
+// (the arithmetic of mapping::apply, inlined), marking it `mark`; `skip` is a second mark
+// that also means "already updated" (the occupied mark when applying the free list).
+template <bool kClamp>
+std::size_t apply_list(std::span<const std::size_t> list, float *values, std::uint32_t *marks,
+                       std::size_t size, std::uint32_t mark, std::uint32_t skip, double delta,
+                       double lo, double hi) {
+  std::size_t updated = 0;
+  for (const std::size_t i : list) {
+    if (i >= size) continue;
+    const std::uint32_t m = marks[i];
+    if (m == mark || m == skip) continue;
+    marks[i] = mark;
+    const double sum = static_cast<double>(values[i]) + delta;
+    values[i] = static_cast<float>(kClamp ? std::clamp(sum, lo, hi) : sum);
+    ++updated;
+  }
+  return updated;
+}
+
+std::size_t apply_list(std::span<const std::size_t> list, float *values, std::uint32_t *marks,
+                       std::size_t size, std::uint32_t mark, std::uint32_t skip, double delta,
+                       const std::optional<Clamp> &clamp) {
+  if (clamp) {
+    return apply_list<true>(list, values, marks, size, mark, skip, delta, clamp->min, clamp->max);
+  }
+  return apply_list<false>(list, values, marks, size, mark, skip, delta, 0.0, 0.0);
+}
+
+}  // namespace
+
 std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model,
                               double free_increment, double occupied_increment) {
   if (grid.marks_.size() != grid.values_.size()) grid.marks_.assign(grid.values_.size(), 0);
@@ -127,19 +162,12 @@ std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model,
   const std::uint32_t occupied_mark = ++grid.epoch_;
   const std::uint32_t free_mark = ++grid.epoch_;
   const auto &clamp = model.options().clamp;
-  std::size_t updated = 0;
-  for (const std::size_t i : occupied_) {
-    if (i >= grid.values_.size() || grid.marks_[i] == occupied_mark) continue;
-    grid.marks_[i] = occupied_mark;
-    grid.values_[i] = static_cast<float>(mapping::apply(grid.values_[i], occupied_increment, clamp));
-    ++updated;
-  }
-  for (const std::size_t i : free_) {
-    if (i >= grid.values_.size() || grid.marks_[i] == occupied_mark || grid.marks_[i] == free_mark) continue;
-    grid.marks_[i] = free_mark;
-    grid.values_[i] = static_cast<float>(mapping::apply(grid.values_[i], free_increment, clamp));
-    ++updated;
-  }
+  float *values = grid.values_.data();
+  std::uint32_t *marks = grid.marks_.data();
+  const std::size_t size = grid.values_.size();
+  std::size_t updated = apply_list(occupied_, values, marks, size, occupied_mark, occupied_mark,
+                                   occupied_increment, clamp);
+  updated += apply_list(free_, values, marks, size, free_mark, occupied_mark, free_increment, clamp);
   clear();
   return updated;
 }

@@ -174,8 +174,10 @@ void Simulation::advance(double dt_s) {
     // Exact arc: the chord of length v h sinc(turn / 2) along the mean heading.
     const double half = turn / 2.0;
     const double chord = v * h * (half == 0.0 ? 1.0 : std::sin(half) / half);
-    pose_.x_m += chord * std::cos(pose_.yaw_rad + half);
-    pose_.y_m += chord * std::sin(pose_.yaw_rad + half);
+    if (chord != 0.0) {  // at rest: no sin/cos (adding 0 would change nothing)
+      pose_.x_m += chord * std::cos(pose_.yaw_rad + half);
+      pose_.y_m += chord * std::sin(pose_.yaw_rad + half);
+    }
     pose_.yaw_rad = maze::sim::wrap_angle(pose_.yaw_rad + turn);
     walls_.push_out(pose_.x_m, pose_.y_m, profile_.body_radius_m);
   }

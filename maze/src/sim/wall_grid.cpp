@@ -101,7 +101,8 @@ bool WallGrid::inside_maze(double x_m, double y_m) const {
   return lx >= 0.0 && ly >= 0.0 && lx <= width_ * cell_size_m_ && ly <= height_ * cell_size_m_;
 }
 
-void WallGrid::boxes(int cx, int cy, std::uint8_t mask, std::vector<Box> &out) const {
+template <typename Visit>
+void WallGrid::for_each_box(int cx, int cy, std::uint8_t mask, Visit &&visit) const {
   const std::uint8_t f = flags(cx, cy) & mask;
   if (f == 0) return;
   const double s = cell_size_m_;
@@ -110,17 +111,18 @@ void WallGrid::boxes(int cx, int cy, std::uint8_t mask, std::vector<Box> &out) c
   const double y0 = origin_y_m_ + cy * s;
   const double x1 = x0 + s;
   const double y1 = y0 + s;
-  if (f & kNorth) out.push_back({x0, y1 - h, x1, y1});
-  if (f & kSouth) out.push_back({x0, y0, x1, y0 + h});
-  if (f & kEast) out.push_back({x1 - h, y0, x1, y1});
-  if (f & kWest) out.push_back({x0, y0, x0 + h, y1});
-  if (f & kCornerNE) out.push_back({x1 - h, y1 - h, x1, y1});
-  if (f & kCornerNW) out.push_back({x0, y1 - h, x0 + h, y1});
-  if (f & kCornerSW) out.push_back({x0, y0, x0 + h, y0 + h});
-  if (f & kCornerSE) out.push_back({x1 - h, y0, x1, y0 + h});
+  if (f & kNorth) visit(Box{x0, y1 - h, x1, y1});
+  if (f & kSouth) visit(Box{x0, y0, x1, y0 + h});
+  if (f & kEast) visit(Box{x1 - h, y0, x1, y1});
+  if (f & kWest) visit(Box{x0, y0, x0 + h, y1});
+  if (f & kCornerNE) visit(Box{x1 - h, y1 - h, x1, y1});
+  if (f & kCornerNW) visit(Box{x0, y1 - h, x0 + h, y1});
+  if (f & kCornerSW) visit(Box{x0, y0, x0 + h, y0 + h});
+  if (f & kCornerSE) visit(Box{x1 - h, y0, x1, y0 + h});
 }
 
-std::vector<Box> WallGrid::boxes_near(double x_m, double y_m, double reach_m) const {
+template <typename Visit>
+void WallGrid::for_each_box_near(double x_m, double y_m, double reach_m, Visit &&visit) const {
   const double s = cell_size_m_;
   const auto cell_of = [s](double v, int n) {
     return std::clamp(static_cast<int>(std::floor(v / s)), 0, n - 1);
@@ -131,18 +133,17 @@ std::vector<Box> WallGrid::boxes_near(double x_m, double y_m, double reach_m) co
   const int x_hi = cell_of(lx + reach_m, width_);
   const int y_lo = cell_of(ly - reach_m, height_);
   const int y_hi = cell_of(ly + reach_m, height_);
-  std::vector<Box> out;
   for (int cy = y_lo; cy <= y_hi; ++cy) {
-    for (int cx = x_lo; cx <= x_hi; ++cx) boxes(cx, cy, 0xff, out);
+    for (int cx = x_lo; cx <= x_hi; ++cx) for_each_box(cx, cy, 0xff, visit);
   }
-  return out;
 }
 
 bool WallGrid::inside_wall(double x_m, double y_m) const {
-  for (const Box &b : boxes_near(x_m, y_m, 0.0)) {
-    if (x_m >= b.x_min_m && x_m <= b.x_max_m && y_m >= b.y_min_m && y_m <= b.y_max_m) return true;
-  }
-  return false;
+  bool inside = false;
+  for_each_box_near(x_m, y_m, 0.0, [&](const Box &b) {
+    inside = inside || (x_m >= b.x_min_m && x_m <= b.x_max_m && y_m >= b.y_min_m && y_m <= b.y_max_m);
+  });
+  return inside;
 }
 
 double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range_m) const {
@@ -207,13 +208,16 @@ bool WallGrid::push_out(double &x_m, double &y_m, double radius_m) const {
   bool moved = false;
   for (int pass = 0; pass < 4; ++pass) {
     bool moved_this_pass = false;
-    for (const Box &b : boxes_near(x_m, y_m, radius_m)) {
+    // The boxes near where the pass starts (the position moves during the pass).
+    for_each_box_near(x_m, y_m, radius_m, [&](const Box &b) {
       double qx = 0.0, qy = 0.0;
       nearest_point(b, x_m, y_m, qx, qy);
       const double ex = x_m - qx;
       const double ey = y_m - qy;
+      // hypot(ex, ey) >= max(|ex|, |ey|): a box that far away needs no hypot.
+      if (std::max(std::abs(ex), std::abs(ey)) >= radius_m - kSlop_m) return;
       const double d = std::hypot(ex, ey);
-      if (d >= radius_m - kSlop_m) continue;
+      if (d >= radius_m - kSlop_m) return;
       if (d > 0.0) {
         x_m += ex / d * (radius_m - d);
         y_m += ey / d * (radius_m - d);
@@ -228,7 +232,7 @@ bool WallGrid::push_out(double &x_m, double &y_m, double radius_m) const {
         else y_m = b.y_max_m + radius_m;
       }
       moved_this_pass = true;
-    }
+    });
     if (!moved_this_pass) break;
     moved = true;
   }
@@ -237,12 +241,12 @@ bool WallGrid::push_out(double &x_m, double &y_m, double radius_m) const {
 
 std::vector<Contact> WallGrid::contacts(double x_m, double y_m, double reach_m) const {
   std::vector<Contact> out;
-  for (const Box &b : boxes_near(x_m, y_m, reach_m)) {
+  for_each_box_near(x_m, y_m, reach_m, [&](const Box &b) {
     double qx = 0.0, qy = 0.0;
     nearest_point(b, x_m, y_m, qx, qy);
     const double d = std::hypot(x_m - qx, y_m - qy);
     if (d <= reach_m) out.push_back({qx, qy, d});
-  }
+  });
   return out;
 }
 

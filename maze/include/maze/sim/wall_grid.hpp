@@ -77,10 +77,13 @@ class WallGrid {
     return flags_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) +
                   static_cast<std::size_t>(cx)];
   }
-  // The solid boxes of cell (cx, cy) whose flags are in mask, appended to out.
-  void boxes(int cx, int cy, std::uint8_t mask, std::vector<Box> &out) const;
-  // The solid boxes of every cell meeting the square of half-side reach_m around (x, y).
-  std::vector<Box> boxes_near(double x_m, double y_m, double reach_m) const;
+  // Calls visit(const Box &) for each solid box of cell (cx, cy) whose flags are in mask.
+  template <typename Visit>
+  void for_each_box(int cx, int cy, std::uint8_t mask, Visit &&visit) const;
+  // Calls visit(const Box &) for the solid boxes of every cell meeting the square of
+  // half-side reach_m around (x, y), row by row from the south, without allocating.
+  template <typename Visit>
+  void for_each_box_near(double x_m, double y_m, double reach_m, Visit &&visit) const;
 
   int width_;
   int height_;
