@@ -80,7 +80,7 @@ void add_mapping_run_options(CLI::App &run, RunInput &input) {
                  "lidar noise, standard deviation as a fraction of max range (0: off; default: the robot's)");
   add_model_options(run, input.sensor);
   add_clamp_option(run, input.sensor);
-  run.add_option("--max-steps", input.max_steps, "stop after this many control steps (default 2000000)");
+  run.add_option("--max-steps", input.max_steps, "stop after this many control steps (default 1000 a cell of the maze, at least 100000)");
   run.add_option("--dilate", input.dilate, "planning: grow obstacles by N sub-cells (default 0)");
 }
 
@@ -118,8 +118,8 @@ RunOptions to_run_options(const RunInput &input) {
     o.unknown = input.unknown[0];
   }
   o.quiet = input.quiet;
-  if (input.max_steps < 1) {
-    throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", input.max_steps));
+  if (input.max_steps && *input.max_steps < 1) {
+    throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", *input.max_steps));
   }
   o.max_steps = input.max_steps;
   o.plan_from = parse_cell(input.plan_from, "--from");

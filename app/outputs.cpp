@@ -260,7 +260,7 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   opt["log_base"] = o.sensor.base == mapping::LogBase::ten ? "10" : "e";
   opt["clamp"] = o.sensor.clamp ? nlohmann::ordered_json::array({o.sensor.clamp->min, o.sensor.clamp->max})
                                 : nlohmann::ordered_json(nullptr);
-  opt["max_steps"] = o.max_steps;
+  opt["max_steps"] = o.max_steps ? nlohmann::ordered_json(*o.max_steps) : nlohmann::ordered_json(nullptr);
   opt["out"] = o.out_dir;
   j["options"] = opt;
   return j.dump(2) + "\n";

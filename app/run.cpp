@@ -72,7 +72,7 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.strategy = options.strategy;
   c.motion.wheel_radius_m = profile.wheel_radius_m;
   c.motion.axle_m = profile.axle_m;
-  c.motion.max_steps = options.max_steps;
+  c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
   if (!profile.lidars.empty()) c.devices.lidar = profile.lidars.front().name;
   c.speed_run = options.speed_run;
   c.sensing = sensing_of(profile);
@@ -389,6 +389,12 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
   line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
   return text;
+}
+
+std::int64_t max_steps_for(const maze::Maze &maze) {
+  constexpr std::int64_t kStepsPerCell = 1000;
+  constexpr std::int64_t kMinimum = 100'000;
+  return std::max(kMinimum, kStepsPerCell * maze.width() * maze.height());
 }
 
 int exit_status(const RunSummary &summary) {

@@ -38,7 +38,9 @@ struct RunOptions {
   bool ascii = false;
   std::optional<char> unknown;
   bool quiet = false;                   // final map and summary only
-  std::int64_t max_steps = 2'000'000;
+  // --max-steps: control steps before the run stops; none: max_steps_for(maze), which no
+  // complete exploration reaches (dfs and frontier take about 200 steps a cell).
+  std::optional<std::int64_t> max_steps;
   std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, summary.json, trace.csv
   bool color = false;                   // ANSI colours in the map (a terminal, no --no-color)
   bool animate = false;                 // --animate: the map redrawn in place
@@ -103,6 +105,9 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
 // unusable options.
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls = {});
+
+// The step limit of a run without --max-steps: 1,000 control steps a cell, at least 100,000.
+std::int64_t max_steps_for(const maze::Maze &maze);
 
 // The summary block (DESIGN §9), one `key: value` a line.
 std::string format_summary(const RunOptions &options, const RunSummary &summary);

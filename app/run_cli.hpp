@@ -31,7 +31,7 @@ struct RunInput {
   bool ascii = false;
   std::string unknown;
   bool quiet = false;
-  std::int64_t max_steps = RunOptions{}.max_steps;
+  std::optional<std::int64_t> max_steps;
   std::string plan_from;  // X,Y (plan --from)
   std::string plan_to;    // X,Y (plan --to, run --plan-to)
   int dilate = 0;
