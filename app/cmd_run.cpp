@@ -32,6 +32,10 @@ struct RunInput {
   std::string unknown;
   bool quiet = false;
   std::int64_t max_steps = RunOptions{}.max_steps;
+  double dropout = 0.0;
+  double spikes = 0.0;
+  std::string stuck_bumper;
+  double wheel_slip = 0.0;
 };
 
 RunOptions to_run_options(const RunInput &input) {
@@ -65,6 +69,10 @@ RunOptions to_run_options(const RunInput &input) {
     throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", input.max_steps));
   }
   o.max_steps = input.max_steps;
+  o.dropout = input.dropout;
+  o.spikes = input.spikes;
+  o.stuck_bumper = input.stuck_bumper;
+  o.wheel_slip = input.wheel_slip;
   return o;
 }
 
@@ -98,8 +106,17 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
   run->add_option("--unknown", input->unknown, "CHAR drawn for never-observed sub-cells (default blank)");
   run->add_flag("--quiet", input->quiet, "print only the final map and the summary");
   run->add_option("--max-steps", input->max_steps, "stop after this many control steps (default 2000000)");
+  run->add_option("--dropout", input->dropout, "fault: fraction of lidar beams that read +infinity (default 0)");
+  run->add_option("--spikes", input->spikes, "fault: fraction of lidar beams that read a random range (default 0)");
+  run->add_option("--stuck-bumper", input->stuck_bumper, "fault: NAME, a bumper that always reads pressed");
+  run->add_option("--wheel-slip", input->wheel_slip,
+                  "fault: fraction of wheel turning that does not move the robot; encoders count it all (default 0)");
   run->callback([input, &context] {
     const RunOptions options = to_run_options(*input);
+    if (context.run_parse_only != nullptr) {
+      *context.run_parse_only = options;
+      return;
+    }
     const RunSummary summary = run_world(options, std::cout);
     context.status = exit_status(summary);
   });

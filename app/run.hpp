@@ -36,6 +36,11 @@ struct RunOptions {
   std::optional<char> unknown;
   bool quiet = false;                   // final map and summary only
   std::int64_t max_steps = 2'000'000;
+  // Simulated faults (maze::sim::SimulationOptions has their meaning); validated there.
+  double dropout = 0.0;      // --dropout
+  double spikes = 0.0;       // --spikes
+  std::string stuck_bumper;  // --stuck-bumper
+  double wheel_slip = 0.0;   // --wheel-slip
 };
 
 struct RunSummary {

@@ -2,6 +2,8 @@
 
 #include <cassert>
 #include <cmath>
+#include <numbers>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -12,6 +14,9 @@ namespace mapping {
 namespace {
 
 constexpr int kMaxHitDepth = 8;
+// The cell model reads each side through the median of the beams within 2.5 degrees of it
+// (5 beams of a 1-degree lidar), so a lone dropped or spiked beam cannot flip a wall.
+constexpr double kCellModelHalfWindow_rad = 2.5 * std::numbers::pi / 180.0;
 
 // Row/column steps of local sub-cell coordinates (i from the north, j from the west).
 constexpr int di(Heading h) { return -dy(h); }
@@ -60,9 +65,10 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
   for (const Heading h : kHeadings) {
     const auto beam = scan.beam_towards(yaw_rad(h));
     if (!beam) continue;
-    const ReadingKind kind = scan.kind(*beam);
-    if (kind == ReadingKind::invalid) continue;
-    const double range = scan.ranges[static_cast<std::size_t>(*beam)];
+    const std::optional<float> median = scan.median_range(*beam, kCellModelHalfWindow_rad);
+    if (!median) continue;
+    const ReadingKind kind = scan.kind_of(*median);
+    const double range = *median;
     const bool wall = kind == ReadingKind::hit &&
                       range < distance_to_side(grid, scan.origin, c, h) + margin_m;
     mark_cell_side(grid, c, h, wall, update);

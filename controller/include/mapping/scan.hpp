@@ -35,6 +35,14 @@ struct LidarScan {
   double beam_world_angle_rad(int i) const { return yaw_rad + beam_angle_rad(i); }
 
   ReadingKind kind(int i) const;
+  // The kind of a reading r, m (the table above).
+  ReadingKind kind_of(float r) const;
+
+  // The median reading, m, of the beams within half_window_rad of beam `centre` (beam
+  // `centre` alone when the beams are further apart), invalid readings left out and no return
+  // counted as +infinity; nothing when none is valid. A lone dropout or spike does not move
+  // it. The lower median when the count is even.
+  std::optional<float> median_range(int centre, double half_window_rad) const;
 
   // The beam whose direction is nearest to a world direction, or nothing when that
   // direction is outside the field of view (or the scan has no beams).
