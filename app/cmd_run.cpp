@@ -97,7 +97,15 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
   run->add_option("--strategy", input->strategy,
                   "dfs (default), frontier, left-wall, right-wall or floodfill");
   run->add_option("--robot", input->robot, "robot profile (default hambot)");
-  run->add_option("--seed", input->seed, "seed of the sensor noise (default 42)");
+  run->add_option("--seed", input->seed, "seed of the sensor noise (default 42)")
+      ->check(CLI::Validator(
+          [](std::string &text) {
+            // CLI11 would read "-1" as 2^64 - 1.
+            return text.find('-') == std::string::npos
+                       ? std::string()
+                       : "must be a whole number from 0 (got '" + text + "')";
+          },
+          ""));
   run->add_option("--noise", input->noise,
                   "lidar noise, standard deviation as a fraction of max range (0: off; default: the robot's)");
   add_model_options(*run, input->sensor);
