@@ -132,6 +132,7 @@ void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
     if (kind == ReadingKind::no_return && options.ignore_no_return) continue;
+    if (kind == ReadingKind::no_return && scan.lone_no_return(i)) continue;
     const double angle = scan.beam_world_angle_rad(i);
     const double dir_x = std::cos(angle);
     const double dir_y = std::sin(angle);

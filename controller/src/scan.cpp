@@ -46,9 +46,20 @@ std::optional<float> LidarScan::median_range(int centre, double half_window_rad)
     valid.push_back(k == ReadingKind::no_return ? std::numeric_limits<float>::infinity() : r);
   }
   if (valid.empty()) return std::nullopt;
+  const auto returns = std::count_if(valid.begin(), valid.end(), [](float v) { return std::isfinite(v); });
+  if (returns >= 2) std::erase_if(valid, [](float v) { return !std::isfinite(v); });
   const auto middle = valid.begin() + static_cast<std::ptrdiff_t>((valid.size() - 1) / 2);
   std::nth_element(valid.begin(), middle, valid.end());
   return *middle;
+}
+
+bool LidarScan::lone_no_return(int i) const {
+  const int n = beam_count();
+  if (kind(i) != ReadingKind::no_return || n < 3) return false;
+  const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
+  if (!full_circle && (i < 2 || i > n - 3)) return false;
+  const auto hit = [&](int j) { return kind(((j % n) + n) % n) == ReadingKind::hit; };
+  return (hit(i - 1) || hit(i - 2)) && (hit(i + 1) || hit(i + 2));
 }
 
 std::optional<int> LidarScan::beam_towards(double world_angle_rad) const {
