@@ -75,13 +75,26 @@ void add_mapping_run_options(CLI::App &run, RunInput &input) {
   run.add_option("--strategy", input.strategy,
                  "dfs (default), frontier, left-wall, right-wall or floodfill");
   run.add_option("--robot", input.robot, "robot profile (default hambot)");
-  run.add_option("--seed", input.seed, "seed of the sensor noise (default 42)");
+  run.add_option("--seed", input.seed, "seed of the sensor noise (default 42)")
+      ->check(CLI::Validator(
+          [](std::string &text) {
+            // CLI11 would read "-1" as 2^64 - 1.
+            return text.find('-') == std::string::npos
+                       ? std::string()
+                       : "must be a whole number from 0 (got '" + text + "')";
+          },
+          ""));
   run.add_option("--noise", input.noise,
                  "lidar noise, standard deviation as a fraction of max range (0: off; default: the robot's)");
   add_model_options(run, input.sensor);
   add_clamp_option(run, input.sensor);
   run.add_option("--max-steps", input.max_steps, "stop after this many control steps (default 1000 a cell of the maze, at least 100000)");
   run.add_option("--dilate", input.dilate, "planning: grow obstacles by N sub-cells (default 0)");
+  run.add_option("--dropout", input.dropout, "fault: fraction of lidar beams that read +infinity (default 0)");
+  run.add_option("--spikes", input.spikes, "fault: fraction of lidar beams that read a random range (default 0)");
+  run.add_option("--stuck-bumper", input.stuck_bumper, "fault: NAME, a bumper that always reads pressed");
+  run.add_option("--wheel-slip", input.wheel_slip,
+                 "fault: fraction of wheel turning that does not move the robot; encoders count it all (default 0)");
 }
 
 RunOptions to_run_options(const RunInput &input) {
@@ -126,6 +139,10 @@ RunOptions to_run_options(const RunInput &input) {
   o.plan_to = parse_cell(input.plan_to, input.plan_from.empty() ? "--plan-to" : "--to");
   o.dilate = input.dilate;
   o.speed_run = input.speed_run;
+  o.dropout = input.dropout;
+  o.spikes = input.spikes;
+  o.stuck_bumper = input.stuck_bumper;
+  o.wheel_slip = input.wheel_slip;
   return o;
 }
 
@@ -246,6 +263,10 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
   run->add_flag("--step", only->step, "stop after each cell: Enter goes on, q quits");
   run->callback([input, only, &context] {
     RunOptions options = with_default_world(to_run_options(*input));
+    if (context.run_parse_only != nullptr) {
+      *context.run_parse_only = options;
+      return;
+    }
     check_positive("--fps", only->fps);
     check_positive("--speed", only->speed);
     options.out_dir = only->out;

@@ -11,8 +11,12 @@
 
 namespace app {
 
+struct RunOptions;
+
 struct CommandContext {
   int status = 0;  // exit status of the command that ran
+  // When set, `run` stores its checked options here instead of running (fuzzing, tests).
+  RunOptions *run_parse_only = nullptr;
 };
 
 // maze_mapper demo 1d: the textbook 1-D log-odds exercise (cmd_demo.cpp).

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli_errors.hpp"
 #include "commands.hpp"
 #include "common/error.hpp"
 
@@ -60,7 +61,7 @@ int main(int argc, char **argv) {
   } catch (const CLI::CallForVersion &e) {
     return cli.exit(e);
   } catch (const CLI::ParseError &e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "error: {}\n", app::describe_usage_error(cli, e));
     return kExitUsage;
   } catch (const common::InputError &e) {
     std::cout.flush();

@@ -251,6 +251,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   maze::sim::SimulationOptions sim_opts;
   sim_opts.seed = options.seed;
   sim_opts.noise = options.noise;
+  sim_opts.dropout = options.dropout;
+  sim_opts.spikes = options.spikes;
+  sim_opts.stuck_bumper = options.stuck_bumper;
+  sim_opts.wheel_slip = options.wheel_slip;
   webots::embedded::Simulation simulation(truth, profile, sim_opts);
 
   const mapping::SensorModel model(options.sensor);

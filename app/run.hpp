@@ -54,6 +54,11 @@ struct RunOptions {
   int dilate = 0;                       // --dilate N sub-cells
   bool plan_only = false;               // `plan`: print only the planned map and the summary
   bool speed_run = false;               // --speed-run: drive the planned path back to the start
+  // Simulated faults (maze::sim::SimulationOptions has their meaning); validated there.
+  double dropout = 0.0;      // --dropout
+  double spikes = 0.0;       // --spikes
+  std::string stuck_bumper;  // --stuck-bumper
+  double wheel_slip = 0.0;   // --wheel-slip
 };
 
 // What a run reads besides its options (all optional).

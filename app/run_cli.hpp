@@ -36,11 +36,16 @@ struct RunInput {
   std::string plan_to;    // X,Y (plan --to, run --plan-to)
   int dilate = 0;
   bool speed_run = false;
+  double dropout = 0.0;
+  double spikes = 0.0;
+  std::string stuck_bumper;
+  double wheel_slip = 0.0;
 };
 
 // The mapping options run, batch, compare and plan take: --subcells --model --threshold
 // --pie-beta --pie-alpha --hit-depth --ignore-no-return --strategy --robot --seed --noise
-// --p-free --p-occ --prior --log-base --clamp --max-steps --dilate.
+// --p-free --p-occ --prior --log-base --clamp --max-steps --dilate, and the faults
+// --dropout --spikes --stuck-bumper --wheel-slip.
 void add_mapping_run_options(CLI::App &command, RunInput &input);
 
 // Checks and converts; throws common::InputError naming the bad option. world is left

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,9 @@ namespace mapping {
 namespace {
 
 constexpr int kMaxHitDepth = 8;
+// The cell model reads each side through the median of the beams within 2.5 degrees of it
+// (5 beams of a 1-degree lidar), so a lone dropped or spiked beam cannot flip a wall.
+constexpr double kCellModelHalfWindow_rad = 2.5 * std::numbers::pi / 180.0;
 
 // Row/column steps of local sub-cell coordinates (i from the north, j from the west).
 constexpr int di(Heading h) { return -dy(h); }
@@ -63,9 +68,10 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
   for (const Heading h : kHeadings) {
     const auto beam = scan.beam_towards(yaw_rad(h));
     if (!beam) continue;
-    const ReadingKind kind = scan.kind(*beam);
-    if (kind == ReadingKind::invalid) continue;
-    const double range = scan.ranges[static_cast<std::size_t>(*beam)];
+    const std::optional<float> median = scan.median_range(*beam, kCellModelHalfWindow_rad);
+    if (!median) continue;
+    const ReadingKind kind = scan.kind_of(*median);
+    const double range = *median;
     const bool wall = kind == ReadingKind::hit &&
                       range < distance_to_side(grid, scan.origin, c, h) + margin_m;
     mark_cell_side(grid, c, h, wall, update);
@@ -223,6 +229,7 @@ void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
     if (kind == ReadingKind::no_return && options.ignore_no_return) continue;
+    if (kind == ReadingKind::no_return && scan.lone_no_return(i)) continue;
     const double dir_x = cy * table.cos(i) - sy * table.sin(i);
     const double dir_y = sy * table.cos(i) + cy * table.sin(i);
     BeamFreeMarker free_marker(update);

@@ -1,7 +1,11 @@
 #include "mapping/scan.hpp"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 namespace mapping {
 
@@ -17,11 +21,45 @@ double LidarScan::beam_angle_rad(int i) const {
   return fov_rad / 2.0 - i * fov_rad / beam_count();
 }
 
-ReadingKind LidarScan::kind(int i) const {
-  const float r = ranges[static_cast<std::size_t>(i)];
+ReadingKind LidarScan::kind(int i) const { return kind_of(ranges[static_cast<std::size_t>(i)]); }
+
+ReadingKind LidarScan::kind_of(float r) const {
   if (std::isnan(r) || r < 0.0f || r < min_range_m) return ReadingKind::invalid;
   if (std::isinf(r) || r > max_range_m) return ReadingKind::no_return;
   return ReadingKind::hit;
+}
+
+std::optional<float> LidarScan::median_range(int centre, double half_window_rad) const {
+  const int n = beam_count();
+  assert(centre >= 0 && centre < n);
+  const double step = fov_rad / n;
+  const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
+  const int reach = std::min(static_cast<int>(half_window_rad / step), (n - 1) / 2);
+  std::vector<float> valid;
+  for (int offset = -reach; offset <= reach; ++offset) {
+    int i = centre + offset;
+    if (full_circle) i = ((i % n) + n) % n;
+    if (i < 0 || i >= n) continue;
+    const float r = ranges[static_cast<std::size_t>(i)];
+    const ReadingKind k = kind_of(r);
+    if (k == ReadingKind::invalid) continue;
+    valid.push_back(k == ReadingKind::no_return ? std::numeric_limits<float>::infinity() : r);
+  }
+  if (valid.empty()) return std::nullopt;
+  const auto returns = std::count_if(valid.begin(), valid.end(), [](float v) { return std::isfinite(v); });
+  if (returns >= 2) std::erase_if(valid, [](float v) { return !std::isfinite(v); });
+  const auto middle = valid.begin() + static_cast<std::ptrdiff_t>((valid.size() - 1) / 2);
+  std::nth_element(valid.begin(), middle, valid.end());
+  return *middle;
+}
+
+bool LidarScan::lone_no_return(int i) const {
+  const int n = beam_count();
+  if (kind(i) != ReadingKind::no_return || n < 3) return false;
+  const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
+  if (!full_circle && (i < 2 || i > n - 3)) return false;
+  const auto hit = [&](int j) { return kind(((j % n) + n) % n) == ReadingKind::hit; };
+  return (hit(i - 1) || hit(i - 2)) && (hit(i + 1) || hit(i + 2));
 }
 
 std::optional<int> LidarScan::beam_towards(double world_angle_rad) const {

@@ -98,7 +98,8 @@ std::optional<double> number(const tinyxml2::XMLElement &e, const char *name, co
     throw src.error(e, name, fmt::format("{} is not a number: '{}'", name, shown));
   }
   if (!std::isfinite(result) || std::abs(result) > 1e9) {
-    throw src.error(e, name, fmt::format("{} is not a finite number of metres: '{}'", name, shown));
+    const std::string_view unit = std::string_view(name) == "theta" ? "radians" : "metres";
+    throw src.error(e, name, fmt::format("{} is not a finite number of {}: '{}'", name, unit, shown));
   }
   return result;
 }

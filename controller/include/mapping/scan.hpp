@@ -35,6 +35,20 @@ struct LidarScan {
   double beam_world_angle_rad(int i) const { return yaw_rad + beam_angle_rad(i); }
 
   ReadingKind kind(int i) const;
+  // The kind of a reading r, m (the table above).
+  ReadingKind kind_of(float r) const;
+
+  // The median reading, m, of the beams within half_window_rad of beam `centre` (beam
+  // `centre` alone when the beams are further apart), invalid readings left out; nothing when
+  // none is valid. When at least two of them are returns, no-return readings are left out too
+  // (a wall is not seen through: those are dropped beams), else no return counts as
+  // +infinity. A lone dropout or spike does not move it. The lower median when the count is
+  // even.
+  std::optional<float> median_range(int centre, double half_window_rad) const;
+
+  // Whether beam i is a no return with a return among the two beams on each side of it:
+  // one or two dropped beams, not a view past the wall their neighbours hit.
+  bool lone_no_return(int i) const;
 
   // The beam whose direction is nearest to a world direction, or nothing when that
   // direction is outside the field of view (or the scan has no beams).

@@ -29,6 +29,12 @@ void require_non_negative(double value, const char *what) {
   }
 }
 
+void require_fraction(double value, const char *what) {
+  if (!(value >= 0.0 && value <= 1.0)) {
+    throw common::InputError(fmt::format("{} must be a fraction from 0 to 1 (got {})", what, value));
+  }
+}
+
 }  // namespace
 
 void SimulationOptions::validate() const {
@@ -41,6 +47,13 @@ void SimulationOptions::validate() const {
   require_non_negative(gps_noise_m, "the GPS noise");
   require_non_negative(imu_noise_rad, "the IMU noise");
   require_non_negative(encoder_noise_rad, "the encoder noise");
+  require_fraction(dropout, "--dropout");
+  require_fraction(spikes, "--spikes");
+  require_fraction(wheel_slip, "--wheel-slip");
+  if (dropout + spikes > 1.0) {
+    throw common::InputError(fmt::format(
+        "--dropout and --spikes together must be at most 1 (got {} + {})", dropout, spikes));
+  }
 }
 
 }  // namespace maze::sim
@@ -52,6 +65,20 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kLeft = 0;
 constexpr int kRight = 1;
+// Salts the seed of the fault draws so they are independent of the noise's.
+constexpr std::uint64_t kFaultSalt = 0x6a09e667f3bcc909ULL;
+
+void check_stuck_bumper(const maze::sim::RobotProfile &profile, const std::string &name) {
+  if (name.empty()) return;
+  std::string known;
+  for (const maze::sim::BumperSpec &b : profile.bumpers) {
+    if (b.name == name) return;
+    known += (known.empty() ? "" : ", ") + b.name;
+  }
+  throw common::InputError(fmt::format("--stuck-bumper: the robot {} has no bumper named '{}' ({})",
+                                       profile.name, name,
+                                       known.empty() ? "it has none" : "it has " + known));
+}
 
 double heading_rad(maze::Side s) {
   switch (s) {
@@ -93,6 +120,7 @@ Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &pr
                        const maze::sim::SimulationOptions &options)
     : profile_(profile), options_(options), walls_(maze), pose_(options.start.value_or(start_pose(maze))) {
   options_.validate();
+  check_stuck_bumper(profile_, options_.stuck_bumper);
   maze::sim::check_pose_free(walls_, pose_);
   for (const maze::sim::Contact &c : walls_.contacts(pose_.x_m, pose_.y_m, profile_.body_radius_m)) {
     if (c.distance_m < profile_.body_radius_m - 1e-9) {
@@ -165,10 +193,13 @@ void Simulation::advance(double dt_s) {
       std::max(1, static_cast<int>(std::ceil(longest_m / (0.1 * profile_.body_radius_m))));
   const double h = dt_s / substeps;
   for (int k = 0; k < substeps; ++k) {
-    const double left = wheel_rate(wheels_[kLeft], h);
-    const double right = wheel_rate(wheels_[kRight], h);
-    wheels_[kLeft].angle_rad += left * h;
-    wheels_[kRight].angle_rad += right * h;
+    const double left_turned = wheel_rate(wheels_[kLeft], h);
+    const double right_turned = wheel_rate(wheels_[kRight], h);
+    wheels_[kLeft].angle_rad += left_turned * h;
+    wheels_[kRight].angle_rad += right_turned * h;
+    const double grip = 1.0 - options_.wheel_slip;
+    const double left = options_.wheel_slip > 0.0 ? left_turned * grip : left_turned;
+    const double right = options_.wheel_slip > 0.0 ? right_turned * grip : right_turned;
     const double v = r * (left + right) / 2.0;
     const double turn = r * (right - left) / profile_.axle_m * h;
     // Exact arc: the chord of length v h sinc(turn / 2) along the mean heading.
@@ -218,8 +249,24 @@ const float *Simulation::lidar_range_image(int device) {
     common::Rng rng = rng_for(device);
     lidar_models_[static_cast<std::size_t>(state.spec)].range_image(walls_, lidar_noise(spec),
                                                                      pose_, rng, state.ranges);
+    apply_lidar_faults(device, spec, state.ranges);
   }
   return state.ranges.data();
+}
+
+void Simulation::apply_lidar_faults(int device, const maze::sim::LidarSpec &spec,
+                                    std::vector<float> &ranges) const {
+  if (options_.dropout <= 0.0 && options_.spikes <= 0.0) return;
+  common::Rng rng = maze::sim::sensor_rng(options_.seed ^ kFaultSalt, device, steps_);
+  for (float &r : ranges) {
+    const double u = rng.uniform01();
+    const double spike_m = rng.uniform(spec.min_range_m, spec.max_range_m);
+    if (u < options_.dropout) {
+      r = std::numeric_limits<float>::infinity();
+    } else if (u < options_.dropout + options_.spikes) {
+      r = static_cast<float>(spike_m);
+    }
+  }
 }
 
 void Simulation::motor_set_position(int device, double position_rad) {
@@ -285,6 +332,7 @@ double Simulation::touch_value(int device) {
   const DeviceState &state = states_[static_cast<std::size_t>(device)];
   if (state.sampling_period_ms == 0) return kNaN;
   const maze::sim::BumperSpec &bumper = profile_.bumpers[static_cast<std::size_t>(state.spec)];
+  if (bumper.name == options_.stuck_bumper) return 1.0;
   return maze::sim::bumper_pressed(walls_, bumper, profile_.body_radius_m, pose_) ? 1.0 : 0.0;
 }
 

@@ -55,6 +55,14 @@ struct SimulationOptions {
   // heading.
   std::optional<Pose> start;
 
+  // Faults (all off by default). Drawn from a Rng seeded by (seed, device, step) apart from
+  // the noise's, so turning a fault on leaves the noise as it was.
+  double dropout = 0.0;      // fraction of lidar beams that read +infinity
+  double spikes = 0.0;       // fraction of lidar beams that read a uniform range in [min, max]
+  std::string stuck_bumper;  // this bumper always reads pressed (empty: none)
+  double wheel_slip = 0.0;   // fraction of the wheels' turning that does not move the body;
+                             // the encoders count it all
+
   // Throws common::InputError naming the first bad option.
   void validate() const;
 };
@@ -131,6 +139,7 @@ class Simulation {
   bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
   common::Rng rng_for(int device) const;
   double lidar_noise(const maze::sim::LidarSpec &spec) const;
+  void apply_lidar_faults(int device, const maze::sim::LidarSpec &spec, std::vector<float> &ranges) const;
 
   maze::sim::RobotProfile profile_;
   maze::sim::SimulationOptions options_;

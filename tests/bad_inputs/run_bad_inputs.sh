@@ -1,0 +1,49 @@
+#!/bin/sh
+# Runs every case of cases.txt: `ARGS... => EXPECTED` runs `PROGRAM ARGS...` in the source
+# tree and expects exit status 2, nothing on standard output, and standard error exactly
+# EXPECTED and a newline. Arguments are split on blanks (no quoting). Reports every failing
+# case, then fails if there was one.
+# With MAZE_MAPPER_UPDATE_GOLDEN=1 the expectations are rewritten from what the program
+# prints (review `git diff tests/bad_inputs` after that).
+#   usage: run_bad_inputs.sh PROGRAM SOURCE_DIR
+set -eu
+program=$1
+source_dir=$2
+cases="$source_dir/tests/bad_inputs/cases.txt"
+cd "$source_dir"
+set -f
+failures=0
+count=0
+updated=$(mktemp)
+out=$(mktemp)
+err=$(mktemp)
+trap 'rm -f "$updated" "$out" "$err"' EXIT
+while IFS= read -r line || [ -n "$line" ]; do
+  case $line in
+    ''|'#'*) printf '%s\n' "$line" >>"$updated"; continue ;;
+  esac
+  args=${line%% => *}
+  expected=${line#* => }
+  count=$((count + 1))
+  status=0
+  # shellcheck disable=SC2086  # the arguments are split on blanks on purpose
+  "$program" $args >"$out" 2>"$err" </dev/null || status=$?
+  actual=$(cat "$err")
+  printf '%s => %s\n' "$args" "$actual" >>"$updated"
+  problem=""
+  [ "$status" -eq 2 ] || problem="exit status $status, expected 2"
+  [ ! -s "$out" ] || problem="${problem:+$problem; }something on standard output"
+  [ "$(wc -l <"$err")" -eq 1 ] || problem="${problem:+$problem; }standard error is not one line"
+  [ "$actual" = "$expected" ] || problem="${problem:+$problem; }message differs"
+  if [ -n "$problem" ]; then
+    failures=$((failures + 1))
+    printf 'FAIL: %s\n  %s\n  expected: %s\n  actual:   %s\n' "$args" "$problem" "$expected" "$actual"
+  fi
+done <"$cases"
+if [ "${MAZE_MAPPER_UPDATE_GOLDEN:-0}" = 1 ]; then
+  cp "$updated" "$cases"
+  echo "updated $cases"
+  exit 0
+fi
+echo "$count bad-input cases, $failures failed"
+[ "$failures" -eq 0 ]
