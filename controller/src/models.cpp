@@ -93,20 +93,11 @@ template <typename Visit>
 void trace_flat(const OccupancyGrid &grid, Point from, double dir_x, double dir_y, Visit &&visit) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const GridGeometry &g = grid.geometry();
-  const double size = g.subcell_size_m();
-  const double px = (from.x_m - g.origin.x_m) / size;
-  const double py = (from.y_m - g.origin.y_m) / size;
+  const auto start = start_traversal(g, from, dir_x, dir_y);
+  if (!start) return;
   const int width = g.width_subcells();
   const int height = g.height_subcells();
-  if (!(px >= 0.0 && py >= 0.0 && px < width && py < height)) return;
-  int x = static_cast<int>(px);
-  int y = static_cast<int>(py);
-  const int step_x = dir_x > 0.0 ? 1 : (dir_x < 0.0 ? -1 : 0);
-  const int step_y = dir_y > 0.0 ? 1 : (dir_y < 0.0 ? -1 : 0);
-  const double delta_x = step_x != 0 ? size / std::abs(dir_x) : inf;
-  const double delta_y = step_y != 0 ? size / std::abs(dir_y) : inf;
-  double next_x = step_x > 0 ? (x + 1 - px) * delta_x : (step_x < 0 ? (px - x) * delta_x : inf);
-  double next_y = step_y > 0 ? (y + 1 - py) * delta_y : (step_y < 0 ? (py - y) * delta_y : inf);
+  auto [x, y, step_x, step_y, delta_x, delta_y, next_x, next_y] = *start;
   // Flat index and position inside the cell: j from the west, r from the south (i = K-1-r).
   const std::ptrdiff_t k = g.subcells;
   const std::ptrdiff_t row_of_cells = static_cast<std::ptrdiff_t>(g.width_cells) * k * k;

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -71,6 +72,38 @@ std::size_t integrate_scan(const MappingOptions &options, OccupancyGrid &grid,
                            const LidarScan &scan, Cell robot_cell, const SensorModel &model,
                            ScanUpdate &update);
 
+// Where an Amanatides-Woo traversal starts: the sub-cell holding `from`, the step
+// direction on each axis, the path length (m) across one sub-cell on each axis, and the
+// path length to the first sub-cell boundary on each axis (infinity on an axis the ray
+// does not move along). Nothing when `from` is outside the grid.
+struct TraversalStart {
+  int x, y;
+  int step_x, step_y;
+  double delta_x, delta_y;
+  double next_x, next_y;
+};
+
+inline std::optional<TraversalStart> start_traversal(const GridGeometry &g, Point from,
+                                                     double dir_x, double dir_y) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double size = g.subcell_size_m();
+  const double px = (from.x_m - g.origin.x_m) / size;
+  const double py = (from.y_m - g.origin.y_m) / size;
+  if (!(px >= 0.0 && py >= 0.0 && px < g.width_subcells() && py < g.height_subcells())) {
+    return std::nullopt;
+  }
+  TraversalStart t;
+  t.x = static_cast<int>(px);
+  t.y = static_cast<int>(py);
+  t.step_x = dir_x > 0.0 ? 1 : (dir_x < 0.0 ? -1 : 0);
+  t.step_y = dir_y > 0.0 ? 1 : (dir_y < 0.0 ? -1 : 0);
+  t.delta_x = t.step_x != 0 ? size / std::abs(dir_x) : inf;
+  t.delta_y = t.step_y != 0 ? size / std::abs(dir_y) : inf;
+  t.next_x = t.step_x > 0 ? (t.x + 1 - px) * t.delta_x : (t.step_x < 0 ? (px - t.x) * t.delta_x : inf);
+  t.next_y = t.step_y > 0 ? (t.y + 1 - py) * t.delta_y : (t.step_y < 0 ? (py - t.y) * t.delta_y : inf);
+  return t;
+}
+
 // Exact grid traversal (Amanatides & Woo, 1987). Calls visit(SubCell s, double exit_m) for
 // every sub-cell the ray from `from` along the unit direction (dir_x, dir_y) passes through,
 // in order, starting with the sub-cell containing `from`; exit_m is the path length (m) at
@@ -80,20 +113,11 @@ std::size_t integrate_scan(const MappingOptions &options, OccupancyGrid &grid,
 template <typename Visit>
 void trace_ray(const GridGeometry &g, Point from, double dir_x, double dir_y, Visit &&visit) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  const double size = g.subcell_size_m();
-  const double px = (from.x_m - g.origin.x_m) / size;
-  const double py = (from.y_m - g.origin.y_m) / size;
+  const auto start = start_traversal(g, from, dir_x, dir_y);
+  if (!start) return;
   const int width = g.width_subcells();
   const int height = g.height_subcells();
-  if (!(px >= 0.0 && py >= 0.0 && px < width && py < height)) return;
-  int x = static_cast<int>(px);
-  int y = static_cast<int>(py);
-  const int step_x = dir_x > 0.0 ? 1 : (dir_x < 0.0 ? -1 : 0);
-  const int step_y = dir_y > 0.0 ? 1 : (dir_y < 0.0 ? -1 : 0);
-  const double delta_x = step_x != 0 ? size / std::abs(dir_x) : inf;
-  const double delta_y = step_y != 0 ? size / std::abs(dir_y) : inf;
-  double next_x = step_x > 0 ? (x + 1 - px) * delta_x : (step_x < 0 ? (px - x) * delta_x : inf);
-  double next_y = step_y > 0 ? (y + 1 - py) * delta_y : (step_y < 0 ? (py - y) * delta_y : inf);
+  auto [x, y, step_x, step_y, delta_x, delta_y, next_x, next_y] = *start;
   for (;;) {
     const double exit_m = std::min(next_x, next_y);
     if (!visit(SubCell{x, y}, exit_m) || exit_m == inf) return;
