@@ -1,11 +1,12 @@
 #!/bin/sh
-# Installs the Debian 12 packages maze_mapper needs to build and test.
+# Installs the Debian 12 packages maze_mapper needs to build and test, and any further
+# package names given as arguments (scripts/install-bench-deps.sh passes its own).
 # Idempotent: packages already present are left alone and apt is not called.
 set -eu
 
 PACKAGES="cmake ninja-build g++ clang libclang-rt-14-dev \
 libeigen3-dev libfmt-dev doctest-dev libcli11-dev libtinyxml2-dev libbenchmark-dev \
-libpng-dev nlohmann-json3-dev tmux"
+libpng-dev nlohmann-json3-dev tmux $*"
 
 missing=""
 for pkg in $PACKAGES; do

@@ -53,27 +53,26 @@ void check_perfect_mapping(mapping::ModelKind model, int k, explore::StrategyKin
   }
 }
 
+// Noise off, every maze, K = 3 and 5, dfs and frontier.
+void check_perfect_mapping_all(mapping::ModelKind model) {
+  for (const int k : {3, 5}) {
+    for (const auto strategy : {explore::StrategyKind::dfs, explore::StrategyKind::frontier}) {
+      CAPTURE(k);
+      CAPTURE(explore::to_string(strategy));
+      check_perfect_mapping(model, k, strategy);
+    }
+  }
+}
+
 }  // namespace
 
 TEST_SUITE("acceptance") {
   TEST_CASE("noise off with the cell model: every perfect maze is mapped exactly for K 3 and 5 with dfs and frontier") {
-    for (const int k : {3, 5}) {
-      for (const auto strategy : {explore::StrategyKind::dfs, explore::StrategyKind::frontier}) {
-        CAPTURE(k);
-        CAPTURE(explore::to_string(strategy));
-        check_perfect_mapping(mapping::ModelKind::cell, k, strategy);
-      }
-    }
+    check_perfect_mapping_all(mapping::ModelKind::cell);
   }
 
   TEST_CASE("noise off with the ray model: every perfect maze is mapped exactly for K 3 and 5 with dfs and frontier") {
-    for (const int k : {3, 5}) {
-      for (const auto strategy : {explore::StrategyKind::dfs, explore::StrategyKind::frontier}) {
-        CAPTURE(k);
-        CAPTURE(explore::to_string(strategy));
-        check_perfect_mapping(mapping::ModelKind::ray, k, strategy);
-      }
-    }
+    check_perfect_mapping_all(mapping::ModelKind::ray);
   }
 
   TEST_CASE("default noise: wall_accuracy at least 99.9 % over the same mazes") {

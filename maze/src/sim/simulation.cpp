@@ -222,6 +222,11 @@ int Simulation::sampling_period(int device) const {
   return states_[static_cast<std::size_t>(device)].sampling_period_ms;
 }
 
+void Simulation::read_disabled(DeviceState &state) {
+  state.cache[0] = state.cache[1] = state.cache[2] = kNaN;
+  state.read_at_step = -1;
+}
+
 bool Simulation::fresh(DeviceState &state) {
   if (state.read_at_step == steps_) return true;
   state.read_at_step = steps_;
@@ -300,8 +305,7 @@ double Simulation::encoder_value(int device) {
 const double *Simulation::imu_roll_pitch_yaw(int device) {
   DeviceState &state = states_[static_cast<std::size_t>(device)];
   if (state.sampling_period_ms == 0) {
-    state.cache[0] = state.cache[1] = state.cache[2] = kNaN;
-    state.read_at_step = -1;
+    read_disabled(state);
   } else if (!fresh(state)) {
     common::Rng rng = rng_for(device);
     double yaw = pose_.yaw_rad;
@@ -316,8 +320,7 @@ const double *Simulation::imu_roll_pitch_yaw(int device) {
 const double *Simulation::gps_values(int device) {
   DeviceState &state = states_[static_cast<std::size_t>(device)];
   if (state.sampling_period_ms == 0) {
-    state.cache[0] = state.cache[1] = state.cache[2] = kNaN;
-    state.read_at_step = -1;
+    read_disabled(state);
   } else if (!fresh(state)) {
     common::Rng rng = rng_for(device);
     const double sigma = options_.gps_noise_m;

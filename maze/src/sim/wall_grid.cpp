@@ -18,28 +18,25 @@ struct Ray {
   double ox, oy, dx, dy, inv_dx, inv_dy;
 };
 
+// Narrows [t_min, t_max] to where the ray is within [lo, hi] on one axis (origin o,
+// direction d, 1/d); false when it never is (a ray parallel to the axis outside the slab).
+bool clip_to_slab(double o, double d, double inv_d, double lo, double hi, double &t_min,
+                  double &t_max) {
+  if (d == 0.0) return o >= lo && o <= hi;
+  double a = (lo - o) * inv_d;
+  double c = (hi - o) * inv_d;
+  if (a > c) std::swap(a, c);
+  t_min = std::max(t_min, a);
+  t_max = std::min(t_max, c);
+  return true;
+}
+
 // Distance t >= 0 at which the ray enters the closed box, or +infinity.
 double entry_distance(const Ray &r, double x_min, double y_min, double x_max, double y_max) {
   double t_min = 0.0;
   double t_max = kInfinity;
-  if (r.dx == 0.0) {
-    if (r.ox < x_min || r.ox > x_max) return kInfinity;
-  } else {
-    double a = (x_min - r.ox) * r.inv_dx;
-    double c = (x_max - r.ox) * r.inv_dx;
-    if (a > c) std::swap(a, c);
-    t_min = std::max(t_min, a);
-    t_max = std::min(t_max, c);
-  }
-  if (r.dy == 0.0) {
-    if (r.oy < y_min || r.oy > y_max) return kInfinity;
-  } else {
-    double a = (y_min - r.oy) * r.inv_dy;
-    double c = (y_max - r.oy) * r.inv_dy;
-    if (a > c) std::swap(a, c);
-    t_min = std::max(t_min, a);
-    t_max = std::min(t_max, c);
-  }
+  if (!clip_to_slab(r.ox, r.dx, r.inv_dx, x_min, x_max, t_min, t_max)) return kInfinity;
+  if (!clip_to_slab(r.oy, r.dy, r.inv_dy, y_min, y_max, t_min, t_max)) return kInfinity;
   return t_min <= t_max ? t_min : kInfinity;
 }
 

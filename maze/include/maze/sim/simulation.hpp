@@ -137,6 +137,7 @@ class Simulation {
   void advance(double dt_s);
   double wheel_rate(const Wheel &wheel, double dt_s) const;
   bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
+  void read_disabled(DeviceState &state);  // a disabled three-value device reads NaN
   common::Rng rng_for(int device) const;
   double lidar_noise(const maze::sim::LidarSpec &spec) const;
   void apply_lidar_faults(int device, const maze::sim::LidarSpec &spec, std::vector<float> &ranges) const;
