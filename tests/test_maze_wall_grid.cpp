@@ -1,9 +1,13 @@
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
+#include "common/random.hpp"
+#include "maze/generator.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/wall_grid.hpp"
 
@@ -101,4 +105,90 @@ TEST_CASE("WallGrid::push_out: a disc is moved clear of a wall along the normal"
   CHECK(x == doctest::Approx(0.5));
   CHECK(y == doctest::Approx(1.0 - h - 0.09));
   CHECK_FALSE(walls.push_out(x, y, 0.09));
+}
+
+TEST_CASE("WallGrid::cast_direction: bit for bit the reference on random rays through generated mazes") {
+  // The fast cast shares the edge arithmetic per cell; the reference runs one slab test per
+  // box. Random origins (many on cell centres, where the robot scans), random directions,
+  // loops so that beams travel far, a small wall-to-cell ratio and a thick one.
+  common::Rng rng(8);
+  for (const double thickness : {maze::kDefaultWallThickness_m, 0.2}) {
+    for (const std::uint64_t seed : {1u, 2u, 3u}) {
+      maze::GeneratorOptions g;
+      g.width = 12;
+      g.height = 9;
+      g.seed = seed;
+      g.loops = seed == 3 ? 0.5 : 0.0;
+      maze::Maze m = maze::generate_maze(g);
+      m.set_physical(0.7, thickness, -1.25, 2.5);
+      const maze::sim::WallGrid walls(m);
+      int compared = 0;
+      int hits = 0;
+      for (int i = 0; i < 20000; ++i) {
+        double x = -1.25 + rng.uniform(0.0, 12 * 0.7);
+        double y = 2.5 + rng.uniform(0.0, 9 * 0.7);
+        if (i % 2 == 0) {  // a cell centre
+          x = -1.25 + (std::floor((x + 1.25) / 0.7) + 0.5) * 0.7;
+          y = 2.5 + (std::floor((y - 2.5) / 0.7) + 0.5) * 0.7;
+        }
+        if (walls.inside_wall(x, y)) continue;
+        const double a = rng.uniform(-kPi, kPi);
+        const double dx = std::cos(a);
+        const double dy = std::sin(a);
+        const double max_range = i % 3 == 0 ? 1.0 : 12.0;
+        const double fast = walls.cast_direction(x, y, dx, dy, max_range);
+        const double reference = walls.cast_reference(x, y, dx, dy, max_range);
+        CAPTURE(x);
+        CAPTURE(y);
+        CAPTURE(a);
+        REQUIRE(std::bit_cast<std::uint64_t>(fast) == std::bit_cast<std::uint64_t>(reference));
+        ++compared;
+        hits += fast < kInf ? 1 : 0;
+      }
+      CHECK(compared > 15000);
+      CHECK(hits > compared / 2);
+      CHECK(hits < compared);  // max range 1 leaves some beams without a return
+    }
+  }
+}
+
+TEST_CASE("WallGrid::free_centres: a disc centred inside the box touches no wall") {
+  // Conservative by construction; checked against contacts() at random points, with the
+  // pair-of-cells boxes near open sides included.
+  common::Rng rng(9);
+  maze::GeneratorOptions g;
+  g.width = 10;
+  g.height = 10;
+  g.seed = 4;
+  const maze::Maze m = maze::generate_maze(g);
+  const maze::sim::WallGrid walls(m);
+  const double radius = 0.09;
+  int boxes = 0, pairs = 0, checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double x = rng.uniform(0.0, 10.0);
+    const double y = rng.uniform(0.0, 10.0);
+    const auto box = walls.free_centres(x, y, radius);
+    if (!box) continue;
+    ++boxes;
+    pairs += (box->x_max_m - box->x_min_m > 1.0 || box->y_max_m - box->y_min_m > 1.0) ? 1 : 0;
+    // Points anywhere in the box, not only the one it was asked about.
+    for (int j = 0; j < 4; ++j) {
+      const double px = rng.uniform(box->x_min_m, box->x_max_m);
+      const double py = rng.uniform(box->y_min_m, box->y_max_m);
+      if (!box->strictly_contains(px, py)) continue;
+      for (const maze::sim::Contact &c : walls.contacts(px, py, radius + 1e-6)) {
+        CAPTURE(px);
+        CAPTURE(py);
+        CHECK(c.distance_m > radius);
+      }
+      double qx = px, qy = py;
+      CHECK_FALSE(walls.push_out(qx, qy, radius));
+      ++checked;
+    }
+  }
+  CHECK(boxes == 20000);
+  CHECK(pairs > 1000);
+  CHECK(checked > 70000);
+  CHECK_FALSE(walls.free_centres(-0.5, 3.0, radius).has_value());
+  CHECK_FALSE(walls.free_centres(3.0, 3.0, 0.6).has_value());  // a disc wider than a cell
 }

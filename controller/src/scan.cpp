@@ -11,6 +11,8 @@ namespace mapping {
 
 double wrap_angle_rad(double angle_rad) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
+  // Already wrapped: the common case, and fmod would return it unchanged.
+  if (angle_rad > -std::numbers::pi && angle_rad <= std::numbers::pi) return angle_rad;
   double a = std::fmod(angle_rad, two_pi);
   if (a <= -std::numbers::pi) a += two_pi;
   if (a > std::numbers::pi) a -= two_pi;

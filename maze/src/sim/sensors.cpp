@@ -32,6 +32,8 @@ void check_pose_free(const WallGrid &walls, const Pose &pose) {
 
 double wrap_angle(double angle_rad) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  // Already wrapped: the common case, and fmod would return it unchanged.
+  if (angle_rad > -std::numbers::pi && angle_rad <= std::numbers::pi) return angle_rad;
   double a = std::fmod(angle_rad, kTwoPi);
   if (a <= -std::numbers::pi) a += kTwoPi;
   if (a > std::numbers::pi) a -= kTwoPi;

@@ -210,8 +210,16 @@ void Simulation::advance(double dt_s) {
       pose_.y_m += chord * std::sin(pose_.yaw_rad + half);
     }
     pose_.yaw_rad = maze::sim::wrap_angle(pose_.yaw_rad + turn);
-    walls_.push_out(pose_.x_m, pose_.y_m, profile_.body_radius_m);
+    keep_body_out_of_walls();
   }
+}
+
+void Simulation::keep_body_out_of_walls() {
+  const double radius = profile_.body_radius_m;
+  if (free_centres_ && free_centres_->strictly_contains(pose_.x_m, pose_.y_m)) return;
+  free_centres_ = walls_.free_centres(pose_.x_m, pose_.y_m, radius);
+  if (free_centres_ && free_centres_->strictly_contains(pose_.x_m, pose_.y_m)) return;
+  walls_.push_out(pose_.x_m, pose_.y_m, radius);
 }
 
 void Simulation::set_sampling_period(int device, int period_ms) {
@@ -293,10 +301,10 @@ double Simulation::encoder_value(int device) {
   DeviceState &state = states_[static_cast<std::size_t>(device)];
   if (state.sampling_period_ms == 0) return kNaN;
   if (!fresh(state)) {
-    common::Rng rng = rng_for(device);
+    // The random stream is made only when it is drawn from (seeding it costs).
     const double angle = wheels_[state.spec].angle_rad;
     state.cache[0] = options_.encoder_noise_rad > 0.0
-                         ? angle + rng.normal(0.0, options_.encoder_noise_rad)
+                         ? angle + rng_for(device).normal(0.0, options_.encoder_noise_rad)
                          : angle;
   }
   return state.cache[0];
@@ -307,9 +315,8 @@ const double *Simulation::imu_roll_pitch_yaw(int device) {
   if (state.sampling_period_ms == 0) {
     read_disabled(state);
   } else if (!fresh(state)) {
-    common::Rng rng = rng_for(device);
     double yaw = pose_.yaw_rad;
-    if (options_.imu_noise_rad > 0.0) yaw += rng.normal(0.0, options_.imu_noise_rad);
+    if (options_.imu_noise_rad > 0.0) yaw += rng_for(device).normal(0.0, options_.imu_noise_rad);
     state.cache[0] = 0.0;
     state.cache[1] = 0.0;
     state.cache[2] = maze::sim::wrap_angle(yaw);
@@ -322,11 +329,16 @@ const double *Simulation::gps_values(int device) {
   if (state.sampling_period_ms == 0) {
     read_disabled(state);
   } else if (!fresh(state)) {
-    common::Rng rng = rng_for(device);
     const double sigma = options_.gps_noise_m;
-    state.cache[0] = pose_.x_m + (sigma > 0.0 ? rng.normal(0.0, sigma) : 0.0);
-    state.cache[1] = pose_.y_m + (sigma > 0.0 ? rng.normal(0.0, sigma) : 0.0);
-    state.cache[2] = sigma > 0.0 ? rng.normal(0.0, sigma) : 0.0;
+    state.cache[0] = pose_.x_m;
+    state.cache[1] = pose_.y_m;
+    state.cache[2] = 0.0;
+    if (sigma > 0.0) {
+      common::Rng rng = rng_for(device);
+      state.cache[0] += rng.normal(0.0, sigma);
+      state.cache[1] += rng.normal(0.0, sigma);
+      state.cache[2] += rng.normal(0.0, sigma);
+    }
   }
   return state.cache;
 }

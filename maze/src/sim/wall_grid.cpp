@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace maze::sim {
 
@@ -12,6 +13,8 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // An overlap smaller than this is rounding, not a collision.
 constexpr double kSlop_m = 1e-12;
+// disc_in_free_core's safety margin: far above rounding, far below any wall thickness.
+constexpr double kCoreMargin_m = 1e-9;
 
 // A ray (ox, oy) + t (dx, dy), with the inverses of its direction precomputed.
 struct Ray {
@@ -149,6 +152,79 @@ double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range
 
 double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
                                 double max_range_m) const {
+  // A ray along an axis has slabs it never crosses: the reference handles those exactly.
+  if (dx == 0.0 || dy == 0.0 || !(std::isfinite(dx) && std::isfinite(dy))) {
+    return cast_reference(x_m, y_m, dx, dy, max_range_m);
+  }
+  if (!inside_maze(x_m, y_m)) return kInfinity;
+  const double s = cell_size_m_;
+  const double ox = x_m - origin_x_m_;
+  const double oy = y_m - origin_y_m_;
+  const double inv_dx = 1.0 / dx;
+  const double inv_dy = 1.0 / dy;
+  int cx = std::min(static_cast<int>(ox / s), width_ - 1);
+  int cy = std::min(static_cast<int>(oy / s), height_ - 1);
+  const bool east = dx > 0.0;
+  const bool north = dy > 0.0;
+  // The boxes with a face turned towards the ray, as in cast_reference.
+  const std::uint8_t mask = static_cast<std::uint8_t>(
+      (east ? kEast | kCornerNE | kCornerSE : kWest | kCornerNW | kCornerSW) |
+      (north ? kNorth | kCornerNE | kCornerNW : kSouth | kCornerSW | kCornerSE));
+  const int step_x = east ? 1 : -1;
+  const int step_y = north ? 1 : -1;
+  const double t_delta_x = s * std::abs(inv_dx);
+  const double t_delta_y = s * std::abs(inv_dy);
+  double t_max_x = ((cx + (east ? 1 : 0)) * s - ox) * inv_dx;
+  double t_max_y = ((cy + (north ? 1 : 0)) * s - oy) * inv_dy;
+  const double h = half_thickness_m_;
+  for (;;) {
+    const std::uint8_t f = flags(cx, cy) & mask;
+    if (f != 0) {
+      // The same slab arithmetic as entry_distance, each of the cell's four x and four y
+      // box edges computed once: (edge - origin) / direction.
+      const double x0 = cx * s;
+      const double y0 = cy * s;
+      const double x1 = x0 + s;
+      const double y1 = y0 + s;
+      const double tx[4] = {(x0 - ox) * inv_dx, (x0 + h - ox) * inv_dx, (x1 - h - ox) * inv_dx,
+                            (x1 - ox) * inv_dx};
+      const double ty[4] = {(y0 - oy) * inv_dy, (y0 + h - oy) * inv_dy, (y1 - h - oy) * inv_dy,
+                            (y1 - oy) * inv_dy};
+      // Entry and exit of the box spanning edges [xl, xh] x [yl, yh] (indices into tx, ty).
+      double best = kInfinity;
+      const auto box = [&](int xl, int xh, int yl, int yh) {
+        const double in_x = east ? tx[xl] : tx[xh];
+        const double out_x = east ? tx[xh] : tx[xl];
+        const double in_y = north ? ty[yl] : ty[yh];
+        const double out_y = north ? ty[yh] : ty[yl];
+        const double t_in = std::max(std::max(0.0, in_x), in_y);
+        const double t_out = std::min(out_x, out_y);
+        if (t_in <= t_out) best = std::min(best, t_in);
+      };
+      if (f & kNorth) box(0, 3, 2, 3);
+      if (f & kSouth) box(0, 3, 0, 1);
+      if (f & kEast) box(2, 3, 0, 3);
+      if (f & kWest) box(0, 1, 0, 3);
+      if (f & kCornerNE) box(2, 3, 2, 3);
+      if (f & kCornerNW) box(0, 1, 2, 3);
+      if (f & kCornerSW) box(0, 1, 0, 1);
+      if (f & kCornerSE) box(2, 3, 0, 1);
+      if (best < kInfinity) return best <= max_range_m ? best : kInfinity;
+    }
+    if (std::min(t_max_x, t_max_y) > max_range_m) return kInfinity;
+    if (t_max_x < t_max_y) {
+      cx += step_x;
+      t_max_x += t_delta_x;
+    } else {
+      cy += step_y;
+      t_max_y += t_delta_y;
+    }
+    if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_) return kInfinity;
+  }
+}
+
+double WallGrid::cast_reference(double x_m, double y_m, double dx, double dy,
+                                double max_range_m) const {
   if (!inside_maze(x_m, y_m)) return kInfinity;
   const double s = cell_size_m_;
   const Ray ray{x_m - origin_x_m_, y_m - origin_y_m_, dx, dy, 1.0 / dx, 1.0 / dy};
@@ -199,6 +275,36 @@ double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
     }
     if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_) return kInfinity;
   }
+}
+
+std::optional<Box> WallGrid::free_centres(double x_m, double y_m, double radius_m) const {
+  const double s = cell_size_m_;
+  const double lx = x_m - origin_x_m_;
+  const double ly = y_m - origin_y_m_;
+  const double fx = std::floor(lx / s);
+  const double fy = std::floor(ly / s);
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < width_ && fy < height_)) return std::nullopt;
+  // Every solid box of this cell lies within h of its sides, every other cell's box outside
+  // it; the margin keeps the answer on the safe side of rounding.
+  const double reach = radius_m + half_thickness_m_ + kCoreMargin_m;
+  if (2.0 * reach >= s) return std::nullopt;
+  const double x0 = origin_x_m_ + fx * s;
+  const double y0 = origin_y_m_ + fy * s;
+  Box core{x0 + reach, y0 + reach, x0 + s - reach, y0 + s - reach};
+  // Near an open side, the box reaches on through it to the far side of the neighbour: the
+  // solid boxes of two cells sharing an open side all lie within h of the pair's outer sides
+  // or at the ends of the shared side, so the pair's core is clear too. A body driving from
+  // cell to cell then stays inside one box all the way.
+  const int cx = static_cast<int>(fx);
+  const int cy = static_cast<int>(fy);
+  const std::uint8_t f = flags(cx, cy);
+  const bool within_x = x_m > core.x_min_m && x_m < core.x_max_m;
+  const bool within_y = y_m > core.y_min_m && y_m < core.y_max_m;
+  if (within_y && x_m >= core.x_max_m && !(f & kEast) && cx + 1 < width_) core.x_max_m += s;
+  if (within_y && x_m <= core.x_min_m && !(f & kWest) && cx > 0) core.x_min_m -= s;
+  if (within_x && y_m >= core.y_max_m && !(f & kNorth) && cy + 1 < height_) core.y_max_m += s;
+  if (within_x && y_m <= core.y_min_m && !(f & kSouth) && cy > 0) core.y_min_m -= s;
+  return core;
 }
 
 bool WallGrid::push_out(double &x_m, double &y_m, double radius_m) const {

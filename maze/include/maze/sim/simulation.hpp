@@ -135,6 +135,9 @@ class Simulation {
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
   void advance(double dt_s);
+  // push_out, skipped while the body is inside the cached free_centres_ box (exact: the
+  // box is conservative, so the pose is the same as with push_out every substep).
+  void keep_body_out_of_walls();
   double wheel_rate(const Wheel &wheel, double dt_s) const;
   bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
   void read_disabled(DeviceState &state);  // a disabled three-value device reads NaN
@@ -146,6 +149,9 @@ class Simulation {
   maze::sim::SimulationOptions options_;
   maze::sim::WallGrid walls_;
   maze::sim::Pose pose_;
+  // Where the body's centre touches no wall (WallGrid::free_centres), for the cell the body
+  // was last pushed out in: inside it, a physics substep needs no push_out.
+  std::optional<maze::sim::Box> free_centres_;
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;

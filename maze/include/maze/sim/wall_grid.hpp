@@ -21,6 +21,7 @@
 // Rectangles are closed: a ray that touches a wall's face or corner hits it.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "maze/maze.hpp"
@@ -30,6 +31,11 @@ namespace maze::sim {
 // An axis-aligned solid box in world metres.
 struct Box {
   double x_min_m, y_min_m, x_max_m, y_max_m;
+
+  // Whether (x, y) lies strictly inside.
+  bool strictly_contains(double x_m, double y_m) const {
+    return x_m > x_min_m && x_m < x_max_m && y_m > y_min_m && y_m < y_max_m;
+  }
 };
 
 // A point on a wall's surface within reach of a disc, and the disc centre's distance to it.
@@ -60,10 +66,22 @@ class WallGrid {
   double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
   // The same along the unit vector (dx, dy).
   double cast_direction(double x_m, double y_m, double dx, double dy, double max_range_m) const;
+  // cast_direction's plain form, one slab test per box: the same answers bit for bit (the
+  // tests hold cast_direction to it); cast_direction uses it for rays along an axis.
+  double cast_reference(double x_m, double y_m, double dx, double dy, double max_range_m) const;
 
   // Pushes a disc of radius_m centred at (x, y) out of every wall it overlaps (the smallest
   // move, so motion along a wall slides and motion into it stops). Returns whether it moved.
   bool push_out(double &x_m, double &y_m, double radius_m) const;
+
+  // Where the centre of a disc of radius_m may be without touching any wall, around the
+  // point (x, y): the part of the point's cell farther than radius_m (plus a margin far
+  // above rounding) from everything solid that cell could hold, i.e. from its sides less
+  // half a wall thickness; when the point is beyond that part towards an open side (and
+  // within it the other way), the box spans the neighbour across that side as well. A disc
+  // centred strictly inside the box touches no wall and needs no push_out.
+  // Nothing when the point is outside the maze or the disc does not fit in a cell. O(1).
+  std::optional<Box> free_centres(double x_m, double y_m, double radius_m) const;
 
   // The nearest surface point of each solid box within reach_m of (x, y).
   std::vector<Contact> contacts(double x_m, double y_m, double reach_m) const;
