@@ -48,21 +48,12 @@ class Rng {
     }
   }
 
-  // Standard normal variate (Box–Muller; the second value of each pair is kept for the next call).
-  double normal() {
-    if (has_spare_) {
-      has_spare_ = false;
-      return spare_;
-    }
-    double u1 = uniform01();
-    while (u1 <= 0.0) u1 = uniform01();
-    const double u2 = uniform01();
-    const double radius = std::sqrt(-2.0 * std::log(u1));
-    const double angle = 2.0 * std::numbers::pi * u2;
-    spare_ = radius * std::sin(angle);
-    has_spare_ = true;
-    return radius * std::cos(angle);
-  }
+  // Standard normal variate: the ziggurat method (Marsaglia & Tsang, 2000) with 128 layers,
+  // in Doornik's form (2005): one 64-bit draw gives the uniform and the layer, and about
+  // 98.8 % of calls return after one multiply and one compare; the rest test a wedge
+  // (two exp) or draw from the tail beyond kZigguratR (two log). Much cheaper than
+  // Box–Muller's log, sqrt, sin and cos; exact in distribution.
+  double normal();
 
   double normal(double mean, double stddev) { return mean + stddev * normal(); }
 
@@ -85,9 +76,63 @@ class Rng {
   }
 
   std::uint64_t state_[4]{};
-  double spare_ = 0.0;
-  bool has_spare_ = false;
 };
+
+namespace detail {
+
+// The ziggurat's layer edges x[0] > x[1] = R > ... > x[128] = 0 for the standard normal
+// density f(x) = exp(-x^2 / 2), each layer (and the base with its tail) of area V.
+inline constexpr int kZigguratLayers = 128;
+inline constexpr double kZigguratR = 3.442619855899;
+inline constexpr double kZigguratV = 9.91256303526217e-3;
+
+struct ZigguratTable {
+  double x[kZigguratLayers + 1];
+  double ratio[kZigguratLayers];  // x[i + 1] / x[i]: below it, the point is inside layer i
+
+  ZigguratTable() {
+    const auto f = [](double v) { return std::exp(-0.5 * v * v); };
+    x[0] = kZigguratV / f(kZigguratR);
+    x[1] = kZigguratR;
+    for (int i = 2; i < kZigguratLayers; ++i) {
+      x[i] = std::sqrt(-2.0 * std::log(kZigguratV / x[i - 1] + f(x[i - 1])));
+    }
+    x[kZigguratLayers] = 0.0;
+    for (int i = 0; i < kZigguratLayers; ++i) ratio[i] = x[i + 1] / x[i];
+  }
+};
+
+inline const ZigguratTable kZiggurat;
+
+}  // namespace detail
+
+inline double Rng::normal() {
+  const detail::ZigguratTable &z = detail::kZiggurat;
+  for (;;) {
+    const std::uint64_t bits = next_u64();
+    const auto layer = static_cast<int>(bits & (detail::kZigguratLayers - 1));
+    const double u = 2.0 * (static_cast<double>(bits >> 11) * 0x1.0p-53) - 1.0;  // [-1, 1)
+    if (std::abs(u) < z.ratio[layer]) return u * z.x[layer];
+    if (layer == 0) {
+      // The tail beyond R (Marsaglia, 1964).
+      double tail = 0.0, y = 0.0;
+      do {
+        double u1 = uniform01();
+        while (u1 <= 0.0) u1 = uniform01();
+        double u2 = uniform01();
+        while (u2 <= 0.0) u2 = uniform01();
+        tail = -std::log(u1) / detail::kZigguratR;
+        y = -std::log(u2);
+      } while (y + y < tail * tail);
+      return u < 0.0 ? -(detail::kZigguratR + tail) : detail::kZigguratR + tail;
+    }
+    // The wedge between layer's rectangle and the curve.
+    const double v = u * z.x[layer];
+    const double f0 = std::exp(-0.5 * (z.x[layer] * z.x[layer] - v * v));
+    const double f1 = std::exp(-0.5 * (z.x[layer + 1] * z.x[layer + 1] - v * v));
+    if (f1 + uniform01() * (f0 - f1) < 1.0) return v;
+  }
+}
 
 inline constexpr std::uint64_t kDefaultSeed = 42;
 
