@@ -61,10 +61,11 @@ void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &po
   const double c = std::cos(pose.yaw_rad);
   const double s = std::sin(pose.yaw_rad);
   constexpr float kNoReturn = std::numeric_limits<float>::infinity();
+  const WallGrid::CastOrigin origin = walls.cast_origin(pose.x_m, pose.y_m);
   for (std::size_t i = 0; i < cos_.size(); ++i) {
     const double dx = c * cos_[i] - s * sin_[i];
     const double dy = s * cos_[i] + c * sin_[i];
-    double range = walls.cast_direction(pose.x_m, pose.y_m, dx, dy, reach_m);
+    double range = walls.cast_from(origin, dx, dy, reach_m);
     if (sigma_m > 0.0) range += rng.normal(0.0, sigma_m);
     const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
     out[i] = in_range ? static_cast<float>(range) : kNoReturn;

@@ -150,65 +150,105 @@ double WallGrid::cast(double x_m, double y_m, double angle_rad, double max_range
   return cast_direction(x_m, y_m, std::cos(angle_rad), std::sin(angle_rad), max_range_m);
 }
 
+WallGrid::CastOrigin WallGrid::cast_origin(double x_m, double y_m) const {
+  CastOrigin o;
+  o.x_m = x_m;
+  o.y_m = y_m;
+  o.inside = inside_maze(x_m, y_m);
+  o.local_x_m = x_m - origin_x_m_;
+  o.local_y_m = y_m - origin_y_m_;
+  o.cell_x = o.inside ? std::min(static_cast<int>(o.local_x_m / cell_size_m_), width_ - 1) : 0;
+  o.cell_y = o.inside ? std::min(static_cast<int>(o.local_y_m / cell_size_m_), height_ - 1) : 0;
+  return o;
+}
+
 double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
                                 double max_range_m) const {
+  return cast_from(cast_origin(x_m, y_m), dx, dy, max_range_m);
+}
+
+double WallGrid::cast_from(const CastOrigin &origin, double dx, double dy,
+                           double max_range_m) const {
   // A ray along an axis has slabs it never crosses: the reference handles those exactly.
   if (dx == 0.0 || dy == 0.0 || !(std::isfinite(dx) && std::isfinite(dy))) {
-    return cast_reference(x_m, y_m, dx, dy, max_range_m);
+    return cast_reference(origin.x_m, origin.y_m, dx, dy, max_range_m);
   }
-  if (!inside_maze(x_m, y_m)) return kInfinity;
+  if (!origin.inside) return kInfinity;
+  if (dx > 0.0) {
+    return dy > 0.0 ? cast_quadrant<true, true>(origin, dx, dy, max_range_m)
+                    : cast_quadrant<true, false>(origin, dx, dy, max_range_m);
+  }
+  return dy > 0.0 ? cast_quadrant<false, true>(origin, dx, dy, max_range_m)
+                  : cast_quadrant<false, false>(origin, dx, dy, max_range_m);
+}
+
+template <bool kEastward, bool kNorthward>
+double WallGrid::cast_quadrant(const CastOrigin &origin, double dx, double dy,
+                               double max_range_m) const {
   const double s = cell_size_m_;
-  const double ox = x_m - origin_x_m_;
-  const double oy = y_m - origin_y_m_;
+  const double ox = origin.local_x_m;
+  const double oy = origin.local_y_m;
   const double inv_dx = 1.0 / dx;
   const double inv_dy = 1.0 / dy;
-  int cx = std::min(static_cast<int>(ox / s), width_ - 1);
-  int cy = std::min(static_cast<int>(oy / s), height_ - 1);
-  const bool east = dx > 0.0;
-  const bool north = dy > 0.0;
+  int cx = origin.cell_x;
+  int cy = origin.cell_y;
   // The boxes with a face turned towards the ray, as in cast_reference.
-  const std::uint8_t mask = static_cast<std::uint8_t>(
-      (east ? kEast | kCornerNE | kCornerSE : kWest | kCornerNW | kCornerSW) |
-      (north ? kNorth | kCornerNE | kCornerNW : kSouth | kCornerSW | kCornerSE));
-  const int step_x = east ? 1 : -1;
-  const int step_y = north ? 1 : -1;
+  constexpr std::uint8_t mask = static_cast<std::uint8_t>(
+      (kEastward ? kEast | kCornerNE | kCornerSE : kWest | kCornerNW | kCornerSW) |
+      (kNorthward ? kNorth | kCornerNE | kCornerNW : kSouth | kCornerSW | kCornerSE));
+  constexpr int step_x = kEastward ? 1 : -1;
+  constexpr int step_y = kNorthward ? 1 : -1;
   const double t_delta_x = s * std::abs(inv_dx);
   const double t_delta_y = s * std::abs(inv_dy);
-  double t_max_x = ((cx + (east ? 1 : 0)) * s - ox) * inv_dx;
-  double t_max_y = ((cy + (north ? 1 : 0)) * s - oy) * inv_dy;
+  double t_max_x = ((cx + (kEastward ? 1 : 0)) * s - ox) * inv_dx;
+  double t_max_y = ((cy + (kNorthward ? 1 : 0)) * s - oy) * inv_dy;
   const double h = half_thickness_m_;
   for (;;) {
     const std::uint8_t f = flags(cx, cy) & mask;
     if (f != 0) {
-      // The same slab arithmetic as entry_distance, each of the cell's four x and four y
-      // box edges computed once: (edge - origin) / direction.
+      // The same slab arithmetic as entry_distance, (edge - origin) / direction for each of
+      // the cell's four x and four y box edges: 0 the west (south) side, 1 h inside it,
+      // 2 h inside the east (north) side, 3 that side.
       const double x0 = cx * s;
       const double y0 = cy * s;
       const double x1 = x0 + s;
       const double y1 = y0 + s;
-      const double tx[4] = {(x0 - ox) * inv_dx, (x0 + h - ox) * inv_dx, (x1 - h - ox) * inv_dx,
-                            (x1 - ox) * inv_dx};
-      const double ty[4] = {(y0 - oy) * inv_dy, (y0 + h - oy) * inv_dy, (y1 - h - oy) * inv_dy,
-                            (y1 - oy) * inv_dy};
-      // Entry and exit of the box spanning edges [xl, xh] x [yl, yh] (indices into tx, ty).
+      const auto tx = [&](int edge) {
+        switch (edge) {
+          case 0: return (x0 - ox) * inv_dx;
+          case 1: return (x0 + h - ox) * inv_dx;
+          case 2: return (x1 - h - ox) * inv_dx;
+          default: return (x1 - ox) * inv_dx;
+        }
+      };
+      const auto ty = [&](int edge) {
+        switch (edge) {
+          case 0: return (y0 - oy) * inv_dy;
+          case 1: return (y0 + h - oy) * inv_dy;
+          case 2: return (y1 - h - oy) * inv_dy;
+          default: return (y1 - oy) * inv_dy;
+        }
+      };
+      // The box spanning edges [xl, xh] x [yl, yh]: entered at the later of its two slab
+      // entries (and not before 0), left at the earlier of the exits.
       double best = kInfinity;
       const auto box = [&](int xl, int xh, int yl, int yh) {
-        const double in_x = east ? tx[xl] : tx[xh];
-        const double out_x = east ? tx[xh] : tx[xl];
-        const double in_y = north ? ty[yl] : ty[yh];
-        const double out_y = north ? ty[yh] : ty[yl];
+        const double in_x = kEastward ? tx(xl) : tx(xh);
+        const double out_x = kEastward ? tx(xh) : tx(xl);
+        const double in_y = kNorthward ? ty(yl) : ty(yh);
+        const double out_y = kNorthward ? ty(yh) : ty(yl);
         const double t_in = std::max(std::max(0.0, in_x), in_y);
         const double t_out = std::min(out_x, out_y);
         if (t_in <= t_out) best = std::min(best, t_in);
       };
-      if (f & kNorth) box(0, 3, 2, 3);
-      if (f & kSouth) box(0, 3, 0, 1);
-      if (f & kEast) box(2, 3, 0, 3);
-      if (f & kWest) box(0, 1, 0, 3);
-      if (f & kCornerNE) box(2, 3, 2, 3);
-      if (f & kCornerNW) box(0, 1, 2, 3);
-      if (f & kCornerSW) box(0, 1, 0, 1);
-      if (f & kCornerSE) box(2, 3, 0, 1);
+      if ((mask & kNorth) && (f & kNorth)) box(0, 3, 2, 3);
+      if ((mask & kSouth) && (f & kSouth)) box(0, 3, 0, 1);
+      if ((mask & kEast) && (f & kEast)) box(2, 3, 0, 3);
+      if ((mask & kWest) && (f & kWest)) box(0, 1, 0, 3);
+      if ((mask & kCornerNE) && (f & kCornerNE)) box(2, 3, 2, 3);
+      if ((mask & kCornerNW) && (f & kCornerNW)) box(0, 1, 2, 3);
+      if ((mask & kCornerSW) && (f & kCornerSW)) box(0, 1, 0, 1);
+      if ((mask & kCornerSE) && (f & kCornerSE)) box(2, 3, 0, 1);
       if (best < kInfinity) return best <= max_range_m ? best : kInfinity;
     }
     if (std::min(t_max_x, t_max_y) > max_range_m) return kInfinity;

@@ -66,6 +66,16 @@ class WallGrid {
   double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
   // The same along the unit vector (dx, dy).
   double cast_direction(double x_m, double y_m, double dx, double dy, double max_range_m) const;
+  // A ray origin with what every ray from it shares computed once (a scan casts hundreds).
+  struct CastOrigin {
+    double x_m, y_m;                // world
+    double local_x_m, local_y_m;    // from the maze's south-west corner
+    int cell_x, cell_y;             // the cell holding it (when inside)
+    bool inside;                    // inside_maze(x_m, y_m)
+  };
+  CastOrigin cast_origin(double x_m, double y_m) const;
+  // cast_direction from a prepared origin: the same answers.
+  double cast_from(const CastOrigin &origin, double dx, double dy, double max_range_m) const;
   // cast_direction's plain form, one slab test per box: the same answers bit for bit (the
   // tests hold cast_direction to it); cast_direction uses it for rays along an axis.
   double cast_reference(double x_m, double y_m, double dx, double dy, double max_range_m) const;
@@ -95,6 +105,9 @@ class WallGrid {
     return flags_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) +
                   static_cast<std::size_t>(cx)];
   }
+  // cast_from for a ray with dx, dy != 0 from inside the maze, the signs fixed at compile time.
+  template <bool kEastward, bool kNorthward>
+  double cast_quadrant(const CastOrigin &origin, double dx, double dy, double max_range_m) const;
   // Calls visit(const Box &) for each solid box of cell (cx, cy) whose flags are in mask.
   template <typename Visit>
   void for_each_box(int cx, int cy, std::uint8_t mask, Visit &&visit) const;
