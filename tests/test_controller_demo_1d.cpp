@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "mapping/demo_1d.hpp"
+#include "validation_error.hpp"
 
 using mapping::CellUpdate;
 using mapping::Demo1dCell;
@@ -20,15 +21,6 @@ const Demo1dCell &cell_at(const std::vector<Demo1dCell> &cells, double position_
                                [&](const Demo1dCell &c) { return c.position_cm == position_cm; });
   REQUIRE(it != cells.end());
   return *it;
-}
-
-std::string error_of(const Demo1dOptions &o) {
-  try {
-    mapping::validate(o);
-  } catch (const common::InputError &e) {
-    return e.diagnostic();
-  }
-  return "";
 }
 
 }  // namespace
@@ -157,40 +149,40 @@ TEST_CASE("demo 1d: shuffled is a seeded permutation") {
 
 TEST_CASE("demo 1d: validation errors name the option and its value") {
   Demo1dOptions o;
-  CHECK(error_of(o) == "");
+  CHECK(validation_error(o) == "");
   o = {};
   o.resolution_cm = 0;
-  CHECK(error_of(o) == "error: --resolution must be a positive number of cm (got 0)");
+  CHECK(validation_error(o) == "error: --resolution must be a positive number of cm (got 0)");
   o = {};
   o.resolution_cm = NAN;
-  CHECK(error_of(o) == "error: --resolution must be a positive number of cm (got nan)");
+  CHECK(validation_error(o) == "error: --resolution must be a positive number of cm (got nan)");
   o = {};
   o.length_cm = -5;
-  CHECK(error_of(o) == "error: --length must be a finite number of cm >= 0 (got -5)");
+  CHECK(validation_error(o) == "error: --length must be a finite number of cm >= 0 (got -5)");
   o = {};
   o.length_cm = INFINITY;
-  CHECK(error_of(o) == "error: --length must be a finite number of cm >= 0 (got inf)");
+  CHECK(validation_error(o) == "error: --length must be a finite number of cm >= 0 (got inf)");
   o = {};
   o.behind_cm = -1;
-  CHECK(error_of(o) == "error: --behind must be a finite number of cm >= 0 (got -1)");
+  CHECK(validation_error(o) == "error: --behind must be a finite number of cm >= 0 (got -1)");
   o = {};
   o.length_cm = 1e6;
   o.resolution_cm = 1;
-  CHECK(error_of(o) ==
+  CHECK(validation_error(o) ==
         "error: --length 1000000 with --resolution 1 gives 1000001 cells (at most 10001)");
   o = {};
   o.measurements_cm = {};
-  CHECK(error_of(o) == "error: --measurements must list at least one distance in cm");
+  CHECK(validation_error(o) == "error: --measurements must list at least one distance in cm");
   o = {};
   o.measurements_cm = {101, NAN};
-  CHECK(error_of(o) == "error: --measurements item 2 must be a finite number of cm >= 0 (got nan)");
+  CHECK(validation_error(o) == "error: --measurements item 2 must be a finite number of cm >= 0 (got nan)");
   o = {};
   o.measurements_cm = {-3};
-  CHECK(error_of(o) == "error: --measurements item 1 must be a finite number of cm >= 0 (got -3)");
+  CHECK(validation_error(o) == "error: --measurements item 1 must be a finite number of cm >= 0 (got -3)");
   o = {};
   o.measurements_cm = {0, 1000};  // at the robot, and beyond the length: both usable
-  CHECK(error_of(o) == "");
+  CHECK(validation_error(o) == "");
   o = {};
   o.model.p_occ = 0.4;
-  CHECK(error_of(o) == "error: --p-occ must be greater than --prior (got 0.4 <= 0.5)");
+  CHECK(validation_error(o) == "error: --p-occ must be greater than --prior (got 0.4 <= 0.5)");
 }

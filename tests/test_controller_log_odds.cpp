@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "mapping/log_odds.hpp"
 #include "mapping/sensor_model.hpp"
+#include "validation_error.hpp"
 
 using mapping::LogBase;
 
@@ -53,42 +54,34 @@ TEST_CASE("SensorModel: increments are l(p) - l(prior)") {
 }
 
 namespace {
-std::string error_of(const mapping::SensorModelOptions &o) {
-  try {
-    mapping::validate(o);
-  } catch (const common::InputError &e) {
-    return e.diagnostic();
-  }
-  return "";
-}
 }  // namespace
 
 TEST_CASE("SensorModelOptions: each violation names the option and its value") {
   mapping::SensorModelOptions o;
-  CHECK(error_of(o) == "");
+  CHECK(validation_error(o) == "");
 
   o = {};
   o.p_occ = 0.4;
-  CHECK(error_of(o) == "error: --p-occ must be greater than --prior (got 0.4 <= 0.5)");
+  CHECK(validation_error(o) == "error: --p-occ must be greater than --prior (got 0.4 <= 0.5)");
   o = {};
   o.p_free = 0.5;
-  CHECK(error_of(o) == "error: --p-free must be less than --prior (got 0.5 >= 0.5)");
+  CHECK(validation_error(o) == "error: --p-free must be less than --prior (got 0.5 >= 0.5)");
   o = {};
   o.p_occ = 1.5;
-  CHECK(error_of(o) == "error: --p-occ must be a probability strictly between 0 and 1 (got 1.5)");
+  CHECK(validation_error(o) == "error: --p-occ must be a probability strictly between 0 and 1 (got 1.5)");
   o = {};
   o.p_free = 0.0;
-  CHECK(error_of(o) == "error: --p-free must be a probability strictly between 0 and 1 (got 0)");
+  CHECK(validation_error(o) == "error: --p-free must be a probability strictly between 0 and 1 (got 0)");
   o = {};
   o.prior = 1.0;
-  CHECK(error_of(o) == "error: --prior must be a probability strictly between 0 and 1 (got 1)");
+  CHECK(validation_error(o) == "error: --prior must be a probability strictly between 0 and 1 (got 1)");
   o = {};
   o.p_occ = NAN;
-  CHECK(error_of(o) == "error: --p-occ must be a probability strictly between 0 and 1 (got nan)");
+  CHECK(validation_error(o) == "error: --p-occ must be a probability strictly between 0 and 1 (got nan)");
   o = {};
   o.clamp = mapping::Clamp{3.0, -2.0};
-  CHECK(error_of(o) == "error: --clamp MIN must be less than MAX (got 3 >= -2)");
+  CHECK(validation_error(o) == "error: --clamp MIN must be less than MAX (got 3 >= -2)");
   o = {};
   o.clamp = mapping::Clamp{-INFINITY, 2.0};
-  CHECK(error_of(o) == "error: --clamp bounds must be finite numbers (got -inf 2)");
+  CHECK(validation_error(o) == "error: --clamp bounds must be finite numbers (got -inf 2)");
 }
