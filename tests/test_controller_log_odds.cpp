@@ -53,9 +53,6 @@ TEST_CASE("SensorModel: increments are l(p) - l(prior)") {
         doctest::Approx(mapping::log_odds(0.6) - mapping::log_odds(0.4)));
 }
 
-namespace {
-}  // namespace
-
 TEST_CASE("SensorModelOptions: each violation names the option and its value") {
   mapping::SensorModelOptions o;
   CHECK(validation_error(o) == "");
