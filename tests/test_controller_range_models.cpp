@@ -140,6 +140,80 @@ TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
         "+0.00 -0.41 +0.00\n");
 }
 
+// The ir-ring's four axis sensors in cell (1, 1), robot facing north: walls north and east
+// (readings 0.404 m, contacting), openings west and south (nothing seen: max 1.5 m).
+std::vector<RangeReading> ir_cross_scan() {
+  const double eps = 0.03;
+  return {RangeReading{{1.5, 1.59}, kNorth, kToNorthWall, 1.5, 0.03, eps},
+          RangeReading{{1.59, 1.5}, 0.0, kToNorthWall, 1.5, 0.03, eps},
+          RangeReading{{1.41, 1.5}, kPi, 1.5, 1.5, 0.03, eps},
+          RangeReading{{1.5, 1.41}, -kNorth, 1.5, 1.5, 0.03, eps}};
+}
+
+TEST_CASE("pie model: walls north and east in one scan, K = 3, beta 10 deg") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  mapping::mark_pie(grid, mapping::RangeModelOptions{}, ir_cross_scan(), update);
+  update.apply(grid, model);
+  // No corner or centre of the north band's middle sub-cell lies in the contact part (its
+  // centre is 0.24 m ahead, its far corners 22 deg off the axis); the reading's arc, 0.404 m
+  // ahead and 0.14 m across (x 1.43 ... 1.57, y 1.99), lies inside it. Likewise east.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +0.85 +0.00\n"
+        "-0.41 +0.00 +0.85\n"
+        "+0.00 -0.41 +0.00\n");
+  // The arc stops short of the cell side (y 1.994 < 2): the neighbour's band is not touched.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(grid.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
+  CHECK(grid.at(Cell{1, 1}, {1, 0}) == doctest::Approx(std::log(0.4 / 0.6)));
+}
+
+TEST_CASE("pie model: walls north and east in one scan, K = 5, beta 10 deg") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(5), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  mapping::mark_pie(grid, mapping::RangeModelOptions{}, ir_cross_scan(), update);
+  update.apply(grid, model);
+  // Each slice frees the sub-cells whose centre is on its axis; the sub-cell next to the
+  // robot's own has its near corners 0.01 m ahead, 84 deg off the axis. The wall bands'
+  // middles hold the arcs.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +0.00 +0.85 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.41 +0.00 +0.00\n"
+        "-0.41 -0.41 +0.00 -0.41 +0.85\n"
+        "+0.00 +0.00 -0.41 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.41 +0.00 +0.00\n");
+}
+
+TEST_CASE("pie model: a reading within two distance errors of max is clear") {
+  const mapping::SensorModel model;
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  // From the rim of cell (1, 0) looking north; max 1.5 m, eps 3 %: 1.42 m >= 1.5 (1 - 2 eps)
+  // = 1.41 m is clear, 1.40 m is a contact.
+  const auto scan = [&](double range_m) {
+    OccupancyGrid grid(geometry(3), 0.0f);
+    const std::vector<RangeReading> one{RangeReading{{1.5, 0.59}, kNorth, range_m, 1.5, 0.03, 0.03}};
+    mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+    update.apply(grid, model);
+    return grid;
+  };
+  const OccupancyGrid clear = scan(1.42);
+  // As a contact its arc (y 2.01) would lie in cell (1, 2)'s south band; clear, the slice
+  // reaches 1.42 (1 - eps) = 1.377 m (y 1.967) and frees cell (1, 1)'s north band.
+  CHECK(render::format_cell_matrix(clear, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(clear.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.4 / 0.6)));
+  const OccupancyGrid contact = scan(1.40);
+  // The arc at y = 1.99 lies in cell (1, 1)'s north band.
+  CHECK(contact.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
+}
+
 TEST_CASE("cone model: IR reading north, K = 3, defaults") {
   const mapping::SensorModel model;  // p_occ 0.6 -> +0.41, p_free 0.3 -> -0.85
   OccupancyGrid grid(geometry(3), 0.0f);
