@@ -258,3 +258,49 @@ TEST_CASE("range model options are validated") {
   CHECK(mapping::parse_model("bump") == mapping::ModelKind::bump);
   CHECK(mapping::to_string(mapping::ModelKind::cone) == "cone");
 }
+
+TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands alone, K = 3") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  // Openings north of cells (1, 1) and (1, 2), a wall north of (1, 2): 1.404 m ahead.
+  const std::vector<RangeReading> one{reading(kNorth, 1.404, 5.0, 0.4, 0.066)};
+  mapping::mark_cone(grid, one, update);
+  update.apply(grid, model);
+  // Arc 1.311 ... 1.497 m: five bins at 0, +-0.08, +-0.16 rad. The axis bin gets p_occ
+  // (+0.41); the outer bins, 0.21 m off the axis, fall in the band's corners with weight
+  // 1 - 0.8^2 = 0.36: p = 0.5 + 0.36 x 0.1 = 0.536, +0.14. In the free cone at y 2.33 ... 2.67
+  // the outermost bin centre is 0.133 rad off the axis (0.13 m): the west and east bands,
+  // 0.167 m away, are not freed (without the weighting the cone's edges, 0.2 m off the axis,
+  // freed them at -0.85: the walls beside every corridor the sonar looked along).
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "+0.14 +0.41 +0.14\n"
+        "+0.00 -0.85 +0.00\n"
+        "+0.00 -0.85 +0.00\n");
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 -0.85 +0.00\n"
+        "+0.00 -0.85 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(grid.at(Cell{1, 2}, {0, 0}) == doctest::Approx(std::log(0.536 / 0.464)));
+}
+
+TEST_CASE("leveled update: a weighted mark moves p from the prior towards its level's p") {
+  mapping::SensorModelOptions o;
+  o.base = mapping::LogBase::ten;
+  o.prior = 0.4;
+  const mapping::SensorModel model(o);
+  OccupancyGrid grid(geometry(3), static_cast<float>(model.prior_log_odds()));
+  mapping::LeveledUpdate update({0.7, 0.2});
+  update.mark(grid, mapping::SubCell{0, 0}, 1, 1.0);   // p 0.2
+  update.mark(grid, mapping::SubCell{1, 0}, 1, 0.5);   // p 0.4 + 0.5 (0.2 - 0.4) = 0.3
+  update.mark(grid, mapping::SubCell{1, 0}, 1, 0.25);  // weaker, same level: ignored
+  update.mark(grid, mapping::SubCell{2, 0}, 1, 1.0);
+  update.mark(grid, mapping::SubCell{2, 0}, 0, 0.5);   // occupied wins: p 0.4 + 0.5 (0.3) = 0.55
+  update.mark(grid, mapping::SubCell{3, 0}, 0, 0.0);   // no information: no update
+  CHECK(update.apply(grid, model) == 3);
+  const double l0 = model.prior_log_odds();
+  CHECK(grid.at(mapping::SubCell{0, 0}) == doctest::Approx(std::log10(0.2 / 0.8)));
+  CHECK(grid.at(mapping::SubCell{1, 0}) == doctest::Approx(std::log10(0.3 / 0.7)));
+  CHECK(grid.at(mapping::SubCell{2, 0}) == doctest::Approx(std::log10(0.55 / 0.45)));
+  CHECK(grid.at(mapping::SubCell{3, 0}) == doctest::Approx(l0));
+}

@@ -8,17 +8,22 @@
 namespace mapping {
 namespace {
 
-// Marks the points of the beam at range r_m, across [-half, +half] around the direction, at
-// an angular step of half a sub-cell's angular size at that range.
+// Marks the beam at range r_m across its width: the width is cut into an odd number of
+// equal angular bins no wider than half a sub-cell's angular size at that range (one bin
+// centred on the axis), and each bin's centre is marked with the Moravec-Elfes angular
+// weight 1 - (offset / half-width)^2: full on the axis, fading to nothing at the edges.
 void sweep_arc(const OccupancyGrid &grid, const RangeReading &r, double r_m, int level,
                LeveledUpdate &update) {
   const double half = r.aperture_rad / 2.0;
   const double size = grid.geometry().subcell_size_m();
-  const double step = r_m > 0.0 ? 0.5 * size / r_m : half + 1.0;
-  const int n = static_cast<int>(std::ceil(2.0 * half / step));
-  for (int k = 0; k <= n; ++k) {
-    const double a = r.angle_rad - half + (n == 0 ? half : 2.0 * half * k / n);
-    update.mark(grid, Point{r.origin.x_m + r_m * std::cos(a), r.origin.y_m + r_m * std::sin(a)}, level);
+  const double steps_per_half = half * r_m / (0.5 * size);  // half-width / angular step
+  const int n = steps_per_half > 0.5 ? 2 * static_cast<int>(std::ceil(steps_per_half - 0.5)) + 1 : 1;
+  for (int k = 0; k < n; ++k) {
+    const double offset = -half + 2.0 * half * (k + 0.5) / n;
+    const double a = r.angle_rad + offset;
+    const double weight = half > 0.0 ? 1.0 - (offset / half) * (offset / half) : 1.0;
+    update.mark(grid, Point{r.origin.x_m + r_m * std::cos(a), r.origin.y_m + r_m * std::sin(a)},
+                level, weight);
   }
 }
 
