@@ -240,9 +240,11 @@ TEST_CASE("cone model: a sonar's arc at 0.4 m stays within one 0.2 m column, K =
   mapping::mark_cone(grid, one, update);
   update.apply(grid, model);
   // Half the aperture (0.2 rad) at 0.43 m is 0.086 m across: x 1.414 ... 1.586, column 2.
+  // The free cone ends at 0.377 m, in radial steps of 0.094 m: row 1 is first reached at
+  // 0.094 m, range weight 1 - 0.25^2 = 0.94, p = 0.5 - 0.94 x 0.2 = 0.3125: -0.79.
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 +0.00 +0.41 +0.00 +0.00\n"
-        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.79 +0.00 +0.00\n"
         "+0.00 +0.00 -0.85 +0.00 +0.00\n"
         "+0.00 +0.00 +0.00 +0.00 +0.00\n"
         "+0.00 +0.00 +0.00 +0.00 +0.00\n");
@@ -259,7 +261,7 @@ TEST_CASE("range model options are validated") {
   CHECK(mapping::to_string(mapping::ModelKind::cone) == "cone");
 }
 
-TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands alone, K = 3") {
+TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands alone and fades with range") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3), 0.0f);
   mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
@@ -273,12 +275,15 @@ TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands al
   // the outermost bin centre is 0.133 rad off the axis (0.13 m): the west and east bands,
   // 0.167 m away, are not freed (without the weighting the cone's edges, 0.2 m off the axis,
   // freed them at -0.85: the walls beside every corridor the sonar looked along).
+  // The free cone ends at 1.311 m, in 8 radial steps of 0.164 m; each sub-cell takes its
+  // nearest step's range weight 1 - (r / 1.311)^2: row 2 of cell (1, 2) from r 0.492 m
+  // (w 0.86, p 0.328, -0.72), row 1 from 0.819 m (w 0.61, p 0.378, -0.50).
   CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
         "+0.14 +0.41 +0.14\n"
-        "+0.00 -0.85 +0.00\n"
-        "+0.00 -0.85 +0.00\n");
+        "+0.00 -0.50 +0.00\n"
+        "+0.00 -0.72 +0.00\n");
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
-        "+0.00 -0.85 +0.00\n"
+        "+0.00 -0.83 +0.00\n"
         "+0.00 -0.85 +0.00\n"
         "+0.00 +0.00 +0.00\n");
   CHECK(grid.at(Cell{1, 2}, {0, 0}) == doctest::Approx(std::log(0.536 / 0.464)));

@@ -27,16 +27,19 @@
 //          cone inside d(1 - eps) free (p_free); swept at an angular step of half a
 //          sub-cell's angular size at that range (and radially at half a sub-cell), so every
 //          sub-cell it covers is visited. A reading at max range frees the cone up to
-//          max (1 - eps) and marks no arc. Both are weighted across the beam as in Moravec &
-//          Elfes (1985): a point at angle theta off the axis carries
-//          p = prior + (1 - (theta / (sigma/2))^2) (p_model - prior), the model's p on the
-//          axis, no information at the edge. A wide beam (sonar, 0.4 rad) returns its
-//          nearest echo from anywhere in the cone and averages its rays: unweighted, its
-//          edges freed the wall bands beside every corridor it looked along (from the
-//          neighbouring cells, with p_free's -0.85 against p_occ's +0.41) and smeared arcs
-//          across openings; 15 of lab4x4's 40 sides came out wrong, all of them walls read as
-//          open. The arc is sampled at the centre of each angular step, so a narrow beam (IR,
-//          0.03 rad, one step) is marked on its axis with the model's own p.
+//          max (1 - eps) and marks no arc. Both are weighted as in Moravec & Elfes (1985)
+//          and Elfes (1989): a point at angle theta off the axis and range r carries
+//          p = prior + w (p_model - prior) with w = 1 - (theta / (sigma/2))^2 on the arc
+//          and w = (1 - (theta / (sigma/2))^2) (1 - (r / (d (1 - eps)))^2) in the free
+//          cone: the model's p on the axis (at the sensor, for free), no information at the
+//          edges and where the free cone meets the arc. Why: a wide beam (sonar, 0.4 rad)
+//          averages rays spread over the cone (ir/sonar profiles, like Webots' distance
+//          sensors), so a point inside the reading need not be free; unweighted, the cone's
+//          edges freed the wall bands beside every corridor the sonar looked along (-0.85
+//          each time against the arc's +0.41 once): 15 of lab4x4's 40 sides came out wrong,
+//          every one a wall read as open. The arc is sampled at the centres of an odd number
+//          of equal angular steps, so a narrow beam (IR, 0.03 rad, one step) is marked on its
+//          axis and the axis keeps the course numbers.
 // pie: a reading within two distance errors of max (>= max (1 - 2 eps)) is clear, and a
 // clear slice reaches the reading (1 - eps): the sensor's noise near max range would
 // otherwise report phantom contacts, or free a wall just short of max. With the profiles'
