@@ -140,6 +140,80 @@ TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
         "+0.00 -0.41 +0.00\n");
 }
 
+// The ir-ring's four axis sensors in cell (1, 1), robot facing north: walls north and east
+// (readings 0.404 m, contacting), openings west and south (nothing seen: max 1.5 m).
+std::vector<RangeReading> ir_cross_scan() {
+  const double eps = 0.03;
+  return {RangeReading{{1.5, 1.59}, kNorth, kToNorthWall, 1.5, 0.03, eps},
+          RangeReading{{1.59, 1.5}, 0.0, kToNorthWall, 1.5, 0.03, eps},
+          RangeReading{{1.41, 1.5}, kPi, 1.5, 1.5, 0.03, eps},
+          RangeReading{{1.5, 1.41}, -kNorth, 1.5, 1.5, 0.03, eps}};
+}
+
+TEST_CASE("pie model: walls north and east in one scan, K = 3, beta 10 deg") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  mapping::mark_pie(grid, mapping::RangeModelOptions{}, ir_cross_scan(), update);
+  update.apply(grid, model);
+  // No corner or centre of the north band's middle sub-cell lies in the contact part (its
+  // centre is 0.24 m ahead, its far corners 22 deg off the axis); the reading's arc, 0.404 m
+  // ahead and 0.14 m across (x 1.43 ... 1.57, y 1.99), lies inside it. Likewise east.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +0.85 +0.00\n"
+        "-0.41 +0.00 +0.85\n"
+        "+0.00 -0.41 +0.00\n");
+  // The arc stops short of the cell side (y 1.994 < 2): the neighbour's band is not touched.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(grid.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
+  CHECK(grid.at(Cell{1, 1}, {1, 0}) == doctest::Approx(std::log(0.4 / 0.6)));
+}
+
+TEST_CASE("pie model: walls north and east in one scan, K = 5, beta 10 deg") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(5), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  mapping::mark_pie(grid, mapping::RangeModelOptions{}, ir_cross_scan(), update);
+  update.apply(grid, model);
+  // Each slice frees the sub-cells whose centre is on its axis; the sub-cell next to the
+  // robot's own has its near corners 0.01 m ahead, 84 deg off the axis. The wall bands'
+  // middles hold the arcs.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 +0.00 +0.85 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.41 +0.00 +0.00\n"
+        "-0.41 -0.41 +0.00 -0.41 +0.85\n"
+        "+0.00 +0.00 -0.41 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.41 +0.00 +0.00\n");
+}
+
+TEST_CASE("pie model: a reading within two distance errors of max is clear") {
+  const mapping::SensorModel model;
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  // From the rim of cell (1, 0) looking north; max 1.5 m, eps 3 %: 1.42 m >= 1.5 (1 - 2 eps)
+  // = 1.41 m is clear, 1.40 m is a contact.
+  const auto scan = [&](double range_m) {
+    OccupancyGrid grid(geometry(3), 0.0f);
+    const std::vector<RangeReading> one{RangeReading{{1.5, 0.59}, kNorth, range_m, 1.5, 0.03, 0.03}};
+    mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+    update.apply(grid, model);
+    return grid;
+  };
+  const OccupancyGrid clear = scan(1.42);
+  // As a contact its arc (y 2.01) would lie in cell (1, 2)'s south band; clear, the slice
+  // reaches 1.42 (1 - eps) = 1.377 m (y 1.967) and frees cell (1, 1)'s north band.
+  CHECK(render::format_cell_matrix(clear, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(clear.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.4 / 0.6)));
+  const OccupancyGrid contact = scan(1.40);
+  // The arc at y = 1.99 lies in cell (1, 1)'s north band.
+  CHECK(contact.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
+}
+
 TEST_CASE("cone model: IR reading north, K = 3, defaults") {
   const mapping::SensorModel model;  // p_occ 0.6 -> +0.41, p_free 0.3 -> -0.85
   OccupancyGrid grid(geometry(3), 0.0f);
@@ -166,9 +240,11 @@ TEST_CASE("cone model: a sonar's arc at 0.4 m stays within one 0.2 m column, K =
   mapping::mark_cone(grid, one, update);
   update.apply(grid, model);
   // Half the aperture (0.2 rad) at 0.43 m is 0.086 m across: x 1.414 ... 1.586, column 2.
+  // The free cone ends at 0.377 m, in radial steps of 0.094 m: row 1 is first reached at
+  // 0.094 m, range weight 1 - 0.25^2 = 0.94, p = 0.5 - 0.94 x 0.2 = 0.3125: -0.79.
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 +0.00 +0.41 +0.00 +0.00\n"
-        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.00 +0.00 -0.79 +0.00 +0.00\n"
         "+0.00 +0.00 -0.85 +0.00 +0.00\n"
         "+0.00 +0.00 +0.00 +0.00 +0.00\n"
         "+0.00 +0.00 +0.00 +0.00 +0.00\n");
@@ -183,4 +259,53 @@ TEST_CASE("range model options are validated") {
   CHECK_THROWS_AS(mapping::validate(o), common::InputError);
   CHECK(mapping::parse_model("bump") == mapping::ModelKind::bump);
   CHECK(mapping::to_string(mapping::ModelKind::cone) == "cone");
+}
+
+TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands alone and fades with range") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  // Openings north of cells (1, 1) and (1, 2), a wall north of (1, 2): 1.404 m ahead.
+  const std::vector<RangeReading> one{reading(kNorth, 1.404, 5.0, 0.4, 0.066)};
+  mapping::mark_cone(grid, one, update);
+  update.apply(grid, model);
+  // Arc 1.311 ... 1.497 m: five bins at 0, +-0.08, +-0.16 rad. The axis bin gets p_occ
+  // (+0.41); the outer bins, 0.21 m off the axis, fall in the band's corners with weight
+  // 1 - 0.8^2 = 0.36: p = 0.5 + 0.36 x 0.1 = 0.536, +0.14. In the free cone at y 2.33 ... 2.67
+  // the outermost bin centre is 0.133 rad off the axis (0.13 m): the west and east bands,
+  // 0.167 m away, are not freed (without the weighting the cone's edges, 0.2 m off the axis,
+  // freed them at -0.85: the walls beside every corridor the sonar looked along).
+  // The free cone ends at 1.311 m, in 8 radial steps of 0.164 m; each sub-cell takes its
+  // nearest step's range weight 1 - (r / 1.311)^2: row 2 of cell (1, 2) from r 0.492 m
+  // (w 0.86, p 0.328, -0.72), row 1 from 0.819 m (w 0.61, p 0.378, -0.50).
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "+0.14 +0.41 +0.14\n"
+        "+0.00 -0.50 +0.00\n"
+        "+0.00 -0.72 +0.00\n");
+  CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
+        "+0.00 -0.83 +0.00\n"
+        "+0.00 -0.85 +0.00\n"
+        "+0.00 +0.00 +0.00\n");
+  CHECK(grid.at(Cell{1, 2}, {0, 0}) == doctest::Approx(std::log(0.536 / 0.464)));
+}
+
+TEST_CASE("leveled update: a weighted mark moves p from the prior towards its level's p") {
+  mapping::SensorModelOptions o;
+  o.base = mapping::LogBase::ten;
+  o.prior = 0.4;
+  const mapping::SensorModel model(o);
+  OccupancyGrid grid(geometry(3), static_cast<float>(model.prior_log_odds()));
+  mapping::LeveledUpdate update({0.7, 0.2});
+  update.mark(grid, mapping::SubCell{0, 0}, 1, 1.0);   // p 0.2
+  update.mark(grid, mapping::SubCell{1, 0}, 1, 0.5);   // p 0.4 + 0.5 (0.2 - 0.4) = 0.3
+  update.mark(grid, mapping::SubCell{1, 0}, 1, 0.25);  // weaker, same level: ignored
+  update.mark(grid, mapping::SubCell{2, 0}, 1, 1.0);
+  update.mark(grid, mapping::SubCell{2, 0}, 0, 0.5);   // occupied wins: p 0.4 + 0.5 (0.3) = 0.55
+  update.mark(grid, mapping::SubCell{3, 0}, 0, 0.0);   // no information: no update
+  CHECK(update.apply(grid, model) == 3);
+  const double l0 = model.prior_log_odds();
+  CHECK(grid.at(mapping::SubCell{0, 0}) == doctest::Approx(std::log10(0.2 / 0.8)));
+  CHECK(grid.at(mapping::SubCell{1, 0}) == doctest::Approx(std::log10(0.3 / 0.7)));
+  CHECK(grid.at(mapping::SubCell{2, 0}) == doctest::Approx(std::log10(0.55 / 0.45)));
+  CHECK(grid.at(mapping::SubCell{3, 0}) == doctest::Approx(l0));
 }

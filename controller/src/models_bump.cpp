@@ -22,24 +22,30 @@ void validate(const RangeModelOptions &options) {
   }
 }
 
-void LeveledUpdate::mark(const OccupancyGrid &grid, SubCell s, int level) {
-  if (!grid.contains(s)) return;
-  marks_.emplace_back(grid.index(s), level);
+void LeveledUpdate::mark(const OccupancyGrid &grid, SubCell s, int level, double weight) {
+  if (!grid.contains(s) || !(weight > 0.0)) return;
+  marks_.push_back({grid.index(s), level, std::min(weight, 1.0)});
 }
 
-void LeveledUpdate::mark(const OccupancyGrid &grid, Point p, int level) {
-  if (const auto s = grid.subcell_at(p)) mark(grid, *s, level);
+void LeveledUpdate::mark(const OccupancyGrid &grid, Point p, int level, double weight) {
+  if (const auto s = grid.subcell_at(p)) mark(grid, *s, level, weight);
 }
 
 std::size_t LeveledUpdate::apply(OccupancyGrid &grid, const SensorModel &model) {
-  std::sort(marks_.begin(), marks_.end());
+  std::sort(marks_.begin(), marks_.end(), [](const Mark &a, const Mark &b) {
+    if (a.index != b.index) return a.index < b.index;
+    if (a.level != b.level) return a.level < b.level;
+    return a.weight > b.weight;
+  });
+  const double prior = model.options().prior;
   std::size_t updated = 0;
   for (std::size_t n = 0; n < marks_.size(); ++n) {
-    if (n > 0 && marks_[n].first == marks_[n - 1].first) continue;  // a stronger mark came first
-    const auto [index, level] = marks_[n];
-    const double increment = model.increment_for(level_p_[static_cast<std::size_t>(level)]);
-    grid.at_index(index) =
-        static_cast<float>(mapping::apply(grid.at_index(index), increment, model.options().clamp));
+    if (n > 0 && marks_[n].index == marks_[n - 1].index) continue;  // a stronger mark came first
+    const Mark &m = marks_[n];
+    const double p = level_p_[static_cast<std::size_t>(m.level)];
+    const double increment = model.increment_for(m.weight == 1.0 ? p : prior + m.weight * (p - prior));
+    grid.at_index(m.index) =
+        static_cast<float>(mapping::apply(grid.at_index(m.index), increment, model.options().clamp));
     ++updated;
   }
   marks_.clear();

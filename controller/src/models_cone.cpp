@@ -8,26 +8,50 @@
 namespace mapping {
 namespace {
 
-// Marks the points of the beam at range r_m, across [-half, +half] around the direction, at
-// an angular step of half a sub-cell's angular size at that range.
+constexpr int kOccupied = 0;
+constexpr int kFree = 1;
+
+// Marks the beam at range r_m across its width: the width is cut into an odd number of
+// equal angular bins no wider than half a sub-cell's angular size at that range (one bin
+// centred on the axis), and each bin's centre is marked with range_weight times the
+// Moravec-Elfes angular weight 1 - (offset / half-width)^2: full on the axis, fading to
+// nothing at the edges.
 void sweep_arc(const OccupancyGrid &grid, const RangeReading &r, double r_m, int level,
-               LeveledUpdate &update) {
+               double range_weight, LeveledUpdate &update) {
   const double half = r.aperture_rad / 2.0;
   const double size = grid.geometry().subcell_size_m();
-  const double step = r_m > 0.0 ? 0.5 * size / r_m : half + 1.0;
-  const int n = static_cast<int>(std::ceil(2.0 * half / step));
-  for (int k = 0; k <= n; ++k) {
-    const double a = r.angle_rad - half + (n == 0 ? half : 2.0 * half * k / n);
-    update.mark(grid, Point{r.origin.x_m + r_m * std::cos(a), r.origin.y_m + r_m * std::sin(a)}, level);
+  const double steps_per_half = half * r_m / (0.5 * size);  // half-width / angular step
+  const int n = steps_per_half > 0.5 ? 2 * static_cast<int>(std::ceil(steps_per_half - 0.5)) + 1 : 1;
+  for (int k = 0; k < n; ++k) {
+    const double offset = -half + 2.0 * half * (k + 0.5) / n;
+    const double a = r.angle_rad + offset;
+    const double angular = half > 0.0 ? 1.0 - (offset / half) * (offset / half) : 1.0;
+    update.mark(grid, Point{r.origin.x_m + r_m * std::cos(a), r.origin.y_m + r_m * std::sin(a)},
+                level, range_weight * angular);
   }
 }
 
-// Sweeps arcs from r0_m to r1_m at radial steps of half a sub-cell (both ends included).
-void sweep_band(const OccupancyGrid &grid, const RangeReading &r, double r0_m, double r1_m,
-                int level, LeveledUpdate &update) {
+// The radial steps (half a sub-cell, both ends included) from r0_m to r1_m.
+int radial_steps(const OccupancyGrid &grid, double r0_m, double r1_m) {
   const double step = grid.geometry().subcell_size_m() / 2.0;
-  const int n = std::max(1, static_cast<int>(std::ceil((r1_m - r0_m) / step)));
-  for (int k = 0; k <= n; ++k) sweep_arc(grid, r, r0_m + (r1_m - r0_m) * k / n, level, update);
+  return std::max(1, static_cast<int>(std::ceil((r1_m - r0_m) / step)));
+}
+
+// The free cone from the sensor to end_m, with Elfes's range weight 1 - (r / end)^2.
+void sweep_free(const OccupancyGrid &grid, const RangeReading &r, double end_m,
+                LeveledUpdate &update) {
+  const int n = radial_steps(grid, 0.0, end_m);
+  for (int k = 0; k <= n; ++k) {
+    const double f = static_cast<double>(k) / n;
+    sweep_arc(grid, r, end_m * f, kFree, 1.0 - f * f, update);
+  }
+}
+
+// The occupied arc from r0_m to r1_m, at full range weight.
+void sweep_occupied(const OccupancyGrid &grid, const RangeReading &r, double r0_m, double r1_m,
+                    LeveledUpdate &update) {
+  const int n = radial_steps(grid, r0_m, r1_m);
+  for (int k = 0; k <= n; ++k) sweep_arc(grid, r, r0_m + (r1_m - r0_m) * k / n, kOccupied, 1.0, update);
 }
 
 }  // namespace
@@ -43,8 +67,8 @@ void mark_cone(const OccupancyGrid &grid, std::span<const RangeReading> readings
     const bool hit = r.range_m < r.max_range_m;
     const double d = hit ? r.range_m : r.max_range_m;
     const double near_m = d * (1.0 - r.range_error);
-    if (near_m > 0.0) sweep_band(grid, r, 0.0, near_m, 1, update);
-    if (hit) sweep_band(grid, r, near_m, d * (1.0 + r.range_error), 0, update);
+    if (near_m > 0.0) sweep_free(grid, r, near_m, update);
+    if (hit) sweep_occupied(grid, r, near_m, d * (1.0 + r.range_error), update);
   }
 }
 

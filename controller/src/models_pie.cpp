@@ -1,7 +1,10 @@
 // The IR pie-slice model (mapping/range_models.hpp).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 #include "mapping/models.hpp"
 #include "mapping/range_models.hpp"
@@ -10,28 +13,111 @@
 namespace mapping {
 namespace {
 
+// Where one reading's slices lie, relative to its sensor: half-angle beta around the unit
+// direction (dir_x, dir_y); the clear part reaches clear_m, the contact part (clear_m, outer_m].
+struct Slice {
+  Point origin;
+  double dir_x, dir_y;
+  double beta;
+  double clear_m, outer_m;
+};
+
 enum class Part { outside, clear, contact };
 
-// Where point p lies relative to the slices of one reading.
-Part part_of(const RangeReading &r, double beta, double clear_m, double contact_m, Point p) {
-  const double ex = p.x_m - r.origin.x_m;
-  const double ey = p.y_m - r.origin.y_m;
+// Where point p lies (the spec's test of a corner or the centre).
+Part part_of(const Slice &s, Point p) {
+  const double ex = p.x_m - s.origin.x_m;
+  const double ey = p.y_m - s.origin.y_m;
   const double distance = std::hypot(ex, ey);
-  if (distance > contact_m) return Part::outside;
-  if (distance > 0.0 && std::abs(wrap_angle_rad(std::atan2(ey, ex) - r.angle_rad)) > beta) {
+  if (distance > s.outer_m) return Part::outside;
+  if (distance > 0.0 &&
+      std::abs(wrap_angle_rad(std::atan2(ey, ex) - std::atan2(s.dir_y, s.dir_x))) > s.beta) {
     return Part::outside;
   }
-  return distance <= clear_m ? Part::clear : Part::contact;
+  return distance <= s.clear_m ? Part::clear : Part::contact;
+}
+
+// A convex polygon relative to the sensor (x, y in m): a square clipped by two half-planes
+// has at most 4 + 2 vertices.
+struct Polygon {
+  std::array<std::array<double, 2>, 8> v;
+  std::size_t n = 0;
+};
+
+// Keeps the part of `poly` where n . p >= 0 (Sutherland-Hodgman against one half-plane).
+Polygon clip(const Polygon &poly, double nx, double ny) {
+  Polygon out;
+  for (std::size_t i = 0; i < poly.n; ++i) {
+    const auto &a = poly.v[i];
+    const auto &b = poly.v[(i + 1) % poly.n];
+    const double da = nx * a[0] + ny * a[1];
+    const double db = nx * b[0] + ny * b[1];
+    if (da >= 0.0) out.v[out.n++] = a;
+    if ((da >= 0.0) != (db >= 0.0)) {
+      const double t = da / (da - db);
+      out.v[out.n++] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
+    }
+  }
+  return out;
+}
+
+double area(const Polygon &poly) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < poly.n; ++i) {
+    const auto &a = poly.v[i];
+    const auto &b = poly.v[(i + 1) % poly.n];
+    twice += a[0] * b[1] - a[1] * b[0];
+  }
+  return std::abs(twice) / 2.0;
+}
+
+// Distance from the origin to the segment ab.
+double distance_to_segment(const std::array<double, 2> &a, const std::array<double, 2> &b) {
+  const double ex = b[0] - a[0];
+  const double ey = b[1] - a[1];
+  const double length2 = ex * ex + ey * ey;
+  const double t = length2 > 0.0 ? std::clamp(-(a[0] * ex + a[1] * ey) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(a[0] + t * ex, a[1] + t * ey);
+}
+
+// True when the reading's arc - radius clear_m, across the slice - passes through the
+// inside of the square [left, left + size] x [bottom, bottom + size]. The square clipped to
+// the wedge (convex, beta < 90 deg) is a convex polygon; its distances from the sensor fill
+// an interval [near, far], which holds the arc's radius strictly inside when the arc crosses.
+bool crossed_by_arc(const Slice &s, double left, double bottom, double size) {
+  const double x0 = left - s.origin.x_m;
+  const double y0 = bottom - s.origin.y_m;
+  Polygon poly{{{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}}}, 4};
+  // The wedge's sides are the direction turned by -beta and by +beta; inside is to the left
+  // of the first and to the right of the second.
+  const double c = std::cos(s.beta);
+  const double n = std::sin(s.beta);
+  const double lx = s.dir_x * c + s.dir_y * n;
+  const double ly = -s.dir_x * n + s.dir_y * c;
+  const double rx = s.dir_x * c - s.dir_y * n;
+  const double ry = s.dir_x * n + s.dir_y * c;
+  poly = clip(poly, -ly, lx);
+  poly = clip(poly, ry, -rx);
+  if (poly.n < 3 || area(poly) <= 1e-9 * size * size) return false;
+  double near = std::numeric_limits<double>::infinity();
+  double far = 0.0;
+  for (std::size_t i = 0; i < poly.n; ++i) {
+    far = std::max(far, std::hypot(poly.v[i][0], poly.v[i][1]));
+    near = std::min(near, distance_to_segment(poly.v[i], poly.v[(i + 1) % poly.n]));
+  }
+  return near < s.clear_m && s.clear_m < far;
 }
 
 void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const RangeReading &r,
               LeveledUpdate &update) {
-  const bool contacting = r.range_m < r.max_range_m * (1.0 - r.range_error);
+  const bool contacting = r.range_m < r.max_range_m * (1.0 - kPieNoReturnErrors * r.range_error);
   // A clear reading frees up to what it measured, less its error: noise near max range
   // must not free a wall just short of max.
   const double clear_m = contacting ? std::max(r.range_m, 0.0)
                                     : std::min(r.range_m, r.max_range_m) * (1.0 - r.range_error);
   const double outer_m = contacting ? clear_m + options.pie_contact_m : clear_m;
+  const Slice slice{r.origin, std::cos(r.angle_rad), std::sin(r.angle_rad),
+                    options.pie_half_angle_rad, clear_m, outer_m};
   const GridGeometry &g = grid.geometry();
   const double size = g.subcell_size_m();
   const auto to_index = [&](double v, double origin) {
@@ -50,10 +136,11 @@ void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const
       bool free = false;
       bool occupied = false;
       for (const Point p : points) {
-        const Part part = part_of(r, options.pie_half_angle_rad, clear_m, outer_m, p);
+        const Part part = part_of(slice, p);
         free = free || part == Part::clear;
         occupied = occupied || part == Part::contact;
       }
+      occupied = occupied || (contacting && crossed_by_arc(slice, left, bottom, size));
       if (occupied) {
         update.mark(grid, SubCell{x, y}, 0);
       } else if (free) {

@@ -10,22 +10,46 @@
 //          p = 0.99999, the sub-cells the ray crosses before it p = 0.4, the robot's own
 //          sub-cell p = 0.3 (base 10: 5.000, -0.176, -0.368). Readings of 0 or max: ignored.
 //   pie    a reading d < max is "contacting", else "clear". The clear slice reaches d (see
-//          below for noise near max), half-angle beta around the sensor's direction; a contacting reading adds a
-//          contact slice reaching d + alpha. Each sub-cell's four corners and centre are
-//          tested: a point in the contact slice but not in the clear one makes the sub-cell
-//          occupied (p = 0.7), else a point in the clear slice makes it free (p = 0.4).
+//          below for noise near max), half-angle beta around the sensor's direction; a
+//          contacting reading adds a contact slice reaching d + alpha. Each sub-cell's four
+//          corners and centre are tested: a point in the contact slice but not in the clear
+//          one makes the sub-cell occupied (p = 0.7), else a point in the clear slice makes
+//          it free (p = 0.4). Besides, a sub-cell is occupied when the reading's own arc -
+//          radius d, across the slice, where the contact part begins and the obstacle is -
+//          passes through its inside (an exact test, not a sample). With 1 m cells, K = 3 or
+//          5 and beta = 10 deg no corner or centre ever lies in the 0.1 m contact part beyond
+//          a wall 0.4 m ahead (the band sub-cell straddling the wall face has its centre in
+//          front of it, its corners outside the 0.14 m wide slice), so the five points alone
+//          never mark a wall; the arc lies in exactly that sub-cell. At K = 9 the corners do
+//          reach the contact part and the arc adds at most its neighbours across the slice.
 //   cone   reading d, beam width sigma (full aperture), distance error eps: the arc between
 //          d(1 - eps) and d(1 + eps) across the beam is occupied (the model's p_occ), the
 //          cone inside d(1 - eps) free (p_free); swept at an angular step of half a
 //          sub-cell's angular size at that range (and radially at half a sub-cell), so every
 //          sub-cell it covers is visited. A reading at max range frees the cone up to
-//          max (1 - eps) and marks no arc.
-// pie: a reading within the distance error of max (>= max (1 - eps)) is clear, and a clear
-// slice reaches the reading (1 - eps): the sensor's noise near max range would otherwise
-// report phantom contacts, or free a wall just short of max.
+//          max (1 - eps) and marks no arc. Both are weighted as in Moravec & Elfes (1985)
+//          and Elfes (1989): a point at angle theta off the axis and range r carries
+//          p = prior + w (p_model - prior) with w = 1 - (theta / (sigma/2))^2 on the arc
+//          and w = (1 - (theta / (sigma/2))^2) (1 - (r / (d (1 - eps)))^2) in the free
+//          cone: the model's p on the axis (at the sensor, for free), no information at the
+//          edges and where the free cone meets the arc. Why: a wide beam (sonar, 0.4 rad)
+//          averages rays spread over the cone (ir/sonar profiles, like Webots' distance
+//          sensors), so a point inside the reading need not be free; unweighted, the cone's
+//          edges freed the wall bands beside every corridor the sonar looked along (-0.85
+//          each time against the arc's +0.41 once): 15 of lab4x4's 40 sides came out wrong,
+//          every one a wall read as open. The arc is sampled at the centres of an odd number
+//          of equal angular steps, so a narrow beam (IR, 0.03 rad, one step) is marked on its
+//          axis and the axis keeps the course numbers.
+// pie: a reading within two distance errors of max (>= max (1 - 2 eps)) is clear, and a
+// clear slice reaches the reading (1 - eps): the sensor's noise near max range would
+// otherwise report phantom contacts, or free a wall just short of max. With the profiles'
+// noise (a standard deviation of eps times the value) a nothing-seen reading falls below
+// max (1 - eps) one time in six, below max (1 - 2 eps) one time in 44; one phantom contact
+// (+0.85) takes two clear slices (-0.41 each) to undo.
 // Per scan each sub-cell is updated once; the strongest evidence wins (occupied over the
-// robot's own sub-cell over free along a ray). Increments are SensorModel::increment_for(p),
-// i.e. l(p) - l(prior) in the model's base.
+// robot's own sub-cell over free along a ray; within a level, the larger weight). Increments
+// are SensorModel::increment_for(p), i.e. l(p) - l(prior) in the model's base; only the cone
+// model marks with weights below 1.
 
 #include <cstddef>
 #include <span>
@@ -44,6 +68,8 @@ inline constexpr double kDepthRayP = 0.4;
 inline constexpr double kDepthRobotP = 0.3;
 inline constexpr double kPieOccupiedP = 0.7;
 inline constexpr double kPieFreeP = 0.4;
+// pie: readings at or beyond max (1 - kPieNoReturnErrors eps) are clear, not contacting.
+inline constexpr double kPieNoReturnErrors = 2.0;
 
 // One bumper as read: where it touches (robot centre + mounting offset along its angle).
 struct BumpReading {
@@ -70,19 +96,27 @@ struct RangeModelOptions {
 void validate(const RangeModelOptions &options);
 
 // Marks with their own probabilities, gathered per scan: each sub-cell is updated once with
-// the mark of the lowest level (level 0 strongest). Marks outside the grid are ignored.
+// the mark of the lowest level (level 0 strongest) and, among those, the largest weight. A
+// mark of weight w in (0, 1] stands for p = prior + w (p_level - prior): the level's own p
+// at weight 1, the prior (no update) as w goes to 0. Marks outside the grid, or of weight
+// 0 or less, are ignored.
 class LeveledUpdate {
  public:
   explicit LeveledUpdate(std::vector<double> level_p) : level_p_(std::move(level_p)) {}
-  void mark(const OccupancyGrid &grid, SubCell s, int level);
-  void mark(const OccupancyGrid &grid, Point p, int level);
+  void mark(const OccupancyGrid &grid, SubCell s, int level, double weight = 1.0);
+  void mark(const OccupancyGrid &grid, Point p, int level, double weight = 1.0);
   // Applies l += increment_for(p of the level) once per marked sub-cell; returns the count.
   std::size_t apply(OccupancyGrid &grid, const SensorModel &model);
   bool empty() const { return marks_.empty(); }
 
  private:
   std::vector<double> level_p_;
-  std::vector<std::pair<std::size_t, int>> marks_;
+  struct Mark {
+    std::size_t index;
+    int level;
+    double weight;
+  };
+  std::vector<Mark> marks_;
 };
 
 // Levels: 0 occupied 0.99999, 1 free 0.3.
