@@ -13,9 +13,10 @@ namespace mapping {
 namespace {
 
 constexpr float kNoInformation = std::numeric_limits<float>::quiet_NaN();
+constexpr double kNaNRange = std::numeric_limits<double>::quiet_NaN();
 // Rounds of spike rejection: a rejection can only leave a neighbour's neighbour without
 // support, so a few rounds settle any cluster of spikes a 1 % fault rate makes.
-constexpr int kSpikeRounds = 3;
+constexpr int kSpikeRounds = 4;
 
 enum BeamState : unsigned char { no_return_or_invalid, trusted_return, rejected_return };
 
@@ -70,8 +71,12 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
     }
   }
   if (ranges_.size() >= 3) {
-    reject_spikes(scan);
-    reject_see_through(scan);
+    // A rejection takes a neighbour's support away: go again until nothing changes.
+    for (int round = 0; round < kSpikeRounds; ++round) {
+      const bool spikes = reject_spikes(scan);
+      const bool see_through = reject_see_through(scan);
+      if (!spikes && !see_through) break;
+    }
     drop_dropouts(scan);
   }
   LidarScan out = scan;
@@ -79,43 +84,67 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
   return out;
 }
 
-void ScanFilter::reject_spikes(const LidarScan &scan) {
+int ScanFilter::nearest_trusted(const LidarScan &scan, int i, int step) const {
   const int n = static_cast<int>(ranges_.size());
   const bool wrap = full_circle(scan);
   const int reach = std::min(options_.neighbour_reach, (n - 1) / 2);
-  const double absolute_m = options_.spike_tolerance_m();
-  const double relative = options_.grazing_step(scan.fov_rad / n);
-  // The nearest trusted return on one side (step -1 or +1) of beam i, or NaN.
-  const auto nearest = [&](int i, int step) {
-    for (int d = 1; d <= reach; ++d) {
-      const int j = neighbour_index(i, step * d, n, wrap);
-      if (j < 0) break;
-      if (state_[static_cast<std::size_t>(j)] == trusted_return) return ranges_[static_cast<std::size_t>(j)];
-    }
-    return kNoInformation;
-  };
-  for (int round = 0; round < kSpikeRounds; ++round) {
-    rejected_.clear();
-    for (int i = 0; i < n; ++i) {
-      if (state_[static_cast<std::size_t>(i)] != trusted_return) continue;
-      const double r = ranges_[static_cast<std::size_t>(i)];
-      const double left = nearest(i, -1);
-      const double right = nearest(i, +1);
-      // NaN compares false: a missing neighbour supports nothing.
-      const auto near = [&](double other) { return std::abs(r - other) <= absolute_m + relative * std::min(r, other); };
-      const bool between = std::min(left, right) - absolute_m <= r && r <= std::max(left, right) + absolute_m;
-      if (!near(left) && !near(right) && !between) rejected_.push_back(i);
-    }
-    if (rejected_.empty()) return;
-    for (const int i : rejected_) {
-      state_[static_cast<std::size_t>(i)] = rejected_return;
-      ranges_[static_cast<std::size_t>(i)] = kNoInformation;
-      ++counts_.spikes;
-    }
+  for (int d = 1; d <= reach; ++d) {
+    const int j = neighbour_index(i, step * d, n, wrap);
+    if (j < 0) break;
+    if (state_[static_cast<std::size_t>(j)] == trusted_return) return j;
   }
+  return -1;
 }
 
-void ScanFilter::reject_see_through(const LidarScan &scan) {
+double ScanFilter::continued(const LidarScan &scan, int i, int step) const {
+  const int a = nearest_trusted(scan, i, step);
+  const int b = a < 0 ? -1 : nearest_trusted(scan, a, step);
+  const int c = b < 0 ? -1 : nearest_trusted(scan, b, step);
+  if (c < 0 || b == i || c == i || c == a) return kNaNRange;
+  const double ra = ranges_[static_cast<std::size_t>(a)];
+  const double rb = ranges_[static_cast<std::size_t>(b)];
+  const double rc = ranges_[static_cast<std::size_t>(c)];
+  // Only a surface: the three returns must follow the same ratio, so a spike cannot lend
+  // its jump as a trend.
+  const double predicted_a = rb * rb / rc;
+  const double tolerance = options_.spike_tolerance_m() + options_.grazing_step(scan.fov_rad / static_cast<double>(ranges_.size())) * std::min(ra, predicted_a);
+  if (!(std::abs(ra - predicted_a) <= tolerance)) return kNaNRange;
+  return ra * ra / rb;
+}
+
+bool ScanFilter::reject_spikes(const LidarScan &scan) {
+  const int n = static_cast<int>(ranges_.size());
+  const double absolute_m = options_.spike_tolerance_m();
+  const double relative = options_.grazing_step(scan.fov_rad / n);
+  const auto range_of = [&](int j) {
+    return j < 0 ? kNaNRange : static_cast<double>(ranges_[static_cast<std::size_t>(j)]);
+  };
+  rejected_.clear();
+  for (int i = 0; i < n; ++i) {
+    if (state_[static_cast<std::size_t>(i)] != trusted_return) continue;
+    const double r = ranges_[static_cast<std::size_t>(i)];
+    const double left = range_of(nearest_trusted(scan, i, -1));
+    const double right = range_of(nearest_trusted(scan, i, +1));
+    // NaN compares false: a missing neighbour supports nothing.
+    const auto near = [&](double other) { return std::abs(r - other) <= absolute_m + relative * std::min(r, other); };
+    const bool between = std::min(left, right) - absolute_m <= r && r <= std::max(left, right) + absolute_m;
+    if (near(left) || near(right) || between) continue;
+    if (near(continued(scan, i, -1)) || near(continued(scan, i, +1))) continue;
+    rejected_.push_back(i);
+  }
+  return reject_collected();
+}
+
+bool ScanFilter::reject_collected() {
+  for (const int i : rejected_) {
+    state_[static_cast<std::size_t>(i)] = rejected_return;
+    ranges_[static_cast<std::size_t>(i)] = kNoInformation;
+    ++counts_.spikes;
+  }
+  return !rejected_.empty();
+}
+
+bool ScanFilter::reject_see_through(const LidarScan &scan) {
   const int n = static_cast<int>(ranges_.size());
   const bool wrap = full_circle(scan);
   const int reach = std::min(options_.neighbour_reach, (n - 1) / 2);
@@ -158,11 +187,7 @@ void ScanFilter::reject_see_through(const LidarScan &scan) {
       }
     }
   }
-  for (const int i : rejected_) {
-    state_[static_cast<std::size_t>(i)] = rejected_return;
-    ranges_[static_cast<std::size_t>(i)] = kNoInformation;
-    ++counts_.spikes;
-  }
+  return reject_collected();
 }
 
 void ScanFilter::drop_dropouts(const LidarScan &scan) {
@@ -170,6 +195,19 @@ void ScanFilter::drop_dropouts(const LidarScan &scan) {
   const bool wrap = full_circle(scan);
   // A beam that returned something, trusted or not, ends a run.
   const auto returned = [&](int i) { return state_[static_cast<std::size_t>(i)] != no_return_or_invalid; };
+  // A trusted return so far away that the surface it lies on may go on past max range in
+  // the next beam (a corridor's walls seen at a grazing angle): the run beside it may be a
+  // real view past max range.
+  const double absolute_m = options_.spike_tolerance_m();
+  const double relative = options_.grazing_step(scan.fov_rad / n);
+  const auto reaches_max_range = [&](int i, int away) {
+    if (state_[static_cast<std::size_t>(i)] != trusted_return) return false;
+    const double r = ranges_[static_cast<std::size_t>(i)];
+    // The next beam's range if the surface recedes by the same ratio as from the return before.
+    const int before = nearest_trusted(scan, i, away);
+    const double next_m = before < 0 ? kNaNRange : r * r / ranges_[static_cast<std::size_t>(before)];
+    return r + absolute_m + relative * r >= scan.max_range_m || next_m + absolute_m >= scan.max_range_m;
+  };
   // Start at a return so that a run never wraps past the start unseen.
   int first = -1;
   for (int i = 0; i < n && first < 0; ++i) {
@@ -187,7 +225,8 @@ void ScanFilter::drop_dropouts(const LidarScan &scan) {
       continue;
     }
     const bool bounded = offset < span || wrap;
-    if (run_start >= 0 && bounded && offset - run_start <= options_.max_dropout_run) {
+    if (run_start >= 0 && bounded && offset - run_start <= options_.max_dropout_run &&
+        !reaches_max_range((first + run_start - 1) % n, -1) && !reaches_max_range(i, +1)) {
       for (int o = run_start; o < offset; ++o) {
         float &r = ranges_[static_cast<std::size_t>((first + o) % n)];
         if (std::isnan(r)) continue;  // invalid: counted already

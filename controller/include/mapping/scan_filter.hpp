@@ -7,14 +7,17 @@
 //   invalid    NaN, negative or below min range                        -> NaN
 //   spike      a return that agrees with neither neighbouring return    -> NaN
 //              (nearest returns within `neighbour_reach` beams on each side): it is further
-//              than the tolerance from both, and not between them. Beams 1 degree apart on
+//              than the tolerance from both, not between them, and not where the two returns
+//              on either side, continued at their ratio, put it. Beams 1 degree apart on
 //              one wall differ by millimetres, or grow steadily along a wall seen at a
 //              grazing angle; a spike jumps. Checked again after each round of rejections,
 //              so that two spikes side by side cannot vouch for each other.
 //   dropout    a no return among returns: a run of at most `max_dropout_run` beams
 //              without a return, with returns on both sides             -> NaN
 //              A wall is not seen through between two beams that hit it; a real view past
-//              max range through an opening is wider than a few beams.
+//              max range through an opening is wider than a few beams, unless it is
+//              bounded by returns close enough to max range (within the spike tolerance) that
+//              the surface they lie on may go past it in the next beam: such a run stands.
 // A no return outside such a run stays a no return (nothing within max range).
 //
 //   beams            0.50  inf   0.50  7.30  0.51  0.51  inf   inf   inf   inf   inf ...
@@ -76,8 +79,16 @@ class ScanFilter {
   const ScanFilterCounts &counts() const { return counts_; }
 
  private:
-  void reject_spikes(const LidarScan &scan);
-  void reject_see_through(const LidarScan &scan);
+  // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
+  int nearest_trusted(const LidarScan &scan, int i, int step) const;
+  // Beam i's range as the two nearest trusted returns going `step` predict it, a surface
+  // receding by a steady ratio a beam (a wall seen at a grazing angle), m; NaN without them
+  // or when a third return does not follow the same ratio.
+  double continued(const LidarScan &scan, int i, int step) const;
+  // One round of each rule; true when it rejected a return.
+  bool reject_spikes(const LidarScan &scan);
+  bool reject_see_through(const LidarScan &scan);
+  bool reject_collected();  // rejects the beams in rejected_
   void drop_dropouts(const LidarScan &scan);
 
   ScanFilterOptions options_;
