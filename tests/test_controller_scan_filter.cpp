@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/random.hpp"
 #include "mapping/models.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/scan_filter.hpp"
@@ -217,6 +218,34 @@ TEST_CASE("scan filter: NaN and negative readings are never stored in the grid")
       }
     }
     CHECK(grid.at(mapping::Cell{1, 1}, mapping::LocalSubCell{0, 1}) > 0.0f);  // the north wall
+  }
+}
+
+TEST_CASE("scan filter: any scan comes out the same size, each reading kept or no information") {
+  common::Rng rng(9);
+  for (int trial = 0; trial < 2000; ++trial) {
+    CAPTURE(trial);
+    const int n = static_cast<int>(rng.uniform(0.0, 40.0));
+    std::vector<float> r(static_cast<std::size_t>(n));
+    for (float &v : r) {
+      const double u = rng.uniform01();
+      v = u < 0.2 ? kInf : (u < 0.25 ? kNaN : (u < 0.3 ? -1.0f : static_cast<float>(rng.uniform(0.0, 13.0))));
+    }
+    mapping::LidarScan s = full_circle(r);
+    if (trial % 2 == 1) s.fov_rad = n * kDeg;  // a partial field of view
+    mapping::ScanFilter filter;
+    const mapping::LidarScan out = filter.apply(s);
+    REQUIRE(out.beam_count() == n);
+    std::size_t gone = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const float v = out.ranges[i];
+      const bool kept = v == r[i] || (std::isnan(v) && std::isnan(r[i]));
+      CHECK((kept || std::isnan(v)));
+      CHECK_FALSE((std::isnan(v) == false && s.kind_of(v) == mapping::ReadingKind::invalid));
+      if (std::isnan(v)) ++gone;
+    }
+    const mapping::ScanFilterCounts &c = filter.counts();
+    CHECK(c.invalid + c.spikes + c.dropouts == gone);
   }
 }
 
