@@ -10,14 +10,19 @@
 //              than the tolerance from both, not between them, and not where the two returns
 //              on either side, continued at their ratio, put it. Beams 1 degree apart on
 //              one wall differ by millimetres, or grow steadily along a wall seen at a
-//              grazing angle; a spike jumps. Checked again after each round of rejections,
-//              so that two spikes side by side cannot vouch for each other.
+//              grazing angle; a spike jumps.
+//   see-through  a cluster of at most `max_see_through` agreeing returns further than the
+//              returns on both sides of it (two spikes that happen to agree)  -> NaN
+//              Both rules run again after each round of rejections, so that spikes side by
+//              side cannot vouch for each other.
 //   dropout    a no return among returns: a run of at most `max_dropout_run` beams
 //              without a return, with returns on both sides             -> NaN
 //              A wall is not seen through between two beams that hit it; a real view past
 //              max range through an opening is wider than a few beams, unless it is
-//              bounded by returns close enough to max range (within the spike tolerance) that
-//              the surface they lie on may go past it in the next beam: such a run stands.
+//              bounded by a return so far away that the surface it lies on may go past max
+//              range in the next beam (within the spike tolerance, or receding at the ratio
+//              of the return before it: a corridor's walls seen down its length): such a
+//              run stands.
 // A no return outside such a run stays a no return (nothing within max range).
 //
 //   beams            0.50  inf   0.50  7.30  0.51  0.51  inf   inf   inf   inf   inf ...
