@@ -73,7 +73,12 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.motion.wheel_radius_m = profile.wheel_radius_m;
   c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
-  if (!profile.lidars.empty()) c.devices.lidar = profile.lidars.front().name;
+  if (!profile.lidars.empty()) {
+    const maze::sim::LidarSpec &lidar = profile.lidars.front();
+    c.devices.lidar = lidar.name;
+    // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
+    c.scan_filter.range_noise_m = options.noise.value_or(lidar.noise) * lidar.max_range_m;
+  }
   c.speed_run = options.speed_run;
   c.sensing = sensing_of(profile);
   c.sensing.range_model = options.range_model;

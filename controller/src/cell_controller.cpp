@@ -379,8 +379,24 @@ struct CellController::Impl {
     s.min_range_m = lidar->getMinRange();
     s.max_range_m = lidar->getMaxRange();
     s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar->getHorizontalResolution()));
-    const std::size_t updated = mapping::integrate_scan(options.mapping, grid, s, c, model, update);
+    const std::size_t updated =
+        mapping::integrate_scan(options.mapping, grid, scan_filter.apply(s), c, model, update);
     if (has_pending) pending.subcells_updated += updated;
+  }
+
+  // Lidar models: while a side of c is unknown after its scan (every beam towards it was
+  // filtered out as a fault), waits one control step at rest and scans again: the next
+  // reading is a new draw of the sensor, not the same faulty one.
+  Motion rescan_unknown_sides(Cell c, const explore::WallQuery &walls) {
+    const auto unknown_side = [&] {
+      return std::ranges::any_of(mapping::kHeadings,
+                                 [&](Heading h) { return walls(c, h) == mapping::SideState::unknown; });
+    };
+    for (int attempt = 0; attempt < options.max_rescans && unknown_side(); ++attempt) {
+      if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+      scan(c);
+    }
+    return Motion::ok;
   }
 
   void notify(const Observer &observer, Cell c, Heading h, bool new_cell) const {
@@ -406,6 +422,7 @@ struct CellController::Impl {
     const auto arrive = [&](bool new_cell) {
       scan(cell);
       Motion s = Motion::ok;
+      if (lidar != nullptr) s = rescan_unknown_sides(cell, walls);
       if (bump) s = probe_unknown_sides(cell, heading, walls);
       if (depth && new_cell) s = look_around(cell, heading);
       notify(observer, cell, heading, new_cell);
@@ -480,6 +497,7 @@ struct CellController::Impl {
   explore::Visits visits;
   explore::Explorer explorer;
   mapping::ScanUpdate update;
+  mapping::ScanFilter scan_filter{options.scan_filter};
   mapping::LeveledUpdate bump_update = mapping::make_bump_update();
   mapping::LeveledUpdate range_update = range_update_for(options);
   std::vector<mapping::BumpReading> bump_readings;

@@ -74,6 +74,10 @@ void validate(const ControllerOptions &options) {
   mapping::validate(options.geometry, mapping::kDefaultMaxGridBytes);
   mapping::validate(options.sensor);
   mapping::validate(options.mapping);
+  mapping::validate(options.scan_filter);
+  if (options.max_rescans < 0 || options.max_rescans > 100) {
+    throw common::InputError(fmt::format("rescans must be 0 to 100 (got {})", options.max_rescans));
+  }
   explore::validate(explore::ExplorerOptions{options.strategy, options.geometry.width_cells,
                                              options.geometry.height_cells, options.start,
                                              options.goals});

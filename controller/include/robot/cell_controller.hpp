@@ -28,6 +28,7 @@
 #include "mapping/models.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/range_models.hpp"
+#include "mapping/scan_filter.hpp"
 #include "mapping/sensor_model.hpp"
 
 namespace webots {
@@ -100,6 +101,12 @@ struct ControllerOptions {
   std::vector<mapping::Cell> goals;    // micromouse-style targets (floodfill)
   mapping::SensorModelOptions sensor;
   mapping::MappingOptions mapping;
+  // Lidar models: what each scan goes through before it is marked (spikes and dropped
+  // beams become "no information"; mapping/scan_filter.hpp).
+  mapping::ScanFilterOptions scan_filter;
+  // Lidar models: scans taken again, one control step apart, while a side of the robot's
+  // cell is still unknown after arriving (a reading the filter left without information).
+  int max_rescans = 3;
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   MotionOptions motion;
   DeviceNames devices;

@@ -1,0 +1,106 @@
+#pragma once
+// The range-filtering stage: what a lidar scan goes through before any model marks it, so
+// that faulty beams bring no information instead of wrong information (issue 9).
+//
+// Each reading comes out as it went in, or as NaN ("no information", which every model
+// ignores):
+//   invalid    NaN, negative or below min range                        -> NaN
+//   spike      a return that agrees with neither neighbouring return    -> NaN
+//              (nearest returns within `neighbour_reach` beams on each side): it is further
+//              than the tolerance from both, not between them, and not where the two returns
+//              on either side, continued at their ratio, put it. Beams 1 degree apart on
+//              one wall differ by millimetres, or grow steadily along a wall seen at a
+//              grazing angle; a spike jumps.
+//   see-through  a cluster of at most `max_see_through` agreeing returns further than the
+//              returns on both sides of it (two spikes that happen to agree)  -> NaN
+//              Both rules run again after each round of rejections, so that spikes side by
+//              side cannot vouch for each other.
+//   dropout    a no return among returns: a run of at most `max_dropout_run` beams
+//              without a return, with returns on both sides             -> NaN
+//              A wall is not seen through between two beams that hit it; a real view past
+//              max range through an opening is wider than a few beams, unless it is
+//              bounded by a return so far away that the surface it lies on may go past max
+//              range in the next beam (within the spike tolerance, or receding at the ratio
+//              of the return before it: a corridor's walls seen down its length): such a
+//              run stands.
+// A no return outside such a run stays a no return (nothing within max range).
+//
+//   beams            0.50  inf   0.50  7.30  0.51  0.51  inf   inf   inf   inf   inf ...
+//   filtered         0.50  NaN   0.50  NaN   0.51  0.51  inf   inf   inf   inf   inf ...
+//                          dropout     spike             view past max range (a long run)
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <vector>
+
+#include "mapping/scan.hpp"
+
+namespace mapping {
+
+struct ScanFilterOptions {
+  // Standard deviation (m) of the lidar's range noise (Webots: noise x max range); the
+  // spike tolerance grows with it so that noise alone rejects nothing.
+  double range_noise_m = 0.01;
+  // Beams on each side searched for a neighbouring return.
+  int neighbour_reach = 3;
+  // Widest cluster of agreeing returns (beams) rejected when it lies further than the
+  // returns on both sides of it: a view through a wall is spikes vouching for each other.
+  int max_see_through = 2;
+  // Longest run of beams without a return, between returns, read as dropped beams.
+  int max_dropout_run = 6;
+
+  // A wall seen this far from square-on (rad) still makes neighbouring returns agree: the
+  // range grows by r tan(angle) per radian of beam step there (80 degrees: 10 % of the range
+  // a 1-degree step).
+  double max_grazing_rad = 80.0 * std::numbers::pi / 180.0;
+
+  // How far (m) a return may differ from its neighbours for noise: 5 cm plus 5 sigma.
+  double spike_tolerance_m() const { return 0.05 + 5.0 * range_noise_m; }
+  // The further difference allowed per metre of range between beams beam_step_rad apart.
+  double grazing_step(double beam_step_rad) const { return std::tan(max_grazing_rad) * beam_step_rad; }
+};
+
+// Throws common::InputError when an option is out of range (noise >= 0 and finite,
+// reach 1 ... 10, dropout run 0 ... 32).
+void validate(const ScanFilterOptions &options);
+
+// What the last filtering did, beam counts.
+struct ScanFilterCounts {
+  std::size_t invalid = 0;
+  std::size_t spikes = 0;
+  std::size_t dropouts = 0;
+};
+
+class ScanFilter {
+ public:
+  explicit ScanFilter(const ScanFilterOptions &options = {});
+
+  // The scan with its invalid, spiked and dropped readings replaced by NaN (the table
+  // above); same pose, field of view and limits. Its ranges live in this filter: valid
+  // until the next call.
+  LidarScan apply(const LidarScan &scan);
+
+  const ScanFilterCounts &counts() const { return counts_; }
+
+ private:
+  // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
+  int nearest_trusted(const LidarScan &scan, int i, int step) const;
+  // Beam i's range as the two nearest trusted returns going `step` predict it, a surface
+  // receding by a steady ratio a beam (a wall seen at a grazing angle), m; NaN without them
+  // or when a third return does not follow the same ratio.
+  double continued(const LidarScan &scan, int i, int step) const;
+  // One round of each rule; true when it rejected a return.
+  bool reject_spikes(const LidarScan &scan);
+  bool reject_see_through(const LidarScan &scan);
+  bool reject_collected();  // rejects the beams in rejected_
+  void drop_dropouts(const LidarScan &scan);
+
+  ScanFilterOptions options_;
+  std::vector<float> ranges_;
+  std::vector<unsigned char> state_;  // per beam: returns still trusted, rejected, or neither
+  std::vector<int> rejected_;
+  ScanFilterCounts counts_;
+};
+
+}  // namespace mapping
