@@ -1,7 +1,9 @@
 #include "mapping/models.hpp"
 
 #include <cassert>
+#include <algorithm>
 #include <cmath>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -186,42 +188,73 @@ struct PlaceTable {
 template <int K>
 inline constexpr PlaceTable<K> kPlaceTable{};
 
+// PlaceTable with the flat-index step of each move folded in, one table per quadrant of beam
+// directions (the steps depend on the grid's width): entry bits 0-9 as in PlaceTable, bits
+// 10-31 the signed flat-index step. Built again only when the grid's width changes.
+template <int K>
+class MoveTable {
+ public:
+  static constexpr int kFlatShift = 10;
+
+  void prepare(int width_cells) {
+    if (width_cells == width_cells_) return;
+    width_cells_ = width_cells;
+    constexpr std::int32_t kk = K;
+    const std::int32_t row_of_cells = width_cells * kk * kk;
+    for (int quadrant = 0; quadrant < 4; ++quadrant) {
+      const std::int32_t step_x = (quadrant & 1) != 0 ? 1 : -1;
+      const std::int32_t step_y = (quadrant & 2) != 0 ? 1 : -1;
+      // By kind of move: inside a cell x moves 1 and y a row of K; across, into the
+      // neighbour cell's first or last column or row.
+      const std::int32_t dx[3] = {0, step_x, step_x * (kk * kk - kk + 1)};
+      const std::int32_t dy[3] = {0, -step_y * kk, step_y * (row_of_cells + (kk - 1) * kk)};
+      for (std::size_t n = 0; n < PlaceTable<K>::kPlaces * 4; ++n) {
+        const std::uint16_t e = kPlaceTable<K>.entry[n];
+        const unsigned kind = e >> 12u;
+        const std::int32_t flat_step = dx[kind / 3] + dy[kind % 3];
+        entries_[static_cast<std::size_t>(quadrant)][n] =
+            static_cast<std::int32_t>(static_cast<std::uint32_t>(flat_step) << kFlatShift) | (e & 0x3FF);
+      }
+    }
+  }
+  const std::int32_t *quadrant(int step_x, int step_y) const {
+    return entries_[static_cast<std::size_t>((step_x > 0 ? 1 : 0) + (step_y > 0 ? 2 : 0))].data();
+  }
+
+ private:
+  int width_cells_ = -1;
+  std::array<std::array<std::int32_t, PlaceTable<K>::kPlaces * 4>, 4> entries_{};
+};
+
 // One beam's Amanatides-Woo walk in the grid's flat layout, for K sub-cells a side: trace_ray's
 // arithmetic (the same sub-cells and exit distances), carrying the sub-cell's flat index and
 // its place in its cell instead of (x, y).
 template <int K>
 class FlatWalk {
  public:
-  FlatWalk(const OccupancyGrid &grid, const TraversalStart &t)
+  FlatWalk(const OccupancyGrid &grid, const MoveTable<K> &moves, const TraversalStart &t)
       : axes_(t, to_edge(t.step_x, t.x, grid.geometry().width_subcells()),
               to_edge(t.step_y, t.y, grid.geometry().height_subcells())),
-        flat_(static_cast<std::ptrdiff_t>(grid.index(SubCell{t.x, t.y}))) {
+        moves_(moves.quadrant(t.step_x, t.step_y)),
+        flat_(static_cast<std::uint32_t>(grid.index(SubCell{t.x, t.y}))) {
     const int j = t.x % K;
     const int r = t.y % K;  // from the south
     place_ = PlaceTable<K>::place(t.step_x > 0 ? K - 1 - j : j, t.step_y > 0 ? K - 1 - r : r, false);
-    // Flat index steps by kind of move (PlaceTable): inside a cell x moves 1 and y a row of
-    // K; across, into the neighbour cell's first or last column or row.
-    constexpr std::ptrdiff_t kk = K;
-    const std::ptrdiff_t row_of_cells = static_cast<std::ptrdiff_t>(grid.width()) * kk * kk;
-    const std::ptrdiff_t dx[3] = {0, t.step_x, t.step_x * (kk * kk - kk + 1)};
-    const std::ptrdiff_t dy[3] = {0, -t.step_y * kk, t.step_y * (row_of_cells + (kk - 1) * kk)};
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) flat_step_[a * 3 + b] = dx[a] + dy[b];
-    }
   }
 
   // Path length (m) at which the beam leaves the current sub-cell.
   double exit_m() const { return axes_.exit_m(); }
-  std::uint32_t flat() const { return static_cast<std::uint32_t>(flat_); }
+  std::uint32_t flat() const { return flat_; }
   bool outside() const { return axes_.outside(); }
-  // Moves to the next sub-cell (which may be outside the grid). Returns PlaceTable's entry
-  // for the move: whether the sub-cell left is freed (kFree), or would be freed whichever way
-  // it was left (kFreeAnyway).
-  std::uint16_t step() {
-    const std::uint16_t e = kPlaceTable<K>.entry[place_ * 4 + static_cast<unsigned>(axes_.step())];
-    place_ = e & 0xFFu;
-    flat_ += flat_step_[e >> 12];
-    return e;
+
+  // Moves to the next sub-cell (which may be outside the grid: then flat() means nothing).
+  // Returns PlaceTable's flags for the move: whether the sub-cell left is freed (kFree), or
+  // would be freed whichever way it was left (kFreeAnyway).
+  std::uint32_t step() {
+    const std::int32_t e = moves_[place_ * 4 + static_cast<unsigned>(axes_.step())];
+    place_ = static_cast<unsigned>(e) & 0xFFu;
+    flat_ += static_cast<std::uint32_t>(e >> MoveTable<K>::kFlatShift);  // wraps outside the grid
+    return static_cast<std::uint32_t>(e);
   }
   // The current sub-cell is interior or was entered across a cell side.
   bool freed_anyway() const { return (kPlaceTable<K>.entry[place_ * 4] & PlaceTable<K>::kFreeAnyway) != 0; }
@@ -233,9 +266,9 @@ class FlatWalk {
   }
 
   AxisPair axes_;
-  std::ptrdiff_t flat_;
+  const std::int32_t *moves_;
+  std::uint32_t flat_;
   unsigned place_;
-  std::ptrdiff_t flat_step_[9];
 };
 
 // cos and sin of every beam's angle relative to the heading, for one beam count and field
@@ -281,7 +314,7 @@ bool free_passed(FlatWalk<K> &walk, double length_m, bool no_return, const ScanU
   std::uint32_t *next = out;
   while (walk.exit_m() < length_m) {
     const std::uint32_t here = walk.flat();
-    const std::uint16_t move = walk.step();
+    const std::uint32_t move = walk.step();
     if (walk.outside()) {
       out = marks.mark_free(next, here, (move & PlaceTable<K>::kFreeAnyway) != 0 || no_return);
       return false;
@@ -315,11 +348,18 @@ void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const L
   const GridGeometry &g = grid.geometry();
   const auto origin = traversal_origin(g, scan.origin);
   if (!origin) return;  // every beam starts outside the grid
+  thread_local MoveTable<K> moves;
+  moves.prepare(g.width_cells);
   ScanUpdate::UniqueMarks marks = update.unique_marks(grid);
-  // A beam passes at most one sub-cell per step and steps at most this often in the grid.
-  const auto max_passed = static_cast<std::size_t>(g.width_subcells()) +
-                          static_cast<std::size_t>(g.height_subcells()) + 2;
-  const auto max_occupied = static_cast<std::size_t>(options.hit_depth) + 1;
+  // Room for the scan's marks: a beam lists at most one sub-cell per step and steps at most
+  // width + height times in the grid, and a scan lists each sub-cell at most once; plus the
+  // slot a mark writes before it knows whether it keeps it.
+  const auto beams = static_cast<std::size_t>(scan.beam_count());
+  const std::size_t per_beam = static_cast<std::size_t>(g.width_subcells()) +
+                               static_cast<std::size_t>(g.height_subcells()) + 2;
+  std::uint32_t *free_out = marks.reserve_free(std::min(grid.size(), beams * per_beam) + 1);
+  std::uint32_t *occupied_out = marks.reserve_occupied(
+      std::min(grid.size(), beams * (static_cast<std::size_t>(options.hit_depth) + 1)) + 1);
   // World direction of beam i: the beam's direction rotated by the yaw (two sin/cos per
   // scan instead of two per beam).
   const double cy = std::cos(scan.yaw_rad);
@@ -331,15 +371,13 @@ void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const L
     if (no_return && (options.ignore_no_return || scan.lone_no_return(i))) continue;
     const double dir_x = cy * table.cos(i) - sy * table.sin(i);
     const double dir_y = sy * table.cos(i) + cy * table.sin(i);
-    FlatWalk<K> walk(grid, start_traversal(g, *origin, dir_x, dir_y));
+    FlatWalk<K> walk(grid, moves, start_traversal(g, *origin, dir_x, dir_y));
     const double length_m = no_return ? scan.max_range_m : scan.ranges[static_cast<std::size_t>(i)];
-    std::uint32_t *free_out = marks.reserve_free(max_passed);
     const bool ended = free_passed(walk, length_m, no_return, marks, free_out);
-    marks.commit_free(free_out);
-    if (ended && !no_return) {
-      marks.commit_occupied(occupy_end(walk, options.hit_depth, marks, marks.reserve_occupied(max_occupied)));
-    }
+    if (ended && !no_return) occupied_out = occupy_end(walk, options.hit_depth, marks, occupied_out);
   }
+  marks.commit_free(free_out);
+  marks.commit_occupied(occupied_out);
 }
 
 void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
