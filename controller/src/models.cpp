@@ -100,13 +100,20 @@ class AxisPair {
 
   // min(next_x, next_y) as std::min takes it (next_y < next_x ? next_y : next_x): MINSD.
   double exit_m() const { return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(next_, next_), next_)); }
+  // exit_m() < length_m, as next_x < length_m || next_y < length_m: the same unless next_x is
+  // NaN, which FlatWalk rules out.
+  bool exits_before(double length_m) const {
+    return _mm_movemask_pd(_mm_cmplt_pd(next_, _mm_set1_pd(length_m))) != 0;
+  }
 
   // x steps when next_x <= next_y; y when next_y <= min(next_x, next_y) taken before x
   // steps, which is next_y <= next_x, NaN included. Returns bit 0 x stepped, bit 1 y.
+  // A lane that does not step adds +0.0, which leaves it as it is (next_x and next_y are
+  // +0.0 or more, infinity or NaN).
   int step() {
-    const __m128d swapped = _mm_shuffle_pd(next_, next_, 1);
+    const __m128d swapped = _mm_castsi128_pd(_mm_shuffle_epi32(_mm_castpd_si128(next_), 0x4E));
     const __m128d moves = _mm_cmple_pd(next_, swapped);
-    next_ = _mm_or_pd(_mm_and_pd(moves, _mm_add_pd(next_, delta_)), _mm_andnot_pd(moves, next_));
+    next_ = _mm_add_pd(next_, _mm_and_pd(moves, delta_));
     to_edge_ = _mm_add_epi64(to_edge_, _mm_castpd_si128(moves));  // -1 where it stepped
     return _mm_movemask_pd(moves);
   }
@@ -123,6 +130,7 @@ class AxisPair {
       : next_x_(t.next_x), next_y_(t.next_y), delta_x_(t.delta_x), delta_y_(t.delta_y),
         to_edge_x_(to_edge_x), to_edge_y_(to_edge_y) {}
   double exit_m() const { return std::min(next_x_, next_y_); }
+  bool exits_before(double length_m) const { return exit_m() < length_m; }
   int step() {
     const bool sx = next_x_ <= next_y_;
     const bool sy = next_y_ <= next_x_;
@@ -229,19 +237,36 @@ class MoveTable {
 // One beam's Amanatides-Woo walk in the grid's flat layout, for K sub-cells a side: trace_ray's
 // arithmetic (the same sub-cells and exit distances), carrying the sub-cell's flat index and
 // its place in its cell instead of (x, y).
+// What every beam of a scan shares: the sub-cell it starts in.
+template <int K>
+struct WalkOrigin {
+  WalkOrigin(const OccupancyGrid &grid, const TraversalOrigin &o)
+      : flat(static_cast<std::uint32_t>(grid.index(SubCell{o.x, o.y}))),
+        j(o.x % K),
+        r(o.y % K),
+        west(o.x),
+        south(o.y),
+        east(grid.geometry().width_subcells() - 1 - o.x),
+        north(grid.geometry().height_subcells() - 1 - o.y) {}
+  std::uint32_t flat;
+  int j, r;                        // place in the cell: column from the west, row from the south
+  int west, south, east, north;    // sub-cells between it and the grid's edges
+};
+
 template <int K>
 class FlatWalk {
  public:
-  FlatWalk(const OccupancyGrid &grid, const MoveTable<K> &moves, const TraversalStart &t)
-      : axes_(t, to_edge(t.step_x, t.x, grid.geometry().width_subcells()),
-              to_edge(t.step_y, t.y, grid.geometry().height_subcells())),
+  FlatWalk(const WalkOrigin<K> &o, const MoveTable<K> &moves, const TraversalStart &t)
+      : axes_(t, to_edge(t.step_x, o.east, o.west), to_edge(t.step_y, o.north, o.south)),
         moves_(moves.quadrant(t.step_x, t.step_y)),
-        flat_(static_cast<std::uint32_t>(grid.index(SubCell{t.x, t.y}))) {
-    const int j = t.x % K;
-    const int r = t.y % K;  // from the south
-    place_ = PlaceTable<K>::place(t.step_x > 0 ? K - 1 - j : j, t.step_y > 0 ? K - 1 - r : r, false);
-  }
+        flat_(o.flat),
+        place_(PlaceTable<K>::place(t.step_x > 0 ? K - 1 - o.j : o.j, t.step_y > 0 ? K - 1 - o.r : o.r, false)),
+        // next_x is NaN only from 0 * infinity (a direction too small to divide by, starting
+        // on a boundary); trace_ray then ends in the first sub-cell.
+        stuck_(t.next_x != t.next_x) {}
 
+  // exit_m() < length_m: the beam leaves the current sub-cell before length_m.
+  bool exits_before(double length_m) const { return !stuck_ && axes_.exits_before(length_m); }
   // Path length (m) at which the beam leaves the current sub-cell.
   double exit_m() const { return axes_.exit_m(); }
   std::uint32_t flat() const { return flat_; }
@@ -260,15 +285,16 @@ class FlatWalk {
   bool freed_anyway() const { return (kPlaceTable<K>.entry[place_ * 4] & PlaceTable<K>::kFreeAnyway) != 0; }
 
  private:
-  static std::int64_t to_edge(int step, int at, int size) {
+  static std::int64_t to_edge(int step, int ahead, int behind) {
     constexpr std::int64_t never = std::int64_t{1} << 40;  // an axis the beam does not move along
-    return step > 0 ? size - 1 - at : (step < 0 ? at : never);
+    return step > 0 ? ahead : (step < 0 ? behind : never);
   }
 
   AxisPair axes_;
   const std::int32_t *moves_;
   std::uint32_t flat_;
   unsigned place_;
+  bool stuck_;
 };
 
 // cos and sin of every beam's angle relative to the heading, for one beam count and field
@@ -312,7 +338,7 @@ template <int K>
 bool free_passed(FlatWalk<K> &walk, double length_m, bool no_return, const ScanUpdate::UniqueMarks &marks,
                  std::uint32_t *&out) {
   std::uint32_t *next = out;
-  while (walk.exit_m() < length_m) {
+  while (walk.exits_before(length_m)) {
     const std::uint32_t here = walk.flat();
     const std::uint32_t move = walk.step();
     if (walk.outside()) {
@@ -350,6 +376,7 @@ void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const L
   if (!origin) return;  // every beam starts outside the grid
   thread_local MoveTable<K> moves;
   moves.prepare(g.width_cells);
+  const WalkOrigin<K> start(grid, *origin);
   ScanUpdate::UniqueMarks marks = update.unique_marks(grid);
   // Room for the scan's marks: a beam lists at most one sub-cell per step and steps at most
   // width + height times in the grid, and a scan lists each sub-cell at most once; plus the
@@ -371,7 +398,7 @@ void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const L
     if (no_return && (options.ignore_no_return || scan.lone_no_return(i))) continue;
     const double dir_x = cy * table.cos(i) - sy * table.sin(i);
     const double dir_y = sy * table.cos(i) + cy * table.sin(i);
-    FlatWalk<K> walk(grid, moves, start_traversal(g, *origin, dir_x, dir_y));
+    FlatWalk<K> walk(start, moves, start_traversal(g, *origin, dir_x, dir_y));
     const double length_m = no_return ? scan.max_range_m : scan.ranges[static_cast<std::size_t>(i)];
     const bool ended = free_passed(walk, length_m, no_return, marks, free_out);
     if (ended && !no_return) occupied_out = occupy_end(walk, options.hit_depth, marks, occupied_out);

@@ -7,6 +7,7 @@
 //
 // Values are log-odds in the sensor model's base, starting at l(prior).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
