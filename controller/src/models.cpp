@@ -164,6 +164,9 @@ struct PlaceTable {
   static constexpr std::uint16_t kFree = 1 << 8;
   static constexpr std::uint16_t kFreeAnyway = 1 << 9;
   std::uint16_t entry[kPlaces * 4] = {};
+  // entry's next place times 4 (where its row starts), alone: the walk's one loop-carried
+  // lookup, kept to a load and an add.
+  std::uint16_t next_row[kPlaces * 4] = {};
 
   static constexpr unsigned place(int to_side_x, int to_side_y, bool entered) {
     return static_cast<unsigned>((to_side_x * K + to_side_y) * 2 + (entered ? 1 : 0));
@@ -184,8 +187,10 @@ struct PlaceTable {
             const bool anyway = interior || entered;
             const bool freed = anyway || across_x || across_y;
             const unsigned kind = (sx ? (across_x ? 2u : 1u) : 0u) * 3 + (sy ? (across_y ? 2u : 1u) : 0u);
+            const unsigned next = place(next_ux, next_uy, across_x || across_y);
             entry[place(ux, uy, entered) * 4 + moves] = static_cast<std::uint16_t>(
-                place(next_ux, next_uy, across_x || across_y) | (freed ? kFree : 0u) | (anyway ? kFreeAnyway : 0u) | (kind << 12));
+                next | (freed ? kFree : 0u) | (anyway ? kFreeAnyway : 0u) | (kind << 12));
+            next_row[place(ux, uy, entered) * 4 + moves] = static_cast<std::uint16_t>(next * 4);
           }
         }
       }
@@ -260,7 +265,7 @@ class FlatWalk {
       : axes_(t, to_edge(t.step_x, o.east, o.west), to_edge(t.step_y, o.north, o.south)),
         moves_(moves.quadrant(t.step_x, t.step_y)),
         flat_(o.flat),
-        place_(PlaceTable<K>::place(t.step_x > 0 ? K - 1 - o.j : o.j, t.step_y > 0 ? K - 1 - o.r : o.r, false)),
+        row_(4 * PlaceTable<K>::place(t.step_x > 0 ? K - 1 - o.j : o.j, t.step_y > 0 ? K - 1 - o.r : o.r, false)),
         // next_x is NaN only from 0 * infinity (a direction too small to divide by, starting
         // on a boundary); trace_ray then ends in the first sub-cell.
         stuck_(t.next_x != t.next_x) {}
@@ -276,13 +281,14 @@ class FlatWalk {
   // Returns PlaceTable's flags for the move: whether the sub-cell left is freed (kFree), or
   // would be freed whichever way it was left (kFreeAnyway).
   std::uint32_t step() {
-    const std::int32_t e = moves_[place_ * 4 + static_cast<unsigned>(axes_.step())];
-    place_ = static_cast<unsigned>(e) & 0xFFu;
+    const unsigned n = row_ + static_cast<unsigned>(axes_.step());
+    const std::int32_t e = moves_[n];
+    row_ = kPlaceTable<K>.next_row[n];
     flat_ += static_cast<std::uint32_t>(e >> MoveTable<K>::kFlatShift);  // wraps outside the grid
     return static_cast<std::uint32_t>(e);
   }
   // The current sub-cell is interior or was entered across a cell side.
-  bool freed_anyway() const { return (kPlaceTable<K>.entry[place_ * 4] & PlaceTable<K>::kFreeAnyway) != 0; }
+  bool freed_anyway() const { return (kPlaceTable<K>.entry[row_] & PlaceTable<K>::kFreeAnyway) != 0; }
 
  private:
   static std::int64_t to_edge(int step, int ahead, int behind) {
@@ -293,7 +299,7 @@ class FlatWalk {
   AxisPair axes_;
   const std::int32_t *moves_;
   std::uint32_t flat_;
-  unsigned place_;
+  unsigned row_;  // 4 * the place in the cell (PlaceTable)
   bool stuck_;
 };
 
