@@ -1,8 +1,11 @@
 #include "mapping/models.hpp"
 
 #include <cassert>
+#include <algorithm>
 #include <cmath>
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -10,6 +13,10 @@
 #include <vector>
 
 #include <fmt/format.h>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "common/error.hpp"
 
@@ -78,75 +85,223 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
   }
 }
 
-// One sub-cell of trace_flat's traversal.
-struct FlatStep {
-  std::size_t flat;     // index in the grid's layout
-  double exit_m;        // path length at which the ray leaves the sub-cell
-  bool crossed_side;    // entered across a cell side (not for the first sub-cell)
-  bool interior;        // not in any of its cell's bands
+// The two axes of a beam's walk: the path lengths to the next sub-cell boundary on x and y
+// (trace_ray's next_x, next_y), what one sub-cell adds to them, and the steps left on each
+// axis before the grid's edge. step() is trace_ray's rule without a branch: which axis steps
+// on a diagonal beam is a coin toss a branch predictor loses. With SSE2 (every x86-64) both
+// axes go in one register; the same IEEE additions and comparisons either way.
+#if defined(__SSE2__)
+class AxisPair {
+ public:
+  AxisPair(const TraversalStart &t, std::int64_t to_edge_x, std::int64_t to_edge_y)
+      : next_(_mm_set_pd(t.next_y, t.next_x)),
+        delta_(_mm_set_pd(t.delta_y, t.delta_x)),
+        to_edge_(_mm_set_epi64x(to_edge_y, to_edge_x)) {}
+
+  // min(next_x, next_y) as std::min takes it (next_y < next_x ? next_y : next_x): MINSD.
+  double exit_m() const { return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(next_, next_), next_)); }
+  // exit_m() < length_m, as next_x < length_m || next_y < length_m: the same unless next_x is
+  // NaN, which FlatWalk rules out.
+  bool exits_before(double length_m) const {
+    return _mm_movemask_pd(_mm_cmplt_pd(next_, _mm_set1_pd(length_m))) != 0;
+  }
+
+  // x steps when next_x <= next_y; y when next_y <= min(next_x, next_y) taken before x
+  // steps, which is next_y <= next_x, NaN included. Returns bit 0 x stepped, bit 1 y.
+  // A lane that does not step adds +0.0, which leaves it as it is (next_x and next_y are
+  // +0.0 or more, infinity or NaN).
+  int step() {
+    const __m128d swapped = _mm_castsi128_pd(_mm_shuffle_epi32(_mm_castpd_si128(next_), 0x4E));
+    const __m128d moves = _mm_cmple_pd(next_, swapped);
+    next_ = _mm_add_pd(next_, _mm_and_pd(moves, delta_));
+    to_edge_ = _mm_add_epi64(to_edge_, _mm_castpd_si128(moves));  // -1 where it stepped
+    return _mm_movemask_pd(moves);
+  }
+  bool outside() const { return _mm_movemask_pd(_mm_castsi128_pd(to_edge_)) != 0; }
+
+ private:
+  __m128d next_, delta_;
+  __m128i to_edge_;
+};
+#else
+class AxisPair {
+ public:
+  AxisPair(const TraversalStart &t, std::int64_t to_edge_x, std::int64_t to_edge_y)
+      : next_x_(t.next_x), next_y_(t.next_y), delta_x_(t.delta_x), delta_y_(t.delta_y),
+        to_edge_x_(to_edge_x), to_edge_y_(to_edge_y) {}
+  double exit_m() const { return std::min(next_x_, next_y_); }
+  bool exits_before(double length_m) const { return exit_m() < length_m; }
+  int step() {
+    const bool sx = next_x_ <= next_y_;
+    const bool sy = next_y_ <= next_x_;
+    next_x_ = sx ? next_x_ + delta_x_ : next_x_;
+    next_y_ = sy ? next_y_ + delta_y_ : next_y_;
+    to_edge_x_ -= sx;
+    to_edge_y_ -= sy;
+    return static_cast<int>(sx) | (static_cast<int>(sy) << 1);
+  }
+  bool outside() const { return (to_edge_x_ | to_edge_y_) < 0; }
+
+ private:
+  double next_x_, next_y_, delta_x_, delta_y_;
+  std::int64_t to_edge_x_, to_edge_y_;
+};
+#endif
+
+// Where a walk stands in its cell, as one small number, and what each move does to it: a
+// table per K instead of arithmetic per step. A place is (to_side_x, to_side_y, entered):
+// the steps left on each axis before crossing into the next cell (counted in the beam's
+// direction, so the table serves every direction), and whether the sub-cell was entered
+// across a cell side. An entry, for a place and the axes that step (bit 0 x, bit 1 y):
+//   bits 0-7    the next place
+//   bit 8       the sub-cell being left is freed: interior, entered across a side, or left
+//               across one (decided once the step out is known)
+//   bit 9       it is interior or was entered across a side (freed whichever way it is left)
+//   bits 12-15  the kind of move, x kind * 3 + y kind (0 none, 1 inside the cell, 2 across)
+template <int K>
+struct PlaceTable {
+  static constexpr std::size_t kPlaces = 2 * K * K;
+  static constexpr std::uint16_t kFree = 1 << 8;
+  static constexpr std::uint16_t kFreeAnyway = 1 << 9;
+  std::uint16_t entry[kPlaces * 4] = {};
+  // entry's next place times 4 (where its row starts), alone: the walk's one loop-carried
+  // lookup, kept to a load and an add.
+  std::uint16_t next_row[kPlaces * 4] = {};
+
+  static constexpr unsigned place(int to_side_x, int to_side_y, bool entered) {
+    return static_cast<unsigned>((to_side_x * K + to_side_y) * 2 + (entered ? 1 : 0));
+  }
+
+  constexpr PlaceTable() {
+    for (int ux = 0; ux < K; ++ux) {
+      for (int uy = 0; uy < K; ++uy) {
+        for (const bool entered : {false, true}) {
+          for (unsigned moves = 0; moves < 4; ++moves) {
+            const bool sx = (moves & 1) != 0;
+            const bool sy = (moves & 2) != 0;
+            const bool across_x = sx && ux == 0;
+            const bool across_y = sy && uy == 0;
+            const int next_ux = across_x ? K - 1 : ux - (sx ? 1 : 0);
+            const int next_uy = across_y ? K - 1 : uy - (sy ? 1 : 0);
+            const bool interior = ux > 0 && ux < K - 1 && uy > 0 && uy < K - 1;
+            const bool anyway = interior || entered;
+            const bool freed = anyway || across_x || across_y;
+            const unsigned kind = (sx ? (across_x ? 2u : 1u) : 0u) * 3 + (sy ? (across_y ? 2u : 1u) : 0u);
+            const unsigned next = place(next_ux, next_uy, across_x || across_y);
+            entry[place(ux, uy, entered) * 4 + moves] = static_cast<std::uint16_t>(
+                next | (freed ? kFree : 0u) | (anyway ? kFreeAnyway : 0u) | (kind << 12));
+            next_row[place(ux, uy, entered) * 4 + moves] = static_cast<std::uint16_t>(next * 4);
+          }
+        }
+      }
+    }
+  }
 };
 
-// trace_ray's traversal, the same arithmetic step for step (so the same sub-cells and exit
-// distances), but carrying the sub-cell's flat index in the grid's layout instead of
-// (x, y): a step is an add, never a division. visit(const FlatStep &) returns false to stop.
-template <typename Visit>
-void trace_flat(const OccupancyGrid &grid, Point from, double dir_x, double dir_y, Visit &&visit) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const GridGeometry &g = grid.geometry();
-  const auto start = start_traversal(g, from, dir_x, dir_y);
-  if (!start) return;
-  const int width = g.width_subcells();
-  const int height = g.height_subcells();
-  auto [x, y, step_x, step_y, delta_x, delta_y, next_x, next_y] = *start;
-  // Flat index and position inside the cell: j from the west, r from the south (i = K-1-r).
-  const std::ptrdiff_t k = g.subcells;
-  const std::ptrdiff_t row_of_cells = static_cast<std::ptrdiff_t>(g.width_cells) * k * k;
-  int j = x % g.subcells;
-  int r = y % g.subcells;
-  auto flat = static_cast<std::ptrdiff_t>(grid.index(SubCell{x, y}));
-  // Steps of the flat index: inside a cell, and across into the next cell.
-  const std::ptrdiff_t x_inside = step_x;
-  const std::ptrdiff_t x_across = step_x * (k * k - k + 1);
-  const std::ptrdiff_t y_inside = -step_y * k;
-  const std::ptrdiff_t y_across = step_y * (row_of_cells + (k - 1) * k);
-  const int j_edge = step_x > 0 ? g.subcells - 1 : 0;
-  const int j_wrap = g.subcells - 1 - j_edge;
-  const int r_edge = step_y > 0 ? g.subcells - 1 : 0;
-  const int r_wrap = g.subcells - 1 - r_edge;
-  const int last = g.subcells - 1;
-  bool crossed = false;
-  for (;;) {
-    const double exit_m = std::min(next_x, next_y);
-    const bool interior = j > 0 && j < last && r > 0 && r < last;
-    if (!visit(FlatStep{static_cast<std::size_t>(flat), exit_m, crossed, interior}) || exit_m == inf) return;
-    crossed = false;
-    if (next_x <= next_y) {
-      x += step_x;
-      next_x += delta_x;
-      if (j == j_edge) {
-        j = j_wrap;
-        flat += x_across;
-        crossed = true;
-      } else {
-        j += step_x;
-        flat += x_inside;
+template <int K>
+inline constexpr PlaceTable<K> kPlaceTable{};
+
+// PlaceTable with the flat-index step of each move folded in, one table per quadrant of beam
+// directions (the steps depend on the grid's width): entry bits 0-9 as in PlaceTable, bits
+// 10-31 the signed flat-index step. Built again only when the grid's width changes.
+template <int K>
+class MoveTable {
+ public:
+  static constexpr int kFlatShift = 10;
+
+  void prepare(int width_cells) {
+    if (width_cells == width_cells_) return;
+    width_cells_ = width_cells;
+    constexpr std::int32_t kk = K;
+    const std::int32_t row_of_cells = width_cells * kk * kk;
+    for (int quadrant = 0; quadrant < 4; ++quadrant) {
+      const std::int32_t step_x = (quadrant & 1) != 0 ? 1 : -1;
+      const std::int32_t step_y = (quadrant & 2) != 0 ? 1 : -1;
+      // By kind of move: inside a cell x moves 1 and y a row of K; across, into the
+      // neighbour cell's first or last column or row.
+      const std::int32_t dx[3] = {0, step_x, step_x * (kk * kk - kk + 1)};
+      const std::int32_t dy[3] = {0, -step_y * kk, step_y * (row_of_cells + (kk - 1) * kk)};
+      for (std::size_t n = 0; n < PlaceTable<K>::kPlaces * 4; ++n) {
+        const std::uint16_t e = kPlaceTable<K>.entry[n];
+        const unsigned kind = e >> 12u;
+        const std::int32_t flat_step = dx[kind / 3] + dy[kind % 3];
+        entries_[static_cast<std::size_t>(quadrant)][n] =
+            static_cast<std::int32_t>(static_cast<std::uint32_t>(flat_step) << kFlatShift) | (e & 0x3FF);
       }
     }
-    if (next_y <= exit_m) {
-      y += step_y;
-      next_y += delta_y;
-      if (r == r_edge) {
-        r = r_wrap;
-        flat += y_across;
-        crossed = true;
-      } else {
-        r += step_y;
-        flat += y_inside;
-      }
-    }
-    if (x < 0 || y < 0 || x >= width || y >= height) return;
   }
-}
+  const std::int32_t *quadrant(int step_x, int step_y) const {
+    return entries_[static_cast<std::size_t>((step_x > 0 ? 1 : 0) + (step_y > 0 ? 2 : 0))].data();
+  }
+
+ private:
+  int width_cells_ = -1;
+  std::array<std::array<std::int32_t, PlaceTable<K>::kPlaces * 4>, 4> entries_{};
+};
+
+// One beam's Amanatides-Woo walk in the grid's flat layout, for K sub-cells a side: trace_ray's
+// arithmetic (the same sub-cells and exit distances), carrying the sub-cell's flat index and
+// its place in its cell instead of (x, y).
+// What every beam of a scan shares: the sub-cell it starts in.
+template <int K>
+struct WalkOrigin {
+  WalkOrigin(const OccupancyGrid &grid, const TraversalOrigin &o)
+      : flat(static_cast<std::uint32_t>(grid.index(SubCell{o.x, o.y}))),
+        j(o.x % K),
+        r(o.y % K),
+        west(o.x),
+        south(o.y),
+        east(grid.geometry().width_subcells() - 1 - o.x),
+        north(grid.geometry().height_subcells() - 1 - o.y) {}
+  std::uint32_t flat;
+  int j, r;                        // place in the cell: column from the west, row from the south
+  int west, south, east, north;    // sub-cells between it and the grid's edges
+};
+
+template <int K>
+class FlatWalk {
+ public:
+  FlatWalk(const WalkOrigin<K> &o, const MoveTable<K> &moves, const TraversalStart &t)
+      : axes_(t, to_edge(t.step_x, o.east, o.west), to_edge(t.step_y, o.north, o.south)),
+        moves_(moves.quadrant(t.step_x, t.step_y)),
+        flat_(o.flat),
+        row_(4 * PlaceTable<K>::place(t.step_x > 0 ? K - 1 - o.j : o.j, t.step_y > 0 ? K - 1 - o.r : o.r, false)),
+        // next_x is NaN only from 0 * infinity (a direction too small to divide by, starting
+        // on a boundary); trace_ray then ends in the first sub-cell.
+        stuck_(t.next_x != t.next_x) {}
+
+  // exit_m() < length_m: the beam leaves the current sub-cell before length_m.
+  bool exits_before(double length_m) const { return !stuck_ && axes_.exits_before(length_m); }
+  // Path length (m) at which the beam leaves the current sub-cell.
+  double exit_m() const { return axes_.exit_m(); }
+  std::uint32_t flat() const { return flat_; }
+  bool outside() const { return axes_.outside(); }
+
+  // Moves to the next sub-cell (which may be outside the grid: then flat() means nothing).
+  // Returns PlaceTable's flags for the move: whether the sub-cell left is freed (kFree), or
+  // would be freed whichever way it was left (kFreeAnyway).
+  std::uint32_t step() {
+    const unsigned n = row_ + static_cast<unsigned>(axes_.step());
+    const std::int32_t e = moves_[n];
+    row_ = kPlaceTable<K>.next_row[n];
+    flat_ += static_cast<std::uint32_t>(e >> MoveTable<K>::kFlatShift);  // wraps outside the grid
+    return static_cast<std::uint32_t>(e);
+  }
+  // The current sub-cell is interior or was entered across a cell side.
+  bool freed_anyway() const { return (kPlaceTable<K>.entry[row_] & PlaceTable<K>::kFreeAnyway) != 0; }
+
+ private:
+  static std::int64_t to_edge(int step, int ahead, int behind) {
+    constexpr std::int64_t never = std::int64_t{1} << 40;  // an axis the beam does not move along
+    return step > 0 ? ahead : (step < 0 ? behind : never);
+  }
+
+  AxisPair axes_;
+  const std::int32_t *moves_;
+  std::uint32_t flat_;
+  unsigned row_;  // 4 * the place in the cell (PlaceTable)
+  bool stuck_;
+};
 
 // cos and sin of every beam's angle relative to the heading, for one beam count and field
 // of view (computed again only when those change, so not per scan).
@@ -172,46 +327,72 @@ class BeamTable {
   std::vector<double> cos_, sin_;
 };
 
-// Frees the sub-cells a beam passes before it ends, as the ray model sees them (DESIGN §6).
+// Frees the sub-cells a beam passes before it ends, as the ray model sees them (DESIGN §6),
+// and leaves `walk` at the end: the first sub-cell the beam does not leave within length_m.
+// Returns false when the beam left the grid first.
 //
 // Walls stand on cell sides, and the band of sub-cells beside a side stands for that side.
 // A beam tells whether a side is open only by crossing it, so band sub-cells are freed where
 // the beam crosses their cell side (the two sub-cells beside the crossing point), and interior
 // sub-cells wherever the beam passes. A beam running along a band without crossing its side
 // says nothing about that side: freeing the band there would erase walls, since a 12 mm wall
-// fills 4 % of a 1/3 m sub-cell and most of a band is air.
-class BeamFreeMarker {
- public:
-  explicit BeamFreeMarker(ScanUpdate &update) : update_(update) {}
-
-  // The next sub-cell the beam passes, before its end.
-  void pass(const FlatStep &s) {
-    if (s.crossed_side && has_previous_) update_.mark_free(previous_);
-    if (s.interior || s.crossed_side) update_.mark_free(s.flat);
-    previous_ = s.flat;
-    has_previous_ = true;
+// fills 4 % of a 1/3 m sub-cell and most of a band is air. A passed sub-cell is decided once
+// the step out of it is known: interior, entered across a side, or left across one. Leaving
+// the grid crosses its outer side only for a beam with no return (a return beyond the grid's
+// edge is not a view of that side).
+template <int K>
+bool free_passed(FlatWalk<K> &walk, double length_m, bool no_return, const ScanUpdate::UniqueMarks &marks,
+                 std::uint32_t *&out) {
+  std::uint32_t *next = out;
+  while (walk.exits_before(length_m)) {
+    const std::uint32_t here = walk.flat();
+    const std::uint32_t move = walk.step();
+    if (walk.outside()) {
+      out = marks.mark_free(next, here, (move & PlaceTable<K>::kFreeAnyway) != 0 || no_return);
+      return false;
+    }
+    next = marks.mark_free(next, here, (move & PlaceTable<K>::kFree) != 0);
   }
+  if (no_return) next = marks.mark_free(next, walk.flat(), walk.freed_anyway());
+  out = next;
+  return true;
+}
 
-  // The beam's end sub-cell: the side crossed into it (if any) frees the sub-cell before it.
-  void end(const FlatStep &s) {
-    if (s.crossed_side && has_previous_) update_.mark_free(previous_);
+// The end sub-cell of a beam with a return and hit_depth sub-cells behind it, within the grid.
+template <int K>
+std::uint32_t *occupy_end(FlatWalk<K> &walk, int hit_depth, const ScanUpdate::UniqueMarks &marks,
+                          std::uint32_t *out) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  out = marks.mark_occupied(out, walk.flat());
+  for (int behind = 0; behind < hit_depth && walk.exit_m() != inf; ++behind) {
+    walk.step();
+    if (walk.outside()) break;
+    out = marks.mark_occupied(out, walk.flat());
   }
+  return out;
+}
 
-  // The beam left the grid after the last sub-cell passed: it crossed that cell's outer side.
-  void leave_grid() {
-    if (has_previous_) update_.mark_free(previous_);
-  }
-
- private:
-  ScanUpdate &update_;
-  std::size_t previous_ = 0;
-  bool has_previous_ = false;
-};
-
-void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
-                    const LidarScan &scan, ScanUpdate &update) {
-  thread_local BeamTable table;  // per thread: no sharing, no per-scan allocation
-  table.prepare(scan);
+// The ray model for K sub-cells a side (a constant, so the walk's arithmetic on places in a
+// cell folds).
+template <int K>
+void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
+               const BeamTable &table, ScanUpdate &update) {
+  const GridGeometry &g = grid.geometry();
+  const auto origin = traversal_origin(g, scan.origin);
+  if (!origin) return;  // every beam starts outside the grid
+  thread_local MoveTable<K> moves;
+  moves.prepare(g.width_cells);
+  const WalkOrigin<K> start(grid, *origin);
+  ScanUpdate::UniqueMarks marks = update.unique_marks(grid);
+  // Room for the scan's marks: a beam lists at most one sub-cell per step and steps at most
+  // width + height times in the grid, and a scan lists each sub-cell at most once; plus the
+  // slot a mark writes before it knows whether it keeps it.
+  const auto beams = static_cast<std::size_t>(scan.beam_count());
+  const std::size_t per_beam = static_cast<std::size_t>(g.width_subcells()) +
+                               static_cast<std::size_t>(g.height_subcells()) + 2;
+  std::uint32_t *free_out = marks.reserve_free(std::min(grid.size(), beams * per_beam) + 1);
+  std::uint32_t *occupied_out = marks.reserve_occupied(
+      std::min(grid.size(), beams * (static_cast<std::size_t>(options.hit_depth) + 1)) + 1);
   // World direction of beam i: the beam's direction rotated by the yaw (two sin/cos per
   // scan instead of two per beam).
   const double cy = std::cos(scan.yaw_rad);
@@ -219,34 +400,29 @@ void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
   for (int i = 0; i < scan.beam_count(); ++i) {
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
-    if (kind == ReadingKind::no_return && options.ignore_no_return) continue;
-    if (kind == ReadingKind::no_return && scan.lone_no_return(i)) continue;
+    const bool no_return = kind == ReadingKind::no_return;
+    if (no_return && (options.ignore_no_return || scan.lone_no_return(i))) continue;
     const double dir_x = cy * table.cos(i) - sy * table.sin(i);
     const double dir_y = sy * table.cos(i) + cy * table.sin(i);
-    BeamFreeMarker free_marker(update);
-    if (kind == ReadingKind::no_return) {
-      const double length = scan.max_range_m;
-      bool within_length = true;
-      trace_flat(grid, scan.origin, dir_x, dir_y, [&](const FlatStep &s) {
-        free_marker.pass(s);
-        within_length = s.exit_m < length;
-        return within_length;
-      });
-      if (within_length) free_marker.leave_grid();  // stopped at the grid's edge, not at max range
-      continue;
-    }
-    const double range = scan.ranges[static_cast<std::size_t>(i)];
-    int behind = -1;  // -1 before the hit sub-cell, then the count of occupied sub-cells after it
-    trace_flat(grid, scan.origin, dir_x, dir_y, [&](const FlatStep &s) {
-      if (behind < 0 && s.exit_m < range) {
-        free_marker.pass(s);
-        return true;
-      }
-      if (behind < 0) free_marker.end(s);
-      update.mark_occupied(s.flat);
-      ++behind;
-      return behind < options.hit_depth;
-    });
+    FlatWalk<K> walk(start, moves, start_traversal(g, *origin, dir_x, dir_y));
+    const double length_m = no_return ? scan.max_range_m : scan.ranges[static_cast<std::size_t>(i)];
+    const bool ended = free_passed(walk, length_m, no_return, marks, free_out);
+    if (ended && !no_return) occupied_out = occupy_end(walk, options.hit_depth, marks, occupied_out);
+  }
+  marks.commit_free(free_out);
+  marks.commit_occupied(occupied_out);
+}
+
+void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
+                    const LidarScan &scan, ScanUpdate &update) {
+  thread_local BeamTable table;  // per thread: no sharing, no per-scan allocation
+  table.prepare(scan);
+  switch (grid.k()) {
+    case 3: return mark_rays<3>(options, grid, scan, table, update);
+    case 5: return mark_rays<5>(options, grid, scan, table, update);
+    case 7: return mark_rays<7>(options, grid, scan, table, update);
+    case 9: return mark_rays<9>(options, grid, scan, table, update);
+    default: assert(false && "K is odd, 3 ... 9 (validate(GridGeometry))");
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -115,59 +116,117 @@ Point OccupancyGrid::centre_of(Cell c) const {
   return {geometry_.origin.x_m + (c.x + 0.5) * size, geometry_.origin.y_m + (c.y + 0.5) * size};
 }
 
+// Flat indices fit the per-scan lists' 32 bits.
+static_assert(std::uint64_t{kMaxCellsPerSide} * kMaxCellsPerSide * kMaxSubcells * kMaxSubcells <
+              std::numeric_limits<std::uint32_t>::max());
+
+std::uint32_t *ScanUpdate::IndexList::reserve(std::size_t more) {
+  if (capacity_ - size_ < more) {
+    const std::size_t capacity = std::max(size_ + more, 2 * capacity_);
+    auto data = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
+    std::copy(data_.get(), data_.get() + size_, data.get());
+    data_ = std::move(data);
+    capacity_ = capacity;
+  }
+  return data_.get() + size_;
+}
+
+void ScanUpdate::open_scan(std::size_t grid_size) {
+  if (tags_.size() < grid_size) tags_.resize(grid_size, 0);
+  if (open_) return;
+  if (free_tag_ >= std::numeric_limits<std::uint32_t>::max() - 2) {
+    std::fill(tags_.begin(), tags_.end(), 0);
+    free_tag_ = 0;
+  }
+  free_tag_ += 2;  // this scan: free_tag_ and free_tag_ + 1; the last one's are below
+  open_ = true;
+}
+
+ScanUpdate::UniqueMarks ScanUpdate::unique_marks(const OccupancyGrid &grid) {
+  open_scan(grid.size());
+  UniqueMarks marks;
+  marks.owner_ = this;
+  marks.tags_ = tags_.data();
+  marks.free_tag_ = free_tag_;
+  marks.occupied_tag_ = free_tag_ + 1;
+  return marks;
+}
+
+void ScanUpdate::clear() {
+  free_.clear();
+  occupied_.clear();
+  free_once_.clear();
+  occupied_once_.clear();
+  open_ = false;
+}
+
 std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model) {
   return apply(grid, model, model.free_increment(), model.occupied_increment());
 }
 
 namespace {
 
-// Gives each listed sub-cell not yet marked this scan one update l <- clamp(l + delta)
-// (the arithmetic of mapping::apply, inlined), marking it `mark`; `skip` is a second mark
-// that also means "already updated" (the occupied mark when applying the free list).
+// One update l <- clamp(l + delta), the arithmetic of mapping::apply inlined.
 template <bool kClamp>
-std::size_t apply_list(std::span<const std::size_t> list, float *values, std::uint32_t *marks,
-                       std::size_t size, std::uint32_t mark, std::uint32_t skip, double delta,
-                       double lo, double hi) {
-  std::size_t updated = 0;
-  for (const std::size_t i : list) {
-    if (i >= size) continue;
-    const std::uint32_t m = marks[i];
-    if (m == mark || m == skip) continue;
-    marks[i] = mark;
-    const double sum = static_cast<double>(values[i]) + delta;
-    values[i] = static_cast<float>(kClamp ? std::clamp(sum, lo, hi) : sum);
+struct Update {
+  double delta, lo, hi;
+  void operator()(float &value) const {
+    const double sum = static_cast<double>(value) + delta;
+    value = static_cast<float>(kClamp ? std::clamp(sum, lo, hi) : sum);
+  }
+};
+
+// The order below makes occupied win and gives each sub-cell one update: occupied listings
+// first, each re-tagging its sub-cell occupied; then free listings, skipping sub-cells tagged
+// occupied (and, for the lists with duplicates, those already tagged free this scan).
+template <bool kClamp>
+std::size_t apply_lists(std::span<const std::uint32_t> occupied_once,
+                        std::span<const std::size_t> occupied, std::span<const std::uint32_t> free_once,
+                        std::span<const std::size_t> free, float *values, std::uint32_t *tags,
+                        std::size_t size, std::uint32_t free_tag, Update<kClamp> occupied_update,
+                        Update<kClamp> free_update) {
+  const std::uint32_t occupied_tag = free_tag + 1;
+  std::size_t updated = occupied_once.size();
+  for (const std::uint32_t i : occupied_once) occupied_update(values[i]);  // tagged when marked
+  for (const std::size_t i : occupied) {
+    if (i >= size || tags[i] == occupied_tag) continue;
+    tags[i] = occupied_tag;
+    occupied_update(values[i]);
+    ++updated;
+  }
+  for (const std::uint32_t i : free_once) {
+    if (tags[i] != free_tag) continue;  // occupied since it was listed
+    free_update(values[i]);
+    ++updated;
+  }
+  for (const std::size_t i : free) {
+    if (i >= size || tags[i] >= free_tag) continue;
+    tags[i] = free_tag;
+    free_update(values[i]);
     ++updated;
   }
   return updated;
-}
-
-std::size_t apply_list(std::span<const std::size_t> list, float *values, std::uint32_t *marks,
-                       std::size_t size, std::uint32_t mark, std::uint32_t skip, double delta,
-                       const std::optional<Clamp> &clamp) {
-  if (clamp) {
-    return apply_list<true>(list, values, marks, size, mark, skip, delta, clamp->min, clamp->max);
-  }
-  return apply_list<false>(list, values, marks, size, mark, skip, delta, 0.0, 0.0);
 }
 
 }  // namespace
 
 std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model,
                               double free_increment, double occupied_increment) {
-  if (grid.marks_.size() != grid.values_.size()) grid.marks_.assign(grid.values_.size(), 0);
-  if (grid.epoch_ >= std::numeric_limits<std::uint32_t>::max() - 2) {
-    std::fill(grid.marks_.begin(), grid.marks_.end(), 0);
-    grid.epoch_ = 0;
-  }
-  const std::uint32_t occupied_mark = ++grid.epoch_;
-  const std::uint32_t free_mark = ++grid.epoch_;
+  open_scan(grid.size());
   const auto &clamp = model.options().clamp;
   float *values = grid.values_.data();
-  std::uint32_t *marks = grid.marks_.data();
-  const std::size_t size = grid.values_.size();
-  std::size_t updated = apply_list(occupied_, values, marks, size, occupied_mark, occupied_mark,
-                                   occupied_increment, clamp);
-  updated += apply_list(free_, values, marks, size, free_mark, occupied_mark, free_increment, clamp);
+  std::uint32_t *tags = tags_.data();
+  const std::size_t size = grid.size();
+  std::size_t updated = 0;
+  if (clamp) {
+    updated = apply_lists<true>(occupied_once_.view(), occupied_, free_once_.view(), free_, values,
+                                tags, size, free_tag_, {occupied_increment, clamp->min, clamp->max},
+                                {free_increment, clamp->min, clamp->max});
+  } else {
+    updated = apply_lists<false>(occupied_once_.view(), occupied_, free_once_.view(), free_, values,
+                                 tags, size, free_tag_, {occupied_increment, 0.0, 0.0},
+                                 {free_increment, 0.0, 0.0});
+  }
   clear();
   return updated;
 }

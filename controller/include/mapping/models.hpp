@@ -83,18 +83,33 @@ struct TraversalStart {
   double next_x, next_y;
 };
 
-inline std::optional<TraversalStart> start_traversal(const GridGeometry &g, Point from,
-                                                     double dir_x, double dir_y) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
+// The first half of start_traversal, the same for every direction from one point: `from`
+// in sub-cell units from the grid's origin, and the sub-cell holding it. Nothing when `from`
+// is outside the grid.
+struct TraversalOrigin {
+  double px, py;
+  int x, y;
+};
+
+inline std::optional<TraversalOrigin> traversal_origin(const GridGeometry &g, Point from) {
   const double size = g.subcell_size_m();
   const double px = (from.x_m - g.origin.x_m) / size;
   const double py = (from.y_m - g.origin.y_m) / size;
   if (!(px >= 0.0 && py >= 0.0 && px < g.width_subcells() && py < g.height_subcells())) {
     return std::nullopt;
   }
+  return TraversalOrigin{px, py, static_cast<int>(px), static_cast<int>(py)};
+}
+
+inline TraversalStart start_traversal(const GridGeometry &g, const TraversalOrigin &o,
+                                      double dir_x, double dir_y) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double size = g.subcell_size_m();
+  const double px = o.px;
+  const double py = o.py;
   TraversalStart t;
-  t.x = static_cast<int>(px);
-  t.y = static_cast<int>(py);
+  t.x = o.x;
+  t.y = o.y;
   t.step_x = dir_x > 0.0 ? 1 : (dir_x < 0.0 ? -1 : 0);
   t.step_y = dir_y > 0.0 ? 1 : (dir_y < 0.0 ? -1 : 0);
   t.delta_x = t.step_x != 0 ? size / std::abs(dir_x) : inf;
@@ -102,6 +117,13 @@ inline std::optional<TraversalStart> start_traversal(const GridGeometry &g, Poin
   t.next_x = t.step_x > 0 ? (t.x + 1 - px) * t.delta_x : (t.step_x < 0 ? (px - t.x) * t.delta_x : inf);
   t.next_y = t.step_y > 0 ? (t.y + 1 - py) * t.delta_y : (t.step_y < 0 ? (py - t.y) * t.delta_y : inf);
   return t;
+}
+
+inline std::optional<TraversalStart> start_traversal(const GridGeometry &g, Point from,
+                                                     double dir_x, double dir_y) {
+  const auto origin = traversal_origin(g, from);
+  if (!origin) return std::nullopt;
+  return start_traversal(g, *origin, dir_x, dir_y);
 }
 
 // Exact grid traversal (Amanatides & Woo, 1987). Calls visit(SubCell s, double exit_m) for

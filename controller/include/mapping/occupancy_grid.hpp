@@ -7,8 +7,10 @@
 //
 // Values are log-odds in the sensor model's base, starting at l(prior).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -36,7 +38,8 @@ inline constexpr int kMinSubcells = 3;
 inline constexpr int kMaxSubcells = 9;
 inline constexpr int kMaxCellsPerSide = 4096;
 
-// Bytes the grid of this geometry takes (values and the per-scan update marker).
+// Bytes the grid of this geometry takes (values, and the per-scan update marker its
+// ScanUpdate keeps).
 std::uint64_t grid_bytes(const GridGeometry &geometry);
 
 // Throws common::InputError when the geometry is unusable: K even or outside 3 ... 9, a side
@@ -99,8 +102,6 @@ class OccupancyGrid {
   friend class ScanUpdate;
   GridGeometry geometry_;
   std::vector<float> values_;
-  std::vector<std::uint32_t> marks_;  // per-scan update marker, see ScanUpdate
-  std::uint32_t epoch_ = 0;
 };
 
 class SensorModel;
@@ -108,10 +109,54 @@ class SensorModel;
 // Gather, then apply (DESIGN §3): a scan marks the sub-cells it saw free and the ones it
 // saw occupied; occupied wins; apply() then gives each marked sub-cell exactly one update.
 // Marks outside the grid are ignored. One ScanUpdate serves many scans; apply() clears it.
+//
+// Two ways to mark, mixable within a scan: mark_free/mark_occupied take any index, and
+// apply() drops duplicates; unique_marks(grid) hands a hot loop the per-scan marker, so it
+// lists each sub-cell once while marking (the ray model, where all beams of a scan cross the
+// sub-cells near the robot).
 class ScanUpdate {
  public:
   void mark_free(std::size_t flat_index) { free_.push_back(flat_index); }
   void mark_occupied(std::size_t flat_index) { occupied_.push_back(flat_index); }
+
+  // Marking without duplicates, for one grid and the scan under way. Flat indices must be
+  // inside the grid. Room for `more` marks of a kind is made by reserve_free/reserve_occupied,
+  // which return where the next mark goes; the caller writes through that pointer with
+  // mark_free/mark_occupied below and hands the end back with commit_free/commit_occupied.
+  class UniqueMarks {
+   public:
+    std::uint32_t *reserve_free(std::size_t more) { return owner_->free_once_.reserve(more); }
+    std::uint32_t *reserve_occupied(std::size_t more) { return owner_->occupied_once_.reserve(more); }
+    void commit_free(const std::uint32_t *end) { owner_->free_once_.commit(end); }
+    void commit_occupied(const std::uint32_t *end) { owner_->occupied_once_.commit(end); }
+
+    // When `wanted`, lists sub-cell i at *out unless this scan already listed it; returns
+    // the next slot. Branch-free: the slot is written either way, kept only when i is new.
+    std::uint32_t *mark_free(std::uint32_t *out, std::uint32_t i, bool wanted = true) const {
+      const std::uint32_t seen = tags_[i];
+      // Not listed this scan, free or occupied; arithmetic, as a compiler turns ?: into jumps.
+      const std::uint32_t fresh = static_cast<std::uint32_t>(wanted) & static_cast<std::uint32_t>(seen < free_tag_);
+      *out = i;
+      tags_[i] = seen + ((free_tag_ - seen) & (0u - fresh));
+      return out + fresh;
+    }
+    // Occupied wins: a sub-cell already listed free is listed again here, and apply() skips
+    // its free listing.
+    std::uint32_t *mark_occupied(std::uint32_t *out, std::uint32_t i) const {
+      const bool fresh = tags_[i] != occupied_tag_;
+      *out = i;
+      tags_[i] = occupied_tag_;
+      return out + (fresh ? 1 : 0);
+    }
+
+   private:
+    friend class ScanUpdate;
+    ScanUpdate *owner_ = nullptr;
+    std::uint32_t *tags_ = nullptr;
+    std::uint32_t free_tag_ = 0;
+    std::uint32_t occupied_tag_ = 0;
+  };
+  UniqueMarks unique_marks(const OccupancyGrid &grid);
 
   // Applies every mark once and returns how many sub-cells were updated.
   std::size_t apply(OccupancyGrid &grid, const SensorModel &model);
@@ -120,15 +165,40 @@ class ScanUpdate {
   std::size_t apply(OccupancyGrid &grid, const SensorModel &model, double free_increment,
                     double occupied_increment);
 
-  bool empty() const { return free_.empty() && occupied_.empty(); }
-  void clear() {
-    free_.clear();
-    occupied_.clear();
+  bool empty() const {
+    return free_.empty() && occupied_.empty() && free_once_.empty() && occupied_once_.empty();
   }
+  // Drops this scan's marks unapplied.
+  void clear();
 
  private:
-  std::vector<std::size_t> free_;
-  std::vector<std::size_t> occupied_;
+  // A list of flat indices a hot loop writes through a raw pointer (no per-mark capacity
+  // check, no zero-filling on growth).
+  class IndexList {
+   public:
+    std::uint32_t *reserve(std::size_t more);
+    void commit(const std::uint32_t *end) { size_ = static_cast<std::size_t>(end - data_.get()); }
+    std::span<const std::uint32_t> view() const { return {data_.get(), size_}; }
+    bool empty() const { return size_ == 0; }
+    void clear() { size_ = 0; }
+
+   private:
+    std::unique_ptr<std::uint32_t[]> data_;
+    std::size_t size_ = 0;
+    std::size_t capacity_ = 0;
+  };
+
+  void open_scan(std::size_t grid_size);
+
+  std::vector<std::size_t> free_;      // mark_free, duplicates allowed
+  std::vector<std::size_t> occupied_;  // mark_occupied, duplicates allowed
+  IndexList free_once_;                // UniqueMarks, each sub-cell once
+  IndexList occupied_once_;
+  // The per-scan update marker: per sub-cell, the tag of the last scan that listed it.
+  // A scan's tags are free_tag_ and free_tag_ + 1 (occupied); every older tag is smaller.
+  std::vector<std::uint32_t> tags_;
+  std::uint32_t free_tag_ = 0;
+  bool open_ = false;  // free_tag_ belongs to the scan under way
 };
 
 }  // namespace mapping
