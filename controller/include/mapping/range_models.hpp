@@ -75,6 +75,9 @@ inline constexpr double kPieNoReturnErrors = 2.0;
 // comes within kPieSideSlack cell sizes of a cell side, where walls are; otherwise the reading
 // (rays averaged across a post's edge) is ignored.
 inline constexpr double kPieSideSlack = 0.05;
+// cone: readings whose distance error eps d exceeds kConeUsableError cell sizes are beyond the
+// usable range (sonar, eps 6.6 %: 2.27 m with 1 m cells; the 1.5 m IR is never cut).
+inline constexpr double kConeUsableError = 0.15;
 
 // One bumper as read: where it touches (robot centre + mounting offset along its angle).
 struct BumpReading {
