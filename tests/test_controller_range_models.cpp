@@ -127,7 +127,9 @@ TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
   OccupancyGrid grid(geometry(3), 0.0f);
   mapping::LeveledUpdate update = mapping::make_pie_update();
   const std::vector<RangeReading> one{reading(kNorth, 1.5, 1.5)};
-  mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+  mapping::RangeModelOptions whole_slice;  // the course's slice, to max range
+  whole_slice.pie_usable_fraction = 1.0;
+  mapping::mark_pie(grid, whole_slice, one, update);
   update.apply(grid, model);
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 -0.41 +0.00\n"
@@ -137,6 +139,21 @@ TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
   CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
         "-0.41 -0.41 -0.41\n"
         "-0.41 -0.41 -0.41\n"
+        "+0.00 -0.41 +0.00\n");
+}
+
+TEST_CASE("pie model: the clear slice stops at the usable range, 2/3 of max") {
+  const mapping::SensorModel model;
+  OccupancyGrid grid(geometry(3), 0.0f);
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  const std::vector<RangeReading> one{reading(kNorth, 1.5, 1.5)};
+  mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+  update.apply(grid, model);
+  // 1.0 m from y = 1.59: the next cell's far band (y 2.667 ...) and the inner corners of its
+  // side bands stay unobserved.
+  CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
+        "+0.00 +0.00 +0.00\n"
+        "+0.00 -0.41 +0.00\n"
         "+0.00 -0.41 +0.00\n");
 }
 
@@ -189,11 +206,13 @@ TEST_CASE("pie model: walls north and east in one scan, K = 5, beta 10 deg") {
         "+0.00 +0.00 -0.41 +0.00 +0.00\n");
 }
 
-TEST_CASE("pie model: a reading within two distance errors of max is clear") {
+TEST_CASE("pie model: a contact lies two of its errors and two of max's below max") {
   const mapping::SensorModel model;
   mapping::LeveledUpdate update = mapping::make_pie_update();
-  // From the rim of cell (1, 0) looking north; max 1.5 m, eps 3 %: 1.42 m >= 1.5 (1 - 2 eps)
-  // = 1.41 m is clear, 1.40 m is a contact.
+  // From the rim of cell (1, 0) looking north; max 1.5 m, eps 3 %: a contact needs
+  // d (1 + 2 eps) < 1.5 (1 - 2 eps), d < 1.330 m. A no-return read 2.3 sigma short (1.40 m)
+  // would put its arc (y 1.99) on cell (1, 1)'s north band: under the old 1.41 m limit one
+  // such reading closed an opening.
   const auto scan = [&](double range_m) {
     OccupancyGrid grid(geometry(3), 0.0f);
     const std::vector<RangeReading> one{RangeReading{{1.5, 0.59}, kNorth, range_m, 1.5, 0.03, 0.03}};
@@ -201,17 +220,39 @@ TEST_CASE("pie model: a reading within two distance errors of max is clear") {
     update.apply(grid, model);
     return grid;
   };
-  const OccupancyGrid clear = scan(1.42);
-  // As a contact its arc (y 2.01) would lie in cell (1, 2)'s south band; clear, the slice
-  // reaches 1.42 (1 - eps) = 1.377 m (y 1.967) and frees cell (1, 1)'s north band.
-  CHECK(render::format_cell_matrix(clear, Cell{1, 2}) ==
-        "+0.00 +0.00 +0.00\n"
-        "+0.00 +0.00 +0.00\n"
-        "+0.00 +0.00 +0.00\n");
-  CHECK(clear.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.4 / 0.6)));
-  const OccupancyGrid contact = scan(1.40);
-  // The arc at y = 1.99 lies in cell (1, 1)'s north band.
+  const OccupancyGrid clear = scan(1.40);
+  // Clear up to the usable range, 1.0 m (y 1.59): cell (1, 1)'s north band is not touched.
+  CHECK(clear.at(Cell{1, 1}, {0, 1}) == 0.0f);
+  CHECK(clear.at(Cell{1, 1}, {2, 1}) == doctest::Approx(std::log(0.4 / 0.6)));
+  const OccupancyGrid contact = scan(1.30);
+  // The arc at y = 1.89 lies in cell (1, 1)'s north band.
   CHECK(contact.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
+}
+
+TEST_CASE("pie model: a reading averaged across a post's edge is no information") {
+  const mapping::SensorModel model;
+  mapping::LeveledUpdate update = mapping::make_pie_update();
+  // The ir-ring's diagonal sensor looking south-west from the centre of cell (1, 1): a post
+  // at the corner (1, 1) reads 0.6 m; one ray on the post and two past it average 0.948 m,
+  // whose arc (x, y 0.77) lies 0.23 m from any cell side.
+  const auto scan = [&](double range_m) {
+    OccupancyGrid grid(geometry(3), 0.0f);
+    const double a = -3.0 * kPi / 4.0;
+    const std::vector<RangeReading> one{
+        RangeReading{{1.5 + 0.09 * std::cos(a), 1.5 + 0.09 * std::sin(a)}, a, range_m, 1.5, 0.03, 0.03}};
+    mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+    update.apply(grid, model);
+    return grid;
+  };
+  const OccupancyGrid post = scan(0.6);
+  CHECK(post.at(Cell{1, 1}, {2, 0}) == doctest::Approx(std::log(0.7 / 0.3)));
+  const OccupancyGrid mixed = scan(0.948);
+  for (const Cell c : {Cell{0, 0}, Cell{1, 0}, Cell{0, 1}, Cell{1, 1}}) {
+    CHECK(render::format_cell_matrix(mixed, c) ==
+          "+0.00 +0.00 +0.00\n"
+          "+0.00 +0.00 +0.00\n"
+          "+0.00 +0.00 +0.00\n");
+  }
 }
 
 TEST_CASE("cone model: IR reading north, K = 3, defaults") {

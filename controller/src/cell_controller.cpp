@@ -384,9 +384,10 @@ struct CellController::Impl {
     if (has_pending) pending.subcells_updated += updated;
   }
 
-  // Lidar models: while a side of c is unknown after its scan (every beam towards it was
-  // filtered out as a fault), waits one control step at rest and scans again: the next
-  // reading is a new draw of the sensor, not the same faulty one.
+  // Lidar models and range rings: while a side of c is unknown after its scan (every beam
+  // towards it was filtered out as a fault, every range reading about it ignored by the pie
+  // model), waits one control step at rest and scans again: the next reading is a new draw of
+  // the sensor, not the same faulty one.
   Motion rescan_unknown_sides(Cell c, const explore::WallQuery &walls) {
     const auto unknown_side = [&] {
       return std::ranges::any_of(mapping::kHeadings,
@@ -418,11 +419,13 @@ struct CellController::Impl {
     };
     const bool bump = options.mapping.kind == mapping::ModelKind::bump;
     const bool depth = options.mapping.kind == mapping::ModelKind::depth;
+    const bool ring = options.mapping.kind == mapping::ModelKind::pie ||
+                      options.mapping.kind == mapping::ModelKind::cone;
     // Scan on arrival (the bump model then probes the unknown sides), then report.
     const auto arrive = [&](bool new_cell) {
       scan(cell);
       Motion s = Motion::ok;
-      if (lidar != nullptr) s = rescan_unknown_sides(cell, walls);
+      if (lidar != nullptr || ring) s = rescan_unknown_sides(cell, walls);
       if (bump) s = probe_unknown_sides(cell, heading, walls);
       if (depth && new_cell) s = look_around(cell, heading);
       notify(observer, cell, heading, new_cell);

@@ -20,6 +20,10 @@ void validate(const RangeModelOptions &options) {
     throw common::InputError(
         fmt::format("--pie-alpha must be a positive length in m (got {})", options.pie_contact_m));
   }
+  if (!(options.pie_usable_fraction > 0.0 && options.pie_usable_fraction <= 1.0)) {
+    throw common::InputError(fmt::format("the pie model's usable fraction of max range must be in (0, 1] (got {})",
+                                         options.pie_usable_fraction));
+  }
 }
 
 void LeveledUpdate::mark(const OccupancyGrid &grid, SubCell s, int level, double weight) {

@@ -14,12 +14,13 @@ namespace mapping {
 namespace {
 
 // Where one reading's slices lie, relative to its sensor: half-angle beta around the unit
-// direction (dir_x, dir_y); the clear part reaches clear_m, the contact part (clear_m, outer_m].
+// direction (dir_x, dir_y); the clear part reaches free_m (<= clear_m, the usable range), the
+// contact part is (clear_m, outer_m]; the reading's arc has radius clear_m.
 struct Slice {
   Point origin;
   double dir_x, dir_y;
   double beta;
-  double clear_m, outer_m;
+  double free_m, clear_m, outer_m;
 };
 
 enum class Part { outside, clear, contact };
@@ -34,7 +35,8 @@ Part part_of(const Slice &s, Point p) {
       std::abs(wrap_angle_rad(std::atan2(ey, ex) - std::atan2(s.dir_y, s.dir_x))) > s.beta) {
     return Part::outside;
   }
-  return distance <= s.clear_m ? Part::clear : Part::contact;
+  if (distance <= s.free_m) return Part::clear;
+  return distance <= s.clear_m ? Part::outside : Part::contact;
 }
 
 // A convex polygon relative to the sensor (x, y in m): a square clipped by two half-planes
@@ -108,16 +110,41 @@ bool crossed_by_arc(const Slice &s, double left, double bottom, double size) {
   return near < s.clear_m && s.clear_m < far;
 }
 
+// True when the slice's axis, between d (1 - 2 eps) and d (1 + 2 eps), comes within the
+// slack of a cell side (a grid line): where a single wall surface the reading saw can be.
+bool reaches_cell_side(const GridGeometry &g, const RangeReading &r, double margin) {
+  const double slack = kPieSideSlack * g.cell_size_m;
+  const double near_m = r.range_m * (1.0 - margin);
+  const double far_m = r.range_m * (1.0 + margin);
+  const auto crosses = [&](double origin, double direction, double grid_origin) {
+    const double a = origin + near_m * direction - grid_origin;
+    const double b = origin + far_m * direction - grid_origin;
+    const double low = std::min(a, b) - slack;
+    const double high = std::max(a, b) + slack;
+    return std::floor(high / g.cell_size_m) * g.cell_size_m >= low;
+  };
+  return crosses(r.origin.x_m, std::cos(r.angle_rad), g.origin.x_m) ||
+         crosses(r.origin.y_m, std::sin(r.angle_rad), g.origin.y_m);
+}
+
 void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const RangeReading &r,
               LeveledUpdate &update) {
-  const bool contacting = r.range_m < r.max_range_m * (1.0 - kPieNoReturnErrors * r.range_error);
+  // A contact only when the reading and a no-return reading lie more than kPieNoReturnErrors
+  // of their own errors apart (the error is a fraction of the value).
+  const double margin = kPieNoReturnErrors * r.range_error;
+  const bool contacting = r.range_m * (1.0 + margin) < r.max_range_m * (1.0 - margin);
+  // A contact no single wall can explain (rays averaged across a post's edge) is no information.
+  if (contacting && !reaches_cell_side(grid.geometry(), r, margin)) return;
   // A clear reading frees up to what it measured, less its error: noise near max range
   // must not free a wall just short of max.
   const double clear_m = contacting ? std::max(r.range_m, 0.0)
                                     : std::min(r.range_m, r.max_range_m) * (1.0 - r.range_error);
   const double outer_m = contacting ? clear_m + options.pie_contact_m : clear_m;
+  // The slice frees no farther than the usable range, where the slice is still narrow enough
+  // to miss the side walls of a corridor and the far wall of the next cell.
+  const double usable_m = options.pie_usable_fraction * r.max_range_m;
   const Slice slice{r.origin, std::cos(r.angle_rad), std::sin(r.angle_rad),
-                    options.pie_half_angle_rad, clear_m, outer_m};
+                    options.pie_half_angle_rad, std::min(clear_m, usable_m), clear_m, outer_m};
   const GridGeometry &g = grid.geometry();
   const double size = g.subcell_size_m();
   const auto to_index = [&](double v, double origin) {

@@ -68,8 +68,16 @@ inline constexpr double kDepthRayP = 0.4;
 inline constexpr double kDepthRobotP = 0.3;
 inline constexpr double kPieOccupiedP = 0.7;
 inline constexpr double kPieFreeP = 0.4;
-// pie: readings at or beyond max (1 - kPieNoReturnErrors eps) are clear, not contacting.
+// pie: a reading d is a contact when d (1 + n eps) < max (1 - n eps), n = kPieNoReturnErrors:
+// it lies more than n of its own errors from a no-return reading; otherwise it is clear.
 inline constexpr double kPieNoReturnErrors = 2.0;
+// pie: a contact counts only when the slice's axis between d (1 - n eps) and d (1 + n eps)
+// comes within kPieSideSlack cell sizes of a cell side, where walls are; otherwise the reading
+// (rays averaged across a post's edge) is ignored.
+inline constexpr double kPieSideSlack = 0.05;
+// cone: readings whose distance error eps d exceeds kConeUsableError cell sizes are beyond the
+// usable range (sonar, eps 6.6 %: 2.27 m with 1 m cells; the 1.5 m IR is never cut).
+inline constexpr double kConeUsableError = 0.15;
 
 // One bumper as read: where it touches (robot centre + mounting offset along its angle).
 struct BumpReading {
@@ -90,9 +98,15 @@ struct RangeReading {
 struct RangeModelOptions {
   double pie_half_angle_rad = 0.17453292519943295;  // beta, --pie-beta (deg on the command line)
   double pie_contact_m = 0.1;                        // alpha, --pie-alpha
+  // The clear slice ends at this fraction of max range, the sensor's usable range (gmapping's
+  // maxUrange): beyond 1 m the 10 deg slice of a 1.5 m IR takes in the inner corners of the
+  // side bands of the corridor ahead and the near corners of the next cell's far band, and
+  // freed them on every pass. 1 keeps the course's whole slice.
+  double pie_usable_fraction = 2.0 / 3.0;
 };
 
-// Throws common::InputError when beta is not in (0, 90 deg) or alpha not positive.
+// Throws common::InputError when beta is not in (0, 90 deg), alpha not positive or the usable
+// fraction not in (0, 1].
 void validate(const RangeModelOptions &options);
 
 // Marks with their own probabilities, gathered per scan: each sub-cell is updated once with

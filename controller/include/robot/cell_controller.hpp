@@ -104,8 +104,9 @@ struct ControllerOptions {
   // Lidar models: what each scan goes through before it is marked (spikes and dropped
   // beams become "no information"; mapping/scan_filter.hpp).
   mapping::ScanFilterOptions scan_filter;
-  // Lidar models: scans taken again, one control step apart, while a side of the robot's
-  // cell is still unknown after arriving (a reading the filter left without information).
+  // Lidar models and range rings (pie, cone): scans taken again, one control step apart,
+  // while a side of the robot's cell is still unknown after arriving (a reading the filter or
+  // the pie model left without information).
   int max_rescans = 3;
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   MotionOptions motion;
