@@ -149,8 +149,9 @@ class Simulation {
   maze::sim::SimulationOptions options_;
   maze::sim::WallGrid walls_;
   maze::sim::Pose pose_;
-  // Where the body's centre touches no wall (WallGrid::free_centres), for the cell the body
-  // was last pushed out in: inside it, a physics substep needs no push_out.
+  // Where the body's centre touches no wall (WallGrid::free_centres), computed when the
+  // body last left the previous box: inside it, a physics substep needs no push_out. The
+  // pose only changes in advance(), so the box cannot go stale.
   std::optional<maze::sim::Box> free_centres_;
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
