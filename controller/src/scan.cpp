@@ -1,10 +1,12 @@
 #include "mapping/scan.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <vector>
 
 namespace mapping {
@@ -25,31 +27,45 @@ double LidarScan::beam_angle_rad(int i) const {
 
 ReadingKind LidarScan::kind(int i) const { return kind_of(ranges[static_cast<std::size_t>(i)]); }
 
-ReadingKind LidarScan::kind_of(float r) const {
-  if (std::isnan(r) || r < 0.0f || r < min_range_m) return ReadingKind::invalid;
-  if (std::isinf(r) || r > max_range_m) return ReadingKind::no_return;
-  return ReadingKind::hit;
-}
-
 std::optional<float> LidarScan::median_range(int centre, double half_window_rad) const {
   const int n = beam_count();
   assert(centre >= 0 && centre < n);
   const double step = fov_rad / n;
   const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
   const int reach = std::min(static_cast<int>(half_window_rad / step), (n - 1) / 2);
-  std::vector<float> valid;
+  if (reach < 0) return std::nullopt;  // no beam in the window
+  // The window's valid readings in beam order, in a buffer on the stack unless the window
+  // is wide (beams much closer than the window).
+  const auto window = static_cast<std::size_t>(2 * reach + 1);
+  std::array<float, kMedianSmallWindow> small;
+  std::vector<float> wide;
+  if (window > small.size()) wide.resize(window);
+  const std::span<float> buffer = window > small.size() ? std::span<float>(wide) : std::span<float>(small);
+  std::size_t count = 0;
+  std::size_t returns = 0;
   for (int offset = -reach; offset <= reach; ++offset) {
     int i = centre + offset;
-    if (full_circle) i = ((i % n) + n) % n;
+    if (full_circle) {
+      if (i < 0) {
+        i += n;
+      } else if (i >= n) {
+        i -= n;
+      }
+    }
     if (i < 0 || i >= n) continue;
     const float r = ranges[static_cast<std::size_t>(i)];
     const ReadingKind k = kind_of(r);
     if (k == ReadingKind::invalid) continue;
-    valid.push_back(k == ReadingKind::no_return ? std::numeric_limits<float>::infinity() : r);
+    if (k == ReadingKind::hit) ++returns;
+    buffer[count++] = k == ReadingKind::no_return ? std::numeric_limits<float>::infinity() : r;
   }
-  if (valid.empty()) return std::nullopt;
-  const auto returns = std::count_if(valid.begin(), valid.end(), [](float v) { return std::isfinite(v); });
-  if (returns >= 2) std::erase_if(valid, [](float v) { return !std::isfinite(v); });
+  if (count == 0) return std::nullopt;
+  std::span<float> valid = buffer.first(count);
+  if (returns >= 2) {
+    // Stable, as the order decides which of two equal readings (+0 and -0) is returned.
+    const auto end = std::remove_if(valid.begin(), valid.end(), [](float v) { return !std::isfinite(v); });
+    valid = valid.first(static_cast<std::size_t>(end - valid.begin()));
+  }
   const auto middle = valid.begin() + static_cast<std::ptrdiff_t>((valid.size() - 1) / 2);
   std::nth_element(valid.begin(), middle, valid.end());
   return *middle;

@@ -22,19 +22,8 @@ enum BeamState : unsigned char { no_return_or_invalid, trusted_return, rejected_
 
 bool full_circle(const LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
 
-// Beam i + offset, wrapped on a full circle; -1 past either end of a partial one.
-int neighbour_index(int i, int offset, int n, bool wrap) {
-  const int j = i + offset;
-  if (wrap) {
-    // Offsets are a few beams: one compare instead of two integer divisions (per beam,
-    // per rule, per round, this was a fifth of a whole run).
-    if (j >= 0 && j < n) return j;
-    if (j < 0 && j >= -n) return j + n;
-    if (j >= n && j < 2 * n) return j - n;
-    return ((j % n) + n) % n;
-  }
-  return j < 0 || j >= n ? -1 : j;
-}
+// Far enough from any beam that no beam finds it within reach.
+constexpr int kNowhere = std::numeric_limits<int>::max() / 4;
 
 }  // namespace
 
@@ -65,48 +54,75 @@ ScanFilter::ScanFilter(const ScanFilterOptions &options) : options_((validate(op
 
 LidarScan ScanFilter::apply(const LidarScan &scan) {
   counts_ = {};
-  ranges_.assign(scan.ranges.begin(), scan.ranges.end());
-  state_.assign(ranges_.size(), no_return_or_invalid);
-  for (std::size_t i = 0; i < ranges_.size(); ++i) {
-    switch (scan.kind_of(ranges_[i])) {
+  const std::size_t size = scan.ranges.size();
+  // No allocation once the filter has seen a scan this size.
+  ranges_.resize(size);
+  state_.resize(size);
+  before_.resize(size);
+  after_.resize(size);
+  for (std::size_t i = 0; i < size; ++i) {
+    const float r = scan.ranges[i];
+    switch (scan.kind_of(r)) {
       case ReadingKind::invalid:
         ranges_[i] = kNoInformation;
+        state_[i] = no_return_or_invalid;
         ++counts_.invalid;
         break;
-      case ReadingKind::hit: state_[i] = trusted_return; break;
-      case ReadingKind::no_return: break;
+      case ReadingKind::hit:
+        ranges_[i] = r;
+        state_[i] = trusted_return;
+        break;
+      case ReadingKind::no_return:
+        ranges_[i] = r;
+        state_[i] = no_return_or_invalid;
+        break;
     }
   }
-  if (ranges_.size() >= 3) {
+  if (size >= 3) {
+    const int n = static_cast<int>(size);
+    // Every rule's constants, once per scan (grazing_step takes a tangent).
+    wrap_ = full_circle(scan);
+    reach_ = std::min(options_.neighbour_reach, (n - 1) / 2);
+    absolute_m_ = options_.spike_tolerance_m();
+    relative_ = options_.grazing_step(scan.fov_rad / n);
+    max_range_m_ = scan.max_range_m;
+    neighbours_current_ = false;
     // A rejection takes a neighbour's support away: go again until nothing changes.
     for (int round = 0; round < kSpikeRounds; ++round) {
-      const bool spikes = reject_spikes(scan);
-      const bool see_through = reject_see_through(scan);
+      const bool spikes = reject_spikes();
+      const bool see_through = reject_see_through();
       if (!spikes && !see_through) break;
     }
-    drop_dropouts(scan);
+    drop_dropouts();
   }
   LidarScan out = scan;
   out.ranges = ranges_;
   return out;
 }
 
-int ScanFilter::nearest_trusted(const LidarScan &scan, int i, int step) const {
+void ScanFilter::find_neighbours() {
+  if (neighbours_current_) return;
   const int n = static_cast<int>(ranges_.size());
-  const bool wrap = full_circle(scan);
-  const int reach = std::min(options_.neighbour_reach, (n - 1) / 2);
-  for (int d = 1; d <= reach; ++d) {
-    const int j = neighbour_index(i, step * d, n, wrap);
-    if (j < 0) break;
-    if (state_[static_cast<std::size_t>(j)] == trusted_return) return j;
+  const auto trusted = [&](int beam) { return state_[static_cast<std::size_t>(beam)] == trusted_return; };
+  // Beams k past either end (virtual indices) are beam k -+ n on a full circle; reach_ < n.
+  int nearest = kNowhere;  // the nearest trusted return after beam k so far
+  for (int k = wrap_ ? n - 1 + reach_ : n - 1; k >= 0; --k) {
+    if (k < n) after_[static_cast<std::size_t>(k)] = nearest - k <= reach_ ? (nearest >= n ? nearest - n : nearest) : -1;
+    if (trusted(k >= n ? k - n : k)) nearest = k;
   }
-  return -1;
+  nearest = -kNowhere;  // the nearest trusted return before beam k so far
+  for (int k = wrap_ ? -reach_ : 0; k < n; ++k) {
+    if (k >= 0) before_[static_cast<std::size_t>(k)] = k - nearest <= reach_ ? (nearest < 0 ? nearest + n : nearest) : -1;
+    if (trusted(k < 0 ? k + n : k)) nearest = k;
+  }
+  neighbours_current_ = true;
 }
 
-double ScanFilter::continued(const LidarScan &scan, int i, int step) const {
-  const int a = nearest_trusted(scan, i, step);
-  const int b = a < 0 ? -1 : nearest_trusted(scan, a, step);
-  const int c = b < 0 ? -1 : nearest_trusted(scan, b, step);
+double ScanFilter::continued(int i, int step) const {
+  const std::vector<int> &towards = step < 0 ? before_ : after_;
+  const int a = towards[static_cast<std::size_t>(i)];
+  const int b = a < 0 ? -1 : towards[static_cast<std::size_t>(a)];
+  const int c = b < 0 ? -1 : towards[static_cast<std::size_t>(b)];
   if (c < 0 || b == i || c == i || c == a) return kNaNRange;
   const double ra = ranges_[static_cast<std::size_t>(a)];
   const double rb = ranges_[static_cast<std::size_t>(b)];
@@ -114,30 +130,33 @@ double ScanFilter::continued(const LidarScan &scan, int i, int step) const {
   // Only a surface: the three returns must follow the same ratio, so a spike cannot lend
   // its jump as a trend.
   const double predicted_a = rb * rb / rc;
-  const double tolerance = options_.spike_tolerance_m() + options_.grazing_step(scan.fov_rad / static_cast<double>(ranges_.size())) * std::min(ra, predicted_a);
+  const double tolerance = absolute_m_ + relative_ * std::min(ra, predicted_a);
   if (!(std::abs(ra - predicted_a) <= tolerance)) return kNaNRange;
   return ra * ra / rb;
 }
 
-bool ScanFilter::reject_spikes(const LidarScan &scan) {
-  const int n = static_cast<int>(ranges_.size());
-  const double absolute_m = options_.spike_tolerance_m();
-  const double relative = options_.grazing_step(scan.fov_rad / n);
+bool ScanFilter::reject_spikes() {
+  find_neighbours();
+  const std::size_t size = ranges_.size();
+  const double absolute_m = absolute_m_;
+  const double relative = relative_;
   const auto range_of = [&](int j) {
     return j < 0 ? kNaNRange : static_cast<double>(ranges_[static_cast<std::size_t>(j)]);
   };
   rejected_.clear();
-  for (int i = 0; i < n; ++i) {
-    if (state_[static_cast<std::size_t>(i)] != trusted_return) continue;
-    const double r = ranges_[static_cast<std::size_t>(i)];
-    const double left = range_of(nearest_trusted(scan, i, -1));
-    const double right = range_of(nearest_trusted(scan, i, +1));
+  for (std::size_t i = 0; i < size; ++i) {
+    if (state_[i] != trusted_return) continue;
+    const double r = ranges_[i];
+    const double left = range_of(before_[i]);
+    const double right = range_of(after_[i]);
     // NaN compares false: a missing neighbour supports nothing.
     const auto near = [&](double other) { return std::abs(r - other) <= absolute_m + relative * std::min(r, other); };
+    if (near(left) || near(right)) continue;
     const bool between = std::min(left, right) - absolute_m <= r && r <= std::max(left, right) + absolute_m;
-    if (near(left) || near(right) || between) continue;
-    if (near(continued(scan, i, -1)) || near(continued(scan, i, +1))) continue;
-    rejected_.push_back(i);
+    if (between) continue;
+    const int beam = static_cast<int>(i);
+    if (near(continued(beam, -1)) || near(continued(beam, +1))) continue;
+    rejected_.push_back(beam);
   }
   return reject_collected();
 }
@@ -148,47 +167,48 @@ bool ScanFilter::reject_collected() {
     ranges_[static_cast<std::size_t>(i)] = kNoInformation;
     ++counts_.spikes;
   }
-  return !rejected_.empty();
+  if (rejected_.empty()) return false;
+  neighbours_current_ = false;
+  return true;
 }
 
-bool ScanFilter::reject_see_through(const LidarScan &scan) {
+bool ScanFilter::reject_see_through() {
+  find_neighbours();
   const int n = static_cast<int>(ranges_.size());
-  const bool wrap = full_circle(scan);
-  const int reach = std::min(options_.neighbour_reach, (n - 1) / 2);
-  const double absolute_m = options_.spike_tolerance_m();
-  const double relative = options_.grazing_step(scan.fov_rad / n);
+  const double absolute_m = absolute_m_;
+  const double relative = relative_;
   const auto trusted = [&](int i) { return i >= 0 && state_[static_cast<std::size_t>(i)] == trusted_return; };
   const auto range = [&](int i) { return static_cast<double>(ranges_[static_cast<std::size_t>(i)]); };
   const auto near = [&](double a, double b) { return std::abs(a - b) <= absolute_m + relative * std::min(a, b); };
-  // The nearest trusted return beyond beam `edge` going `step`, or NaN.
-  const auto bound = [&](int edge, int step) {
-    for (int d = 1; d <= reach; ++d) {
-      const int j = neighbour_index(edge, step * d, n, wrap);
-      if (j < 0) break;
-      if (trusted(j)) return range(j);
-    }
-    return std::numeric_limits<double>::quiet_NaN();
+  // The neighbouring beam, wrapped on a full circle; -1 past either end of a partial one.
+  const auto previous_beam = [&](int i) { return i > 0 ? i - 1 : (wrap_ ? n - 1 : -1); };
+  const auto next_beam = [&](int i) { return i < n - 1 ? i + 1 : (wrap_ ? 0 : -1); };
+  // The nearest trusted return within reach of beam i going `towards`, or NaN.
+  const auto bound = [&](const std::vector<int> &towards, int i) {
+    const int j = towards[static_cast<std::size_t>(i)];
+    return j < 0 ? kNaNRange : range(j);
   };
   rejected_.clear();
   for (int i = 0; i < n; ++i) {
     // A cluster starts at a trusted return that does not continue the one before it.
-    const int before = neighbour_index(i, -1, n, wrap);
-    if (!trusted(i) || (trusted(before) && near(range(before), range(i)))) continue;
+    if (!trusted(i)) continue;
+    const int before = previous_beam(i);
+    if (trusted(before) && near(range(before), range(i))) continue;
     int last = i;
     double nearest_m = range(i);
     for (int size = 1; size < options_.max_see_through; ++size) {
-      const int next = neighbour_index(last, 1, n, wrap);
+      const int next = next_beam(last);
       if (!trusted(next) || !near(range(last), range(next)) || next == i) break;
       last = next;
       nearest_m = std::min(nearest_m, range(last));
     }
-    const int after = neighbour_index(last, 1, n, wrap);
+    const int after = next_beam(last);
     if (trusted(after) && near(range(last), range(after))) continue;  // longer than a few beams
-    const double left = bound(i, -1);
-    const double right = bound(last, +1);
+    const double left = bound(before_, i);
+    const double right = bound(after_, last);
     // Further than both sides (NaN compares false: a missing side clears it).
     if (nearest_m > left + absolute_m + relative * left && nearest_m > right + absolute_m + relative * right) {
-      for (int j = i;; j = neighbour_index(j, 1, n, wrap)) {
+      for (int j = i;; j = next_beam(j)) {
         rejected_.push_back(j);
         if (j == last) break;
       }
@@ -197,23 +217,25 @@ bool ScanFilter::reject_see_through(const LidarScan &scan) {
   return reject_collected();
 }
 
-void ScanFilter::drop_dropouts(const LidarScan &scan) {
+void ScanFilter::drop_dropouts() {
   const int n = static_cast<int>(ranges_.size());
-  const bool wrap = full_circle(scan);
   // A beam that returned something, trusted or not, ends a run.
   const auto returned = [&](int i) { return state_[static_cast<std::size_t>(i)] != no_return_or_invalid; };
+  // Beam `first` + offset, offset 0 ... n.
+  const auto wrapped = [&](int i) { return i < n ? i : i - n; };
   // A trusted return so far away that the surface it lies on may go on past max range in
   // the next beam (a corridor's walls seen at a grazing angle): the run beside it may be a
   // real view past max range.
-  const double absolute_m = options_.spike_tolerance_m();
-  const double relative = options_.grazing_step(scan.fov_rad / n);
+  const double absolute_m = absolute_m_;
+  const double relative = relative_;
   const auto reaches_max_range = [&](int i, int away) {
     if (state_[static_cast<std::size_t>(i)] != trusted_return) return false;
     const double r = ranges_[static_cast<std::size_t>(i)];
     // The next beam's range if the surface recedes by the same ratio as from the return before.
-    const int before = nearest_trusted(scan, i, away);
+    find_neighbours();
+    const int before = (away < 0 ? before_ : after_)[static_cast<std::size_t>(i)];
     const double next_m = before < 0 ? kNaNRange : r * r / ranges_[static_cast<std::size_t>(before)];
-    return r + absolute_m + relative * r >= scan.max_range_m || next_m + absolute_m >= scan.max_range_m;
+    return r + absolute_m + relative * r >= max_range_m_ || next_m + absolute_m >= max_range_m_;
   };
   // Start at a return so that a run never wraps past the start unseen.
   int first = -1;
@@ -223,19 +245,19 @@ void ScanFilter::drop_dropouts(const LidarScan &scan) {
   if (first < 0) return;  // no return at all: every no return stands
   // A partial field of view: the runs before the first return and after the last have a
   // return on one side only; they stand.
-  const int span = wrap ? n : n - first;
+  const int span = wrap_ ? n : n - first;
   int run_start = -1;  // offset (from `first`) where the current run began
   for (int offset = 1; offset <= span; ++offset) {
-    const int i = (first + offset) % n;
+    const int i = wrapped(first + offset);
     if (offset < span && !returned(i)) {
       if (run_start < 0) run_start = offset;
       continue;
     }
-    const bool bounded = offset < span || wrap;
+    const bool bounded = offset < span || wrap_;
     if (run_start >= 0 && bounded && offset - run_start <= options_.max_dropout_run &&
-        !reaches_max_range((first + run_start - 1) % n, -1) && !reaches_max_range(i, +1)) {
+        !reaches_max_range(wrapped(first + run_start - 1), -1) && !reaches_max_range(i, +1)) {
       for (int o = run_start; o < offset; ++o) {
-        float &r = ranges_[static_cast<std::size_t>((first + o) % n)];
+        float &r = ranges_[static_cast<std::size_t>(wrapped(first + o))];
         if (std::isnan(r)) continue;  // invalid: counted already
         r = kNoInformation;
         ++counts_.dropouts;

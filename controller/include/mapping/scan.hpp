@@ -10,6 +10,7 @@
 //   +infinity, or finite beyond max_range_m      no return (nothing within max range)
 //   NaN, negative, or below min_range_m          invalid: ignored, never stored
 
+#include <cmath>
 #include <optional>
 #include <span>
 
@@ -35,15 +36,21 @@ struct LidarScan {
   double beam_world_angle_rad(int i) const { return yaw_rad + beam_angle_rad(i); }
 
   ReadingKind kind(int i) const;
-  // The kind of a reading r, m (the table above).
-  ReadingKind kind_of(float r) const;
+  // The kind of a reading r, m (the table above). Inline: the filter and the models ask
+  // for every beam.
+  ReadingKind kind_of(float r) const {
+    if (std::isnan(r) || r < 0.0f || r < min_range_m) return ReadingKind::invalid;
+    if (std::isinf(r) || r > max_range_m) return ReadingKind::no_return;
+    return ReadingKind::hit;
+  }
 
   // The median reading, m, of the beams within half_window_rad of beam `centre` (beam
   // `centre` alone when the beams are further apart), invalid readings left out; nothing when
   // none is valid. When at least two of them are returns, no-return readings are left out too
   // (a wall is not seen through: those are dropped beams), else no return counts as
   // +infinity. A lone dropout or spike does not move it. The lower median when the count is
-  // even.
+  // even. No allocation for a window of up to kMedianSmallWindow beams.
+  static constexpr int kMedianSmallWindow = 33;
   std::optional<float> median_range(int centre, double half_window_rad) const;
 
   // Whether beam i is a no return with a return among the two beams on each side of it:
