@@ -3,11 +3,16 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <limits>
 #include <numbers>
 #include <vector>
 
+#include "common/random.hpp"
 #include "mapping/scan.hpp"
 
 namespace {
@@ -23,6 +28,31 @@ mapping::LidarScan full_circle(const std::vector<float> &ranges) {
   s.max_range_m = 12.0;
   s.ranges = ranges;
   return s;
+}
+
+// median_range as first written (a vector per call): the reference the allocation-free one
+// must match bit for bit.
+std::optional<float> reference_median(const mapping::LidarScan &s, int centre, double half_window_rad) {
+  const int n = s.beam_count();
+  const double step = s.fov_rad / n;
+  const bool full = s.fov_rad >= 2.0 * std::numbers::pi - 1e-9;
+  const int reach = std::min(static_cast<int>(half_window_rad / step), (n - 1) / 2);
+  std::vector<float> valid;
+  for (int offset = -reach; offset <= reach; ++offset) {
+    int i = centre + offset;
+    if (full) i = ((i % n) + n) % n;
+    if (i < 0 || i >= n) continue;
+    const float r = s.ranges[static_cast<std::size_t>(i)];
+    const mapping::ReadingKind k = s.kind_of(r);
+    if (k == mapping::ReadingKind::invalid) continue;
+    valid.push_back(k == mapping::ReadingKind::no_return ? kInf : r);
+  }
+  if (valid.empty()) return std::nullopt;
+  const auto returns = std::count_if(valid.begin(), valid.end(), [](float v) { return std::isfinite(v); });
+  if (returns >= 2) std::erase_if(valid, [](float v) { return !std::isfinite(v); });
+  const auto middle = valid.begin() + static_cast<std::ptrdiff_t>((valid.size() - 1) / 2);
+  std::nth_element(valid.begin(), middle, valid.end());
+  return *middle;
 }
 
 }  // namespace
@@ -51,4 +81,35 @@ TEST_CASE("median_range: beams further apart than the window read one beam, as b
   const std::vector<float> r{1.0f, kInf, 2.0f, 3.0f};
   CHECK(*full_circle(r).median_range(2, 2.5 * kDeg) == 2.0f);
   CHECK(std::isinf(*full_circle(r).median_range(1, 2.5 * kDeg)));
+}
+
+TEST_CASE("median_range: the same reading, bit for bit, as the reference, on any window") {
+  common::Rng rng(77);
+  const float pool[] = {0.5f, 0.5f, 0.51f, 0.0f, -0.0f, kInf, -kInf, kNaN, -1.0f, 0.01f, 12.0f, 12.5f, 3.0f};
+  int compared = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    CAPTURE(trial);
+    const int n = 1 + static_cast<int>(rng.below(rng.uniform01() < 0.5 ? 12 : 400));
+    std::vector<float> r(static_cast<std::size_t>(n));
+    for (float &v : r) {
+      v = rng.uniform01() < 0.5 ? pool[rng.below(std::size(pool))] : static_cast<float>(rng.uniform(0.0, 13.0));
+    }
+    mapping::LidarScan s = full_circle(r);
+    s.min_range_m = rng.uniform01() < 0.3 ? 0.0 : 0.05;
+    if (rng.uniform01() < 0.5) s.fov_rad = rng.uniform(0.01, 6.28);
+    const int centre = static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
+    // Windows from one beam to past the small buffer (the fallback) and the whole scan.
+    const double half_window_rad = rng.uniform01() < 0.1 ? -0.1 : rng.uniform(0.0, rng.uniform01() < 0.7 ? 0.1 : 3.5);
+    CAPTURE(n);
+    CAPTURE(centre);
+    CAPTURE(half_window_rad);
+    const std::optional<float> expected = reference_median(s, centre, half_window_rad);
+    const std::optional<float> got = s.median_range(centre, half_window_rad);
+    REQUIRE(got.has_value() == expected.has_value());
+    if (got) {
+      CHECK(std::bit_cast<std::uint32_t>(*got) == std::bit_cast<std::uint32_t>(*expected));
+      ++compared;
+    }
+  }
+  CHECK(compared > 15000);
 }
