@@ -22,9 +22,6 @@ enum BeamState : unsigned char { no_return_or_invalid, trusted_return, rejected_
 
 bool full_circle(const LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
 
-// Far enough from any beam that no beam finds it within reach.
-constexpr int kNowhere = std::numeric_limits<int>::max() / 4;
-
 }  // namespace
 
 void validate(const ScanFilterOptions &options) {
@@ -58,8 +55,6 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
   // No allocation once the filter has seen a scan this size.
   ranges_.resize(size);
   state_.resize(size);
-  before_.resize(size);
-  after_.resize(size);
   for (std::size_t i = 0; i < size; ++i) {
     const float r = scan.ranges[i];
     switch (scan.kind_of(r)) {
@@ -79,14 +74,13 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
     }
   }
   if (size >= 3) {
-    const int n = static_cast<int>(size);
     // Every rule's constants, once per scan (grazing_step takes a tangent).
+    n_ = static_cast<int>(size);
     wrap_ = full_circle(scan);
-    reach_ = std::min(options_.neighbour_reach, (n - 1) / 2);
+    reach_ = std::min(options_.neighbour_reach, (n_ - 1) / 2);
     absolute_m_ = options_.spike_tolerance_m();
-    relative_ = options_.grazing_step(scan.fov_rad / n);
+    relative_ = options_.grazing_step(scan.fov_rad / n_);
     max_range_m_ = scan.max_range_m;
-    neighbours_current_ = false;
     // A rejection takes a neighbour's support away: go again until nothing changes.
     for (int round = 0; round < kSpikeRounds; ++round) {
       const bool spikes = reject_spikes();
@@ -100,29 +94,24 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
   return out;
 }
 
-void ScanFilter::find_neighbours() {
-  if (neighbours_current_) return;
-  const int n = static_cast<int>(ranges_.size());
-  const auto trusted = [&](int beam) { return state_[static_cast<std::size_t>(beam)] == trusted_return; };
-  // Beams k past either end (virtual indices) are beam k -+ n on a full circle; reach_ < n.
-  int nearest = kNowhere;  // the nearest trusted return after beam k so far
-  for (int k = wrap_ ? n - 1 + reach_ : n - 1; k >= 0; --k) {
-    if (k < n) after_[static_cast<std::size_t>(k)] = nearest - k <= reach_ ? (nearest >= n ? nearest - n : nearest) : -1;
-    if (trusted(k >= n ? k - n : k)) nearest = k;
+// Inline where the rules call it: most beams find their neighbour one beam away.
+inline int ScanFilter::nearest_trusted(int i, int step) const {
+  int j = i;
+  for (int d = 1; d <= reach_; ++d) {
+    j += step;
+    if (j < 0 || j >= n_) {
+      if (!wrap_) return -1;
+      j = j < 0 ? j + n_ : j - n_;  // reach_ < n_: wrapped once at most
+    }
+    if (state_[static_cast<std::size_t>(j)] == trusted_return) return j;
   }
-  nearest = -kNowhere;  // the nearest trusted return before beam k so far
-  for (int k = wrap_ ? -reach_ : 0; k < n; ++k) {
-    if (k >= 0) before_[static_cast<std::size_t>(k)] = k - nearest <= reach_ ? (nearest < 0 ? nearest + n : nearest) : -1;
-    if (trusted(k < 0 ? k + n : k)) nearest = k;
-  }
-  neighbours_current_ = true;
+  return -1;
 }
 
 double ScanFilter::continued(int i, int step) const {
-  const std::vector<int> &towards = step < 0 ? before_ : after_;
-  const int a = towards[static_cast<std::size_t>(i)];
-  const int b = a < 0 ? -1 : towards[static_cast<std::size_t>(a)];
-  const int c = b < 0 ? -1 : towards[static_cast<std::size_t>(b)];
+  const int a = nearest_trusted(i, step);
+  const int b = a < 0 ? -1 : nearest_trusted(a, step);
+  const int c = b < 0 ? -1 : nearest_trusted(b, step);
   if (c < 0 || b == i || c == i || c == a) return kNaNRange;
   const double ra = ranges_[static_cast<std::size_t>(a)];
   const double rb = ranges_[static_cast<std::size_t>(b)];
@@ -136,27 +125,24 @@ double ScanFilter::continued(int i, int step) const {
 }
 
 bool ScanFilter::reject_spikes() {
-  find_neighbours();
-  const std::size_t size = ranges_.size();
   const double absolute_m = absolute_m_;
   const double relative = relative_;
   const auto range_of = [&](int j) {
     return j < 0 ? kNaNRange : static_cast<double>(ranges_[static_cast<std::size_t>(j)]);
   };
   rejected_.clear();
-  for (std::size_t i = 0; i < size; ++i) {
-    if (state_[i] != trusted_return) continue;
-    const double r = ranges_[i];
-    const double left = range_of(before_[i]);
-    const double right = range_of(after_[i]);
+  for (int i = 0; i < n_; ++i) {
+    if (state_[static_cast<std::size_t>(i)] != trusted_return) continue;
+    const double r = ranges_[static_cast<std::size_t>(i)];
     // NaN compares false: a missing neighbour supports nothing.
     const auto near = [&](double other) { return std::abs(r - other) <= absolute_m + relative * std::min(r, other); };
-    if (near(left) || near(right)) continue;
+    const double left = range_of(nearest_trusted(i, -1));
+    if (near(left)) continue;  // most beams: the wall the one before hit
+    const double right = range_of(nearest_trusted(i, +1));
     const bool between = std::min(left, right) - absolute_m <= r && r <= std::max(left, right) + absolute_m;
-    if (between) continue;
-    const int beam = static_cast<int>(i);
-    if (near(continued(beam, -1)) || near(continued(beam, +1))) continue;
-    rejected_.push_back(beam);
+    if (near(right) || between) continue;
+    if (near(continued(i, -1)) || near(continued(i, +1))) continue;
+    rejected_.push_back(i);
   }
   return reject_collected();
 }
@@ -167,14 +153,11 @@ bool ScanFilter::reject_collected() {
     ranges_[static_cast<std::size_t>(i)] = kNoInformation;
     ++counts_.spikes;
   }
-  if (rejected_.empty()) return false;
-  neighbours_current_ = false;
-  return true;
+  return !rejected_.empty();
 }
 
 bool ScanFilter::reject_see_through() {
-  find_neighbours();
-  const int n = static_cast<int>(ranges_.size());
+  const int n = n_;
   const double absolute_m = absolute_m_;
   const double relative = relative_;
   const auto trusted = [&](int i) { return i >= 0 && state_[static_cast<std::size_t>(i)] == trusted_return; };
@@ -184,8 +167,8 @@ bool ScanFilter::reject_see_through() {
   const auto previous_beam = [&](int i) { return i > 0 ? i - 1 : (wrap_ ? n - 1 : -1); };
   const auto next_beam = [&](int i) { return i < n - 1 ? i + 1 : (wrap_ ? 0 : -1); };
   // The nearest trusted return within reach of beam i going `towards`, or NaN.
-  const auto bound = [&](const std::vector<int> &towards, int i) {
-    const int j = towards[static_cast<std::size_t>(i)];
+  const auto bound = [&](int i, int step) {
+    const int j = nearest_trusted(i, step);
     return j < 0 ? kNaNRange : range(j);
   };
   rejected_.clear();
@@ -204,8 +187,8 @@ bool ScanFilter::reject_see_through() {
     }
     const int after = next_beam(last);
     if (trusted(after) && near(range(last), range(after))) continue;  // longer than a few beams
-    const double left = bound(before_, i);
-    const double right = bound(after_, last);
+    const double left = bound(i, -1);
+    const double right = bound(last, +1);
     // Further than both sides (NaN compares false: a missing side clears it).
     if (nearest_m > left + absolute_m + relative * left && nearest_m > right + absolute_m + relative * right) {
       for (int j = i;; j = next_beam(j)) {
@@ -218,7 +201,7 @@ bool ScanFilter::reject_see_through() {
 }
 
 void ScanFilter::drop_dropouts() {
-  const int n = static_cast<int>(ranges_.size());
+  const int n = n_;
   // A beam that returned something, trusted or not, ends a run.
   const auto returned = [&](int i) { return state_[static_cast<std::size_t>(i)] != no_return_or_invalid; };
   // Beam `first` + offset, offset 0 ... n.
@@ -232,8 +215,7 @@ void ScanFilter::drop_dropouts() {
     if (state_[static_cast<std::size_t>(i)] != trusted_return) return false;
     const double r = ranges_[static_cast<std::size_t>(i)];
     // The next beam's range if the surface recedes by the same ratio as from the return before.
-    find_neighbours();
-    const int before = (away < 0 ? before_ : after_)[static_cast<std::size_t>(i)];
+    const int before = nearest_trusted(i, away);
     const double next_m = before < 0 ? kNaNRange : r * r / ranges_[static_cast<std::size_t>(before)];
     return r + absolute_m + relative * r >= max_range_m_ || next_m + absolute_m >= max_range_m_;
   };

@@ -84,11 +84,11 @@ class ScanFilter {
   const ScanFilterCounts &counts() const { return counts_; }
 
  private:
-  // Fills before_ and after_ for the current beam states, unless they are up to date.
-  void find_neighbours();
-  // Beam i's range as the two nearest trusted returns going `step` (-1 or +1) predict it, a
-  // surface receding by a steady ratio a beam (a wall seen at a grazing angle), m; NaN
-  // without them or when a third return does not follow the same ratio.
+  // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
+  int nearest_trusted(int i, int step) const;
+  // Beam i's range as the two nearest trusted returns going `step` predict it, a surface
+  // receding by a steady ratio a beam (a wall seen at a grazing angle), m; NaN without them
+  // or when a third return does not follow the same ratio.
   double continued(int i, int step) const;
   // One round of each rule; true when it rejected a return.
   bool reject_spikes();
@@ -97,8 +97,8 @@ class ScanFilter {
   void drop_dropouts();
 
   ScanFilterOptions options_;
-  double tan_grazing_ = 0.0;  // tan(options_.max_grazing_rad)
-  // Of the scan being filtered, set once per apply().
+  // Of the scan being filtered, set once per apply(): the rules ask for them per beam.
+  int n_ = 0;                 // beams
   bool wrap_ = false;         // a full circle: beam 0 follows the last
   int reach_ = 0;             // neighbour reach, at most (n - 1) / 2 beams
   double absolute_m_ = 0.0;   // spike tolerance, m
@@ -106,11 +106,6 @@ class ScanFilter {
   double max_range_m_ = 0.0;
   std::vector<float> ranges_;
   std::vector<unsigned char> state_;  // per beam: returns still trusted, rejected, or neither
-  // Per beam: the nearest trusted return within reach before it (lower index, wrapped on a
-  // full circle) and after it, or -1; recomputed only after a rejection.
-  std::vector<int> before_;
-  std::vector<int> after_;
-  bool neighbours_current_ = false;
   std::vector<int> rejected_;
   ScanFilterCounts counts_;
 };
