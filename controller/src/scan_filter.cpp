@@ -47,6 +47,61 @@ void validate(const ScanFilterOptions &options) {
   }
 }
 
+// What every rule reads, in locals for the rules' loops: the beams as they stand in a round
+// (states change only between rounds) and the scan's constants.
+struct ScanFilter::Beams {
+  const float *range_m;
+  const unsigned char *state;
+  int n;          // at least 3
+  int reach;      // neighbour reach, 1 ... (n - 1) / 2 beams
+  bool wrap;      // a full circle: beam 0 follows beam n - 1
+  double absolute_m;  // spike tolerance, m
+  double relative;    // its growth per metre of range between neighbouring beams
+
+  bool trusted(int i) const { return i >= 0 && state[i] == trusted_return; }
+  double range(int i) const { return range_m[i]; }
+  // The range of beam i, or NaN for -1.
+  double range_or_nan(int i) const { return i < 0 ? kNaNRange : static_cast<double>(range_m[i]); }
+  // Whether two returns agree: within the tolerance, which grows with range.
+  bool near(double a, double b) const { return std::abs(a - b) <= absolute_m + relative * std::min(a, b); }
+  // The neighbouring beam, wrapped on a full circle; -1 past either end of a partial one.
+  int previous(int i) const { return i > 0 ? i - 1 : (wrap ? n - 1 : -1); }
+  int next(int i) const { return i < n - 1 ? i + 1 : (wrap ? 0 : -1); }
+
+  // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
+  int nearest_trusted(int i, int step) const {
+    int j = i;
+    for (int d = 1; d <= reach; ++d) {
+      j += step;
+      if (j < 0 || j >= n) {
+        if (!wrap) return -1;
+        j = j < 0 ? j + n : j - n;  // reach < n: wrapped once at most
+      }
+      if (state[j] == trusted_return) return j;
+    }
+    return -1;
+  }
+
+  // Beam i's range as the two nearest trusted returns going `step` predict it, a surface
+  // receding by a steady ratio a beam (a wall seen at a grazing angle), m; NaN without them
+  // or when a third return does not follow the same ratio.
+  double continued(int i, int step) const {
+    const int a = nearest_trusted(i, step);
+    const int b = a < 0 ? -1 : nearest_trusted(a, step);
+    const int c = b < 0 ? -1 : nearest_trusted(b, step);
+    if (c < 0 || b == i || c == i || c == a) return kNaNRange;
+    const double ra = range(a);
+    const double rb = range(b);
+    const double rc = range(c);
+    // Only a surface: the three returns must follow the same ratio, so a spike cannot lend
+    // its jump as a trend.
+    const double predicted_a = rb * rb / rc;
+    const double tolerance = absolute_m + relative * std::min(ra, predicted_a);
+    if (!(std::abs(ra - predicted_a) <= tolerance)) return kNaNRange;
+    return ra * ra / rb;
+  }
+};
+
 ScanFilter::ScanFilter(const ScanFilterOptions &options) : options_((validate(options), options)) {}
 
 LidarScan ScanFilter::apply(const LidarScan &scan) {
@@ -55,93 +110,66 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
   // No allocation once the filter has seen a scan this size.
   ranges_.resize(size);
   state_.resize(size);
+  float *range_m = ranges_.data();
+  unsigned char *state = state_.data();
   for (std::size_t i = 0; i < size; ++i) {
     const float r = scan.ranges[i];
     switch (scan.kind_of(r)) {
       case ReadingKind::invalid:
-        ranges_[i] = kNoInformation;
-        state_[i] = no_return_or_invalid;
+        range_m[i] = kNoInformation;
+        state[i] = no_return_or_invalid;
         ++counts_.invalid;
         break;
       case ReadingKind::hit:
-        ranges_[i] = r;
-        state_[i] = trusted_return;
+        range_m[i] = r;
+        state[i] = trusted_return;
         break;
       case ReadingKind::no_return:
-        ranges_[i] = r;
-        state_[i] = no_return_or_invalid;
+        range_m[i] = r;
+        state[i] = no_return_or_invalid;
         break;
     }
   }
   if (size >= 3) {
     // Every rule's constants, once per scan (grazing_step takes a tangent).
-    n_ = static_cast<int>(size);
+    const int n = static_cast<int>(size);
     wrap_ = full_circle(scan);
-    reach_ = std::min(options_.neighbour_reach, (n_ - 1) / 2);
+    reach_ = std::min(options_.neighbour_reach, (n - 1) / 2);
     absolute_m_ = options_.spike_tolerance_m();
-    relative_ = options_.grazing_step(scan.fov_rad / n_);
-    max_range_m_ = scan.max_range_m;
+    relative_ = options_.grazing_step(scan.fov_rad / n);
     // A rejection takes a neighbour's support away: go again until nothing changes.
     for (int round = 0; round < kSpikeRounds; ++round) {
       const bool spikes = reject_spikes();
       const bool see_through = reject_see_through();
       if (!spikes && !see_through) break;
     }
-    drop_dropouts();
+    drop_dropouts(scan.max_range_m);
   }
   LidarScan out = scan;
   out.ranges = ranges_;
   return out;
 }
 
-// Inline where the rules call it: most beams find their neighbour one beam away.
-inline int ScanFilter::nearest_trusted(int i, int step) const {
-  int j = i;
-  for (int d = 1; d <= reach_; ++d) {
-    j += step;
-    if (j < 0 || j >= n_) {
-      if (!wrap_) return -1;
-      j = j < 0 ? j + n_ : j - n_;  // reach_ < n_: wrapped once at most
-    }
-    if (state_[static_cast<std::size_t>(j)] == trusted_return) return j;
-  }
-  return -1;
-}
-
-double ScanFilter::continued(int i, int step) const {
-  const int a = nearest_trusted(i, step);
-  const int b = a < 0 ? -1 : nearest_trusted(a, step);
-  const int c = b < 0 ? -1 : nearest_trusted(b, step);
-  if (c < 0 || b == i || c == i || c == a) return kNaNRange;
-  const double ra = ranges_[static_cast<std::size_t>(a)];
-  const double rb = ranges_[static_cast<std::size_t>(b)];
-  const double rc = ranges_[static_cast<std::size_t>(c)];
-  // Only a surface: the three returns must follow the same ratio, so a spike cannot lend
-  // its jump as a trend.
-  const double predicted_a = rb * rb / rc;
-  const double tolerance = absolute_m_ + relative_ * std::min(ra, predicted_a);
-  if (!(std::abs(ra - predicted_a) <= tolerance)) return kNaNRange;
-  return ra * ra / rb;
+ScanFilter::Beams ScanFilter::beams() const {
+  return {ranges_.data(), state_.data(), static_cast<int>(ranges_.size()), reach_, wrap_, absolute_m_, relative_};
 }
 
 bool ScanFilter::reject_spikes() {
-  const double absolute_m = absolute_m_;
-  const double relative = relative_;
-  const auto range_of = [&](int j) {
-    return j < 0 ? kNaNRange : static_cast<double>(ranges_[static_cast<std::size_t>(j)]);
-  };
+  const Beams b = beams();
   rejected_.clear();
-  for (int i = 0; i < n_; ++i) {
-    if (state_[static_cast<std::size_t>(i)] != trusted_return) continue;
-    const double r = ranges_[static_cast<std::size_t>(i)];
+  for (int i = 0; i < b.n; ++i) {
+    if (!b.trusted(i)) continue;
+    const double r = b.range(i);
     // NaN compares false: a missing neighbour supports nothing.
-    const auto near = [&](double other) { return std::abs(r - other) <= absolute_m + relative * std::min(r, other); };
-    const double left = range_of(nearest_trusted(i, -1));
-    if (near(left)) continue;  // most beams: the wall the one before hit
-    const double right = range_of(nearest_trusted(i, +1));
-    const bool between = std::min(left, right) - absolute_m <= r && r <= std::max(left, right) + absolute_m;
-    if (near(right) || between) continue;
-    if (near(continued(i, -1)) || near(continued(i, +1))) continue;
+    const auto near = [&](double other) { return b.near(r, other); };
+    // Most beams: the beam before is trusted (so the nearest) and hit the same wall.
+    const int previous = b.previous(i);
+    if (b.trusted(previous) && near(b.range(previous))) continue;
+    const double left = b.range_or_nan(b.nearest_trusted(i, -1));
+    const double right = b.range_or_nan(b.nearest_trusted(i, +1));
+    const bool between = std::min(left, right) - b.absolute_m <= r && r <= std::max(left, right) + b.absolute_m;
+    if (near(left) || near(right) || between) continue;
+    if (near(b.continued(i, -1)) || near(b.continued(i, +1))) continue;
     rejected_.push_back(i);
   }
   return reject_collected();
@@ -157,41 +185,30 @@ bool ScanFilter::reject_collected() {
 }
 
 bool ScanFilter::reject_see_through() {
-  const int n = n_;
-  const double absolute_m = absolute_m_;
-  const double relative = relative_;
-  const auto trusted = [&](int i) { return i >= 0 && state_[static_cast<std::size_t>(i)] == trusted_return; };
-  const auto range = [&](int i) { return static_cast<double>(ranges_[static_cast<std::size_t>(i)]); };
-  const auto near = [&](double a, double b) { return std::abs(a - b) <= absolute_m + relative * std::min(a, b); };
-  // The neighbouring beam, wrapped on a full circle; -1 past either end of a partial one.
-  const auto previous_beam = [&](int i) { return i > 0 ? i - 1 : (wrap_ ? n - 1 : -1); };
-  const auto next_beam = [&](int i) { return i < n - 1 ? i + 1 : (wrap_ ? 0 : -1); };
-  // The nearest trusted return within reach of beam i going `towards`, or NaN.
-  const auto bound = [&](int i, int step) {
-    const int j = nearest_trusted(i, step);
-    return j < 0 ? kNaNRange : range(j);
-  };
+  const Beams b = beams();
+  const int widest = options_.max_see_through;
   rejected_.clear();
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < b.n; ++i) {
     // A cluster starts at a trusted return that does not continue the one before it.
-    if (!trusted(i)) continue;
-    const int before = previous_beam(i);
-    if (trusted(before) && near(range(before), range(i))) continue;
+    if (!b.trusted(i)) continue;
+    const int before = b.previous(i);
+    if (b.trusted(before) && b.near(b.range(before), b.range(i))) continue;
     int last = i;
-    double nearest_m = range(i);
-    for (int size = 1; size < options_.max_see_through; ++size) {
-      const int next = next_beam(last);
-      if (!trusted(next) || !near(range(last), range(next)) || next == i) break;
+    double nearest_m = b.range(i);
+    for (int size = 1; size < widest; ++size) {
+      const int next = b.next(last);
+      if (!b.trusted(next) || !b.near(b.range(last), b.range(next)) || next == i) break;
       last = next;
-      nearest_m = std::min(nearest_m, range(last));
+      nearest_m = std::min(nearest_m, b.range(last));
     }
-    const int after = next_beam(last);
-    if (trusted(after) && near(range(last), range(after))) continue;  // longer than a few beams
-    const double left = bound(i, -1);
-    const double right = bound(last, +1);
+    const int after = b.next(last);
+    if (b.trusted(after) && b.near(b.range(last), b.range(after))) continue;  // longer than a few beams
+    // The nearest trusted returns on both sides, or NaN.
+    const double left = b.range_or_nan(b.nearest_trusted(i, -1));
+    const double right = b.range_or_nan(b.nearest_trusted(last, +1));
     // Further than both sides (NaN compares false: a missing side clears it).
-    if (nearest_m > left + absolute_m + relative * left && nearest_m > right + absolute_m + relative * right) {
-      for (int j = i;; j = next_beam(j)) {
+    if (nearest_m > left + b.absolute_m + b.relative * left && nearest_m > right + b.absolute_m + b.relative * right) {
+      for (int j = i;; j = b.next(j)) {
         rejected_.push_back(j);
         if (j == last) break;
       }
@@ -200,24 +217,23 @@ bool ScanFilter::reject_see_through() {
   return reject_collected();
 }
 
-void ScanFilter::drop_dropouts() {
-  const int n = n_;
+void ScanFilter::drop_dropouts(double max_range_m) {
+  const Beams b = beams();
+  const int n = b.n;
   // A beam that returned something, trusted or not, ends a run.
-  const auto returned = [&](int i) { return state_[static_cast<std::size_t>(i)] != no_return_or_invalid; };
+  const auto returned = [&](int i) { return b.state[i] != no_return_or_invalid; };
   // Beam `first` + offset, offset 0 ... n.
   const auto wrapped = [&](int i) { return i < n ? i : i - n; };
   // A trusted return so far away that the surface it lies on may go on past max range in
   // the next beam (a corridor's walls seen at a grazing angle): the run beside it may be a
   // real view past max range.
-  const double absolute_m = absolute_m_;
-  const double relative = relative_;
   const auto reaches_max_range = [&](int i, int away) {
-    if (state_[static_cast<std::size_t>(i)] != trusted_return) return false;
-    const double r = ranges_[static_cast<std::size_t>(i)];
+    if (!b.trusted(i)) return false;
+    const double r = b.range(i);
     // The next beam's range if the surface recedes by the same ratio as from the return before.
-    const int before = nearest_trusted(i, away);
-    const double next_m = before < 0 ? kNaNRange : r * r / ranges_[static_cast<std::size_t>(before)];
-    return r + absolute_m + relative * r >= max_range_m_ || next_m + absolute_m >= max_range_m_;
+    const int before = b.nearest_trusted(i, away);
+    const double next_m = before < 0 ? kNaNRange : r * r / b.range(before);
+    return r + b.absolute_m + b.relative * r >= max_range_m || next_m + b.absolute_m >= max_range_m;
   };
   // Start at a return so that a run never wraps past the start unseen.
   int first = -1;
@@ -227,7 +243,7 @@ void ScanFilter::drop_dropouts() {
   if (first < 0) return;  // no return at all: every no return stands
   // A partial field of view: the runs before the first return and after the last have a
   // return on one side only; they stand.
-  const int span = wrap_ ? n : n - first;
+  const int span = b.wrap ? n : n - first;
   int run_start = -1;  // offset (from `first`) where the current run began
   for (int offset = 1; offset <= span; ++offset) {
     const int i = wrapped(first + offset);
@@ -235,7 +251,7 @@ void ScanFilter::drop_dropouts() {
       if (run_start < 0) run_start = offset;
       continue;
     }
-    const bool bounded = offset < span || wrap_;
+    const bool bounded = offset < span || b.wrap;
     if (run_start >= 0 && bounded && offset - run_start <= options_.max_dropout_run &&
         !reaches_max_range(wrapped(first + run_start - 1), -1) && !reaches_max_range(i, +1)) {
       for (int o = run_start; o < offset; ++o) {

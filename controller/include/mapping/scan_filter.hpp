@@ -84,26 +84,21 @@ class ScanFilter {
   const ScanFilterCounts &counts() const { return counts_; }
 
  private:
-  // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
-  int nearest_trusted(int i, int step) const;
-  // Beam i's range as the two nearest trusted returns going `step` predict it, a surface
-  // receding by a steady ratio a beam (a wall seen at a grazing angle), m; NaN without them
-  // or when a third return does not follow the same ratio.
-  double continued(int i, int step) const;
+  // The beams and constants the rules read, for one round (scan_filter.cpp).
+  struct Beams;
+  Beams beams() const;
   // One round of each rule; true when it rejected a return.
   bool reject_spikes();
   bool reject_see_through();
   bool reject_collected();  // rejects the beams in rejected_
-  void drop_dropouts();
+  void drop_dropouts(double max_range_m);
 
   ScanFilterOptions options_;
   // Of the scan being filtered, set once per apply(): the rules ask for them per beam.
-  int n_ = 0;                 // beams
-  bool wrap_ = false;         // a full circle: beam 0 follows the last
-  int reach_ = 0;             // neighbour reach, at most (n - 1) / 2 beams
-  double absolute_m_ = 0.0;   // spike tolerance, m
-  double relative_ = 0.0;     // its growth per metre of range between neighbouring beams
-  double max_range_m_ = 0.0;
+  bool wrap_ = false;        // a full circle: beam 0 follows the last
+  int reach_ = 0;            // neighbour reach, at most (n - 1) / 2 beams
+  double absolute_m_ = 0.0;  // spike tolerance, m
+  double relative_ = 0.0;    // its growth per metre of range between neighbouring beams
   std::vector<float> ranges_;
   std::vector<unsigned char> state_;  // per beam: returns still trusted, rejected, or neither
   std::vector<int> rejected_;
