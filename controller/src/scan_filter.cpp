@@ -1,6 +1,8 @@
 #include "mapping/scan_filter.hpp"
 
 #include <algorithm>
+#include <cassert>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -18,7 +20,10 @@ constexpr double kNaNRange = std::numeric_limits<double>::quiet_NaN();
 // support, so a few rounds settle any cluster of spikes a 1 % fault rate makes.
 constexpr int kSpikeRounds = 4;
 
-enum BeamState : unsigned char { no_return_or_invalid, trusted_return, rejected_return };
+// Per beam. A trusted return either continues the trusted return of the beam before it
+// (agrees with it) or starts a stretch: only those can be spikes or see-through clusters,
+// so each round looks at them alone. Trusted states have bit 1 set.
+enum BeamState : unsigned char { no_return_or_invalid = 0, rejected_return = 1, trusted_start = 2, trusted_continuing = 3 };
 
 bool full_circle(const LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
 
@@ -58,7 +63,7 @@ struct ScanFilter::Beams {
   double absolute_m;  // spike tolerance, m
   double relative;    // its growth per metre of range between neighbouring beams
 
-  bool trusted(int i) const { return i >= 0 && state[i] == trusted_return; }
+  bool trusted(int i) const { return i >= 0 && (state[i] & trusted_start) != 0; }
   double range(int i) const { return range_m[i]; }
   // The range of beam i, or NaN for -1.
   double range_or_nan(int i) const { return i < 0 ? kNaNRange : static_cast<double>(range_m[i]); }
@@ -77,7 +82,7 @@ struct ScanFilter::Beams {
         if (!wrap) return -1;
         j = j < 0 ? j + n : j - n;  // reach < n: wrapped once at most
       }
-      if (state[j] == trusted_return) return j;
+      if ((state[j] & trusted_start) != 0) return j;
     }
     return -1;
   }
@@ -107,43 +112,64 @@ ScanFilter::ScanFilter(const ScanFilterOptions &options) : options_((validate(op
 LidarScan ScanFilter::apply(const LidarScan &scan) {
   counts_ = {};
   const std::size_t size = scan.ranges.size();
+  const int n = static_cast<int>(size);
+  // Every rule's constants, once per scan (grazing_step takes a tangent).
+  wrap_ = full_circle(scan);
+  reach_ = std::min(options_.neighbour_reach, (n - 1) / 2);
+  absolute_m_ = options_.spike_tolerance_m();
+  relative_ = size > 0 ? options_.grazing_step(scan.fov_rad / n) : 0.0;
   // No allocation once the filter has seen a scan this size.
   ranges_.resize(size);
   state_.resize(size);
+  starts_.clear();
+  starts_.reserve(size);
+  rejected_.reserve(size);
   float *range_m = ranges_.data();
   unsigned char *state = state_.data();
+  const Beams b = beams();
+  // One pass: each reading's kind, and whether a return continues the one before it.
+  std::size_t returns = 0;
+  bool previous_trusted = false;
+  double previous_m = 0.0;
   for (std::size_t i = 0; i < size; ++i) {
     const float r = scan.ranges[i];
-    switch (scan.kind_of(r)) {
-      case ReadingKind::invalid:
-        range_m[i] = kNoInformation;
-        state[i] = no_return_or_invalid;
-        ++counts_.invalid;
-        break;
-      case ReadingKind::hit:
-        range_m[i] = r;
-        state[i] = trusted_return;
-        break;
-      case ReadingKind::no_return:
-        range_m[i] = r;
-        state[i] = no_return_or_invalid;
-        break;
+    const ReadingKind kind = scan.kind_of(r);
+    if (kind == ReadingKind::hit) {
+      range_m[i] = r;
+      if (previous_trusted && b.near(previous_m, r)) {
+        state[i] = trusted_continuing;
+      } else {
+        state[i] = trusted_start;
+        starts_.push_back(static_cast<int>(i));
+      }
+      previous_trusted = true;
+      previous_m = r;
+      ++returns;
+      continue;
+    }
+    previous_trusted = false;
+    state[i] = no_return_or_invalid;
+    if (kind == ReadingKind::invalid) {
+      range_m[i] = kNoInformation;
+      ++counts_.invalid;
+    } else {
+      range_m[i] = r;
     }
   }
   if (size >= 3) {
-    // Every rule's constants, once per scan (grazing_step takes a tangent).
-    const int n = static_cast<int>(size);
-    wrap_ = full_circle(scan);
-    reach_ = std::min(options_.neighbour_reach, (n - 1) / 2);
-    absolute_m_ = options_.spike_tolerance_m();
-    relative_ = options_.grazing_step(scan.fov_rad / n);
+    // On a full circle beam 0 continues the last beam.
+    if (wrap_ && state[0] == trusted_start && b.trusted(n - 1) && b.near(b.range(n - 1), b.range(0))) {
+      state[0] = trusted_continuing;
+      starts_.erase(starts_.begin());
+    }
     // A rejection takes a neighbour's support away: go again until nothing changes.
     for (int round = 0; round < kSpikeRounds; ++round) {
       const bool spikes = reject_spikes();
       const bool see_through = reject_see_through();
       if (!spikes && !see_through) break;
     }
-    drop_dropouts(scan.max_range_m);
+    // Rejections keep a beam a return: every beam returned, nothing to drop.
+    if (returns < size) drop_dropouts(scan.max_range_m);
   }
   LidarScan out = scan;
   out.ranges = ranges_;
@@ -157,14 +183,13 @@ ScanFilter::Beams ScanFilter::beams() const {
 bool ScanFilter::reject_spikes() {
   const Beams b = beams();
   rejected_.clear();
-  for (int i = 0; i < b.n; ++i) {
-    if (!b.trusted(i)) continue;
+  for (const int i : starts_) {
+    // A beam that continues the one before (the nearest trusted return before it) agrees
+    // with it: not a spike.
+    if (b.state[i] != trusted_start) continue;
     const double r = b.range(i);
     // NaN compares false: a missing neighbour supports nothing.
     const auto near = [&](double other) { return b.near(r, other); };
-    // Most beams: the beam before is trusted (so the nearest) and hit the same wall.
-    const int previous = b.previous(i);
-    if (b.trusted(previous) && near(b.range(previous))) continue;
     const double left = b.range_or_nan(b.nearest_trusted(i, -1));
     const double right = b.range_or_nan(b.nearest_trusted(i, +1));
     const bool between = std::min(left, right) - b.absolute_m <= r && r <= std::max(left, right) + b.absolute_m;
@@ -176,23 +201,31 @@ bool ScanFilter::reject_spikes() {
 }
 
 bool ScanFilter::reject_collected() {
+  if (rejected_.empty()) return false;
+  const Beams b = beams();
   for (const int i : rejected_) {
     state_[static_cast<std::size_t>(i)] = rejected_return;
     ranges_[static_cast<std::size_t>(i)] = kNoInformation;
     ++counts_.spikes;
   }
-  return !rejected_.empty();
+  // The beam after a rejected one never continued it: a spike agrees with neither
+  // neighbour, and a see-through cluster ends where the next beam disagrees.
+  for (const int i : rejected_) {
+    const int after = b.next(i);
+    assert(after < 0 || state_[static_cast<std::size_t>(after)] != trusted_continuing);
+    static_cast<void>(after);
+  }
+  std::erase_if(starts_, [&](int i) { return state_[static_cast<std::size_t>(i)] != trusted_start; });
+  return true;
 }
 
 bool ScanFilter::reject_see_through() {
   const Beams b = beams();
   const int widest = options_.max_see_through;
   rejected_.clear();
-  for (int i = 0; i < b.n; ++i) {
+  for (const int i : starts_) {
     // A cluster starts at a trusted return that does not continue the one before it.
-    if (!b.trusted(i)) continue;
-    const int before = b.previous(i);
-    if (b.trusted(before) && b.near(b.range(before), b.range(i))) continue;
+    if (b.state[i] != trusted_start) continue;
     int last = i;
     double nearest_m = b.range(i);
     for (int size = 1; size < widest; ++size) {
@@ -224,6 +257,17 @@ void ScanFilter::drop_dropouts(double max_range_m) {
   const auto returned = [&](int i) { return b.state[i] != no_return_or_invalid; };
   // Beam `first` + offset, offset 0 ... n.
   const auto wrapped = [&](int i) { return i < n ? i : i - n; };
+  // The first offset from `from` to `to` (beams `first` + offset) without a return, or `to`.
+  const auto next_no_return = [&](int first, int from, int to) {
+    for (int o = from; o < to;) {
+      const int i = wrapped(first + o);
+      const int length = std::min(to - o, n - i);  // up to the end of the beams
+      const void *found = std::memchr(b.state + i, no_return_or_invalid, static_cast<std::size_t>(length));
+      if (found != nullptr) return o + static_cast<int>(static_cast<const unsigned char *>(found) - (b.state + i));
+      o += length;
+    }
+    return to;
+  };
   // A trusted return so far away that the surface it lies on may go on past max range in
   // the next beam (a corridor's walls seen at a grazing angle): the run beside it may be a
   // real view past max range.
@@ -244,24 +288,22 @@ void ScanFilter::drop_dropouts(double max_range_m) {
   // A partial field of view: the runs before the first return and after the last have a
   // return on one side only; they stand.
   const int span = b.wrap ? n : n - first;
-  int run_start = -1;  // offset (from `first`) where the current run began
-  for (int offset = 1; offset <= span; ++offset) {
-    const int i = wrapped(first + offset);
-    if (offset < span && !returned(i)) {
-      if (run_start < 0) run_start = offset;
-      continue;
-    }
-    const bool bounded = offset < span || b.wrap;
-    if (run_start >= 0 && bounded && offset - run_start <= options_.max_dropout_run &&
-        !reaches_max_range(wrapped(first + run_start - 1), -1) && !reaches_max_range(i, +1)) {
-      for (int o = run_start; o < offset; ++o) {
+  // Each run of beams without a return, offsets [run_start, end) from `first`, ended by the
+  // return at offset `end` (the start again on a full circle) or by the last beam.
+  for (int run_start = next_no_return(first, 1, span); run_start < span;) {
+    int end = run_start + 1;
+    while (end < span && !returned(wrapped(first + end))) ++end;
+    const bool bounded = end < span || b.wrap;
+    if (bounded && end - run_start <= options_.max_dropout_run &&
+        !reaches_max_range(wrapped(first + run_start - 1), -1) && !reaches_max_range(wrapped(first + end), +1)) {
+      for (int o = run_start; o < end; ++o) {
         float &r = ranges_[static_cast<std::size_t>(wrapped(first + o))];
         if (std::isnan(r)) continue;  // invalid: counted already
         r = kNoInformation;
         ++counts_.dropouts;
       }
     }
-    run_start = -1;
+    run_start = end + 1 < span ? next_no_return(first, end + 1, span) : span;
   }
 }
 

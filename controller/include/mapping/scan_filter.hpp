@@ -101,6 +101,7 @@ class ScanFilter {
   double relative_ = 0.0;    // its growth per metre of range between neighbouring beams
   std::vector<float> ranges_;
   std::vector<unsigned char> state_;  // per beam: returns still trusted, rejected, or neither
+  std::vector<int> starts_;  // the trusted returns that continue no return before them
   std::vector<int> rejected_;
   ScanFilterCounts counts_;
 };
