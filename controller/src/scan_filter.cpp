@@ -57,8 +57,8 @@ void validate(const ScanFilterOptions &options) {
 struct ScanFilter::Beams {
   const float *range_m;
   const unsigned char *state;
-  int n;          // at least 3
-  int reach;      // neighbour reach, 1 ... (n - 1) / 2 beams
+  int n;          // beams (at least 3 for the rules)
+  int reach;      // neighbour reach, 1 ... (n - 1) / 2 beams for the rules
   bool wrap;      // a full circle: beam 0 follows beam n - 1
   double absolute_m;  // spike tolerance, m
   double relative;    // its growth per metre of range between neighbouring beams
@@ -69,8 +69,7 @@ struct ScanFilter::Beams {
   double range_or_nan(int i) const { return i < 0 ? kNaNRange : static_cast<double>(range_m[i]); }
   // Whether two returns agree: within the tolerance, which grows with range.
   bool near(double a, double b) const { return std::abs(a - b) <= absolute_m + relative * std::min(a, b); }
-  // The neighbouring beam, wrapped on a full circle; -1 past either end of a partial one.
-  int previous(int i) const { return i > 0 ? i - 1 : (wrap ? n - 1 : -1); }
+  // The next beam, wrapped on a full circle; -1 past the end of a partial one.
   int next(int i) const { return i < n - 1 ? i + 1 : (wrap ? 0 : -1); }
 
   // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.

@@ -100,8 +100,10 @@ class ScanFilter {
   double absolute_m_ = 0.0;  // spike tolerance, m
   double relative_ = 0.0;    // its growth per metre of range between neighbouring beams
   std::vector<float> ranges_;
-  std::vector<unsigned char> state_;  // per beam: returns still trusted, rejected, or neither
-  std::vector<int> starts_;  // the trusted returns that continue no return before them
+  // Per beam: a trusted return that continues the one before it (agrees with it) or starts
+  // a stretch, a rejected return, or neither (no return, invalid).
+  std::vector<unsigned char> state_;
+  std::vector<int> starts_;  // the trusted returns that start a stretch: all a round looks at
   std::vector<int> rejected_;
   ScanFilterCounts counts_;
 };
