@@ -78,7 +78,8 @@ class ScanFilter {
 
   // The scan with its invalid, spiked and dropped readings replaced by NaN (the table
   // above); same pose, field of view and limits. Its ranges live in this filter: valid
-  // until the next call.
+  // until the next call. One pass over the beams, then each round looks only at the returns
+  // that do not agree with the beam before them; no allocation after the first scan.
   LidarScan apply(const LidarScan &scan);
 
   const ScanFilterCounts &counts() const { return counts_; }
