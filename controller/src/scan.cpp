@@ -25,8 +25,6 @@ double LidarScan::beam_angle_rad(int i) const {
   return fov_rad / 2.0 - i * fov_rad / beam_count();
 }
 
-ReadingKind LidarScan::kind(int i) const { return kind_of(ranges[static_cast<std::size_t>(i)]); }
-
 std::optional<float> LidarScan::median_range(int centre, double half_window_rad) const {
   const int n = beam_count();
   assert(centre >= 0 && centre < n);

@@ -35,7 +35,7 @@ struct LidarScan {
   // Angle of beam i in the world frame (yaw + beam angle), rad, not wrapped.
   double beam_world_angle_rad(int i) const { return yaw_rad + beam_angle_rad(i); }
 
-  ReadingKind kind(int i) const;
+  ReadingKind kind(int i) const { return kind_of(ranges[static_cast<std::size_t>(i)]); }
   // The kind of a reading r, m (the table above). Inline: the filter and the models ask
   // for every beam.
   ReadingKind kind_of(float r) const {
