@@ -164,9 +164,6 @@ struct PlaceTable {
   static constexpr std::uint16_t kFree = 1 << 8;
   static constexpr std::uint16_t kFreeAnyway = 1 << 9;
   std::uint16_t entry[kPlaces * 4] = {};
-  // entry's next place times 4 (where its row starts), alone: the walk's one loop-carried
-  // lookup, kept to a load and an add.
-  std::uint16_t next_row[kPlaces * 4] = {};
 
   static constexpr unsigned place(int to_side_x, int to_side_y, bool entered) {
     return static_cast<unsigned>((to_side_x * K + to_side_y) * 2 + (entered ? 1 : 0));
@@ -190,7 +187,6 @@ struct PlaceTable {
             const unsigned next = place(next_ux, next_uy, across_x || across_y);
             entry[place(ux, uy, entered) * 4 + moves] = static_cast<std::uint16_t>(
                 next | (freed ? kFree : 0u) | (anyway ? kFreeAnyway : 0u) | (kind << 12));
-            next_row[place(ux, uy, entered) * 4 + moves] = static_cast<std::uint16_t>(next * 4);
           }
         }
       }
@@ -202,12 +198,22 @@ template <int K>
 inline constexpr PlaceTable<K> kPlaceTable{};
 
 // PlaceTable with the flat-index step of each move folded in, one table per quadrant of beam
-// directions (the steps depend on the grid's width): entry bits 0-9 as in PlaceTable, bits
-// 10-31 the signed flat-index step. Built again only when the grid's width changes.
+// directions (the steps depend on the grid's width). Built again only when the grid's width
+// changes. An entry, everything a step needs from one load:
+//   bits 0-9    where the next place's row starts (4 * the next place)
+//   bit 10      kFree, bit 11 kFreeAnyway (PlaceTable's flags)
+//   bits 12-31  the signed flat-index step
 template <int K>
 class MoveTable {
  public:
-  static constexpr int kFlatShift = 10;
+  static constexpr int kFlatShift = 12;
+  static constexpr std::uint32_t kRowMask = 0x3FF;
+  static constexpr std::uint32_t kFree = 1u << 10;  // FlatWalk::mark_left spreads it with << 21 >> 31
+  static constexpr std::uint32_t kFreeAnyway = 1u << 11;
+  static_assert(4 * PlaceTable<K>::kPlaces <= kRowMask + 1);
+  // The longest step, a row of cells and a cell's rows, fits the 20 signed bits.
+  static_assert(std::int64_t{kMaxCellsPerSide} * kMaxSubcells * kMaxSubcells + kMaxSubcells * kMaxSubcells <
+                (std::int64_t{1} << (31 - kFlatShift)));
 
   void prepare(int width_cells) {
     if (width_cells == width_cells_) return;
@@ -225,8 +231,11 @@ class MoveTable {
         const std::uint16_t e = kPlaceTable<K>.entry[n];
         const unsigned kind = e >> 12u;
         const std::int32_t flat_step = dx[kind / 3] + dy[kind % 3];
+        const std::uint32_t row = 4u * (e & 0xFFu);
+        const std::uint32_t flags = ((e & PlaceTable<K>::kFree) != 0 ? kFree : 0u) |
+                                    ((e & PlaceTable<K>::kFreeAnyway) != 0 ? kFreeAnyway : 0u);
         entries_[static_cast<std::size_t>(quadrant)][n] =
-            static_cast<std::int32_t>(static_cast<std::uint32_t>(flat_step) << kFlatShift) | (e & 0x3FF);
+            static_cast<std::int32_t>((static_cast<std::uint32_t>(flat_step) << kFlatShift) | flags | row);
       }
     }
   }
@@ -259,6 +268,12 @@ struct WalkOrigin {
 };
 
 template <int K>
+class FlatWalk;
+template <int K>
+std::uint32_t *free_pair(FlatWalk<K> &a, double length_a_m, FlatWalk<K> &b, double length_b_m,
+                         const ScanUpdate::UniqueMarks &marks, std::uint32_t *out);
+
+template <int K>
 class FlatWalk {
  public:
   FlatWalk(const WalkOrigin<K> &o, const MoveTable<K> &moves, const TraversalStart &t)
@@ -278,19 +293,49 @@ class FlatWalk {
   bool outside() const { return axes_.outside(); }
 
   // Moves to the next sub-cell (which may be outside the grid: then flat() means nothing).
-  // Returns PlaceTable's flags for the move: whether the sub-cell left is freed (kFree), or
+  // Returns MoveTable's entry for the move: whether the sub-cell left is freed (kFree), or
   // would be freed whichever way it was left (kFreeAnyway).
-  std::uint32_t step() {
-    const unsigned n = row_ + static_cast<unsigned>(axes_.step());
-    const std::int32_t e = moves_[n];
-    row_ = kPlaceTable<K>.next_row[n];
-    flat_ += static_cast<std::uint32_t>(e >> MoveTable<K>::kFlatShift);  // wraps outside the grid
-    return static_cast<std::uint32_t>(e);
-  }
+  std::uint32_t step() { return step(axes_, moves_, flat_, row_); }
   // The current sub-cell is interior or was entered across a cell side.
   bool freed_anyway() const { return (kPlaceTable<K>.entry[row_] & PlaceTable<K>::kFreeAnyway) != 0; }
 
+  // Steps while the beam leaves the current sub-cell before length_m, listing each sub-cell
+  // it leaves that the step frees (MoveTable::kFree) through `marks` from `out` on; returns
+  // where the next mark goes. Stops early when a step leaves the grid: then left_grid() is
+  // true and left_here()/left_move() tell the sub-cell left and the step's entry.
+  // kMayLeave false: the caller knows the beam ends before it could reach the grid's edge.
+  // The loop keeps the walk in local variables, one register each, and is not inlined, so
+  // that nothing of the caller competes for registers: every spill would add a store and a
+  // load to a loop of some thirty instructions.
+  template <bool kMayLeave>
+  [[gnu::noinline]] std::uint32_t *free_until(double length_m, const ScanUpdate::UniqueMarks &marks,
+                                              std::uint32_t *out);
+  // free_until<false> for two beams side by side, a step of each in turn, until either
+  // ends. One walk's steps wait on each other (a comparison and a table load on the last
+  // step's result); a second, independent walk fills that wait. Marks come in another
+  // order than beam by beam, which changes nothing: a sub-cell is listed once a scan.
+  friend std::uint32_t *free_pair<K>(FlatWalk &a, double length_a_m, FlatWalk &b, double length_b_m,
+                                     const ScanUpdate::UniqueMarks &marks, std::uint32_t *out);
+  bool left_grid() const { return left_grid_; }
+  std::uint32_t left_here() const { return left_here_; }
+  std::uint32_t left_move() const { return left_move_; }
+
  private:
+  // step() on a walk held in locals.
+  static std::uint32_t step(AxisPair &axes, const std::int32_t *moves, std::uint32_t &flat, unsigned &row) {
+    const auto e = static_cast<std::uint32_t>(moves[row + static_cast<unsigned>(axes.step())]);
+    row = e & MoveTable<K>::kRowMask;
+    flat += static_cast<std::uint32_t>(static_cast<std::int32_t>(e) >> MoveTable<K>::kFlatShift);  // wraps outside the grid
+    return e;
+  }
+  // A step inside the grid that went on from sub-cell `here` with entry e: lists `here` when
+  // the step frees it.
+  static std::uint32_t *mark_left(const ScanUpdate::UniqueMarks &marks, std::uint32_t *out, std::uint32_t here,
+                                  std::uint32_t e) {
+    // kFree (bit 10) spread to a mask: all ones when set.
+    return marks.mark_free_if(out, here, static_cast<std::uint32_t>(static_cast<std::int32_t>(e << 21) >> 31));
+  }
+
   static std::int64_t to_edge(int step, int ahead, int behind) {
     constexpr std::int64_t never = std::int64_t{1} << 40;  // an axis the beam does not move along
     return step > 0 ? ahead : (step < 0 ? behind : never);
@@ -301,7 +346,63 @@ class FlatWalk {
   std::uint32_t flat_;
   unsigned row_;  // 4 * the place in the cell (PlaceTable)
   bool stuck_;
+  bool left_grid_ = false;
+  std::uint32_t left_here_ = 0, left_move_ = 0;
 };
+
+template <int K>
+[[gnu::noinline]] std::uint32_t *free_pair(FlatWalk<K> &a, double length_a_m, FlatWalk<K> &b, double length_b_m,
+                                           const ScanUpdate::UniqueMarks &marks, std::uint32_t *out) {
+  if (a.stuck_ || b.stuck_) return out;
+  AxisPair axes_a = a.axes_, axes_b = b.axes_;
+  const std::int32_t *const moves_a = a.moves_;
+  const std::int32_t *const moves_b = b.moves_;
+  std::uint32_t flat_a = a.flat_, flat_b = b.flat_;
+  unsigned row_a = a.row_, row_b = b.row_;
+  const ScanUpdate::UniqueMarks m = marks;
+  while (axes_a.exits_before(length_a_m) && axes_b.exits_before(length_b_m)) {
+    const std::uint32_t here_a = flat_a;
+    out = FlatWalk<K>::mark_left(m, out, here_a, FlatWalk<K>::step(axes_a, moves_a, flat_a, row_a));
+    assert(!axes_a.outside());
+    const std::uint32_t here_b = flat_b;
+    out = FlatWalk<K>::mark_left(m, out, here_b, FlatWalk<K>::step(axes_b, moves_b, flat_b, row_b));
+    assert(!axes_b.outside());
+  }
+  a.axes_ = axes_a;
+  a.flat_ = flat_a;
+  a.row_ = row_a;
+  b.axes_ = axes_b;
+  b.flat_ = flat_b;
+  b.row_ = row_b;
+  return out;
+}
+
+template <int K>
+template <bool kMayLeave>
+std::uint32_t *FlatWalk<K>::free_until(double length_m, const ScanUpdate::UniqueMarks &marks, std::uint32_t *out) {
+  if (stuck_) return out;
+  AxisPair axes = axes_;
+  const std::int32_t *const moves = moves_;
+  std::uint32_t flat = flat_;
+  unsigned row = row_;
+  const ScanUpdate::UniqueMarks m = marks;
+  while (axes.exits_before(length_m)) {
+    const std::uint32_t here = flat;
+    const std::uint32_t e = step(axes, moves, flat, row);
+    if (kMayLeave && axes.outside()) {
+      left_grid_ = true;
+      left_here_ = here;
+      left_move_ = e;
+      break;
+    }
+    assert(!axes.outside());
+    out = mark_left(m, out, here, e);
+  }
+  axes_ = axes;
+  flat_ = flat;
+  row_ = row;
+  return out;
+}
 
 // cos and sin of every beam's angle relative to the heading, for one beam count and field
 // of view (computed again only when those change, so not per scan).
@@ -340,21 +441,18 @@ class BeamTable {
 // the step out of it is known: interior, entered across a side, or left across one. Leaving
 // the grid crosses its outer side only for a beam with no return (a return beyond the grid's
 // edge is not a view of that side).
+//
+// may_leave false: the caller knows the beam ends before it could reach the grid's edge.
 template <int K>
-bool free_passed(FlatWalk<K> &walk, double length_m, bool no_return, const ScanUpdate::UniqueMarks &marks,
-                 std::uint32_t *&out) {
-  std::uint32_t *next = out;
-  while (walk.exits_before(length_m)) {
-    const std::uint32_t here = walk.flat();
-    const std::uint32_t move = walk.step();
-    if (walk.outside()) {
-      out = marks.mark_free(next, here, (move & PlaceTable<K>::kFreeAnyway) != 0 || no_return);
-      return false;
-    }
-    next = marks.mark_free(next, here, (move & PlaceTable<K>::kFree) != 0);
+bool free_passed(FlatWalk<K> &walk, double length_m, bool no_return, bool may_leave,
+                 const ScanUpdate::UniqueMarks &marks, std::uint32_t *&out) {
+  out = may_leave ? walk.template free_until<true>(length_m, marks, out)
+                  : walk.template free_until<false>(length_m, marks, out);
+  if (walk.left_grid()) {
+    out = marks.mark_free(out, walk.left_here(), (walk.left_move() & MoveTable<K>::kFreeAnyway) != 0 || no_return);
+    return false;
   }
-  if (no_return) next = marks.mark_free(next, walk.flat(), walk.freed_anyway());
-  out = next;
+  if (no_return) out = marks.mark_free(out, walk.flat(), walk.freed_anyway());
   return true;
 }
 
@@ -397,6 +495,26 @@ void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const L
   // scan instead of two per beam).
   const double cy = std::cos(scan.yaw_rad);
   const double sy = std::sin(scan.yaw_rad);
+  // A beam shorter than this cannot reach the grid's edge (the nearest edge, less two
+  // sub-cells for rounding), so its walk needs no check for leaving the grid.
+  const double inside_m = g.subcell_size_m() * (std::min({origin->px, origin->py, g.width_subcells() - origin->px,
+                                                          g.height_subcells() - origin->py}) - 2.0);
+  struct Lane {
+    FlatWalk<K> walk;
+    double length_m;
+    bool no_return;
+  };
+  // A walk that stopped inside the grid: its end.
+  const auto mark_end = [&](Lane &lane) {
+    if (lane.no_return) {
+      free_out = marks.mark_free(free_out, lane.walk.flat(), lane.walk.freed_anyway());
+    } else {
+      occupied_out = occupy_end(lane.walk, options.hit_depth, marks, occupied_out);
+    }
+  };
+  // A beam that cannot reach the grid's edge waits here for the next such beam, to walk
+  // beside it (free_pair); a beam that may reach the edge walks alone.
+  std::optional<Lane> waiting;
   for (int i = 0; i < scan.beam_count(); ++i) {
     const ReadingKind kind = scan.kind(i);
     if (kind == ReadingKind::invalid) continue;
@@ -404,10 +522,29 @@ void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const L
     if (no_return && (options.ignore_no_return || scan.lone_no_return(i))) continue;
     const double dir_x = cy * table.cos(i) - sy * table.sin(i);
     const double dir_y = sy * table.cos(i) + cy * table.sin(i);
-    FlatWalk<K> walk(start, moves, start_traversal(g, *origin, dir_x, dir_y));
-    const double length_m = no_return ? scan.max_range_m : scan.ranges[static_cast<std::size_t>(i)];
-    const bool ended = free_passed(walk, length_m, no_return, marks, free_out);
-    if (ended && !no_return) occupied_out = occupy_end(walk, options.hit_depth, marks, occupied_out);
+    Lane lane{FlatWalk<K>(start, moves, start_traversal(g, *origin, dir_x, dir_y)),
+              no_return ? scan.max_range_m : scan.ranges[static_cast<std::size_t>(i)], no_return};
+    if (!(lane.length_m < inside_m)) {
+      if (free_passed(lane.walk, lane.length_m, no_return, true, marks, free_out)) mark_end(lane);
+      continue;
+    }
+    if (!waiting) {
+      waiting.emplace(lane);
+      continue;
+    }
+    free_out = free_pair<K>(waiting->walk, waiting->length_m, lane.walk, lane.length_m, marks, free_out);
+    // Whichever ended is marked; one still under way waits for the next beam.
+    const bool waiting_ended = !waiting->walk.exits_before(waiting->length_m);
+    const bool lane_ended = !lane.walk.exits_before(lane.length_m);
+    if (waiting_ended) mark_end(*waiting);
+    if (lane_ended) mark_end(lane);
+    if (waiting_ended) {
+      waiting.reset();
+      if (!lane_ended) waiting.emplace(lane);
+    }
+  }
+  if (waiting && free_passed(waiting->walk, waiting->length_m, waiting->no_return, false, marks, free_out)) {
+    mark_end(*waiting);
   }
   marks.commit_free(free_out);
   marks.commit_occupied(occupied_out);

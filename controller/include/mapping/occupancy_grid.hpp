@@ -133,11 +133,19 @@ class ScanUpdate {
     // When `wanted`, lists sub-cell i at *out unless this scan already listed it; returns
     // the next slot. Branch-free: the slot is written either way, kept only when i is new.
     std::uint32_t *mark_free(std::uint32_t *out, std::uint32_t i, bool wanted = true) const {
+      return mark_free_if(out, i, 0u - static_cast<std::uint32_t>(wanted));
+    }
+    // mark_free with `wanted` as a mask: all ones to mark, zero not to.
+    std::uint32_t *mark_free_if(std::uint32_t *out, std::uint32_t i, std::uint32_t wanted_mask) const {
       const std::uint32_t seen = tags_[i];
-      // Not listed this scan, free or occupied; arithmetic, as a compiler turns ?: into jumps.
-      const std::uint32_t fresh = static_cast<std::uint32_t>(wanted) & static_cast<std::uint32_t>(seen < free_tag_);
+      // Tags only grow within a scan: an older tag becomes free_tag_, while free_tag_ and
+      // occupied_tag_ (free_tag_ + 1) stay; not wanted, the tag stays whatever it is. So the
+      // new tag is max(seen, free_tag_ & wanted_mask), taken with arithmetic: a compiler
+      // turns std::max into a jump, and whether a sub-cell is new is a coin toss.
+      const std::uint32_t want = free_tag_ & wanted_mask;
+      const std::uint32_t fresh = seen < want ? 1u : 0u;
       *out = i;
-      tags_[i] = seen + ((free_tag_ - seen) & (0u - fresh));
+      tags_[i] = seen + ((want - seen) & (0u - fresh));
       return out + fresh;
     }
     // Occupied wins: a sub-cell already listed free is listed again here, and apply() skips
