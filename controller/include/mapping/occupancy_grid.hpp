@@ -143,10 +143,10 @@ class ScanUpdate {
       // new tag is max(seen, free_tag_ & wanted_mask), taken with arithmetic: a compiler
       // turns std::max into a jump, and whether a sub-cell is new is a coin toss.
       const std::uint32_t want = free_tag_ & wanted_mask;
-      const std::uint32_t fresh = seen < want ? 1u : 0u;
+      const bool fresh = seen < want;
       *out = i;
-      tags_[i] = seen + ((want - seen) & (0u - fresh));
-      return out + fresh;
+      tags_[i] = fresh ? want : seen;
+      return out + (fresh ? 1 : 0);
     }
     // Occupied wins: a sub-cell already listed free is listed again here, and apply() skips
     // its free listing.
