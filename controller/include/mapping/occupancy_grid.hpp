@@ -140,8 +140,9 @@ class ScanUpdate {
       const std::uint32_t seen = tags_[i];
       // Tags only grow within a scan: an older tag becomes free_tag_, while free_tag_ and
       // occupied_tag_ (free_tag_ + 1) stay; not wanted, the tag stays whatever it is. So the
-      // new tag is max(seen, free_tag_ & wanted_mask), taken with arithmetic: a compiler
-      // turns std::max into a jump, and whether a sub-cell is new is a coin toss.
+      // new tag is max(seen, free_tag_ & wanted_mask), written as a select of two values the
+      // compiler makes a conditional move (std::max became a jump, and whether a sub-cell is
+      // new is a coin toss a branch predictor loses).
       const std::uint32_t want = free_tag_ & wanted_mask;
       const bool fresh = seen < want;
       *out = i;
