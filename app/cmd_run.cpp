@@ -323,4 +323,15 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
   });
 }
 
+RunOptions parse_run_options(int argc, const char *const *argv) {
+  CLI::App cli{"maze_mapper", "maze_mapper"};
+  cli.require_subcommand(0, 1);
+  RunOptions options;
+  CommandContext context;
+  context.run_parse_only = &options;
+  add_run_command(cli, context);
+  cli.parse(argc, argv);
+  return options;
+}
+
 }  // namespace app

@@ -36,6 +36,10 @@ void add_convert_command(CLI::App &cli, CommandContext &context);
 void add_generate_command(CLI::App &cli, CommandContext &context);
 // `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp).
 void add_run_command(CLI::App &cli, CommandContext &context);
+// The options `maze_mapper run ...` would run with (argv as main gets it: the program, then
+// `run` and its arguments), parsed and checked without running (tests, fuzzing). Throws
+// CLI::Error or common::InputError as the command line would.
+RunOptions parse_run_options(int argc, const char *const *argv);
 // `batch WORLD... [--jobs N] [--csv FILE] [run options]` (cmd_batch.cpp, batch.hpp).
 void add_batch_command(CLI::App &cli, CommandContext &context);
 // The default world: worlds/lab4x4.txt from the working directory, else the source tree's.

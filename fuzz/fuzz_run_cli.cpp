@@ -39,14 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   std::vector<const char *> argv;
   for (const std::string &word : words) argv.push_back(word.c_str());
 
-  CLI::App cli{"maze_mapper", "maze_mapper"};
-  cli.require_subcommand(0, 1);
   app::RunOptions options;
-  app::CommandContext context;
-  context.run_parse_only = &options;
-  app::add_run_command(cli, context);
   try {
-    cli.parse(static_cast<int>(argv.size()), argv.data());
+    options = app::parse_run_options(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::Error &) {
     return 0;
   } catch (const common::InputError &e) {

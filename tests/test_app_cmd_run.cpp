@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "app/commands.hpp"
 #include "app/run.hpp"
 #include "common/error.hpp"
@@ -21,14 +19,7 @@ app::RunOptions parse_run(std::vector<std::string> args) {
   args.insert(args.begin(), {"maze_mapper", "run"});
   std::vector<const char *> argv;
   for (const std::string &a : args) argv.push_back(a.c_str());
-  CLI::App cli{"maze_mapper", "maze_mapper"};
-  cli.require_subcommand(0, 1);
-  app::RunOptions options;
-  app::CommandContext context;
-  context.run_parse_only = &options;
-  app::add_run_command(cli, context);
-  cli.parse(static_cast<int>(argv.size()), argv.data());
-  return options;
+  return app::parse_run_options(static_cast<int>(argv.size()), argv.data());
 }
 
 }  // namespace

@@ -21,23 +21,13 @@
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/scan_filter.hpp"
 #include "mapping/sensor_model.hpp"
+#include "full_circle_scan.hpp"
 
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-mapping::LidarScan full_circle(const std::vector<float> &ranges) {
-  mapping::LidarScan s;
-  s.origin = {0.5, 0.5};
-  s.yaw_rad = std::numbers::pi / 2.0;
-  s.fov_rad = 2.0 * std::numbers::pi;
-  s.min_range_m = 0.05;
-  s.max_range_m = 12.0;
-  s.ranges = ranges;
-  return s;
-}
 
 std::vector<float> filtered(const std::vector<float> &ranges,
                             const mapping::ScanFilterOptions &options = {}) {

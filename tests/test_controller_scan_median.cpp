@@ -14,21 +14,13 @@
 
 #include "common/random.hpp"
 #include "mapping/scan.hpp"
+#include "full_circle_scan.hpp"
 
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-mapping::LidarScan full_circle(const std::vector<float> &ranges) {
-  mapping::LidarScan s;
-  s.fov_rad = 2.0 * std::numbers::pi;
-  s.min_range_m = 0.05;
-  s.max_range_m = 12.0;
-  s.ranges = ranges;
-  return s;
-}
 
 // median_range as first written (a vector per call): the reference the allocation-free one
 // must match bit for bit.
