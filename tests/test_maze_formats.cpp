@@ -2,6 +2,8 @@
 // canonical text map; the Webots writer; safe writes.
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -109,6 +111,29 @@ TEST_CASE("formats: the text map reads '+' posts, S and G anywhere in a cell, an
   CHECK(!m.has_wall({0, 0}, maze::Side::north));
   CHECK(m.has_wall({1, 0}, maze::Side::north));
   CHECK(maze::write_text_map(m) == "o---o---o\n| G     |\no   o---o\n| S |   |\no---o---o\n");
+}
+
+// Regression (the CI fuzz run, 2026-11-22): 0.02 m cells 200 to a side. Written walls end at
+// x * 0.02 computed in doubles, so the shortest wall read back measured 0.019999999999999574
+// m, not the cell size: the reread maze differed. The writer now states cellSize.
+TEST_CASE("formats: XML written and read back is the same maze, small cells far from the origin") {
+  std::string xml = "<world>";
+  const auto wall = [&xml](double x1, double y1, double x2, double y2) {
+    xml += fmt::format("<wall x1='{}' y1='{}' x2='{}' y2='{}' width='0.004'/>", x1, y1, x2, y2);
+  };
+  wall(0, 0, 4, 0);
+  wall(0, 0.02, 4, 0.02);
+  wall(0, 0, 0, 0.02);
+  wall(4, 0, 4, 0.02);
+  wall(2, 0, 2, 0.02);  // one cell long: the cell size, 0.02 m
+  xml += "</world>";
+  const maze::Maze m = maze::read_xml(xml, "f");
+  REQUIRE(m.width() == 200);
+  const std::string written = maze::write_xml(m);
+  const maze::Maze again = maze::read_xml(written, "g");
+  CHECK(again.cell_size_m() == m.cell_size_m());
+  CHECK(again == m);
+  CHECK(maze::write_xml(again) == written);
 }
 
 TEST_CASE("formats: without an S the start is the south-west cell facing north") {

@@ -71,6 +71,9 @@ TEST_CASE("hostile: XML with unknown elements, NaN, infinities, deep nesting") {
       "<wall x1='0' y1='0' x2='1' y2='0'/><wall x1='0' y1='1' x2='1' y2='1'/>"
       "<wall x1='0' y1='0' x2='0' y2='1'/><wall x1='1' y1='0' x2='1' y2='1'/>";
   CHECK(read("<world>" + walls + "<robot><arm/></robot><x y='nan'/></world>") == "(no error)");
+  CHECK(read("<world cellSize='0.5'>" + walls + "</world>") == "(no error)");
+  CHECK(read("<world cellSize='0'>" + walls + "</world>") == "h:1:8: error: cellSize must be positive, got 0");
+  CHECK(read("<world cellSize='nan'>" + walls + "</world>") == "h:1:8: error: cellSize is not a finite number of metres: 'nan'");
   CHECK(read("<world>" + walls + "<wall x1='inf' y1='0' x2='1' y2='0'/></world>") ==
         "h:1:154: error: x1 is not a finite number of metres: 'inf'");
   CHECK(read("<world>" + walls + "<goal x='NaN' y='0.5'/></world>") ==

@@ -164,7 +164,15 @@ Grid infer_grid(const std::vector<Segment> &segments, const Source &src, const t
     max_x = std::max({max_x, s.x1, s.x2});
     max_y = std::max({max_y, s.y1, s.y2});
   }
-  Grid g{min_x, min_y, infer_cell_size(segments), 0, 0};
+  // The cell size the file states (cellSize, as write_xml writes it), else the shortest
+  // wall's length. Stated, a written maze reads back with its very cell size: lengths
+  // measured between written coordinates are off by a rounding error.
+  double cell = infer_cell_size(segments);
+  if (const std::optional<double> stated = number(world, "cellSize", src, false)) {
+    if (!(*stated > 0.0)) throw src.error(world, "cellSize", fmt::format("cellSize must be positive, got {}", *stated));
+    cell = *stated;
+  }
+  Grid g{min_x, min_y, cell, 0, 0};
   const double w = std::round((max_x - min_x) / g.cell);
   const double h = std::round((max_y - min_y) / g.cell);
   if (w < 1 || h < 1) throw src.error(world, nullptr, "the walls enclose no area: they all lie on one line");
@@ -306,8 +314,8 @@ std::string write_xml(const Maze &maze) {
   const double oy = maze.origin_y_m();
   std::string text = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<!-- maze_mapper world: {}x{} cells of {} m, walls {} m thick -->\n<world>\n",
-      maze.width(), maze.height(), s, maze.wall_thickness_m());
+      "<!-- maze_mapper world: {}x{} cells of {} m, walls {} m thick -->\n<world cellSize=\"{}\">\n",
+      maze.width(), maze.height(), s, maze.wall_thickness_m(), s);
   auto wall = [&](double x1, double y1, double x2, double y2) {
     fmt::format_to(std::back_inserter(text), "  <wall x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" width=\"{}\"/>\n", x1, y1,
                    x2, y2, maze.wall_thickness_m());
