@@ -229,6 +229,21 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
   return p;
 }
 
+// The truth's verdict on a run that believed it was done: dfs and frontier mean to visit
+// every reachable cell (wall followers and floodfill may leave cells by design), so one that
+// ended "done" with reachable cells never visited got the maze wrong and must not say so.
+void judge_ending(const RunOptions &options, RunSummary &summary) {
+  const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
+                              options.strategy == explore::StrategyKind::frontier;
+  const MapScore &score = summary.score;
+  if (!means_to_cover || score.visited_reachable_cells >= score.reachable_cells) return;
+  if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
+  const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
+  const std::string cells = fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells);
+  summary.message = summary.message.empty() ? cells : fmt::format("{}; {}", cells, summary.message);
+  summary.reason = robot::EndReason::incomplete;
+}
+
 }  // namespace
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
@@ -331,6 +346,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
     return truth.is_goal(maze::Cell{c.x, c.y});
   });
   summary.score = score(truth, result, style.initial_log_odds, style.threshold);
+  judge_ending(options, summary);
   summary.sim_time_s = result.sim_time_s;
   summary.explore_time_s = result.explore_time_s;
   summary.speed_run_time_s = result.speed_run_time_s;
@@ -411,6 +427,7 @@ int exit_status(const RunSummary &summary) {
     case robot::EndReason::done:
     case robot::EndReason::max_steps: return 0;
     case robot::EndReason::no_progress:
+    case robot::EndReason::incomplete:
     case robot::EndReason::simulation_ended: return 1;
     case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
   }

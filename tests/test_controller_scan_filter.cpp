@@ -36,6 +36,8 @@ std::vector<float> filtered(const std::vector<float> &ranges,
   return {out.ranges.begin(), out.ranges.end()};
 }
 
+std::vector<float> values(const mapping::LidarScan &scan) { return {scan.ranges.begin(), scan.ranges.end()}; }
+
 // Readings as text, one per beam: the value to two decimals, "inf", or "-" (no information).
 std::string text(const std::vector<float> &r, int from, int to) {
   std::string out;
@@ -77,7 +79,8 @@ class ReferenceFilter {
  public:
   explicit ReferenceFilter(const mapping::ScanFilterOptions &options) : options_(options) {}
 
-  std::vector<float> apply(const mapping::LidarScan &scan) {
+  // before: a scan from the same pose taken just before, or null.
+  std::vector<float> apply(const mapping::LidarScan &scan, const mapping::LidarScan *before = nullptr) {
     counts_ = {};
     ranges_.assign(scan.ranges.begin(), scan.ranges.end());
     state_.assign(ranges_.size(), none);
@@ -97,7 +100,7 @@ class ReferenceFilter {
         const bool see_through = reject_see_through(scan);
         if (!spikes && !see_through) break;
       }
-      drop_dropouts(scan);
+      drop_dropouts(scan, before);
     }
     return ranges_;
   }
@@ -208,18 +211,17 @@ class ReferenceFilter {
     return reject_collected();
   }
 
-  void drop_dropouts(const mapping::LidarScan &scan) {
+  void drop_dropouts(const mapping::LidarScan &scan, const mapping::LidarScan *before) {
     const int n = static_cast<int>(ranges_.size());
     const bool wrap = full_circle(scan);
     const auto returned = [&](int i) { return state_[static_cast<std::size_t>(i)] != none; };
-    const double absolute_m = options_.spike_tolerance_m();
-    const double relative = options_.grazing_step(scan.fov_rad / n);
-    const auto reaches_max_range = [&](int i, int away) {
-      if (state_[static_cast<std::size_t>(i)] != trusted) return false;
-      const double r = ranges_[static_cast<std::size_t>(i)];
-      const int before = nearest_trusted(scan, i, away);
-      const double next_m = before < 0 ? kNaNRange : r * r / ranges_[static_cast<std::size_t>(before)];
-      return r + absolute_m + relative * r >= scan.max_range_m || next_m + absolute_m >= scan.max_range_m;
+    // Beams first + [from, to) read no return in the scan before too, and are enough of them.
+    const auto seen_before = [&](int first, int from, int to) {
+      if (before == nullptr || to - from < options_.min_repeated_view) return false;
+      for (int o = from; o < to; ++o) {
+        if (before->kind((first + o) % n) != mapping::ReadingKind::no_return) return false;
+      }
+      return true;
     };
     int first = -1;
     for (int i = 0; i < n && first < 0; ++i) {
@@ -236,7 +238,7 @@ class ReferenceFilter {
       }
       const bool bounded = offset < span || wrap;
       if (run_start >= 0 && bounded && offset - run_start <= options_.max_dropout_run &&
-          !reaches_max_range((first + run_start - 1) % n, -1) && !reaches_max_range(i, +1)) {
+          !seen_before(first, run_start, offset)) {
         for (int o = run_start; o < offset; ++o) {
           float &r = ranges_[static_cast<std::size_t>((first + o) % n)];
           if (std::isnan(r)) continue;
@@ -319,10 +321,23 @@ mapping::ScanFilterOptions random_options(common::Rng &rng) {
   o.max_see_through = 1 + static_cast<int>(rng.below(8));
   o.max_dropout_run = static_cast<int>(rng.below(33));
   o.max_grazing_rad = rng.uniform01() < 0.1 ? 0.0 : rng.uniform(0.0, 1.55);
+  o.min_repeated_view = 1 + static_cast<int>(rng.below(8));
   return o;
 }
 
 std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
+
+// Down a corridor longer than max range, seen end-on: its walls at a grazing angle return up
+// to near 12 m on both sides of five no returns (beams 178 ... 182), 1.5 m elsewhere.
+std::vector<float> corridor_end_view() {
+  std::vector<float> r(360, 1.5f);
+  for (int i = 0; i < 8; ++i) {
+    r[static_cast<std::size_t>(170 + i)] = static_cast<float>(0.494 / std::sin((10 - i) * kDeg));
+    r[static_cast<std::size_t>(190 - i)] = r[static_cast<std::size_t>(170 + i)];
+  }
+  for (int i = 178; i <= 182; ++i) r[static_cast<std::size_t>(i)] = kInf;
+  return r;
+}
 
 }  // namespace
 
@@ -340,18 +355,51 @@ TEST_CASE("scan filter: what a fault-free lidar sees passes unchanged") {
   for (int i = 170; i < 190; ++i) open[static_cast<std::size_t>(i)] = kInf;
   CHECK(text(filtered(open), 165, 195) == text(open, 165, 195));
   // Down a corridor longer than max range: its walls, seen at a grazing angle, return up to
-  // near 12 m on both sides of a few no returns; those are a view, not dropped beams.
-  std::vector<float> corridor_end(360, 1.5f);
-  for (int i = 0; i < 8; ++i) {
-    corridor_end[static_cast<std::size_t>(170 + i)] = static_cast<float>(0.494 / std::sin((10 - i) * kDeg));
-    corridor_end[static_cast<std::size_t>(190 - i)] = corridor_end[static_cast<std::size_t>(170 + i)];
-  }
-  for (int i = 178; i <= 182; ++i) corridor_end[static_cast<std::size_t>(i)] = kInf;
+  // near 12 m on both sides of a few no returns. One scan cannot tell them from dropped
+  // beams; seen again from the same pose they are a view (the next test).
+  std::vector<float> corridor_end = corridor_end_view();
   CHECK(corridor_end[177] > 9.0f);  // 3 degrees off the axis; at 2 degrees 14 m
-  CHECK(text(filtered(corridor_end), 165, 195) == text(corridor_end, 165, 195));
+  mapping::ScanFilter again;
+  CHECK(text(values(again.apply(full_circle(corridor_end), full_circle(corridor_end))), 165, 195) == text(corridor_end, 165, 195));
   // Nothing returns at all (an empty hall): every no return stands.
   const std::vector<float> nothing(360, kInf);
   CHECK(text(filtered(nothing), 0, 359) == text(nothing, 0, 359));
+}
+
+TEST_CASE("scan filter: a short view past max range seen twice from the same pose stands; dropped beams do not") {
+  const std::vector<float> view = corridor_end_view();  // no returns at beams 178 ... 182
+  const mapping::LidarScan scan = full_circle(view);
+  const std::string seen = text(view, 165, 195);
+  const std::string dropped = "150 150 150 150 150 284 316 355 405 473 567 708 944 - - - - - 944 708 567 473 405 355 316 284 150 150 150 150 150";
+  mapping::ScanFilter filter;
+  // First sight: five no returns between returns read as dropped beams.
+  CHECK(text(values(filter.apply(scan)), 165, 195) == dropped);
+  CHECK(filter.counts().dropouts == 5);
+  // Seen again from the same pose: a view.
+  CHECK(text(values(filter.apply(scan, scan)), 165, 195) == seen);
+  CHECK(filter.counts().dropouts == 0);
+  // The same pose within 1 cm and a quarter beam step.
+  mapping::LidarScan near = scan;
+  near.origin = {near.origin.x_m + 0.006, near.origin.y_m - 0.006};
+  near.yaw_rad += 0.2 * kDeg;
+  CHECK(text(values(filter.apply(scan, near)), 165, 195) == seen);
+  // From elsewhere, or turned by a beam, the scan before says nothing about these beams.
+  mapping::LidarScan moved = scan;
+  moved.origin.x_m += 0.05;
+  CHECK(text(values(filter.apply(scan, moved)), 165, 195) == dropped);
+  mapping::LidarScan turned = scan;
+  turned.yaw_rad += kDeg;
+  CHECK(text(values(filter.apply(scan, turned)), 165, 195) == dropped);
+  // Dropped beams are a new draw at every scan: the run the scan before read differently
+  // (one beam of the five returned) is dropped again.
+  std::vector<float> other = view;
+  other[180] = 7.0f;
+  CHECK(text(values(filter.apply(scan, full_circle(other))), 165, 195) == dropped);
+  // Two beams repeating is too likely for dropouts (5 %^4 a pair at a 5 % rate): at least three.
+  std::vector<float> pair = closed_cell();
+  pair[100] = kInf;
+  pair[101] = kInf;
+  CHECK(text(values(filter.apply(full_circle(pair), full_circle(pair))), 99, 102) == text(pair, 99, 99) + " - - " + text(pair, 102, 102));
 }
 
 TEST_CASE("scan filter: a spike that agrees with neither neighbour is no information") {
@@ -524,6 +572,12 @@ TEST_CASE("scan filter: options checked, messages to the letter") {
   o = {};
   o.max_dropout_run = 33;
   CHECK(error_of(o) == "error: scan filter: dropout run must be 0 to 32 beams (got 33)");
+  o = {};
+  o.min_repeated_view = 0;
+  CHECK(error_of(o) == "error: scan filter: repeated view must be 1 to 32 beams (got 0)");
+  o = {};
+  o.same_pose_m = -1.0;
+  CHECK(error_of(o) == "error: scan filter: same-pose distance must be a finite number of m >= 0 (got -1)");
 }
 
 TEST_CASE("scan filter: the same readings and counts, bit for bit, as the reference filter") {
@@ -555,8 +609,17 @@ TEST_CASE("scan filter: the same readings and counts, bit for bit, as the refere
       const std::vector<float> r = n == 0 ? std::vector<float>{} : random_scan(rng, n, limits);
       mapping::LidarScan scan = limits;
       scan.ranges = r;
-      const std::vector<float> expected = reference.apply(scan);
-      const mapping::LidarScan out = filter.apply(scan);
+      // Half the scans follow one from the same pose: the same beams, some changed (a
+      // no return becomes a return and back), so that repeated and new runs both occur.
+      std::vector<float> earlier = r;
+      for (float &v : earlier) {
+        if (rng.uniform01() < 0.15) v = rng.uniform01() < 0.5 ? kInf : static_cast<float>(limits.max_range_m / 2);
+      }
+      mapping::LidarScan before = limits;
+      before.ranges = earlier;
+      const bool repeat = rng.uniform01() < 0.5;
+      const std::vector<float> expected = reference.apply(scan, repeat ? &before : nullptr);
+      const mapping::LidarScan out = repeat ? filter.apply(scan, before) : filter.apply(scan);
       REQUIRE(out.beam_count() == n);
       for (std::size_t i = 0; i < r.size(); ++i) {
         CAPTURE(i);

@@ -379,25 +379,67 @@ struct CellController::Impl {
     s.min_range_m = lidar->getMinRange();
     s.max_range_m = lidar->getMaxRange();
     s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar->getHorizontalResolution()));
-    const std::size_t updated =
-        mapping::integrate_scan(options.mapping, grid, scan_filter.apply(s), c, model, update);
+    const mapping::LidarScan filtered = previous_scan.ranges.empty() ? scan_filter.apply(s)
+                                                                     : scan_filter.apply(s, previous_scan);
+    const std::size_t updated = mapping::integrate_scan(options.mapping, grid, filtered, c, model, update);
     if (has_pending) pending.subcells_updated += updated;
+    // Kept for the next scan's filter: a short view past max range seen again from the same
+    // pose is a view, not dropped beams.
+    previous_ranges.assign(s.ranges.begin(), s.ranges.end());
+    previous_scan = s;
+    previous_scan.ranges = previous_ranges;
+  }
+
+  bool unknown(const explore::WallQuery &walls, Cell c, Heading h) const {
+    return walls(c, h) == mapping::SideState::unknown;
   }
 
   // Lidar models and range rings: while a side of c is unknown after its scan (every beam
   // towards it was filtered out as a fault, every range reading about it ignored by the pie
   // model), waits one control step at rest and scans again: the next reading is a new draw of
-  // the sensor, not the same faulty one.
-  Motion rescan_unknown_sides(Cell c, const explore::WallQuery &walls) {
+  // the sensor, not the same faulty one. Then faces each side still unknown and does the
+  // same (other beams look at it, and the cell model's beams point straight at it). A side
+  // still unknown that leads to a cell inside the maze is listed in `unresolved`.
+  Motion resolve_unknown_sides(Cell c, Heading &facing, const explore::WallQuery &walls) {
     const auto unknown_side = [&] {
-      return std::ranges::any_of(mapping::kHeadings,
-                                 [&](Heading h) { return walls(c, h) == mapping::SideState::unknown; });
+      return std::ranges::any_of(mapping::kHeadings, [&](Heading h) { return unknown(walls, c, h); });
     };
-    for (int attempt = 0; attempt < options.max_rescans && unknown_side(); ++attempt) {
-      if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+    const auto rescan_while = [&](const auto &still_unknown) {
+      for (int attempt = 0; attempt < options.max_rescans && still_unknown(); ++attempt) {
+        if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+        scan(c);
+      }
+      return Motion::ok;
+    };
+    if (const Motion s = rescan_while(unknown_side); s != Motion::ok) return s;
+    for (const Heading h : mapping::kHeadings) {
+      if (!unknown(walls, c, h)) continue;
+      if (const Motion s = turn_to(h); s != Motion::ok) return s;
+      facing = h;
+      visits.record(c, facing);
       scan(c);
+      if (const Motion s = rescan_while([&] { return unknown(walls, c, h); }); s != Motion::ok) return s;
+      const std::pair<Cell, Heading> side{c, h};
+      if (unknown(walls, c, h) && grid.contains(mapping::neighbour(c, h)) &&
+          std::ranges::find(unresolved, side) == unresolved.end()) {
+        unresolved.push_back(side);
+      }
     }
     return Motion::ok;
+  }
+
+  // The sides listed as unresolved that are still unknown and lead to a cell never visited,
+  // as "E of (3,4), ..." (the first few), or empty.
+  std::string unresolved_sides(const explore::WallQuery &walls) const {
+    std::string text;
+    int count = 0;
+    for (const auto &[c, h] : unresolved) {
+      if (!unknown(walls, c, h) || visits.visited(mapping::neighbour(c, h))) continue;
+      if (++count <= 3) text += fmt::format("{}{} of ({},{})", count > 1 ? ", " : "", mapping::to_char(h), c.x, c.y);
+    }
+    if (count == 0) return {};
+    return fmt::format("{} side{} of visited cells still unknown: {}{}", count, count == 1 ? "" : "s", text,
+                       count > 3 ? ", ..." : "");
   }
 
   void notify(const Observer &observer, Cell c, Heading h, bool new_cell) const {
@@ -425,7 +467,7 @@ struct CellController::Impl {
     const auto arrive = [&](bool new_cell) {
       scan(cell);
       Motion s = Motion::ok;
-      if (lidar != nullptr || ring) s = rescan_unknown_sides(cell, walls);
+      if (lidar != nullptr || ring) s = resolve_unknown_sides(cell, heading, walls);
       if (bump) s = probe_unknown_sides(cell, heading, walls);
       if (depth && new_cell) s = look_around(cell, heading);
       notify(observer, cell, heading, new_cell);
@@ -434,7 +476,11 @@ struct CellController::Impl {
     if (const Motion s = arrive(true); s != Motion::ok) return to_reason(s);
     for (;;) {
       const auto next = explorer.next(cell, heading, walls);
-      if (!next) return flush_step() ? EndReason::done : EndReason::stopped;
+      if (!next) {
+        if (!flush_step()) return EndReason::stopped;
+        message = unresolved_sides(walls);
+        return message.empty() ? EndReason::done : EndReason::incomplete;
+      }
       Motion s = turn_to(*next);
       if (s == Motion::ok) {
         heading = *next;
@@ -534,6 +580,11 @@ struct CellController::Impl {
   std::vector<Cell> path;
   std::string message;
   bool ran = false;
+  // The lidar's last raw scan (for the filter's repeated-view rule), its ranges owned here.
+  mapping::LidarScan previous_scan;
+  std::vector<float> previous_ranges;
+  // Sides the robot looked at in every way it has and still does not know (cell, side).
+  std::vector<std::pair<Cell, Heading>> unresolved;
 };
 
 CellController::CellController(webots::Robot &robot, const ControllerOptions &options)

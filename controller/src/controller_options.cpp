@@ -55,6 +55,7 @@ std::string_view to_string(EndReason reason) {
     case EndReason::no_progress: return "no progress";
     case EndReason::simulation_ended: return "simulation ended";
     case EndReason::stopped: return "stopped";
+    case EndReason::incomplete: return "incomplete";
   }
   return "?";
 }

@@ -50,6 +50,14 @@ void validate(const ScanFilterOptions &options) {
     throw common::InputError(fmt::format("scan filter: dropout run must be 0 to 32 beams (got {})",
                                          options.max_dropout_run));
   }
+  if (options.min_repeated_view < 1 || options.min_repeated_view > 32) {
+    throw common::InputError(fmt::format("scan filter: repeated view must be 1 to 32 beams (got {})",
+                                         options.min_repeated_view));
+  }
+  if (!(options.same_pose_m >= 0.0 && std::isfinite(options.same_pose_m))) {
+    throw common::InputError(fmt::format("scan filter: same-pose distance must be a finite number of m >= 0 (got {})",
+                                         options.same_pose_m));
+  }
 }
 
 // What every rule reads, in locals for the rules' loops: the beams as they stand in a round
@@ -108,7 +116,22 @@ struct ScanFilter::Beams {
 
 ScanFilter::ScanFilter(const ScanFilterOptions &options) : options_((validate(options), options)) {}
 
-LidarScan ScanFilter::apply(const LidarScan &scan) {
+LidarScan ScanFilter::apply(const LidarScan &scan) { return filter(scan, nullptr); }
+
+LidarScan ScanFilter::apply(const LidarScan &scan, const LidarScan &before) {
+  return filter(scan, same_pose(scan, before) ? &before : nullptr);
+}
+
+bool ScanFilter::same_pose(const LidarScan &scan, const LidarScan &before) const {
+  const int n = scan.beam_count();
+  if (n == 0 || before.beam_count() != n || before.fov_rad != scan.fov_rad) return false;
+  const double quarter_step_rad = scan.fov_rad / n / 4.0;
+  const double turned_rad = std::remainder(scan.yaw_rad - before.yaw_rad, 2.0 * std::numbers::pi);
+  return std::hypot(scan.origin.x_m - before.origin.x_m, scan.origin.y_m - before.origin.y_m) <= options_.same_pose_m &&
+         std::abs(turned_rad) <= quarter_step_rad;
+}
+
+LidarScan ScanFilter::filter(const LidarScan &scan, const LidarScan *before) {
   counts_ = {};
   const std::size_t size = scan.ranges.size();
   const int n = static_cast<int>(size);
@@ -168,7 +191,7 @@ LidarScan ScanFilter::apply(const LidarScan &scan) {
       if (!spikes && !see_through) break;
     }
     // Rejections keep a beam a return: every beam returned, nothing to drop.
-    if (returns < size) drop_dropouts(scan.max_range_m);
+    if (returns < size) drop_dropouts(before);
   }
   LidarScan out = scan;
   out.ranges = ranges_;
@@ -249,7 +272,7 @@ bool ScanFilter::reject_see_through() {
   return reject_collected();
 }
 
-void ScanFilter::drop_dropouts(double max_range_m) {
+void ScanFilter::drop_dropouts(const LidarScan *before) {
   const Beams b = beams();
   const int n = b.n;
   // A beam that returned something, trusted or not, ends a run.
@@ -267,16 +290,14 @@ void ScanFilter::drop_dropouts(double max_range_m) {
     }
     return to;
   };
-  // A trusted return so far away that the surface it lies on may go on past max range in
-  // the next beam (a corridor's walls seen at a grazing angle): the run beside it may be a
-  // real view past max range.
-  const auto reaches_max_range = [&](int i, int away) {
-    if (!b.trusted(i)) return false;
-    const double r = b.range(i);
-    // The next beam's range if the surface recedes by the same ratio as from the return before.
-    const int before = b.nearest_trusted(i, away);
-    const double next_m = before < 0 ? kNaNRange : r * r / b.range(before);
-    return r + b.absolute_m + b.relative * r >= max_range_m || next_m + b.absolute_m >= max_range_m;
+  // A run (offsets [from, to) from `first`) that the scan before read without a return on
+  // every beam: a view past max range seen again.
+  const auto repeated_view = [&](int first, int from, int to) {
+    if (before == nullptr || to - from < options_.min_repeated_view) return false;
+    for (int o = from; o < to; ++o) {
+      if (before->kind(wrapped(first + o)) != ReadingKind::no_return) return false;
+    }
+    return true;
   };
   // Start at a return so that a run never wraps past the start unseen.
   int first = -1;
@@ -293,8 +314,7 @@ void ScanFilter::drop_dropouts(double max_range_m) {
     int end = run_start + 1;
     while (end < span && !returned(wrapped(first + end))) ++end;
     const bool bounded = end < span || b.wrap;
-    if (bounded && end - run_start <= options_.max_dropout_run &&
-        !reaches_max_range(wrapped(first + run_start - 1), -1) && !reaches_max_range(wrapped(first + end), +1)) {
+    if (bounded && end - run_start <= options_.max_dropout_run && !repeated_view(first, run_start, end)) {
       for (int o = run_start; o < end; ++o) {
         float &r = ranges_[static_cast<std::size_t>(wrapped(first + o))];
         if (std::isnan(r)) continue;  // invalid: counted already

@@ -17,17 +17,21 @@
 //              side cannot vouch for each other.
 //   dropout    a no return among returns: a run of at most `max_dropout_run` beams
 //              without a return, with returns on both sides             -> NaN
-//              A wall is not seen through between two beams that hit it; a real view past
-//              max range through an opening is wider than a few beams, unless it is
-//              bounded by a return so far away that the surface it lies on may go past max
-//              range in the next beam (within the spike tolerance, or receding at the ratio
-//              of the return before it: a corridor's walls seen down its length): such a
-//              run stands.
+//              A wall is not seen through between two beams that hit it, so a short run is
+//              taken for dropped beams, unless the scan taken just before it from the same
+//              pose read no return on every beam of the run too and the run is at least
+//              `min_repeated_view` beams wide: then it is a view past max range (a corridor
+//              seen end-on, longer than the lidar's range) and stands. A dropped beam is a
+//              new draw at every scan (the chance that a run of k dropped beams repeats is
+//              the dropout rate to the k-th power); a view is the same at every scan. Runs
+//              longer than `max_dropout_run` stand at once.
 // A no return outside such a run stays a no return (nothing within max range).
 //
 //   beams            0.50  inf   0.50  7.30  0.51  0.51  inf   inf   inf   inf   inf ...
 //   filtered         0.50  NaN   0.50  NaN   0.51  0.51  inf   inf   inf   inf   inf ...
 //                          dropout     spike             view past max range (a long run)
+//   the same pose again, the run at beams 1 ... 3 read inf in both scans: a repeated view
+//   beams            0.50  inf   inf   inf   0.51  ...    filtered  0.50  inf   inf   inf   0.51
 
 #include <cmath>
 #include <cstddef>
@@ -49,6 +53,13 @@ struct ScanFilterOptions {
   int max_see_through = 2;
   // Longest run of beams without a return, between returns, read as dropped beams.
   int max_dropout_run = 6;
+  // Narrowest run of no returns that a repeat from the same pose confirms as a view past
+  // max range (beams): one or two dropped beams repeat too often at a 5 % dropout rate
+  // (5 %^2 and 5 %^4 a run), three seldom (5 %^6).
+  int min_repeated_view = 3;
+  // Two scans are from the same pose when their origins are this close (m) and their
+  // headings within a quarter of a beam step.
+  double same_pose_m = 0.01;
 
   // A wall seen this far from square-on (rad) still makes neighbouring returns agree: the
   // range grows by r tan(angle) per radian of beam step there (80 degrees: 10 % of the range
@@ -62,7 +73,7 @@ struct ScanFilterOptions {
 };
 
 // Throws common::InputError when an option is out of range (noise >= 0 and finite,
-// reach 1 ... 10, dropout run 0 ... 32).
+// reach 1 ... 10, dropout run 0 ... 32, repeated view 1 ... 32, same pose >= 0).
 void validate(const ScanFilterOptions &options);
 
 // What the last filtering did, beam counts.
@@ -81,10 +92,16 @@ class ScanFilter {
   // until the next call. One pass over the beams, then each round looks only at the returns
   // that do not agree with the beam before them; no allocation after the first scan.
   LidarScan apply(const LidarScan &scan);
+  // The same, with `before` the raw scan (unfiltered) taken just before this one: when it
+  // is from the same pose (see ScanFilterOptions), a short run of no returns it read too is
+  // a view past max range, not a dropout (the table above). From another pose it is ignored.
+  LidarScan apply(const LidarScan &scan, const LidarScan &before);
 
   const ScanFilterCounts &counts() const { return counts_; }
 
  private:
+  // apply(), with the scan before from the same pose or null.
+  LidarScan filter(const LidarScan &scan, const LidarScan *before);
   // The beams and constants the rules read, for one round (scan_filter.cpp).
   struct Beams;
   Beams beams() const;
@@ -92,7 +109,10 @@ class ScanFilter {
   bool reject_spikes();
   bool reject_see_through();
   bool reject_collected();  // rejects the beams in rejected_
-  void drop_dropouts(double max_range_m);
+  // before: the scan before from the same pose, or null.
+  void drop_dropouts(const LidarScan *before);
+  // Whether `before` is a scan of the same beams from the same pose as `scan`.
+  bool same_pose(const LidarScan &scan, const LidarScan &before) const;
 
   ScanFilterOptions options_;
   // Of the scan being filtered, set once per apply(): the rules ask for them per beam.

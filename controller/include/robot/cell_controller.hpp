@@ -106,7 +106,9 @@ struct ControllerOptions {
   mapping::ScanFilterOptions scan_filter;
   // Lidar models and range rings (pie, cone): scans taken again, one control step apart,
   // while a side of the robot's cell is still unknown after arriving (a reading the filter or
-  // the pie model left without information).
+  // the pie model left without information); then the robot faces each side still unknown
+  // and scans up to as many times again. Only a side with evidence counts as a wall: one
+  // still unknown after that, leading to a cell never visited, makes the run end incomplete.
   int max_rescans = 3;
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   MotionOptions motion;
@@ -124,8 +126,12 @@ struct ControllerOptions {
 // the motion numbers: positive sizes and speeds, gains in (0, 1], max_steps >= 1).
 void validate(const ControllerOptions &options);
 
-enum class EndReason { done, max_steps, no_progress, simulation_ended, stopped };
-// "done", "max steps", "no progress", "simulation ended", "stopped"
+// incomplete: the strategy had nothing left to do, but a side of a visited cell leading to a
+// cell never visited stayed unknown however the robot looked at it (the controller's own
+// finding), or - set by the composition root, which holds the truth - reachable cells were
+// never visited.
+enum class EndReason { done, max_steps, no_progress, simulation_ended, stopped, incomplete };
+// "done", "max steps", "no progress", "simulation ended", "stopped", "incomplete"
 std::string_view to_string(EndReason reason);
 
 // What the observer sees after the start scan and after every move into a cell.
@@ -170,7 +176,8 @@ struct RunHooks {
 
 struct RunResult {
   EndReason reason = EndReason::done;
-  std::string message;        // for no_progress: what stalled, where; for stopped: why
+  std::string message;        // for no_progress: what stalled, where; for stopped: why;
+                              // for incomplete: the sides left unknown
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
