@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <ostream>
 #include <streambuf>
@@ -25,25 +26,38 @@ class NullBuffer : public std::streambuf {
   std::streamsize xsputn(const char *, std::streamsize n) override { return n; }
 };
 
-bool loads(const std::string &path) {
+// Whether a file's content is one of the maze formats (its first bytes decide).
+bool looks_like_maze(const fs::path &path) {
+  std::ifstream file(path, std::ios::binary);
+  std::string head(4096, '\0');
+  file.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(file.gcount()));
   try {
-    (void)maze::load_world(path);
+    (void)maze::detect_format(head, path.string());
     return true;
   } catch (const common::InputError &) {
     return false;
   }
 }
 
-BatchItem run_one(RunOptions options, const std::string &world) {
+BatchItem run_one(RunOptions options, const std::string &world, bool (*interrupted)()) {
   BatchItem item;
   item.world = world;
   options.world = world;
   NullBuffer buffer;
   std::ostream sink(&buffer);
+  RunControls controls;
+  controls.interrupted = interrupted;
   try {
-    item.summary = run_world(options, sink);
+    item.summary = run_world(options, sink, controls);
+    item.ran = true;
+    item.interrupted = item.summary.interrupted;
     item.ok = exit_status(item.summary) == 0;
-    if (!item.ok) item.error = fmt::format("ended: {}", robot::to_string(item.summary.reason));
+    if (!item.ok) {
+      item.error = item.summary.message.empty()
+                       ? fmt::format("ended: {}", robot::to_string(item.summary.reason))
+                       : fmt::format("ended: {} ({})", robot::to_string(item.summary.reason), item.summary.message);
+    }
   } catch (const common::InputError &e) {
     item.bad_input = true;
     item.error = e.diagnostic();
@@ -57,39 +71,76 @@ std::string percent(double v) { return fmt::format("{:.2f}%", v); }
 
 }  // namespace
 
-std::vector<std::string> expand_worlds(const std::vector<std::string> &paths) {
-  std::vector<std::string> worlds;
-  for (const std::string &path : paths) {
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) {
-      throw common::InputError(fmt::format("{}: no such file or directory", path));
-    }
-    if (!fs::is_directory(status)) {
-      worlds.push_back(path);
+bool natural_less(const std::string &a, const std::string &b) {
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (!digit(a[i]) || !digit(b[j])) {
+      if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+      ++i;
+      ++j;
       continue;
     }
-    std::vector<std::string> files;
-    for (const fs::directory_entry &entry : fs::directory_iterator(path)) {
-      if (entry.is_regular_file()) files.push_back(entry.path().string());
+    // Two runs of digits: the shorter without its leading zeros is the smaller number; equal
+    // numbers compare by their leading zeros last, so that the order stays strict.
+    std::size_t ei = i;
+    std::size_t ej = j;
+    while (ei < a.size() && digit(a[ei])) ++ei;
+    while (ej < b.size() && digit(b[ej])) ++ej;
+    std::size_t si = i;
+    std::size_t sj = j;
+    while (si + 1 < ei && a[si] == '0') ++si;
+    while (sj + 1 < ej && b[sj] == '0') ++sj;
+    const std::string_view x(a.data() + si, ei - si);
+    const std::string_view y(b.data() + sj, ej - sj);
+    if (x.size() != y.size()) return x.size() < y.size();
+    if (x != y) return x < y;
+    if (ei - i != ej - j) return ei - i < ej - j;
+    i = ei;
+    j = ej;
+  }
+  return a.size() - i < b.size() - j;
+}
+
+WorldList expand_worlds(const std::vector<std::string> &paths) {
+  WorldList list;
+  for (const std::string &path : paths) {
+    std::error_code ec;
+    if (!fs::is_directory(path, ec)) {
+      list.worlds.push_back(path);
+      continue;
     }
-    std::sort(files.begin(), files.end());
-    for (const std::string &file : files) {
-      if (loads(file)) worlds.push_back(file);
+    std::vector<fs::path> files;
+    for (const fs::directory_entry &entry : fs::directory_iterator(path, ec)) {
+      if (entry.is_regular_file(ec)) files.push_back(entry.path());
+    }
+    if (ec) throw common::InputError(fmt::format("{}: cannot list the folder: {}", path, ec.message()));
+    std::sort(files.begin(), files.end(),
+              [](const fs::path &a, const fs::path &b) { return natural_less(a.string(), b.string()); });
+    for (const fs::path &file : files) {
+      (looks_like_maze(file) ? list.worlds : list.skipped).push_back(file.string());
     }
   }
-  return worlds;
+  return list;
 }
 
 std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<std::string> &worlds,
-                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress) {
+                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
+                                 bool (*interrupted)()) {
   std::vector<BatchItem> items(worlds.size());
   std::atomic<std::size_t> next{0};
   std::mutex report;
   std::size_t done = 0;
   const auto work = [&] {
     for (std::size_t i = next++; i < worlds.size(); i = next++) {
-      items[i] = run_one(options, worlds[i]);
+      if (interrupted != nullptr && interrupted()) {
+        items[i].world = worlds[i];
+        items[i].interrupted = true;
+        items[i].error = "not run (interrupted by Ctrl-C)";
+        continue;
+      }
+      items[i] = run_one(options, worlds[i], interrupted);
       const std::lock_guard lock(report);
       ++done;
       if (progress) progress(done, worlds.size());
@@ -102,40 +153,53 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<st
   return items;
 }
 
-std::string format_batch_table(const std::vector<BatchItem> &items, double elapsed_ms) {
+std::string format_batch_table(const std::vector<BatchItem> &items, double elapsed_ms,
+                               const std::vector<std::string> &skipped) {
   std::size_t width = 5;
   for (const BatchItem &item : items) width = std::max(width, item.world.size());
-  std::string out = fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>7}\n", "world", width,
-                                "size", "moves", "coverage", "wall_accuracy", "ms");
+  std::string out = fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>7}  {}\n", "world", width,
+                                "size", "moves", "coverage", "wall_accuracy", "ms", "end");
   int ok = 0;
+  int interrupted = 0;
   long moves = 0;
   double coverage = 0.0;
   double accuracy = 0.0;
   double run_ms = 0.0;
+  std::size_t ran = 0;
   for (const BatchItem &item : items) {
-    if (!item.error.empty() && !item.ok && item.summary.width == 0) {
+    if (item.ok) ++ok;
+    if (item.interrupted) ++interrupted;
+    if (!item.ran) {
       out += fmt::format("{:<{}}  {}\n", item.world, width, item.error);
       continue;
     }
     const RunSummary &s = item.summary;
-    out += fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>7.0f}{}\n", item.world, width,
+    const std::string end = s.message.empty() ? std::string(robot::to_string(s.reason))
+                                              : fmt::format("{} ({})", robot::to_string(s.reason), s.message);
+    out += fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>7.0f}  {}\n", item.world, width,
                        fmt::format("{}x{}", s.width, s.height), s.moves,
                        percent(s.score.coverage_percent()), percent(s.score.wall_accuracy_percent()),
-                       s.wall_time_ms, item.ok ? "" : "  " + item.error);
-    if (item.ok) ++ok;
+                       s.wall_time_ms, end);
+    ++ran;
     moves += s.moves;
     coverage += s.score.coverage_percent();
     accuracy += s.score.wall_accuracy_percent();
     run_ms += s.wall_time_ms;
   }
-  const std::size_t ran = static_cast<std::size_t>(std::count_if(
-      items.begin(), items.end(), [](const BatchItem &i) { return i.summary.width > 0; }));
-  out += fmt::format("total: {} worlds, {} ok, {} failed; moves {}; mean coverage {}; mean "
-                     "wall_accuracy {}; run time {:.0f} ms; elapsed {:.0f} ms\n",
-                     items.size(), ok, items.size() - static_cast<std::size_t>(ok), moves,
-                     percent(ran ? coverage / static_cast<double>(ran) : 0.0),
+  const std::size_t failed = items.size() - static_cast<std::size_t>(ok) - static_cast<std::size_t>(interrupted);
+  out += fmt::format("total: {} worlds, {} ok, {} failed", items.size(), ok, failed);
+  if (interrupted > 0) out += fmt::format(", {} interrupted", interrupted);
+  out += fmt::format("; moves {}; mean coverage {}; mean wall_accuracy {}; run time {:.0f} ms; elapsed {:.0f} ms",
+                     moves, percent(ran ? coverage / static_cast<double>(ran) : 0.0),
                      percent(ran ? accuracy / static_cast<double>(ran) : 0.0), run_ms, elapsed_ms);
-  return out;
+  if (!skipped.empty()) {
+    constexpr std::size_t kNamed = 3;
+    std::string names;
+    for (std::size_t i = 0; i < std::min(kNamed, skipped.size()); ++i) names += (i ? ", " : "") + skipped[i];
+    if (skipped.size() > kNamed) names += fmt::format(" and {} more", skipped.size() - kNamed);
+    out += fmt::format("; {} skipped, not mazes: {}", skipped.size(), names);
+  }
+  return out + "\n";
 }
 
 std::string format_batch_csv(const std::vector<BatchItem> &items) {
@@ -149,8 +213,9 @@ std::string format_batch_csv(const std::vector<BatchItem> &items) {
   };
   std::string out = "world,size,moves,coverage,wall_accuracy,ms,end,error\n";
   for (const BatchItem &item : items) {
+    if (item.interrupted) continue;
     const RunSummary &s = item.summary;
-    if (s.width == 0) {
+    if (!item.ran) {
       out += fmt::format("{},,,,,,,{}\n", quoted(item.world), quoted(item.error));
       continue;
     }
@@ -162,6 +227,7 @@ std::string format_batch_csv(const std::vector<BatchItem> &items) {
 }
 
 int batch_exit_status(const std::vector<BatchItem> &items) {
+  if (std::any_of(items.begin(), items.end(), [](const BatchItem &i) { return i.interrupted; })) return 130;
   if (std::all_of(items.begin(), items.end(), [](const BatchItem &i) { return i.ok; })) return 0;
   if (std::all_of(items.begin(), items.end(), [](const BatchItem &i) { return i.bad_input; })) return 2;
   return 1;

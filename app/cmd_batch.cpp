@@ -56,18 +56,23 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
     const int jobs = batch->jobs > 0 ? batch->jobs
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const std::vector<std::string> worlds = expand_worlds(batch->worlds);
-    if (worlds.empty()) throw common::InputError("no world to run (the folders hold no loadable world)");
+    const WorldList list = expand_worlds(batch->worlds);
+    if (list.worlds.empty()) {
+      throw common::InputError(fmt::format("no world to run: the folders hold no maze file ({} other file{} skipped)",
+                                           list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
+    }
     const auto started = std::chrono::steady_clock::now();
     std::function<void(std::size_t, std::size_t)> progress;
     if (is_terminal(STDERR_FILENO)) progress = draw_progress;
-    const std::vector<BatchItem> items = run_batch(options, worlds, jobs, progress);
+    const SigintGuard sigint;
+    const std::vector<BatchItem> items = run_batch(options, list.worlds, jobs, progress, &SigintGuard::interrupted);
+    if (progress) fmt::print(stderr, "\r\x1b[K");
     const double elapsed_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     for (const BatchItem &item : items) {
-      if (!item.ok && item.summary.width == 0) fmt::print(stderr, "{}\n", item.error);
+      if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
     }
-    std::cout << format_batch_table(items, elapsed_ms);
+    std::cout << format_batch_table(items, elapsed_ms, list.skipped);
     if (!batch->csv.empty()) common::write_file_atomically(batch->csv, format_batch_csv(items));
     context.status = batch_exit_status(items);
   });

@@ -187,6 +187,9 @@ std::vector<std::string> split_lines(const std::string &text) {
 }
 
 // compare: one quiet run per K, printed as columns (map, blank line, summary).
+// Runs the world at each K and prints the columns side by side. Ctrl-C stops the run in
+// flight at its next step and the rest are not started: nothing is printed but one line,
+// and the status is 130.
 int compare_runs(const RunInput &input, const std::string &subcells, std::ostream &out) {
   std::vector<int> ks;
   for (const std::string &part : split_lines([&] {
@@ -211,9 +214,16 @@ int compare_runs(const RunInput &input, const std::string &subcells, std::ostrea
   std::vector<std::size_t> widths;
   int status = 0;
   double total_ms = 0.0;
+  RunControls controls;
+  controls.interrupted = &SigintGuard::interrupted;
+  const SigintGuard sigint;
   for (const RunOptions &options : runs) {
     std::ostringstream text;
-    const RunSummary summary = run_world(options, text);
+    const RunSummary summary = run_world(options, text, controls);
+    if (summary.interrupted) {
+      out << "compare: interrupted by Ctrl-C\n";
+      return exit_status(summary);
+    }
     status = std::max(status, exit_status(summary));
     // The wall time varies from run to run: one total line at the end keeps columns stable.
     std::vector<std::string> lines = split_lines(text.str());
@@ -318,7 +328,10 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
       if (world.maze.goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");
       options.plan_to = mapping::Cell{world.maze.goals().front().x, world.maze.goals().front().y};
     }
-    const RunSummary summary = run_world(options, std::cout);
+    RunControls controls;
+    controls.interrupted = &SigintGuard::interrupted;
+    const SigintGuard sigint;
+    const RunSummary summary = run_world(options, std::cout, controls);
     context.status = exit_status(summary);
   });
 }

@@ -6,6 +6,7 @@
 #include <istream>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -359,15 +360,21 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
                                     render::arrow(result.visits.heading(last).value_or(mapping::Heading::north),
                                                   options.ascii)};
   }
-  if (!options.plan_only) out << render::render_map(result.grid, result.visits, style) << '\n';
-  if (options.plan_to) {
-    summary.plan = plan_path(options, result, model, style, out);
-  }
+  // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
+  // by Ctrl-C writes its files and its summary, without the maps.
+  std::ostringstream planned;
+  if (options.plan_to) summary.plan = plan_path(options, result, model, style, planned);
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   if (!options.out_dir.empty()) {
     write_outputs(options.out_dir, options, summary,
                   RunFiles{&result.grid, &model, &result.path, &state.trace});
+  }
+  if (summary.interrupted) {
+    out << "(interrupted: the final map is not printed)\n\n";
+  } else {
+    if (!options.plan_only) out << render::render_map(result.grid, result.visits, style) << '\n';
+    out << planned.str();
   }
   out << format_summary(options, summary);
   return summary;

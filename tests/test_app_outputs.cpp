@@ -282,9 +282,116 @@ TEST_CASE("batch: a bad world is reported and does not stop the others; input or
   for (std::size_t i = 0; i < 3; ++i) CHECK(serial[i].summary.moves == items[i].summary.moves);
 }
 
-TEST_CASE("a folder expands to the files in it that load, sorted") {
-  const std::vector<std::string> worlds = app::expand_worlds({std::string(TEST_DATA_DIR) + "/worlds"});
-  CHECK(std::is_sorted(worlds.begin(), worlds.end()));
-  for (const std::string &w : worlds) CHECK(w.find("inconsistent") == std::string::npos);
-  CHECK_THROWS_AS(app::expand_worlds({"/nonexistent-folder"}), common::InputError);
+TEST_CASE("batch: names sort naturally") {
+  CHECK(app::natural_less("s4.txt", "s10.txt"));
+  CHECK_FALSE(app::natural_less("s10.txt", "s4.txt"));
+  CHECK(app::natural_less("maze2x", "maze10"));
+  CHECK(app::natural_less("a", "b"));
+  CHECK(app::natural_less("a", "a1"));
+  CHECK(app::natural_less("s04", "s4") != app::natural_less("s4", "s04"));  // strict: leading zeros decide last
+  CHECK_FALSE(app::natural_less("s4", "s4"));
+  CHECK(app::natural_less("x9y", "x10a"));
+  CHECK(app::natural_less("x10a", "x10b"));
+}
+
+namespace {
+
+void write_bytes(const fs::path &path, const std::string &bytes) {
+  std::FILE *file = std::fopen(path.c_str(), "wb");
+  REQUIRE(file != nullptr);
+  std::fwrite(bytes.data(), 1, bytes.size(), file);
+  std::fclose(file);
+}
+
+// A folder as users keep them: mazes (one broken), a README and a picture.
+struct MazeFolder {
+  TempDir dir;
+  MazeFolder() {
+    fs::create_directories(dir.path);
+    const std::string lab = read_all(std::string(WORLDS_DIR) + "/lab4x4.txt");
+    write_bytes(dir.path / "s10.txt", lab);
+    write_bytes(dir.path / "s4.txt", lab);
+    write_bytes(dir.path / "broken.num", read_all(std::string(TEST_DATA_DIR) + "/worlds/inconsistent.num"));
+    write_bytes(dir.path / "README.md", "# Mazes\nFrom the 2019 contest.\n");
+    write_bytes(dir.path / "photo.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  }
+  std::string operator/(const char *name) const { return (dir.path / name).string(); }
+};
+
+}  // namespace
+
+TEST_CASE("batch: a folder's maze files are rows, broken ones with their error; other files are skipped by name") {
+  const MazeFolder folder;
+  const app::WorldList list = app::expand_worlds({folder.dir.path.string()});
+  CHECK(list.worlds == std::vector<std::string>{folder / "broken.num", folder / "s4.txt", folder / "s10.txt"});
+  CHECK(list.skipped == std::vector<std::string>{folder / "README.md", folder / "photo.png"});
+
+  // A file named on the command line is a row whatever it is; a missing one too.
+  const std::string missing = folder / "missing.txt";
+  const app::WorldList named = app::expand_worlds({missing, folder / "README.md"});
+  CHECK(named.worlds == std::vector<std::string>{missing, folder / "README.md"});
+  CHECK(named.skipped.empty());
+
+  std::vector<std::string> worlds = list.worlds;
+  worlds.push_back(missing);
+  const std::vector<app::BatchItem> items = app::run_batch(lab_options(), worlds, 2, {});
+  REQUIRE(items.size() == 4);
+  CHECK_FALSE(items[0].ran);
+  CHECK(items[0].bad_input);
+  CHECK(items[0].error.find(folder / "broken.num" + ":25:11: error:") == 0);
+  CHECK(items[1].ok);
+  CHECK(items[2].ok);
+  CHECK_FALSE(items[3].ran);
+  CHECK(items[3].error.find("cannot read " + missing) != std::string::npos);
+  CHECK(app::batch_exit_status(items) == 1);
+
+  const std::vector<std::string> table = lines_of(app::format_batch_table(items, 1.0, list.skipped));
+  REQUIRE(table.size() == 6);
+  CHECK(table[0].ends_with("ms  end"));
+  CHECK(table[0].find("wall_accuracy") != std::string::npos);
+  CHECK(table[1].find(items[0].error) != std::string::npos);
+  CHECK(table[2].ends_with("  done"));
+  CHECK(table[4].find(items[3].error) != std::string::npos);
+  CHECK(table[5].find("total: 4 worlds, 2 ok, 2 failed;") == 0);
+  CHECK(table[5].ends_with("; 2 skipped, not mazes: " + (folder / "README.md") + ", " + (folder / "photo.png")));
+}
+
+TEST_CASE("batch: a run that ends incomplete or without progress is a failed row with its ending") {
+  app::BatchItem done;
+  done.world = "a.txt";
+  done.ran = done.ok = true;
+  done.summary.width = done.summary.height = 4;
+  app::BatchItem incomplete = done;
+  incomplete.world = "b.txt";
+  incomplete.ok = false;
+  incomplete.summary.reason = robot::EndReason::incomplete;
+  incomplete.summary.message = "3 of 16 reachable cells never visited";
+  const std::vector<std::string> table = lines_of(app::format_batch_table({done, incomplete}, 1.0));
+  CHECK(table[2].ends_with("  incomplete (3 of 16 reachable cells never visited)"));
+  CHECK(table[3].find("total: 2 worlds, 1 ok, 1 failed;") == 0);
+  CHECK(app::batch_exit_status({done, incomplete}) == 1);
+}
+
+namespace {
+int g_batch_polls = 0;
+bool interrupt_batch_after_100_polls() { return ++g_batch_polls > 100; }
+}  // namespace
+
+TEST_CASE("batch: Ctrl-C stops the run in flight and starts no other; the CSV holds the finished runs") {
+  const std::string lab = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  const std::string eight = std::string(WORLDS_DIR) + "/maze8x8.txt";
+  g_batch_polls = 0;
+  // One job: lab4x4 needs more than 100 steps, so the interrupt comes during its run.
+  const std::vector<app::BatchItem> items =
+      app::run_batch(lab_options(), {lab, eight, lab}, 1, {}, interrupt_batch_after_100_polls);
+  REQUIRE(items.size() == 3);
+  CHECK(items[0].interrupted);
+  CHECK(items[0].summary.steps == 100);  // one poll before it starts, then one a step
+  CHECK(items[1].interrupted);
+  CHECK_FALSE(items[1].ran);
+  CHECK(items[1].error == "not run (interrupted by Ctrl-C)");
+  CHECK(app::batch_exit_status(items) == 130);
+  CHECK(app::format_batch_csv(items) == "world,size,moves,coverage,wall_accuracy,ms,end,error\n");
+  const std::string table = app::format_batch_table(items, 1.0);
+  CHECK(table.find("total: 3 worlds, 0 ok, 0 failed, 3 interrupted;") != std::string::npos);
 }

@@ -379,8 +379,9 @@ struct CellController::Impl {
     s.min_range_m = lidar->getMinRange();
     s.max_range_m = lidar->getMaxRange();
     s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar->getHorizontalResolution()));
-    const mapping::LidarScan filtered = previous_scan.ranges.empty() ? scan_filter.apply(s)
-                                                                     : scan_filter.apply(s, previous_scan);
+    // A scan before in the same control step is the same reading, not a second look.
+    const bool second_look = !previous_scan.ranges.empty() && previous_scan_step < steps;
+    const mapping::LidarScan filtered = second_look ? scan_filter.apply(s, previous_scan) : scan_filter.apply(s);
     const std::size_t updated = mapping::integrate_scan(options.mapping, grid, filtered, c, model, update);
     if (has_pending) pending.subcells_updated += updated;
     // Kept for the next scan's filter: a short view past max range seen again from the same
@@ -388,6 +389,7 @@ struct CellController::Impl {
     previous_ranges.assign(s.ranges.begin(), s.ranges.end());
     previous_scan = s;
     previous_scan.ranges = previous_ranges;
+    previous_scan_step = steps;
   }
 
   bool unknown(const explore::WallQuery &walls, Cell c, Heading h) const {
@@ -414,15 +416,33 @@ struct CellController::Impl {
     if (const Motion s = rescan_while(unknown_side); s != Motion::ok) return s;
     for (const Heading h : mapping::kHeadings) {
       if (!unknown(walls, c, h)) continue;
+      const std::int64_t before_turn = steps;
       if (const Motion s = turn_to(h); s != Motion::ok) return s;
       facing = h;
       visits.record(c, facing);
-      scan(c);
+      if (steps > before_turn) scan(c);  // else: facing it already, scanned this step
       if (const Motion s = rescan_while([&] { return unknown(walls, c, h); }); s != Motion::ok) return s;
       const std::pair<Cell, Heading> side{c, h};
       if (unknown(walls, c, h) && grid.contains(mapping::neighbour(c, h)) &&
           std::ranges::find(unresolved, side) == unresolved.end()) {
         unresolved.push_back(side);
+      }
+    }
+    return Motion::ok;
+  }
+
+  // Lidar models: a side the grid calls open while the last scan, taken here, reads a wall
+  // on it (the cell model's reading: a return within the side plus a quarter cell) is
+  // scanned again until the grid agrees: a band freed by a faulty beam from afar (a spike
+  // passing its neighbours' test where their own beams were dropped) must not send the
+  // robot into the wall. Each scan adds one occupied update; max_rescans * 3 at most.
+  Motion confirm_open_sides(Cell c, const explore::WallQuery &walls) {
+    for (const Heading h : mapping::kHeadings) {
+      for (int attempt = 0; attempt < 3 * options.max_rescans && walls(c, h) == mapping::SideState::open &&
+                            mapping::read_cell_side(options.mapping, grid, previous_scan, c, h) == mapping::SideState::wall;
+           ++attempt) {
+        if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+        scan(c);
       }
     }
     return Motion::ok;
@@ -468,6 +488,7 @@ struct CellController::Impl {
       scan(cell);
       Motion s = Motion::ok;
       if (lidar != nullptr || ring) s = resolve_unknown_sides(cell, heading, walls);
+      if (s == Motion::ok && lidar != nullptr) s = confirm_open_sides(cell, walls);
       if (bump) s = probe_unknown_sides(cell, heading, walls);
       if (depth && new_cell) s = look_around(cell, heading);
       notify(observer, cell, heading, new_cell);
@@ -583,6 +604,7 @@ struct CellController::Impl {
   // The lidar's last raw scan (for the filter's repeated-view rule), its ranges owned here.
   mapping::LidarScan previous_scan;
   std::vector<float> previous_ranges;
+  std::int64_t previous_scan_step = 0;
   // Sides the robot looked at in every way it has and still does not know (cell, side).
   std::vector<std::pair<Cell, Heading>> unresolved;
 };

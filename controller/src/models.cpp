@@ -71,19 +71,27 @@ void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
   assert(grid.contains(c));
   const int mid = grid.k() / 2;
   update.mark_free(grid.index(c, LocalSubCell{mid, mid}));
-  const double margin_m = options.wall_margin * grid.geometry().cell_size_m;
   for (const Heading h : kHeadings) {
-    const auto beam = scan.beam_towards(yaw_rad(h));
-    if (!beam) continue;
-    const std::optional<float> median = scan.median_range(*beam, kCellModelHalfWindow_rad);
-    if (!median) continue;
-    const ReadingKind kind = scan.kind_of(*median);
-    const double range = *median;
-    const bool wall = kind == ReadingKind::hit &&
-                      range < distance_to_side(grid, scan.origin, c, h) + margin_m;
-    mark_cell_side(grid, c, h, wall, update);
+    const SideState side = read_cell_side(options, grid, scan, c, h);
+    if (side != SideState::unknown) mark_cell_side(grid, c, h, side == SideState::wall, update);
   }
 }
+
+}  // namespace
+
+SideState read_cell_side(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
+                         Cell c, Heading h) {
+  const auto beam = scan.beam_towards(yaw_rad(h));
+  if (!beam) return SideState::unknown;
+  const std::optional<float> median = scan.median_range(*beam, kCellModelHalfWindow_rad);
+  if (!median) return SideState::unknown;
+  const double margin_m = options.wall_margin * grid.geometry().cell_size_m;
+  const bool wall = scan.kind_of(*median) == ReadingKind::hit &&
+                    *median < distance_to_side(grid, scan.origin, c, h) + margin_m;
+  return wall ? SideState::wall : SideState::open;
+}
+
+namespace {
 
 // The two axes of a beam's walk: the path lengths to the next sub-cell boundary on x and y
 // (trace_ray's next_x, next_y), what one sub-cell adds to them, and the steps left on each

@@ -35,6 +35,7 @@
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/scan.hpp"
 #include "mapping/sensor_model.hpp"
+#include "mapping/walls.hpp"
 
 namespace mapping {
 
@@ -66,6 +67,15 @@ void validate(const MappingOptions &options);
 // stands in (used by the cell model; must be inside the grid).
 void mark_scan(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
                Cell robot_cell, ScanUpdate &update);
+
+// The cell model's reading of side h of cell c from a scan taken in c (the median of the
+// beams within 2.5 degrees of the side's direction): wall when it returns closer than the
+// side plus wall_margin cells, open when further or no return, unknown without a valid
+// beam. The cell model marks by it; the controller checks a side its grid calls open
+// against it before driving through (a wall seen from half a cell beats a band freed by a
+// faulty beam from afar).
+SideState read_cell_side(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
+                         Cell c, Heading h);
 
 // mark_scan, then update.apply(grid, model). Returns how many sub-cells were updated.
 std::size_t integrate_scan(const MappingOptions &options, OccupancyGrid &grid,
