@@ -142,4 +142,8 @@ TEST_CASE("course XML: arenas are not grid mazes, and a wall end off every latti
 <wall x1="0" y1="0" x2="0" y2="2"/><wall x1="2" y1="0" x2="2" y2="2"/>
 <wall x1="0.5" y1="1" x2="1.53" y2="1"/></world>)") ==
         "f.xml:4:23: error: wall end x2=1.53 is off the grid (cells of 0.5 m from (0, 0))");
+  CHECK(diagnostic_of(R"(<world cellSize="0.04">
+<wall x1="0" y1="0" x2="1" y2="0"/><wall x1="0" y1="1" x2="1" y2="1"/>
+<wall x1="0" y1="0" x2="0" y2="1"/><wall x1="1" y1="0" x2="1" y2="1"/></world>)") ==
+        "f.xml:1:8: error: wall width 0.012 m is not less than a quarter of the cell size 0.04 m");
 }

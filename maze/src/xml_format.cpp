@@ -187,18 +187,17 @@ Extent extent_of(const std::vector<Segment> &segments) {
   return e;
 }
 
+double length_of(const Segment &s) { return (s.x2 - s.x1) + (s.y2 - s.y1); }
+
 // "Not a grid maze" when the walls are thick for their length (an arena of obstacles).
 void check_thin_walls(const std::vector<Segment> &segments, double thickness_m, const Source &src) {
-  const Segment *shortest = &segments[0];
-  for (const Segment &s : segments) {
-    if ((s.x2 - s.x1) + (s.y2 - s.y1) < (shortest->x2 - shortest->x1) + (shortest->y2 - shortest->y1)) shortest = &s;
-  }
-  const double length = (shortest->x2 - shortest->x1) + (shortest->y2 - shortest->y1);
-  if (thickness_m >= kMaxThicknessPerCell * length) {
-    throw src.error(*shortest->element, "width",
+  const Segment &shortest = *std::min_element(
+      segments.begin(), segments.end(), [](const Segment &a, const Segment &b) { return length_of(a) < length_of(b); });
+  if (thickness_m >= kMaxThicknessPerCell * length_of(shortest)) {
+    throw src.error(*shortest.element, "width",
                     fmt::format("walls {} m thick, the shortest {} m long, are obstacles in an arena, not a grid "
                                 "maze (its walls are thinner than a quarter of a cell)",
-                                thickness_m, length));
+                                thickness_m, length_of(shortest)));
   }
 }
 
@@ -239,9 +238,10 @@ double infer_cell_size(const std::vector<Segment> &segments, const Extent &e, do
 
 double stated_cell_size(const tinyxml2::XMLElement &world, double thickness_m, const Source &src, double stated) {
   if (!(stated > 0.0)) throw src.error(world, "cellSize", fmt::format("cellSize must be positive, got {}", stated));
-  if (thickness_m >= stated) {
+  if (thickness_m >= kMaxThicknessPerCell * stated) {
     throw src.error(world, "cellSize",
-                    fmt::format("wall width {} m is not less than the cell size {} m", thickness_m, stated));
+                    fmt::format("wall width {} m is not less than a quarter of the cell size {} m", thickness_m,
+                                stated));
   }
   return stated;
 }

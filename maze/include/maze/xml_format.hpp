@@ -23,7 +23,8 @@
 //     inner walls on a 0.5 m lattice read as 10 x 10 cells of 0.5 m. A lattice no coarser than
 //     4 wall thicknesses is none: the first wall end that breaks it is "off the grid".
 //   - Not grid mazes: no <wall> (an open arena); walls at least a quarter as thick as the
-//     shortest wall is long (an arena of obstacles, e.g. width="1").
+//     shortest wall is long (an arena of obstacles, e.g. width="1"), or a quarter of a stated
+//     cellSize.
 //   - The first <pos> is the start: the cell holding it (a pose on a grid line or a lattice
 //     node: the cell ahead of it along its heading, else the one east or north of it), and
 //     theta (rad, 0 east, pi/2 north, default pi/2) rounded to N, E, S or W; no
