@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +16,8 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -59,7 +63,89 @@ std::optional<mapping::Cell> parse_cell(const std::string &text, const char *opt
   return mapping::Cell{x, y};
 }
 
+// "X,Y" (whole numbers, blanks around them allowed), or nothing.
+std::optional<maze::Cell> cell_of(std::string_view text) {
+  const auto integer = [](std::string_view t, int &value) {
+    while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
+    while (!t.empty() && t.back() == ' ') t.remove_suffix(1);
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    return !t.empty() && ec == std::errc() && end == t.data() + t.size();
+  };
+  const std::size_t comma = text.find(',');
+  maze::Cell c;
+  if (comma == std::string_view::npos || !integer(text.substr(0, comma), c.x) ||
+      !integer(text.substr(comma + 1), c.y)) {
+    return std::nullopt;
+  }
+  return c;
+}
+
+std::optional<maze::Side> heading_of(std::string_view text) {
+  constexpr std::pair<char, maze::Side> kHeadings[] = {
+      {'N', maze::Side::north}, {'E', maze::Side::east}, {'S', maze::Side::south}, {'W', maze::Side::west}};
+  for (const auto &[letter, side] : kHeadings) {
+    if (text.size() == 1 && std::toupper(static_cast<unsigned char>(text[0])) == letter) return side;
+  }
+  return std::nullopt;
+}
+
+// --start X,Y[,HEADING]: the cell, and the heading (north unless given).
+void parse_start(const std::string &text, maze::WorldOverrides &o) {
+  const std::size_t second = text.find(',', text.find(',') + 1);
+  o.start = cell_of(std::string_view(text).substr(0, second));
+  if (second != std::string::npos) {
+    const std::optional<maze::Side> heading = heading_of(std::string_view(text).substr(second + 1));
+    if (heading) o.start_heading = *heading;
+    if (!heading) o.start.reset();
+  }
+  if (!o.start) {
+    throw common::InputError(
+        fmt::format("--start must be X,Y or X,Y,HEADING with HEADING N, E, S or W (got '{}')", text));
+  }
+}
+
+// --goal X,Y[;X,Y...]
+std::vector<maze::Cell> parse_goals(const std::string &text) {
+  std::vector<maze::Cell> goals;
+  std::string_view rest(text);
+  for (;;) {
+    const std::size_t semicolon = rest.find(';');
+    const std::optional<maze::Cell> goal = cell_of(rest.substr(0, semicolon));
+    if (!goal) throw common::InputError(fmt::format("--goal must be X,Y or a list X,Y;X,Y;... (got '{}')", text));
+    goals.push_back(*goal);
+    if (semicolon == std::string_view::npos) return goals;
+    rest.remove_prefix(semicolon + 1);
+  }
+}
+
 }  // namespace
+
+void add_cell_size_option(CLI::App &command, WorldInput &input) {
+  command.add_option("--cell-size", input.cell_size,
+                     "M: cell side of a text or num world, metres (default 1; an XML world has its own)");
+}
+
+void add_world_options(CLI::App &command, WorldInput &input) {
+  add_cell_size_option(command, input);
+  command.add_option("--start", input.start, "X,Y[,HEADING]: start cell, facing N, E, S or W (default N)");
+  command.add_option("--goal", input.goal, "X,Y[;X,Y...]: goal cells, in place of the world's");
+}
+
+maze::WorldOverrides to_world_overrides(const WorldInput &input) {
+  maze::WorldOverrides o;
+  if (input.cell_size) {
+    const double m = *input.cell_size;
+    if (!(m > maze::kMinCellSize_m && m <= maze::kMaxCellSize_m)) {
+      throw common::InputError(fmt::format(
+          "--cell-size must be more than {} m (four walls of {} m) and at most {} m (got {})", maze::kMinCellSize_m,
+          maze::kDefaultWallThickness_m, maze::kMaxCellSize_m, m));
+    }
+    o.cell_size_m = m;
+  }
+  if (!input.start.empty()) parse_start(input.start, o);
+  if (!input.goal.empty()) o.goals = parse_goals(input.goal);
+  return o;
+}
 
 void add_mapping_run_options(CLI::App &run, RunInput &input) {
   run.add_option("--subcells", input.subcells, "K: sub-cells per cell side, odd, 3 to 9 (default 3)");
@@ -95,11 +181,13 @@ void add_mapping_run_options(CLI::App &run, RunInput &input) {
   run.add_option("--stuck-bumper", input.stuck_bumper, "fault: NAME, a bumper that always reads pressed");
   run.add_option("--wheel-slip", input.wheel_slip,
                  "fault: fraction of wheel turning that does not move the robot; encoders count it all (default 0)");
+  add_world_options(run, input.world_input);
 }
 
 RunOptions to_run_options(const RunInput &input) {
   RunOptions o;
   o.world = input.world;
+  o.world_overrides = to_world_overrides(input.world_input);
   o.subcells = input.subcells;
   o.model = mapping::parse_model(input.model);
   o.hit_depth = input.hit_depth;
@@ -322,7 +410,7 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
     in.quiet = true;
     RunOptions options = with_default_world(to_run_options(in));
     options.plan_only = true;
-    const maze::World world = maze::load_world(options.world);
+    const maze::World world = maze::load_world(options.world, options.world_overrides);
     if (!options.plan_from) options.plan_from = mapping::Cell{world.maze.start().x, world.maze.start().y};
     if (!options.plan_to) {
       if (world.maze.goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");

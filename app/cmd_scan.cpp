@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/run_cli.hpp"
 #include "commands.hpp"
 #include "maze/sim/scan.hpp"
 
@@ -23,6 +24,7 @@ struct ScanArgs {
   std::string robot = "hambot";
   std::optional<double> noise;
   std::uint64_t seed = common::kDefaultSeed;
+  WorldInput world_input;
 };
 
 }  // namespace
@@ -38,8 +40,9 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   scan->add_option("--robot", args->robot, "robot profile (default hambot)");
   scan->add_option("--noise", args->noise, "lidar noise as a fraction of max range (0: exact)");
   scan->add_option("--seed", args->seed, "seed of the noise");
+  add_cell_size_option(*scan, args->world_input);
   scan->callback([args, &context] {
-    const maze::Maze maze = load_world_reporting(args->world).maze;
+    const maze::Maze maze = load_world_reporting(args->world, to_world_overrides(args->world_input)).maze;
     maze::sim::ScanRequest request;
     request.pose = {args->pose[0], args->pose[1], args->pose[2]};
     request.robot = args->robot;

@@ -26,11 +26,12 @@ void add_demo_command(CLI::App &cli, CommandContext &context);
 void add_explain_command(CLI::App &cli, CommandContext &context);
 
 // Loads a world (maze::load_world) and prints its warnings on stderr, one a line.
-maze::World load_world_reporting(const std::string &path);
+maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides = {});
 
 // `show WORLD`: the canonical text map on stdout, nothing else.
 void add_show_command(CLI::App &cli, CommandContext &context);
-// `convert WORLD OUT`: writes OUT in the format its extension names (.txt, .num, .xml, .wbt).
+// `convert WORLD OUT [--cell-size M]`: writes OUT in the format its extension names (.txt,
+// .num, .xml, .wbt); what that format cannot hold is dropped with one warning on stderr.
 void add_convert_command(CLI::App &cli, CommandContext &context);
 // `generate WxH [--seed N] [--loops F] [--algorithm dfs|kruskal|prim] [-o FILE]`.
 void add_generate_command(CLI::App &cli, CommandContext &context);
@@ -44,7 +45,7 @@ RunOptions parse_run_options(int argc, const char *const *argv);
 void add_batch_command(CLI::App &cli, CommandContext &context);
 // The default world: worlds/lab4x4.txt from the working directory, else the source tree's.
 std::string default_world();
-// `scan WORLD --pose X Y YAW`: one lidar range image, `index angle_rad range_m` a line.
+// `scan WORLD --pose X Y YAW [--cell-size M]`: one lidar range image, `index angle_rad range_m` a line.
 void add_scan_command(CLI::App &cli, CommandContext &context);
 
 }  // namespace app

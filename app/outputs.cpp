@@ -224,6 +224,28 @@ std::string png_file(const mapping::OccupancyGrid &grid, const mapping::SensorMo
   return encode_png(canvas);
 }
 
+namespace {
+
+// --cell-size, --start, --goal as given (null when not).
+nlohmann::ordered_json world_overrides_json(const maze::WorldOverrides &w) {
+  const auto cell = [](maze::Cell c) { return nlohmann::ordered_json::array({c.x, c.y}); };
+  nlohmann::ordered_json j;
+  j["cell_size_m"] = w.cell_size_m ? nlohmann::ordered_json(*w.cell_size_m) : nlohmann::ordered_json(nullptr);
+  j["start"] = nullptr;
+  if (w.start) {
+    j["start"] = cell(*w.start);
+    j["start"].push_back(std::string(maze::to_string(w.start_heading)));
+  }
+  j["goals"] = nullptr;
+  if (w.goals) {
+    j["goals"] = nlohmann::ordered_json::array();
+    for (const maze::Cell g : *w.goals) j["goals"].push_back(cell(g));
+  }
+  return j;
+}
+
+}  // namespace
+
 std::string summary_json(const RunOptions &o, const RunSummary &s) {
   nlohmann::ordered_json j;
   j["world"] = o.world;
@@ -262,6 +284,7 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
                                 : nlohmann::ordered_json(nullptr);
   opt["max_steps"] = o.max_steps ? nlohmann::ordered_json(*o.max_steps) : nlohmann::ordered_json(nullptr);
   opt["out"] = o.out_dir;
+  opt["world"] = world_overrides_json(o.world_overrides);
   j["options"] = opt;
   return j.dump(2) + "\n";
 }

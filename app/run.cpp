@@ -252,7 +252,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
 }
 
 RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls) {
-  const maze::World world = maze::load_world(options.world);
+  const maze::World world = maze::load_world(options.world, options.world_overrides);
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
   return run_maze(options, world.maze, out, controls);
 }

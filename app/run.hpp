@@ -14,6 +14,7 @@
 #include "app/evaluation.hpp"
 #include "common/random.hpp"
 #include "maze/maze.hpp"
+#include "maze/world.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/models.hpp"
 #include "mapping/range_models.hpp"
@@ -24,6 +25,7 @@ namespace app {
 
 struct RunOptions {
   std::string world;                    // the path as the user gave it
+  maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
   int subcells = 3;                     // --subcells K
   mapping::ModelKind model = mapping::ModelKind::cell;
   int hit_depth = 0;                    // --hit-depth (ray model)
@@ -97,7 +99,7 @@ struct RunSummary {
   int speed_run_cells = 0;
 };
 
-// Loads options.world (its warnings go to stderr) and runs it with run_maze().
+// Loads options.world with options.world_overrides (its warnings go to stderr) and runs it with run_maze().
 // Throws common::InputError for unusable options or world files.
 RunSummary run_world(const RunOptions &options, std::ostream &out);
 // Likewise, with --step input, Ctrl-C and --animate. With out_dir set, the directory is

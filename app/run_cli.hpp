@@ -9,9 +9,26 @@
 #include <CLI/CLI.hpp>
 
 #include "app/run.hpp"
+#include "maze/world.hpp"
 #include "model_options.hpp"
 
 namespace app {
+
+// What a command may supply or override in the world it loads, as typed: --cell-size M
+// (text and num worlds), --start X,Y[,HEADING], --goal X,Y[;X,Y...].
+struct WorldInput {
+  std::optional<double> cell_size;
+  std::string start;
+  std::string goal;
+};
+
+// --cell-size alone (scan, convert), or with --start and --goal (run, compare, plan, batch).
+void add_cell_size_option(CLI::App &command, WorldInput &input);
+void add_world_options(CLI::App &command, WorldInput &input);
+
+// Checks and converts; throws common::InputError naming the bad option. Cells are checked
+// against the maze when it is loaded (maze::load_world).
+maze::WorldOverrides to_world_overrides(const WorldInput &input);
 
 // The run options as typed; to_run_options() checks and converts them once.
 struct RunInput {
@@ -40,12 +57,14 @@ struct RunInput {
   double spikes = 0.0;
   std::string stuck_bumper;
   double wheel_slip = 0.0;
+  WorldInput world_input;
 };
 
 // The mapping options run, batch, compare and plan take: --subcells --model --threshold
 // --pie-beta --pie-alpha --hit-depth --ignore-no-return --strategy --robot --seed --noise
 // --p-free --p-occ --prior --log-base --clamp --max-steps --dilate, and the faults
-// --dropout --spikes --stuck-bumper --wheel-slip.
+// --dropout --spikes --stuck-bumper --wheel-slip, and the world options --cell-size --start
+// --goal.
 void add_mapping_run_options(CLI::App &command, RunInput &input);
 
 // Checks and converts; throws common::InputError naming the bad option. world is left

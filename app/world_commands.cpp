@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "app/run_cli.hpp"
 #include "commands.hpp"
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
@@ -15,8 +16,8 @@
 
 namespace app {
 
-maze::World load_world_reporting(const std::string &path) {
-  maze::World world = maze::load_world(path);
+maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides) {
+  maze::World world = maze::load_world(path, overrides);
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
   return world;
 }
@@ -35,13 +36,18 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
   auto *cmd = cli.add_subcommand("convert", "Write a world in the format OUT's extension names");
   struct Args {
     std::string world, out;
+    WorldInput world_input;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
   cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
+  add_cell_size_option(*cmd, args->world_input);
   cmd->callback([args, &context] {
-    maze::format_for_output(args->out);  // a bad extension fails before any reading
-    maze::save_world(load_world_reporting(args->world).maze, args->out);
+    const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
+    const maze::WorldOverrides overrides = to_world_overrides(args->world_input);
+    const maze::Maze m = load_world_reporting(args->world, overrides).maze;
+    if (const auto dropped = maze::dropped_by(m, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+    maze::save_world(m, args->out);
     context.status = 0;
   });
 }

@@ -44,3 +44,23 @@ TEST_CASE("run command line: --max-steps and the fault options") {
     CHECK(e.diagnostic() == "error: --max-steps must be at least 1 (got 0)");
   }
 }
+
+TEST_CASE("run command line: --cell-size, --start X,Y[,HEADING] and --goal X,Y;X,Y") {
+  const app::RunOptions o = parse_run({"--cell-size", "0.5", "--start", "2, 1,e", "--goal", "3,3;0,3"});
+  CHECK(o.world_overrides.cell_size_m == std::optional<double>{0.5});
+  CHECK(o.world_overrides.start == std::optional<maze::Cell>{maze::Cell{2, 1}});
+  CHECK(o.world_overrides.start_heading == maze::Side::east);
+  CHECK(o.world_overrides.goals == std::optional<std::vector<maze::Cell>>{{{3, 3}, {0, 3}}});
+  const app::RunOptions plain = parse_run({"--start", "1,0"});
+  CHECK(plain.world_overrides.start_heading == maze::Side::north);
+  CHECK_FALSE(plain.world_overrides.goals.has_value());
+  CHECK_FALSE(plain.world_overrides.cell_size_m.has_value());
+  for (const char *bad : {"1,", ",1", "1,1,", "1,1,NE", "a,b", "1;1"}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(parse_run({"--start", bad}), common::InputError);
+  }
+  for (const char *bad : {"1,1;", ";1,1", "1,1,N", "1"}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(parse_run({"--goal", bad}), common::InputError);
+  }
+}

@@ -174,6 +174,7 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   CHECK(json.at("options").at("noise") == 0.0);
   CHECK(json.at("options").at("p_occ") == 0.6);
   CHECK(json.at("options").at("clamp").is_null());
+  CHECK(json.at("options").at("world").dump() == R"({"cell_size_m":null,"goals":null,"start":null})");
 
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());

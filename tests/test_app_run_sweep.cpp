@@ -212,6 +212,25 @@ void check_large_mazes(mapping::ModelKind model) {
         }
       }
     }
+// A course-style world (tests/data/worlds): 0.5 m cells, the start on a lattice node.
+void check_course_world_mapped(const std::string &name, mapping::ModelKind model, int k) {
+  app::RunOptions options;
+  options.world = std::string(TEST_DATA_DIR) + "/worlds/" + name;
+  options.model = model;
+  options.subcells = k;
+  options.quiet = true;
+  for (int seed = 1; seed <= 3; ++seed) {
+    options.seed = static_cast<std::uint64_t>(seed);
+    std::ostringstream sink;
+    const app::RunSummary s = app::run_world(options, sink);
+    CAPTURE(name);
+    CAPTURE(mapping::to_string(model));
+    CAPTURE(k);
+    CAPTURE(seed);
+    CAPTURE(s.message);
+    REQUIRE(s.reason == robot::EndReason::done);
+    CHECK(s.score.coverage_percent() == 100.0);
+    CHECK(s.score.wall_accuracy_percent() >= 99.9);
   }
 }
 
@@ -256,4 +275,33 @@ TEST_SUITE("acceptance") {
       CHECK(s.score.coverage_percent() == 100.0);
     }
   }
+}
+// Not in the acceptance suite: 24 runs of 64- and 100-cell mazes with the default noise.
+TEST_CASE("course XML: 0.5 m lattice worlds started on a node map fully with cell and ray at K 3 and 5") {
+  for (const char *name : {"course_lattice.xml", "course_frame_1m.xml"}) {
+    for (const auto model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+      for (const int k : {3, 5}) check_course_world_mapped(name, model, k);
+    }
+  }
+}
+
+// A num file has no goal: --goal gives floodfill one, --start moves the start (issue 15).
+TEST_CASE("num world: --goal 3,3 and --start give floodfill a goal it reaches") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/lab4x4.num";
+  options.strategy = explore::StrategyKind::floodfill;
+  options.quiet = true;
+  options.world_overrides.goals = std::vector<maze::Cell>{{3, 3}};
+  std::ostringstream sink;
+  const app::RunSummary s = app::run_world(options, sink);
+  CAPTURE(s.message);
+  CHECK(s.reason == robot::EndReason::done);
+  CHECK(s.reached_goal);
+  options.world_overrides.start = maze::Cell{3, 0};
+  options.world_overrides.start_heading = maze::Side::west;
+  options.world_overrides.cell_size_m = 0.5;
+  const app::RunSummary moved = app::run_world(options, sink);
+  CAPTURE(moved.message);
+  CHECK(moved.reason == robot::EndReason::done);
+  CHECK(moved.reached_goal);
 }

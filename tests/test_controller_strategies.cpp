@@ -230,7 +230,7 @@ TEST_CASE("strategy names and options") {
   CHECK(message([] { explore::parse_strategy("bfs"); }) ==
         "error: unknown --strategy 'bfs' (choose dfs, frontier, left-wall, right-wall or floodfill)");
   CHECK(message([] { explore::validate({StrategyKind::floodfill, 4, 4, {0, 0}, {}}); }) ==
-        "error: --strategy floodfill needs a goal cell (the world has none)");
+        "error: --strategy floodfill needs a goal cell (the world has none): give --goal X,Y");
   CHECK(message([] { explore::validate({StrategyKind::dfs, 4, 4, {4, 0}, {}}); }) ==
         "error: start cell (4,0) is outside the 4x4 maze");
   CHECK(message([] { explore::validate({StrategyKind::dfs, 4, 4, {0, 0}, {{0, 9}}}); }) ==

@@ -235,3 +235,55 @@ TEST_CASE("formats: the output format comes from the extension") {
           "error: cannot tell the output format of 'maze.png' from its extension: use .txt, .num, .xml or .wbt");
   }
 }
+
+TEST_CASE("formats: the output extension is read in any case") {
+  CHECK(maze::format_for_output("OUT.TXT") == maze::Format::text_map);
+  CHECK(maze::format_for_output("a/Lab.Xml") == maze::Format::xml);
+  CHECK(maze::format_for_output("b.NUM") == maze::Format::num);
+  CHECK(maze::format_for_output("c.WBT") == maze::Format::wbt);
+}
+
+TEST_CASE("formats: dropped_by says what a format cannot hold, in one line") {
+  const maze::Maze lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  CHECK(maze::dropped_by(lab, maze::Format::num) == "dropped the goal (3,3): a num file holds only the walls");
+  CHECK(!maze::dropped_by(lab, maze::Format::text_map));
+  CHECK(!maze::dropped_by(lab, maze::Format::xml));
+  CHECK(!maze::dropped_by(lab, maze::Format::wbt));
+  const maze::Maze course = maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_frame_1m.xml").maze;
+  CHECK(maze::dropped_by(course, maze::Format::num) ==
+        "dropped the start (5,3) facing west, the goal (1,6) and the size (cells of 0.5 m, walls 0.012 m thick, "
+        "origin (0, 0)): a num file holds only the walls");
+  CHECK(maze::dropped_by(course, maze::Format::text_map) ==
+        "dropped the start's heading (west) and the size (cells of 0.5 m, walls 0.012 m thick, origin (0, 0)): a "
+        "text map holds walls, start cell and goals; its start faces north");
+  CHECK(!maze::dropped_by(course, maze::Format::xml));
+  const maze::Maze num = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.num").maze;
+  CHECK(!maze::dropped_by(num, maze::Format::num));
+}
+
+TEST_CASE("formats: --cell-size, --start and --goal apply to the world loaded") {
+  maze::WorldOverrides o;
+  o.cell_size_m = 0.18;
+  o.start = maze::Cell{3, 0};
+  o.start_heading = maze::Side::west;
+  o.goals = std::vector<maze::Cell>{{2, 2}, {1, 1}};
+  const maze::World w = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.num", o);
+  CHECK(w.format == maze::Format::num);
+  CHECK(w.maze.cell_size_m() == 0.18);
+  CHECK(w.maze.wall_thickness_m() == maze::kDefaultWallThickness_m);
+  CHECK(w.maze.start() == maze::Cell{3, 0});
+  CHECK(w.maze.start_heading() == maze::Side::west);
+  CHECK(w.maze.goals() == std::vector<maze::Cell>{{1, 1}, {2, 2}});
+  // An XML world keeps its own size: the same one is accepted, another refused.
+  maze::WorldOverrides same;
+  same.cell_size_m = 0.5;
+  CHECK(maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_lattice.xml", same).maze.cell_size_m() == 0.5);
+  maze::WorldOverrides outside;
+  outside.goals = std::vector<maze::Cell>{{0, 0}, {4, 0}};
+  try {
+    (void)maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt", outside);
+    FAIL("no error");
+  } catch (const common::InputError &e) {
+    CHECK(e.diagnostic() == "error: --goal 4,0 is outside the 4x4 maze");
+  }
+}

@@ -85,5 +85,5 @@ TEST_CASE("hostile: XML with unknown elements, NaN, infinities, deep nesting") {
   std::string deep;
   for (int i = 0; i < 100000; ++i) deep += "<a>";
   CHECK(read("<world>" + deep).starts_with("h:1: error: not well-formed XML"));
-  CHECK(read("<world/>") == "h:1:1: error: no <wall> elements: a maze needs walls");
+  CHECK(read("<world/>") == "h:1:1: error: no <wall> elements: an open arena, not a grid maze; a maze needs walls");
 }

@@ -75,7 +75,7 @@ TEST_CASE("validation: every fault is named, with its place, to the letter") {
       {"open_edge.xml", ":3:1: error: cell (3,2): east wall missing on the maze's edge"},
       {"broken.xml", ":29: error: not well-formed XML: mismatched element"},
       {"root.xml", ":2:1: error: the root element is <maze>; expected <world>"},
-      {"no_walls.xml", ":1:1: error: no <wall> elements: a maze needs walls"},
+      {"no_walls.xml", ":1:1: error: no <wall> elements: an open arena, not a grid maze; a maze needs walls"},
   };
   for (const Case &c : cases) {
     CAPTURE(c.file);

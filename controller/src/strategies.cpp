@@ -103,7 +103,7 @@ void validate(const ExplorerOptions &o) {
     }
   }
   if (o.kind == StrategyKind::floodfill && o.goals.empty()) {
-    throw common::InputError("--strategy floodfill needs a goal cell (the world has none)");
+    throw common::InputError("--strategy floodfill needs a goal cell (the world has none): give --goal X,Y");
   }
 }
 

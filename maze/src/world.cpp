@@ -4,10 +4,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -55,6 +59,69 @@ mode_t file_mode() {
   return static_cast<mode_t>(0666 & ~mask);
 }
 
+
+void require_inside(const Maze &maze, Cell c, std::string_view option) {
+  if (!maze.contains(c)) {
+    throw common::InputError(
+        fmt::format("{} {},{} is outside the {}x{} maze", option, c.x, c.y, maze.width(), maze.height()));
+  }
+}
+
+void apply_cell_size(World &world, double cell_size_m) {
+  Maze &m = world.maze;
+  if (world.format != Format::xml) {
+    m.set_physical(cell_size_m, kDefaultWallThickness_m, 0.0, 0.0);
+    return;
+  }
+  if (std::abs(cell_size_m - m.cell_size_m()) > 1e-9 * m.cell_size_m()) {
+    throw common::InputError(fmt::format("--cell-size {} m disagrees with the {} m cells of {}; an XML world has "
+                                         "its own size: leave --cell-size out",
+                                         cell_size_m, m.cell_size_m(), world.file));
+  }
+}
+
+void apply(World &world, const WorldOverrides &o) {
+  if (o.cell_size_m) apply_cell_size(world, *o.cell_size_m);
+  if (o.start) {
+    require_inside(world.maze, *o.start, "--start");
+    world.maze.set_start(*o.start, o.start_heading);
+  }
+  if (o.goals) {
+    for (const Cell g : *o.goals) require_inside(world.maze, g, "--goal");
+    world.maze.clear_goals();
+    for (const Cell g : *o.goals) world.maze.add_goal(g);
+  }
+}
+
+bool default_physical(const Maze &m) {
+  return m.cell_size_m() == kDefaultCellSize_m && m.wall_thickness_m() == kDefaultWallThickness_m &&
+         m.origin_x_m() == 0.0 && m.origin_y_m() == 0.0;
+}
+
+std::string physical_of(const Maze &m) {
+  return fmt::format("the size (cells of {} m, walls {} m thick, origin ({}, {}))", m.cell_size_m(),
+                     m.wall_thickness_m(), m.origin_x_m(), m.origin_y_m());
+}
+
+std::string goals_of(const Maze &m) {
+  constexpr std::size_t kShown = 4;
+  std::string text = m.goals().size() == 1 ? "the goal " : "the goals ";
+  for (std::size_t i = 0; i < std::min(kShown, m.goals().size()); ++i) {
+    text += fmt::format("{}({},{})", i == 0 ? "" : ", ", m.goals()[i].x, m.goals()[i].y);
+  }
+  if (m.goals().size() > kShown) text += fmt::format(" and {} more", m.goals().size() - kShown);
+  return text;
+}
+
+std::string joined(const std::vector<std::string> &parts) {
+  std::string text;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    text += i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ";
+    text += parts[i];
+  }
+  return text;
+}
+
 }  // namespace
 
 Format detect_format(std::string_view text, const std::string &file) {
@@ -82,9 +149,13 @@ Maze read_world(std::string_view text, const std::string &file) {
   throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read Webots worlds");
 }
 
-World load_world(const std::string &path) {
+World load_world(const std::string &path) { return load_world(path, WorldOverrides{}); }
+
+World load_world(const std::string &path, const WorldOverrides &overrides) {
   const std::string text = read_file(path);
-  World world{read_world(text, path), path, {}};
+  const Format format = detect_format(text, path);
+  World world{read_world(text, path), path, {}, format};
+  apply(world, overrides);
   if (const auto summary = unreachable_summary(world.maze)) {
     world.warnings.push_back(fmt::format("{}: warning: {}", path, *summary));
   }
@@ -92,13 +163,37 @@ World load_world(const std::string &path) {
 }
 
 Format format_for_output(const std::string &path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char &c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".txt") return Format::text_map;
   if (ext == ".num") return Format::num;
   if (ext == ".xml") return Format::xml;
   if (ext == ".wbt") return Format::wbt;
   throw common::InputError(
       fmt::format("cannot tell the output format of '{}' from its extension: use .txt, .num, .xml or .wbt", path));
+}
+
+std::optional<std::string> dropped_by(const Maze &maze, Format format) {
+  std::vector<std::string> parts;
+  const char *holds = "";
+  if (format == Format::num) {
+    holds = "a num file holds only the walls";
+    if (maze.start() != Cell{0, 0} || maze.start_heading() != Side::north) {
+      parts.push_back(fmt::format("the start ({},{}) facing {}", maze.start().x, maze.start().y,
+                                  to_string(maze.start_heading())));
+    }
+    if (!maze.goals().empty()) parts.push_back(goals_of(maze));
+  } else if (format == Format::text_map) {
+    holds = "a text map holds walls, start cell and goals; its start faces north";
+    if (maze.start_heading() != Side::north) {
+      parts.push_back(fmt::format("the start's heading ({})", to_string(maze.start_heading())));
+    }
+  } else {
+    return std::nullopt;
+  }
+  if (!default_physical(maze)) parts.push_back(physical_of(maze));
+  if (parts.empty()) return std::nullopt;
+  return fmt::format("dropped {}: {}", joined(parts), holds);
 }
 
 std::string format_world(const Maze &maze, Format format, std::string_view title) {

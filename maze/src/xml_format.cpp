@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -140,7 +139,9 @@ std::vector<Segment> read_segments(const tinyxml2::XMLElement &world, const Sour
     if (upright && s.y1 > s.y2) std::swap(s.y1, s.y2);
     segments.push_back(s);
   }
-  if (segments.empty()) throw src.error(world, nullptr, "no <wall> elements: a maze needs walls");
+  if (segments.empty()) {
+    throw src.error(world, nullptr, "no <wall> elements: an open arena, not a grid maze; a maze needs walls");
+  }
   return segments;
 }
 
@@ -149,32 +150,113 @@ struct Grid {
   int width, height;
 };
 
-// The shortest wall's length: a maze with any interior wall has a wall one cell long.
-double infer_cell_size(const std::vector<Segment> &segments) {
-  double cell = std::numeric_limits<double>::infinity();
-  for (const Segment &s : segments) cell = std::min(cell, (s.x2 - s.x1) + (s.y2 - s.y1));
-  return cell;
+// A grid maze's walls are thin: a wall at least a quarter as thick as a cell (or as the
+// shortest wall) makes an arena of obstacles, which this program cannot map cell by cell.
+constexpr double kMaxThicknessPerCell = 0.25;
+
+// How far a wall end may sit from a lattice line when the lattice is inferred: 1e-6 m, or
+// 1e-6 of the maze's extent when that is above 1 m (decimal files hold 0.1 as a rounded
+// binary number).
+constexpr double kLatticeTolerance = 1e-6;
+
+// The largest length dividing both a and b (>= 0) to within tol: Euclid on remainders, a
+// remainder within tol of 0 or of the divisor counting as none. 0 when both are 0.
+double common_divisor(double a, double b, double tol) {
+  if (a < b) std::swap(a, b);
+  while (b > tol) {
+    double r = std::fmod(a, b);
+    if (r > b - tol) r = 0.0;
+    a = b;
+    b = r;
+  }
+  return a;
 }
 
-Grid infer_grid(const std::vector<Segment> &segments, const Source &src, const tinyxml2::XMLElement &world) {
-  double min_x = segments[0].x1, min_y = segments[0].y1, max_x = min_x, max_y = min_y;
+struct Extent {
+  double min_x, min_y, max_x, max_y;
+};
+
+Extent extent_of(const std::vector<Segment> &segments) {
+  Extent e{segments[0].x1, segments[0].y1, segments[0].x1, segments[0].y1};
   for (const Segment &s : segments) {
-    min_x = std::min({min_x, s.x1, s.x2});
-    min_y = std::min({min_y, s.y1, s.y2});
-    max_x = std::max({max_x, s.x1, s.x2});
-    max_y = std::max({max_y, s.y1, s.y2});
+    e.min_x = std::min({e.min_x, s.x1, s.x2});
+    e.min_y = std::min({e.min_y, s.y1, s.y2});
+    e.max_x = std::max({e.max_x, s.x1, s.x2});
+    e.max_y = std::max({e.max_y, s.y1, s.y2});
   }
-  // The cell size the file states (cellSize, as write_xml writes it), else the shortest
-  // wall's length. Stated, a written maze reads back with its very cell size: lengths
-  // measured between written coordinates are off by a rounding error.
-  double cell = infer_cell_size(segments);
-  if (const std::optional<double> stated = number(world, "cellSize", src, false)) {
-    if (!(*stated > 0.0)) throw src.error(world, "cellSize", fmt::format("cellSize must be positive, got {}", *stated));
-    cell = *stated;
+  return e;
+}
+
+double length_of(const Segment &s) { return (s.x2 - s.x1) + (s.y2 - s.y1); }
+
+// "Not a grid maze" when the walls are thick for their length (an arena of obstacles).
+void check_thin_walls(const std::vector<Segment> &segments, double thickness_m, const Source &src) {
+  const Segment &shortest = *std::min_element(
+      segments.begin(), segments.end(), [](const Segment &a, const Segment &b) { return length_of(a) < length_of(b); });
+  if (thickness_m >= kMaxThicknessPerCell * length_of(shortest)) {
+    throw src.error(*shortest.element, "width",
+                    fmt::format("walls {} m thick, the shortest {} m long, are obstacles in an arena, not a grid "
+                                "maze (its walls are thinner than a quarter of a cell)",
+                                thickness_m, length_of(shortest)));
   }
-  Grid g{min_x, min_y, cell, 0, 0};
-  const double w = std::round((max_x - min_x) / g.cell);
-  const double h = std::round((max_y - min_y) / g.cell);
+}
+
+// The lattice of the wall ends: the largest length dividing every end's offset from the
+// origin (so every wall's length too), to within kLatticeTolerance. A lattice no coarser than
+// the walls are thick (see kMaxThicknessPerCell) means the walls are not on one: the error
+// names the first wall end that broke the lattice of the ones before it.
+double infer_cell_size(const std::vector<Segment> &segments, const Extent &e, double thickness_m,
+                       const Source &src) {
+  const double tol = kLatticeTolerance * std::max({1.0, e.max_x - e.min_x, e.max_y - e.min_y});
+  const double finest = thickness_m / kMaxThicknessPerCell;
+  double cell = 0.0;
+  for (const Segment &s : segments) {
+    const std::pair<const char *, double> ends[] = {{"x1", s.x1}, {"y1", s.y1}, {"x2", s.x2}, {"y2", s.y2}};
+    for (const auto &[name, v] : ends) {
+      const double offset = v - (name[0] == 'x' ? e.min_x : e.min_y);
+      if (offset <= tol) continue;
+      const double next = common_divisor(cell, offset, tol);
+      if (next > finest) {
+        cell = next;
+        continue;
+      }
+      if (cell == 0.0) {
+        throw src.error(*s.element, name,
+                        fmt::format("wall end {}={} is {} m from the origin ({}, {}): cells that small are no "
+                                    "wider than four walls of {} m",
+                                    name, v, offset, e.min_x, e.min_y, thickness_m));
+      }
+      throw src.error(*s.element, name,
+                      fmt::format("wall end {}={} is off the grid (cells of {} m from ({}, {}))", name, v, cell,
+                                  e.min_x, e.min_y));
+    }
+  }
+  // Measured over the longer side, the cell is as exact as the file: 5 / 10, not 0.49999...
+  const double span = std::max(e.max_x - e.min_x, e.max_y - e.min_y);
+  return span / std::round(span / cell);
+}
+
+double stated_cell_size(const tinyxml2::XMLElement &world, double thickness_m, const Source &src, double stated) {
+  if (!(stated > 0.0)) throw src.error(world, "cellSize", fmt::format("cellSize must be positive, got {}", stated));
+  if (thickness_m >= kMaxThicknessPerCell * stated) {
+    throw src.error(world, "cellSize",
+                    fmt::format("wall width {} m is not less than a quarter of the cell size {} m", thickness_m,
+                                stated));
+  }
+  return stated;
+}
+
+// The cell size the file states (cellSize, as write_xml writes it: a written maze reads back
+// with its very cell size), else the lattice of the wall ends.
+Grid infer_grid(const std::vector<Segment> &segments, double thickness_m, const Source &src,
+                const tinyxml2::XMLElement &world) {
+  const Extent e = extent_of(segments);
+  check_thin_walls(segments, thickness_m, src);
+  const std::optional<double> stated = number(world, "cellSize", src, false);
+  Grid g{e.min_x, e.min_y, 0.0, 0, 0};
+  g.cell = stated ? stated_cell_size(world, thickness_m, src, *stated) : infer_cell_size(segments, e, thickness_m, src);
+  const double w = std::round((e.max_x - e.min_x) / g.cell);
+  const double h = std::round((e.max_y - e.min_y) / g.cell);
   if (w < 1 || h < 1) throw src.error(world, nullptr, "the walls enclose no area: they all lie on one line");
   if (w > kMaxMazeSide || h > kMaxMazeSide) {
     throw src.error(world, nullptr,
@@ -217,12 +299,23 @@ void rasterize(const std::vector<Segment> &segments, const Grid &g, const Source
   }
 }
 
-// The cell holding the point, or an error when the point is outside the maze.
-Cell cell_at(const tinyxml2::XMLElement &e, const Grid &g, const Source &src, const char *what) {
+// A point's column (or row) index along one axis: the cell holding it; on a grid line (within
+// kGridTolerance) the cell on the `ahead` side of it (+1: east or north, -1: west or south).
+double index_along(double v, double origin, double cell, int ahead) {
+  const double k = (v - origin) / cell;
+  const double line = std::round(k);
+  if (std::abs(k - line) <= kGridTolerance) return ahead < 0 ? line - 1 : line;
+  return std::floor(k);
+}
+
+// The cell holding the point, or an error when the point is outside the maze. A point on a
+// grid line goes to the cell east or north of it unless `heading` points west or south.
+Cell cell_at(const tinyxml2::XMLElement &e, const Grid &g, const Source &src, const char *what,
+             Side heading = Side::north) {
   const double x = *number(e, "x", src, true);
   const double y = *number(e, "y", src, true);
-  const double i = std::floor((x - g.origin_x) / g.cell);
-  const double j = std::floor((y - g.origin_y) / g.cell);
+  const double i = index_along(x, g.origin_x, g.cell, heading == Side::west ? -1 : 1);
+  const double j = index_along(y, g.origin_y, g.cell, heading == Side::south ? -1 : 1);
   if (i < 0 || j < 0 || i >= g.width || j >= g.height) {
     throw src.error(e, "x",
                     fmt::format("{} ({}, {}) is outside the maze, which spans x {} to {} m and y {} to {} m", what, x,
@@ -249,8 +342,8 @@ void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, cons
   raw.start_where = src.at(world);
   if (const auto *starts = world.FirstChildElement("startPositions")) {
     if (const auto *pos = starts->FirstChildElement("pos")) {
-      raw.start = cell_at(*pos, g, src, "start");
       raw.start_heading = heading_of(*pos, src);
+      raw.start = cell_at(*pos, g, src, "start", raw.start_heading);
       raw.start_where = src.at(*pos, "x");
     }
   }
@@ -290,11 +383,7 @@ Maze read_xml(std::string_view text, const std::string &file) {
 
   double thickness_m = kDefaultWallThickness_m;
   const auto segments = read_segments(world, src, thickness_m);
-  const Grid g = infer_grid(segments, src, world);
-  if (thickness_m >= g.cell) {
-    throw src.error(*segments[0].element, "width",
-                    fmt::format("wall width {} m is not less than the cell size {} m", thickness_m, g.cell));
-  }
+  const Grid g = infer_grid(segments, thickness_m, src, world);
   RawMaze raw;
   raw.resize(g.width, g.height);
   rasterize(segments, g, src, raw);

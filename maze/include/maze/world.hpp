@@ -2,6 +2,7 @@
 // Worlds as files: reading one whatever its format (detected by content), writing one by the
 // output's extension, safely.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,7 +18,23 @@ struct World {
   Maze maze;
   std::string file;                   // the path as the user gave it
   std::vector<std::string> warnings;  // whole lines, "FILE: warning: ...", without '\n'
+  Format format = Format::text_map;   // the format it was read in
 };
+
+// What a command line supplies or overrides in the world it loads (--cell-size, --start,
+// --goal), checked where it is parsed; load_world applies it.
+struct WorldOverrides {
+  // Text and num worlds: cells of this size (m), walls kDefaultWallThickness_m, origin (0, 0).
+  // An XML world has its own size: one that differs by more than 1e-9 of it is an error.
+  std::optional<double> cell_size_m;
+  std::optional<Cell> start;           // replaces the file's start
+  Side start_heading = Side::north;    // with start
+  std::optional<std::vector<Cell>> goals;  // replace the file's goals
+};
+
+// The smallest and largest --cell-size: a cell wider than four default walls, and 1 km.
+inline constexpr double kMinCellSize_m = 4 * kDefaultWallThickness_m;
+inline constexpr double kMaxCellSize_m = 1000.0;
 
 // The input format by content: '<' first (after blanks) is XML, 'o' or '+' first a text map,
 // a digit first a num file. Throws common::InputError when it is none of these.
@@ -29,8 +46,17 @@ Maze read_world(std::string_view text, const std::string &file);
 // Reads, detects, validates; unreachable cells become a warning. Throws common::InputError
 // ("cannot read FILE: reason", or the fault's place in the file).
 World load_world(const std::string &path);
+// Likewise, then applies the overrides (before the unreachable-cells warning, which follows
+// the start). Throws common::InputError "--start 9,9 is outside the 4x4 maze" and the like.
+World load_world(const std::string &path, const WorldOverrides &overrides);
 
-// The output format by extension: .txt, .num, .xml, .wbt; throws common::InputError otherwise.
+// What writing the world in `format` would drop, as one line "FORMAT holds no ...: dropped
+// ...", or nothing when the format holds all of it (the text map keeps walls, start cell and
+// goals, not the heading of a start or the physical set-up; num keeps only the walls).
+std::optional<std::string> dropped_by(const Maze &maze, Format format);
+
+// The output format by extension, in any case (.txt, .TXT): .txt, .num, .xml, .wbt; throws
+// common::InputError otherwise.
 Format format_for_output(const std::string &path);
 
 // The maze in `format` (any, wbt included); `title` names the world inside a .wbt.

@@ -1,6 +1,6 @@
 #pragma once
-// Wall-segment XML, as used by Webots maze courses: walls are segments in metres on a
-// regular grid; cell size and origin are inferred from them.
+// Wall-segment XML, as used by Webots maze courses (FAIRIS-Lite): walls are segments in metres
+// on a regular lattice; cell size and origin are inferred from them.
 //
 //     <world>                                             y
 //       <wall x1="0" y1="0" x2="2" y2="0" width="0.012"/>  2 +-------+
@@ -16,11 +16,19 @@
 //
 //   - A wall is horizontal or vertical and runs between grid points; it may span several
 //     cells. `width` (m, default 0.012) is the wall thickness; all walls share one.
-//   - Origin: the smallest x and y of any wall end. Cell size: the shortest wall's length
-//     (write walls one cell side each, as write_xml does, and any maze reads back). Every
-//     wall end must then lie on that grid, else it is "off the grid".
-//   - The first <pos> is the start: its cell, and theta (rad, 0 east, pi/2 north, default
-//     pi/2) rounded to N, E, S or W; no <startPositions>: (0,0) facing north.
+//   - Origin: the smallest x and y of any wall end. Cell size: `<world cellSize="...">` when
+//     the file states it (write_xml does), else the lattice of the wall ends: the largest
+//     length dividing every end's offset from the origin (and so every wall's length), to
+//     within 1e-6 m (1e-6 of the maze's extent above 1 m). The course's 5 x 5 m frames with
+//     inner walls on a 0.5 m lattice read as 10 x 10 cells of 0.5 m. A lattice no coarser than
+//     4 wall thicknesses is none: the first wall end that breaks it is "off the grid".
+//   - Not grid mazes: no <wall> (an open arena); walls at least a quarter as thick as the
+//     shortest wall is long (an arena of obstacles, e.g. width="1"), or a quarter of a stated
+//     cellSize.
+//   - The first <pos> is the start: the cell holding it (a pose on a grid line or a lattice
+//     node: the cell ahead of it along its heading, else the one east or north of it), and
+//     theta (rad, 0 east, pi/2 north, default pi/2) rounded to N, E, S or W; no
+//     <startPositions>: (0,0) facing north. A run starts the robot at that cell's centre.
 //   - <goal x y> marks the cell holding that point. Other elements are ignored.
 
 #include <string>
