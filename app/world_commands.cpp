@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "app/webots_export.hpp"
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
 #include "maze/world.hpp"
@@ -35,13 +37,27 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
   auto *cmd = cli.add_subcommand("convert", "Write a world in the format OUT's extension names");
   struct Args {
     std::string world, out;
+    WebotsExport wbt;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
   cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
+  cmd->add_option("--robot", args->wbt.robot, ".wbt: the robot the world carries (maze_mapper robot lists them)")
+      ->capture_default_str();
+  cmd->add_option("--model", args->wbt.model, ".wbt: the controller's mapping model (default: cell with a lidar, "
+                                          "else bump with bumpers, else depth)");
+  cmd->add_option("--strategy", args->wbt.strategy, ".wbt: the controller's exploration strategy")->capture_default_str();
+  cmd->add_option("--subcells", args->wbt.subcells, ".wbt: the controller's sub-cells per cell side (K)")
+      ->capture_default_str();
   cmd->callback([args, &context] {
-    maze::format_for_output(args->out);  // a bad extension fails before any reading
-    maze::save_world(load_world_reporting(args->world).maze, args->out);
+    const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
+    const maze::Maze maze = load_world_reporting(args->world).maze;
+    if (format == maze::Format::wbt) {
+      maze::write_file_atomically(
+          args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));
+    } else {
+      maze::save_world(maze, args->out);
+    }
     context.status = 0;
   });
 }
