@@ -1,5 +1,7 @@
 #include "robot/console_main.hpp"
 
+#include <exception>
+
 #include <fmt/format.h>
 
 #include <webots/Robot.hpp>
@@ -44,6 +46,9 @@ int console_main(std::span<const std::string> args, std::ostream &out, std::ostr
   } catch (const common::InputError &e) {
     err << e.diagnostic() << '\n';
     return 2;
+  } catch (const std::exception &e) {
+    err << "error: " << e.what() << '\n';
+    return 1;
   }
 }
 

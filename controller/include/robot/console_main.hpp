@@ -12,8 +12,8 @@
 //   sim_time_s: 163.840
 //
 // Returns the exit status: 0 when the run ended done or at --max-steps, 1 when it made no
-// progress or the simulation ended first, 2 for an unusable argument or a missing device
-// (one line `error: ...` on err).
+// progress or the simulation ended first or something else failed (one line `error: ...`
+// on err), 2 for an unusable argument or a missing device (likewise).
 
 #include <ostream>
 #include <span>
