@@ -23,7 +23,7 @@ namespace webots {
 Device::Device(const std::string &name, embedded::Simulation &simulation, int index)
     : name_(name), simulation_(&simulation), index_(index) {}
 Device::~Device() = default;
-std::string Device::getName() const { return name_; }
+const std::string &Device::getName() const { return name_; }
 std::string Device::getModel() const { return "stand-in"; }
 
 Robot::Robot() : simulation_(nullptr) {}

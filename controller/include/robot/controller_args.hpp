@@ -15,7 +15,7 @@
 //   --pie-beta-rad=R  --pie-alpha=M  --pie-usable=F  --speed-run=true  --max-steps=N
 //   --wheel-radius=M  --axle=M  --lidar-noise=M   (range noise sigma, metres)
 //   --left-motor=NAME  --right-motor=NAME  --left-encoder=NAME  --right-encoder=NAME
-//   --imu=NAME  --gps=NAME  --lidar=NAME
+//   --imu=NAME  --gps=NAME (empty: the robot has none)  --lidar=NAME
 //   --bumper=ANGLE_RAD,OFFSET_M,NAME                       (repeated; name last, may hold ',')
 //   --range=ANGLE_RAD,OFFSET_M,MAX_M,APERTURE_RAD,ERROR,NAME (repeated)
 //
