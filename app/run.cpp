@@ -20,6 +20,7 @@
 #include "mapping/walls.hpp"
 #include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
+#include "robot/progress_printer.hpp"
 #include "app/outputs.hpp"
 #include "app/terminal.hpp"
 
@@ -54,39 +55,6 @@ robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
   return s;
 }
 
-// What a maze lab tells the robot's programmer: never the walls.
-robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
-                                            const maze::sim::RobotProfile &profile) {
-  robot::ControllerOptions c;
-  c.geometry.width_cells = maze.width();
-  c.geometry.height_cells = maze.height();
-  c.geometry.subcells = options.subcells;
-  c.geometry.cell_size_m = maze.cell_size_m();
-  c.geometry.origin = {maze.origin_x_m(), maze.origin_y_m()};
-  c.start = to_mapping(maze.start());
-  c.start_heading = to_heading(maze.start_heading());
-  for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
-  c.sensor = options.sensor;
-  c.mapping.kind = options.model;
-  c.mapping.hit_depth = options.hit_depth;
-  c.mapping.ignore_no_return = options.ignore_no_return;
-  c.strategy = options.strategy;
-  c.motion.wheel_radius_m = profile.wheel_radius_m;
-  c.motion.axle_m = profile.axle_m;
-  c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
-  if (!profile.lidars.empty()) {
-    const maze::sim::LidarSpec &lidar = profile.lidars.front();
-    c.devices.lidar = lidar.name;
-    // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
-    c.scan_filter.range_noise_m = options.noise.value_or(lidar.noise) * lidar.max_range_m;
-  }
-  c.speed_run = options.speed_run;
-  c.sensing = sensing_of(profile);
-  c.sensing.range_model = options.range_model;
-  if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
-  return c;
-}
-
 // The robot names that have what a model needs, for the error message.
 std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
   std::string names;
@@ -98,55 +66,6 @@ std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
   return names;
 }
 
-void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  const auto lidar = [](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); };
-  const auto bumpers = [](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); };
-  const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
-  bool (*has)(const maze::sim::RobotProfile &) = ranges;
-  const char *what = "range sensors";
-  if (mapping::uses_lidar(options.model)) {
-    has = lidar;
-    what = "a lidar";
-  } else if (options.model == mapping::ModelKind::bump) {
-    has = bumpers;
-    what = "bumpers";
-  }
-  if (!has(profile)) {
-    throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
-                                         profile.name, what, mapping::to_string(options.model),
-                                         what, robots_with(has)));
-  }
-}
-
-class ProgressPrinter {
- public:
-  ProgressPrinter(std::ostream &out, const render::MapStyle &style, int total_cells)
-      : out_(out), style_(style), total_cells_(total_cells) {}
-
-  void operator()(const robot::MoveReport &report) {
-    std::string text = render::format_status(static_cast<long>(report.step), report.cell,
-                                             report.heading, report.visits->count(), total_cells_);
-    text += '\n';
-    render::MapStyle style = style_;
-    if (style.color) {
-      const int k = report.grid->k();
-      style.robot = render::RobotMark{mapping::to_global(report.cell, {k / 2, k / 2}, k),
-                                      render::arrow(report.heading, style.ascii)};
-    }
-    text += render::render_map(*report.grid, *report.visits, style);
-    if (report.new_cell) {
-      text += fmt::format("cell ({},{}) log-odds, north row first:\n", report.cell.x, report.cell.y);
-      text += render::format_cell_matrix(*report.grid, report.cell);
-    }
-    text += '\n';
-    out_ << text;
-  }
-
- private:
-  std::ostream &out_;
-  render::MapStyle style_;
-  int total_cells_;
-};
 
 LearnedSide to_learned(mapping::SideState s) {
   switch (s) {
@@ -247,6 +166,64 @@ void judge_ending(const RunOptions &options, RunSummary &summary) {
 
 }  // namespace
 
+robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
+                                            const maze::sim::RobotProfile &profile) {
+  robot::ControllerOptions c;
+  c.geometry.width_cells = maze.width();
+  c.geometry.height_cells = maze.height();
+  c.geometry.subcells = options.subcells;
+  c.geometry.cell_size_m = maze.cell_size_m();
+  c.geometry.origin = {maze.origin_x_m(), maze.origin_y_m()};
+  c.start = to_mapping(maze.start());
+  c.start_heading = to_heading(maze.start_heading());
+  for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
+  c.sensor = options.sensor;
+  c.mapping.kind = options.model;
+  c.mapping.hit_depth = options.hit_depth;
+  c.mapping.ignore_no_return = options.ignore_no_return;
+  c.strategy = options.strategy;
+  c.motion.wheel_radius_m = profile.wheel_radius_m;
+  c.motion.axle_m = profile.axle_m;
+  c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
+  c.devices.left_motor = profile.left_motor;
+  c.devices.right_motor = profile.right_motor;
+  c.devices.left_encoder = profile.left_encoder;
+  c.devices.right_encoder = profile.right_encoder;
+  c.devices.imu = profile.imu;
+  c.devices.gps = profile.gps;
+  if (!profile.lidars.empty()) {
+    const maze::sim::LidarSpec &lidar = profile.lidars.front();
+    c.devices.lidar = lidar.name;
+    // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
+    c.scan_filter.range_noise_m = options.noise.value_or(lidar.noise) * lidar.max_range_m;
+  }
+  c.speed_run = options.speed_run;
+  c.sensing = sensing_of(profile);
+  c.sensing.range_model = options.range_model;
+  if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
+  return c;
+}
+
+void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
+  const auto lidar = [](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); };
+  const auto bumpers = [](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); };
+  const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
+  bool (*has)(const maze::sim::RobotProfile &) = ranges;
+  const char *what = "range sensors";
+  if (mapping::uses_lidar(options.model)) {
+    has = lidar;
+    what = "a lidar";
+  } else if (options.model == mapping::ModelKind::bump) {
+    has = bumpers;
+    what = "bumpers";
+  }
+  if (!has(profile)) {
+    throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
+                                         profile.name, what, mapping::to_string(options.model),
+                                         what, robots_with(has)));
+  }
+}
+
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
   return run_world(options, out, RunControls{});
 }
@@ -299,7 +276,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
                      AnimationOptions{options.fps, options.speed, terminal_size(controls.terminal_fd)});
   }
   robot::RunHooks hooks;
-  std::optional<ProgressPrinter> printer;
+  std::optional<robot::ProgressPrinter> printer;
   if (!options.quiet && !options.animate) {
     printer.emplace(out, style, truth.width() * truth.height());
   }

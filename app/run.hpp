@@ -14,6 +14,7 @@
 #include "app/evaluation.hpp"
 #include "common/random.hpp"
 #include "maze/maze.hpp"
+#include "maze/sim/profile.hpp"
 #include "maze/world.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/models.hpp"
@@ -112,6 +113,17 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
 // unusable options.
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls = {});
+
+// What a maze lab tells the robot's programmer (DESIGN §2), as run_maze gives it to the
+// controller and a .wbt's controllerArgs carry it: the maze's size, cell size, origin, start
+// and goals, the run's mapping options and the robot's description from its profile (wheels,
+// device names, sensor mounts) - never the walls. Not validated.
+robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
+                                            const maze::sim::RobotProfile &profile);
+
+// Throws common::InputError when the robot lacks what options.model reads (a lidar, bumpers
+// or range sensors), naming the robots that have it.
+void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile);
 
 // The step limit of a run without --max-steps: 1,000 control steps a cell, at least 100,000.
 std::int64_t max_steps_for(const maze::Maze &maze);

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "app/run_cli.hpp"
 #include "commands.hpp"
+#include "app/webots_export.hpp"
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
 #include "maze/world.hpp"
@@ -37,17 +39,30 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
   struct Args {
     std::string world, out;
     WorldInput world_input;
+    WebotsExport wbt;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
   cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
   add_cell_size_option(*cmd, args->world_input);
+  cmd->add_option("--robot", args->wbt.robot, ".wbt: the robot the world carries (maze_mapper robot lists them)")
+      ->capture_default_str();
+  cmd->add_option("--model", args->wbt.model, ".wbt: the controller's mapping model (default: cell with a lidar, "
+                                          "else bump with bumpers, else depth)");
+  cmd->add_option("--strategy", args->wbt.strategy, ".wbt: the controller's exploration strategy")->capture_default_str();
+  cmd->add_option("--subcells", args->wbt.subcells, ".wbt: the controller's sub-cells per cell side (K)")
+      ->capture_default_str();
   cmd->callback([args, &context] {
     const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
     const maze::WorldOverrides overrides = to_world_overrides(args->world_input);
-    const maze::Maze m = load_world_reporting(args->world, overrides).maze;
-    if (const auto dropped = maze::dropped_by(m, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
-    maze::save_world(m, args->out);
+    const maze::Maze maze = load_world_reporting(args->world, overrides).maze;
+    if (const auto dropped = maze::dropped_by(maze, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+    if (format == maze::Format::wbt) {
+      maze::write_file_atomically(
+          args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));
+    } else {
+      maze::save_world(maze, args->out);
+    }
     context.status = 0;
   });
 }

@@ -212,6 +212,9 @@ void check_large_mazes(mapping::ModelKind model) {
         }
       }
     }
+  }
+}
+
 // A course-style world (tests/data/worlds): 0.5 m cells, the start on a lattice node.
 void check_course_world_mapped(const std::string &name, mapping::ModelKind model, int k) {
   app::RunOptions options;
@@ -276,6 +279,7 @@ TEST_SUITE("acceptance") {
     }
   }
 }
+
 // Not in the acceptance suite: 24 runs of 64- and 100-cell mazes with the default noise.
 TEST_CASE("course XML: 0.5 m lattice worlds started on a node map fully with cell and ray at K 3 and 5") {
   for (const char *name : {"course_lattice.xml", "course_frame_1m.xml"}) {

@@ -101,7 +101,7 @@ struct CellController::Impl {
         range_sensors.push_back(require(robot.getDistanceSensor(mount.name), mount.name));
       }
     }
-    gps = robot.getGPS(d.gps);
+    gps = d.gps.empty() ? nullptr : robot.getGPS(d.gps);  // Webots warns about an unknown name
     time_step_ms = options.motion.time_step_ms > 0
                        ? options.motion.time_step_ms
                        : static_cast<int>(std::lround(robot.getBasicTimeStep()));

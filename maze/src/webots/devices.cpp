@@ -26,7 +26,7 @@ Device::Device(const std::string &name, embedded::Simulation &simulation, int in
 
 Device::~Device() = default;
 
-std::string Device::getName() const { return name_; }
+const std::string &Device::getName() const { return name_; }
 std::string Device::getModel() const { return simulation_->profile().name; }
 
 // ---- Robot ----

@@ -18,7 +18,7 @@ class Device {
   Device(const Device &) = delete;
   Device &operator=(const Device &) = delete;
 
-  std::string getName() const;
+  const std::string &getName() const;  // as Webots: a reference to the name it holds
   std::string getModel() const;
 
  protected:

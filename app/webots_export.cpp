@@ -1,0 +1,33 @@
+#include "app/webots_export.hpp"
+
+#include "app/run.hpp"
+#include "maze/wbt_format.hpp"
+#include "robot/controller_args.hpp"
+
+namespace app {
+
+namespace {
+
+mapping::ModelKind model_for(const WebotsExport &options, const maze::sim::RobotProfile &profile) {
+  if (!options.model.empty()) return mapping::parse_model(options.model);
+  if (!profile.lidars.empty()) return mapping::ModelKind::cell;
+  return profile.bumpers.empty() ? mapping::ModelKind::depth : mapping::ModelKind::bump;
+}
+
+}  // namespace
+
+std::string webots_world(const maze::Maze &maze, std::string_view title, const WebotsExport &options) {
+  const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
+  RunOptions run;
+  run.robot = profile.name;
+  run.subcells = options.subcells;
+  run.model = model_for(options, profile);
+  run.strategy = explore::parse_strategy(options.strategy);
+  require_sensors(run, profile);
+  const robot::ControllerOptions controller = controller_options(run, maze, profile);
+  robot::validate(controller);
+  const maze::WbtRobot robot{&profile, "maze_mapper_controller", robot::format_controller_args(controller)};
+  return maze::write_wbt(maze, title, robot);
+}
+
+}  // namespace app
