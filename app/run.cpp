@@ -20,6 +20,7 @@
 #include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
 #include "app/outputs.hpp"
+#include "app/profile_json.hpp"
 #include "app/terminal.hpp"
 
 namespace app {
@@ -73,6 +74,12 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.motion.wheel_radius_m = profile.wheel_radius_m;
   c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
+  c.devices.left_motor = profile.left_motor;
+  c.devices.right_motor = profile.right_motor;
+  c.devices.left_encoder = profile.left_encoder;
+  c.devices.right_encoder = profile.right_encoder;
+  c.devices.imu = profile.imu;
+  c.devices.gps = profile.gps;
   if (!profile.lidars.empty()) {
     const maze::sim::LidarSpec &lidar = profile.lidars.front();
     c.devices.lidar = lidar.name;
@@ -231,6 +238,18 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
 
 }  // namespace
 
+std::string_view default_robot(mapping::ModelKind model) {
+  switch (model) {
+    case mapping::ModelKind::cell:
+    case mapping::ModelKind::ray: return "hambot";
+    case mapping::ModelKind::bump:
+    case mapping::ModelKind::depth: return "bumper-depth";
+    case mapping::ModelKind::pie:
+    case mapping::ModelKind::cone: return "ir-ring";
+  }
+  return "hambot";
+}
+
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
   return run_world(options, out, RunControls{});
 }
@@ -244,7 +263,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
-  const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
   require_sensors(options, profile);
 
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);

@@ -41,8 +41,8 @@ namespace robot {
 struct DeviceNames {
   std::string left_motor = "left motor";
   std::string right_motor = "right motor";
-  std::string left_encoder = "left wheel sensor";
-  std::string right_encoder = "right wheel sensor";
+  std::string left_encoder = "left wheel encoder";  // FAIRIS-Lite HamBot's names
+  std::string right_encoder = "right wheel encoder";
   std::string imu = "imu";
   std::string gps = "gps";      // optional device: used when the robot has it
   std::string lidar = "lidar";
