@@ -77,17 +77,19 @@ void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &po
   }
 }
 
-float LidarModel::beam_range(const WallGrid &walls, double noise, const Pose &pose, int i,
+LidarModel::Viewpoint LidarModel::viewpoint(const WallGrid &walls, const Pose &pose) {
+  return {walls.cast_origin(pose.x_m, pose.y_m), std::cos(pose.yaw_rad), std::sin(pose.yaw_rad)};
+}
+
+float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
                              common::Rng &rng) const {
   const auto b = static_cast<std::size_t>(i);
   assert(b < cos_.size());
   const double sigma_m = noise * spec_.max_range_m;
   const double reach_m = spec_.max_range_m + 6.0 * sigma_m;
-  const double c = std::cos(pose.yaw_rad);
-  const double s = std::sin(pose.yaw_rad);
-  const double dx = c * cos_[b] - s * sin_[b];
-  const double dy = s * cos_[b] + c * sin_[b];
-  double range = walls.cast_from(walls.cast_origin(pose.x_m, pose.y_m), dx, dy, reach_m);
+  const double dx = from.cos_yaw * cos_[b] - from.sin_yaw * sin_[b];
+  const double dy = from.sin_yaw * cos_[b] + from.cos_yaw * sin_[b];
+  double range = walls.cast_from(from.origin, dx, dy, reach_m);
   if (sigma_m > 0.0) range += rng.normal(0.0, sigma_m);
   const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
   return in_range ? static_cast<float>(range) : std::numeric_limits<float>::infinity();

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -316,12 +318,21 @@ void Simulation::rotating_range_image(int device, DeviceState &state, const maze
   const std::int64_t steps_enabled = steps_ - state.enabled_at_step;
   const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
   const double noise = lidar_noise(spec);
+  // The viewpoints of the few steps the image holds, each computed once.
+  std::vector<std::pair<std::int64_t, maze::sim::LidarModel::Viewpoint>> viewpoints;
+  const auto viewpoint_at = [&](std::int64_t step) -> const maze::sim::LidarModel::Viewpoint & {
+    for (const auto &v : viewpoints) {
+      if (v.first == step) return v.second;
+    }
+    viewpoints.emplace_back(step, maze::sim::LidarModel::viewpoint(walls_, pose_at_step(step)));
+    return viewpoints.back().second;
+  };
   for (int i = 0; i < n; ++i) {
     const std::int64_t s = swept_at_step(spec, steps_enabled, i);
     if (s == 0) continue;
     const std::int64_t step = state.enabled_at_step + s;
     common::Rng rng = maze::sim::beam_rng(options_.seed, device, step, i);
-    const float range = model.beam_range(walls_, noise, pose_at_step(step), i, rng);
+    const float range = model.beam_range(walls_, noise, viewpoint_at(step), i, rng);
     state.ranges[static_cast<std::size_t>(i)] = faulty_beam(device, spec, step, i, range);
   }
 }

@@ -45,8 +45,15 @@ class LidarModel {
   // whether or not the beam returns; noise 0 draws none.
   void range_image(const WallGrid &walls, double noise, const Pose &pose, common::Rng &rng,
                    std::span<float> out) const;
-  // Beam i alone at pose, as range_image measures it, its noise drawn from rng.
-  float beam_range(const WallGrid &walls, double noise, const Pose &pose, int i,
+  // Where beams are cast from: a pose's cast origin and heading, computed once per pose.
+  struct Viewpoint {
+    WallGrid::CastOrigin origin;
+    double cos_yaw;
+    double sin_yaw;
+  };
+  static Viewpoint viewpoint(const WallGrid &walls, const Pose &pose);
+  // Beam i alone from a viewpoint, as range_image measures it, its noise drawn from rng.
+  float beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
                    common::Rng &rng) const;
 
  private:
