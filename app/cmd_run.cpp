@@ -24,6 +24,7 @@
 #include <fmt/format.h>
 
 #include "app/run.hpp"
+#include "app/profile_json.hpp"
 #include "app/run_cli.hpp"
 #include "app/terminal.hpp"
 #include "commands.hpp"
@@ -160,7 +161,9 @@ void add_mapping_run_options(CLI::App &run, RunInput &input) {
                "ray model: a beam with no return frees nothing (default: free up to max range)");
   run.add_option("--strategy", input.strategy,
                  "dfs (default), frontier, left-wall, right-wall or floodfill");
-  run.add_option("--robot", input.robot, "robot profile (default hambot)");
+  run.add_option("--robot", input.robot,
+                 "NAME or FILE.json: robot profile (`maze_mapper robot` lists them; default: hambot, "
+                 "bumper-depth for bump and depth, ir-ring for pie and cone)");
   run.add_option("--seed", input.seed, "seed of the sensor noise (default 42)")
       ->check(CLI::Validator(
           [](std::string &text) {
@@ -200,7 +203,8 @@ RunOptions to_run_options(const RunInput &input) {
   o.range_model.pie_contact_m = input.pie_alpha_m;
   mapping::validate(o.range_model);
   o.strategy = explore::parse_strategy(input.strategy);
-  o.robot = input.robot;
+  o.robot = input.robot.empty() ? std::string(default_robot(o.model)) : input.robot;
+  resolve_robot(o.robot);  // a bad profile file fails here, before any world is read
   o.seed = input.seed;
   if (input.noise && !(*input.noise >= 0.0 && *input.noise <= 1.0)) {
     throw common::InputError(

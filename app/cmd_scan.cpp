@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/run_cli.hpp"
+#include "app/profile_json.hpp"
 #include "commands.hpp"
 #include "maze/sim/scan.hpp"
 
@@ -37,7 +38,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   scan->add_option("--pose", args->pose, "X Y YAW: position (m, world frame) and heading (rad)")
       ->expected(3)
       ->required();
-  scan->add_option("--robot", args->robot, "robot profile (default hambot)");
+  scan->add_option("--robot", args->robot, "NAME or FILE.json: robot profile with a lidar (default hambot)");
   scan->add_option("--noise", args->noise, "lidar noise as a fraction of max range (0: exact)");
   scan->add_option("--seed", args->seed, "seed of the noise");
   add_cell_size_option(*scan, args->world_input);
@@ -46,6 +47,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
     maze::sim::ScanRequest request;
     request.pose = {args->pose[0], args->pose[1], args->pose[2]};
     request.robot = args->robot;
+    if (names_a_profile_file(args->robot)) request.profile = resolve_robot(args->robot);
     request.noise = args->noise;
     request.seed = args->seed;
     std::cout << maze::sim::format_scan(maze, request);

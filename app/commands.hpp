@@ -47,5 +47,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context);
 std::string default_world();
 // `scan WORLD --pose X Y YAW [--cell-size M]`: one lidar range image, `index angle_rad range_m` a line.
 void add_scan_command(CLI::App &cli, CommandContext &context);
+// `robot [NAME|FILE.json]`: the built-in profiles, one a line, or one profile as JSON.
+void add_robot_command(CLI::App &cli, CommandContext &context);
 
 }  // namespace app

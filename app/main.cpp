@@ -37,6 +37,7 @@ int main(int argc, char **argv) {
   app::add_convert_command(cli, context);
   app::add_generate_command(cli, context);
   app::add_scan_command(cli, context);
+  app::add_robot_command(cli, context);
 
   try {
     if (argc <= 1) {

@@ -22,6 +22,7 @@
 #include "render/ascii_map.hpp"
 #include "robot/progress_printer.hpp"
 #include "app/outputs.hpp"
+#include "app/profile_json.hpp"
 #include "app/terminal.hpp"
 
 namespace app {
@@ -224,6 +225,18 @@ void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &p
   }
 }
 
+std::string_view default_robot(mapping::ModelKind model) {
+  switch (model) {
+    case mapping::ModelKind::cell:
+    case mapping::ModelKind::ray: return "hambot";
+    case mapping::ModelKind::bump:
+    case mapping::ModelKind::depth: return "bumper-depth";
+    case mapping::ModelKind::pie:
+    case mapping::ModelKind::cone: return "ir-ring";
+  }
+  return "hambot";
+}
+
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
   return run_world(options, out, RunControls{});
 }
@@ -237,7 +250,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
-  const maze::sim::RobotProfile &profile = maze::sim::find_profile(options.robot);
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
   require_sensors(options, profile);
 
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);

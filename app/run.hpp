@@ -10,6 +10,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "app/evaluation.hpp"
 #include "common/random.hpp"
@@ -34,7 +35,7 @@ struct RunOptions {
   std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
   mapping::RangeModelOptions range_model;  // --pie-beta, --pie-alpha (pie model)
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
-  std::string robot = "hambot";
+  std::string robot = "hambot";         // --robot: a built-in profile's name or a FILE.json
   std::uint64_t seed = common::kDefaultSeed;
   std::optional<double> noise;          // --noise: lidar noise as a fraction of max range
   mapping::SensorModelOptions sensor;
@@ -63,6 +64,10 @@ struct RunOptions {
   std::string stuck_bumper;  // --stuck-bumper
   double wheel_slip = 0.0;   // --wheel-slip
 };
+
+// The robot a model runs on when --robot is not given: hambot for the lidar models (cell,
+// ray), bumper-depth for bump and depth, ir-ring for pie and cone.
+std::string_view default_robot(mapping::ModelKind model);
 
 // What a run reads besides its options (all optional).
 struct RunControls {

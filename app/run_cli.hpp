@@ -41,7 +41,7 @@ struct RunInput {
   std::optional<double> threshold;
   double pie_beta_deg = 10.0;
   double pie_alpha_m = mapping::RangeModelOptions{}.pie_contact_m;
-  std::string robot = "hambot";
+  std::string robot;  // empty: the model's default robot (default_robot)
   std::uint64_t seed = common::kDefaultSeed;
   std::optional<double> noise;
   ModelOptionsInput sensor;

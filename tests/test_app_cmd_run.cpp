@@ -5,12 +5,14 @@
 #include <doctest/doctest.h>
 
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "app/commands.hpp"
 #include "app/run.hpp"
 #include "common/error.hpp"
+#include "maze/world.hpp"
 
 namespace {
 
@@ -62,5 +64,34 @@ TEST_CASE("run command line: --cell-size, --start X,Y[,HEADING] and --goal X,Y;X
   for (const char *bad : {"1,1;", ";1,1", "1,1,N", "1"}) {
     CAPTURE(bad);
     CHECK_THROWS_AS(parse_run({"--goal", bad}), common::InputError);
+  }
+}
+
+TEST_CASE("run command line: each model's default robot, and a profile file names a path") {
+  CHECK(parse_run({}).robot == "hambot");
+  CHECK(parse_run({"--model", "ray"}).robot == "hambot");
+  CHECK(parse_run({"--model", "bump"}).robot == "bumper-depth");
+  CHECK(parse_run({"--model", "depth"}).robot == "bumper-depth");
+  CHECK(parse_run({"--model", "pie"}).robot == "ir-ring");
+  CHECK(parse_run({"--model", "cone"}).robot == "ir-ring");
+  CHECK(parse_run({"--model", "cone", "--robot", "sonar-ring"}).robot == "sonar-ring");
+  CHECK_THROWS_WITH_AS(parse_run({"--robot", "missing.json"}),
+                       "cannot read missing.json: No such file or directory", common::InputError);
+}
+
+TEST_CASE("micromouse maps lab4x4 at 0.18 m cells with 12 mm walls (cell and ray models)") {
+  maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  m.set_physical(0.18, 0.012, 0.0, 0.0);
+  for (const mapping::ModelKind model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+    app::RunOptions options;
+    options.robot = "micromouse";
+    options.model = model;
+    options.quiet = true;
+    std::ostringstream sink;
+    const app::RunSummary s = app::run_maze(options, m, sink);
+    CAPTURE(mapping::to_string(model));
+    CHECK(s.reason == robot::EndReason::done);
+    CHECK(s.score.coverage_percent() == 100.0);
+    CHECK(s.score.wall_accuracy_percent() == 100.0);
   }
 }

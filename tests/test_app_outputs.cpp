@@ -179,7 +179,9 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());
   CHECK(csv[0] == "time_s,x_m,y_m,yaw_rad,cell_x,cell_y,action,subcells_updated");
-  CHECK(csv[1] == "0.032,0.5000,0.5000,1.5708,0,0,start,8");
+  // hambot's lidar rotates at 12 Hz: the first scan waits a revolution (3 steps) at rest.
+  CHECK(csv[1] == "0.032,0.5000,0.5000,1.5708,0,0,start,0");
+  CHECK(csv[4] == "0.128,0.5000,0.5000,1.5708,0,0,rest,8");
   std::size_t updated = 0;
   for (std::size_t i = 1; i < csv.size(); ++i) updated += std::stoul(csv[i].substr(csv[i].rfind(',') + 1));
   CHECK(static_cast<std::int64_t>(csv.size()) - 1 == summary.steps);

@@ -139,7 +139,7 @@ TEST_CASE("ControllerOptions: the defaults are the hambot's and valid") {
   CHECK(error_of(o) == "");
   CHECK(o.motion.wheel_radius_m == 0.045);
   CHECK(o.motion.axle_m == 0.184);
-  CHECK(o.devices.left_encoder == "left wheel sensor");
+  CHECK(o.devices.left_encoder == "left wheel encoder");
   CHECK(o.devices.lidar == "lidar");
 }
 

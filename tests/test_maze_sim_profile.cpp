@@ -1,25 +1,101 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
 
-TEST_CASE("profiles: hambot is the default and has the course's devices") {
+// FAIRIS-Lite's HamBot.proto and hambot.py (biorobaw/FAIRIS-Lite, WebotsSim/protos/HamBot/).
+TEST_CASE("profiles: hambot is the default and is the course robot exactly") {
   const maze::sim::RobotProfile &p = maze::sim::default_profile();
   CHECK(p.name == "hambot");
   CHECK(p.wheel_radius_m == 0.045);
   CHECK(p.axle_m == 0.184);
+  CHECK(p.max_wheel_velocity_rad_s == 18.0);
+  CHECK(p.left_motor == "left motor");
+  CHECK(p.right_motor == "right motor");
+  CHECK(p.left_encoder == "left wheel encoder");
+  CHECK(p.right_encoder == "right wheel encoder");
+  CHECK(p.imu == "imu");
+  CHECK(p.gps == "gps");
   REQUIRE(p.lidars.size() == 1);
   CHECK(p.lidars[0].name == "lidar");
   CHECK(p.lidars[0].horizontal_resolution == 360);
-  CHECK(p.lidars[0].min_range_m == 0.05);
-  CHECK(p.lidars[0].max_range_m == 12.0);
+  CHECK(p.lidars[0].fov_rad == 2.0 * std::numbers::pi);
+  CHECK(p.lidars[0].min_range_m == 0.07);
+  CHECK(p.lidars[0].max_range_m == 3.0);
   CHECK(p.lidars[0].noise == 0.000833);
-  CHECK(p.bumpers.size() == 3);
-  CHECK(p.left_motor == "left motor");
-  CHECK(p.right_encoder == "right wheel sensor");
+  CHECK(p.lidars[0].frequency_hz == 12.0);
+  CHECK(p.bumpers.empty());
+  CHECK(p.distance_sensors.empty());
+}
+
+TEST_CASE("profiles: hambot-12m is hambot with a 12 m lidar; micromouse fits a 0.18 m cell") {
+  maze::sim::RobotProfile long_range = maze::sim::find_profile("hambot-12m");
+  CHECK(long_range.lidars.at(0).max_range_m == 12.0);
+  long_range.lidars[0].max_range_m = 3.0;
+  long_range.name = "hambot";
+  long_range.description = maze::sim::default_profile().description;
+  CHECK(long_range == maze::sim::default_profile());
+
+  const maze::sim::RobotProfile &mouse = maze::sim::find_profile("micromouse");
+  const double between_walls_m = 0.18 - 0.012;
+  CHECK(2.0 * mouse.body_radius_m < between_walls_m / 2.0);  // room to turn and to miss
+  CHECK(mouse.axle_m < 2.0 * mouse.body_radius_m);
+  REQUIRE(mouse.lidars.size() == 1);
+  CHECK(mouse.lidars[0].frequency_hz == 0.0);
+  CHECK(mouse.lidars[0].min_range_m < between_walls_m / 2.0);  // sees the walls of its own cell
+  CHECK(mouse.lidars[0].max_range_m == 1.0);
+}
+
+TEST_CASE("profiles: every built-in is valid") {
+  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) {
+    CAPTURE(p.name);
+    CHECK_NOTHROW(maze::sim::validate_profile(p));
+  }
+}
+
+namespace {
+
+std::string validation_error(const maze::sim::RobotProfile &p) {
+  try {
+    maze::sim::validate_profile(p);
+  } catch (const common::InputError &e) {
+    return e.diagnostic();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("validate_profile: the first bad field by its key path") {
+  maze::sim::RobotProfile p = maze::sim::default_profile();
+  p.lidars[0].max_range_m = 0.05;
+  CHECK(validation_error(p) == "error: lidars[0].max_range_m must be greater than min_range_m (got 0.05 <= 0.07)");
+  p = maze::sim::default_profile();
+  p.lidars[0].fov_rad = 7.0;
+  CHECK(validation_error(p) == "error: lidars[0].fov_rad must be at most 2 pi (got 7)");
+  p = maze::sim::default_profile();
+  p.lidars[0].frequency_hz = -1.0;
+  CHECK(validation_error(p) == "error: lidars[0].frequency_hz must be a finite number >= 0 (got -1)");
+  p = maze::sim::default_profile();
+  p.wheel_radius_m = 0.0;
+  CHECK(validation_error(p) == "error: wheel_radius_m must be a positive number (got 0)");
+  p = maze::sim::default_profile();
+  p.gps = "imu";
+  CHECK(validation_error(p) == "error: gps 'imu' names a second device");
+  p = maze::sim::default_profile();
+  p.left_encoder.clear();
+  CHECK(validation_error(p) == "error: left_encoder must name a device");
+  p = maze::sim::find_profile("ir-ring");
+  p.distance_sensors[2].lookup_table[1].distance_m = 0.0;
+  CHECK(validation_error(p) ==
+        "error: distance_sensors[2].lookup_table[1].distance_m must be greater than the row before's (got 0 <= 0)");
+  p = maze::sim::find_profile("bumper-depth");
+  p.bumpers[1].half_arc_rad = 0.0;
+  CHECK(validation_error(p) == "error: bumpers[1].half_arc_rad must be a positive number (got 0)");
 }
 
 TEST_CASE("profiles: the ring and depth robots carry the course's cone numbers") {
@@ -45,7 +121,8 @@ TEST_CASE("find_profile: an unknown name lists the known ones") {
     FAIL("no error");
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() ==
-          "error: unknown robot 'roomba' (known robots: hambot, bumper-depth, ir-ring, sonar-ring)");
+          "error: unknown robot 'roomba' (known robots: hambot, hambot-12m, bumper-depth, ir-ring, "
+          "sonar-ring, micromouse)");
   }
 }
 

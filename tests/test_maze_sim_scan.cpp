@@ -40,14 +40,17 @@ TEST_CASE("format_scan: index, angle and range a line, inf for no return") {
 
 TEST_CASE("format_scan: the noise is the simulation's first reading with the same seed") {
   maze::Maze m(4, 4);
+  maze::sim::RobotProfile fixed = maze::sim::find_profile("hambot-12m");
+  fixed.lidars[0].frequency_hz = 0.0;  // a fixed lidar reads at once, one stream per step
   maze::sim::ScanRequest request;
+  request.profile = fixed;
   request.pose = {1.5, 2.5, 0.7};
   request.seed = 99;
   const std::vector<std::string> out = lines(maze::sim::format_scan(m, request));
   maze::sim::SimulationOptions o;
   o.seed = 99;
   o.start = request.pose;
-  webots::embedded::Simulation sim(m, maze::sim::default_profile(), o);
+  webots::embedded::Simulation sim(m, fixed, o);
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   const float *ranges = lidar->getRangeImage();
@@ -76,7 +79,7 @@ TEST_CASE("format_scan: bad poses and robots are errors") {
   request.pose = {0.5, 0.5, 0.0};
   request.robot = "ir-ring";
   CHECK_THROWS_WITH_AS(maze::sim::format_scan(m, request),
-                       "robot 'ir-ring' has no lidar (robots with one: hambot)",
+                       "robot 'ir-ring' has no lidar (robots with one: hambot, hambot-12m, micromouse)",
                        common::InputError);
   request.robot = "nope";
   CHECK_THROWS_AS(maze::sim::format_scan(m, request), common::InputError);

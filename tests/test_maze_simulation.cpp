@@ -38,7 +38,18 @@ maze::sim::SimulationOptions at(double x, double y, double yaw) {
   return o;
 }
 
-const maze::sim::RobotProfile &hambot() { return maze::sim::default_profile(); }
+// The simulator's test robot: hambot's body, wheels and devices with a fixed 12 m lidar (the
+// seed set-ups') and bumper-depth's three bumpers; hambot itself rotates a 3 m lidar and has
+// no bumpers (the rotating lidar has its own tests below).
+const maze::sim::RobotProfile &hambot() {
+  static const maze::sim::RobotProfile p = [] {
+    maze::sim::RobotProfile r = maze::sim::default_profile();
+    r.lidars[0] = {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0};
+    r.bumpers = maze::sim::find_profile("bumper-depth").bumpers;
+    return r;
+  }();
+  return p;
+}
 
 void drive(webots::Robot &robot, double left_rad_s, double right_rad_s) {
   webots::Motor *l = robot.getMotor("left motor");
@@ -61,12 +72,12 @@ TEST_CASE("Simulation: devices by name and kind, as Webots' Robot::get*") {
   CHECK(robot.getLidar("lidar") != nullptr);
   CHECK(robot.getInertialUnit("imu") != nullptr);
   CHECK(robot.getGPS("gps") != nullptr);
-  CHECK(robot.getPositionSensor("left wheel sensor") != nullptr);
+  CHECK(robot.getPositionSensor("left wheel encoder") != nullptr);
   CHECK(robot.getTouchSensor("bumper left") != nullptr);
   CHECK(robot.getLidar("gps") == nullptr);  // wrong kind
   CHECK(robot.getMotor("no such motor") == nullptr);
   CHECK(robot.getDevice("gps")->getName() == "gps");
-  CHECK(robot.getMotor("left motor")->getMaxVelocity() == 25.0);
+  CHECK(robot.getMotor("left motor")->getMaxVelocity() == 18.0);
 }
 
 TEST_CASE("Robot(): attaches to the current simulation, and fails without one") {
@@ -175,7 +186,7 @@ TEST_CASE("Driving: 1 m straight at a set wheel speed ends on the analytic pose"
   corridor.set_start({0, 0}, maze::Side::east);
   Simulation sim(corridor, hambot(), exact());
   webots::Robot &robot = sim.robot();
-  webots::PositionSensor *left = robot.getPositionSensor("left wheel sensor");
+  webots::PositionSensor *left = robot.getPositionSensor("left wheel encoder");
   webots::GPS *gps = robot.getGPS("gps");
   left->enable(32);
   gps->enable(32);
@@ -216,11 +227,11 @@ TEST_CASE("Driving: position control turns each wheel to its target") {
   corridor.set_start({0, 0}, maze::Side::east);
   Simulation sim(corridor, hambot(), exact());
   webots::Robot &robot = sim.robot();
-  robot.getPositionSensor("right wheel sensor")->enable(32);
+  robot.getPositionSensor("right wheel encoder")->enable(32);
   robot.getMotor("left motor")->setPosition(2 * kPi);
   robot.getMotor("right motor")->setPosition(2 * kPi);
   for (int i = 0; i < 50; ++i) robot.step(32);
-  CHECK(robot.getPositionSensor("right wheel sensor")->getValue() == doctest::Approx(2 * kPi));
+  CHECK(robot.getPositionSensor("right wheel encoder")->getValue() == doctest::Approx(2 * kPi));
   CHECK(sim.pose().x_m == doctest::Approx(0.5 + 2 * kPi * 0.045));
 }
 
@@ -228,9 +239,9 @@ TEST_CASE("Driving: the velocity is clamped to the maximum") {
   Simulation sim(maze::Maze(2, 2), hambot(), exact());
   webots::Motor *m = sim.robot().getMotor("left motor");
   m->setVelocity(100.0);
-  CHECK(m->getVelocity() == 25.0);
+  CHECK(m->getVelocity() == 18.0);
   m->setVelocity(-100.0);
-  CHECK(m->getVelocity() == -25.0);
+  CHECK(m->getVelocity() == -18.0);
 }
 
 TEST_CASE("Driving into a wall stops at the wall and presses the bumpers touching it") {
@@ -368,4 +379,91 @@ TEST_CASE("DistanceSensor: the depth fan of the bumper-depth robot") {
     const double expected = std::abs(std::sin(a)) < 1e-12 ? ahead : std::min(ahead, side);
     CHECK(ray->getValue() == doctest::Approx(expected).epsilon(1e-9));
   }
+}
+
+namespace {
+
+// hambot's rotating lidar (12 Hz: 0.384 of a revolution a 32 ms step) with the test robot's
+// 12 m range, and the same lidar fixed.
+maze::sim::RobotProfile rotating_robot(double frequency_hz) {
+  maze::sim::RobotProfile p = hambot();
+  p.lidars[0].frequency_hz = frequency_hz;
+  return p;
+}
+
+std::vector<float> image(webots::Lidar *lidar) {
+  const float *r = lidar->getRangeImage();
+  REQUIRE(r != nullptr);
+  return {r, r + lidar->getHorizontalResolution()};
+}
+
+}  // namespace
+
+TEST_CASE("Rotating lidar: a slice per step, from ahead clockwise, 0 where not yet swept") {
+  Simulation sim(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, kPi / 2));
+  webots::Lidar *lidar = sim.robot().getLidar("lidar");
+  lidar->enable(32);
+  CHECK(lidar->getFrequency() == 12.0);
+  for (float r : image(lidar)) CHECK(r == 0.0f);
+  REQUIRE(sim.robot().step(32) == 0);
+  const std::vector<float> one = image(lidar);
+  // Step 1 sweeps 0 to 0.384 revolution clockwise from ahead (beam 180): beams 181 ... 318.
+  for (int i = 0; i < 360; ++i) {
+    CAPTURE(i);
+    CHECK((one[static_cast<std::size_t>(i)] != 0.0f) == (i >= 181 && i <= 318));
+  }
+}
+
+TEST_CASE("Rotating lidar: after a revolution at rest, the fixed lidar's image") {
+  Simulation fixed(maze::Maze(3, 3), rotating_robot(0.0), at(1.5, 1.5, 0.3));
+  Simulation rotating(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, 0.3));
+  fixed.robot().getLidar("lidar")->enable(32);
+  webots::Lidar *lidar = rotating.robot().getLidar("lidar");
+  lidar->enable(32);
+  CHECK(fixed.robot().getLidar("lidar")->getFrequency() == 0.0);
+  for (int i = 0; i < 3; ++i) REQUIRE(rotating.robot().step(32) == 0);
+  CHECK(image(lidar) == image(fixed.robot().getLidar("lidar")));
+}
+
+TEST_CASE("Rotating lidar: mid-turn, each beam is as seen from the pose of the step that swept it") {
+  Simulation fixed(maze::Maze(3, 3), rotating_robot(0.0), at(1.5, 1.5, 0.0));
+  Simulation rotating(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, 0.0));
+  webots::Lidar *fixed_lidar = fixed.robot().getLidar("lidar");
+  webots::Lidar *lidar = rotating.robot().getLidar("lidar");
+  fixed_lidar->enable(32);
+  lidar->enable(32);
+  drive(fixed.robot(), -5.0, 5.0);
+  drive(rotating.robot(), -5.0, 5.0);
+  std::vector<std::vector<float>> fixed_images;
+  for (int i = 0; i < 10; ++i) {
+    REQUIRE(fixed.robot().step(32) == 0);
+    REQUIRE(rotating.robot().step(32) == 0);
+    fixed_images.push_back(image(fixed_lidar));
+  }
+  const std::vector<float> mixed = image(lidar);
+  int from_last_step = 0;
+  for (std::size_t i = 0; i < mixed.size(); ++i) {
+    CAPTURE(i);
+    const bool from_a_recent_step = mixed[i] == fixed_images[9][i] || mixed[i] == fixed_images[8][i] ||
+                                    mixed[i] == fixed_images[7][i];
+    CHECK(from_a_recent_step);
+    if (mixed[i] == fixed_images[9][i]) ++from_last_step;
+  }
+  CHECK(from_last_step < 200);  // the rest come from the two steps before
+}
+
+TEST_CASE("Rotating lidar: lazy and deterministic, however often it is read") {
+  maze::sim::SimulationOptions o = at(1.5, 1.5, 1.0);
+  o.noise.reset();  // hambot's noise
+  o.dropout = 0.05;
+  Simulation often(maze::Maze(3, 3), rotating_robot(12.0), o);
+  Simulation once(maze::Maze(3, 3), rotating_robot(12.0), o);
+  often.robot().getLidar("lidar")->enable(32);
+  once.robot().getLidar("lidar")->enable(32);
+  for (int i = 0; i < 5; ++i) {
+    REQUIRE(often.robot().step(32) == 0);
+    REQUIRE(once.robot().step(32) == 0);
+    image(often.robot().getLidar("lidar"));
+  }
+  CHECK(image(often.robot().getLidar("lidar")) == image(once.robot().getLidar("lidar")));
 }

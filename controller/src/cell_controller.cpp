@@ -107,6 +107,9 @@ struct CellController::Impl {
                        : static_cast<int>(std::lround(robot.getBasicTimeStep()));
     dt_s = time_step_ms / 1000.0;
     max_wheel_rad_s = std::min(left->getMaxVelocity(), right->getMaxVelocity());
+    if (lidar != nullptr && lidar->getFrequency() > 0.0) {
+      lidar_revolution_steps = static_cast<int>(std::ceil(1000.0 / (lidar->getFrequency() * time_step_ms)));
+    }
   }
 
   void enable_devices() {
@@ -369,6 +372,24 @@ struct CellController::Impl {
     return Motion::ok;
   }
 
+  // A rotating lidar fills its range image a slice per step: before a scan, stays at rest
+  // for a whole revolution (ceil(period / step) steps), so that every beam is read from here.
+  Motion await_lidar_revolution() {
+    for (int i = 0; i < lidar_revolution_steps; ++i) {
+      if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+    }
+    return Motion::ok;
+  }
+
+  // One control step at rest (a rotating lidar: then a whole revolution), then a scan: the
+  // next reading is a new draw of the sensor, not the same one.
+  Motion rest_and_scan(Cell c) {
+    if (const Motion s = come_to_rest(); s != Motion::ok) return s;
+    if (const Motion s = await_lidar_revolution(); s != Motion::ok) return s;
+    scan(c);
+    return Motion::ok;
+  }
+
   void scan_lidar(Cell c) {
     const float *ranges = lidar->getRangeImage();
     if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
@@ -408,8 +429,7 @@ struct CellController::Impl {
     };
     const auto rescan_while = [&](const auto &still_unknown) {
       for (int attempt = 0; attempt < options.max_rescans && still_unknown(); ++attempt) {
-        if (const Motion s = come_to_rest(); s != Motion::ok) return s;
-        scan(c);
+        if (const Motion s = rest_and_scan(c); s != Motion::ok) return s;
       }
       return Motion::ok;
     };
@@ -420,7 +440,10 @@ struct CellController::Impl {
       if (const Motion s = turn_to(h); s != Motion::ok) return s;
       facing = h;
       visits.record(c, facing);
-      if (steps > before_turn) scan(c);  // else: facing it already, scanned this step
+      if (steps > before_turn) {  // else: facing it already, scanned this step
+        if (const Motion s = await_lidar_revolution(); s != Motion::ok) return s;
+        scan(c);
+      }
       if (const Motion s = rescan_while([&] { return unknown(walls, c, h); }); s != Motion::ok) return s;
       const std::pair<Cell, Heading> side{c, h};
       if (unknown(walls, c, h) && grid.contains(mapping::neighbour(c, h)) &&
@@ -441,8 +464,7 @@ struct CellController::Impl {
       for (int attempt = 0; attempt < 3 * options.max_rescans && walls(c, h) == mapping::SideState::open &&
                             mapping::read_cell_side(options.mapping, grid, previous_scan, c, h) == mapping::SideState::wall;
            ++attempt) {
-        if (const Motion s = come_to_rest(); s != Motion::ok) return s;
-        scan(c);
+        if (const Motion s = rest_and_scan(c); s != Motion::ok) return s;
       }
     }
     return Motion::ok;
@@ -485,6 +507,7 @@ struct CellController::Impl {
                       options.mapping.kind == mapping::ModelKind::cone;
     // Scan on arrival (the bump model then probes the unknown sides), then report.
     const auto arrive = [&](bool new_cell) {
+      if (const Motion r = await_lidar_revolution(); r != Motion::ok) return r;
       scan(cell);
       Motion s = Motion::ok;
       if (lidar != nullptr || ring) s = resolve_unknown_sides(cell, heading, walls);
@@ -585,6 +608,7 @@ struct CellController::Impl {
   int time_step_ms = 0;
   double dt_s = 0.0;
   double max_wheel_rad_s = 0.0;
+  int lidar_revolution_steps = 0;  // 0 unless the lidar rotates
   double left0 = 0.0;
   double right0 = 0.0;
 

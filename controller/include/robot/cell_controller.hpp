@@ -6,8 +6,9 @@
 //
 // Each move: turn in place to the heading (IMU yaw, proportional control slowing near the
 // target), drive one cell (encoders; GPS when the robot has one corrects the distance and
-// the lateral drift), stop at the cell centre and take one step to come to rest; then read
-// the sensors (the lidar, or the range sensors / bumpers of SensingOptions), update the grid,
+// the lateral drift), stop at the cell centre and take one step to come to rest (a rotating
+// lidar, Lidar::getFrequency() > 0: ceil(period / step) more steps at rest, so that its
+// range image is one whole revolution read from here); then read the sensors (the lidar, or the range sensors / bumpers of SensingOptions), update the grid,
 // and ask the strategy. With the bump model the robot first probes each side of the cell
 // whose state is unknown: it turns to it and creeps forward until a bumper presses or its
 // centre is half a sub-cell into the neighbouring cell, then backs to the centre. Each pass
@@ -41,8 +42,8 @@ namespace robot {
 struct DeviceNames {
   std::string left_motor = "left motor";
   std::string right_motor = "right motor";
-  std::string left_encoder = "left wheel sensor";
-  std::string right_encoder = "right wheel sensor";
+  std::string left_encoder = "left wheel encoder";  // FAIRIS-Lite HamBot's names
+  std::string right_encoder = "right wheel encoder";
   std::string imu = "imu";
   std::string gps = "gps";      // optional device: used when the robot has it
   std::string lidar = "lidar";

@@ -3,6 +3,7 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -15,8 +16,12 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-// The hambot of the Webots maze labs (DESIGN §5). The body radius and the maximum wheel
-// velocity are not in the course material; 0.09 m and 25 rad/s (1.1 m/s) are our choice.
+// The wheels, motors, encoders, IMU and GPS of FAIRIS-Lite's HamBot (DESIGN §5), as
+// biorobaw/FAIRIS-Lite WebotsSim/protos/HamBot/HamBot.proto and fairis_lib/robot_lib/
+// hambot.py define them: wheel radius 0.045 m (the wheels' Cylinder), max wheel speed
+// 18 rad/s (RotationalMotor maxVelocity), axle 0.184 m (hambot.py's axel_length; the proto
+// puts the wheels' centres at +-0.090 m, 0.180 m apart). The body radius is not in the
+// course material: 0.09 m is our choice (the bounding box is 0.15 x 0.14 m).
 RobotProfile base_robot(std::string name, std::string description) {
   RobotProfile p;
   p.name = std::move(name);
@@ -24,14 +29,20 @@ RobotProfile base_robot(std::string name, std::string description) {
   p.wheel_radius_m = 0.045;
   p.axle_m = 0.184;
   p.body_radius_m = 0.09;
-  p.max_wheel_velocity_rad_s = 25.0;
+  p.max_wheel_velocity_rad_s = 18.0;
   p.left_motor = "left motor";
   p.right_motor = "right motor";
-  p.left_encoder = "left wheel sensor";
-  p.right_encoder = "right wheel sensor";
+  p.left_encoder = "left wheel encoder";
+  p.right_encoder = "right wheel encoder";
   p.imu = "imu";
   p.gps = "gps";
   return p;
+}
+
+// HamBot's Lidar node: 360 beams, fieldOfView 6.283184 (2 pi to the proto's 7 digits),
+// minRange 0.07, maxRange 3, noise 0.000833, type "rotating" at defaultFrequency 12 Hz.
+LidarSpec hambot_lidar(double max_range_m) {
+  return {"lidar", 360, 2.0 * kPi, 0.07, max_range_m, 0.000833, 12.0};
 }
 
 // Three bumpers at 0 and +-45 deg, each covering a 45 deg arc: together the front 135 deg.
@@ -47,9 +58,31 @@ std::vector<LookupRow> metres_table(double range_m, double noise_fraction) {
 }
 
 RobotProfile hambot() {
-  RobotProfile p = base_robot("hambot", "course robot: 360-beam lidar, IMU, GPS, three bumpers");
-  p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833});
-  p.bumpers = front_bumpers();
+  RobotProfile p = base_robot("hambot", "the course robot (FAIRIS-Lite HamBot): 360-beam rotating lidar (3 m), IMU, GPS");
+  p.lidars.push_back(hambot_lidar(3.0));
+  return p;
+}
+
+// For long corridors: a 3 m lidar sees 2.5 cells of 1 m, too few to tell a long corridor's
+// far wall; the seed set-ups' 12 m lidar sees them whole.
+RobotProfile hambot_12m() {
+  RobotProfile p = base_robot("hambot-12m", "hambot with a 12 m lidar, for long corridors");
+  p.lidars.push_back(hambot_lidar(12.0));
+  return p;
+}
+
+// For classic 0.18 m micromouse cells with 12 mm walls (0.168 m between wall faces): an
+// 0.08 m wide body, 25 mm wheels 0.07 m apart, 80 rad/s (1 m/s). Real mice carry a few IR
+// range sensors; this one carries a small fixed 360-beam lidar (a ring of time-of-flight
+// sensors), so that the lidar models (cell, ray) run on it unchanged: 0.02 m to 1 m (five
+// cells), the hambot's noise fraction.
+RobotProfile micromouse() {
+  RobotProfile p = base_robot("micromouse", "for 0.18 m cells: 0.04 m body radius, small fixed 360-beam lidar (1 m)");
+  p.wheel_radius_m = 0.0125;
+  p.axle_m = 0.07;
+  p.body_radius_m = 0.04;
+  p.max_wheel_velocity_rad_s = 80.0;
+  p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.02, 1.0, 0.000833, 0.0});
   return p;
 }
 
@@ -90,7 +123,8 @@ RobotProfile sonar_ring() {
 }  // namespace
 
 const std::vector<RobotProfile> &profiles() {
-  static const std::vector<RobotProfile> all{hambot(), bumper_depth(), ir_ring(), sonar_ring()};
+  static const std::vector<RobotProfile> all{hambot(),  hambot_12m(), bumper_depth(),
+                                             ir_ring(), sonar_ring(), micromouse()};
   return all;
 }
 
@@ -142,6 +176,116 @@ double lookup_value(const std::vector<LookupRow> &table, double distance_m) {
 
 double lookup_noise_fraction(const std::vector<LookupRow> &table, double distance_m) {
   return interpolate(table, distance_m, &LookupRow::noise_fraction);
+}
+
+namespace {
+
+[[noreturn]] void bad(const std::string &key, const std::string &what) {
+  throw common::InputError(fmt::format("{} {}", key, what));
+}
+
+void require_positive(const std::string &key, double value) {
+  if (!std::isfinite(value) || value <= 0.0) bad(key, fmt::format("must be a positive number (got {})", value));
+}
+
+void require_non_negative(const std::string &key, double value) {
+  if (!std::isfinite(value) || value < 0.0) bad(key, fmt::format("must be a finite number >= 0 (got {})", value));
+}
+
+void require_finite(const std::string &key, double value) {
+  if (!std::isfinite(value)) bad(key, fmt::format("must be a finite number (got {})", value));
+}
+
+void require_at_most(const std::string &key, double value, double limit, const char *limit_text) {
+  if (value > limit) bad(key, fmt::format("must be at most {} (got {})", limit_text, value));
+}
+
+// Each device name once across the robot: Robot::get* finds a device by name alone.
+class DeviceNameSet {
+ public:
+  void add(const std::string &key, const std::string &name, bool required) {
+    if (name.empty()) {
+      if (required) bad(key, "must name a device");
+      return;
+    }
+    if (!names_.insert(name).second) bad(key, fmt::format("'{}' names a second device", name));
+  }
+
+ private:
+  std::set<std::string> names_;
+};
+
+void validate_lidar(const std::string &key, const LidarSpec &l) {
+  if (l.horizontal_resolution < 1 || l.horizontal_resolution > 100000) {
+    bad(key + ".horizontal_resolution", fmt::format("must be 1 to 100000 beams (got {})", l.horizontal_resolution));
+  }
+  require_positive(key + ".fov_rad", l.fov_rad);
+  require_at_most(key + ".fov_rad", l.fov_rad, 2.0 * kPi, "2 pi");
+  require_non_negative(key + ".min_range_m", l.min_range_m);
+  require_finite(key + ".max_range_m", l.max_range_m);
+  if (!(l.max_range_m > l.min_range_m)) {
+    bad(key + ".max_range_m",
+        fmt::format("must be greater than min_range_m (got {} <= {})", l.max_range_m, l.min_range_m));
+  }
+  require_non_negative(key + ".noise", l.noise);
+  require_non_negative(key + ".frequency_hz", l.frequency_hz);
+}
+
+void validate_distance_sensor(const std::string &key, const DistanceSensorSpec &d) {
+  require_finite(key + ".angle_rad", d.angle_rad);
+  require_non_negative(key + ".aperture_rad", d.aperture_rad);
+  require_at_most(key + ".aperture_rad", d.aperture_rad, kPi, "pi");
+  if (d.rays < 1 || d.rays > 1000) bad(key + ".rays", fmt::format("must be 1 to 1000 (got {})", d.rays));
+  if (d.lookup_table.empty()) bad(key + ".lookup_table", "must have at least one row");
+  for (std::size_t i = 0; i < d.lookup_table.size(); ++i) {
+    const std::string row = fmt::format("{}.lookup_table[{}]", key, i);
+    const LookupRow &r = d.lookup_table[i];
+    require_non_negative(row + ".distance_m", r.distance_m);
+    require_finite(row + ".value", r.value);
+    require_non_negative(row + ".noise_fraction", r.noise_fraction);
+    if (i > 0 && !(r.distance_m > d.lookup_table[i - 1].distance_m)) {
+      bad(row + ".distance_m", fmt::format("must be greater than the row before's (got {} <= {})",
+                                           r.distance_m, d.lookup_table[i - 1].distance_m));
+    }
+  }
+}
+
+void validate_bumper(const std::string &key, const BumperSpec &b) {
+  require_finite(key + ".angle_rad", b.angle_rad);
+  require_positive(key + ".half_arc_rad", b.half_arc_rad);
+  require_at_most(key + ".half_arc_rad", b.half_arc_rad, kPi, "pi");
+}
+
+}  // namespace
+
+void validate_profile(const RobotProfile &p) {
+  if (p.name.empty()) bad("name", "must not be empty");
+  require_positive("wheel_radius_m", p.wheel_radius_m);
+  require_positive("axle_m", p.axle_m);
+  require_positive("body_radius_m", p.body_radius_m);
+  require_positive("max_wheel_velocity_rad_s", p.max_wheel_velocity_rad_s);
+  DeviceNameSet names;
+  names.add("left_motor", p.left_motor, true);
+  names.add("right_motor", p.right_motor, true);
+  names.add("left_encoder", p.left_encoder, true);
+  names.add("right_encoder", p.right_encoder, true);
+  names.add("imu", p.imu, false);
+  names.add("gps", p.gps, false);
+  for (std::size_t i = 0; i < p.lidars.size(); ++i) {
+    const std::string key = fmt::format("lidars[{}]", i);
+    names.add(key + ".name", p.lidars[i].name, true);
+    validate_lidar(key, p.lidars[i]);
+  }
+  for (std::size_t i = 0; i < p.distance_sensors.size(); ++i) {
+    const std::string key = fmt::format("distance_sensors[{}]", i);
+    names.add(key + ".name", p.distance_sensors[i].name, true);
+    validate_distance_sensor(key, p.distance_sensors[i]);
+  }
+  for (std::size_t i = 0; i < p.bumpers.size(); ++i) {
+    const std::string key = fmt::format("bumpers[{}]", i);
+    names.add(key + ".name", p.bumpers[i].name, true);
+    validate_bumper(key, p.bumpers[i]);
+  }
 }
 
 }  // namespace maze::sim

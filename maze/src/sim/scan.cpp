@@ -25,7 +25,7 @@ std::string lidar_robots() {
 }  // namespace
 
 std::string format_scan(const Maze &maze, const ScanRequest &request) {
-  const RobotProfile &profile = find_profile(request.robot);
+  const RobotProfile &profile = request.profile ? *request.profile : find_profile(request.robot);
   if (profile.lidars.empty()) {
     throw common::InputError(fmt::format("robot '{}' has no lidar (robots with one: {})",
                                          profile.name, lidar_robots()));

@@ -17,6 +17,11 @@ common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step) {
   return common::Rng(seed ^ (d * 0x9e3779b97f4a7c15ULL) ^ (s * 0xd1b54a32d192ed03ULL));
 }
 
+common::Rng beam_rng(std::uint64_t seed, int device, std::int64_t step, int beam) {
+  const auto b = static_cast<std::uint64_t>(beam) + 1;
+  return sensor_rng(seed ^ (b * 0xbf58476d1ce4e5b9ULL), device, step);
+}
+
 void check_pose_free(const WallGrid &walls, const Pose &pose) {
   if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.yaw_rad)) {
     throw common::InputError("the pose must be finite numbers");
@@ -70,6 +75,24 @@ void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &po
     const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
     out[i] = in_range ? static_cast<float>(range) : kNoReturn;
   }
+}
+
+LidarModel::Viewpoint LidarModel::viewpoint(const WallGrid &walls, const Pose &pose) {
+  return {walls.cast_origin(pose.x_m, pose.y_m), std::cos(pose.yaw_rad), std::sin(pose.yaw_rad)};
+}
+
+float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
+                             common::Rng &rng) const {
+  const auto b = static_cast<std::size_t>(i);
+  assert(b < cos_.size());
+  const double sigma_m = noise * spec_.max_range_m;
+  const double reach_m = spec_.max_range_m + 6.0 * sigma_m;
+  const double dx = from.cos_yaw * cos_[b] - from.sin_yaw * sin_[b];
+  const double dy = from.sin_yaw * cos_[b] + from.cos_yaw * sin_[b];
+  double range = walls.cast_from(from.origin, dx, dy, reach_m);
+  if (sigma_m > 0.0) range += rng.normal(0.0, sigma_m);
+  const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
+  return in_range ? static_cast<float>(range) : std::numeric_limits<float>::infinity();
 }
 
 double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &sensor,

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -112,7 +114,7 @@ template <typename D>
 void Simulation::add_device(const std::string &name, Kind kind, int spec) {
   if (name.empty()) return;
   const int index = static_cast<int>(states_.size());
-  states_.push_back({kind, spec, 0, -1, {}, {0.0, 0.0, 0.0}});
+  states_.push_back({kind, spec, 0, -1, -1, {}, {0.0, 0.0, 0.0}});
   devices_.push_back(std::unique_ptr<Device>(new D(name, *this, index)));
 }
 
@@ -129,7 +131,15 @@ Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &pr
           pose_.x_m, pose_.y_m));
     }
   }
-  for (const maze::sim::LidarSpec &spec : profile_.lidars) lidar_models_.emplace_back(spec);
+  for (const maze::sim::LidarSpec &spec : profile_.lidars) {
+    lidar_models_.emplace_back(spec);
+    if (spec.frequency_hz > 0.0) {
+      // A beam holds a reading at most one revolution (and one step) old.
+      const double steps_per_revolution = 1000.0 / (spec.frequency_hz * options_.basic_time_step_ms);
+      history_steps_ = std::max(history_steps_, static_cast<std::size_t>(std::ceil(steps_per_revolution)) + 1);
+    }
+  }
+  if (history_steps_ > 0) history_.push_back({0, pose_});
   for (int i = 0; i < static_cast<int>(profile_.lidars.size()); ++i) {
     add_device<Lidar>(profile_.lidars[static_cast<std::size_t>(i)].name, Kind::lidar, i);
   }
@@ -169,6 +179,10 @@ int Simulation::step(int duration_ms) {
     advance(basic / 1000.0);
     time_ms_ += basic;
     ++steps_;
+    if (history_steps_ > 0) {
+      if (history_.size() == history_steps_) history_.erase(history_.begin());
+      history_.push_back({steps_, pose_});
+    }
     if (limit_ms > 0 && time_ms_ >= limit_ms) {
       ended_ = true;
       return -1;
@@ -223,7 +237,12 @@ void Simulation::keep_body_out_of_walls() {
 }
 
 void Simulation::set_sampling_period(int device, int period_ms) {
-  states_[static_cast<std::size_t>(device)].sampling_period_ms = std::max(0, period_ms);
+  DeviceState &state = states_[static_cast<std::size_t>(device)];
+  const int period = std::max(0, period_ms);
+  if (period > 0 && state.sampling_period_ms == 0) state.enabled_at_step = steps_;
+  if (period == 0) state.enabled_at_step = -1;
+  state.sampling_period_ms = period;
+  state.read_at_step = -1;
 }
 
 int Simulation::sampling_period(int device) const {
@@ -257,6 +276,10 @@ const float *Simulation::lidar_range_image(int device) {
   DeviceState &state = states_[static_cast<std::size_t>(device)];
   if (state.sampling_period_ms == 0) return nullptr;
   const maze::sim::LidarSpec &spec = lidar_spec(device);
+  if (spec.frequency_hz > 0.0) {
+    if (!fresh(state)) rotating_range_image(device, state, spec);
+    return state.ranges.data();
+  }
   if (!fresh(state)) {
     state.ranges.resize(static_cast<std::size_t>(spec.horizontal_resolution));
     common::Rng rng = rng_for(device);
@@ -265,6 +288,64 @@ const float *Simulation::lidar_range_image(int device) {
     apply_lidar_faults(device, spec, state.ranges);
   }
   return state.ranges.data();
+}
+
+std::int64_t Simulation::swept_at_step(const maze::sim::LidarSpec &spec,
+                                       std::int64_t steps_enabled, int i) const {
+  // Revolutions the head turns in a step; step s (from 1) sweeps revolutions
+  // ((s - 1) r, s r]. The head passes beam i at revolutions u + k, k = 0, 1, ...
+  const double r = spec.frequency_hz * options_.basic_time_step_ms / 1000.0;
+  const double turn = -maze::sim::beam_angle_rad(spec, i) / (2.0 * std::numbers::pi);
+  const double u = turn - std::floor(turn);  // in [0, 1): clockwise from ahead
+  const double turned = static_cast<double>(steps_enabled) * r;
+  const double k = std::floor(turned - u);
+  const double last_pass = u + k;  // the last pass at or before now, in revolutions
+  if (k < 0.0 || last_pass <= 0.0) return 0;
+  return std::clamp(static_cast<std::int64_t>(std::ceil(last_pass / r)), std::int64_t{1}, steps_enabled);
+}
+
+const maze::sim::Pose &Simulation::pose_at_step(std::int64_t step) const {
+  for (const PastPose &p : history_) {
+    if (p.step == step) return p.pose;
+  }
+  assert(false && "a rotating lidar's beam is older than the pose history");
+  return pose_;
+}
+
+void Simulation::rotating_range_image(int device, DeviceState &state, const maze::sim::LidarSpec &spec) {
+  const int n = spec.horizontal_resolution;
+  state.ranges.assign(static_cast<std::size_t>(n), 0.0f);
+  const std::int64_t steps_enabled = steps_ - state.enabled_at_step;
+  const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
+  const double noise = lidar_noise(spec);
+  // The viewpoints of the few steps the image holds, each computed once.
+  std::vector<std::pair<std::int64_t, maze::sim::LidarModel::Viewpoint>> viewpoints;
+  const auto viewpoint_at = [&](std::int64_t step) -> const maze::sim::LidarModel::Viewpoint & {
+    for (const auto &v : viewpoints) {
+      if (v.first == step) return v.second;
+    }
+    viewpoints.emplace_back(step, maze::sim::LidarModel::viewpoint(walls_, pose_at_step(step)));
+    return viewpoints.back().second;
+  };
+  for (int i = 0; i < n; ++i) {
+    const std::int64_t s = swept_at_step(spec, steps_enabled, i);
+    if (s == 0) continue;
+    const std::int64_t step = state.enabled_at_step + s;
+    common::Rng rng = maze::sim::beam_rng(options_.seed, device, step, i);
+    const float range = model.beam_range(walls_, noise, viewpoint_at(step), i, rng);
+    state.ranges[static_cast<std::size_t>(i)] = faulty_beam(device, spec, step, i, range);
+  }
+}
+
+float Simulation::faulty_beam(int device, const maze::sim::LidarSpec &spec, std::int64_t step,
+                              int beam, float range) const {
+  if (options_.dropout <= 0.0 && options_.spikes <= 0.0) return range;
+  common::Rng rng = maze::sim::beam_rng(options_.seed ^ kFaultSalt, device, step, beam);
+  const double u = rng.uniform01();
+  const double spike_m = rng.uniform(spec.min_range_m, spec.max_range_m);
+  if (u < options_.dropout) return std::numeric_limits<float>::infinity();
+  if (u < options_.dropout + options_.spikes) return static_cast<float>(spike_m);
+  return range;
 }
 
 void Simulation::apply_lidar_faults(int device, const maze::sim::LidarSpec &spec,

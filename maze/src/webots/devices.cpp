@@ -89,6 +89,7 @@ int Lidar::getNumberOfLayers() const { return 1; }
 double Lidar::getFov() const { return simulation().lidar_spec(index()).fov_rad; }
 double Lidar::getMinRange() const { return simulation().lidar_spec(index()).min_range_m; }
 double Lidar::getMaxRange() const { return simulation().lidar_spec(index()).max_range_m; }
+double Lidar::getFrequency() const { return simulation().lidar_spec(index()).frequency_hz; }
 
 // ---- Motor ----
 

@@ -4,24 +4,30 @@
 //
 // Device names (the strings a controller passes to Robot::get*):
 //
-// | profile        | motors / encoders              | other devices                              |
-// |----------------|--------------------------------|--------------------------------------------|
-// | hambot         | "left motor", "right motor",   | Lidar "lidar" (360 beams, 2 pi, 0.05-12 m, |
-// |  (default)     | "left wheel sensor",           |   noise 0.000833); InertialUnit "imu";     |
-// |                | "right wheel sensor"           |   GPS "gps"; TouchSensor "bumper front",   |
-// |                |                                |   "bumper left" (+45 deg), "bumper right"  |
-// | bumper-depth   | as hambot                      | imu, gps, the three bumpers; DistanceSensor|
-// |                |                                |   "depth0" ... "depth8" (+60 deg ... -60   |
-// |                |                                |   deg in 15 deg steps, one ray, 0-4 m)     |
-// | ir-ring        | as hambot                      | imu, gps; DistanceSensor "ir0" ... "ir5"   |
-// |                |                                |   (0, +45, +90, 180, -90, -45 deg; 1.5 m)  |
-// | sonar-ring     | as hambot                      | imu, gps; DistanceSensor "so0" ... "so7"   |
-// |                |                                |   (every 45 deg from 0 ccw; 5 m)           |
+// | profile       | motors / encoders            | other devices                                |
+// |---------------|------------------------------|----------------------------------------------|
+// | hambot        | "left motor", "right motor", | Lidar "lidar" (360 beams, 2 pi, 0.07-3 m,    |
+// |  (default)    | "left wheel encoder",        |   noise 0.000833, rotating at 12 Hz);        |
+// |               | "right wheel encoder"        |   InertialUnit "imu"; GPS "gps"; no bumpers  |
+// | hambot-12m    | as hambot                    | as hambot, the lidar reaching 12 m           |
+// | bumper-depth  | as hambot                    | imu, gps; TouchSensor "bumper front",        |
+// |               |                              |   "bumper left" (+45 deg), "bumper right";   |
+// |               |                              |   DistanceSensor "depth0" ... "depth8" (+60  |
+// |               |                              |   ... -60 deg in 15 deg steps, one ray, 4 m) |
+// | ir-ring       | as hambot                    | imu, gps; DistanceSensor "ir0" ... "ir5"     |
+// |               |                              |   (0, +45, +90, 180, -90, -45 deg; 1.5 m)    |
+// | sonar-ring    | as hambot                    | imu, gps; DistanceSensor "so0" ... "so7"     |
+// |               |                              |   (every 45 deg from 0 ccw; 5 m)             |
+// | micromouse    | as hambot                    | imu, gps; Lidar "lidar" (360 beams, 2 pi,    |
+// |               |                              |   0.02-1 m, fixed)                           |
 //
 // Angles are relative to the robot's heading, counter-clockwise positive (+90 deg = left).
 // Distance sensors sit on the body's rim and look outward; the lidar sits at the centre.
 // A distance sensor's value is in metres of distance (its lookup table maps distance d to
 // value d), so the controller reads metres as from the lidar.
+//
+// Profiles are data: app/profile_json.hpp prints one as JSON and reads one back
+// (`maze_mapper robot NAME`, `--robot FILE.json`); validate_profile() is the one check.
 
 #include <string>
 #include <string_view>
@@ -36,6 +42,9 @@ struct LidarSpec {
   double min_range_m = 0.0;
   double max_range_m = 0.0;
   double noise = 0.0;  // Gaussian sigma as a fraction of max_range_m (Webots' `noise`)
+  // A rotating head's frequency (Webots' `type "rotating"`, `defaultFrequency`); 0: fixed.
+  double frequency_hz = 0.0;
+  bool operator==(const LidarSpec &) const = default;
 };
 
 // One row of a Webots lookup table: at distance_m the sensor returns value, with Gaussian
@@ -44,6 +53,7 @@ struct LookupRow {
   double distance_m;
   double value;
   double noise_fraction;
+  bool operator==(const LookupRow &) const = default;
 };
 
 struct DistanceSensorSpec {
@@ -52,12 +62,14 @@ struct DistanceSensorSpec {
   double aperture_rad = 0.0;  // the cone the rays spread over
   int rays = 1;
   std::vector<LookupRow> lookup_table;  // increasing distance
+  bool operator==(const DistanceSensorSpec &) const = default;
 };
 
 struct BumperSpec {
   std::string name;
   double angle_rad = 0.0;       // centre of the bumper's arc relative to the heading
   double half_arc_rad = 0.0;    // pressed by a contact within +- half_arc_rad of angle_rad
+  bool operator==(const BumperSpec &) const = default;
 };
 
 struct RobotProfile {
@@ -73,15 +85,25 @@ struct RobotProfile {
   std::vector<LidarSpec> lidars;
   std::vector<DistanceSensorSpec> distance_sensors;
   std::vector<BumperSpec> bumpers;
+  bool operator==(const RobotProfile &) const = default;
 };
 
-// Every profile, the default (hambot) first.
+// Every built-in profile, the default (hambot) first.
 const std::vector<RobotProfile> &profiles();
 const RobotProfile &default_profile();
 // The profile called name; throws common::InputError naming the known profiles otherwise.
 const RobotProfile &find_profile(std::string_view name);
-// "hambot, bumper-depth, ir-ring, sonar-ring"
+// "hambot, hambot-12m, bumper-depth, ir-ring, sonar-ring, micromouse"
 std::string profile_names();
+
+// Throws common::InputError naming the first bad field by its key path, e.g.
+// "lidars[0].max_range_m must be greater than min_range_m (got 0.05 <= 0.07)". Checks: a
+// name; positive finite wheel radius, axle, body radius and wheel speed; motors and encoders
+// named; device names unique; lidars with 1 to 100000 beams, a field of view in (0, 2 pi],
+// 0 <= min range < max range, noise >= 0 and frequency >= 0; distance sensors with at least
+// one ray, an aperture in [0, pi], a lookup table of increasing distances; bumpers with a
+// half arc in (0, pi]. Every angle finite.
+void validate_profile(const RobotProfile &profile);
 
 // The value of a lookup table at distance_m (linear between rows, clamped outside) and the
 // noise fraction there. The table has at least one row.

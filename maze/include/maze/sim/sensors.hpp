@@ -22,6 +22,9 @@ struct Pose {
 // The random stream of a device's reading at a step: readings depend on (seed, device,
 // step) only, not on when or how often they are read.
 common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step);
+// The random stream of one beam of a rotating lidar measured at a step: (seed, device, step,
+// beam) only, so a beam keeps its reading until the head sweeps it again.
+common::Rng beam_rng(std::uint64_t seed, int device, std::int64_t step, int beam);
 
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
@@ -42,6 +45,16 @@ class LidarModel {
   // whether or not the beam returns; noise 0 draws none.
   void range_image(const WallGrid &walls, double noise, const Pose &pose, common::Rng &rng,
                    std::span<float> out) const;
+  // Where beams are cast from: a pose's cast origin and heading, computed once per pose.
+  struct Viewpoint {
+    WallGrid::CastOrigin origin;
+    double cos_yaw;
+    double sin_yaw;
+  };
+  static Viewpoint viewpoint(const WallGrid &walls, const Pose &pose);
+  // Beam i alone from a viewpoint, as range_image measures it, its noise drawn from rng.
+  float beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
+                   common::Rng &rng) const;
 
  private:
   LidarSpec spec_;

@@ -21,6 +21,11 @@
 // order or number of reads. Readings reflect the current state as soon as a device is
 // enabled (Webots waits for the first sampling period; a controller that steps before it
 // reads sees no difference). A disabled device reads NaN (Lidar: nullptr).
+// A rotating lidar (LidarSpec::frequency_hz > 0) is the exception, as in Webots: its head
+// starts ahead when enabled and turns clockwise at its frequency; each beam reads as cast
+// from the pose at the end of the basic step during which the head swept it (the simulation
+// keeps the poses of the last revolution's steps), with noise and faults drawn from
+// (seed, device, that step, beam); a beam not swept since enable reads 0.
 
 #include <cstdint>
 #include <memory>
@@ -128,6 +133,7 @@ class Simulation {
     int spec = 0;
     int sampling_period_ms = 0;
     std::int64_t read_at_step = -1;  // the step whose reading `cache` holds
+    std::int64_t enabled_at_step = -1;  // when the sampling period last went from 0 (lidars)
     std::vector<float> ranges;
     double cache[3] = {0.0, 0.0, 0.0};
   };
@@ -144,6 +150,12 @@ class Simulation {
   common::Rng rng_for(int device) const;
   double lidar_noise(const maze::sim::LidarSpec &spec) const;
   void apply_lidar_faults(int device, const maze::sim::LidarSpec &spec, std::vector<float> &ranges) const;
+  // The step (from 1 after enable) whose end pose beam i of a rotating lidar holds, or 0.
+  std::int64_t swept_at_step(const maze::sim::LidarSpec &spec, std::int64_t steps_enabled, int i) const;
+  void rotating_range_image(int device, DeviceState &state, const maze::sim::LidarSpec &spec);
+  float faulty_beam(int device, const maze::sim::LidarSpec &spec, std::int64_t step, int beam,
+                    float range) const;
+  const maze::sim::Pose &pose_at_step(std::int64_t step) const;
 
   maze::sim::RobotProfile profile_;
   maze::sim::SimulationOptions options_;
@@ -159,6 +171,14 @@ class Simulation {
   bool stop_requested_ = false;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
+  // The poses at the end of the last steps (the step number, the pose), oldest first: as
+  // many as a rotating lidar's image can still hold; empty without one.
+  struct PastPose {
+    std::int64_t step;
+    maze::sim::Pose pose;
+  };
+  std::vector<PastPose> history_;
+  std::size_t history_steps_ = 0;
   std::vector<DeviceState> states_;
   std::vector<std::unique_ptr<Device>> devices_;
   std::unique_ptr<Robot> robot_;

@@ -8,6 +8,14 @@ namespace webots {
 // beam i points at fov/2 - i * fov / N from the heading (counter-clockwise positive), so
 // with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right. A reading
 // outside [min range, max range] is +infinity. Ranges are computed when read (lazily).
+//
+// A rotating lidar (getFrequency() > 0; Webots' `type "rotating"`) fills its range image a
+// slice per basic time step, as Webots does: its head starts facing ahead when the lidar is
+// enabled and turns clockwise at the frequency, and each beam holds the range measured from
+// the pose at the end of the step during which the head swept its direction (a beam not yet
+// swept since enable reads 0, Webots' initial image). The beam order stays as above. So a
+// controller that wants one image from one pose waits ceil(1 / (frequency x step)) steps at
+// rest; mid-turn, the image mixes the poses of the last revolution's steps.
 class Lidar : public Device {
  public:
   virtual void enable(int samplingPeriod);
@@ -19,6 +27,9 @@ class Lidar : public Device {
   double getFov() const;       // rad
   double getMinRange() const;  // m
   double getMaxRange() const;  // m
+  // Hz: a rotating lidar's head frequency; 0 for a fixed lidar here (a real Webots returns
+  // the node's defaultFrequency, 10 Hz unless set, whatever the type).
+  double getFrequency() const;
 
  private:
   friend class embedded::Simulation;
