@@ -36,6 +36,11 @@ std::vector<std::string> split_lines(std::string_view text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   const std::vector<std::string> words =
       split_lines(std::string_view(reinterpret_cast<const char *>(data), size));
+  // --robot FILE.json reads the file while parsing: device files (/dev/zero, a terminal)
+  // would block or never end; they are not what this target tests.
+  for (const std::string &word : words) {
+    if (word.find("/dev") != std::string::npos || word.find("/proc") != std::string::npos) return 0;
+  }
   std::vector<const char *> argv;
   for (const std::string &word : words) argv.push_back(word.c_str());
 

@@ -96,11 +96,11 @@ maze::Maze pocketed_corridor() {
   return m;
 }
 
-// The cell model up that corridor from its south end, the 12 m lidar: from the first cells
+// The cell model up that corridor from its south end, hambot-12m's lidar: from the first cells
 // the corridor's end is beyond max range, a view of 4-5 beams. The pockets of the odd rows
 // are closed cells (unreachable).
 robot::RunResult run_corridor(const mapping::ScanFilterOptions &filter) {
-  webots::embedded::Simulation sim(pocketed_corridor(), maze::sim::default_profile(), {});
+  webots::embedded::Simulation sim(pocketed_corridor(), maze::sim::find_profile("hambot-12m"), {});
   robot::ControllerOptions o;
   o.start = {1, 0};
   o.geometry.width_cells = 3;

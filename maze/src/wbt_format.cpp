@@ -188,14 +188,18 @@ void caster(std::string &out, std::string_view where, double x_m, const BodyShap
                  num(x_m), num(rc), num(x_m), num(rc), where, num(rc), where, where);
 }
 
-// Webots' near clipping plane must not exceed minRange.
+// Webots' near clipping plane must not exceed minRange. A rotating head (frequency > 0) is
+// Webots' type "rotating" at defaultFrequency, as the profile says.
 void lidar(std::string &out, const sim::LidarSpec &l, double z_m) {
+  const std::string type = l.frequency_hz > 0.0
+                               ? fmt::format("      type \"rotating\"\n      defaultFrequency {}\n", num(l.frequency_hz))
+                               : std::string("      type \"fixed\"\n");
   fmt::format_to(std::back_inserter(out),
                  "    Lidar {{\n      translation 0 0 {}\n      name {}\n      horizontalResolution {}\n"
                  "      fieldOfView {}\n      numberOfLayers 1\n      near {}\n      minRange {}\n      maxRange {}\n"
-                 "      type \"fixed\"\n      projection \"cylindrical\"\n      noise {}\n    }}\n",
+                 "{}      projection \"cylindrical\"\n      noise {}\n    }}\n",
                  num(z_m), quoted(l.name), l.horizontal_resolution, num(l.fov_rad),
-                 num(std::min(0.01, l.min_range_m)), num(l.min_range_m), num(l.max_range_m), num(l.noise));
+                 num(std::min(0.01, l.min_range_m)), num(l.min_range_m), num(l.max_range_m), type, num(l.noise));
 }
 
 // A distance sensor on the rim, looking out along its angle (a sensor looks along its x axis).
