@@ -196,16 +196,8 @@ void check_large_run(const LargeRun &r, int index) {
   CAPTURE(s.message);
   // Trust first: a run never says done with a cell missed.
   CHECK((s.reason == robot::EndReason::done) == (s.score.coverage_percent() == 100.0));
-  if (r.size > 128) {
-    // Known gap (issue 14 stays open): at 256 x 256, dfs, K 5, cell model, hambot-12m with
-    // faults (index 2001) one cell of 65,536 is never visited; the run ends incomplete.
-    WARN(s.reason == robot::EndReason::done);
-    WARN(s.score.coverage_percent() == 100.0);
-    CHECK((s.reason == robot::EndReason::done || s.reason == robot::EndReason::incomplete));
-  } else {
-    CHECK(s.reason == robot::EndReason::done);
-    CHECK(s.score.coverage_percent() == 100.0);
-  }
+  CHECK(s.reason == robot::EndReason::done);
+  CHECK(s.score.coverage_percent() == 100.0);
   CHECK(s.score.wall_accuracy_percent() >= 99.9);
 }
 

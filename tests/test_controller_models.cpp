@@ -360,3 +360,33 @@ TEST_CASE("ray model: beams grazing a corridor wall keep its band; crossing an o
     CHECK(grid.at(Cell{x + 1, 0}, mapping::LocalSubCell{1, 0}) < 0.0f);
   }
 }
+
+TEST_CASE("cell model: readings split evenly between wall and opening leave the side unknown") {
+  // The centre cell of kNorthWest facing north: its east side is open (beam 270 and its
+  // neighbours read 1.494 m). Two adjacent spikes that agree with each other (0.6 and 0.47 m)
+  // beside a dropped beam once made the lower median of four a wall that sealed a cell.
+  const testing_world::TextMaze maze(kNorthWest);
+  const auto boxes = testing_world::wall_boxes(maze, 1.0, 0.012);
+  const mapping::Point origin{1.5, 1.5};
+  std::vector<float> ranges = testing_world::range_image(boxes, origin, kPi / 2, 360, 2 * kPi, 0.05, 12.0);
+  // kNorthWest has no outer walls: put one 1.5 m east (a wall a cell beyond the opening).
+  for (int i = 260; i <= 280; ++i) ranges[static_cast<std::size_t>(i)] = 1.494f;
+  const OccupancyGrid grid(geometry(3), 0.0f);
+  const MappingOptions options;
+  const auto east = [&] {
+    return mapping::read_cell_side(options, grid, testing_world::hambot_scan(origin, kPi / 2, ranges), Cell{1, 1},
+                                   mapping::Heading::east);
+  };
+  CHECK(east() == mapping::SideState::open);
+  CHECK(mapping::read_cell_side(options, grid, testing_world::hambot_scan(origin, kPi / 2, ranges), Cell{1, 1},
+                                mapping::Heading::north) == mapping::SideState::wall);
+  ranges[268] = std::numeric_limits<float>::quiet_NaN();
+  ranges[270] = 0.6f;
+  ranges[271] = 0.47f;
+  CHECK(east() == mapping::SideState::unknown);  // two near, two far
+  ranges[269] = 0.55f;
+  CHECK(east() == mapping::SideState::wall);     // three of four near: the majority
+  ranges[269] = ranges[272];
+  ranges[268] = ranges[272];
+  CHECK(east() == mapping::SideState::open);     // two near of five: the median is far
+}

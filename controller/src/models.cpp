@@ -83,12 +83,14 @@ SideState read_cell_side(const MappingOptions &options, const OccupancyGrid &gri
                          Cell c, Heading h) {
   const auto beam = scan.beam_towards(yaw_rad(h));
   if (!beam) return SideState::unknown;
-  const std::optional<float> median = scan.median_range(*beam, kCellModelHalfWindow_rad);
-  if (!median) return SideState::unknown;
-  const double margin_m = options.wall_margin * grid.geometry().cell_size_m;
-  const bool wall = scan.kind_of(*median) == ReadingKind::hit &&
-                    *median < distance_to_side(grid, scan.origin, c, h) + margin_m;
-  return wall ? SideState::wall : SideState::open;
+  const auto medians = scan.medians(*beam, kCellModelHalfWindow_rad);
+  if (!medians) return SideState::unknown;
+  const double limit_m = distance_to_side(grid, scan.origin, c, h) + options.wall_margin * grid.geometry().cell_size_m;
+  const auto wall = [&](float range) { return scan.kind_of(range) == ReadingKind::hit && range < limit_m; };
+  // An even split (two short returns, two long: a pair of spikes beside a dropped beam)
+  // says nothing either way: the side stays unknown, and the robot looks again.
+  if (wall(medians->lower) != wall(medians->upper)) return SideState::unknown;
+  return wall(medians->lower) ? SideState::wall : SideState::open;
 }
 
 namespace {

@@ -26,6 +26,12 @@ double LidarScan::beam_angle_rad(int i) const {
 }
 
 std::optional<float> LidarScan::median_range(int centre, double half_window_rad) const {
+  const std::optional<Medians> m = medians(centre, half_window_rad);
+  if (!m) return std::nullopt;
+  return m->lower;
+}
+
+std::optional<LidarScan::Medians> LidarScan::medians(int centre, double half_window_rad) const {
   const int n = beam_count();
   assert(centre >= 0 && centre < n);
   const double step = fov_rad / n;
@@ -66,7 +72,8 @@ std::optional<float> LidarScan::median_range(int centre, double half_window_rad)
   }
   const auto middle = valid.begin() + static_cast<std::ptrdiff_t>((valid.size() - 1) / 2);
   std::nth_element(valid.begin(), middle, valid.end());
-  return *middle;
+  const float upper = valid.size() % 2 == 1 ? *middle : *std::min_element(middle + 1, valid.end());
+  return Medians{*middle, upper};
 }
 
 bool LidarScan::lone_no_return(int i) const {

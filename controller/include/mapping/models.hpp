@@ -6,7 +6,8 @@
 //           wall     band middle and the band's two corners  p_occ,
 //                    sub-cells strictly between centre and band middle  p_free
 //           opening  band middle and the sub-cells between centre and it  p_free
-//         The centre is always free. A side whose beam reading is invalid is not updated.
+//         The centre is always free. A side whose beams are invalid, or split evenly
+//         between wall and opening, is not updated.
 //         K = 3, walls N and W, openings E and S, defaults (l(0.6) = 0.41, l(0.3) = -0.85):
 //             +0.41 +0.41 +0.41
 //             +0.41 -0.85 -0.85
@@ -71,7 +72,7 @@ void mark_scan(const MappingOptions &options, const OccupancyGrid &grid, const L
 // The cell model's reading of side h of cell c from a scan taken in c (the median of the
 // beams within 2.5 degrees of the side's direction): wall when it returns closer than the
 // side plus wall_margin cells, open when further or no return, unknown without a valid
-// beam. The cell model marks by it; the controller checks a side its grid calls open
+// beam or when an even count of readings splits evenly between the two. The cell model marks by it; the controller checks a side its grid calls open
 // against it before driving through (a wall seen from half a cell beats a band freed by a
 // faulty beam from afar).
 SideState read_cell_side(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,

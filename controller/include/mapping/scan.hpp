@@ -52,6 +52,13 @@ struct LidarScan {
   // even. No allocation for a window of up to kMedianSmallWindow beams.
   static constexpr int kMedianSmallWindow = 33;
   std::optional<float> median_range(int centre, double half_window_rad) const;
+  // The same window's lower and upper medians (equal when the count is odd): readings split
+  // evenly between them (two returns and two further, say) are two answers, not one.
+  struct Medians {
+    float lower;
+    float upper;
+  };
+  std::optional<Medians> medians(int centre, double half_window_rad) const;
 
   // Whether beam i is a no return with a return among the two beams on each side of it:
   // one or two dropped beams, not a view past the wall their neighbours hit.
