@@ -51,6 +51,7 @@ int Lidar::getNumberOfLayers() const { return 0; }
 double Lidar::getFov() const { return 0.0; }
 double Lidar::getMinRange() const { return 0.0; }
 double Lidar::getMaxRange() const { return 0.0; }
+double Lidar::getFrequency() const { return 0.0; }
 
 void Motor::setPosition(double) {}
 void Motor::setVelocity(double) {}
