@@ -152,6 +152,19 @@ class ReferenceFilter {
     rejected_.clear();
     for (int i = 0; i < n; ++i) {
       if (state_[static_cast<std::size_t>(i)] != trusted) continue;
+      // A lone return between two no returns (not invalid readings) is a spike.
+      const bool wrap = full_circle(scan);
+      const auto no_return_at = [&](int j) {
+        if (j < 0 || j >= n) {
+          if (!wrap) return false;
+          j = (j + n) % n;
+        }
+        return state_[static_cast<std::size_t>(j)] == none && !std::isnan(ranges_[static_cast<std::size_t>(j)]);
+      };
+      if (no_return_at(i - 1) && no_return_at(i + 1)) {
+        rejected_.push_back(i);
+        continue;
+      }
       const double r = ranges_[static_cast<std::size_t>(i)];
       const double left = range_of(nearest_trusted(scan, i, -1));
       const double right = range_of(nearest_trusted(scan, i, +1));
@@ -661,4 +674,22 @@ TEST_CASE("scan filter: a fault-free closed cell with spikes matches the referen
     CHECK(filter.counts().spikes == reference.counts().spikes);
     CHECK(filter.counts().dropouts == reference.counts().dropouts);
   }
+}
+
+TEST_CASE("scan filter: a lone return in a view past max range is a spike, even when another agrees with it") {
+  // Down a corridor longer than max range (beams 160 ... 200 read no return), two spikes
+  // three beams apart (0.61 and 0.68 m) agree with each other; the cell model read the pair
+  // as a wall and sealed half a 128 x 128 maze.
+  std::vector<float> r = closed_cell();
+  for (int i = 160; i <= 200; ++i) r[static_cast<std::size_t>(i)] = kInf;
+  r[179] = 0.607f;
+  r[182] = 0.679f;
+  // Both go; the two no returns between them, now bounded by rejected beams, are a short
+  // run read as dropped beams: no information either way.
+  CHECK(text(filtered(r), 177, 184) == "inf inf - - - - inf inf");
+  // A return beside an invalid reading (below min range) is not lone: that is no view.
+  r[178] = 0.01f;
+  r[180] = 0.62f;
+  r[182] = kInf;
+  CHECK(text(filtered(r), 178, 180) == "- 61 62");
 }

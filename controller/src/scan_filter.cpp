@@ -77,8 +77,16 @@ struct ScanFilter::Beams {
   double range_or_nan(int i) const { return i < 0 ? kNaNRange : static_cast<double>(range_m[i]); }
   // Whether two returns agree: within the tolerance, which grows with range.
   bool near(double a, double b) const { return std::abs(a - b) <= absolute_m + relative * std::min(a, b); }
-  // The next beam, wrapped on a full circle; -1 past the end of a partial one.
+  // The next and previous beams, wrapped on a full circle; -1 past the ends of a partial one.
   int next(int i) const { return i < n - 1 ? i + 1 : (wrap ? 0 : -1); }
+  int previous(int i) const { return i > 0 ? i - 1 : (wrap ? n - 1 : -1); }
+  // Beam i read no return (not an invalid reading, not a return).
+  bool no_return(int i) const { return i >= 0 && state[i] == no_return_or_invalid && !std::isnan(range_m[i]); }
+  // A return with no return on both sides: a lone return in a view past max range. Walls
+  // are wider than a beam step (a 12 mm wall end subtends less than a degree only beyond
+  // 0.7 m, where a miss costs nothing): this is a spike, and two of them a few beams apart
+  // would otherwise vouch for each other across the view.
+  bool lone_return(int i) const { return no_return(previous(i)) && no_return(next(i)); }
 
   // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
   int nearest_trusted(int i, int step) const {
@@ -209,6 +217,10 @@ bool ScanFilter::reject_spikes() {
     // A beam that continues the one before (the nearest trusted return before it) agrees
     // with it: not a spike.
     if (b.state[i] != trusted_start) continue;
+    if (b.lone_return(i)) {
+      rejected_.push_back(i);
+      continue;
+    }
     const double r = b.range(i);
     // NaN compares false: a missing neighbour supports nothing.
     const auto near = [&](double other) { return b.near(r, other); };

@@ -5,6 +5,8 @@
 // Each reading comes out as it went in, or as NaN ("no information", which every model
 // ignores):
 //   invalid    NaN, negative or below min range                        -> NaN
+//   lone       a return with a no return on both sides (a spike in a view past
+//              max range: a wall is wider than a beam step where it matters)  -> NaN
 //   spike      a return that agrees with neither neighbouring return    -> NaN
 //              (nearest returns within `neighbour_reach` beams on each side): it is further
 //              than the tolerance from both, not between them, and not where the two returns
