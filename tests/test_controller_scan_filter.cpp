@@ -152,7 +152,8 @@ class ReferenceFilter {
     rejected_.clear();
     for (int i = 0; i < n; ++i) {
       if (state_[static_cast<std::size_t>(i)] != trusted) continue;
-      // A lone return between two no returns (not invalid readings) is a spike.
+      // A lone return between two no returns (not invalid readings) needs a return that is
+      // not lone to vouch for it.
       const bool wrap = full_circle(scan);
       const auto no_return_at = [&](int j) {
         if (j < 0 || j >= n) {
@@ -161,8 +162,15 @@ class ReferenceFilter {
         }
         return state_[static_cast<std::size_t>(j)] == none && !std::isnan(ranges_[static_cast<std::size_t>(j)]);
       };
-      if (no_return_at(i - 1) && no_return_at(i + 1)) {
-        rejected_.push_back(i);
+      const auto lone = [&](int j) { return no_return_at(j - 1) && no_return_at(j + 1); };
+      if (lone(i)) {
+        const double ri = ranges_[static_cast<std::size_t>(i)];
+        const auto vouches = [&](int j) {
+          if (j < 0 || lone(j)) return false;
+          const double rj = ranges_[static_cast<std::size_t>(j)];
+          return std::abs(ri - rj) <= absolute_m + relative * std::min(ri, rj);
+        };
+        if (!vouches(nearest_trusted(scan, i, -1)) && !vouches(nearest_trusted(scan, i, +1))) rejected_.push_back(i);
         continue;
       }
       const double r = ranges_[static_cast<std::size_t>(i)];
@@ -687,6 +695,13 @@ TEST_CASE("scan filter: a lone return in a view past max range is a spike, even 
   // Both go; the two no returns between them, now bounded by rejected beams, are a short
   // run read as dropped beams: no information either way.
   CHECK(text(filtered(r), 177, 184) == "inf inf - - - - inf inf");
+  // A real return whose neighbours were both dropped has the wall beyond them: it stays.
+  std::vector<float> wall = closed_cell();
+  wall[179] = kInf;
+  wall[181] = kInf;
+  wall[177] = 2.2f;  // and a spike pair that it alone tells from the wall
+  wall[178] = 2.0f;
+  CHECK(text(filtered(wall), 180, 180) == text(wall, 180, 180));
   // A return beside an invalid reading (below min range) is not lone: that is no view.
   r[178] = 0.01f;
   r[180] = 0.62f;

@@ -82,10 +82,9 @@ struct ScanFilter::Beams {
   int previous(int i) const { return i > 0 ? i - 1 : (wrap ? n - 1 : -1); }
   // Beam i read no return (not an invalid reading, not a return).
   bool no_return(int i) const { return i >= 0 && state[i] == no_return_or_invalid && !std::isnan(range_m[i]); }
-  // A return with no return on both sides: a lone return in a view past max range. Walls
-  // are wider than a beam step (a 12 mm wall end subtends less than a degree only beyond
-  // 0.7 m, where a miss costs nothing): this is a spike, and two of them a few beams apart
-  // would otherwise vouch for each other across the view.
+  // A return with no return on both sides: a real one whose neighbours were both dropped,
+  // or a spike in a view past max range. Only a neighbouring return that is not lone itself
+  // vouches for it: two spikes a few beams apart in a view must not vouch for each other.
   bool lone_return(int i) const { return no_return(previous(i)) && no_return(next(i)); }
 
   // The nearest trusted return within reach of beam i going `step` (-1 or +1), or -1.
@@ -218,7 +217,9 @@ bool ScanFilter::reject_spikes() {
     // with it: not a spike.
     if (b.state[i] != trusted_start) continue;
     if (b.lone_return(i)) {
-      rejected_.push_back(i);
+      // Only a return that is not lone itself vouches for a lone one.
+      const auto vouches = [&](int j) { return j >= 0 && !b.lone_return(j) && b.near(b.range(i), b.range(j)); };
+      if (!vouches(b.nearest_trusted(i, -1)) && !vouches(b.nearest_trusted(i, +1))) rejected_.push_back(i);
       continue;
     }
     const double r = b.range(i);

@@ -5,8 +5,10 @@
 // Each reading comes out as it went in, or as NaN ("no information", which every model
 // ignores):
 //   invalid    NaN, negative or below min range                        -> NaN
-//   lone       a return with a no return on both sides (a spike in a view past
-//              max range: a wall is wider than a beam step where it matters)  -> NaN
+//   lone       a return with a no return on both sides, unless the nearest return on
+//              one side (within `neighbour_reach`) agrees with it and is not lone itself:
+//              a real return whose neighbours were dropped has the wall beyond them;
+//              spikes in a view past max range have only each other  -> NaN
 //   spike      a return that agrees with neither neighbouring return    -> NaN
 //              (nearest returns within `neighbour_reach` beams on each side): it is further
 //              than the tolerance from both, not between them, and not where the two returns
