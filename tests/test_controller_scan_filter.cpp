@@ -108,7 +108,7 @@ class ReferenceFilter {
   const mapping::ScanFilterCounts &counts() const { return counts_; }
 
  private:
-  enum State : unsigned char { none, trusted, rejected };
+  enum State : unsigned char { none, trusted, rejected, candidate };
   static constexpr double kNaNRange = std::numeric_limits<double>::quiet_NaN();
 
   static bool full_circle(const mapping::LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
@@ -149,39 +149,49 @@ class ReferenceFilter {
     const double absolute_m = options_.spike_tolerance_m();
     const double relative = options_.grazing_step(scan.fov_rad / n);
     const auto range_of = [&](int j) { return j < 0 ? kNaNRange : static_cast<double>(ranges_[static_cast<std::size_t>(j)]); };
+    const auto agree = [&](double a, double b) { return std::abs(a - b) <= absolute_m + relative * std::min(a, b); };
+    // A lone return: a no return (not an invalid reading) on both sides.
+    const bool wrap = full_circle(scan);
+    const auto no_return_at = [&](int j) {
+      if (j < 0 || j >= n) {
+        if (!wrap) return false;
+        j = (j + n) % n;
+      }
+      return state_[static_cast<std::size_t>(j)] == none && !std::isnan(ranges_[static_cast<std::size_t>(j)]);
+    };
+    const auto lone = [&](int j) { return no_return_at(j - 1) && no_return_at(j + 1); };
     rejected_.clear();
     for (int i = 0; i < n; ++i) {
       if (state_[static_cast<std::size_t>(i)] != trusted) continue;
-      // A lone return between two no returns (not invalid readings) needs a return that is
-      // not lone to vouch for it.
-      const bool wrap = full_circle(scan);
-      const auto no_return_at = [&](int j) {
-        if (j < 0 || j >= n) {
-          if (!wrap) return false;
-          j = (j + n) % n;
-        }
-        return state_[static_cast<std::size_t>(j)] == none && !std::isnan(ranges_[static_cast<std::size_t>(j)]);
-      };
-      const auto lone = [&](int j) { return no_return_at(j - 1) && no_return_at(j + 1); };
+      const double r = ranges_[static_cast<std::size_t>(i)];
       if (lone(i)) {
-        const double ri = ranges_[static_cast<std::size_t>(i)];
-        const auto vouches = [&](int j) {
-          if (j < 0 || lone(j)) return false;
-          const double rj = ranges_[static_cast<std::size_t>(j)];
-          return std::abs(ri - rj) <= absolute_m + relative * std::min(ri, rj);
-        };
+        // Needs a return that is not lone to vouch for it.
+        const auto vouches = [&](int j) { return j >= 0 && !lone(j) && agree(r, range_of(j)); };
         if (!vouches(nearest_trusted(scan, i, -1)) && !vouches(nearest_trusted(scan, i, +1))) rejected_.push_back(i);
         continue;
       }
-      const double r = ranges_[static_cast<std::size_t>(i)];
       const double left = range_of(nearest_trusted(scan, i, -1));
       const double right = range_of(nearest_trusted(scan, i, +1));
-      const auto near = [&](double other) { return std::abs(r - other) <= absolute_m + relative * std::min(r, other); };
+      const auto near = [&](double other) { return agree(r, other); };
       const bool between = std::min(left, right) - absolute_m <= r && r <= std::max(left, right) + absolute_m;
       if (near(left) || near(right) || between) continue;
       if (near(continued(scan, i, -1)) || near(continued(scan, i, +1))) continue;
       rejected_.push_back(i);
     }
+    // A candidate that the nearest return past the candidates agrees with stays.
+    for (const int i : rejected_) state_[static_cast<std::size_t>(i)] = candidate;
+    std::vector<int> kept;
+    std::vector<int> still;
+    for (const int i : rejected_) {
+      bool keep = false;
+      for (const int step : {-1, +1}) {
+        const int j = nearest_trusted(scan, i, step);
+        if (j >= 0 && agree(range_of(i), range_of(j)) && !(lone(i) && lone(j))) keep = true;
+      }
+      (keep ? kept : still).push_back(i);
+    }
+    for (const int i : kept) state_[static_cast<std::size_t>(i)] = trusted;
+    rejected_ = still;
     return reject_collected();
   }
 
@@ -707,4 +717,15 @@ TEST_CASE("scan filter: a lone return in a view past max range is a spike, even 
   r[180] = 0.62f;
   r[182] = kInf;
   CHECK(text(filtered(r), 178, 180) == "- 61 62");
+}
+
+TEST_CASE("scan filter: a real return between spikes stays (the nearest return past them agrees)") {
+  // A wall 1.5 m ahead; beam 179 a spike at 1.07 m, beams 181-182 two agreeing spikes at
+  // 0.57 / 0.54 m. Beam 180, the wall, agrees with neither neighbour: the spike rule alone
+  // rejected it too, and the cell model then read a wall 0.55 m ahead where it was open.
+  std::vector<float> r(360, 1.5f);
+  r[179] = 1.069f;
+  r[181] = 0.574f;
+  r[182] = 0.535f;
+  CHECK(text(filtered(r), 178, 183) == "150 - 150 57 54 150");
 }

@@ -23,7 +23,13 @@ constexpr int kSpikeRounds = 4;
 // Per beam. A trusted return either continues the trusted return of the beam before it
 // (agrees with it) or starts a stretch: only those can be spikes or see-through clusters,
 // so each round looks at them alone. Trusted states have bit 1 set.
-enum BeamState : unsigned char { no_return_or_invalid = 0, rejected_return = 1, trusted_start = 2, trusted_continuing = 3 };
+enum BeamState : unsigned char {
+  no_return_or_invalid = 0,
+  rejected_return = 1,
+  trusted_start = 2,
+  trusted_continuing = 3,
+  spike_candidate = 4,  // within reject_spikes only: not trusted while the candidates are looked at again
+};
 
 bool full_circle(const LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
 
@@ -232,7 +238,30 @@ bool ScanFilter::reject_spikes() {
     if (near(b.continued(i, -1)) || near(b.continued(i, +1))) continue;
     rejected_.push_back(i);
   }
+  keep_vouched_candidates();
   return reject_collected();
+}
+
+void ScanFilter::keep_vouched_candidates() {
+  if (rejected_.empty()) return;
+  for (const int i : rejected_) state_[static_cast<std::size_t>(i)] = spike_candidate;
+  const Beams b = beams();
+  // The nearest trusted returns now skip every candidate.
+  const auto vouched = [&](int i) {
+    for (const int step : {-1, +1}) {
+      const int j = b.nearest_trusted(i, step);
+      if (j >= 0 && b.near(b.range(i), b.range(j)) && !(b.lone_return(i) && b.lone_return(j))) return true;
+    }
+    return false;
+  };
+  std::vector<int> &kept = starts_scratch_;
+  kept.clear();
+  std::erase_if(rejected_, [&](int i) {
+    const bool keep = vouched(i);
+    if (keep) kept.push_back(i);
+    return keep;
+  });
+  for (const int i : kept) state_[static_cast<std::size_t>(i)] = trusted_start;
 }
 
 bool ScanFilter::reject_collected() {

@@ -17,8 +17,10 @@
 //              grazing angle; a spike jumps.
 //   see-through  a cluster of at most `max_see_through` agreeing returns further than the
 //              returns on both sides of it (two spikes that happen to agree)  -> NaN
-//              Both rules run again after each round of rejections, so that spikes side by
-//              side cannot vouch for each other.
+//              A return the rule would reject that the nearest return past the rejected
+//              ones agrees with stays (a real return between two spikes). Both rules run
+//              again after each round of rejections, so that spikes side by side cannot
+//              vouch for each other.
 //   dropout    a no return among returns: a run of at most `max_dropout_run` beams
 //              without a return, with returns on both sides             -> NaN
 //              A wall is not seen through between two beams that hit it, so a short run is
@@ -113,6 +115,9 @@ class ScanFilter {
   bool reject_spikes();
   bool reject_see_through();
   bool reject_collected();  // rejects the beams in rejected_
+  // Takes back the spikes of rejected_ that a return not itself rejected agrees with (the
+  // nearest on either side within reach, past the others): a real return between spikes.
+  void keep_vouched_candidates();
   // before: the scan before from the same pose, or null.
   void drop_dropouts(const LidarScan *before);
   // Whether `before` is a scan of the same beams from the same pose as `scan`.
@@ -130,6 +135,7 @@ class ScanFilter {
   std::vector<unsigned char> state_;
   std::vector<int> starts_;  // the trusted returns that start a stretch: all a round looks at
   std::vector<int> rejected_;
+  std::vector<int> starts_scratch_;  // keep_vouched_candidates' list, kept for its capacity
   ScanFilterCounts counts_;
 };
 
