@@ -40,6 +40,14 @@ void validate(const SensorModelOptions &options) {
       throw common::InputError(
           fmt::format("--clamp MIN must be less than MAX (got {} >= {})", c.min, c.max));
     }
+    // A new sub-cell starts at l(prior): outside the bounds the first update would jump
+    // to a bound, and the map would read unobserved cells as observed.
+    const double l0 = log_odds(options.prior, options.base);
+    if (!(c.min < l0 && l0 < c.max)) {
+      throw common::InputError(fmt::format(
+          "--clamp must hold the prior's log-odds {:.4g} (--prior {}) between MIN and MAX (got {} {})", l0,
+          options.prior, c.min, c.max));
+    }
   }
 }
 
