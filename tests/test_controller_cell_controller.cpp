@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "maze/maze.hpp"
+#include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
 #include "mapping/walls.hpp"
 #include "robot/cell_controller.hpp"
@@ -134,13 +135,21 @@ TEST_CASE("CellController: a side still unknown after every look ends the run in
   CHECK(r.visited == 3);
 }
 
-TEST_CASE("ControllerOptions: the defaults are the hambot's and valid") {
-  robot::ControllerOptions o = lab4x4();
-  CHECK(error_of(o) == "");
-  CHECK(o.motion.wheel_radius_m == 0.045);
-  CHECK(o.motion.axle_m == 0.184);
-  CHECK(o.devices.left_encoder == "left wheel encoder");
-  CHECK(o.devices.lidar == "lidar");
+TEST_CASE("ControllerOptions: the defaults drive the hambot through a maze, and no other robot") {
+  // Nothing set but the maze: the default wheels, axle and device names are the hambot's,
+  // so it turns and drives cell by cell (a wrong wheel radius or axle would overshoot or
+  // stall) and maps the whole open 4 x 4 maze.
+  webots::embedded::Simulation hambot(maze::Maze(4, 4), maze::sim::default_profile(), maze::sim::SimulationOptions{});
+  robot::CellController controller(hambot.robot(), lab4x4());
+  const robot::RunResult r = controller.run(robot::RunHooks{});
+  CHECK(r.reason == robot::EndReason::done);
+  CHECK(r.visited == 16);
+  CHECK(r.moves >= 15);
+  // A robot whose devices are named otherwise is refused, naming the device.
+  webots::embedded::Simulation other(maze::Maze(4, 4), maze::sim::find_profile("bumper-depth"),
+                                     maze::sim::SimulationOptions{});
+  CHECK_THROWS_WITH_AS(robot::CellController(other.robot(), lab4x4()), "the robot has no device \"lidar\"",
+                       common::InputError);
 }
 
 TEST_CASE("ControllerOptions: each concern validated, messages to the letter") {

@@ -86,7 +86,22 @@ TEST_CASE("generator: large mazes without recursion (dfs 1024 x 1024, the others
     const maze::Maze m = maze::generate_maze({side, side, 9, 0.0, algorithm});
     const auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     MESSAGE(side << "x" << side << " algorithm " << static_cast<int>(algorithm) << ": " << ms << " ms");
+    // A perfect maze: a spanning tree of the cells, each side seen from both cells alike,
+    // the outer boundary closed.
     CHECK(m.passage_count() == cells(m) - 1);
+    CHECK(m.reachable_count() == cells(m));
+    std::size_t openings = 0;
+    for (int y = 0; y < side; ++y) {
+      for (int x = 0; x < side; ++x) {
+        if (x + 1 < side && !m.has_wall({x, y}, maze::Side::east)) ++openings;
+        if (y + 1 < side && !m.has_wall({x, y}, maze::Side::north)) ++openings;
+      }
+      REQUIRE(m.has_wall({0, y}, maze::Side::west));
+      REQUIRE(m.has_wall({side - 1, y}, maze::Side::east));
+      REQUIRE(m.has_wall({y, 0}, maze::Side::south));
+      REQUIRE(m.has_wall({y, side - 1}, maze::Side::north));
+    }
+    CHECK(openings == cells(m) - 1);
   }
 }
 
