@@ -42,17 +42,18 @@ void draw_progress(std::size_t done, std::size_t total) {
 }  // namespace
 
 void add_batch_command(CLI::App &cli, CommandContext &context) {
-  auto input = std::make_shared<RunInput>();
+  auto parsed = std::make_shared<RunOptions>();
   auto batch = std::make_shared<BatchInput>();
   CLI::App *command = cli.add_subcommand(
       "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
   command->add_option("WORLD", batch->worlds, "maze files or folders")->required();
-  command->add_option("--jobs", batch->jobs, "parallel runs (default: all cores)");
+  command->add_option("--jobs", batch->jobs, "N: parallel runs (default all cores)");
   command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
-  add_mapping_run_options(*command, *input);
-  command->callback([input, batch, &context] {
-    RunOptions options = to_run_options(*input);
-    options.quiet = true;
+  add_mapping_run_options(*command, *parsed);
+  command->callback([command, parsed, batch, &context] {
+    RunOptions options = checked_run_options(*command, *parsed, false);
+    options.output.quiet = true;
+    print_warnings(options_not_applying(*command, options));
     if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
     const int jobs = batch->jobs > 0 ? batch->jobs
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -1,6 +1,7 @@
 // maze_mapper demo 1d: the textbook 1-D log-odds exercise (see mapping/demo_1d.hpp for the
 // model and its conventions, render/demo_1d_render.hpp for the table and plots).
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <iostream>
@@ -11,12 +12,14 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "mapping/demo_1d.hpp"
+#include "app/cli_options.hpp"
 #include "model_options.hpp"
 #include "render/demo_1d_render.hpp"
 #include "render/text_format.hpp"
@@ -28,10 +31,9 @@ namespace {
 struct Demo1dInput {
   std::string measurements;  // comma-separated cm
   bool measurements_given = false;  // otherwise the exercise's list
-  ModelOptionsInput model;
-  mapping::Demo1dOptions geometry;  // resolution, length, behind (measurements and model set below)
+  mapping::Demo1dOptions options;   // resolution, length, behind, the sensor model (measurements set below)
   std::string order = "given";
-  std::string seed = std::to_string(common::kDefaultSeed);
+  std::uint64_t seed = common::kDefaultSeed;
   std::string svg_path;
 };
 
@@ -63,20 +65,9 @@ std::vector<double> parse_measurements(std::string_view text) {
   }
 }
 
-std::uint64_t parse_seed(const std::string &text) {
-  std::uint64_t seed = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
-  if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
-    throw common::InputError("--seed must be a whole number from 0 to 18446744073709551615 (got " +
-                             text + ")");
-  }
-  return seed;
-}
-
 mapping::Demo1dOptions to_options(const Demo1dInput &input) {
-  mapping::Demo1dOptions options = input.geometry;
+  mapping::Demo1dOptions options = input.options;
   if (input.measurements_given) options.measurements_cm = parse_measurements(input.measurements);
-  options.model = to_sensor_model_options(input.model);
   mapping::validate(options);
   if (input.order != "given" && input.order != "shuffle") {
     throw common::InputError("--order must be given or shuffle (got " + input.order + ")");
@@ -134,7 +125,7 @@ std::string order_report(const std::vector<mapping::Demo1dCell> &given,
 
 int run_demo_1d(const Demo1dInput &input) {
   const mapping::Demo1dOptions options = to_options(input);
-  const std::uint64_t seed = parse_seed(input.seed);
+  const std::uint64_t seed = input.seed;
   const bool shuffle = input.order == "shuffle";
   const std::vector<double> order =
       shuffle ? mapping::shuffled(options.measurements_cm, seed) : options.measurements_cm;
@@ -159,26 +150,46 @@ int run_demo_1d(const Demo1dInput &input) {
   return status;
 }
 
-}  // namespace
+// `demo` alone: the demos, one a line, as `robot` alone lists the robots.
+void list_demos(const CLI::App &demo, std::ostream &out) {
+  std::size_t width = 0;
+  const auto all = [](const CLI::App *) { return true; };
+  for (const CLI::App *d : demo.get_subcommands(all)) width = std::max(width, d->get_name().size());
+  for (const CLI::App *d : demo.get_subcommands(all)) {
+    out << fmt::format("{:<{}}  {}\n", d->get_name(), width, d->get_description());
+  }
+}
 
-void add_demo_command(CLI::App &cli, CommandContext &context) {
-  CLI::App *demo = cli.add_subcommand("demo", "teaching demos of the log-odds mapping");
-  demo->require_subcommand(1);
-  CLI::App *one_d = demo->add_subcommand("1d", "the textbook 1-D log-odds exercise");
+void add_demo_1d(CLI::App &demo, CommandContext &context) {
+  CLI::App *one_d = demo.add_subcommand("1d", "the textbook 1-D log-odds exercise");
   auto input = std::make_shared<Demo1dInput>();
+  mapping::Demo1dOptions &o = input->options;
   CLI::Option *measurements = one_d->add_option(
       "--measurements", input->measurements,
-      "comma-separated ranges in cm (default 101,82,91,112,99,151,96,85,99,105)");
-  add_model_options(*one_d, input->model);
-  one_d->add_option("--behind", input->geometry.behind_cm, "occupied stretch behind a hit, cm (default 20)");
-  one_d->add_option("--resolution", input->geometry.resolution_cm, "spacing of the cells, cm (default 10)");
-  one_d->add_option("--length", input->geometry.length_cm, "position of the last cell, cm (default 200)");
+      fmt::format("comma-separated ranges in cm (default {})", fmt::join(o.measurements_cm, ",")));
+  add_model_options(*one_d, o.model);
+  one_d->add_option("--behind", o.behind_cm, fmt::format("occupied stretch behind a hit, cm (default {})", o.behind_cm));
+  one_d->add_option("--resolution", o.resolution_cm, fmt::format("spacing of the cells, cm (default {})", o.resolution_cm));
+  one_d->add_option("--length", o.length_cm, fmt::format("position of the last cell, cm (default {})", o.length_cm));
   one_d->add_option("--order", input->order, "integration order: given or shuffle (default given)");
-  one_d->add_option("--seed", input->seed, "seed of the shuffle (default 42)");
-  one_d->add_option("--svg", input->svg_path, "also write the plot as an SVG file");
+  add_seed_option(*one_d, input->seed, "the shuffle");
+  one_d->add_option("--svg", input->svg_path, "FILE: also write the plot as an SVG file");
   one_d->callback([&context, input, measurements] {
     input->measurements_given = measurements->count() > 0;
     context.status = run_demo_1d(*input);
+  });
+}
+
+}  // namespace
+
+void add_demo_command(CLI::App &cli, CommandContext &context) {
+  CLI::App *demo = cli.add_subcommand("demo", "teaching demos of the log-odds mapping; alone, the list of demos");
+  demo->require_subcommand(0, 1);
+  add_demo_1d(*demo, context);
+  demo->callback([demo, &context] {
+    if (!demo->get_subcommands().empty()) return;
+    list_demos(*demo, std::cout);
+    context.status = 0;
   });
 }
 

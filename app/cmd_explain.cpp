@@ -120,8 +120,8 @@ std::string repeated_section(const mapping::SensorModel &model) {
   return out;
 }
 
-void run_explain(const ModelOptionsInput &input) {
-  const mapping::SensorModel model(to_sensor_model_options(input));
+void run_explain(const mapping::SensorModelOptions &options) {
+  const mapping::SensorModel model(options);
   const mapping::SensorModelOptions &o = model.options();
   std::cout << header(o) << "\n"
             << probability_table(o) << "\n"
@@ -134,7 +134,7 @@ void run_explain(const ModelOptionsInput &input) {
 void add_explain_command(CLI::App &cli, CommandContext &context) {
   CLI::App *explain =
       cli.add_subcommand("explain", "the sensor model's numbers: p, log-odds, repeated updates");
-  auto input = std::make_shared<ModelOptionsInput>();
+  auto input = std::make_shared<mapping::SensorModelOptions>();
   add_model_options(*explain, *input);
   add_clamp_option(*explain, *input);
   explain->callback([&context, input] {

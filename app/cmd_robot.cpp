@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "app/cli_options.hpp"
 #include "app/profile_json.hpp"
 #include "commands.hpp"
 #include "maze/sim/profile.hpp"
@@ -27,9 +28,9 @@ void list_profiles(std::ostream &out) {
 }  // namespace
 
 void add_robot_command(CLI::App &cli, CommandContext &context) {
-  auto *cmd = cli.add_subcommand("robot", "List the robot profiles, or print one as JSON");
+  auto *cmd = cli.add_subcommand("robot", "list the robot profiles, or print one as JSON");
   auto name = std::make_shared<std::string>();
-  cmd->add_option("NAME", *name, "a built-in profile, or a profile file (FILE.json) to check and print");
+  cmd->add_option("NAME", *name, "a built-in profile, one of " + robot_names() + ", or a profile file (FILE.json) to check and print");
   cmd->callback([name, &context] {
     if (name->empty()) {
       list_profiles(std::cout);

@@ -19,7 +19,12 @@ struct CommandContext {
   RunOptions *run_parse_only = nullptr;
 };
 
-// maze_mapper demo 1d: the textbook 1-D log-odds exercise (cmd_demo.cpp).
+// Every subcommand above, and the program's own flags (--help, --version), in the order
+// `maze_mapper --help` lists them (cli_app.cpp).
+void add_commands(CLI::App &cli, CommandContext &context);
+
+// maze_mapper demo 1d: the textbook 1-D log-odds exercise; `demo` alone lists the demos
+// (cmd_demo.cpp).
 void add_demo_command(CLI::App &cli, CommandContext &context);
 
 // maze_mapper explain: the sensor model's numbers (cmd_explain.cpp).
@@ -35,8 +40,11 @@ void add_show_command(CLI::App &cli, CommandContext &context);
 void add_convert_command(CLI::App &cli, CommandContext &context);
 // `generate WxH [--seed N] [--loops F] [--algorithm dfs|kruskal|prim] [-o FILE]`.
 void add_generate_command(CLI::App &cli, CommandContext &context);
-// `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp).
+// `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp); with it `plan`
+// (explore, then a wavefront path; exit status 1 when none is found) and `compare`.
 void add_run_command(CLI::App &cli, CommandContext &context);
+// `compare [WORLD] --subcells K1,K2,... [options]` (cmd_compare.cpp).
+void add_compare_command(CLI::App &cli, CommandContext &context);
 // The options `maze_mapper run ...` would run with (argv as main gets it: the program, then
 // `run` and its arguments), parsed and checked without running (tests, fuzzing). Throws
 // CLI::Error or common::InputError as the command line would.
@@ -45,7 +53,8 @@ RunOptions parse_run_options(int argc, const char *const *argv);
 void add_batch_command(CLI::App &cli, CommandContext &context);
 // The default world: worlds/lab4x4.txt from the working directory, else the source tree's.
 std::string default_world();
-// `scan WORLD --pose X Y YAW [--cell-size M]`: one lidar range image, `index angle_rad range_m` a line.
+// `scan WORLD --pose X Y YAW [--cell-size M]`: one lidar range image, `index angle_rad range_m`
+// a line. YAW is radians, or degrees with a `deg` suffix (90deg).
 void add_scan_command(CLI::App &cli, CommandContext &context);
 // `robot [NAME|FILE.json]`: the built-in profiles, one a line, or one profile as JSON.
 void add_robot_command(CLI::App &cli, CommandContext &context);

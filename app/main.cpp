@@ -25,19 +25,8 @@ int main(int argc, char **argv) {
   CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot and map it into a "
                "4D log-odds occupancy grid",
                "maze_mapper"};
-  cli.set_version_flag("--version", std::string(MAZE_MAPPER_VERSION));
-  cli.require_subcommand(0, 1);
-
   app::CommandContext context;
-  app::add_run_command(cli, context);
-  app::add_batch_command(cli, context);
-  app::add_demo_command(cli, context);
-  app::add_explain_command(cli, context);
-  app::add_show_command(cli, context);
-  app::add_convert_command(cli, context);
-  app::add_generate_command(cli, context);
-  app::add_scan_command(cli, context);
-  app::add_robot_command(cli, context);
+  app::add_commands(cli, context);
 
   try {
     if (argc <= 1) {

@@ -226,11 +226,20 @@ std::string png_file(const mapping::OccupancyGrid &grid, const mapping::SensorMo
 
 namespace {
 
+using Json = nlohmann::ordered_json;
+
+template <typename T>
+Json or_null(const std::optional<T> &value) {
+  return value ? Json(*value) : Json(nullptr);
+}
+
+Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
+
 // --cell-size, --start, --goal as given (null when not).
-nlohmann::ordered_json world_overrides_json(const maze::WorldOverrides &w) {
-  const auto cell = [](maze::Cell c) { return nlohmann::ordered_json::array({c.x, c.y}); };
-  nlohmann::ordered_json j;
-  j["cell_size_m"] = w.cell_size_m ? nlohmann::ordered_json(*w.cell_size_m) : nlohmann::ordered_json(nullptr);
+Json world_overrides_json(const maze::WorldOverrides &w) {
+  const auto cell = [](maze::Cell c) { return Json::array({c.x, c.y}); };
+  Json j;
+  j["cell_size_m"] = or_null(w.cell_size_m);
   j["start"] = nullptr;
   if (w.start) {
     j["start"] = cell(*w.start);
@@ -238,54 +247,141 @@ nlohmann::ordered_json world_overrides_json(const maze::WorldOverrides &w) {
   }
   j["goals"] = nullptr;
   if (w.goals) {
-    j["goals"] = nlohmann::ordered_json::array();
+    j["goals"] = Json::array();
     for (const maze::Cell g : *w.goals) j["goals"].push_back(cell(g));
   }
   return j;
 }
 
+Json sensor_json(const mapping::SensorModelOptions &s) {
+  Json j;
+  j["p_free"] = s.p_free;
+  j["p_occ"] = s.p_occ;
+  j["prior"] = s.prior;
+  j["log_base"] = std::string(mapping::to_string(s.base));
+  j["clamp"] = s.clamp ? Json::array({s.clamp->min, s.clamp->max}) : Json(nullptr);
+  return j;
+}
+
+Json mapping_json(const mapping::MappingOptions &m) {
+  Json j;
+  j["model"] = std::string(mapping::to_string(m.kind));
+  j["wall_margin"] = m.wall_margin;
+  j["hit_depth"] = m.hit_depth;
+  j["ignore_no_return"] = m.ignore_no_return;
+  return j;
+}
+
+Json range_model_json(const mapping::RangeModelOptions &r) {
+  Json j;
+  j["pie_half_angle_rad"] = r.pie_half_angle_rad;
+  j["pie_contact_m"] = r.pie_contact_m;
+  j["pie_usable_fraction"] = r.pie_usable_fraction;
+  return j;
+}
+
+// --seed, --noise (null: the robot's own) and the faults.
+Json simulation_json(const maze::sim::SimulationOptions &s) {
+  Json j;
+  j["seed"] = s.seed;
+  j["noise"] = or_null(s.noise);
+  j["dropout"] = s.dropout;
+  j["spikes"] = s.spikes;
+  j["stuck_bumper"] = s.stuck_bumper.empty() ? Json(nullptr) : Json(s.stuck_bumper);
+  j["wheel_slip"] = s.wheel_slip;
+  return j;
+}
+
+Json plan_options_json(const PlanOptions &p) {
+  Json j;
+  j["from"] = p.from ? cell_json(*p.from) : Json(nullptr);
+  j["to"] = p.to ? cell_json(*p.to) : Json(nullptr);
+  j["dilate"] = p.wavefront.dilate;
+  j["speed_run"] = p.speed_run;
+  return j;
+}
+
+Json output_json(const OutputOptions &o) {
+  Json j;
+  j["out"] = o.out_dir;
+  j["ascii"] = o.ascii;
+  j["unknown"] = o.unknown ? Json(std::string(1, *o.unknown)) : Json(nullptr);
+  j["quiet"] = o.quiet;
+  j["color"] = o.color;
+  j["animate"] = o.animate;
+  j["fps"] = o.fps;
+  j["speed"] = o.speed;
+  j["step"] = o.step;
+  return j;
+}
+
+// Every option in effect, one object a concern as RunOptions holds them.
+Json options_json(const RunOptions &o, const RunSummary &s) {
+  Json j;
+  j["world"] = o.world;
+  j["world_overrides"] = world_overrides_json(o.world_overrides);
+  j["subcells"] = o.subcells;
+  j["strategy"] = std::string(explore::to_string(o.strategy));
+  j["robot"] = o.robot;
+  j["threshold"] = or_null(o.threshold);
+  j["max_steps"] = s.max_steps;
+  j["mapping"] = mapping_json(o.mapping);
+  j["sensor"] = sensor_json(o.sensor);
+  j["range_model"] = range_model_json(o.range_model);
+  j["simulation"] = simulation_json(o.simulation);
+  j["plan"] = plan_options_json(o.plan);
+  j["output"] = output_json(o.output);
+  return j;
+}
+
+double two_decimals(double percent) { return std::round(percent * 100.0) / 100.0; }
+
+// The planning and speed-run keys of the summary block (null when it has none).
+void add_plan_keys(const RunOptions &o, const RunSummary &s, Json &j) {
+  j["plan"] = nullptr;
+  j["plan_length"] = nullptr;
+  if (s.plan) {
+    j["plan"] = Json{{"from", cell_json(s.plan->from)}, {"to", cell_json(s.plan->to)}, {"dilate", s.plan->dilate}};
+    j["plan_length"] = s.plan->found ? Json{{"subcells", s.plan->length_subcells}, {"cells", s.plan->length_cells}}
+                                     : Json("no path");
+  }
+  j["explore_time_s"] = o.plan.speed_run ? Json(s.explore_time_s) : Json(nullptr);
+  j["speed_run"] = nullptr;
+  if (o.plan.speed_run && s.speed_run_time_s) {
+    j["speed_run"] = Json{{"cells", s.speed_run_cells}, {"time_s", *s.speed_run_time_s}};
+  } else if (o.plan.speed_run) {
+    j["speed_run"] = "none";
+  }
+}
+
 }  // namespace
 
 std::string summary_json(const RunOptions &o, const RunSummary &s) {
-  nlohmann::ordered_json j;
+  Json j;
   j["world"] = o.world;
   j["size"] = fmt::format("{}x{}", s.width, s.height);
   j["width"] = s.width;
   j["height"] = s.height;
   j["subcells"] = o.subcells;
-  j["model"] = std::string(mapping::to_string(o.model));
+  j["model"] = std::string(mapping::to_string(o.mapping.kind));
+  j["threshold"] = or_null(o.threshold);
   j["strategy"] = std::string(explore::to_string(o.strategy));
   j["robot"] = o.robot;
-  j["seed"] = o.seed;
+  j["seed"] = o.simulation.seed;
   j["end"] = std::string(robot::to_string(s.reason));
   j["end_message"] = s.message;
   j["steps"] = s.steps;
   j["moves"] = s.moves;
   j["visited"] = s.visited;
+  j["goal"] = o.strategy == explore::StrategyKind::floodfill ? Json(s.reached_goal ? "reached" : "not reached")
+                                                              : Json(nullptr);
   j["reachable"] = s.score.reachable_cells;
-  j["coverage"] = std::round(s.score.coverage_percent() * 100.0) / 100.0;
-  j["wall_accuracy"] = std::round(s.score.wall_accuracy_percent() * 100.0) / 100.0;
+  j["coverage"] = two_decimals(s.score.coverage_percent());
+  j["wall_accuracy"] = two_decimals(s.score.wall_accuracy_percent());
+  add_plan_keys(o, s, j);
   j["sim_time_s"] = s.sim_time_s;
   j["wall_time_ms"] = s.wall_time_ms;
-  nlohmann::ordered_json opt;
-  opt["subcells"] = o.subcells;
-  opt["model"] = std::string(mapping::to_string(o.model));
-  opt["hit_depth"] = o.hit_depth;
-  opt["ignore_no_return"] = o.ignore_no_return;
-  opt["strategy"] = std::string(explore::to_string(o.strategy));
-  opt["robot"] = o.robot;
-  opt["seed"] = o.seed;
-  opt["noise"] = o.noise ? nlohmann::ordered_json(*o.noise) : nlohmann::ordered_json(nullptr);
-  opt["p_free"] = o.sensor.p_free;
-  opt["p_occ"] = o.sensor.p_occ;
-  opt["prior"] = o.sensor.prior;
-  opt["log_base"] = o.sensor.base == mapping::LogBase::ten ? "10" : "e";
-  opt["clamp"] = o.sensor.clamp ? nlohmann::ordered_json::array({o.sensor.clamp->min, o.sensor.clamp->max})
-                                : nlohmann::ordered_json(nullptr);
-  opt["max_steps"] = o.max_steps ? nlohmann::ordered_json(*o.max_steps) : nlohmann::ordered_json(nullptr);
-  opt["out"] = o.out_dir;
-  opt["world"] = world_overrides_json(o.world_overrides);
-  j["options"] = opt;
+  j["options"] = options_json(o, s);
   return j.dump(2) + "\n";
 }
 

@@ -13,7 +13,11 @@
 //                       occupied; never observed is mid-grey 128), each sub-cell a square of
 //                       png_scale() pixels, the robot's path (cell centres in order of
 //                       arrival) drawn over it in red, the start marked in green. libpng.
-//   summary.json        the summary block's keys with typed values, plus "options".
+//   summary.json        every key of the summary block (format_summary), with typed values
+//                       (null where the block leaves the key out: "goal" without floodfill,
+//                       "plan" without planning, ...), plus "options": every option in
+//                       effect, one object a concern of RunOptions ("max_steps" is the limit
+//                       in effect; a null "noise" is the robot's own).
 //   trace.csv           one row a control step (see trace_header()).
 // Every file is written to a temporary name in DIR, then renamed.
 

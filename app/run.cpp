@@ -17,6 +17,7 @@
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
+#include "mapping/occupancy_grid.hpp"
 #include "mapping/walls.hpp"
 #include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
@@ -68,6 +69,35 @@ std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
 }
 
 
+// What a model reads, in words: "robot 'x' has no lidar ... (robots with a lidar: ...)".
+struct SensorNeed {
+  bool (*has)(const maze::sim::RobotProfile &);
+  const char *missing;  // after "has no"
+  const char *having;   // after "robots with"
+};
+
+SensorNeed sensor_need(mapping::ModelKind model) {
+  if (mapping::uses_lidar(model)) {
+    return {[](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); }, "lidar", "a lidar"};
+  }
+  if (model == mapping::ModelKind::bump) {
+    return {[](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); }, "bumpers", "bumpers"};
+  }
+  return {[](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); }, "range sensors",
+          "range sensors"};
+}
+
+robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
+  robot::DeviceNames d;
+  d.left_motor = profile.left_motor;
+  d.right_motor = profile.right_motor;
+  d.left_encoder = profile.left_encoder;
+  d.right_encoder = profile.right_encoder;
+  d.imu = profile.imu;
+  d.gps = profile.gps;
+  if (!profile.lidars.empty()) d.lidar = profile.lidars.front().name;
+  return d;
+}
 LearnedSide to_learned(mapping::SideState s) {
   switch (s) {
     case mapping::SideState::open: return LearnedSide::open;
@@ -92,8 +122,6 @@ MapScore score(const maze::Maze &truth, const robot::RunResult &result, float in
   };
   return score_map(truth, visited, learned);
 }
-
-std::string percent(double value) { return fmt::format("{:.2f}%", value); }
 
 struct RunState {
   bool quit = false;          // q at a --step prompt
@@ -130,11 +158,10 @@ void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option)
 PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
                       const mapping::SensorModel &model, render::MapStyle style, std::ostream &out) {
   PlanSummary p;
-  p.from = options.plan_from.value_or(result.path.back());
-  p.to = *options.plan_to;
-  plan::WavefrontOptions wave;
-  wave.dilate = options.dilate;
-  const auto path = plan::wavefront(result.grid, model, p.from, p.to, wave);
+  p.from = options.plan.from.value_or(result.path.back());
+  p.to = *options.plan.to;
+  p.dilate = options.plan.wavefront.dilate;
+  const auto path = plan::wavefront(result.grid, model, p.from, p.to, options.plan.wavefront);
   if (!path) {
     out << fmt::format("no path from ({},{}) to ({},{}) on the learned map\n\n", p.from.x, p.from.y,
                        p.to.x, p.to.y);
@@ -179,26 +206,18 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.start_heading = to_heading(maze.start_heading());
   for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
   c.sensor = options.sensor;
-  c.mapping.kind = options.model;
-  c.mapping.hit_depth = options.hit_depth;
-  c.mapping.ignore_no_return = options.ignore_no_return;
+  c.mapping = options.mapping;
   c.strategy = options.strategy;
   c.motion.wheel_radius_m = profile.wheel_radius_m;
   c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
-  c.devices.left_motor = profile.left_motor;
-  c.devices.right_motor = profile.right_motor;
-  c.devices.left_encoder = profile.left_encoder;
-  c.devices.right_encoder = profile.right_encoder;
-  c.devices.imu = profile.imu;
-  c.devices.gps = profile.gps;
+  c.devices = devices_of(profile);
   if (!profile.lidars.empty()) {
     const maze::sim::LidarSpec &lidar = profile.lidars.front();
-    c.devices.lidar = lidar.name;
     // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
-    c.scan_filter.range_noise_m = options.noise.value_or(lidar.noise) * lidar.max_range_m;
+    c.scan_filter.range_noise_m = options.simulation.noise.value_or(lidar.noise) * lidar.max_range_m;
   }
-  c.speed_run = options.speed_run;
+  c.speed_run = options.plan.speed_run;
   c.sensing = sensing_of(profile);
   c.sensing.range_model = options.range_model;
   if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
@@ -206,35 +225,12 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
 }
 
 void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  const auto lidar = [](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); };
-  const auto bumpers = [](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); };
-  const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
-  bool (*has)(const maze::sim::RobotProfile &) = ranges;
-  const char *what = "range sensors";
-  if (mapping::uses_lidar(options.model)) {
-    has = lidar;
-    what = "a lidar";
-  } else if (options.model == mapping::ModelKind::bump) {
-    has = bumpers;
-    what = "bumpers";
-  }
-  if (!has(profile)) {
+  const SensorNeed need = sensor_need(options.mapping.kind);
+  if (!need.has(profile)) {
     throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
-                                         profile.name, what, mapping::to_string(options.model),
-                                         what, robots_with(has)));
+                                         profile.name, need.missing, mapping::to_string(options.mapping.kind),
+                                         need.having, robots_with(need.has)));
   }
-}
-
-std::string_view default_robot(mapping::ModelKind model) {
-  switch (model) {
-    case mapping::ModelKind::cell:
-    case mapping::ModelKind::ray: return "hambot";
-    case mapping::ModelKind::bump:
-    case mapping::ModelKind::depth: return "bumper-depth";
-    case mapping::ModelKind::pie:
-    case mapping::ModelKind::cone: return "ir-ring";
-  }
-  return "hambot";
 }
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
@@ -247,53 +243,45 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
   return run_maze(options, world.maze, out, controls);
 }
 
-RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
-                    const RunControls &controls) {
-  const auto started = std::chrono::steady_clock::now();
-  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+namespace {
+
+// What valid options must still fit: the robot reads what the model needs, the grid of this
+// maze fits in memory, the plan's cells lie in the maze.
+void check_fit(const RunOptions &options, const maze::Maze &truth, const maze::sim::RobotProfile &profile,
+               const robot::ControllerOptions &controller) {
   require_sensors(options, profile);
+  mapping::validate(controller.geometry, mapping::kDefaultMaxGridBytes);
+  if (options.plan.from) require_inside(truth, *options.plan.from, "--from");
+  if (options.plan.to) require_inside(truth, *options.plan.to, options.plan.only ? "--to" : "--plan-to");
+}
 
-  const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
-  robot::validate(controller_opts);
-  plan::validate(plan::WavefrontOptions{0.6, options.dilate});
-  if (options.plan_from) require_inside(truth, *options.plan_from, "--from");
-  if (options.plan_to) require_inside(truth, *options.plan_to, options.plan_from ? "--to" : "--plan-to");
-
-  maze::sim::SimulationOptions sim_opts;
-  sim_opts.seed = options.seed;
-  sim_opts.noise = options.noise;
-  sim_opts.dropout = options.dropout;
-  sim_opts.spikes = options.spikes;
-  sim_opts.stuck_bumper = options.stuck_bumper;
-  sim_opts.wheel_slip = options.wheel_slip;
-  webots::embedded::Simulation simulation(truth, profile, sim_opts);
-
-  const mapping::SensorModel model(options.sensor);
+render::MapStyle map_style(const OutputOptions &output, const mapping::SensorModel &model,
+                           const robot::ControllerOptions &controller) {
   render::MapStyle style;
-  style.ascii = options.ascii;
-  style.unknown = options.unknown;
+  style.ascii = output.ascii;
+  style.unknown = output.unknown;
   style.initial_log_odds = static_cast<float>(model.prior_log_odds());
-  style.color = options.color;
+  style.color = output.color;
+  style.threshold = controller.occupied_threshold;
+  return style;
+}
 
-  if (!options.out_dir.empty()) prepare_output_dir(options.out_dir);
-  style.threshold = controller_opts.occupied_threshold;
-
-  robot::CellController controller(simulation.robot(), controller_opts);
-  RunState state;
-  if (!options.out_dir.empty()) state.trace = trace_header();
+// The run itself, watched as the options ask: progress or animation on out, --step's
+// prompt, the trace for --out, Ctrl-C.
+robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webots::embedded::Simulation &simulation,
+                       robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
+                       const RunControls &controls, RunState &state) {
+  const OutputOptions &o = options.output;
   std::optional<ScreenGuard> screen;
   std::optional<Animator> animator;
-  if (options.animate) {
+  if (o.animate) {
     screen.emplace(out);
-    animator.emplace(out, style,
-                     AnimationOptions{options.fps, options.speed, terminal_size(controls.terminal_fd)});
+    animator.emplace(out, style, AnimationOptions{o.fps, o.speed, terminal_size(controls.terminal_fd)});
   }
   robot::RunHooks hooks;
   std::optional<robot::ProgressPrinter> printer;
-  if (!options.quiet && !options.animate) {
-    printer.emplace(out, style, truth.width() * truth.height());
-  }
-  if (printer || animator || options.step) {
+  if (!o.quiet && !o.animate) printer.emplace(out, style, truth.width() * truth.height());
+  if (printer || animator || o.step) {
     hooks.on_move = [&](const robot::MoveReport &report) {
       if (printer) (*printer)(report);
       if (animator) {
@@ -302,10 +290,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
                                             robot::Action::rest, 0, report.grid, report.visits},
                           pose.x_m, pose.y_m, true);
       }
-      if (options.step && !state.quit) wait_for_step(controls, report, state);
+      if (o.step && !state.quit) wait_for_step(controls, report, state);
     };
   }
-  if (!options.out_dir.empty() || animator || options.step || controls.interrupted) {
+  if (!o.out_dir.empty() || animator || o.step || controls.interrupted) {
     hooks.on_step = [&](const robot::StepReport &step) {
       if (controls.interrupted && controls.interrupted()) {
         state.interrupted = true;
@@ -313,14 +301,16 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
       }
       if (state.quit) return false;
       const maze::sim::Pose &pose = simulation.pose();
-      if (!options.out_dir.empty()) append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad);
+      if (!o.out_dir.empty()) append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad);
       if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
       return true;
     };
   }
-  const robot::RunResult result = controller.run(hooks);
-  screen.reset();
+  return controller.run(hooks);
+}
 
+RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const robot::RunResult &result,
+                     const RunState &state, const render::MapStyle &style) {
   RunSummary summary;
   summary.reason = result.reason;
   summary.message = result.message;
@@ -330,6 +320,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   }
   summary.width = truth.width();
   summary.height = truth.height();
+  summary.max_steps = options.max_steps.value_or(max_steps_for(truth));
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;
@@ -342,93 +333,63 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   summary.explore_time_s = result.explore_time_s;
   summary.speed_run_time_s = result.speed_run_time_s;
   summary.speed_run_cells = result.speed_run_cells;
+  return summary;
+}
 
-  if (options.color && !result.path.empty()) {
-    const mapping::Cell last = result.path.back();
-    const int mid = options.subcells / 2;
-    style.robot = render::RobotMark{mapping::to_global(last, {mid, mid}, options.subcells),
-                                    render::arrow(result.visits.heading(last).value_or(mapping::Heading::north),
-                                                  options.ascii)};
-  }
+// The robot drawn where it ended, in colour.
+render::RobotMark robot_mark(const robot::RunResult &result, const RunOptions &options) {
+  const mapping::Cell last = result.path.back();
+  const int mid = options.subcells / 2;
+  return render::RobotMark{
+      mapping::to_global(last, {mid, mid}, options.subcells),
+      render::arrow(result.visits.heading(last).value_or(mapping::Heading::north), options.output.ascii)};
+}
+
+}  // namespace
+
+RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
+                    const RunControls &controls) {
+  const auto started = std::chrono::steady_clock::now();
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
+  check_fit(options, truth, profile, controller_opts);
+  webots::embedded::Simulation simulation(truth, profile, options.simulation);
+  const mapping::SensorModel model(options.sensor);
+  render::MapStyle style = map_style(options.output, model, controller_opts);
+  const std::string &out_dir = options.output.out_dir;
+  if (!out_dir.empty()) prepare_output_dir(out_dir);
+
+  robot::CellController controller(simulation.robot(), controller_opts);
+  RunState state;
+  if (!out_dir.empty()) state.trace = trace_header();
+  const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
+  RunSummary summary = summarize(options, truth, result, state, style);
+  if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
   // by Ctrl-C writes its files and its summary, without the maps.
   std::ostringstream planned;
-  if (options.plan_to) summary.plan = plan_path(options, result, model, style, planned);
+  if (options.plan.to) summary.plan = plan_path(options, result, model, style, planned);
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  if (!options.out_dir.empty()) {
-    write_outputs(options.out_dir, options, summary,
-                  RunFiles{&result.grid, &model, &result.path, &state.trace});
+  if (!out_dir.empty()) {
+    write_outputs(out_dir, options, summary, RunFiles{&result.grid, &model, &result.path, &state.trace});
   }
   if (summary.interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";
   } else {
-    if (!options.plan_only) out << render::render_map(result.grid, result.visits, style) << '\n';
+    if (!options.plan.only) out << render::render_map(result.grid, result.visits, style) << '\n';
     out << planned.str();
   }
   out << format_summary(options, summary);
   return summary;
 }
 
-std::string format_summary(const RunOptions &options, const RunSummary &s) {
-  std::string text;
-  auto line = [&text](std::string_view key, const std::string &value) {
-    text += fmt::format("{}: {}\n", key, value);
-  };
-  line("world", options.world);
-  line("size", fmt::format("{}x{}", s.width, s.height));
-  line("subcells", std::to_string(options.subcells));
-  line("model", std::string(mapping::to_string(options.model)));
-  if (options.threshold) line("threshold", fmt::format("{:.3f}", *options.threshold));
-  line("strategy", std::string(explore::to_string(options.strategy)));
-  line("robot", options.robot);
-  line("seed", std::to_string(options.seed));
-  line("end", s.message.empty() ? std::string(robot::to_string(s.reason))
-                                : fmt::format("{} ({})", robot::to_string(s.reason), s.message));
-  line("steps", std::to_string(s.steps));
-  line("moves", std::to_string(s.moves));
-  line("visited", std::to_string(s.visited));
-  if (options.strategy == explore::StrategyKind::floodfill) {
-    line("goal", s.reached_goal ? "reached" : "not reached");
-  }
-  line("reachable", std::to_string(s.score.reachable_cells));
-  line("coverage", percent(s.score.coverage_percent()));
-  line("wall_accuracy", percent(s.score.wall_accuracy_percent()));
-  if (s.plan) {
-    line("plan", fmt::format("({},{}) -> ({},{}) dilate {}", s.plan->from.x, s.plan->from.y,
-                             s.plan->to.x, s.plan->to.y, options.dilate));
-    line("plan_length", s.plan->found ? fmt::format("{} sub-cells, {} cells", s.plan->length_subcells,
-                                                    s.plan->length_cells)
-                                      : std::string("no path"));
-  }
-  if (options.speed_run) {
-    line("explore_time_s", fmt::format("{:.3f}", s.explore_time_s));
-    line("speed_run", s.speed_run_time_s
-                          ? fmt::format("{} cells back to the start in {:.3f} s", s.speed_run_cells,
-                                        *s.speed_run_time_s)
-                          : std::string("none (exploring did not finish, or no path back)"));
-  }
-  line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
-  line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
-  return text;
-}
+std::int64_t max_steps_for(const maze::Maze &maze) { return max_steps_for(maze.width(), maze.height()); }
 
-std::int64_t max_steps_for(const maze::Maze &maze) {
+std::int64_t max_steps_for(int width_cells, int height_cells) {
   constexpr std::int64_t kStepsPerCell = 1000;
   constexpr std::int64_t kMinimum = 100'000;
-  return std::max(kMinimum, kStepsPerCell * maze.width() * maze.height());
-}
-
-int exit_status(const RunSummary &summary) {
-  switch (summary.reason) {
-    case robot::EndReason::done:
-    case robot::EndReason::max_steps: return 0;
-    case robot::EndReason::no_progress:
-    case robot::EndReason::incomplete:
-    case robot::EndReason::simulation_ended: return 1;
-    case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
-  }
-  return 1;
+  return std::max(kMinimum, kStepsPerCell * width_cells * height_cells);
 }
 
 }  // namespace app

@@ -13,61 +13,12 @@
 #include <string_view>
 
 #include "app/evaluation.hpp"
-#include "common/random.hpp"
+#include "app/run_options.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/profile.hpp"
-#include "maze/world.hpp"
-#include "explore/strategies.hpp"
-#include "mapping/models.hpp"
-#include "mapping/range_models.hpp"
-#include "mapping/sensor_model.hpp"
 #include "robot/cell_controller.hpp"
 
 namespace app {
-
-struct RunOptions {
-  std::string world;                    // the path as the user gave it
-  maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
-  int subcells = 3;                     // --subcells K
-  mapping::ModelKind model = mapping::ModelKind::cell;
-  int hit_depth = 0;                    // --hit-depth (ray model)
-  bool ignore_no_return = false;        // --ignore-no-return (ray model)
-  std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
-  mapping::RangeModelOptions range_model;  // --pie-beta, --pie-alpha (pie model)
-  explore::StrategyKind strategy = explore::StrategyKind::dfs;
-  std::string robot = "hambot";         // --robot: a built-in profile's name or a FILE.json
-  std::uint64_t seed = common::kDefaultSeed;
-  std::optional<double> noise;          // --noise: lidar noise as a fraction of max range
-  mapping::SensorModelOptions sensor;
-  bool ascii = false;
-  std::optional<char> unknown;
-  bool quiet = false;                   // final map and summary only
-  // --max-steps: control steps before the run stops; none: max_steps_for(maze), which no
-  // complete exploration reaches (dfs and frontier take about 200 steps a cell).
-  std::optional<std::int64_t> max_steps;
-  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, summary.json, trace.csv
-  bool color = false;                   // ANSI colours in the map (a terminal, no --no-color)
-  bool animate = false;                 // --animate: the map redrawn in place
-  double fps = 30.0;                    // --fps
-  double speed = 10.0;                  // --speed: simulated seconds per wall-clock second
-  bool step = false;                    // --step: wait for Enter (or q) after each cell
-  // Wavefront planning on the learned grid after the run (--plan-to; `plan` sets both ends):
-  // from plan_from (default: where the robot ended) to plan_to.
-  std::optional<mapping::Cell> plan_from;
-  std::optional<mapping::Cell> plan_to;
-  int dilate = 0;                       // --dilate N sub-cells
-  bool plan_only = false;               // `plan`: print only the planned map and the summary
-  bool speed_run = false;               // --speed-run: drive the planned path back to the start
-  // Simulated faults (maze::sim::SimulationOptions has their meaning); validated there.
-  double dropout = 0.0;      // --dropout
-  double spikes = 0.0;       // --spikes
-  std::string stuck_bumper;  // --stuck-bumper
-  double wheel_slip = 0.0;   // --wheel-slip
-};
-
-// The robot a model runs on when --robot is not given: hambot for the lidar models (cell,
-// ray), bumper-depth for bump and depth, ir-ring for pie and cone.
-std::string_view default_robot(mapping::ModelKind model);
 
 // What a run reads besides its options (all optional).
 struct RunControls {
@@ -81,6 +32,7 @@ struct RunControls {
 struct PlanSummary {
   mapping::Cell from;
   mapping::Cell to;
+  int dilate = 0;
   bool found = false;
   int length_subcells = 0;
   int length_cells = 0;
@@ -91,6 +43,7 @@ struct RunSummary {
   std::string message;
   int width = 0;
   int height = 0;
+  std::int64_t max_steps = 0;           // the step limit in effect (--max-steps or max_steps_for)
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
@@ -105,8 +58,9 @@ struct RunSummary {
   int speed_run_cells = 0;
 };
 
-// Loads options.world with options.world_overrides (its warnings go to stderr) and runs it with run_maze().
-// Throws common::InputError for unusable options or world files.
+// Loads options.world with options.world_overrides (its warnings go to stderr) and runs it
+// with run_maze(). The options must be valid (validate()); throws common::InputError for a
+// world file, or options that do not fit the world (see run_maze).
 RunSummary run_world(const RunOptions &options, std::ostream &out);
 // Likewise, with --step input, Ctrl-C and --animate. With out_dir set, the directory is
 // prepared (prepare_output_dir) after the world and options are checked and before the
@@ -114,8 +68,10 @@ RunSummary run_world(const RunOptions &options, std::ostream &out);
 RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls);
 
 // Runs one maze and writes the progress (unless quiet), the final map and the summary
-// block to out; options.world only names it in the summary. Throws common::InputError for
-// unusable options.
+// block to out; options.world only names it in the summary. The options must be valid
+// (validate()); throws common::InputError when they do not fit this maze or robot: a robot
+// without the sensors the model reads, a grid too large, a plan cell outside the maze, a
+// stuck bumper the robot lacks.
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls = {});
 
@@ -132,8 +88,10 @@ void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &p
 
 // The step limit of a run without --max-steps: 1,000 control steps a cell, at least 100,000.
 std::int64_t max_steps_for(const maze::Maze &maze);
+std::int64_t max_steps_for(int width_cells, int height_cells);
 
-// The summary block (DESIGN §9), one `key: value` a line.
+// The summary block (DESIGN §9), one `key: value` a line. Every key it prints is a key of
+// summary.json (app/outputs.hpp).
 std::string format_summary(const RunOptions &options, const RunSummary &summary);
 
 // The exit status a run ends with: 0 when it ended as planned (done, or stopped at

@@ -21,7 +21,7 @@ std::string webots_world(const maze::Maze &maze, std::string_view title, const W
   RunOptions run;
   run.robot = profile.name;
   run.subcells = options.subcells;
-  run.model = model_for(options, profile);
+  run.mapping.kind = model_for(options, profile);
   run.strategy = explore::parse_strategy(options.strategy);
   require_sensors(run, profile);
   const robot::ControllerOptions controller = controller_options(run, maze, profile);

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "app/run_cli.hpp"
+#include "app/cli_options.hpp"
 #include "commands.hpp"
 #include "app/webots_export.hpp"
 #include "maze/generator.hpp"
@@ -25,7 +25,7 @@ maze::World load_world_reporting(const std::string &path, const maze::WorldOverr
 }
 
 void add_show_command(CLI::App &cli, CommandContext &context) {
-  auto *cmd = cli.add_subcommand("show", "Print a world as a canonical micromouse text map");
+  auto *cmd = cli.add_subcommand("show", "print a world as a canonical micromouse text map");
   auto world = std::make_shared<std::string>();
   cmd->add_option("WORLD", *world, "maze file: text map, num or XML (detected by content)")->required();
   cmd->callback([world, &context] {
@@ -35,27 +35,27 @@ void add_show_command(CLI::App &cli, CommandContext &context) {
 }
 
 void add_convert_command(CLI::App &cli, CommandContext &context) {
-  auto *cmd = cli.add_subcommand("convert", "Write a world in the format OUT's extension names");
+  auto *cmd = cli.add_subcommand("convert", "write a world in the format OUT's extension names");
   struct Args {
     std::string world, out;
-    WorldInput world_input;
+    maze::WorldOverrides overrides;
     WebotsExport wbt;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
   cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
-  add_cell_size_option(*cmd, args->world_input);
-  cmd->add_option("--robot", args->wbt.robot, ".wbt: the robot the world carries (maze_mapper robot lists them)")
-      ->capture_default_str();
-  cmd->add_option("--model", args->wbt.model, ".wbt: the controller's mapping model (default: cell with a lidar, "
-                                          "else bump with bumpers, else depth)");
-  cmd->add_option("--strategy", args->wbt.strategy, ".wbt: the controller's exploration strategy")->capture_default_str();
-  cmd->add_option("--subcells", args->wbt.subcells, ".wbt: the controller's sub-cells per cell side (K)")
-      ->capture_default_str();
+  add_cell_size_option(*cmd, args->overrides);
+  cmd->add_option("--robot", args->wbt.robot,
+                  fmt::format(".wbt: the robot the world carries, one of {} (default {})", robot_names(), args->wbt.robot));
+  cmd->add_option("--model", args->wbt.model,
+                  ".wbt: the controller's mapping model (default cell with a lidar, else bump with bumpers, else depth)");
+  cmd->add_option("--strategy", args->wbt.strategy,
+                  fmt::format(".wbt: the controller's exploration strategy (default {})", args->wbt.strategy));
+  cmd->add_option("--subcells", args->wbt.subcells,
+                  fmt::format(".wbt: the controller's sub-cells per cell side, K (default {})", args->wbt.subcells));
   cmd->callback([args, &context] {
     const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
-    const maze::WorldOverrides overrides = to_world_overrides(args->world_input);
-    const maze::Maze maze = load_world_reporting(args->world, overrides).maze;
+    const maze::Maze maze = load_world_reporting(args->world, args->overrides).maze;
     if (const auto dropped = maze::dropped_by(maze, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
     if (format == maze::Format::wbt) {
       maze::write_file_atomically(
@@ -68,7 +68,7 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
 }
 
 void add_generate_command(CLI::App &cli, CommandContext &context) {
-  auto *cmd = cli.add_subcommand("generate", "Generate a random maze and print it as a text map");
+  auto *cmd = cli.add_subcommand("generate", "generate a random maze and print it as a text map");
   struct Args {
     std::string size, algorithm = "dfs", out;
     std::uint64_t seed = common::kDefaultSeed;
@@ -76,11 +76,11 @@ void add_generate_command(CLI::App &cli, CommandContext &context) {
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("WxH", args->size, "maze size in cells, e.g. 16x16 (1 to 4096 each way)")->required();
-  cmd->add_option("--seed", args->seed, "random seed; the same seed gives the same maze")->capture_default_str();
-  cmd->add_option("--loops", args->loops, "fraction (0 to 1) of the perfect maze's interior walls removed")
-      ->capture_default_str();
-  cmd->add_option("--algorithm", args->algorithm, "dfs, kruskal or prim")->capture_default_str();
-  cmd->add_option("-o,--output", args->out, "write to FILE (format by extension) instead of standard output");
+  add_seed_option(*cmd, args->seed, "the maze; the same seed gives the same maze");
+  cmd->add_option("--loops", args->loops,
+                  fmt::format("fraction (0 to 1) of the perfect maze's interior walls removed (default {})", args->loops));
+  cmd->add_option("--algorithm", args->algorithm, fmt::format("dfs, kruskal or prim (default {})", args->algorithm));
+  cmd->add_option("-o,--output", args->out, "FILE: write there (format by extension) instead of standard output");
   cmd->callback([args, &context] {
     const maze::Cell size = maze::parse_size(args->size);
     maze::GeneratorOptions options{size.x, size.y, args->seed, args->loops, maze::parse_algorithm(args->algorithm)};

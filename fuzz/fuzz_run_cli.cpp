@@ -53,8 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if (e.diagnostic().empty()) std::abort();
     return 0;
   }
-  // --subcells and the sensor options are checked when the run starts (robot::validate);
-  // to_run_options() checks --max-steps itself. Without --max-steps the limit is left to the
+  // parse_run_options() validates the options once (app::validate). Without --max-steps the limit is left to the
   // maze (max_steps_for); the first version of this check compared the empty optional and
   // aborted on every command line without it (tests/test_app_cmd_run.cpp).
   if (options.max_steps && *options.max_steps < 1) std::abort();

@@ -54,3 +54,8 @@ add_golden_test(compare_lab4x4_k3_k5 ARGS compare worlds/lab4x4.txt --subcells 3
 add_golden_test(compare_lab4x4_depth ARGS compare worlds/lab4x4.txt --robot bumper-depth --model depth --subcells 3,5,7)
 add_golden_test(compare_bad_list STATUS 2 STDERR ARGS compare worlds/lab4x4.txt --subcells 3,x)
 add_golden_test(run_lab4x4_floodfill_speed_run ARGS run worlds/lab4x4.txt --strategy floodfill --speed-run --quiet)
+
+# One language for the command line (issue 16): `demo` alone lists the demos (exit 0, as
+# `robot` alone lists the robots); `plan` with no path found exits 1.
+add_golden_test(demo_list ARGS demo)
+add_golden_test(plan_lab4x4_dilate_no_path STATUS 1 ARGS plan worlds/lab4x4.txt --dilate 1)

@@ -30,15 +30,15 @@ TEST_CASE("run command line: no arguments leave the step limit to the maze") {
   const app::RunOptions o = parse_run({});
   CHECK_FALSE(o.max_steps.has_value());
   CHECK(o.world.ends_with("lab4x4.txt"));
-  CHECK(o.dropout == 0.0);
-  CHECK(o.spikes == 0.0);
+  CHECK(o.simulation.dropout == 0.0);
+  CHECK(o.simulation.spikes == 0.0);
 }
 
 TEST_CASE("run command line: --max-steps and the fault options") {
   const app::RunOptions o = parse_run({"--max-steps", "1", "--dropout", "0.05", "--spikes", "0.01"});
   CHECK(o.max_steps == std::optional<std::int64_t>{1});
-  CHECK(o.dropout == 0.05);
-  CHECK(o.spikes == 0.01);
+  CHECK(o.simulation.dropout == 0.05);
+  CHECK(o.simulation.spikes == 0.01);
   try {
     parse_run({"--max-steps", "0"});
     FAIL("no error");
@@ -85,8 +85,8 @@ TEST_CASE("micromouse maps lab4x4 at 0.18 m cells with 12 mm walls (cell and ray
   for (const mapping::ModelKind model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
     app::RunOptions options;
     options.robot = "micromouse";
-    options.model = model;
-    options.quiet = true;
+    options.mapping.kind = model;
+    options.output.quiet = true;
     std::ostringstream sink;
     const app::RunSummary s = app::run_maze(options, m, sink);
     CAPTURE(mapping::to_string(model));

@@ -65,8 +65,8 @@ struct TempDir {
 app::RunOptions lab_options() {
   app::RunOptions o;
   o.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
-  o.noise = 0.0;
-  o.quiet = true;
+  o.simulation.noise = 0.0;
+  o.output.quiet = true;
   return o;
 }
 
@@ -126,7 +126,7 @@ bool interrupt_after_100_steps() { return ++g_polls > 100; }
 TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's content") {
   const TempDir dir;
   app::RunOptions options = lab_options();
-  options.out_dir = (dir.path / "out").string();
+  options.output.out_dir = (dir.path / "out").string();
   std::ostringstream out;
   const app::RunSummary summary = app::run_world(options, out);
   REQUIRE(summary.reason == robot::EndReason::done);
@@ -171,10 +171,10 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   CHECK(json.at("wall_accuracy") == 100.0);
   CHECK(json.at("end") == "done");
   CHECK(json.at("options").at("subcells") == 3);
-  CHECK(json.at("options").at("noise") == 0.0);
-  CHECK(json.at("options").at("p_occ") == 0.6);
-  CHECK(json.at("options").at("clamp").is_null());
-  CHECK(json.at("options").at("world").dump() == R"({"cell_size_m":null,"goals":null,"start":null})");
+  CHECK(json.at("options").at("simulation").at("noise") == 0.0);
+  CHECK(json.at("options").at("sensor").at("p_occ") == 0.6);
+  CHECK(json.at("options").at("sensor").at("clamp").is_null());
+  CHECK(json.at("options").at("world_overrides").dump() == R"({"cell_size_m":null,"goals":null,"start":null})");
 
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());
@@ -197,30 +197,30 @@ TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {
   common::write_file_atomically((dir.path / "file").string(), "x");
   app::RunOptions options = lab_options();
 
-  options.out_dir = (dir.path / "file").string();
+  options.output.out_dir = (dir.path / "file").string();
   std::ostringstream out;
   CHECK_THROWS_WITH_AS(app::run_world(options, out),
-                       ("--out " + options.out_dir + ": exists and is not a directory").c_str(),
+                       ("--out " + options.output.out_dir + ": exists and is not a directory").c_str(),
                        common::InputError);
   CHECK(out.str().empty());
 
-  options.out_dir = (dir.path / "file" / "a" / "b").string();
+  options.output.out_dir = (dir.path / "file" / "a" / "b").string();
   CHECK_THROWS_WITH_AS(app::run_world(options, out),
-                       ("--out " + options.out_dir + ": cannot create the directory: Not a directory").c_str(),
+                       ("--out " + options.output.out_dir + ": cannot create the directory: Not a directory").c_str(),
                        common::InputError);
   CHECK(out.str().empty());
   CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
 
   // A bad world is found before the directory is made.
   options.world = std::string(TEST_DATA_DIR) + "/worlds/inconsistent.num";
-  options.out_dir = (dir.path / "new").string();
+  options.output.out_dir = (dir.path / "new").string();
   CHECK_THROWS_AS(app::run_world(options, out), common::InputError);
   CHECK_FALSE(fs::exists(dir.path / "new"));
 }
 
 TEST_CASE("--step: Enter goes on, q stops the run cleanly with a summary") {
   app::RunOptions options = lab_options();
-  options.step = true;
+  options.output.step = true;
   std::istringstream in("\n\nq\n");
   app::RunControls controls;
   controls.in = &in;

@@ -21,10 +21,10 @@ constexpr int kSeeds = 50;
 
 void check_faulty_mapping(mapping::ModelKind model) {
   app::RunOptions options;
-  options.model = model;
-  options.quiet = true;
-  options.dropout = 0.05;
-  options.spikes = 0.01;
+  options.mapping.kind = model;
+  options.output.quiet = true;
+  options.simulation.dropout = 0.05;
+  options.simulation.spikes = 0.01;
   std::size_t sides = 0, correct = 0;
   double worst = 100.0;
   for (int seed = 0; seed < kSeeds; ++seed) {
@@ -33,7 +33,7 @@ void check_faulty_mapping(mapping::ModelKind model) {
     g.seed = static_cast<std::uint64_t>(seed);
     const maze::Maze m = maze::generate_maze(g);
     options.world = fmt::format("generated 16x16 seed {}", seed);
-    options.seed = static_cast<std::uint64_t>(seed);
+    options.simulation.seed = static_cast<std::uint64_t>(seed);
     std::ostringstream sink;
     const app::RunSummary s = app::run_maze(options, m, sink);
     CAPTURE(seed);

@@ -28,18 +28,18 @@ maze::Maze perfect_maze(int seed) {
 
 app::RunSummary run_quietly(app::RunOptions options, const maze::Maze &m, int seed) {
   options.world = fmt::format("generated {}x{} seed {}", m.width(), m.height(), seed);
-  options.quiet = true;
-  options.seed = static_cast<std::uint64_t>(seed);
+  options.output.quiet = true;
+  options.simulation.seed = static_cast<std::uint64_t>(seed);
   std::ostringstream sink;
   return app::run_maze(options, m, sink);
 }
 
 void check_perfect_mapping(mapping::ModelKind model, int k, explore::StrategyKind strategy) {
   app::RunOptions options;
-  options.model = model;
+  options.mapping.kind = model;
   options.subcells = k;
   options.strategy = strategy;
-  options.noise = 0.0;
+  options.simulation.noise = 0.0;
   for (int seed = 0; seed < kSeeds; ++seed) {
     const maze::Maze m = perfect_maze(seed);
     const app::RunSummary s = run_quietly(options, m, seed);
@@ -79,7 +79,7 @@ TEST_SUITE("acceptance") {
     for (const auto model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
       for (const int k : {3, 5}) {
         app::RunOptions options;
-        options.model = model;
+        options.mapping.kind = model;
         options.subcells = k;
         std::size_t sides = 0, correct = 0;
         for (int seed = 0; seed < kSeeds; ++seed) {
@@ -120,11 +120,11 @@ void check_ring_covers_lab4x4(const std::string &robot, mapping::ModelKind model
   app::RunOptions options;
   options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
   options.robot = robot;
-  options.model = model;
+  options.mapping.kind = model;
   options.subcells = k;
-  options.quiet = true;
+  options.output.quiet = true;
   for (int seed = 1; seed <= 20; ++seed) {
-    options.seed = static_cast<std::uint64_t>(seed);
+    options.simulation.seed = static_cast<std::uint64_t>(seed);
     std::ostringstream sink;
     const app::RunSummary s = app::run_world(options, sink);
     CAPTURE(robot);
@@ -177,12 +177,12 @@ void check_large_run(const LargeRun &r, int index) {
   g.seed = static_cast<std::uint64_t>(100 + index);
   const maze::Maze m = maze::generate_maze(g);
   app::RunOptions options;
-  options.model = r.model;
+  options.mapping.kind = r.model;
   options.subcells = r.k;
   options.robot = r.robot;
   if (r.faults) {
-    options.dropout = 0.05;
-    options.spikes = 0.01;
+    options.simulation.dropout = 0.05;
+    options.simulation.spikes = 0.01;
   }
   const app::RunSummary s = run_quietly(options, m, index);
   CAPTURE(index);
@@ -221,11 +221,11 @@ void check_large_mazes(mapping::ModelKind model) {
 void check_course_world_mapped(const std::string &name, mapping::ModelKind model, int k) {
   app::RunOptions options;
   options.world = std::string(TEST_DATA_DIR) + "/worlds/" + name;
-  options.model = model;
+  options.mapping.kind = model;
   options.subcells = k;
-  options.quiet = true;
+  options.output.quiet = true;
   for (int seed = 1; seed <= 3; ++seed) {
-    options.seed = static_cast<std::uint64_t>(seed);
+    options.simulation.seed = static_cast<std::uint64_t>(seed);
     std::ostringstream sink;
     const app::RunSummary s = app::run_world(options, sink);
     CAPTURE(name);
@@ -296,7 +296,7 @@ TEST_CASE("num world: --goal 3,3 and --start give floodfill a goal it reaches") 
   app::RunOptions options;
   options.world = std::string(WORLDS_DIR) + "/lab4x4.num";
   options.strategy = explore::StrategyKind::floodfill;
-  options.quiet = true;
+  options.output.quiet = true;
   options.world_overrides.goals = std::vector<maze::Cell>{{3, 3}};
   std::ostringstream sink;
   const app::RunSummary s = app::run_world(options, sink);

@@ -117,7 +117,7 @@ TEST_CASE("webots export: the controllerArgs read back into what run gives the c
     app::RunOptions run;
     run.robot = p.name;
     run.subcells = 5;
-    run.model = parsed.mapping.kind;
+    run.mapping.kind = parsed.mapping.kind;
     const robot::ControllerOptions expected = app::controller_options(run, lab4x4(), p);
     CHECK(robot::format_controller_args(parsed) == robot::format_controller_args(expected));
     CHECK(parsed.geometry.width_cells == 4);
@@ -134,7 +134,7 @@ TEST_CASE("webots export: a model the robot cannot sense with is refused") {
   options.robot = "ir-ring";
   options.model = "cell";
   CHECK_THROWS_WITH_AS(app::webots_world(lab4x4(), "lab4x4", options),
-                       doctest::Contains("robot 'ir-ring' has no a lidar"), common::InputError);
+                       doctest::Contains("robot 'ir-ring' has no lidar, which the 'cell' model needs (robots with a lidar: hambot, "), common::InputError);
 }
 
 TEST_CASE("webots controller: on the embedded simulator it prints run's maps and matrices, no truth") {

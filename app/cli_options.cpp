@@ -1,0 +1,131 @@
+#include "app/cli_options.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <limits>
+#include <optional>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+#include "maze/sim/profile.hpp"
+
+namespace app {
+namespace {
+
+bool whole_number(std::string_view text, int &value) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+}
+
+// "X,Y", or nothing.
+std::optional<maze::Cell> cell_of(std::string_view text) {
+  const std::size_t comma = text.find(',');
+  maze::Cell c;
+  if (comma == std::string_view::npos || !whole_number(text.substr(0, comma), c.x) ||
+      !whole_number(text.substr(comma + 1), c.y)) {
+    return std::nullopt;
+  }
+  return c;
+}
+
+std::optional<maze::Side> heading_of(std::string_view text) {
+  constexpr std::pair<char, maze::Side> kHeadings[] = {
+      {'N', maze::Side::north}, {'E', maze::Side::east}, {'S', maze::Side::south}, {'W', maze::Side::west}};
+  for (const auto &[letter, side] : kHeadings) {
+    if (text.size() == 1 && std::toupper(static_cast<unsigned char>(text[0])) == letter) return side;
+  }
+  return std::nullopt;
+}
+
+// --start X,Y[,HEADING]: the cell, and the heading (north unless given).
+void parse_start(const std::string &text, maze::WorldOverrides &o) {
+  const std::size_t second = text.find(',', text.find(',') + 1);
+  o.start = cell_of(std::string_view(text).substr(0, second));
+  o.start_heading = maze::Side::north;
+  if (second != std::string::npos) {
+    const std::optional<maze::Side> heading = heading_of(std::string_view(text).substr(second + 1));
+    if (heading) o.start_heading = *heading;
+    if (!heading) o.start.reset();
+  }
+  if (!o.start) {
+    throw common::InputError(
+        fmt::format("--start must be X,Y or X,Y,HEADING with HEADING N, E, S or W (got '{}')", text));
+  }
+}
+
+// --goal X,Y[;X,Y...]
+std::vector<maze::Cell> parse_goals(const std::string &text) {
+  std::vector<maze::Cell> goals;
+  std::string_view rest(text);
+  for (;;) {
+    const std::size_t semicolon = rest.find(';');
+    const std::optional<maze::Cell> goal = cell_of(rest.substr(0, semicolon));
+    if (!goal) throw common::InputError(fmt::format("--goal must be X,Y or a list X,Y;X,Y;... (got '{}')", text));
+    goals.push_back(*goal);
+    if (semicolon == std::string_view::npos) return goals;
+    rest.remove_prefix(semicolon + 1);
+  }
+}
+
+double checked_cell_size(double m) {
+  if (!(m > maze::kMinCellSize_m && m <= maze::kMaxCellSize_m)) {
+    throw common::InputError(fmt::format(
+        "--cell-size must be more than {} m (four walls of {} m) and at most {} m (got {})", maze::kMinCellSize_m,
+        maze::kDefaultWallThickness_m, maze::kMaxCellSize_m, m));
+  }
+  return m;
+}
+
+}  // namespace
+
+CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
+  const CLI::Validator whole_from_zero(
+      [](std::string &text) {
+        std::uint64_t value = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const bool whole = !text.empty() && ec == std::errc() && end == text.data() + text.size();
+        return whole ? std::string()
+                     : fmt::format("must be a whole number from 0 to {} (got '{}')",
+                                   std::numeric_limits<std::uint64_t>::max(), text);
+      },
+      "");
+  return command.add_option("--seed", seed, fmt::format("N: seed of {} (default {})", what, seed))
+      ->check(whole_from_zero);
+}
+
+std::string robot_names() {
+  std::string names;
+  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) names += (names.empty() ? "" : ", ") + p.name;
+  return names;
+}
+
+mapping::Cell parse_cell(const std::string &text, const std::string &option) {
+  const std::optional<maze::Cell> c = cell_of(text);
+  if (!c) throw common::InputError(fmt::format("{} must be X,Y (got '{}')", option, text));
+  return mapping::Cell{c->x, c->y};
+}
+
+void add_cell_size_option(CLI::App &command, maze::WorldOverrides &overrides) {
+  command.add_option_function<double>(
+      "--cell-size", [&overrides](double m) { overrides.cell_size_m = checked_cell_size(m); },
+      "M: cell side of a text or num world, metres (default 1; an XML world has its own)");
+}
+
+void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
+  add_cell_size_option(command, overrides);
+  command.add_option_function<std::string>(
+      "--start", [&overrides](const std::string &text) { parse_start(text, overrides); },
+      "X,Y[,HEADING]: start cell, facing N, E, S or W (default the world's start, facing N)");
+  command.add_option_function<std::string>(
+      "--goal", [&overrides](const std::string &text) { overrides.goals = parse_goals(text); },
+      "X,Y[;X,Y...]: goal cells, in place of the world's (default the world's)");
+}
+
+}  // namespace app

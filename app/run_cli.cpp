@@ -1,0 +1,129 @@
+#include "app/run_cli.hpp"
+
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "app/cli_options.hpp"
+#include "app/commands.hpp"
+#include "common/error.hpp"
+#include "model_options.hpp"
+
+namespace app {
+namespace {
+
+constexpr mapping::ModelKind kModels[] = {mapping::ModelKind::cell, mapping::ModelKind::ray,
+                                          mapping::ModelKind::bump, mapping::ModelKind::depth,
+                                          mapping::ModelKind::pie,  mapping::ModelKind::cone};
+
+// "hambot; bumper-depth for bump and depth, ir-ring for pie and cone": default_robot() in words.
+std::string default_robots() {
+  const std::string_view first(default_robot(kModels[0]));
+  std::string text(first);
+  std::string others;
+  for (std::size_t i = 1; i < std::size(kModels); ++i) {
+    const std::string_view robot = default_robot(kModels[i]);
+    if (robot == first || robot == default_robot(kModels[i - 1])) continue;
+    std::string models;
+    for (const mapping::ModelKind m : kModels) {
+      if (default_robot(m) != robot) continue;
+      models += (models.empty() ? "" : " and ") + std::string(mapping::to_string(m));
+    }
+    others += fmt::format("{}{} for {}", others.empty() ? "" : ", ", robot, models);
+  }
+  return others.empty() ? text : text + "; " + others;
+}
+
+void add_model_choice(CLI::App &command, RunOptions &o) {
+  command.add_option("--subcells", o.subcells,
+                     fmt::format("K: sub-cells per cell side, odd, 3 to 9 (default {})", o.subcells));
+  command.add_option_function<std::string>(
+      "--model", [&o](const std::string &name) { o.mapping.kind = mapping::parse_model(name); },
+      "mapping model: cell or ray (lidar), bump (bumpers), depth, pie or cone (range sensors) (default cell)");
+  command.add_option("--threshold", o.threshold,
+                     "L: a sub-cell is occupied when its log-odds >= L, for the map and the walls "
+                     "(default none: when above 0)");
+  command.add_option_function<double>(
+      "--pie-beta", [&o](double deg) { o.range_model.pie_half_angle_rad = deg * std::numbers::pi / 180.0; },
+      fmt::format("pie model: slice half-angle, degrees (default {:g})",
+                  o.range_model.pie_half_angle_rad * 180.0 / std::numbers::pi));
+  command.add_option("--pie-alpha", o.range_model.pie_contact_m,
+                     fmt::format("pie model: contact slice length, m (default {})", o.range_model.pie_contact_m));
+  command.add_option("--hit-depth", o.mapping.hit_depth,
+                     fmt::format("ray model: sub-cells behind a hit also occupied (default {})", o.mapping.hit_depth));
+  command.add_flag("--ignore-no-return", o.mapping.ignore_no_return,
+                   "ray model: a beam with no return frees nothing (default off: it frees up to max range)");
+  command.add_option_function<std::string>(
+      "--strategy", [&o](const std::string &name) { o.strategy = explore::parse_strategy(name); },
+      "exploration: dfs, frontier, left-wall, right-wall or floodfill (default dfs)");
+}
+
+void add_robot_and_faults(CLI::App &command, RunOptions &o) {
+  command.add_option("--robot", o.robot,
+                     fmt::format("NAME or FILE.json: robot profile, one of {} (default {})", robot_names(),
+                                 default_robots()));
+  add_seed_option(command, o.simulation.seed, "the sensor noise and the faults");
+  command.add_option("--noise", o.simulation.noise,
+                     "lidar noise, standard deviation as a fraction of max range; 0 makes every sensor "
+                     "exact (default the robot's)");
+  command.add_option("--dropout", o.simulation.dropout,
+                     "fault: fraction of lidar beams that read +infinity (default 0)");
+  command.add_option("--spikes", o.simulation.spikes,
+                     "fault: fraction of lidar beams that read a random range (default 0)");
+  command.add_option("--stuck-bumper", o.simulation.stuck_bumper,
+                     "fault: NAME, a bumper that always reads pressed (default none)");
+  command.add_option("--wheel-slip", o.simulation.wheel_slip,
+                     "fault: fraction of wheel turning that does not move the robot; the encoders count "
+                     "it all (default 0)");
+}
+
+}  // namespace
+
+void add_mapping_run_options(CLI::App &command, RunOptions &o) {
+  add_model_choice(command, o);
+  add_robot_and_faults(command, o);
+  add_model_options(command, o.sensor);
+  add_clamp_option(command, o.sensor);
+  command.add_option("--max-steps", o.max_steps,
+                     "N: stop after this many control steps (default 1000 a cell, at least 100000)");
+  command.add_option("--dilate", o.plan.wavefront.dilate,
+                     fmt::format("N: planning: grow obstacles by N sub-cells (default {})", o.plan.wavefront.dilate));
+  add_world_options(command, o.world_overrides);
+}
+
+void add_exploration_options(CLI::App &command, RunOptions &o) {
+  command.add_option("WORLD", o.world, "maze file (default worlds/lab4x4.txt)");
+  add_mapping_run_options(command, o);
+  command.add_flag("--ascii", o.output.ascii, "heading arrows as ^ > v < instead of ↑ → ↓ ←");
+  command.add_option_function<std::string>(
+      "--unknown",
+      [&o](const std::string &text) {
+        validate_unknown(text);
+        o.output.unknown = text[0];
+      },
+      "CHAR drawn for never-observed sub-cells (default blank)");
+}
+
+RunOptions checked_run_options(const CLI::App &command, RunOptions options, bool with_default_world) {
+  if (command.count("--robot") == 0) options.robot = std::string(default_robot(options.mapping.kind));
+  if (with_default_world && options.world.empty()) options.world = default_world();
+  validate(options);
+  return options;
+}
+
+std::vector<std::string> options_not_applying(const CLI::App &command, const RunOptions &options) {
+  const GivenOptions given{command.get_name(),
+                           [&command](std::string_view option) {
+                             const CLI::Option *o = command.get_option_no_throw(std::string(option));
+                             return o != nullptr && o->count() > 0;
+                           }};
+  return check_options_apply(given, options);
+}
+
+void print_warnings(const std::vector<std::string> &warnings) {
+  for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+}
+
+}  // namespace app

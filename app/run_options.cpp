@@ -1,0 +1,117 @@
+#include "app/run_options.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "app/profile_json.hpp"
+#include "common/error.hpp"
+#include "mapping/occupancy_grid.hpp"
+
+namespace app {
+namespace {
+
+void require_above_zero(const char *option, double value) {
+  if (!(value > 0.0 && value <= 1e6)) {
+    throw common::InputError(fmt::format("{} must be a number above 0 (got {})", option, value));
+  }
+}
+
+void validate(const OutputOptions &o) {
+  if (o.unknown) validate_unknown(std::string_view(&*o.unknown, 1));
+  require_above_zero("--fps", o.fps);
+  require_above_zero("--speed", o.speed);
+}
+
+void validate_run(const RunOptions &o) {
+  validate_subcells(o.subcells);
+  if (o.threshold && !std::isfinite(*o.threshold)) {
+    throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *o.threshold));
+  }
+  const std::optional<double> &noise = o.simulation.noise;
+  if (noise && !(*noise >= 0.0 && *noise <= 1.0)) {
+    throw common::InputError(fmt::format("--noise must be a fraction of the max range from 0 to 1 (got {})", *noise));
+  }
+  if (o.max_steps && *o.max_steps < 1) {
+    throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", *o.max_steps));
+  }
+}
+
+// One row a rule: `option` does nothing unless applies(options); `without` says what it needs.
+struct OptionUse {
+  const char *option;
+  const char *without;
+  bool (*applies)(const RunOptions &);
+};
+
+bool animating(const RunOptions &o) { return o.output.animate; }
+bool not_animating(const RunOptions &o) { return !o.output.animate; }
+bool planning(const RunOptions &o) { return o.plan.to.has_value() || o.plan.only; }
+
+// The run's own rules. The per-model rows (--p-free with pie, --hit-depth without ray, ...)
+// come with the set-up table, which knows the options each model reads: they are rows here,
+// their `applies` asking that table about o.mapping.kind.
+constexpr OptionUse kOptionUses[] = {
+    {"--fps", "without --animate", animating},
+    {"--speed", "without --animate", animating},
+    {"--quiet", "with --animate", not_animating},
+    {"--dilate", "without --plan-to", planning},
+};
+
+}  // namespace
+
+void validate_subcells(int subcells) {
+  // In the grid's own words; the grid's size is checked with the world's.
+  mapping::GridGeometry one_cell;
+  one_cell.width_cells = 1;
+  one_cell.height_cells = 1;
+  one_cell.subcells = subcells;
+  mapping::validate(one_cell, mapping::kDefaultMaxGridBytes);
+}
+
+void validate_unknown(std::string_view text) {
+  const bool printable = text.size() == 1 && static_cast<unsigned char>(text[0]) >= 0x20 &&
+                         static_cast<unsigned char>(text[0]) <= 0x7e && text[0] != 'W';
+  if (!printable) {
+    throw common::InputError(
+        fmt::format("--unknown must be one printable ASCII character other than W (got '{}')", text));
+  }
+}
+
+void validate(const RunOptions &o) {
+  mapping::validate(o.sensor);
+  mapping::validate(o.mapping);
+  mapping::validate(o.range_model);
+  plan::validate(o.plan.wavefront);
+  validate_run(o);
+  o.simulation.validate();
+  validate(o.output);
+  resolve_robot(o.robot);  // a bad profile file fails here, before any world is read
+}
+
+std::string_view default_robot(mapping::ModelKind model) {
+  switch (model) {
+    case mapping::ModelKind::cell:
+    case mapping::ModelKind::ray: return "hambot";
+    case mapping::ModelKind::bump:
+    case mapping::ModelKind::depth: return "bumper-depth";
+    case mapping::ModelKind::pie:
+    case mapping::ModelKind::cone: return "ir-ring";
+  }
+  return "hambot";
+}
+
+std::vector<std::string> check_options_apply(const GivenOptions &given, const RunOptions &options) {
+  std::vector<std::string> warnings;
+  for (const OptionUse &use : kOptionUses) {
+    if (!given.given(use.option) || use.applies(options)) continue;
+    // compare and batch plan no path: --dilate never applies there.
+    const bool plans_nothing = std::string_view(use.option) == "--dilate" && given.command != "run";
+    warnings.push_back(plans_nothing ? fmt::format("warning: {} has no effect: {} plans no path", use.option,
+                                                   given.command)
+                                     : fmt::format("warning: {} has no effect {}", use.option, use.without));
+  }
+  return warnings;
+}
+
+}  // namespace app

@@ -1,0 +1,72 @@
+// The summary block a run ends with (DESIGN §9) and the exit status it ends with.
+
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "app/run.hpp"
+
+namespace app {
+namespace {
+
+std::string percent(double value) { return fmt::format("{:.2f}%", value); }
+
+}  // namespace
+
+std::string format_summary(const RunOptions &options, const RunSummary &s) {
+  std::string text;
+  auto line = [&text](std::string_view key, const std::string &value) {
+    text += fmt::format("{}: {}\n", key, value);
+  };
+  line("world", options.world);
+  line("size", fmt::format("{}x{}", s.width, s.height));
+  line("subcells", std::to_string(options.subcells));
+  line("model", std::string(mapping::to_string(options.mapping.kind)));
+  if (options.threshold) line("threshold", fmt::format("{:.3f}", *options.threshold));
+  line("strategy", std::string(explore::to_string(options.strategy)));
+  line("robot", options.robot);
+  line("seed", std::to_string(options.simulation.seed));
+  line("end", s.message.empty() ? std::string(robot::to_string(s.reason))
+                                : fmt::format("{} ({})", robot::to_string(s.reason), s.message));
+  line("steps", std::to_string(s.steps));
+  line("moves", std::to_string(s.moves));
+  line("visited", std::to_string(s.visited));
+  if (options.strategy == explore::StrategyKind::floodfill) {
+    line("goal", s.reached_goal ? "reached" : "not reached");
+  }
+  line("reachable", std::to_string(s.score.reachable_cells));
+  line("coverage", percent(s.score.coverage_percent()));
+  line("wall_accuracy", percent(s.score.wall_accuracy_percent()));
+  if (s.plan) {
+    line("plan", fmt::format("({},{}) -> ({},{}) dilate {}", s.plan->from.x, s.plan->from.y, s.plan->to.x,
+                             s.plan->to.y, s.plan->dilate));
+    line("plan_length", s.plan->found ? fmt::format("{} sub-cells, {} cells", s.plan->length_subcells,
+                                                    s.plan->length_cells)
+                                      : std::string("no path"));
+  }
+  if (options.plan.speed_run) {
+    line("explore_time_s", fmt::format("{:.3f}", s.explore_time_s));
+    line("speed_run", s.speed_run_time_s
+                          ? fmt::format("{} cells back to the start in {:.3f} s", s.speed_run_cells,
+                                        *s.speed_run_time_s)
+                          : std::string("none (exploring did not finish, or no path back)"));
+  }
+  line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
+  line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
+  return text;
+}
+
+int exit_status(const RunSummary &summary) {
+  switch (summary.reason) {
+    case robot::EndReason::done:
+    case robot::EndReason::max_steps: return 0;
+    case robot::EndReason::no_progress:
+    case robot::EndReason::incomplete:
+    case robot::EndReason::simulation_ended: return 1;
+    case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
+  }
+  return 1;
+}
+
+}  // namespace app
