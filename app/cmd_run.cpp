@@ -192,7 +192,7 @@ RunOptions to_run_options(const RunInput &input) {
   o.world = input.world;
   o.world_overrides = to_world_overrides(input.world_input);
   o.subcells = input.subcells;
-  o.model = mapping::parse_model(input.model);
+  o.model = sensing::parse_model(input.model);
   o.hit_depth = input.hit_depth;
   o.ignore_no_return = input.ignore_no_return;
   if (input.threshold && !std::isfinite(*input.threshold)) {
@@ -201,7 +201,7 @@ RunOptions to_run_options(const RunInput &input) {
   o.threshold = input.threshold;
   o.range_model.pie_half_angle_rad = input.pie_beta_deg * std::numbers::pi / 180.0;
   o.range_model.pie_contact_m = input.pie_alpha_m;
-  mapping::validate(o.range_model);
+  sensing::validate(o.range_model);
   o.strategy = explore::parse_strategy(input.strategy);
   o.robot = input.robot.empty() ? std::string(default_robot(o.model)) : input.robot;
   resolve_robot(o.robot);  // a bad profile file fails here, before any world is read

@@ -253,7 +253,7 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   j["width"] = s.width;
   j["height"] = s.height;
   j["subcells"] = o.subcells;
-  j["model"] = std::string(mapping::to_string(o.model));
+  j["model"] = std::string(sensing::to_string(o.model));
   j["strategy"] = std::string(explore::to_string(o.strategy));
   j["robot"] = o.robot;
   j["seed"] = o.seed;
@@ -269,7 +269,7 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   j["wall_time_ms"] = s.wall_time_ms;
   nlohmann::ordered_json opt;
   opt["subcells"] = o.subcells;
-  opt["model"] = std::string(mapping::to_string(o.model));
+  opt["model"] = std::string(sensing::to_string(o.model));
   opt["hit_depth"] = o.hit_depth;
   opt["ignore_no_return"] = o.ignore_no_return;
   opt["strategy"] = std::string(explore::to_string(o.strategy));

@@ -179,9 +179,9 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.start_heading = to_heading(maze.start_heading());
   for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
   c.sensor = options.sensor;
-  c.mapping.kind = options.model;
-  c.mapping.hit_depth = options.hit_depth;
-  c.mapping.ignore_no_return = options.ignore_no_return;
+  c.model.kind = options.model;
+  c.model.hit_depth = options.hit_depth;
+  c.model.ignore_no_return = options.ignore_no_return;
   c.strategy = options.strategy;
   c.motion.wheel_radius_m = profile.wheel_radius_m;
   c.motion.axle_m = profile.axle_m;
@@ -211,28 +211,28 @@ void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &p
   const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
   bool (*has)(const maze::sim::RobotProfile &) = ranges;
   const char *what = "range sensors";
-  if (mapping::uses_lidar(options.model)) {
+  if (sensing::uses_lidar(options.model)) {
     has = lidar;
     what = "a lidar";
-  } else if (options.model == mapping::ModelKind::bump) {
+  } else if (options.model == sensing::ModelKind::bump) {
     has = bumpers;
     what = "bumpers";
   }
   if (!has(profile)) {
     throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
-                                         profile.name, what, mapping::to_string(options.model),
+                                         profile.name, what, sensing::to_string(options.model),
                                          what, robots_with(has)));
   }
 }
 
-std::string_view default_robot(mapping::ModelKind model) {
+std::string_view default_robot(sensing::ModelKind model) {
   switch (model) {
-    case mapping::ModelKind::cell:
-    case mapping::ModelKind::ray: return "hambot";
-    case mapping::ModelKind::bump:
-    case mapping::ModelKind::depth: return "bumper-depth";
-    case mapping::ModelKind::pie:
-    case mapping::ModelKind::cone: return "ir-ring";
+    case sensing::ModelKind::cell:
+    case sensing::ModelKind::ray: return "hambot";
+    case sensing::ModelKind::bump:
+    case sensing::ModelKind::depth: return "bumper-depth";
+    case sensing::ModelKind::pie:
+    case sensing::ModelKind::cone: return "ir-ring";
   }
   return "hambot";
 }
@@ -378,7 +378,7 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("world", options.world);
   line("size", fmt::format("{}x{}", s.width, s.height));
   line("subcells", std::to_string(options.subcells));
-  line("model", std::string(mapping::to_string(options.model)));
+  line("model", std::string(sensing::to_string(options.model)));
   if (options.threshold) line("threshold", fmt::format("{:.3f}", *options.threshold));
   line("strategy", std::string(explore::to_string(options.strategy)));
   line("robot", options.robot);

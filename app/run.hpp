@@ -18,8 +18,8 @@
 #include "maze/sim/profile.hpp"
 #include "maze/world.hpp"
 #include "explore/strategies.hpp"
-#include "mapping/models.hpp"
-#include "mapping/range_models.hpp"
+#include "sensing/setups.hpp"
+#include "sensing/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "robot/cell_controller.hpp"
 
@@ -29,11 +29,11 @@ struct RunOptions {
   std::string world;                    // the path as the user gave it
   maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
   int subcells = 3;                     // --subcells K
-  mapping::ModelKind model = mapping::ModelKind::cell;
+  sensing::ModelKind model = sensing::ModelKind::cell;
   int hit_depth = 0;                    // --hit-depth (ray model)
   bool ignore_no_return = false;        // --ignore-no-return (ray model)
   std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
-  mapping::RangeModelOptions range_model;  // --pie-beta, --pie-alpha (pie model)
+  sensing::RangeModelOptions range_model;  // --pie-beta, --pie-alpha (pie model)
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   std::string robot = "hambot";         // --robot: a built-in profile's name or a FILE.json
   std::uint64_t seed = common::kDefaultSeed;
@@ -67,7 +67,7 @@ struct RunOptions {
 
 // The robot a model runs on when --robot is not given: hambot for the lidar models (cell,
 // ray), bumper-depth for bump and depth, ir-ring for pie and cone.
-std::string_view default_robot(mapping::ModelKind model);
+std::string_view default_robot(sensing::ModelKind model);
 
 // What a run reads besides its options (all optional).
 struct RunControls {

@@ -40,7 +40,7 @@ struct RunInput {
   bool ignore_no_return = false;
   std::optional<double> threshold;
   double pie_beta_deg = 10.0;
-  double pie_alpha_m = mapping::RangeModelOptions{}.pie_contact_m;
+  double pie_alpha_m = sensing::RangeModelOptions{}.pie_contact_m;
   std::string robot;  // empty: the model's default robot (default_robot)
   std::uint64_t seed = common::kDefaultSeed;
   std::optional<double> noise;

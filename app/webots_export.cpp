@@ -8,10 +8,10 @@ namespace app {
 
 namespace {
 
-mapping::ModelKind model_for(const WebotsExport &options, const maze::sim::RobotProfile &profile) {
-  if (!options.model.empty()) return mapping::parse_model(options.model);
-  if (!profile.lidars.empty()) return mapping::ModelKind::cell;
-  return profile.bumpers.empty() ? mapping::ModelKind::depth : mapping::ModelKind::bump;
+sensing::ModelKind model_for(const WebotsExport &options, const maze::sim::RobotProfile &profile) {
+  if (!options.model.empty()) return sensing::parse_model(options.model);
+  if (!profile.lidars.empty()) return sensing::ModelKind::cell;
+  return profile.bumpers.empty() ? sensing::ModelKind::depth : sensing::ModelKind::bump;
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ namespace {
 
 constexpr int kSeeds = 50;
 
-void check_faulty_mapping(mapping::ModelKind model) {
+void check_faulty_mapping(sensing::ModelKind model) {
   app::RunOptions options;
   options.model = model;
   options.quiet = true;
@@ -46,16 +46,16 @@ void check_faulty_mapping(mapping::ModelKind model) {
     correct += s.score.sides_correct;
   }
   MESSAGE(fmt::format("{}: {} of {} sides right over {} mazes, worst maze {:.2f} %",
-                      mapping::to_string(model), correct, sides, kSeeds, worst));
+                      sensing::to_string(model), correct, sides, kSeeds, worst));
 }
 
 }  // namespace
 
 TEST_SUITE("acceptance") {
   TEST_CASE("faults with the cell model: 5 % dropout and 1 % spikes keep wall_accuracy at least 99 % on 16x16 mazes") {
-    check_faulty_mapping(mapping::ModelKind::cell);
+    check_faulty_mapping(sensing::ModelKind::cell);
   }
   TEST_CASE("faults with the ray model: 5 % dropout and 1 % spikes keep wall_accuracy at least 99 % on 16x16 mazes") {
-    check_faulty_mapping(mapping::ModelKind::ray);
+    check_faulty_mapping(sensing::ModelKind::ray);
   }
 }

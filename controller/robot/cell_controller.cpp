@@ -19,8 +19,10 @@
 #include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
+#include "common/angles.hpp"
 #include "common/error.hpp"
-#include "mapping/scan.hpp"
+#include "sensing/cell_model.hpp"
+#include "sensing/scan.hpp"
 #include "mapping/walls.hpp"
 #include "plan/wavefront.hpp"
 
@@ -65,12 +67,12 @@ class StallWatch {
 
 }  // namespace
 
-mapping::LeveledUpdate range_update_for(const ControllerOptions &o) {
-  switch (o.mapping.kind) {
-    case mapping::ModelKind::depth: return mapping::make_depth_update();
-    case mapping::ModelKind::pie: return mapping::make_pie_update();
-    case mapping::ModelKind::cone: return mapping::make_cone_update(o.sensor);
-    default: return mapping::make_bump_update();
+sensing::LeveledUpdate range_update_for(const ControllerOptions &o) {
+  switch (o.model.kind) {
+    case sensing::ModelKind::depth: return sensing::make_depth_update();
+    case sensing::ModelKind::pie: return sensing::make_pie_update();
+    case sensing::ModelKind::cone: return sensing::make_cone_update(o.sensor);
+    default: return sensing::make_bump_update();
   }
 }
 
@@ -90,9 +92,9 @@ struct CellController::Impl {
     left_encoder = require(robot.getPositionSensor(d.left_encoder), d.left_encoder);
     right_encoder = require(robot.getPositionSensor(d.right_encoder), d.right_encoder);
     imu = require(robot.getInertialUnit(d.imu), d.imu);
-    if (mapping::uses_lidar(options.mapping.kind)) {
+    if (sensing::uses_lidar(options.model.kind)) {
       lidar = require(robot.getLidar(d.lidar), d.lidar);
-    } else if (options.mapping.kind == mapping::ModelKind::bump) {
+    } else if (options.model.kind == sensing::ModelKind::bump) {
       for (const BumperMount &b : options.sensing.bumpers) {
         bumpers.push_back(require(robot.getTouchSensor(b.name), b.name));
       }
@@ -186,13 +188,13 @@ struct CellController::Impl {
     double last = yaw();
     bool moved = false;
     for (;;) {
-      const double error = mapping::wrap_angle_rad(target - yaw());
+      const double error = common::wrap_angle_rad(target - yaw());
       if (std::abs(error) < m.yaw_tolerance_rad) break;
       const double w = std::min(m.turn_gain * std::abs(error) / dt_s, max_w);
       set_body(0.0, std::copysign(w, error));
       moved = true;
       if (const Motion s = step(Action::turn); s != Motion::ok) return s;
-      turned += mapping::wrap_angle_rad(yaw() - last);
+      turned += common::wrap_angle_rad(yaw() - last);
       last = yaw();
       if (watch.stalled(turned)) {
         message = fmt::format("turning to {} made no progress for {} steps (yaw {:.4f} rad)",
@@ -233,7 +235,7 @@ struct CellController::Impl {
     StallWatch watch(remaining, m.stall_epsilon, m.stall_steps);
     while (std::abs(remaining) >= m.position_tolerance_m) {
       const double v = std::clamp(m.drive_gain * remaining / dt_s, -max_v, max_v);
-      const double error = mapping::wrap_angle_rad(target_yaw - yaw()) - m.lateral_gain * offset;
+      const double error = common::wrap_angle_rad(target_yaw - yaw()) - m.lateral_gain * offset;
       const double w = std::clamp(m.turn_gain * error / dt_s, -max_w, max_w);
       set_body(v, w);
       if (const Motion s = step(Action::drive); s != Motion::ok) return s;
@@ -267,7 +269,7 @@ struct CellController::Impl {
       pressed = pressed || on;
       bump_readings.push_back({mounted(centre, mount.angle_rad, mount.offset_m), on});
     }
-    mapping::mark_bumps(grid, centre, bump_readings, bump_update);
+    sensing::mark_bumps(grid, centre, bump_readings, bump_update);
     return pressed;
   }
 
@@ -283,24 +285,24 @@ struct CellController::Impl {
   }
 
   void scan(Cell c) {
-    switch (options.mapping.kind) {
-      case mapping::ModelKind::cell:
-      case mapping::ModelKind::ray: scan_lidar(c); return;
-      case mapping::ModelKind::bump:
+    switch (options.model.kind) {
+      case sensing::ModelKind::cell:
+      case sensing::ModelKind::ray: scan_lidar(c); return;
+      case sensing::ModelKind::bump:
         gather_bumps(c);
         bump_update.apply(grid, model);
         return;
-      case mapping::ModelKind::depth:
+      case sensing::ModelKind::depth:
         read_ranges(c);
-        mapping::mark_depth(grid, position(c), range_readings, range_update);
+        sensing::mark_depth(grid, position(c), range_readings, range_update);
         break;
-      case mapping::ModelKind::pie:
+      case sensing::ModelKind::pie:
         read_ranges(c);
-        mapping::mark_pie(grid, options.sensing.range_model, range_readings, range_update);
+        sensing::mark_pie(grid, options.sensing.range_model, range_readings, range_update);
         break;
-      case mapping::ModelKind::cone:
+      case sensing::ModelKind::cone:
         read_ranges(c);
-        mapping::mark_cone(grid, range_readings, range_update);
+        sensing::mark_cone(grid, range_readings, range_update);
         break;
     }
     range_update.apply(grid, model);
@@ -328,7 +330,7 @@ struct CellController::Impl {
     auto [along, offset] = along_and_offset();
     StallWatch watch(along, m.stall_epsilon, m.stall_steps);
     while (!gather_bumps(c) && along < limit_m) {
-      const double error = mapping::wrap_angle_rad(mapping::yaw_rad(h) - yaw()) - m.lateral_gain * offset;
+      const double error = common::wrap_angle_rad(mapping::yaw_rad(h) - yaw()) - m.lateral_gain * offset;
       set_body(m.creep_speed_m_s, std::clamp(m.turn_gain * error / dt_s, -max_w, max_w));
       if (const Motion s = step(Action::probe); s != Motion::ok) return s;
       std::tie(along, offset) = along_and_offset();
@@ -393,7 +395,7 @@ struct CellController::Impl {
   void scan_lidar(Cell c) {
     const float *ranges = lidar->getRangeImage();
     if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
-    mapping::LidarScan s;
+    sensing::LidarScan s;
     s.origin = gps != nullptr ? gps_point() : grid.centre_of(c);
     s.yaw_rad = yaw();
     s.fov_rad = lidar->getFov();
@@ -402,8 +404,8 @@ struct CellController::Impl {
     s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar->getHorizontalResolution()));
     // A scan before in the same control step is the same reading, not a second look.
     const bool second_look = !previous_scan.ranges.empty() && previous_scan_step < steps;
-    const mapping::LidarScan filtered = second_look ? scan_filter.apply(s, previous_scan) : scan_filter.apply(s);
-    const std::size_t updated = mapping::integrate_scan(options.mapping, grid, filtered, c, model, update);
+    const sensing::LidarScan filtered = second_look ? scan_filter.apply(s, previous_scan) : scan_filter.apply(s);
+    const std::size_t updated = sensing::integrate_scan(options.model, grid, filtered, c, model, update);
     if (has_pending) pending.subcells_updated += updated;
     // Kept for the next scan's filter: a short view past max range seen again from the same
     // pose is a view, not dropped beams.
@@ -462,7 +464,7 @@ struct CellController::Impl {
   Motion confirm_open_sides(Cell c, const explore::WallQuery &walls) {
     for (const Heading h : mapping::kHeadings) {
       for (int attempt = 0; attempt < 3 * options.max_rescans && walls(c, h) == mapping::SideState::open &&
-                            mapping::read_cell_side(options.mapping, grid, previous_scan, c, h) == mapping::SideState::wall;
+                            sensing::read_cell_side(options.model, grid, previous_scan, c, h) == mapping::SideState::wall;
            ++attempt) {
         if (const Motion s = rest_and_scan(c); s != Motion::ok) return s;
       }
@@ -501,10 +503,10 @@ struct CellController::Impl {
     const explore::WallQuery walls = [this](Cell c, Heading h) {
       return mapping::side_state(grid, initial, c, h, options.occupied_threshold);
     };
-    const bool bump = options.mapping.kind == mapping::ModelKind::bump;
-    const bool depth = options.mapping.kind == mapping::ModelKind::depth;
-    const bool ring = options.mapping.kind == mapping::ModelKind::pie ||
-                      options.mapping.kind == mapping::ModelKind::cone;
+    const bool bump = options.model.kind == sensing::ModelKind::bump;
+    const bool depth = options.model.kind == sensing::ModelKind::depth;
+    const bool ring = options.model.kind == sensing::ModelKind::pie ||
+                      options.model.kind == sensing::ModelKind::cone;
     // Scan on arrival (the bump model then probes the unknown sides), then report.
     const auto arrive = [&](bool new_cell) {
       if (const Motion r = await_lidar_revolution(); r != Motion::ok) return r;
@@ -590,11 +592,11 @@ struct CellController::Impl {
   explore::Visits visits;
   explore::Explorer explorer;
   mapping::ScanUpdate update;
-  mapping::ScanFilter scan_filter{options.scan_filter};
-  mapping::LeveledUpdate bump_update = mapping::make_bump_update();
-  mapping::LeveledUpdate range_update = range_update_for(options);
-  std::vector<mapping::BumpReading> bump_readings;
-  std::vector<mapping::RangeReading> range_readings;
+  sensing::ScanFilter scan_filter{options.scan_filter};
+  sensing::LeveledUpdate bump_update = sensing::make_bump_update();
+  sensing::LeveledUpdate range_update = range_update_for(options);
+  std::vector<sensing::BumpReading> bump_readings;
+  std::vector<sensing::RangeReading> range_readings;
 
   webots::Motor *left = nullptr;
   webots::Motor *right = nullptr;
@@ -626,7 +628,7 @@ struct CellController::Impl {
   std::string message;
   bool ran = false;
   // The lidar's last raw scan (for the filter's repeated-view rule), its ranges owned here.
-  mapping::LidarScan previous_scan;
+  sensing::LidarScan previous_scan;
   std::vector<float> previous_ranges;
   std::int64_t previous_scan_step = 0;
   // Sides the robot looked at in every way it has and still does not know (cell, side).

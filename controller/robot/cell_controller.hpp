@@ -26,10 +26,10 @@
 #include "explore/strategies.hpp"
 #include "explore/visits.hpp"
 #include "mapping/grid_types.hpp"
-#include "mapping/models.hpp"
+#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "mapping/range_models.hpp"
-#include "mapping/scan_filter.hpp"
+#include "sensing/range_models.hpp"
+#include "sensing/scan_filter.hpp"
 #include "mapping/sensor_model.hpp"
 
 namespace webots {
@@ -92,7 +92,7 @@ struct BumperMount {
 struct SensingOptions {
   std::vector<RangeSensorMount> ranges;
   std::vector<BumperMount> bumpers;
-  mapping::RangeModelOptions range_model;
+  sensing::RangeModelOptions range_model;
 };
 
 struct ControllerOptions {
@@ -101,10 +101,10 @@ struct ControllerOptions {
   mapping::Heading start_heading = mapping::Heading::north;
   std::vector<mapping::Cell> goals;    // micromouse-style targets (floodfill)
   mapping::SensorModelOptions sensor;
-  mapping::MappingOptions mapping;
+  sensing::ModelOptions model;
   // Lidar models: what each scan goes through before it is marked (spikes and dropped
   // beams become "no information"; mapping/scan_filter.hpp).
-  mapping::ScanFilterOptions scan_filter;
+  sensing::ScanFilterOptions scan_filter;
   // Lidar models and range rings (pie, cone): scans taken again, one control step apart,
   // while a side of the robot's cell is still unknown after arriving (a reading the filter or
   // the pie model left without information); then the robot faces each side still unknown

@@ -74,8 +74,8 @@ std::string_view to_string(Action action) {
 void validate(const ControllerOptions &options) {
   mapping::validate(options.geometry, mapping::kDefaultMaxGridBytes);
   mapping::validate(options.sensor);
-  mapping::validate(options.mapping);
-  mapping::validate(options.scan_filter);
+  sensing::validate(options.model);
+  sensing::validate(options.scan_filter);
   if (options.max_rescans < 0 || options.max_rescans > 100) {
     throw common::InputError(fmt::format("rescans must be 0 to 100 (got {})", options.max_rescans));
   }
@@ -84,17 +84,17 @@ void validate(const ControllerOptions &options) {
                                              options.goals});
   validate(options.motion);
   require_positive("creep speed", options.motion.creep_speed_m_s);
-  mapping::validate(options.sensing.range_model);
+  sensing::validate(options.sensing.range_model);
   if (options.occupied_threshold && !std::isfinite(*options.occupied_threshold)) {
     throw common::InputError("--threshold must be a finite log-odds value");
   }
-  const mapping::ModelKind kind = options.mapping.kind;
-  if (kind == mapping::ModelKind::bump && options.sensing.bumpers.empty()) {
+  const sensing::ModelKind kind = options.model.kind;
+  if (kind == sensing::ModelKind::bump && options.sensing.bumpers.empty()) {
     throw common::InputError("the bump model needs a robot with bumpers");
   }
-  if (!mapping::uses_lidar(kind) && kind != mapping::ModelKind::bump && options.sensing.ranges.empty()) {
+  if (!sensing::uses_lidar(kind) && kind != sensing::ModelKind::bump && options.sensing.ranges.empty()) {
     throw common::InputError(fmt::format("the {} model needs a robot with range sensors",
-                                         mapping::to_string(kind)));
+                                         sensing::to_string(kind)));
   }
 }
 
