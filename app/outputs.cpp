@@ -263,16 +263,16 @@ Json sensor_json(const mapping::SensorModelOptions &s) {
   return j;
 }
 
-Json mapping_json(const mapping::MappingOptions &m) {
+Json model_json(const sensing::ModelOptions &m) {
   Json j;
-  j["model"] = std::string(mapping::to_string(m.kind));
+  j["kind"] = std::string(sensing::to_string(m.kind));
   j["wall_margin"] = m.wall_margin;
   j["hit_depth"] = m.hit_depth;
   j["ignore_no_return"] = m.ignore_no_return;
   return j;
 }
 
-Json range_model_json(const mapping::RangeModelOptions &r) {
+Json range_model_json(const sensing::RangeModelOptions &r) {
   Json j;
   j["pie_half_angle_rad"] = r.pie_half_angle_rad;
   j["pie_contact_m"] = r.pie_contact_m;
@@ -325,7 +325,7 @@ Json options_json(const RunOptions &o, const RunSummary &s) {
   j["robot"] = o.robot;
   j["threshold"] = or_null(o.threshold);
   j["max_steps"] = s.max_steps;
-  j["mapping"] = mapping_json(o.mapping);
+  j["model"] = model_json(o.model);
   j["sensor"] = sensor_json(o.sensor);
   j["range_model"] = range_model_json(o.range_model);
   j["simulation"] = simulation_json(o.simulation);
@@ -363,7 +363,7 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   j["width"] = s.width;
   j["height"] = s.height;
   j["subcells"] = o.subcells;
-  j["model"] = std::string(mapping::to_string(o.mapping.kind));
+  j["model"] = std::string(sensing::to_string(o.model.kind));
   j["threshold"] = or_null(o.threshold);
   j["strategy"] = std::string(explore::to_string(o.strategy));
   j["robot"] = o.robot;

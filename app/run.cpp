@@ -76,11 +76,12 @@ struct SensorNeed {
   const char *having;   // after "robots with"
 };
 
-SensorNeed sensor_need(mapping::ModelKind model) {
-  if (mapping::uses_lidar(model)) {
+SensorNeed sensor_need(sensing::ModelKind model) {
+  const sensing::SetUp &setup = sensing::setup(model);
+  if (setup.reads_lidar()) {
     return {[](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); }, "lidar", "a lidar"};
   }
-  if (model == mapping::ModelKind::bump) {
+  if (setup.reads_bumpers()) {
     return {[](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); }, "bumpers", "bumpers"};
   }
   return {[](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); }, "range sensors",
@@ -206,7 +207,7 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.start_heading = to_heading(maze.start_heading());
   for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
   c.sensor = options.sensor;
-  c.mapping = options.mapping;
+  c.model = options.model;
   c.strategy = options.strategy;
   c.motion.wheel_radius_m = profile.wheel_radius_m;
   c.motion.axle_m = profile.axle_m;
@@ -225,10 +226,10 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
 }
 
 void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  const SensorNeed need = sensor_need(options.mapping.kind);
+  const SensorNeed need = sensor_need(options.model.kind);
   if (!need.has(profile)) {
     throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
-                                         profile.name, need.missing, mapping::to_string(options.mapping.kind),
+                                         profile.name, need.missing, sensing::to_string(options.model.kind),
                                          need.having, robots_with(need.has)));
   }
 }

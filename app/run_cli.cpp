@@ -1,8 +1,11 @@
 #include "app/run_cli.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -14,34 +17,53 @@
 namespace app {
 namespace {
 
-constexpr mapping::ModelKind kModels[] = {mapping::ModelKind::cell, mapping::ModelKind::ray,
-                                          mapping::ModelKind::bump, mapping::ModelKind::depth,
-                                          mapping::ModelKind::pie,  mapping::ModelKind::cone};
-
-// "hambot; bumper-depth for bump and depth, ir-ring for pie and cone": default_robot() in words.
-std::string default_robots() {
-  const std::string_view first(default_robot(kModels[0]));
-  std::string text(first);
-  std::string others;
-  for (std::size_t i = 1; i < std::size(kModels); ++i) {
-    const std::string_view robot = default_robot(kModels[i]);
-    if (robot == first || robot == default_robot(kModels[i - 1])) continue;
-    std::string models;
-    for (const mapping::ModelKind m : kModels) {
-      if (default_robot(m) != robot) continue;
-      models += (models.empty() ? "" : " and ") + std::string(mapping::to_string(m));
+// The set-ups' names grouped by `key` ("cell, ray (a lidar); bump (bumpers); ...") or the
+// names sharing one key.
+template <typename Key>
+std::vector<std::pair<std::string_view, std::string>> grouped(Key key, std::string_view separator) {
+  std::vector<std::pair<std::string_view, std::string>> groups;
+  for (const sensing::SetUp &s : sensing::setups()) {
+    const auto same = [&](const auto &g) { return g.first == key(s); };
+    auto group = std::find_if(groups.begin(), groups.end(), same);
+    if (group == groups.end()) {
+      groups.emplace_back(key(s), std::string(s.name));
+    } else {
+      group->second += fmt::format("{}{}", separator, s.name);
     }
-    others += fmt::format("{}{} for {}", others.empty() ? "" : ", ", robot, models);
   }
-  return others.empty() ? text : text + "; " + others;
+  return groups;
+}
+
+// "cell, ray (a lidar); bump (bumpers); depth, pie, cone (range sensors)"
+std::string models_by_device() {
+  std::string text;
+  for (const auto &[devices, names] : grouped([](const sensing::SetUp &s) { return s.devices(); }, ", ")) {
+    text += fmt::format("{}{} ({})", text.empty() ? "" : "; ", names, devices);
+  }
+  return text;
+}
+
+// "hambot; bumper-depth for bump and depth, ir-ring for pie and cone": the set-ups' default
+// robots, the first set-up's first.
+std::string default_robots() {
+  std::string text;
+  std::string others;
+  for (const auto &[robot, names] : grouped([](const sensing::SetUp &s) { return s.default_robot; }, " and ")) {
+    if (text.empty()) {
+      text = robot;
+    } else {
+      others += fmt::format("{}{} for {}", others.empty() ? "" : ", ", robot, names);
+    }
+  }
+  return others.empty() ? text : fmt::format("{}; {}", text, others);
 }
 
 void add_model_choice(CLI::App &command, RunOptions &o) {
   command.add_option("--subcells", o.subcells,
                      fmt::format("K: sub-cells per cell side, odd, 3 to 9 (default {})", o.subcells));
   command.add_option_function<std::string>(
-      "--model", [&o](const std::string &name) { o.mapping.kind = mapping::parse_model(name); },
-      "mapping model: cell or ray (lidar), bump (bumpers), depth, pie or cone (range sensors) (default cell)");
+      "--model", [&o](const std::string &name) { o.model.kind = sensing::parse_model(name); },
+      fmt::format("mapping model: {} (default {})", models_by_device(), sensing::to_string(o.model.kind)));
   command.add_option("--threshold", o.threshold,
                      "L: a sub-cell is occupied when its log-odds >= L, for the map and the walls "
                      "(default none: when above 0)");
@@ -51,9 +73,9 @@ void add_model_choice(CLI::App &command, RunOptions &o) {
                   o.range_model.pie_half_angle_rad * 180.0 / std::numbers::pi));
   command.add_option("--pie-alpha", o.range_model.pie_contact_m,
                      fmt::format("pie model: contact slice length, m (default {})", o.range_model.pie_contact_m));
-  command.add_option("--hit-depth", o.mapping.hit_depth,
-                     fmt::format("ray model: sub-cells behind a hit also occupied (default {})", o.mapping.hit_depth));
-  command.add_flag("--ignore-no-return", o.mapping.ignore_no_return,
+  command.add_option("--hit-depth", o.model.hit_depth,
+                     fmt::format("ray model: sub-cells behind a hit also occupied (default {})", o.model.hit_depth));
+  command.add_flag("--ignore-no-return", o.model.ignore_no_return,
                    "ray model: a beam with no return frees nothing (default off: it frees up to max range)");
   command.add_option_function<std::string>(
       "--strategy", [&o](const std::string &name) { o.strategy = explore::parse_strategy(name); },
@@ -107,7 +129,7 @@ void add_exploration_options(CLI::App &command, RunOptions &o) {
 }
 
 RunOptions checked_run_options(const CLI::App &command, RunOptions options, bool with_default_world) {
-  if (command.count("--robot") == 0) options.robot = std::string(default_robot(options.mapping.kind));
+  if (command.count("--robot") == 0) options.robot = std::string(default_robot(options.model.kind));
   if (with_default_world && options.world.empty()) options.world = default_world();
   validate(options);
   return options;

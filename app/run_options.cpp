@@ -50,7 +50,7 @@ bool planning(const RunOptions &o) { return o.plan.to.has_value() || o.plan.only
 
 // The run's own rules. The per-model rows (--p-free with pie, --hit-depth without ray, ...)
 // come with the set-up table, which knows the options each model reads: they are rows here,
-// their `applies` asking that table about o.mapping.kind.
+// their `applies` asking that table about o.model.kind.
 constexpr OptionUse kOptionUses[] = {
     {"--fps", "without --animate", animating},
     {"--speed", "without --animate", animating},
@@ -80,8 +80,8 @@ void validate_unknown(std::string_view text) {
 
 void validate(const RunOptions &o) {
   mapping::validate(o.sensor);
-  mapping::validate(o.mapping);
-  mapping::validate(o.range_model);
+  sensing::validate(o.model);
+  sensing::validate(o.range_model);
   plan::validate(o.plan.wavefront);
   validate_run(o);
   o.simulation.validate();
@@ -89,17 +89,7 @@ void validate(const RunOptions &o) {
   resolve_robot(o.robot);  // a bad profile file fails here, before any world is read
 }
 
-std::string_view default_robot(mapping::ModelKind model) {
-  switch (model) {
-    case mapping::ModelKind::cell:
-    case mapping::ModelKind::ray: return "hambot";
-    case mapping::ModelKind::bump:
-    case mapping::ModelKind::depth: return "bumper-depth";
-    case mapping::ModelKind::pie:
-    case mapping::ModelKind::cone: return "ir-ring";
-  }
-  return "hambot";
-}
+std::string_view default_robot(sensing::ModelKind model) { return sensing::setup(model).default_robot; }
 
 std::vector<std::string> check_options_apply(const GivenOptions &given, const RunOptions &options) {
   std::vector<std::string> warnings;

@@ -14,8 +14,8 @@
 
 #include "explore/strategies.hpp"
 #include "mapping/grid_types.hpp"
-#include "mapping/models.hpp"
-#include "mapping/range_models.hpp"
+#include "sensing/setups.hpp"
+#include "sensing/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
@@ -52,9 +52,9 @@ struct RunOptions {
   std::string world;                    // the path as the user gave it
   maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
   int subcells = 3;                     // --subcells K
-  mapping::MappingOptions mapping;      // --model, --hit-depth, --ignore-no-return
+  sensing::ModelOptions model;        // --model, --hit-depth, --ignore-no-return
   mapping::SensorModelOptions sensor;   // --p-free, --p-occ, --prior, --log-base, --clamp
-  mapping::RangeModelOptions range_model;  // --pie-beta, --pie-alpha
+  sensing::RangeModelOptions range_model;  // --pie-beta, --pie-alpha
   std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
   explore::StrategyKind strategy = explore::StrategyKind::dfs;
   std::string robot = "hambot";         // --robot: a built-in profile's name or a FILE.json
@@ -83,9 +83,8 @@ void validate_subcells(int subcells);
 // other than W.
 void validate_unknown(std::string_view text);
 
-// The robot a model runs on when --robot is not given: hambot for the lidar models (cell,
-// ray), bumper-depth for bump and depth, ir-ring for pie and cone.
-std::string_view default_robot(mapping::ModelKind model);
+// The robot a model runs on when --robot is not given: its set-up's (sensing/setups.hpp).
+std::string_view default_robot(sensing::ModelKind model);
 
 // Which command the options were given to ("run", "plan", "compare", "batch") and whether
 // the user typed an option (by its long name, e.g. "--fps").

@@ -22,7 +22,7 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("world", options.world);
   line("size", fmt::format("{}x{}", s.width, s.height));
   line("subcells", std::to_string(options.subcells));
-  line("model", std::string(mapping::to_string(options.mapping.kind)));
+  line("model", std::string(sensing::to_string(options.model.kind)));
   if (options.threshold) line("threshold", fmt::format("{:.3f}", *options.threshold));
   line("strategy", std::string(explore::to_string(options.strategy)));
   line("robot", options.robot);

@@ -8,10 +8,10 @@ namespace app {
 
 namespace {
 
-mapping::ModelKind model_for(const WebotsExport &options, const maze::sim::RobotProfile &profile) {
-  if (!options.model.empty()) return mapping::parse_model(options.model);
-  if (!profile.lidars.empty()) return mapping::ModelKind::cell;
-  return profile.bumpers.empty() ? mapping::ModelKind::depth : mapping::ModelKind::bump;
+sensing::ModelKind model_for(const WebotsExport &options, const maze::sim::RobotProfile &profile) {
+  if (!options.model.empty()) return sensing::parse_model(options.model);
+  if (!profile.lidars.empty()) return sensing::ModelKind::cell;
+  return profile.bumpers.empty() ? sensing::ModelKind::depth : sensing::ModelKind::bump;
 }
 
 }  // namespace
@@ -21,7 +21,7 @@ std::string webots_world(const maze::Maze &maze, std::string_view title, const W
   RunOptions run;
   run.robot = profile.name;
   run.subcells = options.subcells;
-  run.mapping.kind = model_for(options, profile);
+  run.model.kind = model_for(options, profile);
   run.strategy = explore::parse_strategy(options.strategy);
   require_sensors(run, profile);
   const robot::ControllerOptions controller = controller_options(run, maze, profile);

@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "common/random.hpp"
-#include "mapping/models.hpp"
+#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 #include "mapping/sensor_model.hpp"
 
 #ifdef MAZE_MAPPER_HAVE_OCTOMAP
@@ -65,8 +65,8 @@ Workload make_workload() {
   return w;
 }
 
-mapping::LidarScan scan_of(const Workload &w, int s) {
-  mapping::LidarScan scan;
+sensing::LidarScan scan_of(const Workload &w, int s) {
+  sensing::LidarScan scan;
   scan.origin = w.origins[static_cast<std::size_t>(s)];
   scan.yaw_rad = w.yaws[static_cast<std::size_t>(s)];
   scan.fov_rad = 2.0 * std::numbers::pi;
@@ -91,13 +91,13 @@ Result run_project(const Workload &w) {
   g.cell_size_m = kSubcell_m * g.subcells;
   const mapping::SensorModel model{mapping::SensorModelOptions{}};
   mapping::OccupancyGrid grid(g, static_cast<float>(model.prior_log_odds()));
-  mapping::MappingOptions options;
-  options.kind = mapping::ModelKind::ray;
+  sensing::ModelOptions options;
+  options.kind = sensing::ModelKind::ray;
   mapping::ScanUpdate update;
   Result r;
   const auto t0 = Clock::now();
   for (int s = 0; s < kScans; ++s) {
-    r.updates += mapping::integrate_scan(options, grid, scan_of(w, s), mapping::Cell{0, 0}, model, update);
+    r.updates += sensing::integrate_scan(options, grid, scan_of(w, s), mapping::Cell{0, 0}, model, update);
   }
   r.seconds = seconds_since(t0);
   return r;
@@ -105,7 +105,7 @@ Result run_project(const Workload &w) {
 
 #ifdef MAZE_MAPPER_HAVE_OCTOMAP
 octomap::Pointcloud cloud_of(const Workload &w, int s, octomap::point3d &origin) {
-  const mapping::LidarScan scan = scan_of(w, s);
+  const sensing::LidarScan scan = scan_of(w, s);
   octomap::Pointcloud cloud;
   cloud.reserve(kBeams);
   for (int b = 0; b < kBeams; ++b) {
@@ -162,10 +162,10 @@ double scan_update_ns(int repeat) {
   g.height_cells = 4;
   const mapping::SensorModel model{mapping::SensorModelOptions{}};
   mapping::OccupancyGrid grid(g, static_cast<float>(model.prior_log_odds()));
-  mapping::MappingOptions options;
-  options.kind = mapping::ModelKind::ray;
+  sensing::ModelOptions options;
+  options.kind = sensing::ModelKind::ray;
   std::vector<float> ranges;
-  mapping::LidarScan scan;
+  sensing::LidarScan scan;
   scan.origin = {1.5, 1.5};
   scan.yaw_rad = std::numbers::pi / 2;
   scan.fov_rad = 2.0 * std::numbers::pi;
@@ -186,7 +186,7 @@ double scan_update_ns(int repeat) {
   for (int pass = 0; pass < repeat; ++pass) {
     const auto t0 = Clock::now();
     for (int i = 0; i < scans; ++i) {
-      mapping::integrate_scan(options, grid, scan, mapping::Cell{1, 1}, model, update);
+      sensing::integrate_scan(options, grid, scan, mapping::Cell{1, 1}, model, update);
     }
     best = std::min(best, seconds_since(t0) / scans * 1e9);
   }

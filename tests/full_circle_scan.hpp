@@ -5,10 +5,10 @@
 #include <numbers>
 #include <vector>
 
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 
-inline mapping::LidarScan full_circle(const std::vector<float> &ranges) {
-  mapping::LidarScan s;
+inline sensing::LidarScan full_circle(const std::vector<float> &ranges) {
+  sensing::LidarScan s;
   s.origin = {0.5, 0.5};
   s.yaw_rad = std::numbers::pi / 2.0;
   s.fov_rad = 2.0 * std::numbers::pi;

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "mapping/grid_types.hpp"
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 #include "mapping/walls.hpp"
 
 namespace testing_world {
@@ -106,9 +106,9 @@ inline std::vector<float> range_image(const std::vector<Box> &boxes, mapping::Po
 }
 
 // A hambot-like scan (360 beams over 2 pi, 0.05 ... 12 m) over the given ranges.
-inline mapping::LidarScan hambot_scan(mapping::Point origin, double yaw_rad,
+inline sensing::LidarScan hambot_scan(mapping::Point origin, double yaw_rad,
                                       const std::vector<float> &ranges) {
-  mapping::LidarScan s;
+  sensing::LidarScan s;
   s.origin = origin;
   s.yaw_rad = yaw_rad;
   s.fov_rad = 2.0 * std::numbers::pi;

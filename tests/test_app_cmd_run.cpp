@@ -82,14 +82,14 @@ TEST_CASE("run command line: each model's default robot, and a profile file name
 TEST_CASE("micromouse maps lab4x4 at 0.18 m cells with 12 mm walls (cell and ray models)") {
   maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
   m.set_physical(0.18, 0.012, 0.0, 0.0);
-  for (const mapping::ModelKind model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+  for (const sensing::ModelKind model : {sensing::ModelKind::cell, sensing::ModelKind::ray}) {
     app::RunOptions options;
     options.robot = "micromouse";
-    options.mapping.kind = model;
+    options.model.kind = model;
     options.output.quiet = true;
     std::ostringstream sink;
     const app::RunSummary s = app::run_maze(options, m, sink);
-    CAPTURE(mapping::to_string(model));
+    CAPTURE(sensing::to_string(model));
     CHECK(s.reason == robot::EndReason::done);
     CHECK(s.score.coverage_percent() == 100.0);
     CHECK(s.score.wall_accuracy_percent() == 100.0);

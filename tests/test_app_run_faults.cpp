@@ -1,7 +1,7 @@
 // Acceptance under simulated faults (issue 9): with 5 % of the lidar beams dropped (+inf) and
 // 1 % spiked (a random range), the mapper still maps every generated 16 x 16 maze to the end,
 // every cell visited, with wall_accuracy >= 99 %, with the cell model and with the ray model.
-// The scan filter (mapping/scan_filter.hpp) and the rescans of an unknown side make it so.
+// The scan filter (sensing/scan_filter.hpp) and the rescans of an unknown side make it so.
 // The `acceptance` suite: CTest runs it in optimised builds only (tests/CMakeLists.txt).
 
 #include <doctest/doctest.h>
@@ -19,9 +19,9 @@ namespace {
 
 constexpr int kSeeds = 50;
 
-void check_faulty_mapping(mapping::ModelKind model) {
+void check_faulty_mapping(sensing::ModelKind model) {
   app::RunOptions options;
-  options.mapping.kind = model;
+  options.model.kind = model;
   options.output.quiet = true;
   options.simulation.dropout = 0.05;
   options.simulation.spikes = 0.01;
@@ -46,16 +46,16 @@ void check_faulty_mapping(mapping::ModelKind model) {
     correct += s.score.sides_correct;
   }
   MESSAGE(fmt::format("{}: {} of {} sides right over {} mazes, worst maze {:.2f} %",
-                      mapping::to_string(model), correct, sides, kSeeds, worst));
+                      sensing::to_string(model), correct, sides, kSeeds, worst));
 }
 
 }  // namespace
 
 TEST_SUITE("acceptance") {
   TEST_CASE("faults with the cell model: 5 % dropout and 1 % spikes keep wall_accuracy at least 99 % on 16x16 mazes") {
-    check_faulty_mapping(mapping::ModelKind::cell);
+    check_faulty_mapping(sensing::ModelKind::cell);
   }
   TEST_CASE("faults with the ray model: 5 % dropout and 1 % spikes keep wall_accuracy at least 99 % on 16x16 mazes") {
-    check_faulty_mapping(mapping::ModelKind::ray);
+    check_faulty_mapping(sensing::ModelKind::ray);
   }
 }

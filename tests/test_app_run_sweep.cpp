@@ -34,9 +34,9 @@ app::RunSummary run_quietly(app::RunOptions options, const maze::Maze &m, int se
   return app::run_maze(options, m, sink);
 }
 
-void check_perfect_mapping(mapping::ModelKind model, int k, explore::StrategyKind strategy) {
+void check_perfect_mapping(sensing::ModelKind model, int k, explore::StrategyKind strategy) {
   app::RunOptions options;
-  options.mapping.kind = model;
+  options.model.kind = model;
   options.subcells = k;
   options.strategy = strategy;
   options.simulation.noise = 0.0;
@@ -54,7 +54,7 @@ void check_perfect_mapping(mapping::ModelKind model, int k, explore::StrategyKin
 }
 
 // Noise off, every maze, K = 3 and 5, dfs and frontier.
-void check_perfect_mapping_all(mapping::ModelKind model) {
+void check_perfect_mapping_all(sensing::ModelKind model) {
   for (const int k : {3, 5}) {
     for (const auto strategy : {explore::StrategyKind::dfs, explore::StrategyKind::frontier}) {
       CAPTURE(k);
@@ -68,18 +68,18 @@ void check_perfect_mapping_all(mapping::ModelKind model) {
 
 TEST_SUITE("acceptance") {
   TEST_CASE("noise off with the cell model: every perfect maze is mapped exactly for K 3 and 5 with dfs and frontier") {
-    check_perfect_mapping_all(mapping::ModelKind::cell);
+    check_perfect_mapping_all(sensing::ModelKind::cell);
   }
 
   TEST_CASE("noise off with the ray model: every perfect maze is mapped exactly for K 3 and 5 with dfs and frontier") {
-    check_perfect_mapping_all(mapping::ModelKind::ray);
+    check_perfect_mapping_all(sensing::ModelKind::ray);
   }
 
   TEST_CASE("default noise: wall_accuracy at least 99.9 % over the same mazes") {
-    for (const auto model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+    for (const auto model : {sensing::ModelKind::cell, sensing::ModelKind::ray}) {
       for (const int k : {3, 5}) {
         app::RunOptions options;
-        options.mapping.kind = model;
+        options.model.kind = model;
         options.subcells = k;
         std::size_t sides = 0, correct = 0;
         for (int seed = 0; seed < kSeeds; ++seed) {
@@ -93,7 +93,7 @@ TEST_SUITE("acceptance") {
           sides += s.score.sides;
           correct += s.score.sides_correct;
         }
-        MESSAGE(fmt::format("{} K={}: {} of {} sides right over {} mazes", mapping::to_string(model), k,
+        MESSAGE(fmt::format("{} K={}: {} of {} sides right over {} mazes", sensing::to_string(model), k,
                             correct, sides, kSeeds));
       }
     }
@@ -116,11 +116,11 @@ TEST_SUITE("acceptance") {
 namespace {
 
 // A range ring explores worlds/lab4x4.txt to the end with every cell visited, for seeds 1 ... 20.
-void check_ring_covers_lab4x4(const std::string &robot, mapping::ModelKind model, int k) {
+void check_ring_covers_lab4x4(const std::string &robot, sensing::ModelKind model, int k) {
   app::RunOptions options;
   options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
   options.robot = robot;
-  options.mapping.kind = model;
+  options.model.kind = model;
   options.subcells = k;
   options.output.quiet = true;
   for (int seed = 1; seed <= 20; ++seed) {
@@ -143,8 +143,8 @@ void check_ring_covers_lab4x4(const std::string &robot, mapping::ModelKind model
 // clear slice freeing walls 1.5 cells away): pie ended early on 5 of 20 seeds at K = 3.
 TEST_CASE("range rings: pie and sonar cone cover lab4x4 on seeds 1 to 20 at K 3 and 5") {
   for (const int k : {3, 5}) {
-    check_ring_covers_lab4x4("ir-ring", mapping::ModelKind::pie, k);
-    check_ring_covers_lab4x4("sonar-ring", mapping::ModelKind::cone, k);
+    check_ring_covers_lab4x4("ir-ring", sensing::ModelKind::pie, k);
+    check_ring_covers_lab4x4("sonar-ring", sensing::ModelKind::cone, k);
   }
 }
 
@@ -161,7 +161,7 @@ struct LargeRun {
   maze::Algorithm algorithm = maze::Algorithm::dfs;
   double loops = 0.0;
   int k = 3;
-  mapping::ModelKind model = mapping::ModelKind::cell;
+  sensing::ModelKind model = sensing::ModelKind::cell;
   std::string robot;
   bool faults = false;
 };
@@ -177,7 +177,7 @@ void check_large_run(const LargeRun &r, int index) {
   g.seed = static_cast<std::uint64_t>(100 + index);
   const maze::Maze m = maze::generate_maze(g);
   app::RunOptions options;
-  options.mapping.kind = r.model;
+  options.model.kind = r.model;
   options.subcells = r.k;
   options.robot = r.robot;
   if (r.faults) {
@@ -190,7 +190,7 @@ void check_large_run(const LargeRun &r, int index) {
   CAPTURE(static_cast<int>(r.algorithm));
   CAPTURE(r.loops);
   CAPTURE(r.k);
-  CAPTURE(mapping::to_string(r.model));
+  CAPTURE(sensing::to_string(r.model));
   CAPTURE(r.robot);
   CAPTURE(r.faults);
   CAPTURE(s.message);
@@ -202,8 +202,8 @@ void check_large_run(const LargeRun &r, int index) {
 }
 
 // The 128 x 128 runs of one lidar model: 3 generators x 2 loops x 2 K x 2 ranges x 2 faults.
-void check_large_mazes(mapping::ModelKind model) {
-  int index = model == mapping::ModelKind::cell ? 0 : 1000;
+void check_large_mazes(sensing::ModelKind model) {
+  int index = model == sensing::ModelKind::cell ? 0 : 1000;
   for (const maze::Algorithm algorithm : kAlgorithms) {
     for (const double loops : {0.0, 0.1}) {
       for (const int k : {3, 5}) {
@@ -218,10 +218,10 @@ void check_large_mazes(mapping::ModelKind model) {
 }
 
 // A course-style world (tests/data/worlds): 0.5 m cells, the start on a lattice node.
-void check_course_world_mapped(const std::string &name, mapping::ModelKind model, int k) {
+void check_course_world_mapped(const std::string &name, sensing::ModelKind model, int k) {
   app::RunOptions options;
   options.world = std::string(TEST_DATA_DIR) + "/worlds/" + name;
-  options.mapping.kind = model;
+  options.model.kind = model;
   options.subcells = k;
   options.output.quiet = true;
   for (int seed = 1; seed <= 3; ++seed) {
@@ -229,7 +229,7 @@ void check_course_world_mapped(const std::string &name, mapping::ModelKind model
     std::ostringstream sink;
     const app::RunSummary s = app::run_world(options, sink);
     CAPTURE(name);
-    CAPTURE(mapping::to_string(model));
+    CAPTURE(sensing::to_string(model));
     CAPTURE(k);
     CAPTURE(seed);
     CAPTURE(s.message);
@@ -243,17 +243,17 @@ void check_course_world_mapped(const std::string &name, mapping::ModelKind model
 
 TEST_SUITE("acceptance") {
   TEST_CASE("large mazes with the cell model: 128 x 128, every generator, loops, K, lidar range and fault setting") {
-    check_large_mazes(mapping::ModelKind::cell);
+    check_large_mazes(sensing::ModelKind::cell);
   }
 
   TEST_CASE("large mazes with the ray model: 128 x 128, every generator, loops, K, lidar range and fault setting") {
-    check_large_mazes(mapping::ModelKind::ray);
+    check_large_mazes(sensing::ModelKind::ray);
   }
 
   TEST_CASE("very large mazes: 256 x 256, every generator with both models and both lidar ranges") {
     int index = 2000;
     for (const maze::Algorithm algorithm : kAlgorithms) {
-      for (const auto model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+      for (const auto model : {sensing::ModelKind::cell, sensing::ModelKind::ray}) {
         for (const char *robot : kLidarRobots) {
           const int turn = index - 2000;
           check_large_run({256, algorithm, turn % 3 == 0 ? 0.1 : 0.0, turn % 2 == 0 ? 3 : 5, model, robot, turn % 4 < 2},
@@ -285,7 +285,7 @@ TEST_SUITE("acceptance") {
 // Not in the acceptance suite: 24 runs of 64- and 100-cell mazes with the default noise.
 TEST_CASE("course XML: 0.5 m lattice worlds started on a node map fully with cell and ray at K 3 and 5") {
   for (const char *name : {"course_lattice.xml", "course_frame_1m.xml"}) {
-    for (const auto model : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
+    for (const auto model : {sensing::ModelKind::cell, sensing::ModelKind::ray}) {
       for (const int k : {3, 5}) check_course_world_mapped(name, model, k);
     }
   }

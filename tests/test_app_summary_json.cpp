@@ -97,8 +97,8 @@ TEST_CASE("summary.json: every option in effect, one object a concern") {
   CHECK(o.at("sensor").at("p_free") == 0.35);
   CHECK(o.at("sensor").at("clamp") == nlohmann::json::array({-2.0, 3.5}));
   CHECK(o.at("sensor").at("log_base") == "e");
-  CHECK(o.at("mapping").at("model") == "cell");
-  CHECK(o.at("mapping").at("hit_depth") == 0);
+  CHECK(o.at("model").at("kind") == "cell");
+  CHECK(o.at("model").at("hit_depth") == 0);
   CHECK(o.at("range_model").contains("pie_half_angle_rad"));
   CHECK(o.at("strategy") == "dfs");
   CHECK(o.at("robot") == "hambot");

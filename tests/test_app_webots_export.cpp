@@ -117,14 +117,14 @@ TEST_CASE("webots export: the controllerArgs read back into what run gives the c
     app::RunOptions run;
     run.robot = p.name;
     run.subcells = 5;
-    run.mapping.kind = parsed.mapping.kind;
+    run.model.kind = parsed.model.kind;
     const robot::ControllerOptions expected = app::controller_options(run, lab4x4(), p);
     CHECK(robot::format_controller_args(parsed) == robot::format_controller_args(expected));
     CHECK(parsed.geometry.width_cells == 4);
     CHECK(parsed.geometry.subcells == 5);
     CHECK(parsed.devices.left_motor == p.left_motor);
     CHECK(parsed.devices.left_encoder == p.left_encoder);
-    CHECK(parsed.sensing.bumpers.size() == (parsed.mapping.kind == mapping::ModelKind::bump ? p.bumpers.size()
+    CHECK(parsed.sensing.bumpers.size() == (parsed.model.kind == sensing::ModelKind::bump ? p.bumpers.size()
                                                                                              : parsed.sensing.bumpers.size()));
   }
 }

@@ -100,7 +100,7 @@ maze::Maze pocketed_corridor() {
 // The cell model up that corridor from its south end, hambot-12m's lidar: from the first cells
 // the corridor's end is beyond max range, a view of 4-5 beams. The pockets of the odd rows
 // are closed cells (unreachable).
-robot::RunResult run_corridor(const mapping::ScanFilterOptions &filter) {
+robot::RunResult run_corridor(const sensing::ScanFilterOptions &filter) {
   webots::embedded::Simulation sim(pocketed_corridor(), maze::sim::find_profile("hambot-12m"), {});
   robot::ControllerOptions o;
   o.start = {1, 0};
@@ -127,7 +127,7 @@ TEST_CASE("CellController: a side still unknown after every look ends the run in
   // A filter that never takes a short run of no returns for a view (wider than 32 beams):
   // the corridor's north side from the start stays unknown however often and from whichever
   // heading the robot scans, and an unknown side is not a wall.
-  mapping::ScanFilterOptions never_a_view;
+  sensing::ScanFilterOptions never_a_view;
   never_a_view.min_repeated_view = 32;
   const robot::RunResult r = run_corridor(never_a_view);
   CHECK(r.reason == robot::EndReason::incomplete);

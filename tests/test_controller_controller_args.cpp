@@ -27,9 +27,9 @@ robot::ControllerOptions everything_set() {
   o.start = {4, 2};
   o.start_heading = mapping::Heading::west;
   o.goals = {{2, 1}, {3, 1}};
-  o.mapping.kind = mapping::ModelKind::ray;
-  o.mapping.hit_depth = 2;
-  o.mapping.ignore_no_return = true;
+  o.model.kind = sensing::ModelKind::ray;
+  o.model.hit_depth = 2;
+  o.model.ignore_no_return = true;
   o.occupied_threshold = 0.7f;
   o.sensor = {0.35, 0.65, 0.45, mapping::LogBase::ten, mapping::Clamp{-2.0, 3.5}};
   o.sensing.range_model = {0.2, 0.05, 0.5};
@@ -61,9 +61,9 @@ TEST_CASE("controller args: format then parse gives back every field") {
   CHECK(p.start == o.start);
   CHECK(p.start_heading == o.start_heading);
   CHECK(p.goals == o.goals);
-  CHECK(p.mapping.kind == o.mapping.kind);
-  CHECK(p.mapping.hit_depth == 2);
-  CHECK(p.mapping.ignore_no_return);
+  CHECK(p.model.kind == o.model.kind);
+  CHECK(p.model.hit_depth == 2);
+  CHECK(p.model.ignore_no_return);
   CHECK(p.occupied_threshold == o.occupied_threshold);
   CHECK(p.sensor.p_free == o.sensor.p_free);
   CHECK(p.sensor.p_occ == o.sensor.p_occ);
@@ -110,7 +110,7 @@ TEST_CASE("controller args: only --size is required; the rest keep their default
   CHECK(p.geometry.height_cells == 3);
   CHECK(p.geometry.cell_size_m == d.geometry.cell_size_m);
   CHECK(p.devices.lidar == d.devices.lidar);
-  CHECK(p.mapping.kind == mapping::ModelKind::cell);
+  CHECK(p.model.kind == sensing::ModelKind::cell);
 }
 
 TEST_CASE("controller args: a bad argument is one line naming it") {

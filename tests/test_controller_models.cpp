@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "sensing/cell_model.hpp"
+#include "mapping/traversal.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "mapping/models.hpp"
+#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
 #include "render/ascii_map.hpp"
@@ -16,8 +18,8 @@
 
 using mapping::Cell;
 using mapping::GridGeometry;
-using mapping::MappingOptions;
-using mapping::ModelKind;
+using sensing::ModelOptions;
+using sensing::ModelKind;
 using mapping::OccupancyGrid;
 using mapping::SubCell;
 
@@ -54,10 +56,10 @@ std::string one_scan(ModelKind kind, int k, const mapping::SensorModelOptions &s
   const mapping::SensorModel model(sensor);
   OccupancyGrid grid(geometry(k), static_cast<float>(model.prior_log_odds()));
   mapping::ScanUpdate update;
-  MappingOptions options;
+  ModelOptions options;
   options.kind = kind;
   for (int n = 0; n < scans; ++n) {
-    mapping::integrate_scan(options, grid, testing_world::hambot_scan(origin, yaw, ranges),
+    sensing::integrate_scan(options, grid, testing_world::hambot_scan(origin, yaw, ranges),
                             Cell{1, 1}, model, update);
   }
   return render::format_cell_matrix(grid, shown);
@@ -165,8 +167,8 @@ TEST_CASE("models honour the sensor options: base 10, other p's, a prior, clampi
 namespace {
 
 // A scan of beams that all look east (a field of view of a nanoradian) from (0.5, 0.5).
-mapping::LidarScan east_beams(const std::vector<float> &ranges) {
-  mapping::LidarScan s;
+sensing::LidarScan east_beams(const std::vector<float> &ranges) {
+  sensing::LidarScan s;
   s.origin = {0.5, 0.5};
   s.yaw_rad = 0.0;
   s.fov_rad = 1e-9;
@@ -177,11 +179,11 @@ mapping::LidarScan east_beams(const std::vector<float> &ranges) {
 }
 
 // Row of sub-cells y = 1 (through the robot) of a 3 x 1 grid, K = 3: values as text.
-std::string east_row(const std::vector<float> &ranges, const MappingOptions &options) {
+std::string east_row(const std::vector<float> &ranges, const ModelOptions &options) {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3, 3, 1), 0.0f);
   mapping::ScanUpdate update;
-  mapping::integrate_scan(options, grid, east_beams(ranges), Cell{0, 0}, model, update);
+  sensing::integrate_scan(options, grid, east_beams(ranges), Cell{0, 0}, model, update);
   std::string out;
   for (int x = 0; x < 9; ++x) {
     const float v = grid.at(SubCell{x, 1});
@@ -193,7 +195,7 @@ std::string east_row(const std::vector<float> &ranges, const MappingOptions &opt
 }  // namespace
 
 TEST_CASE("ray model: occupied wins within a scan; each sub-cell updated once") {
-  MappingOptions ray;
+  ModelOptions ray;
   ray.kind = ModelKind::ray;
   // Beam 0 ends at x = 1.2 (sub-cell 3); beam 1 passes through it and ends at x = 1.9 (5).
   const std::vector<float> ranges{0.7f, 1.4f, 1.4f};
@@ -201,7 +203,7 @@ TEST_CASE("ray model: occupied wins within a scan; each sub-cell updated once") 
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3, 3, 1), 0.0f);
   mapping::ScanUpdate update;
-  CHECK(mapping::integrate_scan(ray, grid, east_beams(ranges), Cell{0, 0}, model, update) == 5);
+  CHECK(sensing::integrate_scan(ray, grid, east_beams(ranges), Cell{0, 0}, model, update) == 5);
   CHECK(grid.at(SubCell{3, 1}) == doctest::Approx(0.405465));
   CHECK(grid.at(SubCell{4, 1}) == doctest::Approx(-0.847298));
   CHECK(grid.at(SubCell{1, 1}) == doctest::Approx(-0.847298));
@@ -209,7 +211,7 @@ TEST_CASE("ray model: occupied wins within a scan; each sub-cell updated once") 
 }
 
 TEST_CASE("ray model: hit depth, no-return beams, invalid readings") {
-  MappingOptions ray;
+  ModelOptions ray;
   ray.kind = ModelKind::ray;
   CHECK(east_row({0.7f}, ray) == "?..X?????");
   ray.hit_depth = 2;
@@ -226,20 +228,20 @@ TEST_CASE("ray model: hit depth, no-return beams, invalid readings") {
 }
 
 TEST_CASE("model options: names and validation messages") {
-  CHECK(mapping::parse_model("cell") == ModelKind::cell);
-  CHECK(mapping::parse_model("ray") == ModelKind::ray);
-  CHECK(mapping::to_string(ModelKind::ray) == "ray");
+  CHECK(sensing::parse_model("cell") == ModelKind::cell);
+  CHECK(sensing::parse_model("ray") == ModelKind::ray);
+  CHECK(sensing::to_string(ModelKind::ray) == "ray");
   try {
-    mapping::parse_model("sonar");
+    sensing::parse_model("sonar");
     FAIL("no error");
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() ==
           "error: unknown --model 'sonar' (choose cell, ray, bump, depth, pie or cone)");
   }
-  MappingOptions o;
+  ModelOptions o;
   o.hit_depth = 9;
   try {
-    mapping::validate(o);
+    sensing::validate(o);
     FAIL("no error");
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() == "error: --hit-depth must be between 0 and 8 (got 9)");
@@ -334,12 +336,12 @@ TEST_CASE("ray model: beams grazing a corridor wall keep its band; crossing an o
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3, 12, 1), 0.0f);
   mapping::ScanUpdate update;
-  MappingOptions ray;
+  ModelOptions ray;
   ray.kind = ModelKind::ray;
   const mapping::Point origin{0.5, 0.5};
   const auto ranges = testing_world::range_image(boxes, origin, 0.0, 360, 2 * kPi, 0.05, 12.0);
   for (int scan = 0; scan < 3; ++scan) {
-    mapping::integrate_scan(ray, grid, testing_world::hambot_scan(origin, 0.0, ranges), Cell{0, 0},
+    sensing::integrate_scan(ray, grid, testing_world::hambot_scan(origin, 0.0, ranges), Cell{0, 0},
                             model, update);
   }
   int hit_bands = 0;
@@ -372,13 +374,13 @@ TEST_CASE("cell model: readings split evenly between wall and opening leave the 
   // kNorthWest has no outer walls: put one 1.5 m east (a wall a cell beyond the opening).
   for (int i = 260; i <= 280; ++i) ranges[static_cast<std::size_t>(i)] = 1.494f;
   const OccupancyGrid grid(geometry(3), 0.0f);
-  const MappingOptions options;
+  const ModelOptions options;
   const auto east = [&] {
-    return mapping::read_cell_side(options, grid, testing_world::hambot_scan(origin, kPi / 2, ranges), Cell{1, 1},
+    return sensing::read_cell_side(options, grid, testing_world::hambot_scan(origin, kPi / 2, ranges), Cell{1, 1},
                                    mapping::Heading::east);
   };
   CHECK(east() == mapping::SideState::open);
-  CHECK(mapping::read_cell_side(options, grid, testing_world::hambot_scan(origin, kPi / 2, ranges), Cell{1, 1},
+  CHECK(sensing::read_cell_side(options, grid, testing_world::hambot_scan(origin, kPi / 2, ranges), Cell{1, 1},
                                 mapping::Heading::north) == mapping::SideState::wall);
   ranges[268] = std::numeric_limits<float>::quiet_NaN();
   ranges[270] = 0.6f;

@@ -8,16 +8,16 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "mapping/models.hpp"
-#include "mapping/range_models.hpp"
+#include "sensing/setups.hpp"
+#include "sensing/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "render/ascii_map.hpp"
 
-using mapping::BumpReading;
+using sensing::BumpReading;
 using mapping::Cell;
 using mapping::OccupancyGrid;
 using mapping::Point;
-using mapping::RangeReading;
+using sensing::RangeReading;
 
 namespace {
 
@@ -53,10 +53,10 @@ RangeReading reading(double angle_rad, double range_m, double max_m, double aper
 
 TEST_CASE("range models: the course's base-10 numbers") {
   const mapping::SensorModel model = base10();
-  CHECK(model.increment_for(mapping::kBumpOccupiedP) == doctest::Approx(5.000).epsilon(1e-4));
-  CHECK(model.increment_for(mapping::kBumpFreeP) == doctest::Approx(-0.368).epsilon(1e-3));
-  CHECK(model.increment_for(mapping::kDepthRayP) == doctest::Approx(-0.176).epsilon(1e-3));
-  CHECK(model.increment_for(mapping::kDepthHitP) == doctest::Approx(5.000).epsilon(1e-4));
+  CHECK(model.increment_for(sensing::kBumpOccupiedP) == doctest::Approx(5.000).epsilon(1e-4));
+  CHECK(model.increment_for(sensing::kBumpFreeP) == doctest::Approx(-0.368).epsilon(1e-3));
+  CHECK(model.increment_for(sensing::kDepthRayP) == doctest::Approx(-0.176).epsilon(1e-3));
+  CHECK(model.increment_for(sensing::kDepthHitP) == doctest::Approx(5.000).epsilon(1e-4));
 }
 
 TEST_CASE("bump model: pressed front bumper against the north wall, K = 3, base 10") {
@@ -67,15 +67,15 @@ TEST_CASE("bump model: pressed front bumper against the north wall, K = 3, base 
   const std::vector<BumpReading> bumpers{{{1.5, 1.994}, true},
                                          {{1.5 - d, 1.904 + d}, false},
                                          {{1.5 + d, 1.904 + d}, false}};
-  mapping::LeveledUpdate update = mapping::make_bump_update();
-  mapping::mark_bumps(grid, robot, bumpers, update);
+  sensing::LeveledUpdate update = sensing::make_bump_update();
+  sensing::mark_bumps(grid, robot, bumpers, update);
   CHECK(update.apply(grid, model) == 1);  // everything in the band middle: occupied wins
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 +5.00 +0.00\n"
         "+0.00 +0.00 +0.00\n"
         "+0.00 +0.00 +0.00\n");
   // Back at the centre, nothing pressed: the centre is freed once.
-  mapping::mark_bumps(grid, Point{1.5, 1.5},
+  sensing::mark_bumps(grid, Point{1.5, 1.5},
                       std::vector<BumpReading>{{{1.5, 1.59}, false}, {{1.5 - d, 1.5 + d}, false}},
                       update);
   CHECK(update.apply(grid, model) == 1);
@@ -91,8 +91,8 @@ TEST_CASE("depth model: a hit north, a ray west, ignored readings, K = 3, base 1
       RangeReading{Point{1.41, 1.5}, kPi, 0.9, 4.0, 0.0, 0.0},  // hits x = 0.51, cell (0, 1)
       reading(0.0, 4.0, 4.0),   // max: ignored
       reading(-kNorth, 0.0, 4.0)};  // 0: ignored
-  mapping::LeveledUpdate update = mapping::make_depth_update();
-  mapping::mark_depth(grid, Point{1.5, 1.5}, rays, update);
+  sensing::LeveledUpdate update = sensing::make_depth_update();
+  sensing::mark_depth(grid, Point{1.5, 1.5}, rays, update);
   update.apply(grid, model);
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 +5.00 +0.00\n"
@@ -108,11 +108,11 @@ TEST_CASE("depth model: a hit north, a ray west, ignored readings, K = 3, base 1
 TEST_CASE("pie model: contacting north reading, K = 3, beta 25 deg, base e") {
   const mapping::SensorModel model;  // prior 0.5: increments are logit(0.7), logit(0.4)
   OccupancyGrid grid(geometry(3), 0.0f);
-  mapping::RangeModelOptions options;
+  sensing::RangeModelOptions options;
   options.pie_half_angle_rad = 25.0 * kPi / 180.0;
-  mapping::LeveledUpdate update = mapping::make_pie_update();
+  sensing::LeveledUpdate update = sensing::make_pie_update();
   const std::vector<RangeReading> one{reading(kNorth, kToNorthWall, 1.5)};
-  mapping::mark_pie(grid, options, one, update);
+  sensing::mark_pie(grid, options, one, update);
   update.apply(grid, model);
   // The band's three sub-cells share the corners (x 1.333, 1.667; y 2) in the contact part.
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
@@ -125,11 +125,11 @@ TEST_CASE("pie model: contacting north reading, K = 3, beta 25 deg, base e") {
 TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_pie_update();
+  sensing::LeveledUpdate update = sensing::make_pie_update();
   const std::vector<RangeReading> one{reading(kNorth, 1.5, 1.5)};
-  mapping::RangeModelOptions whole_slice;  // the course's slice, to max range
+  sensing::RangeModelOptions whole_slice;  // the course's slice, to max range
   whole_slice.pie_usable_fraction = 1.0;
-  mapping::mark_pie(grid, whole_slice, one, update);
+  sensing::mark_pie(grid, whole_slice, one, update);
   update.apply(grid, model);
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 -0.41 +0.00\n"
@@ -145,9 +145,9 @@ TEST_CASE("pie model: a clear reading frees the slice, K = 3, beta 10 deg") {
 TEST_CASE("pie model: the clear slice stops at the usable range, 2/3 of max") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_pie_update();
+  sensing::LeveledUpdate update = sensing::make_pie_update();
   const std::vector<RangeReading> one{reading(kNorth, 1.5, 1.5)};
-  mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+  sensing::mark_pie(grid, sensing::RangeModelOptions{}, one, update);
   update.apply(grid, model);
   // 1.0 m from y = 1.59: the next cell's far band (y 2.667 ...) and the inner corners of its
   // side bands stay unobserved.
@@ -170,8 +170,8 @@ std::vector<RangeReading> ir_cross_scan() {
 TEST_CASE("pie model: walls north and east in one scan, K = 3, beta 10 deg") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_pie_update();
-  mapping::mark_pie(grid, mapping::RangeModelOptions{}, ir_cross_scan(), update);
+  sensing::LeveledUpdate update = sensing::make_pie_update();
+  sensing::mark_pie(grid, sensing::RangeModelOptions{}, ir_cross_scan(), update);
   update.apply(grid, model);
   // No corner or centre of the north band's middle sub-cell lies in the contact part (its
   // centre is 0.24 m ahead, its far corners 22 deg off the axis); the reading's arc, 0.404 m
@@ -192,8 +192,8 @@ TEST_CASE("pie model: walls north and east in one scan, K = 3, beta 10 deg") {
 TEST_CASE("pie model: walls north and east in one scan, K = 5, beta 10 deg") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(5), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_pie_update();
-  mapping::mark_pie(grid, mapping::RangeModelOptions{}, ir_cross_scan(), update);
+  sensing::LeveledUpdate update = sensing::make_pie_update();
+  sensing::mark_pie(grid, sensing::RangeModelOptions{}, ir_cross_scan(), update);
   update.apply(grid, model);
   // Each slice frees the sub-cells whose centre is on its axis; the sub-cell next to the
   // robot's own has its near corners 0.01 m ahead, 84 deg off the axis. The wall bands'
@@ -208,7 +208,7 @@ TEST_CASE("pie model: walls north and east in one scan, K = 5, beta 10 deg") {
 
 TEST_CASE("pie model: a contact lies two of its errors and two of max's below max") {
   const mapping::SensorModel model;
-  mapping::LeveledUpdate update = mapping::make_pie_update();
+  sensing::LeveledUpdate update = sensing::make_pie_update();
   // From the rim of cell (1, 0) looking north; max 1.5 m, eps 3 %: a contact needs
   // d (1 + 2 eps) < 1.5 (1 - 2 eps), d < 1.330 m. A no-return read 2.3 sigma short (1.40 m)
   // would put its arc (y 1.99) on cell (1, 1)'s north band: under the old 1.41 m limit one
@@ -216,7 +216,7 @@ TEST_CASE("pie model: a contact lies two of its errors and two of max's below ma
   const auto scan = [&](double range_m) {
     OccupancyGrid grid(geometry(3), 0.0f);
     const std::vector<RangeReading> one{RangeReading{{1.5, 0.59}, kNorth, range_m, 1.5, 0.03, 0.03}};
-    mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+    sensing::mark_pie(grid, sensing::RangeModelOptions{}, one, update);
     update.apply(grid, model);
     return grid;
   };
@@ -231,7 +231,7 @@ TEST_CASE("pie model: a contact lies two of its errors and two of max's below ma
 
 TEST_CASE("pie model: a reading averaged across a post's edge is no information") {
   const mapping::SensorModel model;
-  mapping::LeveledUpdate update = mapping::make_pie_update();
+  sensing::LeveledUpdate update = sensing::make_pie_update();
   // The ir-ring's diagonal sensor looking south-west from the centre of cell (1, 1): a post
   // at the corner (1, 1) reads 0.6 m; one ray on the post and two past it average 0.948 m,
   // whose arc (x, y 0.77) lies 0.23 m from any cell side.
@@ -240,7 +240,7 @@ TEST_CASE("pie model: a reading averaged across a post's edge is no information"
     const double a = -3.0 * kPi / 4.0;
     const std::vector<RangeReading> one{
         RangeReading{{1.5 + 0.09 * std::cos(a), 1.5 + 0.09 * std::sin(a)}, a, range_m, 1.5, 0.03, 0.03}};
-    mapping::mark_pie(grid, mapping::RangeModelOptions{}, one, update);
+    sensing::mark_pie(grid, sensing::RangeModelOptions{}, one, update);
     update.apply(grid, model);
     return grid;
   };
@@ -258,9 +258,9 @@ TEST_CASE("pie model: a reading averaged across a post's edge is no information"
 TEST_CASE("cone model: IR reading north, K = 3, defaults") {
   const mapping::SensorModel model;  // p_occ 0.6 -> +0.41, p_free 0.3 -> -0.85
   OccupancyGrid grid(geometry(3), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  sensing::LeveledUpdate update = sensing::make_cone_update(model.options());
   const std::vector<RangeReading> one{reading(kNorth, kToNorthWall, 1.5, 0.03, 0.03)};
-  mapping::mark_cone(grid, one, update);
+  sensing::mark_cone(grid, one, update);
   update.apply(grid, model);
   CHECK(render::format_cell_matrix(grid, Cell{1, 1}) ==
         "+0.00 +0.41 +0.00\n"
@@ -276,9 +276,9 @@ TEST_CASE("cone model: IR reading north, K = 3, defaults") {
 TEST_CASE("cone model: a sonar's arc at 0.4 m stays within one 0.2 m column, K = 5") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(5), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  sensing::LeveledUpdate update = sensing::make_cone_update(model.options());
   const std::vector<RangeReading> one{reading(kNorth, kToNorthWall, 5.0, 0.4, 0.066)};
-  mapping::mark_cone(grid, one, update);
+  sensing::mark_cone(grid, one, update);
   update.apply(grid, model);
   // Half the aperture (0.2 rad) at 0.43 m is 0.086 m across: x 1.414 ... 1.586, column 2.
   // The free cone ends at 0.377 m, in radial steps of 0.094 m: row 1 is first reached at
@@ -292,23 +292,23 @@ TEST_CASE("cone model: a sonar's arc at 0.4 m stays within one 0.2 m column, K =
 }
 
 TEST_CASE("range model options are validated") {
-  mapping::RangeModelOptions o;
+  sensing::RangeModelOptions o;
   o.pie_half_angle_rad = 0.0;
-  CHECK_THROWS_AS(mapping::validate(o), common::InputError);
+  CHECK_THROWS_AS(sensing::validate(o), common::InputError);
   o = {};
   o.pie_contact_m = -0.1;
-  CHECK_THROWS_AS(mapping::validate(o), common::InputError);
-  CHECK(mapping::parse_model("bump") == mapping::ModelKind::bump);
-  CHECK(mapping::to_string(mapping::ModelKind::cone) == "cone");
+  CHECK_THROWS_AS(sensing::validate(o), common::InputError);
+  CHECK(sensing::parse_model("bump") == sensing::ModelKind::bump);
+  CHECK(sensing::to_string(sensing::ModelKind::cone) == "cone");
 }
 
 TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands alone and fades with range") {
   const mapping::SensorModel model;
   OccupancyGrid grid(geometry(3), 0.0f);
-  mapping::LeveledUpdate update = mapping::make_cone_update(model.options());
+  sensing::LeveledUpdate update = sensing::make_cone_update(model.options());
   // Openings north of cells (1, 1) and (1, 2), a wall north of (1, 2): 1.404 m ahead.
   const std::vector<RangeReading> one{reading(kNorth, 1.404, 5.0, 0.4, 0.066)};
-  mapping::mark_cone(grid, one, update);
+  sensing::mark_cone(grid, one, update);
   update.apply(grid, model);
   // Arc 1.311 ... 1.497 m: five bins at 0, +-0.08, +-0.16 rad. The axis bin gets p_occ
   // (+0.41); the outer bins, 0.21 m off the axis, fall in the band's corners with weight
@@ -336,7 +336,7 @@ TEST_CASE("leveled update: a weighted mark moves p from the prior towards its le
   o.prior = 0.4;
   const mapping::SensorModel model(o);
   OccupancyGrid grid(geometry(3), static_cast<float>(model.prior_log_odds()));
-  mapping::LeveledUpdate update({0.7, 0.2});
+  sensing::LeveledUpdate update({0.7, 0.2});
   update.mark(grid, mapping::SubCell{0, 0}, 1, 1.0);   // p 0.2
   update.mark(grid, mapping::SubCell{1, 0}, 1, 0.5);   // p 0.4 + 0.5 (0.2 - 0.4) = 0.3
   update.mark(grid, mapping::SubCell{1, 0}, 1, 0.25);  // weaker, same level: ignored

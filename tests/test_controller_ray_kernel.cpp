@@ -14,17 +14,18 @@
 #include <utility>
 #include <vector>
 
+#include "mapping/traversal.hpp"
 #include "common/random.hpp"
 #include "mapping/log_odds.hpp"
-#include "mapping/models.hpp"
+#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 #include "mapping/sensor_model.hpp"
 
 namespace {
 
 using mapping::GridGeometry;
-using mapping::MappingOptions;
+using sensing::ModelOptions;
 using mapping::OccupancyGrid;
 using mapping::SubCell;
 
@@ -50,7 +51,7 @@ struct Marks {
   std::set<std::size_t> free, occupied;
 };
 
-void reference_beam(const MappingOptions &options, const OccupancyGrid &grid, mapping::Point origin,
+void reference_beam(const ModelOptions &options, const OccupancyGrid &grid, mapping::Point origin,
                     double dir_x, double dir_y, double length, bool hit, Marks &marks) {
   const int k = grid.k();
   std::vector<SubCell> path;
@@ -76,15 +77,15 @@ void reference_beam(const MappingOptions &options, const OccupancyGrid &grid, ma
   }
 }
 
-Marks reference_marks(const MappingOptions &options, const OccupancyGrid &grid,
-                      const mapping::LidarScan &scan) {
+Marks reference_marks(const ModelOptions &options, const OccupancyGrid &grid,
+                      const sensing::LidarScan &scan) {
   Marks marks;
   const double cy = std::cos(scan.yaw_rad);
   const double sy = std::sin(scan.yaw_rad);
   for (int i = 0; i < scan.beam_count(); ++i) {
-    const mapping::ReadingKind kind = scan.kind(i);
-    if (kind == mapping::ReadingKind::invalid) continue;
-    const bool hit = kind == mapping::ReadingKind::hit;
+    const sensing::ReadingKind kind = scan.kind(i);
+    if (kind == sensing::ReadingKind::invalid) continue;
+    const bool hit = kind == sensing::ReadingKind::hit;
     if (!hit && (options.ignore_no_return || scan.lone_no_return(i))) continue;
     const double c = std::cos(scan.beam_angle_rad(i));
     const double s = std::sin(scan.beam_angle_rad(i));
@@ -126,7 +127,7 @@ float random_range(common::Rng &rng, double max_range_m, double span_m) {
 struct Setup {
   GridGeometry geometry;
   mapping::SensorModelOptions sensor;
-  MappingOptions options;
+  ModelOptions options;
 };
 
 Setup random_setup(common::Rng &rng, int k) {
@@ -140,7 +141,7 @@ Setup random_setup(common::Rng &rng, int k) {
   if (rng.below(3) == 0) s.sensor.clamp = mapping::Clamp{-2.0, 3.5};
   if (rng.below(4) == 0) s.sensor.base = mapping::LogBase::ten;
   if (rng.below(4) == 0) s.sensor.prior = 0.45;
-  s.options.kind = mapping::ModelKind::ray;
+  s.options.kind = sensing::ModelKind::ray;
   s.options.hit_depth = static_cast<int>(rng.below(3));
   s.options.ignore_no_return = rng.below(4) == 0;
   return s;
@@ -182,7 +183,7 @@ TEST_CASE("ray model fast path: bit-identical to the reference over random scans
         const int beam_counts[] = {360, 360, 90, 7, 1};
         const int beams = beam_counts[rng.below(5)];
         std::vector<float> ranges;
-        mapping::LidarScan scan;
+        sensing::LidarScan scan;
         scan.origin = random_origin(rng, setup.geometry);
         const std::uint64_t yaw_pick = rng.below(3);
         scan.yaw_rad = yaw_pick == 0 ? static_cast<double>(rng.below(8)) * kPi / 4
@@ -204,7 +205,7 @@ TEST_CASE("ray model fast path: bit-identical to the reference over random scans
             fast.subcell_at(scan.origin).value_or(SubCell{0, 0}), setup.geometry.subcells);
 
         Marks expected = reference_marks(setup.options, slow, scan);
-        mapping::mark_scan(setup.options, fast, scan, robot, update);
+        sensing::mark_scan(setup.options, fast, scan, robot, update);
         // Marks from elsewhere in the same scan (as another model would add): some inside
         // the grid, one outside, duplicates and overlaps with the ray marks.
         if (n % 3 == 2) {
@@ -247,13 +248,13 @@ TEST_CASE("ray model fast path: the benchmark's workload matches the reference")
   const mapping::SensorModel model{mapping::SensorModelOptions{}};
   OccupancyGrid fast(g, static_cast<float>(model.prior_log_odds()));
   OccupancyGrid slow(g, static_cast<float>(model.prior_log_odds()));
-  MappingOptions options;
-  options.kind = mapping::ModelKind::ray;
+  ModelOptions options;
+  options.kind = sensing::ModelKind::ray;
   mapping::ScanUpdate update;
   common::Rng rng(20261121);
   std::vector<float> ranges(360);
   for (int s = 0; s < 30; ++s) {
-    mapping::LidarScan scan;
+    sensing::LidarScan scan;
     scan.origin = {1.5 + 0.01 * s, 2.0 + 0.3 * std::sin(0.01 * s)};
     scan.yaw_rad = 0.01 * s;
     scan.fov_rad = 2 * kPi;
@@ -261,7 +262,7 @@ TEST_CASE("ray model fast path: the benchmark's workload matches the reference")
     scan.max_range_m = 12.0;
     for (float &r : ranges) r = static_cast<float>(rng.uniform(0.9, 1.1));
     scan.ranges = ranges;
-    const std::size_t fast_updated = mapping::integrate_scan(options, fast, scan, mapping::Cell{0, 0}, model, update);
+    const std::size_t fast_updated = sensing::integrate_scan(options, fast, scan, mapping::Cell{0, 0}, model, update);
     REQUIRE(fast_updated == reference_apply(reference_marks(options, slow, scan), model, slow));
   }
   for (std::size_t i = 0; i < fast.size(); ++i) REQUIRE(bits(fast.at_index(i)) == bits(slow.at_index(i)));

@@ -17,9 +17,9 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "mapping/models.hpp"
+#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "mapping/scan_filter.hpp"
+#include "sensing/scan_filter.hpp"
 #include "mapping/sensor_model.hpp"
 #include "full_circle_scan.hpp"
 
@@ -30,13 +30,13 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::vector<float> filtered(const std::vector<float> &ranges,
-                            const mapping::ScanFilterOptions &options = {}) {
-  mapping::ScanFilter filter(options);
-  const mapping::LidarScan out = filter.apply(full_circle(ranges));
+                            const sensing::ScanFilterOptions &options = {}) {
+  sensing::ScanFilter filter(options);
+  const sensing::LidarScan out = filter.apply(full_circle(ranges));
   return {out.ranges.begin(), out.ranges.end()};
 }
 
-std::vector<float> values(const mapping::LidarScan &scan) { return {scan.ranges.begin(), scan.ranges.end()}; }
+std::vector<float> values(const sensing::LidarScan &scan) { return {scan.ranges.begin(), scan.ranges.end()}; }
 
 // Readings as text, one per beam: the value to two decimals, "inf", or "-" (no information).
 std::string text(const std::vector<float> &r, int from, int to) {
@@ -77,21 +77,21 @@ std::vector<float> closed_cell() {
 // match bit for bit.
 class ReferenceFilter {
  public:
-  explicit ReferenceFilter(const mapping::ScanFilterOptions &options) : options_(options) {}
+  explicit ReferenceFilter(const sensing::ScanFilterOptions &options) : options_(options) {}
 
   // before: a scan from the same pose taken just before, or null.
-  std::vector<float> apply(const mapping::LidarScan &scan, const mapping::LidarScan *before = nullptr) {
+  std::vector<float> apply(const sensing::LidarScan &scan, const sensing::LidarScan *before = nullptr) {
     counts_ = {};
     ranges_.assign(scan.ranges.begin(), scan.ranges.end());
     state_.assign(ranges_.size(), none);
     for (std::size_t i = 0; i < ranges_.size(); ++i) {
       switch (scan.kind_of(ranges_[i])) {
-        case mapping::ReadingKind::invalid:
+        case sensing::ReadingKind::invalid:
           ranges_[i] = kNaN;
           ++counts_.invalid;
           break;
-        case mapping::ReadingKind::hit: state_[i] = trusted; break;
-        case mapping::ReadingKind::no_return: break;
+        case sensing::ReadingKind::hit: state_[i] = trusted; break;
+        case sensing::ReadingKind::no_return: break;
       }
     }
     if (ranges_.size() >= 3) {
@@ -105,13 +105,13 @@ class ReferenceFilter {
     return ranges_;
   }
 
-  const mapping::ScanFilterCounts &counts() const { return counts_; }
+  const sensing::ScanFilterCounts &counts() const { return counts_; }
 
  private:
   enum State : unsigned char { none, trusted, rejected, candidate };
   static constexpr double kNaNRange = std::numeric_limits<double>::quiet_NaN();
 
-  static bool full_circle(const mapping::LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
+  static bool full_circle(const sensing::LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
 
   static int neighbour_index(int i, int offset, int n, bool wrap) {
     const int j = i + offset;
@@ -119,7 +119,7 @@ class ReferenceFilter {
     return j < 0 || j >= n ? -1 : j;
   }
 
-  int nearest_trusted(const mapping::LidarScan &scan, int i, int step) const {
+  int nearest_trusted(const sensing::LidarScan &scan, int i, int step) const {
     const int n = static_cast<int>(ranges_.size());
     const int reach = std::min(options_.neighbour_reach, (n - 1) / 2);
     for (int d = 1; d <= reach; ++d) {
@@ -130,7 +130,7 @@ class ReferenceFilter {
     return -1;
   }
 
-  double continued(const mapping::LidarScan &scan, int i, int step) const {
+  double continued(const sensing::LidarScan &scan, int i, int step) const {
     const int a = nearest_trusted(scan, i, step);
     const int b = a < 0 ? -1 : nearest_trusted(scan, a, step);
     const int c = b < 0 ? -1 : nearest_trusted(scan, b, step);
@@ -144,7 +144,7 @@ class ReferenceFilter {
     return ra * ra / rb;
   }
 
-  bool reject_spikes(const mapping::LidarScan &scan) {
+  bool reject_spikes(const sensing::LidarScan &scan) {
     const int n = static_cast<int>(ranges_.size());
     const double absolute_m = options_.spike_tolerance_m();
     const double relative = options_.grazing_step(scan.fov_rad / n);
@@ -204,7 +204,7 @@ class ReferenceFilter {
     return !rejected_.empty();
   }
 
-  bool reject_see_through(const mapping::LidarScan &scan) {
+  bool reject_see_through(const sensing::LidarScan &scan) {
     const int n = static_cast<int>(ranges_.size());
     const bool wrap = full_circle(scan);
     const double absolute_m = options_.spike_tolerance_m();
@@ -242,7 +242,7 @@ class ReferenceFilter {
     return reject_collected();
   }
 
-  void drop_dropouts(const mapping::LidarScan &scan, const mapping::LidarScan *before) {
+  void drop_dropouts(const sensing::LidarScan &scan, const sensing::LidarScan *before) {
     const int n = static_cast<int>(ranges_.size());
     const bool wrap = full_circle(scan);
     const auto returned = [&](int i) { return state_[static_cast<std::size_t>(i)] != none; };
@@ -250,7 +250,7 @@ class ReferenceFilter {
     const auto seen_before = [&](int first, int from, int to) {
       if (before == nullptr || to - from < options_.min_repeated_view) return false;
       for (int o = from; o < to; ++o) {
-        if (before->kind((first + o) % n) != mapping::ReadingKind::no_return) return false;
+        if (before->kind((first + o) % n) != sensing::ReadingKind::no_return) return false;
       }
       return true;
     };
@@ -281,18 +281,18 @@ class ReferenceFilter {
     }
   }
 
-  mapping::ScanFilterOptions options_;
+  sensing::ScanFilterOptions options_;
   std::vector<float> ranges_;
   std::vector<State> state_;
   std::vector<int> rejected_;
-  mapping::ScanFilterCounts counts_;
+  sensing::ScanFilterCounts counts_;
 };
 
 // A random scan of what the filter meets: walls at every angle (a wall seen at a grazing
 // angle grows a few % a beam), depth steps, views past max range, and every fault: spikes,
 // agreeing clusters seen through a wall, dropped runs, NaN, negative, -inf, -0, below
 // minimum, at and just past both limits.
-std::vector<float> random_scan(common::Rng &rng, int n, const mapping::LidarScan &limits) {
+std::vector<float> random_scan(common::Rng &rng, int n, const sensing::LidarScan &limits) {
   std::vector<float> r(static_cast<std::size_t>(n));
   const auto pick = [&](int count) { return static_cast<int>(rng.below(static_cast<std::uint64_t>(count))); };
   // Walls: segments of a surface at distance d, angle a from square-on, stepping by
@@ -344,8 +344,8 @@ std::vector<float> random_scan(common::Rng &rng, int n, const mapping::LidarScan
   return r;
 }
 
-mapping::ScanFilterOptions random_options(common::Rng &rng) {
-  mapping::ScanFilterOptions o;
+sensing::ScanFilterOptions random_options(common::Rng &rng) {
+  sensing::ScanFilterOptions o;
   if (rng.uniform01() < 0.3) return o;  // the defaults
   o.range_noise_m = rng.uniform01() < 0.2 ? 0.0 : rng.uniform(0.0, 0.1);
   o.neighbour_reach = 1 + static_cast<int>(rng.below(10));
@@ -390,7 +390,7 @@ TEST_CASE("scan filter: what a fault-free lidar sees passes unchanged") {
   // beams; seen again from the same pose they are a view (the next test).
   std::vector<float> corridor_end = corridor_end_view();
   CHECK(corridor_end[177] > 9.0f);  // 3 degrees off the axis; at 2 degrees 14 m
-  mapping::ScanFilter again;
+  sensing::ScanFilter again;
   CHECK(text(values(again.apply(full_circle(corridor_end), full_circle(corridor_end))), 165, 195) == text(corridor_end, 165, 195));
   // Nothing returns at all (an empty hall): every no return stands.
   const std::vector<float> nothing(360, kInf);
@@ -399,10 +399,10 @@ TEST_CASE("scan filter: what a fault-free lidar sees passes unchanged") {
 
 TEST_CASE("scan filter: a short view past max range seen twice from the same pose stands; dropped beams do not") {
   const std::vector<float> view = corridor_end_view();  // no returns at beams 178 ... 182
-  const mapping::LidarScan scan = full_circle(view);
+  const sensing::LidarScan scan = full_circle(view);
   const std::string seen = text(view, 165, 195);
   const std::string dropped = "150 150 150 150 150 284 316 355 405 473 567 708 944 - - - - - 944 708 567 473 405 355 316 284 150 150 150 150 150";
-  mapping::ScanFilter filter;
+  sensing::ScanFilter filter;
   // First sight: five no returns between returns read as dropped beams.
   CHECK(text(values(filter.apply(scan)), 165, 195) == dropped);
   CHECK(filter.counts().dropouts == 5);
@@ -410,15 +410,15 @@ TEST_CASE("scan filter: a short view past max range seen twice from the same pos
   CHECK(text(values(filter.apply(scan, scan)), 165, 195) == seen);
   CHECK(filter.counts().dropouts == 0);
   // The same pose within 1 cm and a quarter beam step.
-  mapping::LidarScan near = scan;
+  sensing::LidarScan near = scan;
   near.origin = {near.origin.x_m + 0.006, near.origin.y_m - 0.006};
   near.yaw_rad += 0.2 * kDeg;
   CHECK(text(values(filter.apply(scan, near)), 165, 195) == seen);
   // From elsewhere, or turned by a beam, the scan before says nothing about these beams.
-  mapping::LidarScan moved = scan;
+  sensing::LidarScan moved = scan;
   moved.origin.x_m += 0.05;
   CHECK(text(values(filter.apply(scan, moved)), 165, 195) == dropped);
-  mapping::LidarScan turned = scan;
+  sensing::LidarScan turned = scan;
   turned.yaw_rad += kDeg;
   CHECK(text(values(filter.apply(scan, turned)), 165, 195) == dropped);
   // Dropped beams are a new draw at every scan: the run the scan before read differently
@@ -453,8 +453,8 @@ TEST_CASE("scan filter: two spikes side by side cannot vouch for each other") {
   // Disagreeing, one between its neighbours at first: rejected in a later round.
   r[300] = 2.0f;
   r[301] = 6.0f;
-  mapping::ScanFilter filter;
-  const mapping::LidarScan out = filter.apply(full_circle(r));
+  sensing::ScanFilter filter;
+  const sensing::LidarScan out = filter.apply(full_circle(r));
   const std::vector<float> f(out.ranges.begin(), out.ranges.end());
   CHECK(text(f, 0, 359) == text(without(r, {200, 201, 300, 301}), 0, 359));
   CHECK(filter.counts().spikes == 4);
@@ -466,26 +466,26 @@ TEST_CASE("scan filter: a short run of no returns between returns is dropped bea
   for (int i = 10; i < 16; ++i) r[static_cast<std::size_t>(i)] = kInf;   // 6 beams: dropped
   for (int i = 100; i < 107; ++i) r[static_cast<std::size_t>(i)] = kInf;  // 7 beams: a view
   r[359] = kInf;  // wraps around beam 0
-  mapping::ScanFilter filter;
-  const mapping::LidarScan out = filter.apply(full_circle(r));
+  sensing::ScanFilter filter;
+  const sensing::LidarScan out = filter.apply(full_circle(r));
   const std::vector<float> f(out.ranges.begin(), out.ranges.end());
   CHECK(text(f, 0, 359) == text(without(r, {10, 11, 12, 13, 14, 15, 359}), 0, 359));
   CHECK(text(f, 99, 107) == "50 inf inf inf inf inf inf inf 52");
   CHECK(filter.counts().dropouts == 7);
-  mapping::ScanFilterOptions longer;
+  sensing::ScanFilterOptions longer;
   longer.max_dropout_run = 7;
   CHECK(text(filtered(r, longer), 99, 107) == "50 - - - - - - - 52");
-  mapping::ScanFilterOptions none;
+  sensing::ScanFilterOptions none;
   none.max_dropout_run = 0;
   CHECK(text(filtered(r, none), 0, 359) == text(r, 0, 359));
 }
 
 TEST_CASE("scan filter: a partial field of view keeps no returns at its ends") {
   std::vector<float> r{kInf, kInf, 1.0f, 1.0f, kInf, 1.0f, 1.0f, kInf};
-  mapping::LidarScan s = full_circle(r);
+  sensing::LidarScan s = full_circle(r);
   s.fov_rad = 8 * kDeg;
-  mapping::ScanFilter filter;
-  const mapping::LidarScan out = filter.apply(s);
+  sensing::ScanFilter filter;
+  const sensing::LidarScan out = filter.apply(s);
   CHECK(text({out.ranges.begin(), out.ranges.end()}, 0, 7) == "inf inf 100 100 - 100 100 inf");
 }
 
@@ -495,8 +495,8 @@ TEST_CASE("scan filter: NaN, negative and below-minimum readings are no informat
   r[46] = -0.5f;
   r[47] = 0.01f;
   r[48] = -kInf;
-  mapping::ScanFilter filter;
-  const mapping::LidarScan out = filter.apply(full_circle(r));
+  sensing::ScanFilter filter;
+  const sensing::LidarScan out = filter.apply(full_circle(r));
   CHECK(text({out.ranges.begin(), out.ranges.end()}, 0, 359) == text(without(r, {45, 46, 47, 48}), 0, 359));
   CHECK(filter.counts().invalid == 4);
   // The scan's pose and limits are kept; only the ranges are the filter's.
@@ -512,21 +512,21 @@ TEST_CASE("scan filter: NaN and negative readings are never stored in the grid")
   g.height_cells = 3;
   g.subcells = 3;
   const mapping::SensorModel model;
-  for (const mapping::ModelKind kind : {mapping::ModelKind::cell, mapping::ModelKind::ray}) {
-    CAPTURE(mapping::to_string(kind));
-    mapping::MappingOptions options;
+  for (const sensing::ModelKind kind : {sensing::ModelKind::cell, sensing::ModelKind::ray}) {
+    CAPTURE(sensing::to_string(kind));
+    sensing::ModelOptions options;
     options.kind = kind;
-    mapping::ScanFilter filter;
+    sensing::ScanFilter filter;
     mapping::ScanUpdate update;
     // Nothing valid at all: nothing is updated but the centre the robot stands on (the cell
     // model frees it whatever the lidar says).
     std::vector<float> bad(360);
     for (std::size_t i = 0; i < bad.size(); ++i) bad[i] = i % 3 == 0 ? kNaN : (i % 3 == 1 ? -1.0f : -kInf);
     mapping::OccupancyGrid grid(g, 0.0f);
-    mapping::LidarScan scan = full_circle(bad);
+    sensing::LidarScan scan = full_circle(bad);
     scan.origin = {1.5, 1.5};
-    const std::size_t expected = kind == mapping::ModelKind::cell ? 1 : 0;
-    CHECK(mapping::integrate_scan(options, grid, filter.apply(scan), mapping::Cell{1, 1}, model, update) == expected);
+    const std::size_t expected = kind == sensing::ModelKind::cell ? 1 : 0;
+    CHECK(sensing::integrate_scan(options, grid, filter.apply(scan), mapping::Cell{1, 1}, model, update) == expected);
     int changed = 0;
     for (int y = 0; y < g.height_subcells(); ++y) {
       for (int x = 0; x < g.width_subcells(); ++x) changed += grid.at(mapping::SubCell{x, y}) != 0.0f ? 1 : 0;
@@ -536,7 +536,7 @@ TEST_CASE("scan filter: NaN and negative readings are never stored in the grid")
     std::vector<float> mixed = closed_cell();
     for (std::size_t i = 0; i < mixed.size(); i += 2) mixed[i] = i % 4 == 0 ? kNaN : -0.3f;
     scan.ranges = mixed;
-    CHECK(mapping::integrate_scan(options, grid, filter.apply(scan), mapping::Cell{1, 1}, model, update) > 0);
+    CHECK(sensing::integrate_scan(options, grid, filter.apply(scan), mapping::Cell{1, 1}, model, update) > 0);
     for (int y = 0; y < g.height_subcells(); ++y) {
       for (int x = 0; x < g.width_subcells(); ++x) {
         CAPTURE(x);
@@ -558,34 +558,34 @@ TEST_CASE("scan filter: any scan comes out the same size, each reading kept or n
       const double u = rng.uniform01();
       v = u < 0.2 ? kInf : (u < 0.25 ? kNaN : (u < 0.3 ? -1.0f : static_cast<float>(rng.uniform(0.0, 13.0))));
     }
-    mapping::LidarScan s = full_circle(r);
+    sensing::LidarScan s = full_circle(r);
     if (trial % 2 == 1) s.fov_rad = n * kDeg;  // a partial field of view
-    mapping::ScanFilter filter;
-    const mapping::LidarScan out = filter.apply(s);
+    sensing::ScanFilter filter;
+    const sensing::LidarScan out = filter.apply(s);
     REQUIRE(out.beam_count() == n);
     std::size_t gone = 0;
     for (std::size_t i = 0; i < r.size(); ++i) {
       const float v = out.ranges[i];
       const bool kept = v == r[i] || (std::isnan(v) && std::isnan(r[i]));
       CHECK((kept || std::isnan(v)));
-      CHECK_FALSE((std::isnan(v) == false && s.kind_of(v) == mapping::ReadingKind::invalid));
+      CHECK_FALSE((std::isnan(v) == false && s.kind_of(v) == sensing::ReadingKind::invalid));
       if (std::isnan(v)) ++gone;
     }
-    const mapping::ScanFilterCounts &c = filter.counts();
+    const sensing::ScanFilterCounts &c = filter.counts();
     CHECK(c.invalid + c.spikes + c.dropouts == gone);
   }
 }
 
 TEST_CASE("scan filter: options checked, messages to the letter") {
-  const auto error_of = [](const mapping::ScanFilterOptions &o) {
+  const auto error_of = [](const sensing::ScanFilterOptions &o) {
     try {
-      mapping::validate(o);
+      sensing::validate(o);
     } catch (const common::InputError &e) {
       return e.diagnostic();
     }
     return std::string("no error");
   };
-  mapping::ScanFilterOptions o;
+  sensing::ScanFilterOptions o;
   CHECK(error_of(o) == "no error");
   CHECK(o.spike_tolerance_m() == doctest::Approx(0.1));
   CHECK(o.grazing_step(kDeg) == doctest::Approx(0.099).epsilon(0.01));
@@ -617,15 +617,15 @@ TEST_CASE("scan filter: the same readings and counts, bit for bit, as the refere
   int dropped = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     CAPTURE(trial);
-    const mapping::ScanFilterOptions options = random_options(rng);
+    const sensing::ScanFilterOptions options = random_options(rng);
     // One filter for several scans of different sizes: its buffers are reused.
-    mapping::ScanFilter filter(options);
+    sensing::ScanFilter filter(options);
     ReferenceFilter reference(options);
     for (int scan_index = 0; scan_index < 3; ++scan_index) {
       CAPTURE(scan_index);
       const int sizes[] = {0, 1, 2, 3, 4, 5, 7, 12, 40, 90, 359, 360, 720};
       const int n = sizes[rng.below(std::size(sizes))];
-      mapping::LidarScan limits;
+      sensing::LidarScan limits;
       limits.fov_rad = 2.0 * std::numbers::pi;
       limits.min_range_m = rng.uniform01() < 0.2 ? 0.0 : rng.uniform(0.0, 0.2);
       limits.max_range_m = rng.uniform(1.0, 12.0);
@@ -638,7 +638,7 @@ TEST_CASE("scan filter: the same readings and counts, bit for bit, as the refere
       CAPTURE(n);
       CAPTURE(limits.fov_rad);
       const std::vector<float> r = n == 0 ? std::vector<float>{} : random_scan(rng, n, limits);
-      mapping::LidarScan scan = limits;
+      sensing::LidarScan scan = limits;
       scan.ranges = r;
       // Half the scans follow one from the same pose: the same beams, some changed (a
       // no return becomes a return and back), so that repeated and new runs both occur.
@@ -646,11 +646,11 @@ TEST_CASE("scan filter: the same readings and counts, bit for bit, as the refere
       for (float &v : earlier) {
         if (rng.uniform01() < 0.15) v = rng.uniform01() < 0.5 ? kInf : static_cast<float>(limits.max_range_m / 2);
       }
-      mapping::LidarScan before = limits;
+      sensing::LidarScan before = limits;
       before.ranges = earlier;
       const bool repeat = rng.uniform01() < 0.5;
       const std::vector<float> expected = reference.apply(scan, repeat ? &before : nullptr);
-      const mapping::LidarScan out = repeat ? filter.apply(scan, before) : filter.apply(scan);
+      const sensing::LidarScan out = repeat ? filter.apply(scan, before) : filter.apply(scan);
       REQUIRE(out.beam_count() == n);
       for (std::size_t i = 0; i < r.size(); ++i) {
         CAPTURE(i);
@@ -680,11 +680,11 @@ TEST_CASE("scan filter: a fault-free closed cell with spikes matches the referen
     r[static_cast<std::size_t>((shift + 359) % 360)] = kInf;
     r[static_cast<std::size_t>((shift + 180) % 360)] = 5.0f;
     r[static_cast<std::size_t>((shift + 181) % 360)] = 5.02f;
-    const mapping::LidarScan scan = full_circle(r);
+    const sensing::LidarScan scan = full_circle(r);
     ReferenceFilter reference({});
-    mapping::ScanFilter filter;
+    sensing::ScanFilter filter;
     const std::vector<float> expected = reference.apply(scan);
-    const mapping::LidarScan out = filter.apply(scan);
+    const sensing::LidarScan out = filter.apply(scan);
     for (std::size_t i = 0; i < r.size(); ++i) {
       CAPTURE(i);
       REQUIRE(bits(out.ranges[i]) == bits(expected[i]));

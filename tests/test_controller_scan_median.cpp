@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common/random.hpp"
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 #include "full_circle_scan.hpp"
 
 namespace {
@@ -24,7 +24,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 // median_range as first written (a vector per call): the reference the allocation-free one
 // must match bit for bit.
-std::optional<float> reference_median(const mapping::LidarScan &s, int centre, double half_window_rad) {
+std::optional<float> reference_median(const sensing::LidarScan &s, int centre, double half_window_rad) {
   const int n = s.beam_count();
   const double step = s.fov_rad / n;
   const bool full = s.fov_rad >= 2.0 * std::numbers::pi - 1e-9;
@@ -35,9 +35,9 @@ std::optional<float> reference_median(const mapping::LidarScan &s, int centre, d
     if (full) i = ((i % n) + n) % n;
     if (i < 0 || i >= n) continue;
     const float r = s.ranges[static_cast<std::size_t>(i)];
-    const mapping::ReadingKind k = s.kind_of(r);
-    if (k == mapping::ReadingKind::invalid) continue;
-    valid.push_back(k == mapping::ReadingKind::no_return ? kInf : r);
+    const sensing::ReadingKind k = s.kind_of(r);
+    if (k == sensing::ReadingKind::invalid) continue;
+    valid.push_back(k == sensing::ReadingKind::no_return ? kInf : r);
   }
   if (valid.empty()) return std::nullopt;
   const auto returns = std::count_if(valid.begin(), valid.end(), [](float v) { return std::isfinite(v); });
@@ -86,7 +86,7 @@ TEST_CASE("median_range: the same reading, bit for bit, as the reference, on any
     for (float &v : r) {
       v = rng.uniform01() < 0.5 ? pool[rng.below(std::size(pool))] : static_cast<float>(rng.uniform(0.0, 13.0));
     }
-    mapping::LidarScan s = full_circle(r);
+    sensing::LidarScan s = full_circle(r);
     s.min_range_m = rng.uniform01() < 0.3 ? 0.0 : 0.05;
     if (rng.uniform01() < 0.5) s.fov_rad = rng.uniform(0.01, 6.28);
     const int centre = static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));

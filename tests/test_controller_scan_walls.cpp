@@ -5,8 +5,9 @@
 #include <numbers>
 #include <vector>
 
+#include "common/angles.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 #include "mapping/walls.hpp"
 
 using mapping::Cell;
@@ -18,8 +19,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-mapping::LidarScan scan_of(const std::vector<float> &ranges, double yaw, double fov) {
-  mapping::LidarScan s;
+sensing::LidarScan scan_of(const std::vector<float> &ranges, double yaw, double fov) {
+  sensing::LidarScan s;
   s.yaw_rad = yaw;
   s.fov_rad = fov;
   s.min_range_m = 0.05;
@@ -65,7 +66,7 @@ TEST_CASE("LidarScan: hits, no returns, invalid readings") {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::vector<float> ranges{0.5f, 12.0f, inf, 12.5f, nan, -0.1f, 0.01f, 0.05f};
   const auto s = scan_of(ranges, 0.0, 2 * kPi);
-  using K = mapping::ReadingKind;
+  using K = sensing::ReadingKind;
   const std::vector<K> expected{K::hit, K::hit, K::no_return, K::no_return,
                                 K::invalid, K::invalid, K::invalid, K::hit};
   for (int i = 0; i < s.beam_count(); ++i) {
@@ -75,11 +76,11 @@ TEST_CASE("LidarScan: hits, no returns, invalid readings") {
 }
 
 TEST_CASE("wrap_angle_rad: into (-pi, pi]") {
-  CHECK(mapping::wrap_angle_rad(0.0) == 0.0);
-  CHECK(mapping::wrap_angle_rad(kPi) == doctest::Approx(kPi));
-  CHECK(mapping::wrap_angle_rad(-kPi) == doctest::Approx(kPi));
-  CHECK(mapping::wrap_angle_rad(3 * kPi / 2) == doctest::Approx(-kPi / 2));
-  CHECK(mapping::wrap_angle_rad(-7 * kPi / 2) == doctest::Approx(kPi / 2));
+  CHECK(common::wrap_angle_rad(0.0) == 0.0);
+  CHECK(common::wrap_angle_rad(kPi) == doctest::Approx(kPi));
+  CHECK(common::wrap_angle_rad(-kPi) == doctest::Approx(kPi));
+  CHECK(common::wrap_angle_rad(3 * kPi / 2) == doctest::Approx(-kPi / 2));
+  CHECK(common::wrap_angle_rad(-7 * kPi / 2) == doctest::Approx(kPi / 2));
 }
 
 TEST_CASE("walls from the grid: unknown, open, wall; either half of the side decides a wall") {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "common/angles.hpp"
 #include "maze/sim/simulation.hpp"
 
 namespace maze {
@@ -20,15 +21,7 @@ constexpr double kFloorThickness_m = 0.01;
 // the whole maze with a margin.
 constexpr double kFieldOfView_rad = 0.785398;
 
-double yaw_of(Side s) {
-  switch (s) {
-    case Side::north: return std::numbers::pi / 2;
-    case Side::east: return 0.0;
-    case Side::south: return -std::numbers::pi / 2;
-    case Side::west: return std::numbers::pi;
-  }
-  return 0.0;
-}
+double yaw_of(Side s) { return common::compass_yaw_rad(static_cast<int>(s)); }
 
 // Numbers as Webots files show them: fixed, trailing zeros dropped.
 std::string num(double v) {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "common/angles.hpp"
 #include "common/error.hpp"
 
 namespace maze::sim {
@@ -33,16 +34,6 @@ void check_pose_free(const WallGrid &walls, const Pose &pose) {
   if (walls.inside_wall(pose.x_m, pose.y_m)) {
     throw common::InputError(fmt::format("pose ({}, {}) is inside a wall", pose.x_m, pose.y_m));
   }
-}
-
-double wrap_angle(double angle_rad) {
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  // Already wrapped: the common case, and fmod would return it unchanged.
-  if (angle_rad > -std::numbers::pi && angle_rad <= std::numbers::pi) return angle_rad;
-  double a = std::fmod(angle_rad, kTwoPi);
-  if (a <= -std::numbers::pi) a += kTwoPi;
-  if (a > std::numbers::pi) a -= kTwoPi;
-  return a;
 }
 
 double beam_angle_rad(const LidarSpec &lidar, int i) {
@@ -126,7 +117,7 @@ bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body
                     const Pose &pose) {
   for (const Contact &c : walls.contacts(pose.x_m, pose.y_m, body_radius_m + kContactTolerance_m)) {
     const double bearing = std::atan2(c.y_m - pose.y_m, c.x_m - pose.x_m) - pose.yaw_rad;
-    if (std::abs(wrap_angle(bearing - bumper.angle_rad)) <= bumper.half_arc_rad + 1e-12) {
+    if (std::abs(common::wrap_angle_rad(bearing - bumper.angle_rad)) <= bumper.half_arc_rad + 1e-12) {
       return true;
     }
   }

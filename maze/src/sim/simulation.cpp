@@ -19,6 +19,7 @@
 #include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
+#include "common/angles.hpp"
 #include "common/error.hpp"
 
 namespace maze::sim {
@@ -223,7 +224,7 @@ void Simulation::advance(double dt_s) {
       pose_.x_m += chord * std::cos(pose_.yaw_rad + half);
       pose_.y_m += chord * std::sin(pose_.yaw_rad + half);
     }
-    pose_.yaw_rad = maze::sim::wrap_angle(pose_.yaw_rad + turn);
+    pose_.yaw_rad = common::wrap_angle_rad(pose_.yaw_rad + turn);
     keep_body_out_of_walls();
   }
 }
@@ -400,7 +401,7 @@ const double *Simulation::imu_roll_pitch_yaw(int device) {
     if (options_.imu_noise_rad > 0.0) yaw += rng_for(device).normal(0.0, options_.imu_noise_rad);
     state.cache[0] = 0.0;
     state.cache[1] = 0.0;
-    state.cache[2] = maze::sim::wrap_angle(yaw);
+    state.cache[2] = common::wrap_angle_rad(yaw);
   }
   return state.cache;
 }

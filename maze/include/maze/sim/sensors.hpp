@@ -75,7 +75,4 @@ inline constexpr double kContactTolerance_m = 1e-4;
 bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body_radius_m,
                     const Pose &pose);
 
-// The angle wrapped to (-pi, pi].
-double wrap_angle(double angle_rad);
-
 }  // namespace maze::sim

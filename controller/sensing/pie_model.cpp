@@ -1,4 +1,4 @@
-// The IR pie-slice model (mapping/range_models.hpp).
+// The IR pie-slice model (sensing/range_models.hpp).
 
 #include <algorithm>
 #include <array>
@@ -6,11 +6,14 @@
 #include <cstddef>
 #include <limits>
 
-#include "mapping/models.hpp"
-#include "mapping/range_models.hpp"
-#include "mapping/scan.hpp"
+#include "common/angles.hpp"
+#include "mapping/traversal.hpp"
+#include "sensing/range_models.hpp"
+#include "sensing/scan.hpp"
 
-namespace mapping {
+namespace sensing {
+
+using namespace mapping;  // the grid types this model marks
 namespace {
 
 // Where one reading's slices lie, relative to its sensor: half-angle beta around the unit
@@ -32,7 +35,7 @@ Part part_of(const Slice &s, Point p) {
   const double distance = std::hypot(ex, ey);
   if (distance > s.outer_m) return Part::outside;
   if (distance > 0.0 &&
-      std::abs(wrap_angle_rad(std::atan2(ey, ex) - std::atan2(s.dir_y, s.dir_x))) > s.beta) {
+      std::abs(common::wrap_angle_rad(std::atan2(ey, ex) - std::atan2(s.dir_y, s.dir_x))) > s.beta) {
     return Part::outside;
   }
   if (distance <= s.free_m) return Part::clear;
@@ -186,4 +189,4 @@ void mark_pie(const OccupancyGrid &grid, const RangeModelOptions &options,
   for (const RangeReading &r : readings) mark_one(grid, options, r, update);
 }
 
-}  // namespace mapping
+}  // namespace sensing

@@ -1,99 +1,35 @@
-#include "mapping/models.hpp"
+#pragma once
+// The ray model's walk (sensing/ray_model.cpp's only user): trace_ray's arithmetic
+// (mapping/traversal.hpp) in the grid's flat layout, two beams at a time, with the
+// free/occupied marks written straight into a ScanUpdate. Its results are those of the
+// reference walk bit for bit (tests/test_controller_ray_kernel.cpp); only its speed differs.
 
-#include <cassert>
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cassert>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <numbers>
-#include <optional>
-#include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
-#include "common/error.hpp"
+#include "mapping/occupancy_grid.hpp"
+#include "mapping/traversal.hpp"
+#include "sensing/scan.hpp"
 
-namespace mapping {
-namespace {
+namespace sensing::ray_kernel {
 
-constexpr int kMaxHitDepth = 8;
-// The cell model reads each side through the median of the beams within 2.5 degrees of it
-// (5 beams of a 1-degree lidar), so a lone dropped or spiked beam cannot flip a wall.
-constexpr double kCellModelHalfWindow_rad = 2.5 * std::numbers::pi / 180.0;
-
-// Row/column steps of local sub-cell coordinates (i from the north, j from the west).
-constexpr int di(Heading h) { return -dy(h); }
-constexpr int dj(Heading h) { return dx(h); }
-
-// Distance (m) from point p to side h of cell c, along h.
-double distance_to_side(const OccupancyGrid &grid, Point p, Cell c, Heading h) {
-  const GridGeometry &g = grid.geometry();
-  const Point centre = grid.centre_of(c);
-  const double half = g.cell_size_m / 2.0;
-  switch (h) {
-    case Heading::north: return centre.y_m + half - p.y_m;
-    case Heading::south: return p.y_m - (centre.y_m - half);
-    case Heading::east: return centre.x_m + half - p.x_m;
-    case Heading::west: return p.x_m - (centre.x_m - half);
-  }
-  return half;
-}
-
-void mark_cell_side(const OccupancyGrid &grid, Cell c, Heading h, bool wall, ScanUpdate &update) {
-  const int k = grid.k();
-  const int mid = k / 2;
-  const LocalSubCell band_middle{mid + di(h) * mid, mid + dj(h) * mid};
-  for (int n = 1; n < mid; ++n) {
-    update.mark_free(grid.index(c, LocalSubCell{mid + di(h) * n, mid + dj(h) * n}));
-  }
-  if (!wall) {
-    update.mark_free(grid.index(c, band_middle));
-    return;
-  }
-  update.mark_occupied(grid.index(c, band_middle));
-  // The band's corners: step from the band middle along the band both ways.
-  const bool along_j = di(h) != 0;  // a north/south band runs along j, east/west along i
-  for (const int end : {0, k - 1}) {
-    const LocalSubCell corner = along_j ? LocalSubCell{band_middle.i, end} : LocalSubCell{end, band_middle.j};
-    update.mark_occupied(grid.index(c, corner));
-  }
-}
-
-void mark_cell_model(const MappingOptions &options, const OccupancyGrid &grid,
-                     const LidarScan &scan, Cell c, ScanUpdate &update) {
-  assert(grid.contains(c));
-  const int mid = grid.k() / 2;
-  update.mark_free(grid.index(c, LocalSubCell{mid, mid}));
-  for (const Heading h : kHeadings) {
-    const SideState side = read_cell_side(options, grid, scan, c, h);
-    if (side != SideState::unknown) mark_cell_side(grid, c, h, side == SideState::wall, update);
-  }
-}
-
-}  // namespace
-
-SideState read_cell_side(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
-                         Cell c, Heading h) {
-  const auto beam = scan.beam_towards(yaw_rad(h));
-  if (!beam) return SideState::unknown;
-  const auto medians = scan.medians(*beam, kCellModelHalfWindow_rad);
-  if (!medians) return SideState::unknown;
-  const double limit_m = distance_to_side(grid, scan.origin, c, h) + options.wall_margin * grid.geometry().cell_size_m;
-  const auto wall = [&](float range) { return scan.kind_of(range) == ReadingKind::hit && range < limit_m; };
-  // An even split (two short returns, two long: a pair of spikes beside a dropped beam)
-  // says nothing either way: the side stays unknown, and the robot looks again.
-  if (wall(medians->lower) != wall(medians->upper)) return SideState::unknown;
-  return wall(medians->lower) ? SideState::wall : SideState::open;
-}
-
-namespace {
+using mapping::kMaxCellsPerSide;
+using mapping::kMaxSubcells;
+using mapping::OccupancyGrid;
+using mapping::SubCell;
+using mapping::ScanUpdate;
+using mapping::TraversalOrigin;
+using mapping::TraversalStart;
 
 // The two axes of a beam's walk: the path lengths to the next sub-cell boundary on x and y
 // (trace_ray's next_x, next_y), what one sub-cell adds to them, and the steps left on each
@@ -480,167 +416,4 @@ std::uint32_t *occupy_end(FlatWalk<K> &walk, int hit_depth, const ScanUpdate::Un
   return out;
 }
 
-// The ray model for K sub-cells a side (a constant, so the walk's arithmetic on places in a
-// cell folds).
-template <int K>
-void mark_rays(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
-               const BeamTable &table, ScanUpdate &update) {
-  const GridGeometry &g = grid.geometry();
-  const auto origin = traversal_origin(g, scan.origin);
-  if (!origin) return;  // every beam starts outside the grid
-  thread_local MoveTable<K> moves;
-  moves.prepare(g.width_cells);
-  const WalkOrigin<K> start(grid, *origin);
-  ScanUpdate::UniqueMarks marks = update.unique_marks(grid);
-  // Room for the scan's marks: a beam lists at most one sub-cell per step and steps at most
-  // width + height times in the grid, and a scan lists each sub-cell at most once; plus the
-  // slot a mark writes before it knows whether it keeps it.
-  const auto beams = static_cast<std::size_t>(scan.beam_count());
-  const std::size_t per_beam = static_cast<std::size_t>(g.width_subcells()) +
-                               static_cast<std::size_t>(g.height_subcells()) + 2;
-  std::uint32_t *free_out = marks.reserve_free(std::min(grid.size(), beams * per_beam) + 1);
-  std::uint32_t *occupied_out = marks.reserve_occupied(
-      std::min(grid.size(), beams * (static_cast<std::size_t>(options.hit_depth) + 1)) + 1);
-  // World direction of beam i: the beam's direction rotated by the yaw (two sin/cos per
-  // scan instead of two per beam).
-  const double cy = std::cos(scan.yaw_rad);
-  const double sy = std::sin(scan.yaw_rad);
-  // A beam shorter than this cannot reach the grid's edge (the nearest edge, less two
-  // sub-cells for rounding), so its walk needs no check for leaving the grid.
-  const double inside_m = g.subcell_size_m() * (std::min({origin->px, origin->py, g.width_subcells() - origin->px,
-                                                          g.height_subcells() - origin->py}) - 2.0);
-  struct Lane {
-    FlatWalk<K> walk;
-    double length_m;
-    bool no_return;
-  };
-  // A walk that stopped inside the grid: its end.
-  const auto mark_end = [&](Lane &lane) {
-    if (lane.no_return) {
-      free_out = marks.mark_free(free_out, lane.walk.flat(), lane.walk.freed_anyway());
-    } else {
-      occupied_out = occupy_end(lane.walk, options.hit_depth, marks, occupied_out);
-    }
-  };
-  // A beam that cannot reach the grid's edge waits here for the next such beam, to walk
-  // beside it (free_pair); a beam that may reach the edge walks alone.
-  std::optional<Lane> waiting;
-  for (int i = 0; i < scan.beam_count(); ++i) {
-    const ReadingKind kind = scan.kind(i);
-    if (kind == ReadingKind::invalid) continue;
-    const bool no_return = kind == ReadingKind::no_return;
-    if (no_return && (options.ignore_no_return || scan.lone_no_return(i))) continue;
-    const double dir_x = cy * table.cos(i) - sy * table.sin(i);
-    const double dir_y = sy * table.cos(i) + cy * table.sin(i);
-    Lane lane{FlatWalk<K>(start, moves, start_traversal(g, *origin, dir_x, dir_y)),
-              no_return ? scan.max_range_m : scan.ranges[static_cast<std::size_t>(i)], no_return};
-    if (!(lane.length_m < inside_m)) {
-      if (free_passed(lane.walk, lane.length_m, no_return, true, marks, free_out)) mark_end(lane);
-      continue;
-    }
-    if (!waiting) {
-      waiting.emplace(lane);
-      continue;
-    }
-    free_out = free_pair<K>(waiting->walk, waiting->length_m, lane.walk, lane.length_m, marks, free_out);
-    // Whichever ended is marked; one still under way waits for the next beam.
-    const bool waiting_ended = !waiting->walk.exits_before(waiting->length_m);
-    const bool lane_ended = !lane.walk.exits_before(lane.length_m);
-    if (waiting_ended) mark_end(*waiting);
-    if (lane_ended) mark_end(lane);
-    if (waiting_ended) {
-      waiting.reset();
-      if (!lane_ended) waiting.emplace(lane);
-    }
-  }
-  if (waiting && free_passed(waiting->walk, waiting->length_m, waiting->no_return, false, marks, free_out)) {
-    mark_end(*waiting);
-  }
-  marks.commit_free(free_out);
-  marks.commit_occupied(occupied_out);
-}
-
-void mark_ray_model(const MappingOptions &options, const OccupancyGrid &grid,
-                    const LidarScan &scan, ScanUpdate &update) {
-  thread_local BeamTable table;  // per thread: no sharing, no per-scan allocation
-  table.prepare(scan);
-  switch (grid.k()) {
-    case 3: return mark_rays<3>(options, grid, scan, table, update);
-    case 5: return mark_rays<5>(options, grid, scan, table, update);
-    case 7: return mark_rays<7>(options, grid, scan, table, update);
-    case 9: return mark_rays<9>(options, grid, scan, table, update);
-    default: assert(false && "K is odd, 3 ... 9 (validate(GridGeometry))");
-  }
-}
-
-}  // namespace
-
-std::string_view to_string(ModelKind kind) {
-  switch (kind) {
-    case ModelKind::cell: return "cell";
-    case ModelKind::ray: return "ray";
-    case ModelKind::bump: return "bump";
-    case ModelKind::depth: return "depth";
-    case ModelKind::pie: return "pie";
-    case ModelKind::cone: return "cone";
-  }
-  return "?";
-}
-
-ModelKind parse_model(std::string_view name) {
-  for (const ModelKind kind : {ModelKind::cell, ModelKind::ray, ModelKind::bump, ModelKind::depth,
-                               ModelKind::pie, ModelKind::cone}) {
-    if (name == to_string(kind)) return kind;
-  }
-  throw common::InputError(fmt::format(
-      "unknown --model '{}' (choose cell, ray, bump, depth, pie or cone)", name));
-}
-
-void validate(const MappingOptions &options) {
-  if (!(options.wall_margin >= 0.0 && options.wall_margin < 0.5)) {
-    throw common::InputError(fmt::format(
-        "wall margin must be at least 0 and less than 0.5 cells (got {})", options.wall_margin));
-  }
-  if (options.hit_depth < 0 || options.hit_depth > kMaxHitDepth) {
-    throw common::InputError(fmt::format("--hit-depth must be between 0 and {} (got {})",
-                                         kMaxHitDepth, options.hit_depth));
-  }
-}
-
-void mark_scan(const MappingOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
-               Cell robot_cell, ScanUpdate &update) {
-  assert(uses_lidar(options.kind));
-  if (options.kind == ModelKind::cell) {
-    mark_cell_model(options, grid, scan, robot_cell, update);
-  } else {
-    mark_ray_model(options, grid, scan, update);
-  }
-}
-
-std::size_t integrate_scan(const MappingOptions &options, OccupancyGrid &grid,
-                           const LidarScan &scan, Cell robot_cell, const SensorModel &model,
-                           ScanUpdate &update) {
-  mark_scan(options, grid, scan, robot_cell, update);
-  return update.apply(grid, model);
-}
-
-std::vector<SubCell> subcells_on_segment(const GridGeometry &g, Point from, Point to) {
-  const double ex = to.x_m - from.x_m;
-  const double ey = to.y_m - from.y_m;
-  const double length = std::hypot(ex, ey);
-  std::vector<SubCell> out;
-  if (length == 0.0) {
-    trace_ray(g, from, 1.0, 0.0, [&](SubCell s, double) {
-      out.push_back(s);
-      return false;
-    });
-    return out;
-  }
-  trace_ray(g, from, ex / length, ey / length, [&](SubCell s, double exit_m) {
-    out.push_back(s);
-    return exit_m < length;
-  });
-  return out;
-}
-
-}  // namespace mapping
+}  // namespace sensing::ray_kernel

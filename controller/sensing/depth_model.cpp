@@ -1,11 +1,13 @@
-// The depth-ray model (mapping/range_models.hpp).
+// The depth-ray model (sensing/range_models.hpp).
 
 #include <cmath>
 
-#include "mapping/models.hpp"
-#include "mapping/range_models.hpp"
+#include "mapping/traversal.hpp"
+#include "sensing/range_models.hpp"
 
-namespace mapping {
+namespace sensing {
+
+using namespace mapping;  // the grid types this model marks
 
 LeveledUpdate make_depth_update() {
   return LeveledUpdate({kDepthHitP, kDepthRobotP, kDepthRayP});
@@ -29,4 +31,4 @@ void mark_depth(const OccupancyGrid &grid, Point robot, std::span<const RangeRea
   }
 }
 
-}  // namespace mapping
+}  // namespace sensing

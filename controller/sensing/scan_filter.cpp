@@ -1,4 +1,4 @@
-#include "mapping/scan_filter.hpp"
+#include "sensing/scan_filter.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -11,7 +11,7 @@
 
 #include "common/error.hpp"
 
-namespace mapping {
+namespace sensing {
 namespace {
 
 constexpr float kNoInformation = std::numeric_limits<float>::quiet_NaN();
@@ -368,4 +368,4 @@ void ScanFilter::drop_dropouts(const LidarScan *before) {
   }
 }
 
-}  // namespace mapping
+}  // namespace sensing

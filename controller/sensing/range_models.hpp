@@ -59,7 +59,7 @@
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
 
-namespace mapping {
+namespace sensing {
 
 inline constexpr double kBumpOccupiedP = 0.99999;
 inline constexpr double kBumpFreeP = 0.3;
@@ -81,13 +81,13 @@ inline constexpr double kConeUsableError = 0.15;
 
 // One bumper as read: where it touches (robot centre + mounting offset along its angle).
 struct BumpReading {
-  Point contact;
+  mapping::Point contact;
   bool pressed = false;
 };
 
 // One range reading in the world frame.
 struct RangeReading {
-  Point origin;             // the sensor, m
+  mapping::Point origin;             // the sensor, m
   double angle_rad = 0.0;   // its direction in the world, rad
   double range_m = 0.0;     // the reading, m
   double max_range_m = 0.0; // readings at or beyond this are "nothing seen"
@@ -117,10 +117,10 @@ void validate(const RangeModelOptions &options);
 class LeveledUpdate {
  public:
   explicit LeveledUpdate(std::vector<double> level_p) : level_p_(std::move(level_p)) {}
-  void mark(const OccupancyGrid &grid, SubCell s, int level, double weight = 1.0);
-  void mark(const OccupancyGrid &grid, Point p, int level, double weight = 1.0);
+  void mark(const mapping::OccupancyGrid &grid, mapping::SubCell s, int level, double weight = 1.0);
+  void mark(const mapping::OccupancyGrid &grid, mapping::Point p, int level, double weight = 1.0);
   // Applies l += increment_for(p of the level) once per marked sub-cell; returns the count.
-  std::size_t apply(OccupancyGrid &grid, const SensorModel &model);
+  std::size_t apply(mapping::OccupancyGrid &grid, const mapping::SensorModel &model);
   bool empty() const { return marks_.empty(); }
 
  private:
@@ -135,22 +135,22 @@ class LeveledUpdate {
 
 // Levels: 0 occupied 0.99999, 1 free 0.3.
 LeveledUpdate make_bump_update();
-void mark_bumps(const OccupancyGrid &grid, Point robot, std::span<const BumpReading> bumpers,
+void mark_bumps(const mapping::OccupancyGrid &grid, mapping::Point robot, std::span<const BumpReading> bumpers,
                 LeveledUpdate &update);
 
 // Levels: 0 hit 0.99999, 1 robot 0.3, 2 along the ray 0.4.
 LeveledUpdate make_depth_update();
-void mark_depth(const OccupancyGrid &grid, Point robot, std::span<const RangeReading> rays,
+void mark_depth(const mapping::OccupancyGrid &grid, mapping::Point robot, std::span<const RangeReading> rays,
                 LeveledUpdate &update);
 
 // Levels: 0 occupied 0.7, 1 free 0.4.
 LeveledUpdate make_pie_update();
-void mark_pie(const OccupancyGrid &grid, const RangeModelOptions &options,
+void mark_pie(const mapping::OccupancyGrid &grid, const RangeModelOptions &options,
               std::span<const RangeReading> readings, LeveledUpdate &update);
 
 // Levels: 0 occupied (p_occ), 1 free (p_free) of the sensor model.
-LeveledUpdate make_cone_update(const SensorModelOptions &sensor);
-void mark_cone(const OccupancyGrid &grid, std::span<const RangeReading> readings,
+LeveledUpdate make_cone_update(const mapping::SensorModelOptions &sensor);
+void mark_cone(const mapping::OccupancyGrid &grid, std::span<const RangeReading> readings,
                LeveledUpdate &update);
 
-}  // namespace mapping
+}  // namespace sensing

@@ -1,4 +1,4 @@
-// The bump model and the leveled update the range models share (mapping/range_models.hpp).
+// The bump model and the leveled update the range models share (sensing/range_models.hpp).
 
 #include <algorithm>
 #include <numbers>
@@ -6,9 +6,11 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
-#include "mapping/range_models.hpp"
+#include "sensing/range_models.hpp"
 
-namespace mapping {
+namespace sensing {
+
+using namespace mapping;  // the grid types this model marks
 
 void validate(const RangeModelOptions &options) {
   const double right_angle = std::numbers::pi / 2.0;
@@ -64,4 +66,4 @@ void mark_bumps(const OccupancyGrid &grid, Point robot, std::span<const BumpRead
   for (const BumpReading &b : bumpers) update.mark(grid, b.contact, b.pressed ? 0 : 1);
 }
 
-}  // namespace mapping
+}  // namespace sensing

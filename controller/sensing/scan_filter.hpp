@@ -44,9 +44,9 @@
 #include <numbers>
 #include <vector>
 
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 
-namespace mapping {
+namespace sensing {
 
 struct ScanFilterOptions {
   // Standard deviation (m) of the lidar's range noise (Webots: noise x max range); the
@@ -139,4 +139,4 @@ class ScanFilter {
   ScanFilterCounts counts_;
 };
 
-}  // namespace mapping
+}  // namespace sensing

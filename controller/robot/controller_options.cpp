@@ -7,6 +7,8 @@
 
 #include "common/error.hpp"
 #include "robot/cell_controller.hpp"
+#include "robot/drive.hpp"
+#include "robot/options.hpp"
 
 namespace robot {
 namespace {
@@ -22,6 +24,8 @@ void require_gain(const char *what, double value) {
     throw common::InputError(fmt::format("{} must be in (0, 1] (got {})", what, value));
   }
 }
+
+}  // namespace
 
 void validate(const MotionOptions &m) {
   if (m.time_step_ms < 0) {
@@ -41,12 +45,12 @@ void validate(const MotionOptions &m) {
   if (m.stall_steps < 1) {
     throw common::InputError(fmt::format("stall steps must be at least 1 (got {})", m.stall_steps));
   }
+  require_positive("creep speed", m.creep_speed_m_s);
   if (m.max_steps < 1) {
     throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", m.max_steps));
   }
 }
 
-}  // namespace
 
 std::string_view to_string(EndReason reason) {
   switch (reason) {
@@ -74,8 +78,8 @@ std::string_view to_string(Action action) {
 void validate(const ControllerOptions &options) {
   mapping::validate(options.geometry, mapping::kDefaultMaxGridBytes);
   mapping::validate(options.sensor);
-  mapping::validate(options.mapping);
-  mapping::validate(options.scan_filter);
+  sensing::validate(options.model);
+  sensing::validate(options.scan_filter);
   if (options.max_rescans < 0 || options.max_rescans > 100) {
     throw common::InputError(fmt::format("rescans must be 0 to 100 (got {})", options.max_rescans));
   }
@@ -83,18 +87,14 @@ void validate(const ControllerOptions &options) {
                                              options.geometry.height_cells, options.start,
                                              options.goals});
   validate(options.motion);
-  require_positive("creep speed", options.motion.creep_speed_m_s);
-  mapping::validate(options.sensing.range_model);
+  sensing::validate(options.sensing.range_model);
   if (options.occupied_threshold && !std::isfinite(*options.occupied_threshold)) {
     throw common::InputError("--threshold must be a finite log-odds value");
   }
-  const mapping::ModelKind kind = options.mapping.kind;
-  if (kind == mapping::ModelKind::bump && options.sensing.bumpers.empty()) {
-    throw common::InputError("the bump model needs a robot with bumpers");
-  }
-  if (!mapping::uses_lidar(kind) && kind != mapping::ModelKind::bump && options.sensing.ranges.empty()) {
-    throw common::InputError(fmt::format("the {} model needs a robot with range sensors",
-                                         mapping::to_string(kind)));
+  const sensing::SetUp &setup = sensing::setup(options.model.kind);
+  if ((setup.reads_bumpers() && options.sensing.bumpers.empty()) ||
+      (setup.reads_ranges() && options.sensing.ranges.empty())) {
+    throw common::InputError(fmt::format("the {} model needs a robot with {}", setup.name, setup.devices()));
   }
 }
 

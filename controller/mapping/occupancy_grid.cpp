@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "common/angles.hpp"
 #include "common/error.hpp"
 #include "mapping/sensor_model.hpp"
 
@@ -28,15 +29,7 @@ std::string human_bytes(std::uint64_t bytes) {
 
 }  // namespace
 
-double yaw_rad(Heading h) {
-  switch (h) {
-    case Heading::east: return 0.0;
-    case Heading::north: return std::numbers::pi / 2;
-    case Heading::west: return std::numbers::pi;
-    case Heading::south: return -std::numbers::pi / 2;
-  }
-  return 0.0;
-}
+double yaw_rad(Heading h) { return common::compass_yaw_rad(static_cast<int>(h)); }
 
 char to_char(Heading h) {
   switch (h) {

@@ -1,4 +1,4 @@
-#include "mapping/scan.hpp"
+#include "sensing/scan.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,17 +9,9 @@
 #include <span>
 #include <vector>
 
-namespace mapping {
+#include "common/angles.hpp"
 
-double wrap_angle_rad(double angle_rad) {
-  constexpr double two_pi = 2.0 * std::numbers::pi;
-  // Already wrapped: the common case, and fmod would return it unchanged.
-  if (angle_rad > -std::numbers::pi && angle_rad <= std::numbers::pi) return angle_rad;
-  double a = std::fmod(angle_rad, two_pi);
-  if (a <= -std::numbers::pi) a += two_pi;
-  if (a > std::numbers::pi) a -= two_pi;
-  return a;
-}
+namespace sensing {
 
 double LidarScan::beam_angle_rad(int i) const {
   return fov_rad / 2.0 - i * fov_rad / beam_count();
@@ -88,7 +80,7 @@ bool LidarScan::lone_no_return(int i) const {
 std::optional<int> LidarScan::beam_towards(double world_angle_rad) const {
   const int n = beam_count();
   if (n == 0 || !(fov_rad > 0.0)) return std::nullopt;
-  const double relative = wrap_angle_rad(world_angle_rad - yaw_rad);
+  const double relative = common::wrap_angle_rad(world_angle_rad - yaw_rad);
   const double step = fov_rad / n;
   const long nearest = std::lround((fov_rad / 2.0 - relative) / step);
   const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
@@ -97,4 +89,4 @@ std::optional<int> LidarScan::beam_towards(double world_angle_rad) const {
   return static_cast<int>(nearest);
 }
 
-}  // namespace mapping
+}  // namespace sensing

@@ -162,10 +162,10 @@ const std::vector<Key> &keys() {
       {"start", [](const Arg &a, ControllerOptions &o) { o.start = cell(a); }},
       {"heading", [](const Arg &a, ControllerOptions &o) { o.start_heading = heading(a); }},
       {"goal", [](const Arg &a, ControllerOptions &o) { o.goals.push_back(cell(a)); }},
-      {"model", [](const Arg &a, ControllerOptions &o) { o.mapping.kind = mapping::parse_model(a.value); }},
+      {"model", [](const Arg &a, ControllerOptions &o) { o.model.kind = sensing::parse_model(a.value); }},
       {"strategy", [](const Arg &a, ControllerOptions &o) { o.strategy = explore::parse_strategy(a.value); }},
-      {"hit-depth", [](const Arg &a, ControllerOptions &o) { o.mapping.hit_depth = integer(a); }},
-      {"ignore-no-return", [](const Arg &a, ControllerOptions &o) { o.mapping.ignore_no_return = flag(a); }},
+      {"hit-depth", [](const Arg &a, ControllerOptions &o) { o.model.hit_depth = integer(a); }},
+      {"ignore-no-return", [](const Arg &a, ControllerOptions &o) { o.model.ignore_no_return = flag(a); }},
       {"threshold", [](const Arg &a, ControllerOptions &o) { o.occupied_threshold = static_cast<float>(real(a)); }},
       {"p-free", [](const Arg &a, ControllerOptions &o) { o.sensor.p_free = real(a); }},
       {"p-occ", [](const Arg &a, ControllerOptions &o) { o.sensor.p_occ = real(a); }},
@@ -243,17 +243,17 @@ std::vector<std::string> format_controller_args(const ControllerOptions &o) {
   put("start", fmt::format("{},{}", o.start.x, o.start.y));
   put("heading", std::string(1, mapping::to_char(o.start_heading)));
   for (const mapping::Cell goal : o.goals) put("goal", fmt::format("{},{}", goal.x, goal.y));
-  put("model", std::string(mapping::to_string(o.mapping.kind)));
+  put("model", std::string(sensing::to_string(o.model.kind)));
   put("strategy", std::string(explore::to_string(o.strategy)));
-  if (o.mapping.hit_depth != d.mapping.hit_depth) put("hit-depth", std::to_string(o.mapping.hit_depth));
-  if (o.mapping.ignore_no_return) put("ignore-no-return", "true");
+  if (o.model.hit_depth != d.model.hit_depth) put("hit-depth", std::to_string(o.model.hit_depth));
+  if (o.model.ignore_no_return) put("ignore-no-return", "true");
   if (o.occupied_threshold) put("threshold", num(*o.occupied_threshold));
   if (o.sensor.p_free != d.sensor.p_free) put("p-free", num(o.sensor.p_free));
   if (o.sensor.p_occ != d.sensor.p_occ) put("p-occ", num(o.sensor.p_occ));
   if (o.sensor.prior != d.sensor.prior) put("prior", num(o.sensor.prior));
   if (o.sensor.base == mapping::LogBase::ten) put("log-base", "10");
   if (o.sensor.clamp) put("clamp", fmt::format("{},{}", num(o.sensor.clamp->min), num(o.sensor.clamp->max)));
-  const mapping::RangeModelOptions &r = o.sensing.range_model;
+  const sensing::RangeModelOptions &r = o.sensing.range_model;
   if (r.pie_half_angle_rad != d.sensing.range_model.pie_half_angle_rad) put("pie-beta-rad", num(r.pie_half_angle_rad));
   if (r.pie_contact_m != d.sensing.range_model.pie_contact_m) put("pie-alpha", num(r.pie_contact_m));
   if (r.pie_usable_fraction != d.sensing.range_model.pie_usable_fraction) put("pie-usable", num(r.pie_usable_fraction));

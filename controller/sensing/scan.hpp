@@ -16,12 +16,12 @@
 
 #include "mapping/grid_types.hpp"
 
-namespace mapping {
+namespace sensing {
 
 enum class ReadingKind { hit, no_return, invalid };
 
 struct LidarScan {
-  Point origin;             // sensor position in the world, m
+  mapping::Point origin;             // sensor position in the world, m
   double yaw_rad = 0.0;     // sensor heading in the world: 0 east, pi/2 north
   double fov_rad = 0.0;     // (0, 2 pi]
   double min_range_m = 0.0;
@@ -69,7 +69,4 @@ struct LidarScan {
   std::optional<int> beam_towards(double world_angle_rad) const;
 };
 
-// Angle wrapped into (-pi, pi].
-double wrap_angle_rad(double angle_rad);
-
-}  // namespace mapping
+}  // namespace sensing

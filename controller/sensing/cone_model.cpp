@@ -1,11 +1,13 @@
-// The sonar/IR cone model (mapping/range_models.hpp).
+// The sonar/IR cone model (sensing/range_models.hpp).
 
 #include <algorithm>
 #include <cmath>
 
-#include "mapping/range_models.hpp"
+#include "sensing/range_models.hpp"
 
-namespace mapping {
+namespace sensing {
+
+using namespace mapping;  // the grid types this model marks
 namespace {
 
 constexpr int kOccupied = 0;
@@ -77,4 +79,4 @@ void mark_cone(const OccupancyGrid &grid, std::span<const RangeReading> readings
   }
 }
 
-}  // namespace mapping
+}  // namespace sensing

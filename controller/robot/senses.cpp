@@ -1,0 +1,137 @@
+#include "robot/senses.hpp"
+
+#include <cmath>
+#include <span>
+#include <variant>
+
+#include <webots/DistanceSensor.hpp>
+#include <webots/Lidar.hpp>
+#include <webots/Robot.hpp>
+#include <webots/TouchSensor.hpp>
+
+#include "common/error.hpp"
+
+namespace robot {
+namespace {
+
+using mapping::Cell;
+using mapping::Point;
+
+template <typename Device>
+Device *require(Device *device, const std::string &name) {
+  if (device == nullptr) throw common::InputError(fmt::format("the robot has no device \"{}\"", name));
+  return device;
+}
+
+}  // namespace
+
+Senses::Senses(webots::Robot &robot, const ControllerOptions &options, const Drive &drive,
+               mapping::OccupancyGrid &grid, const mapping::SensorModel &model)
+    : options_(options),
+      setup_(sensing::setup(options.model.kind)),
+      drive_(drive),
+      grid_(grid),
+      model_(model),
+      filter_(options.scan_filter) {
+  if (setup_.reads_lidar()) {
+    lidar_ = require(robot.getLidar(options.devices.lidar), options.devices.lidar);
+  } else if (setup_.reads_bumpers()) {
+    for (const BumperMount &b : options.sensing.bumpers) bumpers_.push_back(require(robot.getTouchSensor(b.name), b.name));
+  } else {
+    for (const RangeSensorMount &r : options.sensing.ranges) {
+      range_sensors_.push_back(require(robot.getDistanceSensor(r.name), r.name));
+    }
+  }
+  if (setup_.make_update != nullptr) leveled_.emplace(setup_.make_update(options.sensor));
+}
+
+void Senses::enable(int time_step_ms) {
+  if (lidar_ != nullptr) lidar_->enable(time_step_ms);
+  for (webots::TouchSensor *b : bumpers_) b->enable(time_step_ms);
+  for (webots::DistanceSensor *r : range_sensors_) r->enable(time_step_ms);
+  if (lidar_ != nullptr && lidar_->getFrequency() > 0.0) {
+    revolution_steps_ = static_cast<int>(std::ceil(1000.0 / (lidar_->getFrequency() * time_step_ms)));
+  }
+}
+
+void Senses::scan(Cell c, std::int64_t step) {
+  std::visit(
+      [&](auto mark) {
+        using Mark = decltype(mark);
+        if constexpr (std::is_same_v<Mark, sensing::LidarMark>) {
+          scan_lidar(mark, c, step);
+        } else if constexpr (std::is_same_v<Mark, sensing::RangeMark>) {
+          scan_ranges(mark, c);
+        } else {
+          gather_bumps(c);
+          apply_bumps();
+        }
+      },
+      setup_.mark);
+}
+
+std::size_t Senses::take_lidar_updates() { return std::exchange(lidar_updates_, 0); }
+
+const sensing::LidarScan *Senses::last_lidar_scan() const {
+  return previous_scan_.ranges.empty() ? nullptr : &previous_scan_;
+}
+
+Point Senses::position(Cell c) const { return drive_.gps().value_or(grid_.centre_of(c)); }
+
+Point Senses::mounted(Point centre, double angle_rad, double offset_m) const {
+  const double a = drive_.yaw_rad() + angle_rad;
+  return {centre.x_m + offset_m * std::cos(a), centre.y_m + offset_m * std::sin(a)};
+}
+
+void Senses::scan_lidar(sensing::LidarMark mark, Cell c, std::int64_t step) {
+  const float *ranges = lidar_->getRangeImage();
+  if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
+  sensing::LidarScan s;
+  s.origin = position(c);
+  s.yaw_rad = drive_.yaw_rad();
+  s.fov_rad = lidar_->getFov();
+  s.min_range_m = lidar_->getMinRange();
+  s.max_range_m = lidar_->getMaxRange();
+  s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar_->getHorizontalResolution()));
+  // A scan before in the same control step is the same reading, not a second look.
+  const bool second_look = !previous_scan_.ranges.empty() && previous_scan_step_ < step;
+  const sensing::LidarScan filtered = second_look ? filter_.apply(s, previous_scan_) : filter_.apply(s);
+  mark(options_.model, grid_, filtered, c, update_);
+  lidar_updates_ += update_.apply(grid_, model_);
+  // Kept for the next scan's filter: a short view past max range seen again from the same
+  // pose is a view, not dropped beams.
+  previous_ranges_.assign(s.ranges.begin(), s.ranges.end());
+  previous_scan_ = s;
+  previous_scan_.ranges = previous_ranges_;
+  previous_scan_step_ = step;
+}
+
+void Senses::scan_ranges(sensing::RangeMark mark, Cell c) {
+  const Point centre = position(c);
+  range_readings_.clear();
+  for (std::size_t i = 0; i < range_sensors_.size(); ++i) {
+    const RangeSensorMount &m = options_.sensing.ranges[i];
+    range_readings_.push_back({mounted(centre, m.angle_rad, m.offset_m), drive_.yaw_rad() + m.angle_rad,
+                               range_sensors_[i]->getValue(), m.max_range_m, m.aperture_rad, m.range_error});
+  }
+  mark(grid_, options_.sensing.range_model, centre, range_readings_, *leveled_);
+  leveled_->apply(grid_, model_);
+}
+
+bool Senses::gather_bumps(Cell c) {
+  const Point centre = position(c);
+  bump_readings_.clear();
+  bool pressed = false;
+  for (std::size_t i = 0; i < bumpers_.size(); ++i) {
+    const BumperMount &m = options_.sensing.bumpers[i];
+    const bool on = bumpers_[i]->getValue() > 0.5;
+    pressed = pressed || on;
+    bump_readings_.push_back({mounted(centre, m.angle_rad, m.offset_m), on});
+  }
+  std::get<sensing::BumpMark>(setup_.mark)(grid_, centre, bump_readings_, *leveled_);
+  return pressed;
+}
+
+void Senses::apply_bumps() { leveled_->apply(grid_, model_); }
+
+}  // namespace robot

@@ -1,0 +1,80 @@
+#include "sensing/cell_model.hpp"
+
+#include <cassert>
+#include <numbers>
+
+namespace sensing {
+
+using namespace mapping;  // the grid types this model marks
+namespace {
+
+// The cell model reads each side through the median of the beams within 2.5 degrees of it
+// (5 beams of a 1-degree lidar), so a lone dropped or spiked beam cannot flip a wall.
+constexpr double kCellModelHalfWindow_rad = 2.5 * std::numbers::pi / 180.0;
+
+// Row/column steps of local sub-cell coordinates (i from the north, j from the west).
+constexpr int di(Heading h) { return -dy(h); }
+constexpr int dj(Heading h) { return dx(h); }
+
+// Distance (m) from point p to side h of cell c, along h.
+double distance_to_side(const OccupancyGrid &grid, Point p, Cell c, Heading h) {
+  const GridGeometry &g = grid.geometry();
+  const Point centre = grid.centre_of(c);
+  const double half = g.cell_size_m / 2.0;
+  switch (h) {
+    case Heading::north: return centre.y_m + half - p.y_m;
+    case Heading::south: return p.y_m - (centre.y_m - half);
+    case Heading::east: return centre.x_m + half - p.x_m;
+    case Heading::west: return p.x_m - (centre.x_m - half);
+  }
+  return half;
+}
+
+void mark_cell_side(const OccupancyGrid &grid, Cell c, Heading h, bool wall, ScanUpdate &update) {
+  const int k = grid.k();
+  const int mid = k / 2;
+  const LocalSubCell band_middle{mid + di(h) * mid, mid + dj(h) * mid};
+  for (int n = 1; n < mid; ++n) {
+    update.mark_free(grid.index(c, LocalSubCell{mid + di(h) * n, mid + dj(h) * n}));
+  }
+  if (!wall) {
+    update.mark_free(grid.index(c, band_middle));
+    return;
+  }
+  update.mark_occupied(grid.index(c, band_middle));
+  // The band's corners: step from the band middle along the band both ways.
+  const bool along_j = di(h) != 0;  // a north/south band runs along j, east/west along i
+  for (const int end : {0, k - 1}) {
+    const LocalSubCell corner = along_j ? LocalSubCell{band_middle.i, end} : LocalSubCell{end, band_middle.j};
+    update.mark_occupied(grid.index(c, corner));
+  }
+}
+
+}  // namespace
+
+SideState read_cell_side(const ModelOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
+                         Cell c, Heading h) {
+  const auto beam = scan.beam_towards(yaw_rad(h));
+  if (!beam) return SideState::unknown;
+  const auto medians = scan.medians(*beam, kCellModelHalfWindow_rad);
+  if (!medians) return SideState::unknown;
+  const double limit_m = distance_to_side(grid, scan.origin, c, h) + options.wall_margin * grid.geometry().cell_size_m;
+  const auto wall = [&](float range) { return scan.kind_of(range) == ReadingKind::hit && range < limit_m; };
+  // An even split (two short returns, two long: a pair of spikes beside a dropped beam)
+  // says nothing either way: the side stays unknown, and the robot looks again.
+  if (wall(medians->lower) != wall(medians->upper)) return SideState::unknown;
+  return wall(medians->lower) ? SideState::wall : SideState::open;
+}
+
+void mark_cell_model(const ModelOptions &options, const OccupancyGrid &grid,
+                     const LidarScan &scan, Cell c, ScanUpdate &update) {
+  assert(grid.contains(c));
+  const int mid = grid.k() / 2;
+  update.mark_free(grid.index(c, LocalSubCell{mid, mid}));
+  for (const Heading h : kHeadings) {
+    const SideState side = read_cell_side(options, grid, scan, c, h);
+    if (side != SideState::unknown) mark_cell_side(grid, c, h, side == SideState::wall, update);
+  }
+}
+
+}  // namespace sensing
