@@ -56,17 +56,16 @@ robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
   return s;
 }
 
-// The robot names that have what a model needs, for the error message.
-std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
+// The robot names that have the devices a set-up reads, for the error message.
+std::string robots_with(const sensing::SetUp &setup) {
   std::string names;
   for (const maze::sim::RobotProfile &p : maze::sim::profiles()) {
-    if (!has(p)) continue;
+    if (!has_devices(p, setup)) continue;
     if (!names.empty()) names += ", ";
     names += p.name;
   }
   return names;
 }
-
 
 LearnedSide to_learned(mapping::SideState s) {
   switch (s) {
@@ -205,37 +204,21 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   return c;
 }
 
+bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &setup) {
+  if (setup.reads_lidar()) return !profile.lidars.empty();
+  return setup.reads_bumpers() ? !profile.bumpers.empty() : !profile.distance_sensors.empty();
+}
+
 void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  const auto lidar = [](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); };
-  const auto bumpers = [](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); };
-  const auto ranges = [](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); };
-  bool (*has)(const maze::sim::RobotProfile &) = ranges;
-  const char *what = "range sensors";
-  if (sensing::uses_lidar(options.model)) {
-    has = lidar;
-    what = "a lidar";
-  } else if (options.model == sensing::ModelKind::bump) {
-    has = bumpers;
-    what = "bumpers";
-  }
-  if (!has(profile)) {
+  const sensing::SetUp &setup = sensing::setup(options.model);
+  if (!has_devices(profile, setup)) {
     throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
-                                         profile.name, what, sensing::to_string(options.model),
-                                         what, robots_with(has)));
+                                         profile.name, setup.devices(), setup.name, setup.devices(),
+                                         robots_with(setup)));
   }
 }
 
-std::string_view default_robot(sensing::ModelKind model) {
-  switch (model) {
-    case sensing::ModelKind::cell:
-    case sensing::ModelKind::ray: return "hambot";
-    case sensing::ModelKind::bump:
-    case sensing::ModelKind::depth: return "bumper-depth";
-    case sensing::ModelKind::pie:
-    case sensing::ModelKind::cone: return "ir-ring";
-  }
-  return "hambot";
-}
+std::string_view default_robot(sensing::ModelKind model) { return sensing::setup(model).default_robot; }
 
 RunSummary run_world(const RunOptions &options, std::ostream &out) {
   return run_world(options, out, RunControls{});

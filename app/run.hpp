@@ -65,8 +65,7 @@ struct RunOptions {
   double wheel_slip = 0.0;   // --wheel-slip
 };
 
-// The robot a model runs on when --robot is not given: hambot for the lidar models (cell,
-// ray), bumper-depth for bump and depth, ir-ring for pie and cone.
+// The robot a model runs on when --robot is not given: its set-up's default robot.
 std::string_view default_robot(sensing::ModelKind model);
 
 // What a run reads besides its options (all optional).
@@ -125,6 +124,9 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
 // device names, sensor mounts) - never the walls. Not validated.
 robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
                                             const maze::sim::RobotProfile &profile);
+
+// True when the robot has the devices the set-up reads (a lidar, bumpers, range sensors).
+bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &setup);
 
 // Throws common::InputError when the robot lacks what options.model reads (a lidar, bumpers
 // or range sensors), naming the robots that have it.
