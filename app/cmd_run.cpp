@@ -102,11 +102,12 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
   add_run_only_options(*run, *parsed, *no_color);
   run->callback([run, parsed, no_color, &context] {
     RunOptions options = checked_run_options(*run, *parsed, true);
+    const std::vector<std::string> warnings = options_not_applying(*run, options);
     if (context.run_parse_only != nullptr) {
       *context.run_parse_only = options;
       return;
     }
-    print_warnings(options_not_applying(*run, options));
+    print_warnings(warnings);
     options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
     run_in_terminal(options, context);
   });

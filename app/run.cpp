@@ -57,35 +57,15 @@ robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
   return s;
 }
 
-// The robot names that have what a model needs, for the error message.
-std::string robots_with(bool (*has)(const maze::sim::RobotProfile &)) {
+// The robot names that have the devices a set-up reads, for the error message.
+std::string robots_with(const sensing::SetUp &setup) {
   std::string names;
   for (const maze::sim::RobotProfile &p : maze::sim::profiles()) {
-    if (!has(p)) continue;
+    if (!has_devices(p, setup)) continue;
     if (!names.empty()) names += ", ";
     names += p.name;
   }
   return names;
-}
-
-
-// What a model reads, in words: "robot 'x' has no lidar ... (robots with a lidar: ...)".
-struct SensorNeed {
-  bool (*has)(const maze::sim::RobotProfile &);
-  const char *missing;  // after "has no"
-  const char *having;   // after "robots with"
-};
-
-SensorNeed sensor_need(sensing::ModelKind model) {
-  const sensing::SetUp &setup = sensing::setup(model);
-  if (setup.reads_lidar()) {
-    return {[](const maze::sim::RobotProfile &p) { return !p.lidars.empty(); }, "lidar", "a lidar"};
-  }
-  if (setup.reads_bumpers()) {
-    return {[](const maze::sim::RobotProfile &p) { return !p.bumpers.empty(); }, "bumpers", "bumpers"};
-  }
-  return {[](const maze::sim::RobotProfile &p) { return !p.distance_sensors.empty(); }, "range sensors",
-          "range sensors"};
 }
 
 robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
@@ -225,12 +205,17 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   return c;
 }
 
+bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &setup) {
+  if (setup.reads_lidar()) return !profile.lidars.empty();
+  return setup.reads_bumpers() ? !profile.bumpers.empty() : !profile.distance_sensors.empty();
+}
+
 void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
-  const SensorNeed need = sensor_need(options.model.kind);
-  if (!need.has(profile)) {
+  const sensing::SetUp &setup = sensing::setup(options.model.kind);
+  if (!has_devices(profile, setup)) {
     throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
-                                         profile.name, need.missing, sensing::to_string(options.model.kind),
-                                         need.having, robots_with(need.has)));
+                                         profile.name, setup.devices(), setup.name, setup.devices(),
+                                         robots_with(setup)));
   }
 }
 

@@ -82,6 +82,9 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
 robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
                                             const maze::sim::RobotProfile &profile);
 
+// True when the robot has the devices the set-up reads (a lidar, bumpers, range sensors).
+bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &setup);
+
 // Throws common::InputError when the robot lacks what options.model reads (a lidar, bumpers
 // or range sensors), naming the robots that have it.
 void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile);

@@ -1,9 +1,11 @@
 #include "app/run_options.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
+#include "app/model_rules.hpp"
 #include "app/profile_json.hpp"
 #include "common/error.hpp"
 #include "mapping/occupancy_grid.hpp"
@@ -48,15 +50,27 @@ bool animating(const RunOptions &o) { return o.output.animate; }
 bool not_animating(const RunOptions &o) { return !o.output.animate; }
 bool planning(const RunOptions &o) { return o.plan.to.has_value() || o.plan.only; }
 
-// The run's own rules. The per-model rows (--p-free with pie, --hit-depth without ray, ...)
-// come with the set-up table, which knows the options each model reads: they are rows here,
-// their `applies` asking that table about o.model.kind.
+// The run's own rules; the model's are the set-up table's (model_given_options below).
 constexpr OptionUse kOptionUses[] = {
     {"--fps", "without --animate", animating},
     {"--speed", "without --animate", animating},
     {"--quiet", "with --animate", not_animating},
     {"--dilate", "without --plan-to", planning},
 };
+
+// The sensing::ModelOption bits of the options given: option_name() is "--p-free/--p-occ"
+// for the pair, one name for the others.
+unsigned model_given_options(const GivenOptions &given) {
+  unsigned bits = 0;
+  for (const sensing::ModelOption option : sensing::kModelOptions) {
+    const std::string_view names = sensing::option_name(option);
+    const std::size_t slash = names.find('/');
+    const bool first = given.given(names.substr(0, slash));
+    const bool second = slash != std::string_view::npos && given.given(names.substr(slash + 1));
+    if (first || second) bits |= option;
+  }
+  return bits;
+}
 
 }  // namespace
 
@@ -100,6 +114,10 @@ std::vector<std::string> check_options_apply(const GivenOptions &given, const Ru
     warnings.push_back(plans_nothing ? fmt::format("warning: {} has no effect: {} plans no path", use.option,
                                                    given.command)
                                      : fmt::format("warning: {} has no effect {}", use.option, use.without));
+  }
+  // The options the set-up's model does not read (app/model_rules.hpp).
+  for (std::string &warning : check_model_options(sensing::setup(options.model.kind), model_given_options(given))) {
+    warnings.push_back(std::move(warning));
   }
   return warnings;
 }

@@ -94,10 +94,10 @@ struct GivenOptions {
 };
 
 // The one place that tells options given that do nothing for what was asked: one
-// "warning: --fps has no effect without --animate" line each, in the order of the table
-// in run_options.cpp. The run goes on. Options a model does not read (--p-free with the pie
-// model, --hit-depth without the ray model) are rows of the same table, asked about with
-// the model the run uses.
+// "warning: --fps has no effect without --animate" line each, the run's own rules (the
+// table in run_options.cpp) first, then the model's (app/model_rules.hpp: "--hit-depth has
+// no effect with the cell model"). The run goes on, but for --p-free/--p-occ with a set-up
+// that marks with the course's fixed numbers: common::InputError.
 std::vector<std::string> check_options_apply(const GivenOptions &given, const RunOptions &options);
 
 }  // namespace app

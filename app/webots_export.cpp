@@ -10,8 +10,11 @@ namespace {
 
 sensing::ModelKind model_for(const WebotsExport &options, const maze::sim::RobotProfile &profile) {
   if (!options.model.empty()) return sensing::parse_model(options.model);
-  if (!profile.lidars.empty()) return sensing::ModelKind::cell;
-  return profile.bumpers.empty() ? sensing::ModelKind::depth : sensing::ModelKind::bump;
+  // The first set-up the robot has the devices for.
+  for (const sensing::SetUp &setup : sensing::setups()) {
+    if (has_devices(profile, setup)) return setup.kind;
+  }
+  return sensing::ModelKind::cell;
 }
 
 }  // namespace

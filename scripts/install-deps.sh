@@ -6,7 +6,7 @@ set -eu
 
 PACKAGES="cmake ninja-build g++ clang libclang-rt-14-dev \
 libeigen3-dev libfmt-dev doctest-dev libcli11-dev libtinyxml2-dev libbenchmark-dev \
-libpng-dev nlohmann-json3-dev tmux $*"
+libpng-dev nlohmann-json3-dev tmux universal-ctags $*"
 
 missing=""
 for pkg in $PACKAGES; do

@@ -169,6 +169,16 @@ TEST_CASE("cli: options given that do nothing for what was asked are warned abou
   CHECK(warnings("batch", {"--dilate"}, options_with(false)) ==
         std::vector<std::string>{"warning: --dilate has no effect: batch plans no path"});
   CHECK(warnings("run", {}, options_with(false)).empty());
+  // Then the model's rules, from the set-up table (app/model_rules.hpp).
+  CHECK(warnings("run", {"--hit-depth", "--fps"}, options_with(false)) ==
+        std::vector<std::string>{"warning: --fps has no effect without --animate",
+                                 "warning: --hit-depth has no effect with the cell model (read by ray)"});
+  app::RunOptions pie = options_with(false);
+  pie.model.kind = sensing::ModelKind::pie;
+  CHECK_THROWS_WITH_AS(warnings("run", {"--p-occ"}, pie),
+                       doctest::Contains("--p-free and --p-occ do not apply to the pie model"), common::InputError);
+  CHECK(usage_error({"run", "--model", "pie", "--p-free", "0.2"}).starts_with(
+      "error: --p-free and --p-occ do not apply to the pie model"));
 }
 
 TEST_CASE("cli: --clamp must hold the prior's log-odds") {

@@ -17,6 +17,28 @@ namespace {
 
 using namespace ray_kernel;
 
+// Room for a scan's free marks: a beam lists at most one sub-cell per step and steps at
+// most width + height times in the grid, and a scan lists each sub-cell at most once; plus
+// the slot a mark writes before it knows whether it keeps it.
+std::size_t free_room(const OccupancyGrid &grid, const LidarScan &scan) {
+  const GridGeometry &g = grid.geometry();
+  const std::size_t per_beam = static_cast<std::size_t>(g.width_subcells()) +
+                               static_cast<std::size_t>(g.height_subcells()) + 2;
+  return std::min(grid.size(), static_cast<std::size_t>(scan.beam_count()) * per_beam) + 1;
+}
+
+// Room for its occupied marks: the hit and hit_depth behind it a beam.
+std::size_t occupied_room(const OccupancyGrid &grid, const LidarScan &scan, int hit_depth) {
+  return std::min(grid.size(), static_cast<std::size_t>(scan.beam_count()) * (static_cast<std::size_t>(hit_depth) + 1)) +
+         1;
+}
+
+// A beam shorter than this cannot reach the grid's edge (the nearest edge, less two
+// sub-cells for rounding), so its walk needs no check for leaving the grid.
+double edge_free_reach_m(const GridGeometry &g, const TraversalOrigin &o) {
+  return g.subcell_size_m() * (std::min({o.px, o.py, g.width_subcells() - o.px, g.height_subcells() - o.py}) - 2.0);
+}
+
 // The ray model for K sub-cells a side (a constant, so the walk's arithmetic on places in a
 // cell folds).
 template <int K>
@@ -29,23 +51,13 @@ void mark_rays(const ModelOptions &options, const OccupancyGrid &grid, const Lid
   moves.prepare(g.width_cells);
   const WalkOrigin<K> start(grid, *origin);
   ScanUpdate::UniqueMarks marks = update.unique_marks(grid);
-  // Room for the scan's marks: a beam lists at most one sub-cell per step and steps at most
-  // width + height times in the grid, and a scan lists each sub-cell at most once; plus the
-  // slot a mark writes before it knows whether it keeps it.
-  const auto beams = static_cast<std::size_t>(scan.beam_count());
-  const std::size_t per_beam = static_cast<std::size_t>(g.width_subcells()) +
-                               static_cast<std::size_t>(g.height_subcells()) + 2;
-  std::uint32_t *free_out = marks.reserve_free(std::min(grid.size(), beams * per_beam) + 1);
-  std::uint32_t *occupied_out = marks.reserve_occupied(
-      std::min(grid.size(), beams * (static_cast<std::size_t>(options.hit_depth) + 1)) + 1);
+  std::uint32_t *free_out = marks.reserve_free(free_room(grid, scan));
+  std::uint32_t *occupied_out = marks.reserve_occupied(occupied_room(grid, scan, options.hit_depth));
   // World direction of beam i: the beam's direction rotated by the yaw (two sin/cos per
   // scan instead of two per beam).
   const double cy = std::cos(scan.yaw_rad);
   const double sy = std::sin(scan.yaw_rad);
-  // A beam shorter than this cannot reach the grid's edge (the nearest edge, less two
-  // sub-cells for rounding), so its walk needs no check for leaving the grid.
-  const double inside_m = g.subcell_size_m() * (std::min({origin->px, origin->py, g.width_subcells() - origin->px,
-                                                          g.height_subcells() - origin->py}) - 2.0);
+  const double inside_m = edge_free_reach_m(g, *origin);
   struct Lane {
     FlatWalk<K> walk;
     double length_m;

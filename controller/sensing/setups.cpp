@@ -56,7 +56,7 @@ const std::array<SetUp, 6> kSetUps{{
 }  // namespace
 
 std::string_view SetUp::devices() const {
-  if (reads_lidar()) return "a lidar";
+  if (reads_lidar()) return "lidar";
   return reads_bumpers() ? "bumpers" : "range sensors";
 }
 

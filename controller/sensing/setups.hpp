@@ -103,7 +103,7 @@ struct SetUp {
   bool reads_lidar() const { return std::holds_alternative<LidarMark>(mark); }
   bool reads_ranges() const { return std::holds_alternative<RangeMark>(mark); }
   bool reads_bumpers() const { return std::holds_alternative<BumpMark>(mark); }
-  // "a lidar", "range sensors", "bumpers"
+  // "lidar", "range sensors", "bumpers": what a robot "has no" or a set-up "needs a robot with"
   std::string_view devices() const;
 };
 

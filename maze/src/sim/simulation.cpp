@@ -83,20 +83,10 @@ void check_stuck_bumper(const maze::sim::RobotProfile &profile, const std::strin
                                        known.empty() ? "it has none" : "it has " + known));
 }
 
-double heading_rad(maze::Side s) {
-  switch (s) {
-    case maze::Side::north: return std::numbers::pi / 2.0;
-    case maze::Side::east: return 0.0;
-    case maze::Side::south: return -std::numbers::pi / 2.0;
-    case maze::Side::west: return std::numbers::pi;
-  }
-  return 0.0;
-}
-
 maze::sim::Pose start_pose(const maze::Maze &maze) {
   const double s = maze.cell_size_m();
   return {maze.origin_x_m() + (maze.start().x + 0.5) * s,
-          maze.origin_y_m() + (maze.start().y + 0.5) * s, heading_rad(maze.start_heading())};
+          maze.origin_y_m() + (maze.start().y + 0.5) * s, common::compass_yaw_rad(static_cast<int>(maze.start_heading()))};
 }
 
 thread_local Simulation *g_current = nullptr;

@@ -183,6 +183,62 @@ double WallGrid::cast_from(const CastOrigin &origin, double dx, double dy,
 }
 
 template <bool kEastward, bool kNorthward>
+double WallGrid::entry_in_cell(std::uint8_t f, int cx, int cy, const CastOrigin &origin, double inv_dx,
+                               double inv_dy) const {
+  const double s = cell_size_m_;
+  const double h = half_thickness_m_;
+  const double ox = origin.local_x_m;
+  const double oy = origin.local_y_m;
+  constexpr std::uint8_t mask = static_cast<std::uint8_t>(
+      (kEastward ? kEast | kCornerNE | kCornerSE : kWest | kCornerNW | kCornerSW) |
+      (kNorthward ? kNorth | kCornerNE | kCornerNW : kSouth | kCornerSW | kCornerSE));
+  // The same slab arithmetic as entry_distance, (edge - origin) / direction for each of
+  // the cell's four x and four y box edges: 0 the west (south) side, 1 h inside it,
+  // 2 h inside the east (north) side, 3 that side.
+  const double x0 = cx * s;
+  const double y0 = cy * s;
+  const double x1 = x0 + s;
+  const double y1 = y0 + s;
+  const auto tx = [&](int edge) {
+    switch (edge) {
+      case 0: return (x0 - ox) * inv_dx;
+      case 1: return (x0 + h - ox) * inv_dx;
+      case 2: return (x1 - h - ox) * inv_dx;
+      default: return (x1 - ox) * inv_dx;
+    }
+  };
+  const auto ty = [&](int edge) {
+    switch (edge) {
+      case 0: return (y0 - oy) * inv_dy;
+      case 1: return (y0 + h - oy) * inv_dy;
+      case 2: return (y1 - h - oy) * inv_dy;
+      default: return (y1 - oy) * inv_dy;
+    }
+  };
+  // The box spanning edges [xl, xh] x [yl, yh]: entered at the later of its two slab
+  // entries (and not before 0), left at the earlier of the exits.
+  double best = kInfinity;
+  const auto box = [&](int xl, int xh, int yl, int yh) {
+    const double in_x = kEastward ? tx(xl) : tx(xh);
+    const double out_x = kEastward ? tx(xh) : tx(xl);
+    const double in_y = kNorthward ? ty(yl) : ty(yh);
+    const double out_y = kNorthward ? ty(yh) : ty(yl);
+    const double t_in = std::max(std::max(0.0, in_x), in_y);
+    const double t_out = std::min(out_x, out_y);
+    if (t_in <= t_out) best = std::min(best, t_in);
+  };
+  if ((mask & kNorth) && (f & kNorth)) box(0, 3, 2, 3);
+  if ((mask & kSouth) && (f & kSouth)) box(0, 3, 0, 1);
+  if ((mask & kEast) && (f & kEast)) box(2, 3, 0, 3);
+  if ((mask & kWest) && (f & kWest)) box(0, 1, 0, 3);
+  if ((mask & kCornerNE) && (f & kCornerNE)) box(2, 3, 2, 3);
+  if ((mask & kCornerNW) && (f & kCornerNW)) box(0, 1, 2, 3);
+  if ((mask & kCornerSW) && (f & kCornerSW)) box(0, 1, 0, 1);
+  if ((mask & kCornerSE) && (f & kCornerSE)) box(2, 3, 0, 1);
+  return best;
+}
+
+template <bool kEastward, bool kNorthward>
 double WallGrid::cast_quadrant(const CastOrigin &origin, double dx, double dy,
                                double max_range_m) const {
   const double s = cell_size_m_;
@@ -202,53 +258,10 @@ double WallGrid::cast_quadrant(const CastOrigin &origin, double dx, double dy,
   const double t_delta_y = s * std::abs(inv_dy);
   double t_max_x = ((cx + (kEastward ? 1 : 0)) * s - ox) * inv_dx;
   double t_max_y = ((cy + (kNorthward ? 1 : 0)) * s - oy) * inv_dy;
-  const double h = half_thickness_m_;
   for (;;) {
     const std::uint8_t f = flags(cx, cy) & mask;
     if (f != 0) {
-      // The same slab arithmetic as entry_distance, (edge - origin) / direction for each of
-      // the cell's four x and four y box edges: 0 the west (south) side, 1 h inside it,
-      // 2 h inside the east (north) side, 3 that side.
-      const double x0 = cx * s;
-      const double y0 = cy * s;
-      const double x1 = x0 + s;
-      const double y1 = y0 + s;
-      const auto tx = [&](int edge) {
-        switch (edge) {
-          case 0: return (x0 - ox) * inv_dx;
-          case 1: return (x0 + h - ox) * inv_dx;
-          case 2: return (x1 - h - ox) * inv_dx;
-          default: return (x1 - ox) * inv_dx;
-        }
-      };
-      const auto ty = [&](int edge) {
-        switch (edge) {
-          case 0: return (y0 - oy) * inv_dy;
-          case 1: return (y0 + h - oy) * inv_dy;
-          case 2: return (y1 - h - oy) * inv_dy;
-          default: return (y1 - oy) * inv_dy;
-        }
-      };
-      // The box spanning edges [xl, xh] x [yl, yh]: entered at the later of its two slab
-      // entries (and not before 0), left at the earlier of the exits.
-      double best = kInfinity;
-      const auto box = [&](int xl, int xh, int yl, int yh) {
-        const double in_x = kEastward ? tx(xl) : tx(xh);
-        const double out_x = kEastward ? tx(xh) : tx(xl);
-        const double in_y = kNorthward ? ty(yl) : ty(yh);
-        const double out_y = kNorthward ? ty(yh) : ty(yl);
-        const double t_in = std::max(std::max(0.0, in_x), in_y);
-        const double t_out = std::min(out_x, out_y);
-        if (t_in <= t_out) best = std::min(best, t_in);
-      };
-      if ((mask & kNorth) && (f & kNorth)) box(0, 3, 2, 3);
-      if ((mask & kSouth) && (f & kSouth)) box(0, 3, 0, 1);
-      if ((mask & kEast) && (f & kEast)) box(2, 3, 0, 3);
-      if ((mask & kWest) && (f & kWest)) box(0, 1, 0, 3);
-      if ((mask & kCornerNE) && (f & kCornerNE)) box(2, 3, 2, 3);
-      if ((mask & kCornerNW) && (f & kCornerNW)) box(0, 1, 2, 3);
-      if ((mask & kCornerSW) && (f & kCornerSW)) box(0, 1, 0, 1);
-      if ((mask & kCornerSE) && (f & kCornerSE)) box(2, 3, 0, 1);
+      const double best = entry_in_cell<kEastward, kNorthward>(f, cx, cy, origin, inv_dx, inv_dy);
       if (best < kInfinity) return best <= max_range_m ? best : kInfinity;
     }
     if (std::min(t_max_x, t_max_y) > max_range_m) return kInfinity;

@@ -108,6 +108,10 @@ class WallGrid {
   // cast_from for a ray with dx, dy != 0 from inside the maze, the signs fixed at compile time.
   template <bool kEastward, bool kNorthward>
   double cast_quadrant(const CastOrigin &origin, double dx, double dy, double max_range_m) const;
+  // Where a ray of that quadrant enters the solid boxes f (flags, those facing it) of cell
+  // (cx, cy): the path length, or infinity when it misses them all.
+  template <bool kEastward, bool kNorthward>
+  double entry_in_cell(std::uint8_t f, int cx, int cy, const CastOrigin &origin, double inv_dx, double inv_dy) const;
   // Calls visit(const Box &) for each solid box of cell (cx, cy) whose flags are in mask.
   template <typename Visit>
   void for_each_box(int cx, int cy, std::uint8_t mask, Visit &&visit) const;
