@@ -17,6 +17,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
+#include "sensing/setups.hpp"
 
 namespace app {
 namespace {
@@ -253,10 +254,15 @@ Json world_overrides_json(const maze::WorldOverrides &w) {
   return j;
 }
 
-Json sensor_json(const mapping::SensorModelOptions &s) {
+// The sensor model as the run used it: p_free and p_occ are the set-up's own numbers where it
+// marks with the course's (pie, bump, depth: "probabilities" says so), else --p-free/--p-occ.
+Json sensor_json(const mapping::SensorModelOptions &s, const sensing::SetUp &setup) {
+  const sensing::MarkProbabilities p = sensing::probabilities_in_effect(setup, s);
   Json j;
-  j["p_free"] = s.p_free;
-  j["p_occ"] = s.p_occ;
+  j["probabilities"] = setup.fixed ? "the model's own (course numbers)" : "--p-free, --p-occ";
+  j["p_free"] = p.p_free;
+  j["p_occ"] = p.p_occ;
+  if (p.p_robot) j["p_robot"] = *p.p_robot;
   j["prior"] = s.prior;
   j["log_base"] = std::string(mapping::to_string(s.base));
   j["clamp"] = s.clamp ? Json::array({s.clamp->min, s.clamp->max}) : Json(nullptr);
@@ -326,7 +332,7 @@ Json options_json(const RunOptions &o, const RunSummary &s) {
   j["threshold"] = or_null(o.threshold);
   j["max_steps"] = s.max_steps;
   j["model"] = model_json(o.model);
-  j["sensor"] = sensor_json(o.sensor);
+  j["sensor"] = sensor_json(o.sensor, sensing::setup(o.model.kind));
   j["range_model"] = range_model_json(o.range_model);
   j["simulation"] = simulation_json(o.simulation);
   j["plan"] = plan_options_json(o.plan);

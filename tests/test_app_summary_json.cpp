@@ -111,3 +111,17 @@ TEST_CASE("summary.json: every option in effect, one object a concern") {
   // Without --max-steps, the limit in effect: 1000 a cell, at least 100000.
   CHECK(run_with_out({}).json.at("options").at("max_steps") == 100000);
 }
+
+TEST_CASE("summary.json: the probabilities a run marked with, the set-up's own where it has them") {
+  const Run pie = run_with_out({"--model", "pie"});
+  CHECK(pie.json["options"]["sensor"]["p_free"] == 0.4);
+  CHECK(pie.json["options"]["sensor"]["p_occ"] == 0.7);
+  CHECK(pie.json["options"]["sensor"]["probabilities"] == "the model's own (course numbers)");
+  const Run depth = run_with_out({"--model", "depth", "--log-base", "10"});
+  CHECK(depth.json["options"]["sensor"]["p_robot"] == 0.3);
+  CHECK(depth.json["options"]["sensor"]["p_occ"] == 0.99999);
+  const Run cone = run_with_out({"--model", "cone", "--p-free", "0.2", "--p-occ", "0.8"});
+  CHECK(cone.json["options"]["sensor"]["p_free"] == 0.2);
+  CHECK(cone.json["options"]["sensor"]["probabilities"] == "--p-free, --p-occ");
+  CHECK_FALSE(cone.json["options"]["sensor"].contains("p_robot"));
+}

@@ -20,7 +20,8 @@ struct SensorModelOptions {
 };
 
 // Throws common::InputError with the option's name and value when the options cannot be
-// used: every p strictly inside (0, 1), p_free < prior < p_occ, clamp min < max, all finite.
+// used: every p strictly inside (0, 1), p_free < prior < p_occ, clamp min < l(prior) < max (a range that excludes
+// the prior would pin every sub-cell at a bound after one update), all finite.
 void validate(const SensorModelOptions &options);
 
 class SensorModel {
