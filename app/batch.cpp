@@ -153,45 +153,87 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<st
   return items;
 }
 
+namespace {
+
+// The goal column: "reached", "not reached", or nothing when the maze has no goal.
+std::string goal_cell(const RunSummary &s) {
+  if (!s.shortest) return "";
+  return s.reached_goal ? "reached" : "not reached";
+}
+
+// The speed-run column: its cells, or nothing when none was made.
+std::string speed_run_cell(const RunSummary &s) { return s.speed_run.time_s ? std::to_string(s.speed_run.cells) : ""; }
+
+}  // namespace
+
+void add_to_totals(BatchTotals &t, const BatchRow &row) {
+  ++t.worlds;
+  if (row.interrupted) ++t.interrupted;
+  if (row.ok) ++t.ok;
+  if (!row.ran) return;
+  ++t.ran;
+  t.moves += row.moves;
+  t.coverage_sum += row.coverage_percent;
+  t.accuracy_sum += row.wall_accuracy_percent;
+  t.run_ms += row.ms;
+  if (!row.goal.empty()) ++t.with_goal;
+  if (row.goal == "reached") ++t.goal_reached;
+}
+
+std::string format_totals(const BatchTotals &t) {
+  const int failed = t.worlds - t.ok - t.interrupted;
+  std::string out = fmt::format("total: {} worlds, {} ok, {} failed", t.worlds, t.ok, failed);
+  if (t.interrupted > 0) out += fmt::format(", {} interrupted", t.interrupted);
+  const double ran = static_cast<double>(t.ran);
+  out += fmt::format("; moves {}; mean coverage {}; mean wall_accuracy {}", t.moves,
+                     percent(t.ran ? t.coverage_sum / ran : 0.0), percent(t.ran ? t.accuracy_sum / ran : 0.0));
+  if (t.with_goal > 0) out += fmt::format("; goal reached {} of {}", t.goal_reached, t.with_goal);
+  return out + fmt::format("; run time {:.0f} ms", t.run_ms);
+}
+
+BatchRow row_of(const BatchItem &item) {
+  BatchRow row;
+  row.world = item.world;
+  row.ran = item.ran;
+  row.ok = item.ok;
+  row.interrupted = item.interrupted;
+  row.error = item.error;
+  if (!item.ran) return row;
+  const RunSummary &s = item.summary;
+  row.size = fmt::format("{}x{}", s.width, s.height);
+  row.moves = s.moves;
+  row.coverage_percent = s.score.coverage_percent();
+  row.wall_accuracy_percent = s.score.wall_accuracy_percent();
+  row.goal = goal_cell(s);
+  row.speed_run = speed_run_cell(s);
+  row.ms = s.wall_time_ms;
+  row.end = std::string(robot::to_string(s.reason));
+  return row;
+}
+
 std::string format_batch_table(const std::vector<BatchItem> &items, double elapsed_ms,
                                const std::vector<std::string> &skipped) {
   std::size_t width = 5;
   for (const BatchItem &item : items) width = std::max(width, item.world.size());
-  std::string out = fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>7}  {}\n", "world", width,
-                                "size", "moves", "coverage", "wall_accuracy", "ms", "end");
-  int ok = 0;
-  int interrupted = 0;
-  long moves = 0;
-  double coverage = 0.0;
-  double accuracy = 0.0;
-  double run_ms = 0.0;
-  std::size_t ran = 0;
+  std::string out = fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>11}  {:>9}  {:>7}  {}\n", "world", width,
+                                "size", "moves", "coverage", "wall_accuracy", "goal", "speed_run", "ms", "end");
+  BatchTotals totals;
   for (const BatchItem &item : items) {
-    if (item.ok) ++ok;
-    if (item.interrupted) ++interrupted;
+    add_to_totals(totals, row_of(item));
     if (!item.ran) {
       out += fmt::format("{:<{}}  {}\n", item.world, width, item.error);
       continue;
     }
     const RunSummary &s = item.summary;
+    const auto dash = [](const std::string &text) { return text.empty() ? std::string("-") : text; };
     const std::string end = s.message.empty() ? std::string(robot::to_string(s.reason))
                                               : fmt::format("{} ({})", robot::to_string(s.reason), s.message);
-    out += fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>7.0f}  {}\n", item.world, width,
+    out += fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>11}  {:>9}  {:>7.0f}  {}\n", item.world, width,
                        fmt::format("{}x{}", s.width, s.height), s.moves,
                        percent(s.score.coverage_percent()), percent(s.score.wall_accuracy_percent()),
-                       s.wall_time_ms, end);
-    ++ran;
-    moves += s.moves;
-    coverage += s.score.coverage_percent();
-    accuracy += s.score.wall_accuracy_percent();
-    run_ms += s.wall_time_ms;
+                       dash(goal_cell(s)), dash(speed_run_cell(s)), s.wall_time_ms, end);
   }
-  const std::size_t failed = items.size() - static_cast<std::size_t>(ok) - static_cast<std::size_t>(interrupted);
-  out += fmt::format("total: {} worlds, {} ok, {} failed", items.size(), ok, failed);
-  if (interrupted > 0) out += fmt::format(", {} interrupted", interrupted);
-  out += fmt::format("; moves {}; mean coverage {}; mean wall_accuracy {}; run time {:.0f} ms; elapsed {:.0f} ms",
-                     moves, percent(ran ? coverage / static_cast<double>(ran) : 0.0),
-                     percent(ran ? accuracy / static_cast<double>(ran) : 0.0), run_ms, elapsed_ms);
+  out += format_totals(totals) + fmt::format("; elapsed {:.0f} ms", elapsed_ms);
   if (!skipped.empty()) {
     constexpr std::size_t kNamed = 3;
     std::string names;
@@ -202,26 +244,27 @@ std::string format_batch_table(const std::vector<BatchItem> &items, double elaps
   return out + "\n";
 }
 
+std::string csv_quoted(const std::string &text) {
+  std::string q = "\"";
+  for (const char c : text) {
+    if (c == '"') q += '"';
+    q += c;
+  }
+  return q + "\"";
+}
+
+std::string format_batch_csv_row(const BatchRow &row) {
+  if (!row.ran) return fmt::format("{},,,,,,,,,{}\n", csv_quoted(row.world), csv_quoted(row.error));
+  return fmt::format("{},{},{},{:.2f},{:.2f},{},{},{:.0f},{},{}\n", csv_quoted(row.world), row.size, row.moves,
+                     row.coverage_percent, row.wall_accuracy_percent, row.goal, row.speed_run, row.ms, row.end,
+                     csv_quoted(row.error));
+}
+
 std::string format_batch_csv(const std::vector<BatchItem> &items) {
-  const auto quoted = [](const std::string &text) {
-    std::string q = "\"";
-    for (const char c : text) {
-      if (c == '"') q += '"';
-      q += c;
-    }
-    return q + "\"";
-  };
-  std::string out = "world,size,moves,coverage,wall_accuracy,ms,end,error\n";
+  std::string out(kBatchCsvHeader);
+  out += '\n';
   for (const BatchItem &item : items) {
-    if (item.interrupted) continue;
-    const RunSummary &s = item.summary;
-    if (!item.ran) {
-      out += fmt::format("{},,,,,,,{}\n", quoted(item.world), quoted(item.error));
-      continue;
-    }
-    out += fmt::format("{},{}x{},{},{:.2f},{:.2f},{:.0f},{},{}\n", quoted(item.world), s.width,
-                       s.height, s.moves, s.score.coverage_percent(), s.score.wall_accuracy_percent(),
-                       s.wall_time_ms, robot::to_string(s.reason), quoted(item.error));
+    if (!item.interrupted) out += format_batch_csv_row(row_of(item));
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/run.hpp"
@@ -45,14 +46,70 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<st
                                  int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
                                  bool (*interrupted)() = nullptr);
 
-// The table: world, size, moves, coverage, wall_accuracy, ms, end (the ending and its
-// reason); a world that did not run has its error instead; then the totals, which name the
-// skipped files.
+// One row of the table and the CSV, as a run made it or a CSV line reads back.
+struct BatchRow {
+  std::string world;
+  bool ran = false;
+  bool ok = false;
+  bool interrupted = false;
+  std::string size;                 // "16x16"
+  long moves = 0;                   // the search's cell-to-cell moves (not the speed run's)
+  double coverage_percent = 0.0;
+  double wall_accuracy_percent = 0.0;
+  std::string goal;                 // "reached", "not reached", or empty: the maze has no goal
+  std::string speed_run;            // the speed run's cells, or empty: none made
+  double ms = 0.0;                  // wall-clock time of the run
+  std::string end;                  // robot::to_string(EndReason)
+  std::string error;
+};
+BatchRow row_of(const BatchItem &item);
+
+// What the totals line counts.
+struct BatchTotals {
+  int worlds = 0;
+  int ok = 0;
+  int interrupted = 0;
+  int ran = 0;
+  long moves = 0;
+  double coverage_sum = 0.0;
+  double accuracy_sum = 0.0;
+  double run_ms = 0.0;
+  int with_goal = 0;
+  int goal_reached = 0;
+};
+void add_to_totals(BatchTotals &totals, const BatchRow &row);
+// "total: 3 worlds, 2 ok, 1 failed; moves 144; mean coverage 100.00%; mean wall_accuracy
+// 100.00%[; goal reached 2 of 2]; run time 812 ms"
+std::string format_totals(const BatchTotals &totals);
+
+// The table: world, size, moves, coverage, wall_accuracy, goal, speed_run (cells), ms, end
+// (the ending and its reason), "-" where a column does not apply; a world that did not run
+// has its error instead; then the totals, the elapsed time, and the skipped files.
 std::string format_batch_table(const std::vector<BatchItem> &items, double elapsed_ms,
                                const std::vector<std::string> &skipped = {});
-// The same as CSV: world,size,moves,coverage,wall_accuracy,ms,end,error; interrupted worlds
-// are left out (the file holds the finished runs).
+
+inline constexpr std::string_view kBatchCsvHeader =
+    "world,size,moves,coverage,wall_accuracy,goal,speed_run,ms,end,error";
+// The same as CSV, kBatchCsvHeader then a line a row, empty where a column does not apply;
+// interrupted worlds are left out (the file holds the finished runs).
 std::string format_batch_csv(const std::vector<BatchItem> &items);
+std::string format_batch_csv_row(const BatchRow &row);
+std::string csv_quoted(const std::string &text);
+
+// --shard K/N: the K-th (1-based) of N contiguous, near-equal parts of the world list, the
+// same on every machine for the same list; parts 1 ... N together are the list, in order.
+// Throws common::InputError unless the text is K/N with 1 <= K <= N.
+struct Shard {
+  int index = 1;  // K
+  int count = 1;  // N
+};
+Shard parse_shard(const std::string &text);
+std::vector<std::string> shard_of(const std::vector<std::string> &worlds, Shard shard);
+
+// `batch merge`: the rows of batch CSVs, in the order of the files and of their lines.
+// Throws common::InputError ("FILE:LINE: error: ...") for a file that cannot be read, a
+// header that is not kBatchCsvHeader, or a line that does not parse.
+std::vector<BatchRow> read_batch_csvs(const std::vector<std::string> &files);
 
 // 130 when interrupted, 0 when every run succeeded, 2 when every world was bad input, else 1.
 int batch_exit_status(const std::vector<BatchItem> &items);

@@ -67,7 +67,9 @@ std::vector<maze::Cell> parse_goals(const std::string &text) {
   for (;;) {
     const std::size_t semicolon = rest.find(';');
     const std::optional<maze::Cell> goal = cell_of(rest.substr(0, semicolon));
-    if (!goal) throw common::InputError(fmt::format("--goal must be X,Y or a list X,Y;X,Y;... (got '{}')", text));
+    if (!goal) {
+      throw common::InputError(fmt::format("--goal must be X,Y, a list X,Y;X,Y;... or centre (got '{}')", text));
+    }
     goals.push_back(*goal);
     if (semicolon == std::string_view::npos) return goals;
     rest.remove_prefix(semicolon + 1);
@@ -124,8 +126,13 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
       "--start", [&overrides](const std::string &text) { parse_start(text, overrides); },
       "X,Y[,HEADING]: start cell, facing N, E, S or W (default the world's start, facing N)");
   command.add_option_function<std::string>(
-      "--goal", [&overrides](const std::string &text) { overrides.goals = parse_goals(text); },
-      "X,Y[;X,Y...]: goal cells, in place of the world's (default the world's)");
+      "--goal",
+      [&overrides](const std::string &text) {
+        overrides.centre_goals = text == "centre" || text == "center";
+        if (!overrides.centre_goals) overrides.goals = parse_goals(text);
+      },
+      "X,Y[;X,Y...] or centre: goal cells, in place of the world's; centre: the maze's centre cells (2x2 on "
+      "an even size, the micromouse convention) (default the world's)");
 }
 
 }  // namespace app

@@ -27,6 +27,9 @@ struct BatchInput {
   std::vector<std::string> worlds;
   int jobs = 0;
   std::string csv;
+  std::string shard;                  // --shard K/N
+  std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
+  std::string merge_out;                // batch merge -o FILE
 };
 
 // "[#########           ] 9/20" on one line of stderr, redrawn in place.
@@ -39,6 +42,33 @@ void draw_progress(std::size_t done, std::size_t total) {
   std::fflush(stderr);
 }
 
+// batch merge: the parts' rows joined into one CSV (-o FILE, else stdout), and the totals
+// recomputed from them (stdout with -o, else stderr).
+void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput> &batch) {
+  CLI::App *merge = batch_command.add_subcommand(
+      "merge", "join the CSVs of batch --shard parts (in the order given) and recompute the totals");
+  merge->add_option("CSV", batch->merge_csvs, "the parts' --csv files, part 1 first")->required();
+  merge->add_option("-o,--out", batch->merge_out, "FILE: write the joined CSV here (default stdout)");
+  merge->callback([batch] {
+    const std::vector<BatchRow> rows = read_batch_csvs(batch->merge_csvs);
+    std::string csv(kBatchCsvHeader);
+    csv += '\n';
+    BatchTotals totals;
+    for (const BatchRow &row : rows) {
+      csv += format_batch_csv_row(row);
+      add_to_totals(totals, row);
+    }
+    const std::string line = format_totals(totals) + "\n";
+    if (batch->merge_out.empty()) {
+      std::cout << csv;
+      std::cerr << line;
+    } else {
+      common::write_file_atomically(batch->merge_out, csv);
+      std::cout << line;
+    }
+  });
+}
+
 }  // namespace
 
 void add_batch_command(CLI::App &cli, CommandContext &context) {
@@ -46,19 +76,29 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   auto batch = std::make_shared<BatchInput>();
   CLI::App *command = cli.add_subcommand(
       "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
-  command->add_option("WORLD", batch->worlds, "maze files or folders")->required();
+  command->add_option("WORLD", batch->worlds, "maze files or folders");
   command->add_option("--jobs", batch->jobs, "N: parallel runs (default all cores)");
   command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
+  command->add_option("--shard", batch->shard,
+                      "K/N: run only the K-th of N contiguous parts of the world list (job arrays; join the "
+                      "parts' CSVs with batch merge)");
+  add_merge_command(*command, batch);
   add_mapping_run_options(*command, *parsed);
+  add_speed_run_option(*command, *parsed);
   command->callback([command, parsed, batch, &context] {
+    if (command->got_subcommand("merge")) return;
+    if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (maze files or folders), or: batch merge CSV...");
     RunOptions options = checked_run_options(*command, *parsed, false);
     options.output.quiet = true;
     print_warnings(options_not_applying(*command, options));
     if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
     const int jobs = batch->jobs > 0 ? batch->jobs
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const WorldList list = expand_worlds(batch->worlds);
-    if (list.worlds.empty()) {
+    WorldList list = expand_worlds(batch->worlds);
+    if (!batch->shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch->shard));
+    if (list.worlds.empty() && !batch->shard.empty()) {
+      fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch->shard);
+    } else if (list.worlds.empty()) {
       throw common::InputError(fmt::format("no world to run: the folders hold no maze file ({} other file{} skipped)",
                                            list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
     }

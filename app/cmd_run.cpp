@@ -25,9 +25,7 @@ namespace {
 // What only `run` takes, besides the exploration options.
 void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
   run.add_flag("--quiet", o.output.quiet, "print only the final map and the summary");
-  run.add_flag("--speed-run", o.plan.speed_run,
-               "after exploring, drive the wavefront path on the learned map back to the start (with "
-               "floodfill: a micromouse speed run)");
+  add_speed_run_option(run, o);
   run.add_option_function<std::string>(
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");

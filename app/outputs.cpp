@@ -351,13 +351,24 @@ void add_plan_keys(const RunOptions &o, const RunSummary &s, Json &j) {
     j["plan_length"] = s.plan->found ? Json{{"subcells", s.plan->length_subcells}, {"cells", s.plan->length_cells}}
                                      : Json("no path");
   }
-  j["explore_time_s"] = o.plan.speed_run ? Json(s.explore_time_s) : Json(nullptr);
+  j["search"] = nullptr;
   j["speed_run"] = nullptr;
-  if (o.plan.speed_run && s.speed_run_time_s) {
-    j["speed_run"] = Json{{"cells", s.speed_run_cells}, {"time_s", *s.speed_run_time_s}};
-  } else if (o.plan.speed_run) {
-    j["speed_run"] = "none";
-  }
+  j["speed_run_turns"] = nullptr;
+  if (!o.plan.speed_run) return;
+  j["search"] = Json{{"moves", s.moves}, {"visited", s.visited}, {"time_s", s.explore_time_s}};
+  const robot::SpeedRun &run = s.speed_run;
+  j["speed_run"] = run.time_s ? Json{{"cells", run.cells}, {"time_s", *run.time_s}, {"return_cells", run.return_cells}}
+                              : Json("none");
+  if (run.time_s) j["speed_run_turns"] = run.turns;
+}
+
+// The start-to-goal shortest paths as the search left them (null when the block has none).
+Json shortest_json(const RunOptions &o, const RunSummary &s) {
+  const bool micromouse = o.strategy == explore::StrategyKind::floodfill || o.plan.speed_run;
+  if (!micromouse || !s.shortest) return nullptr;
+  return Json{{"known_cells", or_null(s.shortest->known_moves)},
+              {"optimistic_cells", or_null(s.shortest->optimistic_moves)},
+              {"proven", s.shortest->proven()}};
 }
 
 }  // namespace
@@ -379,8 +390,10 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   j["steps"] = s.steps;
   j["moves"] = s.moves;
   j["visited"] = s.visited;
-  j["goal"] = o.strategy == explore::StrategyKind::floodfill ? Json(s.reached_goal ? "reached" : "not reached")
-                                                              : Json(nullptr);
+  j["goal"] = o.strategy == explore::StrategyKind::floodfill || o.plan.speed_run
+                  ? Json(s.reached_goal ? "reached" : "not reached")
+                  : Json(nullptr);
+  j["shortest_path"] = shortest_json(o, s);
   j["reachable"] = s.score.reachable_cells;
   j["coverage"] = two_decimals(s.score.coverage_percent());
   j["wall_accuracy"] = two_decimals(s.score.wall_accuracy_percent());

@@ -239,6 +239,7 @@ void check_fit(const RunOptions &options, const maze::Maze &truth, const maze::s
   mapping::validate(controller.geometry, mapping::kDefaultMaxGridBytes);
   if (options.plan.from) require_inside(truth, *options.plan.from, "--from");
   if (options.plan.to) require_inside(truth, *options.plan.to, options.plan.only ? "--to" : "--plan-to");
+  robot::validate(controller);
 }
 
 render::MapStyle map_style(const OutputOptions &output, const mapping::SensorModel &model,
@@ -317,8 +318,8 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   judge_ending(options, summary);
   summary.sim_time_s = result.sim_time_s;
   summary.explore_time_s = result.explore_time_s;
-  summary.speed_run_time_s = result.speed_run_time_s;
-  summary.speed_run_cells = result.speed_run_cells;
+  summary.shortest = result.shortest;
+  summary.speed_run = result.speed_run;
   return summary;
 }
 

@@ -53,10 +53,13 @@ struct RunSummary {
   double wall_time_ms = 0.0;
   bool interrupted = false;             // stopped by Ctrl-C (not by q)
   std::optional<PlanSummary> plan;
-  double explore_time_s = 0.0;
-  std::optional<double> speed_run_time_s;
-  int speed_run_cells = 0;
+  double explore_time_s = 0.0;          // simulated time when the search ended
+  std::optional<explore::ShortestPathProof> shortest;  // start to goal, when the maze has goals
+  robot::SpeedRun speed_run;
 };
+
+// What the summary says of the known shortest path ("105 cells start to goal, proven").
+std::string describe_shortest(const explore::ShortestPathProof &proof);
 
 // Loads options.world with options.world_overrides (its warnings go to stderr) and runs it
 // with run_maze(). The options must be valid (validate()); throws common::InputError for a

@@ -115,6 +115,12 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   add_world_options(command, o.world_overrides);
 }
 
+void add_speed_run_option(CLI::App &command, RunOptions &o) {
+  command.add_flag("--speed-run", o.plan.speed_run,
+                   "after the search, drive the known shortest path from the start to the goal, returning to "
+                   "the start first (a micromouse speed run; with floodfill the path is searched until proven)");
+}
+
 void add_exploration_options(CLI::App &command, RunOptions &o) {
   command.add_option("WORLD", o.world, "maze file (default worlds/lab4x4.txt)");
   add_mapping_run_options(command, o);

@@ -18,6 +18,9 @@ namespace app {
 // A value that cannot be read throws common::InputError naming the option as typed.
 void add_mapping_run_options(CLI::App &command, RunOptions &options);
 
+// --speed-run (run, batch).
+void add_speed_run_option(CLI::App &command, RunOptions &options);
+
 // add_mapping_run_options, with WORLD, --ascii and --unknown (run, compare, plan).
 void add_exploration_options(CLI::App &command, RunOptions &options);
 

@@ -14,6 +14,15 @@ std::string percent(double value) { return fmt::format("{:.2f}%", value); }
 
 }  // namespace
 
+std::string describe_shortest(const explore::ShortestPathProof &proof) {
+  const std::string may = proof.optimistic_moves
+                              ? fmt::format("the unknown sides may allow {}", *proof.optimistic_moves)
+                              : std::string("no path even through the unknown sides");
+  if (!proof.known_moves) return fmt::format("none known ({})", may);
+  if (proof.proven()) return fmt::format("{} cells start to goal, proven", *proof.known_moves);
+  return fmt::format("{} cells start to goal, not proven ({})", *proof.known_moves, may);
+}
+
 std::string format_summary(const RunOptions &options, const RunSummary &s) {
   std::string text;
   auto line = [&text](std::string_view key, const std::string &value) {
@@ -32,9 +41,9 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   line("steps", std::to_string(s.steps));
   line("moves", std::to_string(s.moves));
   line("visited", std::to_string(s.visited));
-  if (options.strategy == explore::StrategyKind::floodfill) {
-    line("goal", s.reached_goal ? "reached" : "not reached");
-  }
+  const bool micromouse = options.strategy == explore::StrategyKind::floodfill || options.plan.speed_run;
+  if (micromouse) line("goal", s.reached_goal ? "reached" : "not reached");
+  if (micromouse && s.shortest) line("shortest_path", describe_shortest(*s.shortest));
   line("reachable", std::to_string(s.score.reachable_cells));
   line("coverage", percent(s.score.coverage_percent()));
   line("wall_accuracy", percent(s.score.wall_accuracy_percent()));
@@ -46,11 +55,11 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
                                       : std::string("no path"));
   }
   if (options.plan.speed_run) {
-    line("explore_time_s", fmt::format("{:.3f}", s.explore_time_s));
-    line("speed_run", s.speed_run_time_s
-                          ? fmt::format("{} cells back to the start in {:.3f} s", s.speed_run_cells,
-                                        *s.speed_run_time_s)
-                          : std::string("none (exploring did not finish, or no path back)"));
+    line("search", fmt::format("{} moves, {} cells visited, {:.3f} s", s.moves, s.visited, s.explore_time_s));
+    const robot::SpeedRun &run = s.speed_run;
+    line("speed_run", run.time_s ? fmt::format("{} cells start to goal in {:.3f} s", run.cells, *run.time_s)
+                                 : std::string("none (the search did not finish, or no known path to the goal)"));
+    if (run.time_s) line("speed_run_turns", std::to_string(run.turns));
   }
   line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
   line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));

@@ -394,7 +394,7 @@ TEST_CASE("batch: Ctrl-C stops the run in flight and starts no other; the CSV ho
   CHECK_FALSE(items[1].ran);
   CHECK(items[1].error == "not run (interrupted by Ctrl-C)");
   CHECK(app::batch_exit_status(items) == 130);
-  CHECK(app::format_batch_csv(items) == "world,size,moves,coverage,wall_accuracy,ms,end,error\n");
+  CHECK(app::format_batch_csv(items) == "world,size,moves,coverage,wall_accuracy,goal,speed_run,ms,end,error\n");
   const std::string table = app::format_batch_table(items, 1.0);
   CHECK(table.find("total: 3 worlds, 0 ok, 0 failed, 3 interrupted;") != std::string::npos);
 }

@@ -1,6 +1,6 @@
 // summary.json holds every key the printed summary block prints, and every option in effect:
-// checked on runs that print the optional keys (--plan-to, --speed-run, floodfill's goal,
-// --threshold), so that a key added to the block and not to the file fails here.
+// checked on runs that print the optional keys (--plan-to, --speed-run, floodfill's goal and
+// shortest path, --threshold), so that a key added to the block and not to the file fails here.
 
 #include <doctest/doctest.h>
 
@@ -78,7 +78,8 @@ TEST_CASE("summary.json: every key of the printed summary, on runs that print th
     }
   }
   // The runs above did print the optional keys.
-  for (const char *key : {"threshold", "goal", "plan", "plan_length", "explore_time_s", "speed_run"}) {
+  for (const char *key : {"threshold", "goal", "shortest_path", "plan", "plan_length", "search", "speed_run",
+                          "speed_run_turns"}) {
     CAPTURE(key);
     CHECK(std::find(seen.begin(), seen.end(), key) != seen.end());
   }

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "explore/shortest_path.hpp"
 #include "explore/visits.hpp"
 
 namespace explore {
@@ -103,7 +104,9 @@ void validate(const ExplorerOptions &o) {
     }
   }
   if (o.kind == StrategyKind::floodfill && o.goals.empty()) {
-    throw common::InputError("--strategy floodfill needs a goal cell (the world has none): give --goal X,Y");
+    throw common::InputError(
+        "--strategy floodfill needs a goal cell (the world has none: no G in a text map, none in a num file): give "
+        "--goal X,Y, or --goal centre for the maze's centre cells");
   }
 }
 
@@ -123,6 +126,7 @@ Explorer::Explorer(const ExplorerOptions &options) : options_(options) {
   if (options_.kind == StrategyKind::floodfill) {
     goal_.assign(cells, 0);
     for (const Cell g : options_.goals) goal_[flat(g)] = 1;
+    target_.assign(cells, 0);
   }
 }
 
@@ -231,16 +235,48 @@ std::optional<Heading> Explorer::next_follower(Cell c, Heading h, const WallQuer
 }
 
 std::optional<Heading> Explorer::next_floodfill(Cell c, Heading h, const WallQuery &walls) {
-  if (goal_[flat(c)] != 0) return std::nullopt;
-  // Flood from the goals over sides not known to be walls, until the robot's cell is reached.
-  new_search();
-  for (const Cell g : options_.goals) {
-    if (seen_[flat(g)] == epoch_) continue;
-    seen_[flat(g)] = epoch_;
-    distance_[flat(g)] = 0;
-    queue_.push_back(g);
+  if (!reached_goal_) {
+    if (goal_[flat(c)] == 0) return flood_towards(goal_, c, h, walls);
+    reached_goal_ = true;
   }
-  bool reached = false;
+  if (prove_shortest_path(options_, walls).proven()) {
+    proven_ = true;
+    return std::nullopt;
+  }
+  if (!mark_unknown_on_optimistic_path(walls)) return std::nullopt;
+  return flood_towards(target_, c, h, walls);
+}
+
+bool Explorer::mark_unknown_on_optimistic_path(const WallQuery &walls) {
+  const MazeSize size{options_.width_cells, options_.height_cells};
+  const auto route = shortest_route(size, options_.start, options_.goals, walls, UnknownSides::open);
+  if (!route) return false;
+  std::fill(target_.begin(), target_.end(), 0);
+  bool any = false;
+  Cell u = options_.start;
+  for (const Heading d : *route) {
+    if (walls(u, d) == SideState::unknown && marks_[flat(u)] != Mark::visited) {
+      target_[flat(u)] = 1;
+      any = true;
+    }
+    u = mapping::neighbour(u, d);
+  }
+  return any;
+}
+
+std::optional<Heading> Explorer::flood_towards(const std::vector<std::uint8_t> &targets, Cell c, Heading h,
+                                               const WallQuery &walls) {
+  // Flood from the targets over sides not known to be walls, until the robot's cell is reached.
+  new_search();
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    if (targets[i] == 0) continue;
+    const Cell t{static_cast<int>(i % static_cast<std::size_t>(options_.width_cells)),
+                 static_cast<int>(i / static_cast<std::size_t>(options_.width_cells))};
+    seen_[i] = epoch_;
+    distance_[i] = 0;
+    queue_.push_back(t);
+  }
+  bool reached = seen_[flat(c)] == epoch_;
   for (std::size_t head = 0; head < queue_.size() && !reached; ++head) {
     const Cell u = queue_[head];
     for (const Heading d : mapping::kHeadings) {
@@ -252,7 +288,7 @@ std::optional<Heading> Explorer::next_floodfill(Cell c, Heading h, const WallQue
       reached = reached || v == c;
     }
   }
-  if (!reached) return std::nullopt;
+  if (!reached || distance_[flat(c)] == 0) return std::nullopt;
   const std::int32_t want = distance_[flat(c)] - 1;
   for (const Heading d : ahead_right_left_back(h)) {
     const Cell n = mapping::neighbour(c, d);

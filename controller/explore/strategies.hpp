@@ -13,14 +13,19 @@
 //              when a side on it turns out closed.
 //   left-wall  keep the left hand on the wall: left, ahead, right, back.
 //   right-wall right, ahead, left, back.
-//   floodfill  micromouse flooding: distances to the goal cells by breadth-first search,
-//              unknown sides taken as open; move to the neighbour one step nearer (ahead,
-//              right, left, back on ties); re-flooded before every move.
+//   floodfill  micromouse search: flooding to the goal, then on until the known path from
+//              the start to the goal is proven shortest (explore/shortest_path.hpp). Flooding:
+//              distances to the target cells by breadth-first search, unknown sides taken as
+//              open; move to the neighbour one step nearer (ahead, right, left, back on
+//              ties); re-flooded before every move. The targets are the goal cells until one
+//              is reached, then the cells not yet visited whose unknown side lies on an
+//              optimistic shortest path from the start (the first N, E, S, W tie).
 //
 // Ending: dfs and frontier when no known-open unvisited cell remains next to a visited one
 // (every reachable cell visited); wall followers when back at the start about to repeat
-// their first move (a full circuit); floodfill on a goal cell, or when no goal is
-// reachable through the sides not known to be walls.
+// their first move (a full circuit); floodfill once the shortest path is proven
+// (proven()), or unproven when no goal is reachable through the sides not known to be walls
+// or an unknown side on the optimistic path belongs to a cell already visited.
 //
 // Cost per move: dfs O(1). frontier O(cells searched), bounded by the visited cells within
 // the distance of the nearest unvisited one, and only when it re-plans. floodfill O(cells)
@@ -73,6 +78,9 @@ class Explorer {
   // Cells recorded as visited so far, and unvisited cells known to be reachable.
   int visited_count() const { return visited_count_; }
   int frontier_count() const { return frontier_count_; }
+  // floodfill: a goal cell was reached, and the search ended with the shortest path proven.
+  bool reached_goal() const { return reached_goal_; }
+  bool proven() const { return proven_; }
 
  private:
   enum class Mark : std::uint8_t { unseen, frontier, visited };
@@ -92,6 +100,11 @@ class Explorer {
   std::optional<mapping::Heading> next_follower(mapping::Cell c, mapping::Heading h, const WallQuery &walls);
   std::optional<mapping::Heading> next_floodfill(mapping::Cell c, mapping::Heading h, const WallQuery &walls);
   bool plan_frontier(mapping::Cell c, const WallQuery &walls);
+  // Marks in target_ the unvisited cells with an unknown side on the optimistic path; false
+  // when there is none (or no such path).
+  bool mark_unknown_on_optimistic_path(const WallQuery &walls);
+  std::optional<mapping::Heading> flood_towards(const std::vector<std::uint8_t> &targets, mapping::Cell c,
+                                                mapping::Heading h, const WallQuery &walls);
 
   ExplorerOptions options_;
   std::vector<Mark> marks_;
@@ -103,6 +116,9 @@ class Explorer {
   std::vector<mapping::Heading> plan_;             // frontier: remaining moves, last first
   std::optional<mapping::Heading> first_move_;     // followers
   std::vector<std::uint8_t> goal_;                 // floodfill: 1 on goal cells
+  std::vector<std::uint8_t> target_;               // floodfill proving: 1 on cells to visit
+  bool reached_goal_ = false;
+  bool proven_ = false;
 
   // Breadth-first search buffers, allocated once; a cell is seen when seen_[i] == epoch_.
   std::vector<std::uint32_t> seen_;

@@ -8,8 +8,8 @@
 
 #include <webots/Robot.hpp>
 
+#include "explore/shortest_path.hpp"
 #include "mapping/walls.hpp"
-#include "plan/wavefront.hpp"
 #include "robot/arrival.hpp"
 #include "robot/senses.hpp"
 
@@ -132,29 +132,34 @@ struct CellController::Impl {
     }
   }
 
-  // Drives the wavefront path on the known-open grid from the robot's cell back to the
-  // start, cell by cell, without mapping.
-  EndReason speed_run() {
-    plan::WavefrontOptions known_free;
-    known_free.unknown_blocked = true;
-    const auto route = plan::wavefront(grid, model, cell, options.start, known_free);
-    if (!route) return EndReason::done;
-    const double started = robot.getTime();
-    int cells = 0;
-    for (const mapping::SubCell s : route->subcells) {
-      const Cell next = mapping::cell_of(s, grid.k());
-      if (next == cell) continue;
-      for (const Heading side : mapping::kHeadings) {
-        if (mapping::neighbour(cell, side) == next) heading = side;
-      }
-      Motion m = drive.turn_to(heading);
+  // Drives a route cell by cell, without mapping; counts the cells driven.
+  Motion follow(const std::vector<Heading> &route, int &cells) {
+    for (const Heading h : route) {
+      Motion m = drive.turn_to(h);
+      heading = h;
       if (m == Motion::ok) m = drive_ahead();
-      if (m != Motion::ok) return ended(m);
+      if (m != Motion::ok) return m;
       ++cells;
       visits.record(cell, heading);
     }
-    speed_run_cells = cells;
-    speed_run_time_s = robot.getTime() - started;
+    return Motion::ok;
+  }
+
+  // The micromouse speed run (options.hpp): back to the start, then the known shortest path
+  // to the goal. Nothing is driven when there is no known path.
+  EndReason speed_run() {
+    const explore::MazeSize size{options.geometry.width_cells, options.geometry.height_cells};
+    const auto back = explore::shortest_route(size, cell, {options.start}, walls, explore::UnknownSides::closed, heading);
+    const auto run = explore::shortest_route(size, options.start, options.goals, walls, explore::UnknownSides::closed,
+                                             back && !back->empty() ? back->back() : heading);
+    if (!back || !run) return EndReason::done;
+    if (const Motion m = follow(*back, speed_result.return_cells); m != Motion::ok) return ended(m);
+    const double started = robot.getTime();
+    int cells = 0;
+    if (const Motion m = follow(*run, cells); m != Motion::ok) return ended(m);
+    speed_result.cells = cells;
+    speed_result.turns = explore::turns(*run);
+    speed_result.time_s = robot.getTime() - started;
     return EndReason::done;
   }
 
@@ -179,8 +184,7 @@ struct CellController::Impl {
   Heading heading = Heading::north;
   std::int64_t steps = 0;
   int moves = 0;
-  std::optional<double> speed_run_time_s;
-  int speed_run_cells = 0;
+  SpeedRun speed_result;
   std::vector<Cell> path;
   std::string message;
   bool ran = false;
@@ -204,11 +208,19 @@ RunResult CellController::run(const RunHooks &hooks) {
   s.hooks = hooks;
   EndReason reason = s.explore();
   const double explore_time_s = s.robot.getTime();
+  const int search_visited = s.visits.count();
+  std::optional<explore::ShortestPathProof> proof;
+  if (!s.options.goals.empty()) {
+    proof = explore::prove_shortest_path(explore::ExplorerOptions{s.options.strategy, s.options.geometry.width_cells,
+                                                                  s.options.geometry.height_cells, s.options.start,
+                                                                  s.options.goals},
+                                         s.walls);
+  }
   if (reason == EndReason::done && s.options.speed_run) reason = s.speed_run();
   if (reason != EndReason::stopped) s.flush_step();
-  return RunResult{reason, std::move(s.message), s.steps, s.moves, s.visits.count(), s.robot.getTime(),
-                   std::move(s.grid), std::move(s.visits), std::move(s.path), explore_time_s, s.speed_run_time_s,
-                   s.speed_run_cells};
+  return RunResult{reason,        std::move(s.message), s.steps,          s.moves,          search_visited,
+                   s.robot.getTime(), std::move(s.grid), std::move(s.visits), std::move(s.path), explore_time_s,
+                   proof,         s.speed_result};
 }
 
 }  // namespace robot

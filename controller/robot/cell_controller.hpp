@@ -6,7 +6,7 @@
 // The loop: scan on arrival and do what the set-up does on arriving (robot/arrival.hpp),
 // report the move, ask the strategy for a heading, turn to it and drive one cell
 // (robot/drive.hpp), again until the strategy has nothing left; then, when asked, the speed
-// run. What it senses with and how a scan reaches the grid: robot/senses.hpp. The
+// run (robot/options.hpp). What it senses with and how a scan reaches the grid: robot/senses.hpp. The
 // controller is told the maze size, cell size, origin, K, start cell and heading, and goal
 // cells - never the walls.
 
@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "explore/shortest_path.hpp"
 #include "explore/visits.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
@@ -74,22 +75,32 @@ struct RunHooks {
   StepObserver on_step;    // after every control step
 };
 
+// The speed run, when one was made (cells > 0 or time_s set).
+struct SpeedRun {
+  int return_cells = 0;          // driven back to the start first (the search ended elsewhere)
+  int cells = 0;                 // from the start to the goal
+  int turns = 0;                 // changes of heading on that path (explore::turns)
+  std::optional<double> time_s;  // simulated seconds from the start to the goal
+};
+
 struct RunResult {
   EndReason reason = EndReason::done;
   std::string message;        // for no_progress: what stalled, where; for stopped: why;
                               // for incomplete: the sides left unknown
   std::int64_t steps = 0;
   int moves = 0;
-  int visited = 0;
+  int visited = 0;                   // cells visited by the search (the speed run maps nothing)
   double sim_time_s = 0.0;
   mapping::OccupancyGrid grid;
   explore::Visits visits;
   std::vector<mapping::Cell> path;  // cells in order of arrival, start first
-  double explore_time_s = 0.0;       // simulated time when exploring ended
-  // Speed run: simulated seconds and cells driven; nothing when none was made (not asked,
-  // exploring did not end "done", or no path back on the learned grid).
-  std::optional<double> speed_run_time_s;
-  int speed_run_cells = 0;
+  double explore_time_s = 0.0;       // simulated time when exploring (the search) ended
+  // When the robot was given goals: the start-to-goal shortest paths on the walls learned
+  // when the search ended, known and optimistic (explore/shortest_path.hpp).
+  std::optional<explore::ShortestPathProof> shortest;
+  // Speed run: time_s is nothing when none was made (not asked, exploring did not end
+  // "done", or no known path to the goal).
+  SpeedRun speed_run;
 };
 
 class CellController {

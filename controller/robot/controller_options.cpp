@@ -86,6 +86,11 @@ void validate(const ControllerOptions &options) {
   explore::validate(explore::ExplorerOptions{options.strategy, options.geometry.width_cells,
                                              options.geometry.height_cells, options.start,
                                              options.goals});
+  if (options.speed_run && options.goals.empty()) {
+    throw common::InputError(
+        "--speed-run drives from the start to a goal (the world has none: no G in a text map, none in a num file): "
+        "give --goal X,Y, or --goal centre for the maze's centre cells");
+  }
   validate(options.motion);
   sensing::validate(options.sensing.range_model);
   if (options.occupied_threshold && !std::isfinite(*options.occupied_threshold)) {

@@ -65,13 +65,15 @@ struct ControllerOptions {
   // --threshold: a sub-cell is occupied when its log-odds >= this (walls the explorer reads);
   // none: occupied when > 0.
   std::optional<float> occupied_threshold;
-  // After exploring (ended "done"), plan a wavefront path on the learned grid from where the
-  // robot is back to the start and drive it (a micromouse speed run; floodfill's use).
+  // After exploring (ended "done"), the micromouse speed run: back to the start if the
+  // search ended elsewhere, then from the start to the nearest goal on the shortest path
+  // through known-open sides (explore/shortest_path.hpp), without mapping. Needs a goal.
   bool speed_run = false;
 };
 
 // Throws common::InputError when an option is unusable: each concern's own validate, and
-// the devices the set-up reads (bumpers, range sensors) present in the description.
+// the devices the set-up reads (bumpers, range sensors) present in the description, and a
+// goal for the speed run.
 void validate(const ControllerOptions &options);
 
 }  // namespace robot

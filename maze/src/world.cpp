@@ -91,6 +91,14 @@ void apply(World &world, const WorldOverrides &o) {
     world.maze.clear_goals();
     for (const Cell g : *o.goals) world.maze.add_goal(g);
   }
+  if (o.centre_goals) {
+    world.maze.clear_goals();
+    const int w = world.maze.width();
+    const int h = world.maze.height();
+    for (int y = (h - 1) / 2; y <= h / 2; ++y) {
+      for (int x = (w - 1) / 2; x <= w / 2; ++x) world.maze.add_goal({x, y});
+    }
+  }
 }
 
 bool default_physical(const Maze &m) {

@@ -30,6 +30,9 @@ struct WorldOverrides {
   std::optional<Cell> start;           // replaces the file's start
   Side start_heading = Side::north;    // with start
   std::optional<std::vector<Cell>> goals;  // replace the file's goals
+  // --goal centre: the goals are the maze's centre cells (the micromouse convention: 2 x 2 on
+  // an even size, a row or column of 2 or one cell on odd ones), in place of the file's.
+  bool centre_goals = false;
 };
 
 // The smallest and largest --cell-size: a cell wider than four default walls, and 1 km.

@@ -1,0 +1,116 @@
+// batch --shard K/N and batch merge (app/batch.hpp): the parts are disjoint and together the
+// whole list, and the merged parts' CSV is a single run's, apart from the times.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "app/batch.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> names(int n) {
+  std::vector<std::string> list;
+  for (int i = 1; i <= n; ++i) list.push_back(fmt::format("w{}", i));
+  return list;
+}
+
+// The CSV with every row's ms column zeroed (the one column that differs between runs).
+std::string without_times(std::vector<app::BatchRow> rows) {
+  std::string csv;
+  for (app::BatchRow &row : rows) {
+    row.ms = 0.0;
+    csv += app::format_batch_csv_row(row);
+  }
+  return csv;
+}
+
+}  // namespace
+
+TEST_CASE("batch --shard: contiguous parts, disjoint, together the list in order") {
+  using L = std::vector<std::string>;
+  CHECK(app::shard_of(names(7), {1, 3}) == L{"w1", "w2"});
+  CHECK(app::shard_of(names(7), {2, 3}) == L{"w3", "w4"});
+  CHECK(app::shard_of(names(7), {3, 3}) == L{"w5", "w6", "w7"});
+  CHECK(app::shard_of(names(2), {1, 4}) == L{});
+  CHECK(app::shard_of(names(2), {2, 4}) == L{"w1"});
+  for (const int n : {1, 2, 5, 16}) {
+    for (const int count : {1, 2, 3, 7, 20}) {
+      L joined;
+      for (int k = 1; k <= count; ++k) {
+        for (const std::string &w : app::shard_of(names(n), {k, count})) joined.push_back(w);
+      }
+      CHECK(joined == names(n));
+    }
+  }
+  CHECK(app::parse_shard("2/8").index == 2);
+  CHECK(app::parse_shard("2/8").count == 8);
+  for (const char *bad : {"0/2", "3/2", "1", "a/b", "1/0", "/", "1/2/3"}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(app::parse_shard(bad), common::InputError);
+  }
+}
+
+TEST_CASE("batch merge: three parts of worlds/ with floodfill and a speed run equal one run's CSV") {
+  app::RunOptions options;
+  options.strategy = explore::StrategyKind::floodfill;
+  options.plan.speed_run = true;
+  options.output.quiet = true;
+  const app::WorldList list = app::expand_worlds({WORLDS_DIR});
+  const std::vector<app::BatchItem> whole = app::run_batch(options, list.worlds, 2, {});
+  const fs::path dir = fs::temp_directory_path() / fmt::format("maze_mapper_shard_{}", ::getpid());
+  fs::create_directories(dir);
+  std::vector<std::string> parts;
+  for (int k = 1; k <= 3; ++k) {
+    const std::vector<std::string> worlds = app::shard_of(list.worlds, {k, 3});
+    parts.push_back((dir / fmt::format("part-{}.csv", k)).string());
+    common::write_file_atomically(parts.back(), app::format_batch_csv(app::run_batch(options, worlds, 1, {})));
+  }
+  const std::vector<app::BatchRow> merged = app::read_batch_csvs(parts);
+  const std::string single = (dir / "single.csv").string();
+  common::write_file_atomically(single, app::format_batch_csv(whole));
+  const std::vector<app::BatchRow> one_run = app::read_batch_csvs({single});
+  fs::remove_all(dir);
+  REQUIRE(merged.size() == list.worlds.size());
+  CHECK(without_times(merged) == without_times(one_run));
+  // The columns say what the runs did: a num world has no goal (a failed row); the text
+  // worlds' goals are reached and their speed runs made.
+  app::BatchTotals totals;
+  for (const app::BatchRow &row : merged) {
+    CAPTURE(row.world);
+    app::add_to_totals(totals, row);
+    if (row.world.ends_with("lab4x4.num")) {
+      CHECK_FALSE(row.ran);
+      CHECK(row.error.find("--strategy floodfill needs a goal cell") != std::string::npos);
+    }
+    if (row.world.ends_with("lab4x4.txt")) {
+      CHECK(row.goal == "reached");
+      CHECK(row.speed_run == "14");
+    }
+  }
+  CHECK(totals.worlds == static_cast<int>(list.worlds.size()));
+  CHECK(totals.with_goal == totals.goal_reached);
+}
+
+TEST_CASE("batch merge: a file that is no batch CSV says where") {
+  const fs::path file = fs::temp_directory_path() / fmt::format("maze_mapper_merge_{}.csv", ::getpid());
+  common::write_file_atomically(file.string(), std::string(app::kBatchCsvHeader) + "\n\"a\",4x4,x,1,1,,,1,done,\"\"\n");
+  std::string diagnostic;
+  try {
+    app::read_batch_csvs({file.string()});
+  } catch (const common::InputError &e) {
+    diagnostic = e.diagnostic();
+  }
+  CHECK(diagnostic == fmt::format("{}:2: error: not a batch CSV row (10 fields: {})", file.string(),
+                                  app::kBatchCsvHeader));
+  fs::remove(file);
+}

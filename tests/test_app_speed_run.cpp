@@ -1,0 +1,85 @@
+// Acceptance of the micromouse search and speed run (issue 19): whole runs with the default
+// sensor noise, floodfill searching until its path is proven shortest, then the speed run
+// from the start to the goal, against a breadth-first search of the true maze done here.
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "app/run.hpp"
+#include "maze/generator.hpp"
+#include "maze/maze.hpp"
+
+namespace {
+
+// The true maze's shortest moves from the start to the nearest goal.
+int bfs_shortest(const maze::Maze &m) {
+  const auto flat = [&](maze::Cell c) { return static_cast<std::size_t>(c.y * m.width() + c.x); };
+  std::vector<int> distance(static_cast<std::size_t>(m.width() * m.height()), -1);
+  std::vector<maze::Cell> queue{m.start()};
+  distance[flat(m.start())] = 0;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const maze::Cell u = queue[head];
+    if (m.is_goal(u)) return distance[flat(u)];
+    for (const maze::Side s : maze::kSides) {
+      if (m.has_wall(u, s)) continue;
+      const maze::Cell v = maze::neighbour(u, s);
+      if (distance[flat(v)] >= 0) continue;
+      distance[flat(v)] = distance[flat(u)] + 1;
+      queue.push_back(v);
+    }
+  }
+  return -1;
+}
+
+// A generated maze with the micromouse goal: the centre 2 x 2.
+maze::Maze micromouse_maze(int size, double loops, std::uint64_t seed) {
+  maze::GeneratorOptions g;
+  g.width = size;
+  g.height = size;
+  g.seed = seed;
+  g.loops = loops;
+  maze::Maze m = maze::generate_maze(g);
+  m.clear_goals();
+  for (const int y : {size / 2 - 1, size / 2}) {
+    for (const int x : {size / 2 - 1, size / 2}) m.add_goal({x, y});
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST_SUITE("acceptance") {
+  TEST_CASE("micromouse speed run: the true shortest path on every maze, with loops and without, K 3 and 5") {
+    app::RunOptions options;
+    options.strategy = explore::StrategyKind::floodfill;
+    options.plan.speed_run = true;
+    options.output.quiet = true;
+    for (const int size : {16, 32}) {
+      for (const double loops : {0.0, 0.2}) {
+        for (const int k : {3, 5}) {
+          for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+            const maze::Maze m = micromouse_maze(size, loops, seed);
+            options.subcells = k;
+            options.simulation.seed = seed;
+            options.world = fmt::format("generated {0}x{0} --loops {1} --seed {2}", size, loops, seed);
+            std::ostringstream sink;
+            const app::RunSummary s = app::run_maze(options, m, sink);
+            CAPTURE(options.world);
+            CAPTURE(k);
+            CAPTURE(s.message);
+            REQUIRE(s.reason == robot::EndReason::done);
+            REQUIRE(s.shortest);
+            CHECK(s.shortest->proven());
+            REQUIRE(s.speed_run.time_s);
+            CHECK(s.speed_run.cells == bfs_shortest(m));
+          }
+        }
+      }
+    }
+  }
+}
