@@ -137,6 +137,7 @@ struct CellController::Impl {
     for (const Heading h : route) {
       Motion m = drive.turn_to(h);
       heading = h;
+      visits.record(cell, heading);  // the map's arrows show the way the speed run went
       if (m == Motion::ok) m = drive_ahead();
       if (m != Motion::ok) return m;
       ++cells;
