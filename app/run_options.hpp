@@ -45,7 +45,7 @@ struct PlanOptions {
   std::optional<mapping::Cell> to;
   plan::WavefrontOptions wavefront;     // --dilate N sub-cells
   bool only = false;                    // `plan`: print only the planned map and the summary
-  bool speed_run = false;               // --speed-run: drive the planned path back to the start
+  bool speed_run = false;               // --speed-run: the micromouse speed run, start to goal (robot/options.hpp)
 };
 
 struct RunOptions {
