@@ -18,6 +18,7 @@ add_golden_test(error_inconsistent_num STATUS 2 STDERR ARGS show tests/data/worl
 # The main job (issue 5): maze runs, byte for byte.
 add_golden_test(run_lab4x4_k3_cell_noise_off ARGS run worlds/lab4x4.txt --noise 0)
 add_golden_test(run_lab4x4_k5_cell ARGS run worlds/lab4x4.txt --subcells 5)
+add_golden_test(run_lab4x4_k9_cell_quiet ARGS run worlds/lab4x4.txt --subcells 9 --quiet)
 add_golden_test(run_lab4x4_k3_ray ARGS run worlds/lab4x4.txt --model ray)
 add_golden_test(run_lab4x4_k5_ray_noise_off ARGS run worlds/lab4x4.txt --model ray --subcells 5 --noise 0)
 add_golden_test(run_lab4x4_seed7_noisy ARGS run worlds/lab4x4.txt --model ray --noise 0.01 --seed 7)
