@@ -60,3 +60,10 @@ add_golden_test(run_lab4x4_floodfill_speed_run ARGS run worlds/lab4x4.txt --stra
 # `robot` alone lists the robots); `plan` with no path found exits 1.
 add_golden_test(demo_list ARGS demo)
 add_golden_test(plan_lab4x4_dilate_no_path STATUS 1 ARGS plan worlds/lab4x4.txt --dilate 1)
+
+# The seeds' labs in their own shape (issue 17): Figure 1's pie-slice update and the lecture's
+# cone sweep, default output and a sonar sweep off-axis.
+add_golden_test(demo_pie_default ARGS demo pie)
+add_golden_test(demo_cone_default ARGS demo cone)
+add_golden_test(demo_cone_sonar_pose ARGS demo cone --sensor sonar --pose 0.5,0.25,30 --range 0.8)
+add_golden_test(demo_pie_bad_readings STATUS 2 STDERR ARGS demo pie --readings 1,2)
