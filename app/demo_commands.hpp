@@ -14,6 +14,8 @@ namespace app {
 
 void add_demo_pie(CLI::App &demo, CommandContext &context);
 void add_demo_cone(CLI::App &demo, CommandContext &context);
+// `map-log LOG.csv [options]` (cmd_map_log.cpp): the bump/depth log homework.
+void add_map_log_command(CLI::App &cli, CommandContext &context);
 
 // "1, 1.5,0.8" -> {1, 1.5, 0.8}; throws common::InputError naming `option`:
 // "--readings item 2 is not a number (got 'x')". Exactly `count` items when count > 0.
