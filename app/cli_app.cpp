@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "demo_commands.hpp"
 
 namespace app {
 
@@ -17,6 +18,7 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   add_batch_command(cli, context);
   add_demo_command(cli, context);
   add_explain_command(cli, context);
+  add_map_log_command(cli, context);
   add_show_command(cli, context);
   add_convert_command(cli, context);
   add_generate_command(cli, context);

@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include "commands.hpp"
+#include "demo_commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
@@ -186,6 +187,8 @@ void add_demo_command(CLI::App &cli, CommandContext &context) {
   CLI::App *demo = cli.add_subcommand("demo", "teaching demos of the log-odds mapping; alone, the list of demos");
   demo->require_subcommand(0, 1);
   add_demo_1d(*demo, context);
+  add_demo_pie(*demo, context);
+  add_demo_cone(*demo, context);
   demo->callback([demo, &context] {
     if (!demo->get_subcommands().empty()) return;
     list_demos(*demo, std::cout);

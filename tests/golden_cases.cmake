@@ -18,6 +18,7 @@ add_golden_test(error_inconsistent_num STATUS 2 STDERR ARGS show tests/data/worl
 # The main job (issue 5): maze runs, byte for byte.
 add_golden_test(run_lab4x4_k3_cell_noise_off ARGS run worlds/lab4x4.txt --noise 0)
 add_golden_test(run_lab4x4_k5_cell ARGS run worlds/lab4x4.txt --subcells 5)
+add_golden_test(run_lab4x4_k9_cell_quiet ARGS run worlds/lab4x4.txt --subcells 9 --quiet)
 add_golden_test(run_lab4x4_k3_ray ARGS run worlds/lab4x4.txt --model ray)
 add_golden_test(run_lab4x4_k5_ray_noise_off ARGS run worlds/lab4x4.txt --model ray --subcells 5 --noise 0)
 add_golden_test(run_lab4x4_seed7_noisy ARGS run worlds/lab4x4.txt --model ray --noise 0.01 --seed 7)
@@ -59,3 +60,14 @@ add_golden_test(run_lab4x4_floodfill_speed_run ARGS run worlds/lab4x4.txt --stra
 # `robot` alone lists the robots); `plan` with no path found exits 1.
 add_golden_test(demo_list ARGS demo)
 add_golden_test(plan_lab4x4_dilate_no_path STATUS 1 ARGS plan worlds/lab4x4.txt --dilate 1)
+
+# The seeds' labs in their own shape (issue 17): Figure 1's pie-slice update and the lecture's
+# cone sweep, default output and a sonar sweep off-axis.
+add_golden_test(demo_pie_default ARGS demo pie)
+add_golden_test(demo_cone_default ARGS demo cone)
+add_golden_test(demo_cone_sonar_pose ARGS demo cone --sensor sonar --pose 0.5,0.25,30 --range 0.8)
+add_golden_test(demo_pie_bad_readings STATUS 2 STDERR ARGS demo pie --readings 1,2)
+add_golden_test(map_log_room_bump ARGS map-log tests/data/logs/room_bump.csv --cells 12,12 --boundary 0,6,0,6 --bump-radius 0.5)
+add_golden_test(map_log_room_depth ARGS map-log tests/data/logs/room_depth.csv --cells 12,12 --boundary 0,6,0,6)
+add_golden_test(map_log_room_depth_25_base_e ARGS map-log tests/data/logs/room_depth.csv --cells 25,25 --boundary 0,6,0,6 --log-base e)
+add_golden_test(map_log_nan STATUS 2 STDERR ARGS map-log tests/data/logs/bad_nan.csv --boundary 0,5,0,5)

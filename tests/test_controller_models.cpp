@@ -74,13 +74,24 @@ TEST_CASE("cell model, K = 3: walls N and W, open E and S, one scan with the def
         "+0.41 -0.85 +0.00\n");
 }
 
-TEST_CASE("cell model, K = 5: the path to each band, corners of walled bands only") {
+TEST_CASE("cell model, K = 5: walled bands whole, the path to each band free") {
   CHECK(one_scan(ModelKind::cell, 5) ==
-        "+0.41 +0.00 +0.41 +0.00 +0.41\n"
-        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.41 +0.41 +0.41 +0.41 +0.41\n"
+        "+0.41 +0.00 -0.85 +0.00 +0.00\n"
         "+0.41 -0.85 -0.85 -0.85 -0.85\n"
-        "+0.00 +0.00 -0.85 +0.00 +0.00\n"
+        "+0.41 +0.00 -0.85 +0.00 +0.00\n"
         "+0.41 +0.00 -0.85 +0.00 +0.00\n");
+}
+
+TEST_CASE("cell model, K = 7: a wall is the whole band at every K; openings only their path") {
+  CHECK(one_scan(ModelKind::cell, 7) ==
+        "+0.41 +0.41 +0.41 +0.41 +0.41 +0.41 +0.41\n"
+        "+0.41 +0.00 +0.00 -0.85 +0.00 +0.00 +0.00\n"
+        "+0.41 +0.00 +0.00 -0.85 +0.00 +0.00 +0.00\n"
+        "+0.41 -0.85 -0.85 -0.85 -0.85 -0.85 -0.85\n"
+        "+0.41 +0.00 +0.00 -0.85 +0.00 +0.00 +0.00\n"
+        "+0.41 +0.00 +0.00 -0.85 +0.00 +0.00 +0.00\n"
+        "+0.41 +0.00 +0.00 -0.85 +0.00 +0.00 +0.00\n");
 }
 
 TEST_CASE("cell model: the world-frame beams are picked whatever the robot's yaw") {

@@ -41,12 +41,12 @@ void mark_cell_side(const OccupancyGrid &grid, Cell c, Heading h, bool wall, Sca
     update.mark_free(grid.index(c, band_middle));
     return;
   }
-  update.mark_occupied(grid.index(c, band_middle));
-  // The band's corners: step from the band middle along the band both ways.
+  // The whole band: the middle and every sub-cell left and right of it (the lab report's
+  // rule, which at K = 3 is the middle and the two corners).
   const bool along_j = di(h) != 0;  // a north/south band runs along j, east/west along i
-  for (const int end : {0, k - 1}) {
-    const LocalSubCell corner = along_j ? LocalSubCell{band_middle.i, end} : LocalSubCell{end, band_middle.j};
-    update.mark_occupied(grid.index(c, corner));
+  for (int n = 0; n < k; ++n) {
+    const LocalSubCell band = along_j ? LocalSubCell{band_middle.i, n} : LocalSubCell{n, band_middle.j};
+    update.mark_occupied(grid.index(c, band));
   }
 }
 

@@ -2,7 +2,7 @@
 // The classroom sub-cell model (`--model cell`, the default set-up; DESIGN §6). Only the
 // robot's own cell is updated. The beams nearest to world N, E, S, W decide, per side, wall
 // or opening:
-//   wall     band middle and the band's two corners  p_occ,
+//   wall     the whole band (its middle and every sub-cell left and right of it)  p_occ,
 //            sub-cells strictly between centre and band middle  p_free
 //   opening  band middle and the sub-cells between centre and it  p_free
 // The centre is always free. A side whose beams are invalid, or split evenly between wall

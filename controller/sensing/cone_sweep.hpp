@@ -1,0 +1,60 @@
+#pragma once
+// The sensor-model lecture's cone sweep (Khepera III; `maze_mapper demo cone`): the second
+// loop of its pseudocode, exactly. Coordinates are grid cells, as the pseudocode's are: the
+// sensor at (x_s, y_s) cells pointing phi (rad, counter-clockwise from +x), reading d cells,
+// beam width sigma (rad, full aperture), relative distance error eps.
+//
+//   r_j = d (1 - eps) + j INC                      while r_j <= d (1 + eps),  INC = 0.25
+//     arc end points at r_j:  x_a = x_s + r_j cos(phi + sigma/2),  y_a = y_s + r_j sin(phi + sigma/2)
+//                             x_b = x_s + r_j cos(phi - sigma/2),  y_b = y_s + r_j sin(phi - sigma/2)
+//     omega_j = (sigma / sqrt((x_a - x_b)^2 + (y_a - y_b)^2)) / 2    (halved "to get rid of speckles")
+//     a_k = -sigma/2 + k omega_j                   while a_k <= sigma/2
+//       objX = x_s + r_j cos(phi + a_k),  objY = y_s + r_j sin(phi + a_k)
+//       mark cell (floor(objX), floor(objY))
+//
+// The steps are counted (r_j = start + j INC), not accumulated, and both "<=" tests allow
+// 1e-9 of rounding, so an end that lands on the bound is swept as the text intends.
+
+#include <utility>
+#include <vector>
+
+namespace sensing {
+
+// The lecture's Khepera III numbers. `rays` is what the maze run's simulated sensor casts
+// across the aperture (the ir-ring and sonar-ring profiles); the sweep itself has no rays.
+struct KheperaSensor {
+  const char *name;
+  double aperture_rad;
+  int rays;
+  double distance_error;  // eps, a fraction of the reading
+};
+inline constexpr KheperaSensor kKheperaIr{"ir", 0.03, 3, 0.03};
+inline constexpr KheperaSensor kKheperaSonar{"sonar", 0.4, 5, 0.066};
+
+inline constexpr double kConeSweepInc = 0.25;  // cells
+
+struct ConeSweepInput {
+  double x_cells = 0.0;
+  double y_cells = 0.0;
+  double phi_rad = 0.0;
+  double d_cells = 0.0;         // > 0
+  double sigma_rad = 0.0;       // > 0
+  double eps = 0.0;             // in [0, 1)
+};
+
+struct ConeSweepStep {
+  double r_cells = 0.0;
+  double xa = 0.0, ya = 0.0, xb = 0.0, yb = 0.0;
+  double omega_rad = 0.0;
+  int angles = 0;  // how many a_k this step swept
+};
+
+struct ConeSweep {
+  std::vector<ConeSweepStep> steps;
+  std::vector<std::pair<int, int>> cells;  // (i, j) marked, each once, sorted by i then j
+};
+
+// The sweep of a valid input (d, sigma > 0, eps in [0, 1), all finite; checked by the caller).
+ConeSweep cone_sweep(const ConeSweepInput &input);
+
+}  // namespace sensing

@@ -1,0 +1,107 @@
+// A pose log on a numCells grid (sensing/log_map.hpp).
+
+#include "sensing/log_map.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+
+namespace sensing {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr int kMaxCells = 2000;
+
+enum Level { occupied = 0, free_cell = 1, ray = 2 };  // lower wins
+
+void require(bool ok, const std::string &message) {
+  if (!ok) throw common::InputError(message);
+}
+
+// Marks gathered for one step: cell index -> strongest level.
+class StepMarks {
+ public:
+  StepMarks(const LogMapOptions &o) : o_(o) {}
+  void mark(double x, double y, Level level) {
+    const double w = (o_.x_end_m - o_.x_start_m) / o_.cells_x;
+    const double h = (o_.y_end_m - o_.y_start_m) / o_.cells_y;
+    const double i = std::floor((x - o_.x_start_m) / w);
+    const double j = std::floor((y - o_.y_start_m) / h);
+    if (!(i >= 0 && i < o_.cells_x && j >= 0 && j < o_.cells_y)) return;
+    const int index = static_cast<int>(j) * o_.cells_x + static_cast<int>(i);
+    const auto [it, added] = marks_.emplace(index, level);
+    if (!added && level < it->second) it->second = level;
+  }
+  const std::map<int, Level> &marks() const { return marks_; }
+
+ private:
+  const LogMapOptions &o_;
+  std::map<int, Level> marks_;
+};
+
+void mark_bumps(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
+  const struct {
+    double offset_rad;
+    bool pressed;
+  } bumpers[] = {{-std::numbers::pi / 4, s.bump_right}, {std::numbers::pi / 4, s.bump_left}, {0.0, s.bump_front}};
+  for (const auto &b : bumpers) {
+    const double a = s.theta_rad + b.offset_rad;
+    marks.mark(s.x_m + o.bump_radius_m * std::cos(a), s.y_m + o.bump_radius_m * std::sin(a),
+               b.pressed ? occupied : free_cell);
+  }
+}
+
+void mark_depth(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
+  const double step = std::min((o.x_end_m - o.x_start_m) / o.cells_x, (o.y_end_m - o.y_start_m) / o.cells_y);
+  for (int n = 0; n < kLogDepthRays; ++n) {
+    const double z = s.depth_m[static_cast<std::size_t>(n)];
+    if (!(z > 0.0 && z < o.depth_max_m)) continue;
+    const double a = s.theta_rad + o.depth_angles_deg[static_cast<std::size_t>(n)] * kDeg;
+    for (int k = 0; k * step < z; ++k) marks.mark(s.x_m + k * step * std::cos(a), s.y_m + k * step * std::sin(a), ray);
+    marks.mark(s.x_m + z * std::cos(a), s.y_m + z * std::sin(a), occupied);
+  }
+}
+
+}  // namespace
+
+void validate(const LogMapOptions &o) {
+  require(o.cells_x >= 1 && o.cells_x <= kMaxCells && o.cells_y >= 1 && o.cells_y <= kMaxCells,
+          fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxCells, o.cells_x, o.cells_y));
+  for (const double v : {o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m}) {
+    require(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
+  }
+  require(o.x_start_m < o.x_end_m, fmt::format("--boundary: XS must be less than XE (got {} and {})", o.x_start_m, o.x_end_m));
+  require(o.y_start_m < o.y_end_m, fmt::format("--boundary: YS must be less than YE (got {} and {})", o.y_start_m, o.y_end_m));
+  require(o.prior > 0.0 && o.prior < 1.0, fmt::format("--prior must be in (0, 1) (got {})", o.prior));
+  require(o.bump_radius_m > 0.0 && std::isfinite(o.bump_radius_m), fmt::format("--bump-radius must be > 0 m (got {})", o.bump_radius_m));
+  require(o.depth_max_m > 0.0 && std::isfinite(o.depth_max_m), fmt::format("--depth-max must be > 0 m (got {})", o.depth_max_m));
+  for (const double a : o.depth_angles_deg) require(std::isfinite(a), "--depth-angles must be nine finite numbers");
+}
+
+LogGrid make_log_grid(const LogMapOptions &o) {
+  LogGrid g;
+  g.cells_x = o.cells_x;
+  g.cells_y = o.cells_y;
+  g.log_odds.assign(static_cast<std::size_t>(o.cells_x * o.cells_y), mapping::log_odds(o.prior, o.base));
+  return g;
+}
+
+void apply_log_step(const LogMapOptions &o, LogSensor sensor, const LogStep &s, LogGrid &grid) {
+  StepMarks marks(o);
+  marks.mark(s.x_m, s.y_m, free_cell);
+  if (sensor == LogSensor::bump) mark_bumps(o, s, marks);
+  if (sensor == LogSensor::depth) mark_depth(o, s, marks);
+  const double l0 = mapping::log_odds(o.prior, o.base);
+  const double increments[] = {mapping::log_odds(kLogOccupiedP, o.base) - l0, mapping::log_odds(kLogFreeP, o.base) - l0,
+                               mapping::log_odds(kLogRayP, o.base) - l0};
+  for (const auto &[index, level] : marks.marks()) {
+    grid.log_odds[static_cast<std::size_t>(index)] += increments[level];
+  }
+}
+
+}  // namespace sensing

@@ -1,0 +1,72 @@
+#pragma once
+// The IR pie-slice update of the Waterloo assignment's Figure 1 (`maze_mapper demo pie`),
+// with the course's rule and nothing more: a plain grid of square cells, corners on
+// multiples of the resolution (the maze run's pie model, with its noise margins, usable range
+// and arc test, is in range_models.hpp).
+//
+//   sensor s at the robot's centre, pointing heading + mount;  reading d;  max range m
+//   d < m: contact   clear slice   |p - s| <= d,          |angle(p - s) - dir| <= beta
+//                    contact slice |p - s| <= d + alpha,  same angles
+//   d >= m: clear    clear slice   |p - s| <= m,          same angles
+//
+// Per sensor and cell, with the cell's four corners and its centre as the points: occupied
+// (l += logit(0.7) = +0.8473) when the sensor is a contact and some point lies in its contact
+// slice but not in its clear slice; otherwise clear (l += logit(0.4) = -0.4055) when some
+// point lies in the clear slice; otherwise no update. Prior 0.5 (l0 = 0), natural log. A
+// point at the sensor itself (within 1e-9 m) lies in every slice of it, so the cells around
+// the robot are cleared by every sensor.
+
+#include <vector>
+
+namespace sensing {
+
+// Figure 1's set-up. Angles in degrees, counter-clockwise positive (mounts: left positive).
+struct PieDemoOptions {
+  double x_m = 1.5;
+  double y_m = 2.5;
+  double heading_deg = 270.0;  // facing south
+  // Six IR sensors from the robot's left to its right, 30 deg apart over its front
+  // (the figure's ring as this program mounts it).
+  std::vector<double> mounts_deg{75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
+  std::vector<double> readings_m{1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
+  double half_angle_deg = 10.0;  // beta
+  double contact_m = 0.1;        // alpha
+  double resolution_m = 0.1;     // cell side
+  double max_range_m = 1.5;      // IR max range: a reading at or above it saw nothing
+};
+
+// Throws common::InputError when a number is not finite, the readings and mounts differ in
+// count or are empty, a reading is negative, beta is not in (0, 90), alpha, the resolution
+// or the max range is not positive, or the slices would span more than 2,000 cells a side.
+void validate(const PieDemoOptions &options);
+
+inline constexpr double kPieDemoOccupiedP = 0.7;
+inline constexpr double kPieDemoClearP = 0.4;
+
+// One sensor's slices in the world (m, deg).
+struct PieDemoSlice {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double heading_deg = 0.0;  // world direction, in [0, 360)
+  double reading_m = 0.0;
+  double clear_m = 0.0;      // where the clear slice ends
+  double contact_m = 0.0;    // where the contact slice ends (contacts only)
+  bool contact = false;
+};
+
+// The slices of a valid set-up, in the sensors' order.
+std::vector<PieDemoSlice> pie_demo_slices(const PieDemoOptions &options);
+
+// One updated cell: column i covers [i r, (i + 1) r] in x, row j [j r, (j + 1) r] in y.
+struct PieDemoCell {
+  int i = 0;
+  int j = 0;
+  double log_odds = 0.0;  // the sum of its (sensor, cell) updates
+  int occupied = 0;       // how many sensors called it occupied
+  int clear = 0;          // how many called it clear
+};
+
+// Every cell some sensor updated, north row first, west to east within a row.
+std::vector<PieDemoCell> pie_demo_update(const PieDemoOptions &options);
+
+}  // namespace sensing
