@@ -397,3 +397,40 @@ TEST_CASE("batch: Ctrl-C stops the run in flight and starts no other; the CSV ho
   const std::string table = app::format_batch_table(items, 1.0);
   CHECK(table.find("total: 3 worlds, 0 ok, 0 failed, 3 interrupted;") != std::string::npos);
 }
+
+TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes none") {
+  const TempDir dir;
+  app::RunOptions options = lab_options();
+  options.output.quiet = false;
+  options.output.out_dir = (dir.path / "out").string();
+  std::ostringstream out;
+  app::run_world(options, out);
+  const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
+  int compared = 0;
+  for (const std::string &line : lines_of(out.str())) {
+    long step = 0;
+    int x = 0;
+    int y = 0;
+    if (std::sscanf(line.c_str(), "step %ld  cell (%d,%d)", &step, &x, &y) != 3) continue;
+    REQUIRE(step >= 1);
+    REQUIRE(static_cast<std::size_t>(step) < csv.size());
+    const std::string &row = csv[static_cast<std::size_t>(step)];
+    CAPTURE(line);
+    CHECK(row.starts_with(std::to_string(step) + ","));
+    std::vector<std::string> fields;
+    std::stringstream fs_in(row);
+    for (std::string f; std::getline(fs_in, f, ',');) fields.push_back(f);
+    REQUIRE(fields.size() == 9);
+    CHECK(fields[5] == std::to_string(x));
+    CHECK(fields[6] == std::to_string(y));
+    ++compared;
+  }
+  CHECK(compared == 30);  // the start and 29 moves
+
+  options.output.quiet = true;
+  options.output.trace = false;
+  options.output.out_dir = (dir.path / "no_trace").string();
+  app::run_world(options, out);
+  CHECK_FALSE(fs::exists(dir.path / "no_trace" / "trace.csv"));
+  CHECK(fs::exists(dir.path / "no_trace" / "map.png"));
+}
