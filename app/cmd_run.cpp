@@ -30,7 +30,11 @@ void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run.add_option("--out", o.output.out_dir,
-                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, summary.json, trace.csv");
+                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv");
+  run.add_option("--snapshots", o.output.snapshots,
+                 "N: with --out, N pictures of the map at equal fractions of the run's steps in "
+                 "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
+  run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv (a row a control step)");
   run.add_flag("--no-color", no_color, "no ANSI colours (default colours when stdout is a terminal)");
   run.add_flag("--animate", o.output.animate, "redraw the map in place as the robot moves");
   run.add_option("--fps", o.output.fps,

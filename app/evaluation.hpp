@@ -27,6 +27,20 @@ struct MapScore {
   double wall_accuracy_percent() const;
 };
 
+// What one scored side says about the map (truth.png draws each):
+//   right           the learned state matches the truth (a wall, or an opening)
+//   missed          a true wall the map lacks (learned open, or never observed)
+//   phantom         a wall the map invented (learned wall, truly open)
+//   unseen_opening  a true opening never observed (counts as wrong, as every unknown side)
+enum class SideVerdict { right, missed, phantom, unseen_opening };
+SideVerdict judge_side(bool true_wall, LearnedSide learned);
+
+// Calls scored(cell, side) once for each side wall_accuracy counts: the sides of reachable
+// cells, a side shared by two reachable cells once (as the south or west cell's north or
+// east side). `reachable` is truth.reachable_from_start().
+void for_each_scored_side(const maze::Maze &truth, const std::vector<bool> &reachable,
+                          const std::function<void(maze::Cell, maze::Side)> &scored);
+
 // visited[y * W + x] says whether the robot stood in cell (x, y); learned(cell, side) is the
 // controller's belief about that side. Costs O(W * H).
 MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,

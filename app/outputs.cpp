@@ -1,7 +1,6 @@
 #include "app/outputs.hpp"
 
 #include <fcntl.h>
-#include <png.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,6 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/truth_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
@@ -47,80 +47,6 @@ void probe_writable(const std::string &dir) {
   if (fd < 0) fail_out(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
   ::close(fd);
   ::unlink(name.c_str());
-}
-
-struct Rgb {
-  unsigned char r, g, b;
-};
-
-class Canvas {
- public:
-  Canvas(int width, int height) : width_(width), height_(height),
-        pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {}
-  void set(int x, int y, Rgb c) {
-    if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-    const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-                            static_cast<std::size_t>(x)) * 3;
-    pixels_[at] = c.r;
-    pixels_[at + 1] = c.g;
-    pixels_[at + 2] = c.b;
-  }
-  void fill(int x0, int y0, int size, Rgb c) {
-    for (int y = y0; y < y0 + size; ++y) {
-      for (int x = x0; x < x0 + size; ++x) set(x, y, c);
-    }
-  }
-  // A line of square dots `thickness` wide between two pixel centres (Bresenham).
-  void line(int x0, int y0, int x1, int y1, int thickness, Rgb c) {
-    const int dx = std::abs(x1 - x0);
-    const int dy = -std::abs(y1 - y0);
-    const int sx = x0 < x1 ? 1 : -1;
-    const int sy = y0 < y1 ? 1 : -1;
-    int err = dx + dy;
-    for (;;) {
-      fill(x0 - thickness / 2, y0 - thickness / 2, thickness, c);
-      if (x0 == x1 && y0 == y1) break;
-      const int e2 = 2 * err;
-      if (e2 >= dy) { err += dy; x0 += sx; }
-      if (e2 <= dx) { err += dx; y0 += sy; }
-    }
-  }
-  int width() const { return width_; }
-  int height() const { return height_; }
-  const std::vector<unsigned char> &pixels() const { return pixels_; }
-
- private:
-  int width_;
-  int height_;
-  std::vector<unsigned char> pixels_;
-};
-
-constexpr Rgb kPathColour{220, 30, 30};
-constexpr Rgb kStartColour{20, 170, 40};
-
-unsigned char grey(float log_odds, float initial, const mapping::SensorModel &model) {
-  if (!mapping::observed(log_odds, initial)) return 128;
-  const double p = model.probability_of(static_cast<double>(log_odds));
-  return static_cast<unsigned char>(std::lround(255.0 * (1.0 - p)));
-}
-
-std::string encode_png(const Canvas &canvas) {
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(canvas.width());
-  image.height = static_cast<png_uint_32>(canvas.height());
-  image.format = PNG_FORMAT_RGB;
-  png_alloc_size_t size = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, canvas.pixels().data(), 0, nullptr)) {
-    throw common::RuntimeFailure(fmt::format("libpng: {}", image.message));
-  }
-  std::string bytes(size, '\0');
-  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, canvas.pixels().data(), 0, nullptr)) {
-    throw common::RuntimeFailure(fmt::format("libpng: {}", image.message));
-  }
-  bytes.resize(size);
-  return bytes;
 }
 
 std::string fixed(double v, int decimals) { return fmt::format("{:.{}f}", v, decimals); }
@@ -186,43 +112,41 @@ std::string map_yaml(const mapping::GridGeometry &geometry, const std::string &i
       fixed(geometry.origin.y_m, 6));
 }
 
-int png_scale(const mapping::GridGeometry &geometry) {
-  const int k = geometry.subcells;
-  const int wanted = (100 + k - 1) / k;
-  const int side = std::max(geometry.width_subcells(), geometry.height_subcells());
-  return std::clamp(4096 / side, 1, wanted);
+MapTones map_tones(const RunOptions &options, const mapping::SensorModel &model) {
+  const sensing::MarkProbabilities p = sensing::probabilities_in_effect(sensing::setup(options.model.kind), options.sensor);
+  MapTones tones;
+  tones.initial_log_odds = static_cast<float>(model.prior_log_odds());
+  if (options.threshold) tones.threshold = static_cast<float>(*options.threshold);
+  tones.occupied_increment = model.increment_for(p.p_occ);
+  tones.free_increment = model.increment_for(p.p_free);
+  return tones;
 }
 
-std::string png_file(const mapping::OccupancyGrid &grid, const mapping::SensorModel &model,
-                     const std::vector<mapping::Cell> &path) {
-  const mapping::GridGeometry &g = grid.geometry();
-  const int scale = png_scale(g);
-  const int w = g.width_subcells();
-  const int h = g.height_subcells();
-  const auto initial = static_cast<float>(model.prior_log_odds());
-  Canvas canvas(w * scale, h * scale);
-  for (int row = 0; row < h; ++row) {
-    for (int x = 0; x < w; ++x) {
-      const unsigned char v = grey(grid.at(mapping::SubCell{x, h - 1 - row}), initial, model);
-      canvas.fill(x * scale, row * scale, scale, Rgb{v, v, v});
+std::string map_caption(const RunOptions &options) {
+  return fmt::format("model {}, K {}", sensing::to_string(options.model.kind), options.subcells);
+}
+
+std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                     const std::string &caption) {
+  return encode_png(map_picture(grid, tones, marks, caption));
+}
+
+std::vector<bool> visited_cells(const explore::Visits &visits) {
+  std::vector<bool> visited(static_cast<std::size_t>(visits.width()) * static_cast<std::size_t>(visits.height()));
+  for (int y = 0; y < visits.height(); ++y) {
+    for (int x = 0; x < visits.width(); ++x) {
+      visited[static_cast<std::size_t>(y) * static_cast<std::size_t>(visits.width()) + static_cast<std::size_t>(x)] =
+          visits.visited({x, y});
     }
   }
-  const int k = g.subcells;
-  const int cell_px = k * scale;
-  const auto centre = [&](mapping::Cell c) {
-    return std::pair{c.x * cell_px + cell_px / 2, (g.height_cells - 1 - c.y) * cell_px + cell_px / 2};
-  };
-  const int thickness = std::max(1, scale / 3);
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    const auto [x0, y0] = centre(path[i - 1]);
-    const auto [x1, y1] = centre(path[i]);
-    canvas.line(x0, y0, x1, y1, thickness, kPathColour);
-  }
-  if (!path.empty()) {
-    const auto [sx, sy] = centre(path.front());
-    canvas.fill(sx - scale / 2, sy - scale / 2, scale, kStartColour);
-  }
-  return encode_png(canvas);
+  return visited;
+}
+
+std::string truth_png_file(const RunOptions &options, const RunFiles &files) {
+  const std::vector<bool> visited = visited_cells(*files.visits);
+  const TruthInput input{files.truth, &visited, files.learned, options.subcells,
+                         fmt::format("truth: {}", map_caption(options))};
+  return encode_png(truth_picture(input));
 }
 
 namespace {
@@ -318,6 +242,8 @@ Json output_json(const OutputOptions &o) {
   j["fps"] = o.fps;
   j["speed"] = o.speed;
   j["step"] = o.step;
+  j["trace"] = o.trace;
+  j["snapshots"] = o.snapshots;
   return j;
 }
 
@@ -405,15 +331,36 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
 }
 
 std::string trace_header() {
-  return "time_s,x_m,y_m,yaw_rad,cell_x,cell_y,action,subcells_updated\n";
+  return "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated\n";
 }
 
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
                       double yaw_rad) {
-  fmt::format_to(std::back_inserter(csv), "{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}\n",
+  fmt::format_to(std::back_inserter(csv), "{},{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}\n", step.step,
                  step.sim_time_s, x_m, y_m, yaw_rad, step.cell.x, step.cell.y,
                  robot::to_string(step.action), step.subcells_updated);
 }
+
+namespace {
+
+void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+  std::error_code ec;
+  fs::create_directory(dir, ec);
+  if (ec) fail_out(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
+  const MapTones tones = map_tones(options, *files.model);
+  const int count = options.output.snapshots;
+  const int digits = std::max(2, static_cast<int>(std::to_string(count).size()));
+  const std::vector<std::int64_t> steps = snapshot_steps(summary.steps, count);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
+    const MapMarks marks{files.history->path_at(steps[i]), files.goals};
+    const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
+    common::write_file_atomically((dir / fmt::format("{:0{}}.png", i + 1, digits)).string(),
+                                  png_file(grid, tones, marks, caption));
+  }
+}
+
+}  // namespace
 
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files) {
@@ -421,9 +368,13 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
   const auto initial = static_cast<float>(files.model->prior_log_odds());
   common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
-  common::write_file_atomically((d / "map.png").string(), png_file(*files.grid, *files.model, *files.path));
+  const MapTones tones = map_tones(options, *files.model);
+  common::write_file_atomically((d / "map.png").string(),
+                                png_file(*files.grid, tones, MapMarks{*files.path, files.goals}, map_caption(options)));
+  common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
-  common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
+  if (options.output.trace) common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
+  if (files.history != nullptr) write_snapshots(d / "snapshots", options, summary, files);
 }
 
 }  // namespace app

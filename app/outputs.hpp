@@ -9,21 +9,28 @@
 //                       of the explorer's walls. (ROS's own 0.65 / 0.196 thresholds would call
 //                       a sub-cell seen once by the classroom model, p 0.6 or 0.3, unknown.)
 //                       map.yaml keeps ROS's thresholds, which read 0/254/205 back exactly.
-//   map.png             the probability grid in grey (255 * (1 - p): white free, black
-//                       occupied; never observed is mid-grey 128), each sub-cell a square of
-//                       png_scale() pixels, the robot's path (cell centres in order of
-//                       arrival) drawn over it in red, the start marked in green. libpng.
+//   map.png             the learned grid in tones a projector survives (dark occupied, light
+//                       free, blue-grey never observed), the path, start, end and goals, and
+//                       a legend strip with a scale bar: app/map_picture.hpp.
+//   truth.png           the true maze, each scored side marked right, missed, phantom or
+//                       unseen, unvisited cells shaded, with the summary's wall_accuracy and
+//                       coverage in the legend: app/truth_picture.hpp.
 //   summary.json        every key of the summary block (format_summary), with typed values
 //                       (null where the block leaves the key out: "goal" without floodfill,
 //                       "plan" without planning, ...), plus "options": every option in
 //                       effect, one object a concern of RunOptions ("max_steps" is the limit
 //                       in effect; a null "noise" is the robot's own).
 //   trace.csv           one row a control step (see trace_header()).
+//   snapshots/NN.png    --snapshots N: map.png as it was after each of snapshot_steps(steps,
+//                       N) (app/grid_history.hpp), 01.png first, the step in the caption.
 // Every file is written to a temporary name in DIR, then renamed.
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "app/grid_history.hpp"
+#include "app/map_picture.hpp"
 #include "app/run.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
@@ -43,17 +50,21 @@ unsigned char pgm_pixel(float log_odds, float initial_log_odds);
 std::string pgm_file(const mapping::OccupancyGrid &grid, float initial_log_odds);
 std::string map_yaml(const mapping::GridGeometry &geometry, const std::string &image_file);
 
-// Pixels per sub-cell in map.png: ceil(100 / K), so a cell is at least 100 px (a 4x4 maze
-// at least 400 px wide), lowered for big mazes so the image stays within 4096 px a side
-// where it can (never below 1).
-int png_scale(const mapping::GridGeometry &geometry);
-std::string png_file(const mapping::OccupancyGrid &grid, const mapping::SensorModel &model,
-                      const std::vector<mapping::Cell> &path);
+// The tones of map.png for this run: its prior, --threshold and the set-up's own p_occ and
+// p_free as increments of `model` (the course's numbers for pie, bump and depth).
+MapTones map_tones(const RunOptions &options, const mapping::SensorModel &model);
+// "model cell, K 3": the legend's first line.
+std::string map_caption(const RunOptions &options);
+// map.png's bytes (app/map_picture.hpp).
+std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                     const std::string &caption);
 
 std::string summary_json(const RunOptions &options, const RunSummary &summary);
 
-// "time_s,x_m,y_m,yaw_rad,cell_x,cell_y,action,subcells_updated\n"; the pose is the true
-// pose from the simulator, the cell the controller's (see robot::StepReport).
+// "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated\n":
+// the control step (1-based, as the console's "step N"), simulated seconds, the true pose from
+// the simulator, the controller's cell (the one arrived in at that step, as the console
+// prints it; see robot::StepReport), what the robot did, and the sub-cells its scan updated.
 std::string trace_header();
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
                       double yaw_rad);
@@ -63,9 +74,20 @@ struct RunFiles {
   const mapping::SensorModel *model = nullptr;
   const std::vector<mapping::Cell> *path = nullptr;
   const std::string *trace_csv = nullptr;
+  std::vector<mapping::Cell> goals;     // the maze's goal cells, marked on the pictures
+  const maze::Maze *truth = nullptr;    // truth.png
+  const explore::Visits *visits = nullptr;
+  std::function<LearnedSide(maze::Cell, maze::Side)> learned;
+  const GridHistory *history = nullptr;  // --snapshots: the run as it went
 };
 
-// Writes the five files into dir (prepared by prepare_output_dir).
+// visited[y * W + x]: whether the robot stood in cell (x, y), as score_map() takes it.
+std::vector<bool> visited_cells(const explore::Visits &visits);
+
+// truth.png's bytes (app/truth_picture.hpp) for this run.
+std::string truth_png_file(const RunOptions &options, const RunFiles &files);
+
+// Writes the six files into dir (prepared by prepare_output_dir).
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <istream>
 #include <optional>
 #include <ostream>
@@ -88,20 +89,17 @@ LearnedSide to_learned(mapping::SideState s) {
   return LearnedSide::unknown;
 }
 
-MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds,
-               std::optional<float> threshold) {
-  std::vector<bool> visited(static_cast<std::size_t>(truth.width()) *
-                            static_cast<std::size_t>(truth.height()));
-  for (int y = 0; y < truth.height(); ++y) {
-    for (int x = 0; x < truth.width(); ++x) {
-      visited[static_cast<std::size_t>(y) * static_cast<std::size_t>(truth.width()) +
-              static_cast<std::size_t>(x)] = result.visits.visited({x, y});
-    }
-  }
-  const auto learned = [&](maze::Cell c, maze::Side s) {
+// The controller's belief about each side of the maze, read from its grid.
+std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result, float initial_log_odds,
+                                                                 std::optional<float> threshold) {
+  return [&result, initial_log_odds, threshold](maze::Cell c, maze::Side s) {
     return to_learned(mapping::side_state(result.grid, initial_log_odds, to_mapping(c), to_heading(s), threshold));
   };
-  return score_map(truth, visited, learned);
+}
+
+MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds,
+               std::optional<float> threshold) {
+  return score_map(truth, visited_cells(result.visits), learned_sides(result, initial_log_odds, threshold));
 }
 
 struct RunState {
@@ -109,6 +107,7 @@ struct RunState {
   bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
   std::string trace;          // trace.csv, when --out
+  std::optional<GridHistory> history;  // --snapshots
 };
 
 // --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
@@ -259,6 +258,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
                        robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
                        const RunControls &controls, RunState &state) {
   const OutputOptions &o = options.output;
+  const bool lidar_only = sensing::setup(options.model.kind).reads_lidar();
   std::optional<ScreenGuard> screen;
   std::optional<Animator> animator;
   if (o.animate) {
@@ -268,8 +268,12 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   robot::RunHooks hooks;
   std::optional<robot::ProgressPrinter> printer;
   if (!o.quiet && !o.animate) printer.emplace(out, style, truth.width() * truth.height());
-  if (printer || animator || o.step) {
+  if (printer || animator || o.step || state.history) {
     hooks.on_move = [&](const robot::MoveReport &report) {
+      if (state.history) {
+        state.history->record(report.step, *report.grid);
+        state.history->arrived(report.step, report.cell);
+      }
       if (printer) (*printer)(report);
       if (animator) {
         const maze::sim::Pose &pose = simulation.pose();
@@ -288,7 +292,9 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
       }
       if (state.quit) return false;
       const maze::sim::Pose &pose = simulation.pose();
-      if (!o.out_dir.empty()) append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad);
+      if (!o.out_dir.empty() && o.trace) append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad);
+      // Only lidar scans are counted in subcells_updated; other sensors' marks may come any step.
+      if (state.history && (step.subcells_updated > 0 || !lidar_only)) state.history->record(step.step, *step.grid);
       if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
       return true;
     };
@@ -348,7 +354,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
-  if (!out_dir.empty()) state.trace = trace_header();
+  if (!out_dir.empty() && options.output.trace) state.trace = trace_header();
+  if (!out_dir.empty() && options.output.snapshots > 0) {
+    state.history.emplace(controller_opts.geometry, style.initial_log_odds);
+  }
   const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
@@ -359,7 +368,11 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   if (!out_dir.empty()) {
-    write_outputs(out_dir, options, summary, RunFiles{&result.grid, &model, &result.path, &state.trace});
+    RunFiles files{&result.grid, &model, &result.path, &state.trace, {}, &truth, &result.visits,
+                   learned_sides(result, style.initial_log_odds, style.threshold),
+                   state.history ? &*state.history : nullptr};
+    for (const maze::Cell goal : truth.goals()) files.goals.push_back(to_mapping(goal));
+    write_outputs(out_dir, options, summary, files);
   }
   if (summary.interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";

@@ -19,10 +19,15 @@ void require_above_zero(const char *option, double value) {
   }
 }
 
+constexpr int kMaxSnapshots = 100;
+
 void validate(const OutputOptions &o) {
   if (o.unknown) validate_unknown(std::string_view(&*o.unknown, 1));
   require_above_zero("--fps", o.fps);
   require_above_zero("--speed", o.speed);
+  if (o.snapshots < 0 || o.snapshots > kMaxSnapshots) {
+    throw common::InputError(fmt::format("--snapshots must be from 1 to {} (got {})", kMaxSnapshots, o.snapshots));
+  }
 }
 
 void validate_run(const RunOptions &o) {
@@ -49,6 +54,7 @@ struct OptionUse {
 bool animating(const RunOptions &o) { return o.output.animate; }
 bool not_animating(const RunOptions &o) { return !o.output.animate; }
 bool planning(const RunOptions &o) { return o.plan.to.has_value() || o.plan.only; }
+bool writing_files(const RunOptions &o) { return !o.output.out_dir.empty(); }
 
 // The run's own rules; the model's are the set-up table's (model_given_options below).
 constexpr OptionUse kOptionUses[] = {
@@ -56,6 +62,8 @@ constexpr OptionUse kOptionUses[] = {
     {"--speed", "without --animate", animating},
     {"--quiet", "with --animate", not_animating},
     {"--dilate", "without --plan-to", planning},
+    {"--snapshots", "without --out", writing_files},
+    {"--no-trace", "without --out", writing_files},
 };
 
 // The sensing::ModelOption bits of the options given: option_name() is "--p-free/--p-occ"

@@ -34,7 +34,9 @@ struct OutputOptions {
   double fps = 30.0;                    // --fps, --animate's frames per second at most
   double speed = 10.0;                  // --speed: simulated seconds per wall-clock second
   bool step = false;                    // --step: wait for Enter (or q) after each cell
-  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, summary.json, trace.csv
+  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, truth.png, summary.json, trace.csv
+  bool trace = true;                    // trace.csv with --out (--no-trace: not written)
+  int snapshots = 0;                    // --snapshots N: N pictures through the run in DIR/snapshots/
 };
 
 // Planning on the learned grid after exploring.
@@ -71,7 +73,7 @@ struct RunOptions {
 // Throws common::InputError naming the first unusable option; each concern's own validate
 // (sensor model, mapping, range models, wavefront, simulation), then the run's: --subcells,
 // --threshold finite, --noise from 0 to 1, --max-steps >= 1, --unknown one printable
-// character but W, --fps and --speed above 0, and the robot (a profile file is read and
+// character but W, --fps and --speed above 0, --snapshots from 0 to 100, and the robot (a profile file is read and
 // checked). What needs the world (cells inside it, the grid's size, the robot's sensors)
 // is checked when the run starts.
 void validate(const RunOptions &options);

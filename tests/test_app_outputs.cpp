@@ -150,17 +150,16 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
         "image: map.pgm\nresolution: 0.333333\norigin: [0.000000, 0.000000, 0.0]\nnegate: 0\n"
         "occupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n");
 
+  // map.png and truth.png: tones and marks in tests/test_app_map_picture.cpp and
+  // tests/test_app_truth_picture.cpp.
   const Png png = read_png(read_all(dir.path / "out" / "map.png"));
-  CHECK(png.width == 12 * 34);
-  CHECK(png.height == 12 * 34);
-  CHECK(png.width >= 400);
-  const std::vector<int> corner = png.at(17, 17);  // NW corner sub-cell: a wall, dark grey
-  CHECK(corner[0] == corner[1]);
-  CHECK(corner[0] < 100);
-  const std::vector<int> path = png.at(1 * 102 + 51, 10 * 34 + 17);  // centre of cell (1,0)... on the path
-  CHECK(path == std::vector<int>{220, 30, 30});
-  const std::vector<int> start = png.at(51, 11 * 34 - 17);  // centre of cell (0,0): the start
-  CHECK(start == std::vector<int>{20, 170, 40});
+  CHECK(png.width == 480);  // 12 * 34 = 408 px of map, widened for the legend
+  CHECK(png.height > 12 * 34);
+  const std::vector<int> corner = png.at(17, 17);  // NW corner sub-cell: a wall, dark
+  CHECK(corner[0] == corner[2]);
+  CHECK(corner[0] <= 70);  // one update of l(0.6) already 70
+  const Png truth = read_png(read_all(dir.path / "out" / "truth.png"));
+  CHECK(truth.width == 480);
 
   const nlohmann::json json = nlohmann::json::parse(read_all(dir.path / "out" / "summary.json"));
   CHECK(json.at("size") == "4x4");
@@ -178,17 +177,17 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
 
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());
-  CHECK(csv[0] == "time_s,x_m,y_m,yaw_rad,cell_x,cell_y,action,subcells_updated");
+  CHECK(csv[0] == "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated");
   // hambot's lidar rotates at 12 Hz: the first scan waits a revolution (3 steps) at rest.
-  CHECK(csv[1] == "0.032,0.5000,0.5000,1.5708,0,0,start,0");
-  CHECK(csv[4] == "0.128,0.5000,0.5000,1.5708,0,0,rest,8");
+  CHECK(csv[1] == "1,0.032,0.5000,0.5000,1.5708,0,0,start,0");
+  CHECK(csv[4] == "4,0.128,0.5000,0.5000,1.5708,0,0,rest,8");
   std::size_t updated = 0;
   for (std::size_t i = 1; i < csv.size(); ++i) updated += std::stoul(csv[i].substr(csv[i].rfind(',') + 1));
   CHECK(static_cast<std::int64_t>(csv.size()) - 1 == summary.steps);
   CHECK(updated > 0);
 
-  // Nothing but the five files (no temporaries).
-  CHECK(std::distance(fs::directory_iterator(dir.path / "out"), fs::directory_iterator()) == 5);
+  // Nothing but the six files (no temporaries).
+  CHECK(std::distance(fs::directory_iterator(dir.path / "out"), fs::directory_iterator()) == 6);
 }
 
 TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {
@@ -397,4 +396,41 @@ TEST_CASE("batch: Ctrl-C stops the run in flight and starts no other; the CSV ho
   CHECK(app::format_batch_csv(items) == "world,size,moves,coverage,wall_accuracy,goal,speed_run,ms,end,error\n");
   const std::string table = app::format_batch_table(items, 1.0);
   CHECK(table.find("total: 3 worlds, 0 ok, 0 failed, 3 interrupted;") != std::string::npos);
+}
+
+TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes none") {
+  const TempDir dir;
+  app::RunOptions options = lab_options();
+  options.output.quiet = false;
+  options.output.out_dir = (dir.path / "out").string();
+  std::ostringstream out;
+  app::run_world(options, out);
+  const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
+  int compared = 0;
+  for (const std::string &line : lines_of(out.str())) {
+    long step = 0;
+    int x = 0;
+    int y = 0;
+    if (std::sscanf(line.c_str(), "step %ld  cell (%d,%d)", &step, &x, &y) != 3) continue;
+    REQUIRE(step >= 1);
+    REQUIRE(static_cast<std::size_t>(step) < csv.size());
+    const std::string &row = csv[static_cast<std::size_t>(step)];
+    CAPTURE(line);
+    CHECK(row.starts_with(std::to_string(step) + ","));
+    std::vector<std::string> fields;
+    std::stringstream fs_in(row);
+    for (std::string f; std::getline(fs_in, f, ',');) fields.push_back(f);
+    REQUIRE(fields.size() == 9);
+    CHECK(fields[5] == std::to_string(x));
+    CHECK(fields[6] == std::to_string(y));
+    ++compared;
+  }
+  CHECK(compared == 30);  // the start and 29 moves
+
+  options.output.quiet = true;
+  options.output.trace = false;
+  options.output.out_dir = (dir.path / "no_trace").string();
+  app::run_world(options, out);
+  CHECK_FALSE(fs::exists(dir.path / "no_trace" / "trace.csv"));
+  CHECK(fs::exists(dir.path / "no_trace" / "map.png"));
 }

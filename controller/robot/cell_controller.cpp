@@ -72,6 +72,7 @@ struct CellController::Impl {
     if (!has_pending) return true;
     has_pending = false;
     pending.subcells_updated = senses.take_lidar_updates();
+    pending.cell = cell;  // the cell arrived in at this step, as on_move reported it
     return hooks.on_step(pending);
   }
 

@@ -1,0 +1,57 @@
+#pragma once
+// The run as it went, for pictures part-way through it (--snapshots): the sub-cells each
+// recorded step changed, and the cells the robot arrived in, so that the grid and the path
+// after any step can be rebuilt when the run is over.
+//
+// record() compares the grid with its own copy of the last recorded state: O(W * H * K * K)
+// a call, and 16 bytes kept a changed sub-cell. A change is dated by the call that first sees
+// it, so the run calls it after every step that may have changed the grid.
+
+#include <cstdint>
+#include <vector>
+
+#include "mapping/grid_types.hpp"
+#include "mapping/occupancy_grid.hpp"
+
+namespace app {
+
+class GridHistory {
+ public:
+  // Starts from a grid of this geometry with every sub-cell at initial_log_odds, as the
+  // controller's is before the first step.
+  GridHistory(const mapping::GridGeometry &geometry, float initial_log_odds);
+
+  // Notes the sub-cells that differ from the last recorded state, as changed at `step`.
+  void record(std::int64_t step, const mapping::OccupancyGrid &grid);
+  // Notes that the robot arrived in `cell` at `step` (the start at step 0 or its first step).
+  void arrived(std::int64_t step, mapping::Cell cell);
+
+  // The grid as it was after `step`: every change recorded at a step <= `step`.
+  mapping::OccupancyGrid grid_at(std::int64_t step) const;
+  // The cells arrived in up to `step`, in order.
+  std::vector<mapping::Cell> path_at(std::int64_t step) const;
+
+  std::size_t changes() const { return changes_.size(); }
+
+ private:
+  struct Change {
+    std::int64_t step;
+    std::uint32_t index;
+    float value;
+  };
+  struct Arrival {
+    std::int64_t step;
+    mapping::Cell cell;
+  };
+  mapping::GridGeometry geometry_;
+  float initial_log_odds_;
+  std::vector<float> last_;
+  std::vector<Change> changes_;
+  std::vector<Arrival> arrivals_;
+};
+
+// The steps of N snapshots at equal fractions of a run of `steps` steps: i * steps / N
+// rounded down, for i = 1 ... N, the last one `steps` itself (N = 3 gives 1/3, 2/3, end).
+std::vector<std::int64_t> snapshot_steps(std::int64_t steps, int count);
+
+}  // namespace app

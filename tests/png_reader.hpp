@@ -1,0 +1,54 @@
+#pragma once
+// The tests' readers of the pictures and files run --out writes: libpng's own decoder, not
+// the program's encoder, reads a PNG back into RGB pixels.
+#include <doctest/doctest.h>
+
+#include <png.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace test_png {
+
+inline std::string read_all(const std::filesystem::path &path) {
+  std::string bytes(static_cast<std::size_t>(std::filesystem::file_size(path)), '\0');
+  std::FILE *file = std::fopen(path.c_str(), "rb");
+  REQUIRE(file != nullptr);
+  const std::size_t read = std::fread(bytes.data(), 1, bytes.size(), file);
+  std::fclose(file);
+  REQUIRE(read == bytes.size());
+  return bytes;
+}
+
+struct Png {
+  int width = 0;
+  int height = 0;
+  std::vector<unsigned char> rgb;
+  std::vector<int> at(int x, int y) const {
+    REQUIRE(x >= 0);
+    REQUIRE(y >= 0);
+    REQUIRE(x < width);
+    REQUIRE(y < height);
+    const auto i = static_cast<std::size_t>((y * width + x) * 3);
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+inline Png read_png(const std::string &bytes) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  REQUIRE(png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()) != 0);
+  image.format = PNG_FORMAT_RGB;
+  Png png;
+  png.width = static_cast<int>(image.width);
+  png.height = static_cast<int>(image.height);
+  png.rgb.resize(PNG_IMAGE_SIZE(image));
+  REQUIRE(png_image_finish_read(&image, nullptr, png.rgb.data(), 0, nullptr) != 0);
+  return png;
+}
+
+}  // namespace test_png

@@ -1,0 +1,127 @@
+// truth.png read back by libpng: the colour at the middle of every scored side, counted,
+// gives the summary's wall_accuracy, and the shading of the cells its coverage.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/evaluation.hpp"
+#include "app/map_picture.hpp"
+#include "app/run.hpp"
+#include "app/truth_picture.hpp"
+#include "png_reader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using test_png::Png;
+
+std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
+
+struct Tally {
+  int right = 0;
+  int missed = 0;
+  int phantom = 0;
+  int unseen = 0;
+  int sides() const { return right + missed + phantom + unseen; }
+};
+
+// lab4x4's 16 cells are all reachable: the scored sides are every cell's north and east
+// side and the south and west edge of the maze.
+Tally tally_sides(const Png &png, int cell_px, int margin) {
+  Tally t;
+  const auto count = [&](int x, int y) {
+    const std::vector<int> p = png.at(x, y);
+    if (p == rgb(app::kRightWallColour)) ++t.right;
+    else if (p == rgb(app::kMissedColour)) ++t.missed;
+    else if (p == rgb(app::kPhantomColour)) ++t.phantom;
+    else if (p == rgb(app::kUnseenColour)) ++t.unseen;
+    else ++t.right;  // no bar: an opening the map learned as open
+  };
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const int left = margin + x * cell_px;
+      const int top = margin + (3 - y) * cell_px;
+      count(left + cell_px / 2, top);            // north
+      count(left + cell_px, top + cell_px / 2);  // east
+      if (y == 0) count(left + cell_px / 2, top + cell_px);
+      if (x == 0) count(left, top + cell_px / 2);
+    }
+  }
+  return t;
+}
+
+int visited_cells(const Png &png, int cell_px, int margin) {
+  int visited = 0;
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const std::vector<int> p = png.at(margin + x * cell_px + 2 * margin, margin + (3 - y) * cell_px + 2 * margin);
+      if (p == std::vector<int>{255, 255, 255}) ++visited;
+      else CHECK(p == rgb(app::kUnvisitedTone));
+    }
+  }
+  return visited;
+}
+
+struct Case {
+  const char *name;
+  explore::StrategyKind strategy;
+  std::int64_t max_steps;
+};
+
+}  // namespace
+
+TEST_CASE("a side's verdict: right, missed, phantom or an unseen opening") {
+  using app::LearnedSide;
+  using app::SideVerdict;
+  CHECK(app::judge_side(true, LearnedSide::wall) == SideVerdict::right);
+  CHECK(app::judge_side(false, LearnedSide::open) == SideVerdict::right);
+  CHECK(app::judge_side(true, LearnedSide::open) == SideVerdict::missed);
+  CHECK(app::judge_side(true, LearnedSide::unknown) == SideVerdict::missed);
+  CHECK(app::judge_side(false, LearnedSide::wall) == SideVerdict::phantom);
+  CHECK(app::judge_side(false, LearnedSide::unknown) == SideVerdict::unseen_opening);
+}
+
+TEST_CASE("truth.png: the sides' colours count to the summary's wall_accuracy, the cells to its coverage") {
+  const Case cases[] = {{"floodfill", explore::StrategyKind::floodfill, 0},
+                        {"500 steps", explore::StrategyKind::dfs, 500},
+                        {"done", explore::StrategyKind::dfs, 0}};
+  for (const Case &c : cases) {
+    CAPTURE(c.name);
+    const fs::path dir = fs::temp_directory_path() / fmt::format("maze_mapper_truth_{}_{}", ::getpid(), c.max_steps);
+    fs::remove_all(dir);
+    app::RunOptions o;
+    o.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+    o.output.quiet = true;
+    o.strategy = c.strategy;
+    if (c.max_steps > 0) o.max_steps = c.max_steps;
+    o.output.out_dir = dir.string();
+    std::ostringstream out;
+    const app::RunSummary summary = app::run_world(o, out);
+    const nlohmann::json json = nlohmann::json::parse(test_png::read_all(dir / "summary.json"));
+    const Png png = test_png::read_png(test_png::read_all(dir / "truth.png"));
+    fs::remove_all(dir);
+    const int cell_px = 102;
+    const int margin = app::truth_side_px(cell_px);
+    CHECK(margin == 10);
+    const Tally t = tally_sides(png, cell_px, margin);
+    CHECK(t.sides() == 40);
+    CHECK(static_cast<std::size_t>(t.right) == summary.score.sides_correct);
+    CHECK(json.at("wall_accuracy") == std::round(10000.0 * t.right / t.sides()) / 100.0);
+    CHECK(json.at("coverage") == std::round(10000.0 * visited_cells(png, cell_px, margin) / 16.0) / 100.0);
+    if (c.max_steps == 500) {
+      CHECK(t.unseen > 0);
+      CHECK(t.missed > 0);
+    }
+    if (c.strategy == explore::StrategyKind::floodfill) CHECK(json.at("coverage") == 93.75);
+  }
+}
