@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "png_reader.hpp"
 #include "app/batch.hpp"
 #include "app/outputs.hpp"
 #include "app/run.hpp"
@@ -94,29 +95,8 @@ Pgm read_pgm(const std::string &bytes) {
   return pgm;
 }
 
-struct Png {
-  int width = 0;
-  int height = 0;
-  std::vector<unsigned char> rgb;
-  std::vector<int> at(int x, int y) const {
-    const auto i = static_cast<std::size_t>((y * width + x) * 3);
-    return {rgb[i], rgb[i + 1], rgb[i + 2]};
-  }
-};
-
-Png read_png(const std::string &bytes) {
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  REQUIRE(png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()) != 0);
-  image.format = PNG_FORMAT_RGB;
-  Png png;
-  png.width = static_cast<int>(image.width);
-  png.height = static_cast<int>(image.height);
-  png.rgb.resize(PNG_IMAGE_SIZE(image));
-  REQUIRE(png_image_finish_read(&image, nullptr, png.rgb.data(), 0, nullptr) != 0);
-  return png;
-}
+using test_png::Png;
+using test_png::read_png;
 
 int g_polls = 0;
 bool interrupt_after_100_steps() { return ++g_polls > 100; }

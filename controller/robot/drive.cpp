@@ -14,18 +14,13 @@
 
 #include "common/angles.hpp"
 #include "common/error.hpp"
+#include "robot/require_device.hpp"
 
 namespace robot {
 namespace {
 
 using mapping::Heading;
 using mapping::Point;
-
-template <typename Device>
-Device *require(Device *device, const std::string &name) {
-  if (device == nullptr) throw common::InputError(fmt::format("the robot has no device \"{}\"", name));
-  return device;
-}
 
 // Counts consecutive steps in which a value stays within epsilon of where it last moved.
 class StallWatch {
@@ -172,11 +167,11 @@ class CreepLeg {
 }  // namespace
 
 WebotsChassis::WebotsChassis(webots::Robot &robot, const DeviceNames &d)
-    : left_(require(robot.getMotor(d.left_motor), d.left_motor)),
-      right_(require(robot.getMotor(d.right_motor), d.right_motor)),
-      left_encoder_(require(robot.getPositionSensor(d.left_encoder), d.left_encoder)),
-      right_encoder_(require(robot.getPositionSensor(d.right_encoder), d.right_encoder)),
-      imu_(require(robot.getInertialUnit(d.imu), d.imu)),
+    : left_(require_device(robot.getMotor(d.left_motor), d.left_motor)),
+      right_(require_device(robot.getMotor(d.right_motor), d.right_motor)),
+      left_encoder_(require_device(robot.getPositionSensor(d.left_encoder), d.left_encoder)),
+      right_encoder_(require_device(robot.getPositionSensor(d.right_encoder), d.right_encoder)),
+      imu_(require_device(robot.getInertialUnit(d.imu), d.imu)),
       gps_(d.gps.empty() ? nullptr : robot.getGPS(d.gps)) {}  // Webots warns about an unknown name
 
 void WebotsChassis::enable(int time_step_ms) {

@@ -10,20 +10,12 @@
 #include <webots/TouchSensor.hpp>
 
 #include "common/error.hpp"
+#include "robot/require_device.hpp"
 
 namespace robot {
-namespace {
 
 using mapping::Cell;
 using mapping::Point;
-
-template <typename Device>
-Device *require(Device *device, const std::string &name) {
-  if (device == nullptr) throw common::InputError(fmt::format("the robot has no device \"{}\"", name));
-  return device;
-}
-
-}  // namespace
 
 Senses::Senses(webots::Robot &robot, const ControllerOptions &options, const Drive &drive,
                mapping::OccupancyGrid &grid, const mapping::SensorModel &model)
@@ -34,12 +26,12 @@ Senses::Senses(webots::Robot &robot, const ControllerOptions &options, const Dri
       model_(model),
       filter_(options.scan_filter) {
   if (setup_.reads_lidar()) {
-    lidar_ = require(robot.getLidar(options.devices.lidar), options.devices.lidar);
+    lidar_ = require_device(robot.getLidar(options.devices.lidar), options.devices.lidar);
   } else if (setup_.reads_bumpers()) {
-    for (const BumperMount &b : options.sensing.bumpers) bumpers_.push_back(require(robot.getTouchSensor(b.name), b.name));
+    for (const BumperMount &b : options.sensing.bumpers) bumpers_.push_back(require_device(robot.getTouchSensor(b.name), b.name));
   } else {
     for (const RangeSensorMount &r : options.sensing.ranges) {
-      range_sensors_.push_back(require(robot.getDistanceSensor(r.name), r.name));
+      range_sensors_.push_back(require_device(robot.getDistanceSensor(r.name), r.name));
     }
   }
   if (setup_.make_update != nullptr) leveled_.emplace(setup_.make_update(options.sensor));
