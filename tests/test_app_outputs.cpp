@@ -27,15 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_all(const fs::path &path) {
-  std::string bytes(static_cast<std::size_t>(fs::file_size(path)), '\0');
-  std::FILE *file = std::fopen(path.c_str(), "rb");
-  REQUIRE(file != nullptr);
-  const std::size_t read = std::fread(bytes.data(), 1, bytes.size(), file);
-  std::fclose(file);
-  REQUIRE(read == bytes.size());
-  return bytes;
-}
+using test_png::read_all;
 
 // The lines of a text, without their '\n'.
 std::vector<std::string> lines_of(const std::string &text) {

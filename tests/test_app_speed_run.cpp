@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "true_shortest.hpp"
 #include "app/run.hpp"
 #include "maze/generator.hpp"
 #include "maze/maze.hpp"
@@ -18,22 +19,7 @@ namespace {
 
 // The true maze's shortest moves from the start to the nearest goal.
 int bfs_shortest(const maze::Maze &m) {
-  const auto flat = [&](maze::Cell c) { return static_cast<std::size_t>(c.y * m.width() + c.x); };
-  std::vector<int> distance(static_cast<std::size_t>(m.width() * m.height()), -1);
-  std::vector<maze::Cell> queue{m.start()};
-  distance[flat(m.start())] = 0;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const maze::Cell u = queue[head];
-    if (m.is_goal(u)) return distance[flat(u)];
-    for (const maze::Side s : maze::kSides) {
-      if (m.has_wall(u, s)) continue;
-      const maze::Cell v = maze::neighbour(u, s);
-      if (distance[flat(v)] >= 0) continue;
-      distance[flat(v)] = distance[flat(u)] + 1;
-      queue.push_back(v);
-    }
-  }
-  return -1;
+  return test_maze::true_shortest_moves(m, m.start(), [&](maze::Cell c) { return m.is_goal(c); });
 }
 
 // A generated maze with the micromouse goal: the centre 2 x 2.

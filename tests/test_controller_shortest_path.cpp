@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "true_shortest.hpp"
 #include "explore/shortest_path.hpp"
 #include "explore/strategies.hpp"
 #include "maze/generator.hpp"
@@ -150,24 +151,9 @@ TEST_CASE("shortest_route: straight on first, then N, E, S, W; turns") {
 
 namespace {
 
-// The true maze's shortest start-to-goal moves, by a breadth-first search of its own.
+// The true maze's shortest moves from `from` to `goal` (tests/true_shortest.hpp).
 int true_shortest(const maze::Maze &m, maze::Cell from, maze::Cell goal) {
-  const auto flat = [&](maze::Cell c) { return static_cast<std::size_t>(c.y * m.width() + c.x); };
-  std::vector<int> distance(static_cast<std::size_t>(m.width() * m.height()), -1);
-  std::vector<maze::Cell> queue{from};
-  distance[flat(from)] = 0;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const maze::Cell u = queue[head];
-    if (u.x == goal.x && u.y == goal.y) return distance[flat(u)];
-    for (const maze::Side s : maze::kSides) {
-      if (m.has_wall(u, s)) continue;
-      const maze::Cell v = maze::neighbour(u, s);
-      if (distance[flat(v)] >= 0) continue;
-      distance[flat(v)] = distance[flat(u)] + 1;
-      queue.push_back(v);
-    }
-  }
-  return -1;
+  return test_maze::true_shortest_moves(m, from, [&](maze::Cell c) { return c.x == goal.x && c.y == goal.y; });
 }
 
 }  // namespace
