@@ -30,13 +30,22 @@ void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run.add_option("--out", o.output.out_dir,
-                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv");
+                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
   run.add_option("--snapshots", o.output.snapshots,
                  "N: with --out, N pictures of the map at equal fractions of the run's steps in "
                  "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
   run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv (a row a control step)");
+  run.add_flag("--no-replay{false}", o.output.replay,
+               "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
   run.add_flag("--no-color", no_color, "no ANSI colours (default colours when stdout is a terminal)");
-  run.add_flag("--animate", o.output.animate, "redraw the map in place as the robot moves");
+  run.add_flag("--animate", o.output.animate,
+               "redraw the map in place as the robot moves (standard output must be a terminal)");
+  CLI::Option *narrow = run.add_flag_callback(
+      "--narrow", [&o] { o.output.subcell_columns = 1; },
+      "one column a sub-cell, the classroom look (default when standard output is not a terminal)");
+  run.add_flag_callback("--wide", [&o] { o.output.subcell_columns = 2; },
+                        "two columns a sub-cell, the maze at its true aspect (default in a terminal the map fits)")
+      ->excludes(narrow);
   run.add_option("--fps", o.output.fps,
                  fmt::format("--animate: frames per second, at most (default {:g})", o.output.fps));
   run.add_option("--speed", o.output.speed,
@@ -108,6 +117,11 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
     if (context.run_parse_only != nullptr) {
       *context.run_parse_only = options;
       return;
+    }
+    if (options.output.animate && !is_terminal(STDOUT_FILENO)) {
+      throw common::InputError(
+          "--animate redraws a terminal in place and standard output is not one; without --animate the run "
+          "prints the map at each new cell");
     }
     print_warnings(warnings);
     options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
