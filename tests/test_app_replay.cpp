@@ -74,6 +74,18 @@ struct TempDir {
   ~TempDir() { fs::remove_all(path); }
 };
 
+// A quiet run of a world from worlds/ with --out dir (no trace.csv).
+app::RunSummary run_into(const TempDir &dir, const std::string &world, bool replay) {
+  app::RunOptions o;
+  o.world = std::string(WORLDS_DIR) + "/" + world;
+  o.output.quiet = true;
+  o.output.trace = false;
+  o.output.replay = replay;
+  o.output.out_dir = dir.path.string();
+  std::ostringstream out;
+  return app::run_world(o, out);
+}
+
 }  // namespace
 
 TEST_CASE("replay data: one frame a move, changes as (gap, 2 * centi-log-odds + occupied), the last value wins") {
@@ -126,13 +138,7 @@ TEST_CASE("summary_pairs: the summary block's key: value lines") {
 
 TEST_CASE("run --out: replay.html has a frame a move, and its changes replayed give map.pgm's map") {
   const TempDir dir;
-  app::RunOptions o;
-  o.world = std::string(WORLDS_DIR) + "/maze8x8.txt";
-  o.output.quiet = true;
-  o.output.trace = false;
-  o.output.out_dir = dir.path.string();
-  std::ostringstream out;
-  const app::RunSummary summary = app::run_world(o, out);
+  const app::RunSummary summary = run_into(dir, "maze8x8.txt", true);
   const Json d = data_of(test_png::read_all(dir.path / "replay.html"));
   CHECK(d["frames"]["arrival"].size() == static_cast<std::size_t>(summary.moves) + 1);
   CHECK(d["moves_per_frame"] == 1);
@@ -164,13 +170,7 @@ TEST_CASE("run --out: replay.html has a frame a move, and its changes replayed g
 
 TEST_CASE("--no-replay writes no replay.html") {
   const TempDir dir;
-  app::RunOptions o;
-  o.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
-  o.output.quiet = true;
-  o.output.replay = false;
-  o.output.out_dir = dir.path.string();
-  std::ostringstream out;
-  app::run_world(o, out);
+  run_into(dir, "lab4x4.txt", false);
   CHECK(fs::exists(dir.path / "map.png"));
   CHECK_FALSE(fs::exists(dir.path / "replay.html"));
 }
