@@ -22,6 +22,17 @@
 namespace app {
 namespace {
 
+// --narrow, --wide: the terminal columns of a sub-cell (OutputOptions::subcell_columns).
+void add_width_options(CLI::App &command, RunOptions &o) {
+  CLI::Option *narrow = command.add_flag_callback(
+      "--narrow", [&o] { o.output.subcell_columns = 1; },
+      "one column a sub-cell, the classroom look (default when standard output is not a terminal)");
+  command
+      .add_flag_callback("--wide", [&o] { o.output.subcell_columns = 2; },
+                         "two columns a sub-cell, the maze at its true aspect (default in a terminal the map fits)")
+      ->excludes(narrow);
+}
+
 // What only `run` takes, besides the exploration options.
 void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
   run.add_flag("--quiet", o.output.quiet, "print only the final map and the summary");
@@ -40,12 +51,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
   run.add_flag("--no-color", no_color, "no ANSI colours (default colours when stdout is a terminal)");
   run.add_flag("--animate", o.output.animate,
                "redraw the map in place as the robot moves (standard output must be a terminal)");
-  CLI::Option *narrow = run.add_flag_callback(
-      "--narrow", [&o] { o.output.subcell_columns = 1; },
-      "one column a sub-cell, the classroom look (default when standard output is not a terminal)");
-  run.add_flag_callback("--wide", [&o] { o.output.subcell_columns = 2; },
-                        "two columns a sub-cell, the maze at its true aspect (default in a terminal the map fits)")
-      ->excludes(narrow);
+  add_width_options(run, o);
   run.add_option("--fps", o.output.fps,
                  fmt::format("--animate: frames per second, at most (default {:g})", o.output.fps));
   run.add_option("--speed", o.output.speed,
@@ -70,6 +76,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
       "plan", "explore a world quietly, then plan a path on the learned map (wavefront) and draw it; "
               "exit status 1 when no path is found");
   add_exploration_options(*plan, *parsed);
+  add_width_options(*plan, *parsed);
   plan->add_option_function<std::string>(
       "--from", [parsed](const std::string &text) { parsed->plan.from = parse_cell(text, "--from"); },
       "X,Y: start cell of the path (default the maze's start)");
@@ -89,6 +96,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     }
     RunControls controls;
     controls.interrupted = &SigintGuard::interrupted;
+    controls.terminal_fd = STDOUT_FILENO;
     const SigintGuard sigint;
     const RunSummary summary = run_world(options, std::cout, controls);
     const bool no_path = summary.plan && !summary.plan->found && !summary.interrupted;
