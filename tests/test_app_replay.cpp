@@ -174,3 +174,19 @@ TEST_CASE("--no-replay writes no replay.html") {
   CHECK(fs::exists(dir.path / "map.png"));
   CHECK_FALSE(fs::exists(dir.path / "replay.html"));
 }
+
+TEST_CASE("the history is kept for --snapshots, and for the replay up to kReplayMaxSubcells sub-cells") {
+  app::RunOptions o;
+  mapping::GridGeometry g;
+  g.width_cells = 341;  // 1023 x 1023 sub-cells: fits
+  g.height_cells = 341;
+  CHECK(app::keeps_history(o, g));
+  o.output.replay = false;
+  CHECK_FALSE(app::keeps_history(o, g));
+  o.output.snapshots = 3;
+  CHECK(app::keeps_history(o, g));
+  o.output.replay = true;
+  o.output.snapshots = 0;
+  g.width_cells = 342;  // 1026 x 1023: too large, a warning on stderr
+  CHECK_FALSE(app::keeps_history(o, g));
+}
