@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -156,7 +157,7 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
   for (const int k : ks) {
     RunOptions one = options;
     one.subcells = k;
-    if (!output.out_dir.empty()) one.output.out_dir = fmt::format("{}/k{}", output.out_dir, k);
+    if (!output.out_dir.empty()) one.output.out_dir = (std::filesystem::path(output.out_dir) / fmt::format("k{}", k)).string();
     std::ostringstream text;
     const RunSummary summary = run_world(one, text, controls);
     if (summary.interrupted) {
@@ -166,6 +167,7 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
     status = std::max(status, exit_status(summary));
     total_ms += summary.wall_time_ms;
     const std::string block = format_summary(one, summary);
+    if (!text.str().ends_with(block)) throw common::RuntimeFailure("compare: a run's output does not end in its summary");
     const std::string map = text.str().substr(0, text.str().size() - block.size());
     maps.push_back(split(fmt::format("K {}\n", k) + map, '\n'));
     summaries.push_back(summary_pairs(block));
@@ -175,8 +177,11 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
   print_columns(table, out);
   out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);
   if (!output.out_dir.empty()) {
-    common::write_file_atomically(output.out_dir + "/compare.csv", compare_csv(ks, table));
-    out << fmt::format("wrote {}/compare.csv and k{}/ ... (run --out's files for each K)\n", output.out_dir, ks.front());
+    const std::filesystem::path dir(output.out_dir);
+    common::write_file_atomically((dir / "compare.csv").string(), compare_csv(ks, table));
+    std::string wrote = "wrote " + (dir / "compare.csv").string();
+    for (const int k : ks) wrote += ", " + (dir / fmt::format("k{}", k) / "").string();
+    out << wrote << '\n';
   }
   return status;
 }

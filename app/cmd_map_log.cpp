@@ -134,7 +134,10 @@ struct Log {
 
 sensing::LogStep parse_step(const std::string &file, int line, const std::vector<Field> &fields, const Columns &c,
                             sensing::LogSensor sensor) {
-  const auto value = [&](const std::string &name) { return number_at(file, line, fields[*c.find(name)], name); };
+  const auto value = [&](const std::string &name) {
+    const std::size_t at = *c.find(name);
+    return number_at(file, line, fields[at], c.names[at]);  // named as the header names it
+  };
   sensing::LogStep s;
   s.t = value("t"), s.x_m = value("x"), s.y_m = value("y"), s.theta_rad = value("theta");
   if (sensor == sensing::LogSensor::bump) {

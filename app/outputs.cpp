@@ -369,8 +369,7 @@ void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummar
     fmt::format_to(std::back_inserter(csv), "{},{},{},{:.4f},{:.4f}\n", i, plan.path[i].x, plan.path[i].y, p.x_m, p.y_m);
   }
   MapMarks marks{{}, files.goals, plan.path};
-  const std::string caption = fmt::format("{}, planned ({},{}) -> ({},{}), {} cells", map_caption(options), plan.from.x,
-                                          plan.from.y, plan.to.x, plan.to.y, plan.length_cells);
+  const std::string caption = fmt::format("{}, plan to ({},{})", map_caption(options), plan.to.x, plan.to.y);
   common::write_file_atomically((dir / "plan.png").string(),
                                 png_file(*files.grid, map_tones(options, *files.model), marks, caption));
   common::write_file_atomically((dir / "plan.csv").string(), csv);
