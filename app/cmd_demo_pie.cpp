@@ -108,16 +108,11 @@ PlainGrid pie_grid(const sensing::PieDemoOptions &o, const std::vector<sensing::
   for (const auto &c : cells) {
     i0 = std::min(i0, c.i), i1 = std::max(i1, c.i), j0 = std::min(j0, c.j), j1 = std::max(j1, c.j);
   }
-  i0 -= 2, j0 -= 2, i1 += 3, j1 += 3;
-  PlainGrid g;
-  g.cells_x = i1 - i0, g.cells_y = j1 - j0;
-  g.x0_m = i0 * r, g.y0_m = j0 * r;
-  g.cell_w_m = g.cell_h_m = r;
-  g.tones.assign(static_cast<std::size_t>(g.cells_x * g.cells_y), kUnknownTone);
+  PlainGrid g = plain_grid_around(i0, i1, j0, j1, r, kUnknownTone);
   const double occupied = mapping::log_odds(sensing::kPieDemoOccupiedP);
   const double clear = mapping::log_odds(sensing::kPieDemoClearP);
   for (const auto &c : cells) {
-    g.tones[static_cast<std::size_t>((c.j - j0) * g.cells_x + (c.i - i0))] = log_odds_tone(c.log_odds, 0.0, occupied, clear);
+    set_tone(g, (c.i + 0.5) * r, (c.j + 0.5) * r, log_odds_tone(c.log_odds, 0.0, occupied, clear));
   }
   return g;
 }

@@ -1,6 +1,7 @@
 #include "app/plain_grid_picture.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace app {
@@ -13,6 +14,24 @@ double px_per_m(const PlainGrid &g) {
 }
 
 }  // namespace
+
+PlainGrid plain_grid_around(int i_min, int i_max, int j_min, int j_max, double cell_m, Rgb fill) {
+  PlainGrid g;
+  g.cells_x = i_max - i_min + 5;
+  g.cells_y = j_max - j_min + 5;
+  g.x0_m = (i_min - 2) * cell_m;
+  g.y0_m = (j_min - 2) * cell_m;
+  g.cell_w_m = g.cell_h_m = cell_m;
+  g.tones.assign(static_cast<std::size_t>(g.cells_x * g.cells_y), fill);
+  return g;
+}
+
+void set_tone(PlainGrid &g, double x_m, double y_m, Rgb tone) {
+  const int i = static_cast<int>(std::floor((x_m - g.x0_m) / g.cell_w_m));
+  const int j = static_cast<int>(std::floor((y_m - g.y0_m) / g.cell_h_m));
+  assert(i >= 0 && j >= 0 && i < g.cells_x && j < g.cells_y);
+  g.tones[static_cast<std::size_t>(j * g.cells_x + i)] = tone;
+}
 
 CellPixels plain_grid_cell_px(const PlainGrid &g) {
   const double ppm = px_per_m(g);

@@ -24,6 +24,13 @@ struct PlainGrid {
   std::vector<Rgb> tones;  // cell (i, j), column i from the west, row j from the south: j * cells_x + i
 };
 
+// Square cells of side cell_m on a lattice from the origin: cell (i, j) covers
+// [i cell_m, (i + 1) cell_m] x [j cell_m, (j + 1) cell_m]; the grid holds i from i_min - 2 to
+// i_max + 2 and j likewise (the cells to show and two of margin), every cell in `fill`.
+PlainGrid plain_grid_around(int i_min, int i_max, int j_min, int j_max, double cell_m, Rgb fill);
+// Sets the tone of the cell holding the point (x_m, y_m), which must lie on the grid.
+void set_tone(PlainGrid &grid, double x_m, double y_m, Rgb tone);
+
 // Whole pixels of one cell, across and down.
 struct CellPixels {
   int w = 1;

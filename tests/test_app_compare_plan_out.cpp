@@ -102,7 +102,8 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
     REQUIRE(f.size() == 5);
     const int x = std::stoi(f[1]), y = std::stoi(f[2]);
     CHECK(std::stoi(f[0]) == static_cast<int>(n - 1));
-    CHECK(std::stod(f[3]) == doctest::Approx((x + 0.5) / 3.0));
+    CHECK(std::stod(f[3]) == doctest::Approx((x + 0.5) / 3.0).epsilon(1e-4));  // 4 decimals
+    CHECK(std::stod(f[4]) == doctest::Approx((y + 0.5) / 3.0).epsilon(1e-4));
     if (previous_x >= 0) CHECK(std::abs(x - previous_x) + std::abs(y - previous_y) >= 1);
     if (previous_x >= 0) CHECK(std::max(std::abs(x - previous_x), std::abs(y - previous_y)) == 1);
     CHECK(png.at(x * scale + scale / 2, (height_subcells - 1 - y) * scale + scale / 2) == std::vector<int>{200, 0, 200});

@@ -398,7 +398,7 @@ TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes
     std::vector<std::string> fields;
     std::stringstream fs_in(row);
     for (std::string f; std::getline(fs_in, f, ',');) fields.push_back(f);
-    REQUIRE(fields.size() == 9);
+    REQUIRE(fields.size() == 12);  // and the GPS and IMU columns
     CHECK(fields[5] == std::to_string(x));
     CHECK(fields[6] == std::to_string(y));
     ++compared;
