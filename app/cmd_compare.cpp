@@ -1,8 +1,9 @@
 // maze_mapper compare [WORLD] --subcells K1,K2,... [options]: the same world at several
-// resolutions, maps and summaries side by side.
+// resolutions: maps side by side under a heading per K, then the summaries as one table.
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -12,14 +13,23 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/batch.hpp"  // csv_quoted
+#include "app/outputs.hpp"
 #include "app/run.hpp"
 #include "app/run_cli.hpp"
 #include "app/terminal.hpp"
 #include "commands.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
 namespace app {
 namespace {
+
+// compare's own output options.
+struct CompareOutput {
+  bool quiet = false;     // the summary table only, no maps
+  std::string out_dir;    // DIR/compare.csv and DIR/kK/
+};
 
 // Display width of UTF-8 text: code points (the map's arrows are one column each).
 std::size_t display_width(const std::string &text) {
@@ -77,19 +87,77 @@ void print_columns(const std::vector<std::vector<std::string>> &columns, std::os
   }
 }
 
-// One quiet run per K, printed as columns (map, blank line, summary). Ctrl-C stops the run
-// in flight at its next step and the rest are not started: nothing is printed but one
-// line, and the status is 130.
-int compare_runs(const RunOptions &options, const std::vector<int> &ks, std::ostream &out) {
-  std::vector<std::vector<std::string>> columns;
+// A summary block's lines as (key, value), wall_time_ms left out: it varies from run to run,
+// and one total line at the end keeps the table stable.
+using Summary = std::vector<std::pair<std::string, std::string>>;
+
+Summary summary_pairs(const std::string &block) {
+  Summary pairs;
+  for (const std::string &line : split(block, '\n')) {
+    const std::size_t colon = line.find(": ");
+    if (colon == std::string::npos || line.starts_with("wall_time_ms: ")) continue;
+    pairs.emplace_back(line.substr(0, colon), line.substr(colon + 2));
+  }
+  return pairs;
+}
+
+// The summaries as a table: a key column, then a column per K under its heading. A key one
+// run lacks (a plan that found no path) is blank in its column.
+std::vector<std::vector<std::string>> summary_table(const std::vector<int> &ks, const std::vector<Summary> &summaries) {
+  std::vector<std::string> keys;
+  for (const Summary &s : summaries) {
+    for (const auto &[key, value] : s) {
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+  }
+  std::vector<std::vector<std::string>> columns{{""}};
+  for (const std::string &key : keys) columns[0].push_back(key);
+  for (std::size_t n = 0; n < ks.size(); ++n) {
+    std::vector<std::string> column{fmt::format("K {}", ks[n])};
+    for (const std::string &key : keys) {
+      const auto it = std::find_if(summaries[n].begin(), summaries[n].end(), [&](const auto &p) { return p.first == key; });
+      column.push_back(it == summaries[n].end() ? "" : it->second);
+    }
+    columns.push_back(std::move(column));
+  }
+  return columns;
+}
+
+// A CSV field, quoted only when it must be.
+std::string csv_field(const std::string &text) {
+  return text.find_first_of(",\"\n") == std::string::npos ? text : csv_quoted(text);
+}
+
+// compare.csv: a row per K, the K first, then the summary's keys as the table prints them.
+std::string compare_csv(const std::vector<int> &ks, const std::vector<std::vector<std::string>> &table) {
+  std::string out = "k";
+  for (std::size_t row = 1; row < table[0].size(); ++row) out += "," + table[0][row];
+  out += "\n";
+  for (std::size_t n = 0; n < ks.size(); ++n) {
+    out += std::to_string(ks[n]);
+    for (std::size_t row = 1; row < table[n + 1].size(); ++row) out += "," + csv_field(table[n + 1][row]);
+    out += "\n";
+  }
+  return out;
+}
+
+// One quiet run per K: the maps side by side under a heading per K (unless --quiet), then
+// the summaries as one table. With --out DIR each run writes run --out's files into DIR/kK/
+// and DIR/compare.csv holds the table. Ctrl-C stops the run in flight at its next step and
+// the rest are not started: nothing is printed but one line, and the status is 130.
+int compare_runs(const RunOptions &options, const CompareOutput &output, const std::vector<int> &ks, std::ostream &out) {
+  std::vector<std::vector<std::string>> maps;
+  std::vector<Summary> summaries;
   int status = 0;
   double total_ms = 0.0;
   RunControls controls;
   controls.interrupted = &SigintGuard::interrupted;
   const SigintGuard sigint;
+  if (!output.out_dir.empty()) prepare_output_dir(output.out_dir);
   for (const int k : ks) {
     RunOptions one = options;
     one.subcells = k;
+    if (!output.out_dir.empty()) one.output.out_dir = (std::filesystem::path(output.out_dir) / fmt::format("k{}", k)).string();
     std::ostringstream text;
     const RunSummary summary = run_world(one, text, controls);
     if (summary.interrupted) {
@@ -97,14 +165,24 @@ int compare_runs(const RunOptions &options, const std::vector<int> &ks, std::ost
       return exit_status(summary);
     }
     status = std::max(status, exit_status(summary));
-    // The wall time varies from run to run: one total line at the end keeps columns stable.
-    std::vector<std::string> lines = split(text.str(), '\n');
-    std::erase_if(lines, [](const std::string &l) { return l.starts_with("wall_time_ms: "); });
     total_ms += summary.wall_time_ms;
-    columns.push_back(std::move(lines));
+    const std::string block = format_summary(one, summary);
+    if (!text.str().ends_with(block)) throw common::RuntimeFailure("compare: a run's output does not end in its summary");
+    const std::string map = text.str().substr(0, text.str().size() - block.size());
+    maps.push_back(split(fmt::format("K {}\n", k) + map, '\n'));
+    summaries.push_back(summary_pairs(block));
   }
-  print_columns(columns, out);
+  const auto table = summary_table(ks, summaries);
+  if (!output.quiet) print_columns(maps, out);
+  print_columns(table, out);
   out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);
+  if (!output.out_dir.empty()) {
+    const std::filesystem::path dir(output.out_dir);
+    common::write_file_atomically((dir / "compare.csv").string(), compare_csv(ks, table));
+    std::string wrote = "wrote " + (dir / "compare.csv").string();
+    for (const int k : ks) wrote += ", " + (dir / fmt::format("k{}", k) / "").string();
+    out << wrote << '\n';
+  }
   return status;
 }
 
@@ -113,17 +191,22 @@ int compare_runs(const RunOptions &options, const std::vector<int> &ks, std::ost
 void add_compare_command(CLI::App &cli, CommandContext &context) {
   auto parsed = std::make_shared<RunOptions>();
   auto subcells = std::make_shared<std::string>("3,5");
+  auto output = std::make_shared<CompareOutput>();
   CLI::App *compare = cli.add_subcommand(
       "compare", "run the same world at several resolutions; maps and summaries side by side");
   add_exploration_options(*compare, *parsed);
   compare->remove_option(compare->get_option("--subcells"));
   compare->add_option("--subcells", *subcells, "K1,K2,...: the resolutions to compare (default 3,5)");
-  compare->callback([compare, parsed, subcells, &context] {
+  compare->add_flag("--quiet", output->quiet, "print only the summaries' table, not the maps");
+  compare->add_option("--out", output->out_dir,
+                      "DIR: compare.csv (a row per K) and run --out's files for each K in DIR/kK/ (trace.csv left out)");
+  compare->callback([compare, parsed, subcells, output, &context] {
     const std::vector<int> ks = parse_ks(*subcells);
     RunOptions options = checked_run_options(*compare, *parsed, true);
     options.output.quiet = true;
+    options.output.trace = false;
     print_warnings(options_not_applying(*compare, options));
-    context.status = compare_runs(options, ks, std::cout);
+    context.status = compare_runs(options, *output, ks, std::cout);
   });
 }
 

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "app/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "demo_commands.hpp"
@@ -30,7 +31,10 @@ struct DemoConeInput {
   bool resolution_given = false;  // otherwise the sensor's default
   std::string pose;
   std::string csv_path;
+  std::string png_path;
 };
+
+inline constexpr Rgb kConeMarked{35, 35, 35};
 
 // The defaults put the reading 20 cells away for either sensor.
 struct ConeDefaults {
@@ -82,6 +86,31 @@ std::string csv_file(const sensing::ConeSweep &sweep) {
   return out;
 }
 
+// The marked cells dark on the never-observed tone, the beam's edges (phi +- sigma/2, out to
+// d(1+eps)) in red, the sensor a blue disc; one pixel square a cell of `resolution_m`.
+std::string png_file(const sensing::ConeSweep &sweep, const sensing::ConeSweepInput &in, double resolution_m,
+                     const std::string &sensor) {
+  int i0 = static_cast<int>(std::floor(in.x_cells)), i1 = i0, j0 = static_cast<int>(std::floor(in.y_cells)), j1 = j0;
+  for (const auto &[i, j] : sweep.cells) i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+  PlainGrid g = plain_grid_around(i0, i1, j0, j1, resolution_m, kUnknownTone);
+  for (const auto &[i, j] : sweep.cells) set_tone(g, (i + 0.5) * resolution_m, (j + 0.5) * resolution_m, kConeMarked);
+  Legend legend;
+  legend.lines = {fmt::format("demo cone {}: d {:g} cells, sigma {:g} rad", sensor, in.d_cells, in.sigma_rad)};
+  legend.items = {{Swatch::box, kConeMarked, "marked"}, {Swatch::line, kPathColour, "beam edges"},
+                  {Swatch::disc, kEndColour, "sensor"}};
+  Canvas canvas = plain_grid_picture(g, legend);
+  const auto at = [&](double x_cells, double y_cells) { return plain_grid_px(g, x_cells * resolution_m, y_cells * resolution_m); };
+  const PixelPoint from = at(in.x_cells, in.y_cells);
+  const double reach = in.d_cells * (1.0 + in.eps);
+  for (const double side : {-0.5, 0.5}) {
+    const double a = in.phi_rad + side * in.sigma_rad;
+    const PixelPoint to = at(in.x_cells + reach * std::cos(a), in.y_cells + reach * std::sin(a));
+    canvas.line(from.x, from.y, to.x, to.y, std::max(1, plain_grid_cell_px(g).w / 10), kPathColour);
+  }
+  canvas.disc(from.x, from.y, std::max(2, plain_grid_cell_px(g).w / 2), kEndColour);
+  return encode_png(canvas);
+}
+
 const std::string kDifference =
     "the maze run's cone model (--model cone) differs: it marks sub-cells of the maze's grid,\n"
     "sweeps at half a sub-cell (radially and across), frees the cone inside d(1-eps), and\n"
@@ -114,6 +143,7 @@ int run_demo_cone(const DemoConeInput &input) {
                                    range_m / resolution_m, kind.aperture_rad, kind.distance_error};
   const sensing::ConeSweep sweep = sensing::cone_sweep(in);
   if (!input.csv_path.empty()) common::write_file_atomically(input.csv_path, csv_file(sweep));
+  if (!input.png_path.empty()) common::write_file_atomically(input.png_path, png_file(sweep, in, resolution_m, input.sensor));
   std::string out = "cone sweep (the sensor-model lecture's second loop), sensor " + input.sensor + "\n\n";
   out += sensor_table() + "\n";
   out += fmt::format("sigma {:g} rad, eps {:g} ({})\n", in.sigma_rad, in.eps, percent(in.eps));
@@ -122,7 +152,10 @@ int run_demo_cone(const DemoConeInput &input) {
   out += fmt::format("r from d(1-eps) = {:.2f} to d(1+eps) = {:.2f} cells by INC = {:g}; omega halved\n\n",
                      in.d_cells * (1 - in.eps), in.d_cells * (1 + in.eps), sensing::kConeSweepInc);
   out += step_table(sweep) + "\n" + picture(sweep) + "\n" + kDifference;
-  if (!input.csv_path.empty()) out += "\nwrote " + input.csv_path + "\n";
+  if (!input.csv_path.empty() || !input.png_path.empty()) out += "\n";
+  for (const std::string *path : {&input.csv_path, &input.png_path}) {
+    if (!path->empty()) out += "wrote " + *path + "\n";
+  }
   std::cout << out;
   return 0;
 }
@@ -137,6 +170,7 @@ void add_demo_cone(CLI::App &demo, CommandContext &context) {
   cone->add_option("--pose", input->pose, "X,Y,DEG: the sensor, m and deg (default 0,0,90)");
   CLI::Option *resolution = cone->add_option("--resolution", input->resolution_m, "a grid cell, m (default 0.01 for ir, 0.05 for sonar)");
   cone->add_option("--csv", input->csv_path, "FILE: i,j of the marked cells");
+  cone->add_option("--png", input->png_path, "FILE: the marked cells and the beam's edges as a PNG picture");
   cone->callback([&context, input, range, resolution] {
     input->range_given = range->count() > 0;
     input->resolution_given = resolution->count() > 0;

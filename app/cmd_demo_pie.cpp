@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "app/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "demo_commands.hpp"
@@ -28,6 +29,7 @@ struct DemoPieInput {
   std::string pose;
   std::string csv_path;
   std::string svg_path;
+  std::string png_path;
 };
 
 std::string number(double v) { return fmt::format("{:.2f}", v); }
@@ -98,6 +100,49 @@ std::string svg_file(const sensing::PieDemoOptions &o, const std::vector<sensing
   return out + "</svg>\n";
 }
 
+// The grid around the updated cells and the robot, two cells of margin: every updated cell
+// in map.png's tones, the cells no sensor updated in the never-observed tone.
+PlainGrid pie_grid(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
+  const double r = o.resolution_m;
+  int i0 = static_cast<int>(std::floor(o.x_m / r)), i1 = i0, j0 = static_cast<int>(std::floor(o.y_m / r)), j1 = j0;
+  for (const auto &c : cells) {
+    i0 = std::min(i0, c.i), i1 = std::max(i1, c.i), j0 = std::min(j0, c.j), j1 = std::max(j1, c.j);
+  }
+  PlainGrid g = plain_grid_around(i0, i1, j0, j1, r, kUnknownTone);
+  const double occupied = mapping::log_odds(sensing::kPieDemoOccupiedP);
+  const double clear = mapping::log_odds(sensing::kPieDemoClearP);
+  for (const auto &c : cells) {
+    set_tone(g, (c.i + 0.5) * r, (c.j + 0.5) * r, log_odds_tone(c.log_odds, 0.0, occupied, clear));
+  }
+  return g;
+}
+
+// The updated cells, each slice's edges (at +-beta, to where it ends) in red, the robot a
+// blue disc.
+std::string png_file(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
+  const PlainGrid g = pie_grid(o, cells);
+  Legend legend;
+  legend.lines = {fmt::format("demo pie: beta {:g} deg, alpha {:g} m, cells {:g} m", o.half_angle_deg,
+                              o.contact_m, o.resolution_m)};
+  legend.items = {{Swatch::box, Rgb{35, 35, 35}, "occupied"},   {Swatch::box, Rgb{235, 235, 235}, "clear"},
+                  {Swatch::box, kUnknownTone, "not updated"}, {Swatch::line, kPathColour, "slices"},
+                  {Swatch::disc, kEndColour, "robot"}};
+  Canvas canvas = plain_grid_picture(g, legend);
+  const int thickness = std::max(1, plain_grid_cell_px(g).w / 8);
+  for (const auto &s : sensing::pie_demo_slices(o)) {
+    const double end_m = s.contact ? s.contact_m : s.clear_m;
+    const PixelPoint from = plain_grid_px(g, s.x_m, s.y_m);
+    for (const double side : {-1.0, 1.0}) {
+      const double a = (s.heading_deg + side * o.half_angle_deg) * std::numbers::pi / 180.0;
+      const PixelPoint to = plain_grid_px(g, s.x_m + end_m * std::cos(a), s.y_m + end_m * std::sin(a));
+      canvas.line(from.x, from.y, to.x, to.y, thickness, kPathColour);
+    }
+  }
+  const PixelPoint robot = plain_grid_px(g, o.x_m, o.y_m);
+  canvas.disc(robot.x, robot.y, std::max(2, plain_grid_cell_px(g).w), kEndColour);
+  return encode_png(canvas);
+}
+
 sensing::PieDemoOptions to_options(const DemoPieInput &input) {
   sensing::PieDemoOptions o = input.options;
   if (!input.readings.empty()) o.readings_m = parse_number_list(input.readings, "--readings");
@@ -115,6 +160,7 @@ void run_demo_pie(const DemoPieInput &input) {
   const auto cells = sensing::pie_demo_update(o);
   if (!input.csv_path.empty()) common::write_file_atomically(input.csv_path, csv_file(o, cells));
   if (!input.svg_path.empty()) common::write_file_atomically(input.svg_path, svg_file(o, cells));
+  if (!input.png_path.empty()) common::write_file_atomically(input.png_path, png_file(o, cells));
   std::string out = "IR pie-slice update (Waterloo assignment, Figure 1)\n";
   out += fmt::format("half-angle {:g} deg\nresolution {:g} m\n", o.half_angle_deg, o.resolution_m);
   out += fmt::format("robot at ({:g}, {:g}) m heading {:g} deg; IR max range {:g} m; contact depth alpha {:g} m\n",
@@ -124,8 +170,11 @@ void run_demo_pie(const DemoPieInput &input) {
                      sensing::kPieDemoOccupiedP, mapping::log_odds(sensing::kPieDemoOccupiedP),
                      sensing::kPieDemoClearP, mapping::log_odds(sensing::kPieDemoClearP));
   out += sensor_table(o) + "\n" + region_matrix(o, cells);
-  if (!input.csv_path.empty()) out += "\nwrote " + input.csv_path + "\n";
-  if (!input.svg_path.empty()) out += (input.csv_path.empty() ? "\n" : "") + std::string("wrote ") + input.svg_path + "\n";
+  std::string wrote;
+  for (const std::string *path : {&input.csv_path, &input.svg_path, &input.png_path}) {
+    if (!path->empty()) wrote += "wrote " + *path + "\n";
+  }
+  if (!wrote.empty()) out += "\n" + wrote;
   std::cout << out;
 }
 
@@ -166,6 +215,7 @@ void add_demo_pie(CLI::App &demo, CommandContext &context) {
   pie->add_option("--max-range", o.max_range_m, fmt::format("IR max range, m (default {:g})", o.max_range_m));
   pie->add_option("--csv", input->csv_path, "FILE: x_m,y_m,logodds of every updated cell, by its centre");
   pie->add_option("--svg", input->svg_path, "FILE: the updated cells and the sensors' axes as an SVG picture");
+  pie->add_option("--png", input->png_path, "FILE: the updated cells in map.png's tones and each slice's edges as a PNG picture");
   pie->callback([&context, input] {
     run_demo_pie(*input);
     context.status = 0;

@@ -2,6 +2,7 @@
 // Cornell-style homework (sensing/log_map.hpp for the rule, docs/lab-map-log.md).
 
 #include <charconv>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -14,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "app/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "demo_commands.hpp"
@@ -22,6 +24,9 @@
 
 namespace app {
 namespace {
+
+inline constexpr Rgb kThresholdWall{0, 0, 0};
+inline constexpr Rgb kThresholdOpen{255, 255, 255};
 
 struct MapLogInput {
   std::string log_path;
@@ -68,14 +73,31 @@ std::vector<Field> split_fields(const std::string &line) {
   }
 }
 
-// The log's columns: where each needed name is in the header.
+// run --out's trace.csv names for the log's columns (app/trace_sensors.hpp): the time, the
+// pose the robot reads (GPS, IMU) and depth rays in metres; "" for a name it shares.
+std::string trace_name(const std::string &name) {
+  if (name == "t") return "time_s";
+  if (name == "x") return "gps_x_m";
+  if (name == "y") return "gps_y_m";
+  if (name == "theta") return "imu_yaw_rad";
+  if (name.starts_with("depth_")) return name + "_m";
+  return "";
+}
+
+// The log's columns: where each needed name is in the header, under the log's name or else
+// under trace.csv's.
 struct Columns {
   std::vector<std::string> names;
-  std::optional<std::size_t> find(const std::string &name) const {
+  std::optional<std::size_t> position(const std::string &name) const {
     for (std::size_t n = 0; n < names.size(); ++n) {
       if (names[n] == name) return n;
     }
     return std::nullopt;
+  }
+  std::optional<std::size_t> find(const std::string &name) const {
+    const std::optional<std::size_t> own = position(name);
+    const std::string alias = trace_name(name);
+    return own || alias.empty() ? own : position(alias);
   }
 };
 
@@ -112,7 +134,10 @@ struct Log {
 
 sensing::LogStep parse_step(const std::string &file, int line, const std::vector<Field> &fields, const Columns &c,
                             sensing::LogSensor sensor) {
-  const auto value = [&](const std::string &name) { return number_at(file, line, fields[*c.find(name)], name); };
+  const auto value = [&](const std::string &name) {
+    const std::size_t at = *c.find(name);
+    return number_at(file, line, fields[at], c.names[at]);  // named as the header names it
+  };
   sensing::LogStep s;
   s.t = value("t"), s.x_m = value("x"), s.y_m = value("y"), s.theta_rad = value("theta");
   if (sensor == sensing::LogSensor::bump) {
@@ -146,7 +171,10 @@ Log read_log(const MapLogInput &input) {
   for (const auto &name : sensor_columns(log.sensor)) needed.push_back(name);
   for (const auto &name : needed) {
     if (!columns.find(name)) {
-      throw common::InputError({input.log_path, 1, 1}, fmt::format("missing column '{}'", name));
+      const std::string alias = trace_name(name);
+      throw common::InputError({input.log_path, 1, 1},
+                               alias.empty() ? fmt::format("missing column '{}'", name)
+                                             : fmt::format("missing column '{}' (or trace.csv's '{}')", name, alias));
     }
   }
   for (int number = 2; std::getline(in, line); ++number) {
@@ -224,6 +252,71 @@ std::string thresholded(const sensing::LogGrid &g, double threshold) {
   return out;
 }
 
+PlainGrid plain_grid(const sensing::LogMapOptions &o) {
+  PlainGrid p;
+  p.cells_x = o.cells_x, p.cells_y = o.cells_y;
+  p.x0_m = o.x_start_m, p.y0_m = o.y_start_m;
+  p.cell_w_m = (o.x_end_m - o.x_start_m) / o.cells_x;
+  p.cell_h_m = (o.y_end_m - o.y_start_m) / o.cells_y;
+  return p;
+}
+
+// The log-odds picture: map.png's tones, graded by one occupied (0.99999) and one ray (0.4)
+// update.
+std::string log_odds_png(const sensing::LogMapOptions &o, const sensing::LogGrid &g, const std::string &caption) {
+  const double l0 = mapping::log_odds(o.prior, o.base);
+  const double occupied = mapping::log_odds(sensing::kLogOccupiedP, o.base) - l0;
+  const double ray = mapping::log_odds(sensing::kLogRayP, o.base) - l0;
+  PlainGrid p = plain_grid(o);
+  for (int j = 0; j < g.cells_y; ++j) {
+    for (int i = 0; i < g.cells_x; ++i) p.tones.push_back(log_odds_tone(g.at(i, j), l0, occupied, ray));
+  }
+  Legend legend;
+  legend.lines = {caption};
+  legend.items = {{Swatch::box, Rgb{35, 35, 35}, "occupied"},
+                  {Swatch::box, Rgb{235, 235, 235}, "free"},
+                  {Swatch::box, kUnknownTone, "never updated"}};
+  return encode_png(plain_grid_picture(p, legend));
+}
+
+// The thresholded map: black where log-odds >= the threshold (the printed W), else white.
+std::string thresholded_png(const sensing::LogMapOptions &o, const sensing::LogGrid &g, double threshold,
+                            const std::string &caption) {
+  PlainGrid p = plain_grid(o);
+  for (int j = 0; j < g.cells_y; ++j) {
+    for (int i = 0; i < g.cells_x; ++i) p.tones.push_back(g.at(i, j) >= threshold ? kThresholdWall : kThresholdOpen);
+  }
+  Legend legend;
+  legend.lines = {caption};
+  legend.items = {{Swatch::box, kThresholdWall, fmt::format("W: log-odds at least {:g}", threshold)},
+                  {Swatch::box, kThresholdOpen, "below"}};
+  return encode_png(plain_grid_picture(p, legend));
+}
+
+std::string caption(const MapLogInput &input, const sensing::LogMapOptions &o, std::size_t step, std::size_t steps) {
+  return fmt::format("map-log {}, {} x {} cells, step {}/{}", std::filesystem::path(input.log_path).filename().string(),
+                     o.cells_x, o.cells_y, step, steps);
+}
+
+// --out: a snapshot's grid and picture after step `at`.
+void write_snapshot(const MapLogInput &input, const sensing::LogMapOptions &o, const sensing::LogGrid &grid,
+                    std::size_t at, std::size_t steps) {
+  const std::string stem = fmt::format("{}/logodds_step{}", input.out_dir, at);
+  common::write_file_atomically(stem + ".csv", grid_csv(grid));
+  common::write_file_atomically(stem + ".png", log_odds_png(o, grid, caption(input, o, at, steps)));
+}
+
+// --out: the final grid, its picture and the thresholded map.
+void write_final(const MapLogInput &input, const sensing::LogMapOptions &o, const sensing::LogGrid &grid,
+                 std::size_t steps) {
+  const std::string &dir = input.out_dir;
+  const std::string text = caption(input, o, steps, steps);
+  common::write_file_atomically(dir + "/logodds.csv", grid_csv(grid));
+  common::write_file_atomically(dir + "/logodds.png", log_odds_png(o, grid, text));
+  common::write_file_atomically(dir + "/thresholded.txt", thresholded(grid, input.threshold));
+  common::write_file_atomically(dir + "/thresholded.png", thresholded_png(o, grid, input.threshold, text));
+}
+
 std::string header(const MapLogInput &input, const sensing::LogMapOptions &o, const Log &log) {
   const double l0 = mapping::log_odds(o.prior, o.base);
   const auto l = [&](double p) { return mapping::log_odds(p, o.base); };
@@ -247,18 +340,15 @@ void run_map_log(const MapLogInput &input) {
   for (std::size_t n = 0; n < log.steps.size(); ++n) {
     sensing::apply_log_step(o, log.sensor, log.steps[n], grid);
     for (const std::size_t at : snapshots) {
-      if (at == n + 1 && !input.out_dir.empty()) {
-        common::write_file_atomically(fmt::format("{}/logodds_step{}.csv", input.out_dir, at), grid_csv(grid));
-      }
+      if (at == n + 1 && !input.out_dir.empty()) write_snapshot(input, o, grid, at, log.steps.size());
     }
   }
-  if (!input.out_dir.empty()) {
-    common::write_file_atomically(input.out_dir + "/logodds.csv", grid_csv(grid));
-    common::write_file_atomically(input.out_dir + "/thresholded.txt", thresholded(grid, input.threshold));
-  }
+  if (!input.out_dir.empty()) write_final(input, o, grid, log.steps.size());
   std::string out = header(input, o, log) + "\nfinal log-odds, north row first:\n" + grid_matrix(grid);
   out += fmt::format("\nthresholded: W where log-odds >= {:g}\n", input.threshold) + thresholded(grid, input.threshold);
-  if (!input.out_dir.empty()) out += "\nwrote " + input.out_dir + "/logodds.csv, thresholded.txt and the snapshots\n";
+  if (!input.out_dir.empty()) {
+    out += "\nwrote " + input.out_dir + "/logodds.csv, logodds.png, thresholded.txt, thresholded.png and the snapshots\n";
+  }
   std::cout << out;
 }
 
@@ -268,7 +358,7 @@ void add_map_log_command(CLI::App &cli, CommandContext &context) {
   CLI::App *cmd = cli.add_subcommand("map-log", "a pose + bump/depth log mapped onto a numCells grid (the bump/depth homework)");
   auto input = std::make_shared<MapLogInput>();
   sensing::LogMapOptions &o = input->options;
-  cmd->add_option("LOG", input->log_path, "CSV: t,x,y,theta and bump_right,bump_left,bump_front or depth_1..depth_9")->required();
+  cmd->add_option("LOG", input->log_path, "CSV: t,x,y,theta and bump_right,bump_left,bump_front or depth_1..depth_9, or run --out's trace.csv")->required();
   cmd->add_option("--sensor", input->sensor, "bump or depth (default the one the log's columns hold)");
   cmd->add_option("--cells", input->cells, "X,Y: numCells (default 25,25)");
   cmd->add_option("--boundary", input->boundary, "XS,XE,YS,YE: the grid's extent, m (required)");
@@ -279,7 +369,7 @@ void add_map_log_command(CLI::App &cli, CommandContext &context) {
   CLI::Option *depth_max = cmd->add_option("--depth-max", o.depth_max_m, "depth max range, m: readings >= it are ignored (default 10)");
   cmd->add_option("--threshold", input->threshold, "log-odds at or above which a cell is drawn W (default -0.5)");
   cmd->add_option("--snapshots", input->snapshots, "F1,F2,...: fractions of the log to write grids at (default 0.333,0.667,1; needs --out)");
-  cmd->add_option("--out", input->out_dir, "DIR: logodds.csv (Y rows, north first), logodds_stepN.csv per snapshot, thresholded.txt");
+  cmd->add_option("--out", input->out_dir, "DIR: logodds.csv (Y rows, north first) and logodds.png, logodds_stepN.csv and .png per snapshot, thresholded.txt and .png");
   cmd->callback([&context, input, radius, angles, depth_max] {
     input->bump_options_given = radius->count() > 0;
     input->depth_options_given = angles->count() + depth_max->count() > 0;

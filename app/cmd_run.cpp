@@ -83,6 +83,8 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
   plan->add_option_function<std::string>(
       "--to", [parsed](const std::string &text) { parsed->plan.to = parse_cell(text, "--to"); },
       "X,Y: goal cell of the path (default the maze's first goal)");
+  plan->add_option("--out", parsed->output.out_dir,
+                   "DIR: run --out's files, and plan.png (the learned map with the planned path) and plan.csv (its sub-cells)");
   plan->callback([plan, parsed, &context] {
     RunOptions options = checked_run_options(*plan, *parsed, true);
     options.output.quiet = true;

@@ -27,6 +27,14 @@ void draw_marks(Canvas &canvas, const mapping::GridGeometry &g, const MapMarks &
                  std::max(1, cell_px / 14), kGoalColour);
   }
   const int thickness = std::max(1, scale / 3);
+  const auto subcell_px = [&](mapping::SubCell s) {
+    return PixelPoint{s.x * scale + scale / 2, (g.height_subcells() - 1 - s.y) * scale + scale / 2};
+  };
+  for (std::size_t i = 1; i < marks.planned.size(); ++i) {
+    const PixelPoint a = subcell_px(marks.planned[i - 1]);
+    const PixelPoint b = subcell_px(marks.planned[i]);
+    canvas.line(a.x, a.y, b.x, b.y, std::max(1, scale / 2), kPlannedColour);
+  }
   for (std::size_t i = 1; i < marks.path.size(); ++i) {
     const PixelPoint a = cell_centre_px(g, marks.path[i - 1]);
     const PixelPoint b = cell_centre_px(g, marks.path[i]);
@@ -40,13 +48,18 @@ void draw_marks(Canvas &canvas, const mapping::GridGeometry &g, const MapMarks &
   canvas.disc(end.x, end.y, std::max(1, cell_px / 7), kEndColour);
 }
 
-Legend map_legend(const std::string &caption, const mapping::GridGeometry &g) {
+Legend map_legend(const std::string &caption, const mapping::GridGeometry &g, const MapMarks &marks) {
   Legend legend;
   legend.lines.push_back(caption);
-  legend.items = {{Swatch::box, grey(35), "occupied"},     {Swatch::box, grey(235), "free"},
-                  {Swatch::box, kUnknownTone, "never observed"}, {Swatch::line, kPathColour, "path"},
-                  {Swatch::square, kStartColour, "start"},  {Swatch::disc, kEndColour, "end"},
-                  {Swatch::frame, kGoalColour, "goal"}};
+  legend.items = {{Swatch::box, grey(35), "occupied"}, {Swatch::box, grey(235), "free"},
+                  {Swatch::box, kUnknownTone, "never observed"}};
+  if (!marks.path.empty()) {
+    legend.items.insert(legend.items.end(), {{Swatch::line, kPathColour, "path"},
+                                             {Swatch::square, kStartColour, "start"},
+                                             {Swatch::disc, kEndColour, "end"}});
+  }
+  legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
+  if (!marks.planned.empty()) legend.items.push_back({Swatch::line, kPlannedColour, "planned path"});
   legend.px_per_m = map_scale(g) / g.subcell_size_m();
   return legend;
 }
@@ -79,7 +92,7 @@ Canvas map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, co
   const int h = g.height_subcells();
   const int width = std::max(w * scale, kMinPictureWidth);
   const int font = legend_font(width);
-  const Legend legend = map_legend(caption, g);
+  const Legend legend = map_legend(caption, g, marks);
   Canvas canvas(width, h * scale + legend_height(legend, width, font), Rgb{255, 255, 255});
   for (int row = 0; row < h; ++row) {
     for (int x = 0; x < w; ++x) {

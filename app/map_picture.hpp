@@ -10,7 +10,8 @@
 //            So one p_occ update already reads as a wall, and the three tones stay apart
 //            for every model (the increments are the set-up's own, see MapTones).
 //   marks    the path (cell centres in order of arrival) in red, the start a green square,
-//            the end (where the robot stopped) a blue disc, each goal cell a gold frame
+//            the end (where the robot stopped) a blue disc, each goal cell a gold frame; a
+//            planned path (plan.png) through its sub-cells' centres in magenta
 //   legend   the caption ("model cell, K 3", and a note such as a snapshot's step), what
 //            each tone and mark means, and a scale bar in metres
 // Written with libpng (app/picture.hpp).
@@ -30,6 +31,7 @@ inline constexpr Rgb kPathColour{220, 30, 30};
 inline constexpr Rgb kStartColour{20, 170, 40};
 inline constexpr Rgb kEndColour{30, 90, 220};
 inline constexpr Rgb kGoalColour{240, 170, 0};
+inline constexpr Rgb kPlannedColour{200, 0, 200};
 
 // What the tones are measured against, in the grid's log-odds.
 struct MapTones {
@@ -44,6 +46,7 @@ Rgb tone(float log_odds, const MapTones &tones);
 struct MapMarks {
   std::vector<mapping::Cell> path;   // cells in order of arrival, start first (may be empty)
   std::vector<mapping::Cell> goals;
+  std::vector<mapping::SubCell> planned;  // a planned path (plan.png), sub-cell centres, in magenta
 };
 
 // Pixels a sub-cell: ceil(100 / K), so a cell is at least 100 px, lowered for big mazes so

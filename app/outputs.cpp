@@ -332,15 +332,15 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   return j.dump(2) + "\n";
 }
 
-std::string trace_header() {
-  return "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated\n";
+std::string trace_header(const std::string &sensor_columns) {
+  return "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated" + sensor_columns + "\n";
 }
 
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
-                      double yaw_rad) {
-  fmt::format_to(std::back_inserter(csv), "{},{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}\n", step.step,
+                      double yaw_rad, const std::string &sensor_values) {
+  fmt::format_to(std::back_inserter(csv), "{},{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}{}\n", step.step,
                  step.sim_time_s, x_m, y_m, yaw_rad, step.cell.x, step.cell.y,
-                 robot::to_string(step.action), step.subcells_updated);
+                 robot::to_string(step.action), step.subcells_updated, sensor_values);
 }
 
 namespace {
@@ -355,7 +355,7 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
   const std::vector<std::int64_t> steps = snapshot_steps(summary.steps, count);
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
-    const MapMarks marks{files.history->path_at(steps[i]), files.goals};
+    const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
     common::write_file_atomically((dir / fmt::format("{:0{}}.png", i + 1, digits)).string(),
                                   png_file(grid, tones, marks, caption));
@@ -377,6 +377,21 @@ void write_replay(const fs::path &dir, const RunOptions &options, const RunSumma
     return;
   }
   common::write_file_atomically((dir / "replay.html").string(), replay->html);
+}
+
+// --plan-to / plan: plan.png (the learned map with the planned path) and plan.csv (its
+// sub-cells in order, with their centres in metres).
+void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummary &plan, const RunFiles &files) {
+  std::string csv = "index,subcell_x,subcell_y,x_m,y_m\n";
+  for (std::size_t i = 0; i < plan.path.size(); ++i) {
+    const mapping::Point p = files.grid->centre_of(plan.path[i]);
+    fmt::format_to(std::back_inserter(csv), "{},{},{},{:.4f},{:.4f}\n", i, plan.path[i].x, plan.path[i].y, p.x_m, p.y_m);
+  }
+  MapMarks marks{{}, files.goals, plan.path};
+  const std::string caption = fmt::format("{}, plan to ({},{})", map_caption(options), plan.to.x, plan.to.y);
+  common::write_file_atomically((dir / "plan.png").string(),
+                                png_file(*files.grid, map_tones(options, *files.model), marks, caption));
+  common::write_file_atomically((dir / "plan.csv").string(), csv);
 }
 
 }  // namespace
@@ -409,12 +424,13 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
   const MapTones tones = map_tones(options, *files.model);
   common::write_file_atomically((d / "map.png").string(),
-                                png_file(*files.grid, tones, MapMarks{*files.path, files.goals}, map_caption(options)));
+                                png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}}, map_caption(options)));
   common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
   if (options.output.trace) common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
   if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(d / "snapshots", options, summary, files);
   write_replay(d, options, summary, files);
+  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files);
 }
 
 }  // namespace app

@@ -20,12 +20,15 @@
 //                       "plan" without planning, ...), plus "options": every option in
 //                       effect, one object a concern of RunOptions ("max_steps" is the limit
 //                       in effect; a null "noise" is the robot's own).
-//   trace.csv           one row a control step (see trace_header()).
+//   trace.csv           one row a control step (see trace_header()), map-log can read it.
 //   snapshots/NN.png    --snapshots N: map.png as it was after each of snapshot_steps(steps,
 //                       N) (app/grid_history.hpp), 01.png first, the step in the caption.
 //   replay.html         the run in a browser, unless --no-replay: app/replay.hpp. Not written
 //                       (a warning on stderr) for a grid over kReplayMaxSubcells sub-cells or a
 //                       page over kReplayMaxBytes even with the whole run in one frame.
+//   plan.png, plan.csv  --plan-to (or `plan --out`) when a path was found: map.png's picture
+//                       with the planned path in magenta instead of the exploration's; the
+//                       path's sub-cells in order, `index,subcell_x,subcell_y,x_m,y_m`.
 // Every file is written to a temporary name in DIR, then renamed.
 
 #include <functional>
@@ -69,10 +72,12 @@ std::string summary_json(const RunOptions &options, const RunSummary &summary);
 // "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated\n":
 // the control step (1-based, as the console's "step N"), simulated seconds, the true pose from
 // the simulator, the controller's cell (the one arrived in at that step, as the console
-// prints it; see robot::StepReport), what the robot did, and the sub-cells its scan updated.
-std::string trace_header();
+// prints it; see robot::StepReport), what the robot did, and the sub-cells its scan updated;
+// then `sensor_columns` (app/trace_sensors.hpp: the pose the robot reads, its bumps or depth).
+std::string trace_header(const std::string &sensor_columns = "");
+// One row; `sensor_values` are the sensor columns' values (",..."), as the header has them.
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
-                      double yaw_rad);
+                      double yaw_rad, const std::string &sensor_values = "");
 
 struct RunFiles {
   const mapping::OccupancyGrid *grid = nullptr;

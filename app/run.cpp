@@ -26,6 +26,7 @@
 #include "app/outputs.hpp"
 #include "app/profile_json.hpp"
 #include "app/terminal.hpp"
+#include "app/trace_sensors.hpp"
 
 namespace app {
 namespace {
@@ -107,6 +108,8 @@ struct RunState {
   bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
   std::string trace;          // trace.csv, when --out
+  std::optional<TraceSensors> trace_sensors;  // its columns of the robot's readings
+  std::string sensor_values;  // one row's readings (reused)
   std::optional<GridHistory> history;  // --snapshots, replay.html
 };
 
@@ -150,6 +153,7 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
   p.found = true;
   p.length_subcells = path->length_subcells;
   p.length_cells = path->length_cells;
+  p.path = path->subcells;
   const std::vector<bool> mask = plan::path_mask(result.grid, *path);
   style.path = &mask;
   out << fmt::format("planned path ({},{}) -> ({},{}):\n", p.from.x, p.from.y, p.to.x, p.to.y);
@@ -294,7 +298,11 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
       }
       if (state.quit) return false;
       const maze::sim::Pose &pose = simulation.pose();
-      if (!o.out_dir.empty() && o.trace) append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad);
+      if (state.trace_sensors) {
+        state.sensor_values.clear();
+        state.trace_sensors->append_values(state.sensor_values);
+        append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad, state.sensor_values);
+      }
       // Only lidar scans are counted in subcells_updated; other sensors' marks may come any step.
       if (state.history && (step.subcells_updated > 0 || !lidar_only)) state.history->record(step.step, *step.grid);
       if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
@@ -356,7 +364,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
-  if (!out_dir.empty() && options.output.trace) state.trace = trace_header();
+  if (!out_dir.empty() && options.output.trace) {
+    state.trace_sensors.emplace(simulation.robot(), controller_opts);
+    state.trace = trace_header(state.trace_sensors->header());
+  }
   if (!out_dir.empty() && keeps_history(options, controller_opts.geometry)) {
     state.history.emplace(controller_opts.geometry, style.initial_log_odds);
   }

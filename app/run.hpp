@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/evaluation.hpp"
 #include "app/run_options.hpp"
@@ -36,6 +37,7 @@ struct PlanSummary {
   bool found = false;
   int length_subcells = 0;
   int length_cells = 0;
+  std::vector<mapping::SubCell> path;  // the planned sub-cells, from's centre first (when found)
 };
 
 struct RunSummary {

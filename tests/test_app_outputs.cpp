@@ -149,12 +149,18 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
 
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());
-  CHECK(csv[0] == "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated");
+  CHECK(csv[0] == "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated,"
+                  "gps_x_m,gps_y_m,imu_yaw_rad");
   // hambot's lidar rotates at 12 Hz: the first scan waits a revolution (3 steps) at rest.
-  CHECK(csv[1] == "1,0.032,0.5000,0.5000,1.5708,0,0,start,0");
-  CHECK(csv[4] == "4,0.128,0.5000,0.5000,1.5708,0,0,rest,8");
+  // Its GPS and IMU have no noise: the pose it reads is the true one.
+  CHECK(csv[1] == "1,0.032,0.5000,0.5000,1.5708,0,0,start,0,0.5000,0.5000,1.5708");
+  CHECK(csv[4] == "4,0.128,0.5000,0.5000,1.5708,0,0,rest,8,0.5000,0.5000,1.5708");
   std::size_t updated = 0;
-  for (std::size_t i = 1; i < csv.size(); ++i) updated += std::stoul(csv[i].substr(csv[i].rfind(',') + 1));
+  for (std::size_t i = 1; i < csv.size(); ++i) {
+    std::size_t at = 0;
+    for (int column = 0; column < 8; ++column) at = csv[i].find(',', at) + 1;  // to subcells_updated
+    updated += std::stoul(csv[i].substr(at, csv[i].find(',', at) - at));
+  }
   CHECK(static_cast<std::int64_t>(csv.size()) - 1 == summary.steps);
   CHECK(updated > 0);
 
@@ -393,7 +399,7 @@ TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes
     std::vector<std::string> fields;
     std::stringstream fs_in(row);
     for (std::string f; std::getline(fs_in, f, ',');) fields.push_back(f);
-    REQUIRE(fields.size() == 9);
+    REQUIRE(fields.size() == 12);  // and the GPS and IMU columns
     CHECK(fields[5] == std::to_string(x));
     CHECK(fields[6] == std::to_string(y));
     ++compared;
