@@ -58,6 +58,7 @@
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
+#include "mapping/walls.hpp"
 
 namespace sensing {
 
@@ -78,6 +79,8 @@ inline constexpr double kPieSideSlack = 0.05;
 // cone: readings whose distance error eps d exceeds kConeUsableError cell sizes are beyond the
 // usable range (sonar, eps 6.6 %: 2.27 m with 1 m cells; the 1.5 m IR is never cut).
 inline constexpr double kConeUsableError = 0.15;
+// cone: the occupied arc spans d (1 - n eps) ... d (1 + n eps), n = kConeArcErrors.
+inline constexpr double kConeArcErrors = 2.0;
 
 // One bumper as read: where it touches (robot centre + mounting offset along its angle).
 struct BumpReading {
@@ -93,7 +96,25 @@ struct RangeReading {
   double max_range_m = 0.0; // readings at or beyond this are "nothing seen"
   double aperture_rad = 0.0;  // full beam width (cone model)
   double range_error = 0.0;   // relative distance error eps (cone model)
+  // A sonar (DistanceSensor::getType() SONAR): a surface at more than 22.5 deg to the beam
+  // sends no echo back, so a reading of nothing seen says nothing about the cone.
+  bool echo_can_be_lost = false;
 };
+
+// A sonar ray meeting a surface at more than this angle of incidence sends no echo back
+// (Webots' DistanceSensor reference, type "sonar").
+inline constexpr double kSonarEchoIncidence_rad = 0.39269908169872414;  // pi / 8
+// Whether a reading of nothing seen tells of the cone: always for a sensor that cannot lose
+// an echo; for a sonar only when it looks square to the grid (its axis within pi/8 - half its
+// aperture of a grid axis), so that every ray would meet a wall on a cell side, the only
+// place walls stand, at an incidence that echoes. A sonar at a slant to the grid hears
+// nothing whether or not a wall is there.
+bool no_return_tells(const RangeReading &r);
+
+// Whether a reading is "nothing seen": within kPieNoReturnErrors of its own errors of max
+// range (d (1 + n eps) >= max (1 - n eps)); the sensor's noise, a fraction eps of the value,
+// puts a nothing-seen reading below max half the time.
+bool is_no_return(const RangeReading &r);
 
 struct RangeModelOptions {
   double pie_half_angle_rad = 0.17453292519943295;  // beta, --pie-beta (deg on the command line)
@@ -147,6 +168,16 @@ void mark_depth(const mapping::OccupancyGrid &grid, mapping::Point robot, std::s
 LeveledUpdate make_pie_update();
 void mark_pie(const mapping::OccupancyGrid &grid, const RangeModelOptions &options,
               std::span<const RangeReading> readings, LeveledUpdate &update);
+
+// What readings taken in cell c say of its side h, as the lidar's read_cell_side does for a
+// scan: a reading whose axis points within kFacingSide_rad of h and that returns closer than
+// the side's line plus kRangeSideMargin cells reads a wall; one that returns farther, or
+// sees nothing, reads open (a sonar's lost echo says nothing); unknown when no reading
+// faces h. The robot reads a side again when the grid calls it open but this says wall.
+inline constexpr double kFacingSide_rad = 0.1;
+inline constexpr double kRangeSideMargin = 0.25;
+mapping::SideState read_range_side(const mapping::OccupancyGrid &grid, std::span<const RangeReading> readings,
+                                   mapping::Cell c, mapping::Heading h);
 
 // Levels: 0 occupied (p_occ), 1 free (p_free) of the sensor model.
 LeveledUpdate make_cone_update(const mapping::SensorModelOptions &sensor);
