@@ -14,32 +14,34 @@
 //          contacting reading adds a contact slice reaching d + alpha. Each sub-cell's four
 //          corners and centre are tested: a point in the contact slice but not in the clear
 //          one makes the sub-cell occupied (p = 0.7), else a point in the clear slice makes
-//          it free (p = 0.4). Besides, a sub-cell is occupied when the reading's own arc -
-//          radius d, across the slice, where the contact part begins and the obstacle is -
-//          passes through its inside (an exact test, not a sample). With 1 m cells, K = 3 or
+//          it free (p = 0.4). Besides, a sub-cell is occupied when one of the reading's
+//          arcs - radii d (1 - 2 eps) ... d (1 + 2 eps) across the slice, where the contact
+//          part begins and the obstacle is, within two of the reading's errors (eps is a
+//          standard deviation) - passes through its inside (an exact test, not a sample): a
+//          reading a little long must not put an outer wall beyond the grid's edge. With 1 m cells, K = 3 or
 //          5 and beta = 10 deg no corner or centre ever lies in the 0.1 m contact part beyond
 //          a wall 0.4 m ahead (the band sub-cell straddling the wall face has its centre in
 //          front of it, its corners outside the 0.14 m wide slice), so the five points alone
 //          never mark a wall; the arc lies in exactly that sub-cell. At K = 9 the corners do
 //          reach the contact part and the arc adds at most its neighbours across the slice.
-//   cone   reading d, beam width sigma (full aperture), distance error eps: the arc between
-//          d(1 - eps) and d(1 + eps) across the beam is occupied (the model's p_occ), the
-//          cone inside d(1 - eps) free (p_free); swept at an angular step of half a
+//   cone   reading d, beam width sigma (full aperture), distance error eps (a standard deviation):
+//          the arc between d(1 - 2 eps) and d(1 + 2 eps) across the beam is occupied (the model's
+//          p_occ), the cone inside d(1 - 2 eps) free (p_free); swept at an angular step of half a
 //          sub-cell's angular size at that range (and radially at half a sub-cell), so every
-//          sub-cell it covers is visited. A reading at max range frees the cone up to
-//          max (1 - eps) and marks no arc. Both are weighted as in Moravec & Elfes (1985)
-//          and Elfes (1989): a point at angle theta off the axis and range r carries
-//          p = prior + w (p_model - prior) with w = 1 - (theta / (sigma/2))^2 on the arc
-//          and w = (1 - (theta / (sigma/2))^2) (1 - (r / (d (1 - eps)))^2) in the free
-//          cone: the model's p on the axis (at the sensor, for free), no information at the
-//          edges and where the free cone meets the arc. Why: a wide beam (sonar, 0.4 rad)
-//          averages rays spread over the cone (ir/sonar profiles, like Webots' distance
-//          sensors), so a point inside the reading need not be free; unweighted, the cone's
-//          edges freed the wall bands beside every corridor the sonar looked along (-0.85
-//          each time against the arc's +0.41 once): 15 of lab4x4's 40 sides came out wrong,
-//          every one a wall read as open. The arc is sampled at the centres of an odd number
-//          of equal angular steps, so a narrow beam (IR, 0.03 rad, one step) is marked on its
-//          axis and the axis keeps the course numbers.
+//          sub-cell it covers is visited. A reading of nothing seen (is_no_return) frees the cone
+//          up to min(d, usable range) (1 - 2 eps) and marks no arc; a sonar's, only when it looks
+//          square to the grid (no_return_tells), else it marks nothing. Both are weighted as in
+//          Moravec & Elfes (1985) and Elfes (1989): a point at angle theta off the axis and range r
+//          carries p = prior + w (p_model - prior) with w = 1 - (theta / (sigma/2))^2 on the arc
+//          and w = (1 - (theta / (sigma/2))^2) (1 - (r / (d (1 - 2 eps)))^2) in the free cone: the
+//          model's p on the axis (at the sensor, for free), no information at the edges and where
+//          the free cone meets the arc. Why: a wide beam (sonar, 0.4 rad) hears the nearest echo
+//          among rays spread over the cone (Webots' sonar), and an IR averages its rays, so a point
+//          inside the reading need not be free; unweighted, the cone's edges freed the wall bands
+//          beside every corridor the sonar looked along (-0.85 each time against the arc's +0.41
+//          once): 15 of lab4x4's 40 sides came out wrong, every one a wall read as open. The arc is
+//          sampled at the centres of an odd number of equal angular steps, so a narrow beam (IR,
+//          0.03 rad, one step) is marked on its axis and the axis keeps the course numbers.
 // pie: a reading within two distance errors of max (>= max (1 - 2 eps)) is clear, and a
 // clear slice reaches the reading (1 - eps): the sensor's noise near max range would
 // otherwise report phantom contacts, or free a wall just short of max. With the profiles'
