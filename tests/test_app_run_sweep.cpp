@@ -161,17 +161,18 @@ TEST_SUITE("acceptance") {
                         {"bumper-depth", sensing::ModelKind::bump}};
     for (const Row &row : rows) {
       for (const int k : {3, 5}) {
-        const std::vector<double> a = range_setup_accuracies(row.robot, row.model, k);
+        const std::string robot = row.robot;
+        const std::vector<double> a = range_setup_accuracies(robot, row.model, k);
         double sum = 0.0;
         for (const double v : a) sum += v;
         const double mean = sum / static_cast<double>(a.size());
         const double worst = *std::min_element(a.begin(), a.end());
-        CAPTURE(row.robot);
+        CAPTURE(robot);
         CAPTURE(sensing::to_string(row.model));
         CAPTURE(k);
         CHECK(mean >= 99.5);
         CHECK(worst >= 97.5);
-        MESSAGE(fmt::format("{} {} K={}: mean wall accuracy {:.2f} %, worst {:.2f} %", row.robot,
+        MESSAGE(fmt::format("{} {} K={}: mean wall accuracy {:.2f} %, worst {:.2f} %", robot,
                             sensing::to_string(row.model), k, mean, worst));
       }
     }
