@@ -29,7 +29,7 @@
 //          p_occ), the cone inside d(1 - 2 eps) free (p_free); swept at an angular step of half a
 //          sub-cell's angular size at that range (and radially at half a sub-cell), so every
 //          sub-cell it covers is visited. A reading of nothing seen (is_no_return) frees the cone
-//          up to min(d, usable range) (1 - 2 eps) and marks no arc; a sonar's, only when it looks
+//          up to min(d, usable range, 2/3 max) (1 - 2 eps), no arc; a sonar's, only when it looks
 //          square to the grid (no_return_tells), else it marks nothing. Both are weighted as in
 //          Moravec & Elfes (1985) and Elfes (1989): a point at angle theta off the axis and range r
 //          carries p = prior + w (p_model - prior) with w = 1 - (theta / (sigma/2))^2 on the arc
@@ -81,6 +81,10 @@ inline constexpr double kPieSideSlack = 0.05;
 // cone: readings whose distance error eps d exceeds kConeUsableError cell sizes are beyond the
 // usable range (sonar, eps 6.6 %: 2.27 m with 1 m cells; the 1.5 m IR is never cut).
 inline constexpr double kConeUsableError = 0.15;
+// cone: a reading of nothing seen frees the cone no farther than this fraction of max range,
+// as the pie's usable range (RangeModelOptions::pie_usable_fraction): the IR's wall 1.40 m
+// ahead, in the band a cell beyond, reads as nothing seen (1.33 m or more) 24 times in 25.
+inline constexpr double kConeNoReturnReach = 2.0 / 3.0;
 // cone: the occupied arc spans d (1 - n eps) ... d (1 + n eps), n = kConeArcErrors.
 inline constexpr double kConeArcErrors = 2.0;
 
