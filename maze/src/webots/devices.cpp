@@ -155,7 +155,7 @@ double DistanceSensor::getMinValue() const {
   return min;
 }
 double DistanceSensor::getAperture() const { return simulation().distance_spec(index()).aperture_rad; }
-int DistanceSensor::getType() const {
+DistanceSensor::Type DistanceSensor::getType() const {
   switch (simulation().distance_spec(index()).type) {
     case maze::sim::DistanceSensorType::generic: return GENERIC;
     case maze::sim::DistanceSensorType::infra_red: return INFRA_RED;

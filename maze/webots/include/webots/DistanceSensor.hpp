@@ -19,7 +19,7 @@ class DistanceSensor : public Device {
   double getMaxValue() const;
   double getMinValue() const;
   double getAperture() const;  // rad
-  int getType() const;
+  Type getType() const;
 
  private:
   friend class embedded::Simulation;
