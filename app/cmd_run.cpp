@@ -22,6 +22,17 @@
 namespace app {
 namespace {
 
+// --narrow, --wide: the terminal columns of a sub-cell (OutputOptions::subcell_columns).
+void add_width_options(CLI::App &command, RunOptions &o) {
+  CLI::Option *narrow = command.add_flag_callback(
+      "--narrow", [&o] { o.output.subcell_columns = 1; },
+      "one column a sub-cell, the classroom look (default when standard output is not a terminal)");
+  command
+      .add_flag_callback("--wide", [&o] { o.output.subcell_columns = 2; },
+                         "two columns a sub-cell, the maze at its true aspect (default in a terminal the map fits)")
+      ->excludes(narrow);
+}
+
 // What only `run` takes, besides the exploration options.
 void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
   run.add_flag("--quiet", o.output.quiet, "print only the final map and the summary");
@@ -30,13 +41,17 @@ void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run.add_option("--out", o.output.out_dir,
-                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv");
+                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
   run.add_option("--snapshots", o.output.snapshots,
                  "N: with --out, N pictures of the map at equal fractions of the run's steps in "
                  "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
   run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv (a row a control step)");
+  run.add_flag("--no-replay{false}", o.output.replay,
+               "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
   run.add_flag("--no-color", no_color, "no ANSI colours (default colours when stdout is a terminal)");
-  run.add_flag("--animate", o.output.animate, "redraw the map in place as the robot moves");
+  run.add_flag("--animate", o.output.animate,
+               "redraw the map in place as the robot moves (standard output must be a terminal)");
+  add_width_options(run, o);
   run.add_option("--fps", o.output.fps,
                  fmt::format("--animate: frames per second, at most (default {:g})", o.output.fps));
   run.add_option("--speed", o.output.speed,
@@ -61,6 +76,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
       "plan", "explore a world quietly, then plan a path on the learned map (wavefront) and draw it; "
               "exit status 1 when no path is found");
   add_exploration_options(*plan, *parsed);
+  add_width_options(*plan, *parsed);
   plan->add_option_function<std::string>(
       "--from", [parsed](const std::string &text) { parsed->plan.from = parse_cell(text, "--from"); },
       "X,Y: start cell of the path (default the maze's start)");
@@ -80,6 +96,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     }
     RunControls controls;
     controls.interrupted = &SigintGuard::interrupted;
+    controls.terminal_fd = STDOUT_FILENO;
     const SigintGuard sigint;
     const RunSummary summary = run_world(options, std::cout, controls);
     const bool no_path = summary.plan && !summary.plan->found && !summary.interrupted;
@@ -108,6 +125,11 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
     if (context.run_parse_only != nullptr) {
       *context.run_parse_only = options;
       return;
+    }
+    if (options.output.animate && !is_terminal(STDOUT_FILENO)) {
+      throw common::InputError(
+          "--animate redraws a terminal in place and standard output is not one; without --animate the run "
+          "prints the map at each new cell");
     }
     print_warnings(warnings);
     options.output.color = !*no_color && is_terminal(STDOUT_FILENO);

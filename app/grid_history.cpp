@@ -18,7 +18,9 @@ void GridHistory::record(std::int64_t step, const mapping::OccupancyGrid &grid) 
   }
 }
 
-void GridHistory::arrived(std::int64_t step, mapping::Cell cell) { arrivals_.push_back(Arrival{step, cell}); }
+void GridHistory::arrived(std::int64_t step, mapping::Cell cell, mapping::Heading heading) {
+  arrivals_.push_back(Arrival{step, cell, heading});
+}
 
 mapping::OccupancyGrid GridHistory::grid_at(std::int64_t step) const {
   mapping::OccupancyGrid grid(geometry_, initial_log_odds_);

@@ -1,7 +1,8 @@
 #pragma once
-// The run as it went, for pictures part-way through it (--snapshots): the sub-cells each
-// recorded step changed, and the cells the robot arrived in, so that the grid and the path
-// after any step can be rebuilt when the run is over.
+// The run as it went, for pictures part-way through it (--snapshots) and the replay
+// (replay.html): the sub-cells each recorded step changed, and the cells the robot arrived
+// in with its heading there, so that the grid and the path after any step can be rebuilt
+// when the run is over.
 //
 // record() compares the grid with its own copy of the last recorded state: O(W * H * K * K)
 // a call, and 16 bytes kept a changed sub-cell. A change is dated by the call that first sees
@@ -23,8 +24,9 @@ class GridHistory {
 
   // Notes the sub-cells that differ from the last recorded state, as changed at `step`.
   void record(std::int64_t step, const mapping::OccupancyGrid &grid);
-  // Notes that the robot arrived in `cell` at `step` (the start at step 0 or its first step).
-  void arrived(std::int64_t step, mapping::Cell cell);
+  // Notes that the robot arrived in `cell` at `step` (the start at step 0 or its first step),
+  // facing `heading`.
+  void arrived(std::int64_t step, mapping::Cell cell, mapping::Heading heading = mapping::Heading::north);
 
   // The grid as it was after `step`: every change recorded at a step <= `step`.
   mapping::OccupancyGrid grid_at(std::int64_t step) const;
@@ -33,7 +35,7 @@ class GridHistory {
 
   std::size_t changes() const { return changes_.size(); }
 
- private:
+  // A sub-cell (flat grid index, OccupancyGrid::at_index) that took `value` at `step`.
   struct Change {
     std::int64_t step;
     std::uint32_t index;
@@ -42,7 +44,15 @@ class GridHistory {
   struct Arrival {
     std::int64_t step;
     mapping::Cell cell;
+    mapping::Heading heading;
   };
+  // Everything recorded, in order of step.
+  const std::vector<Change> &change_log() const { return changes_; }
+  const std::vector<Arrival> &arrivals() const { return arrivals_; }
+  const mapping::GridGeometry &geometry() const { return geometry_; }
+  float initial_log_odds() const { return initial_log_odds_; }
+
+ private:
   mapping::GridGeometry geometry_;
   float initial_log_odds_;
   std::vector<float> last_;

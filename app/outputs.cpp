@@ -244,6 +244,8 @@ Json output_json(const OutputOptions &o) {
   j["step"] = o.step;
   j["trace"] = o.trace;
   j["snapshots"] = o.snapshots;
+  j["replay"] = o.replay;
+  j["subcell_columns"] = or_null(o.subcell_columns);
   return j;
 }
 
@@ -360,7 +362,44 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
   }
 }
 
+std::size_t subcells_of(const mapping::GridGeometry &g) {
+  return static_cast<std::size_t>(g.width_subcells()) * static_cast<std::size_t>(g.height_subcells());
+}
+
+bool replay_fits(const mapping::GridGeometry &g) { return subcells_of(g) <= kReplayMaxSubcells; }
+
+void write_replay(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+  if (!options.output.replay || files.history == nullptr || !replay_fits(files.grid->geometry())) return;
+  const std::optional<Replay> replay = replay_file(options, summary, files);
+  if (!replay) {
+    fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
+               kReplayMaxBytes >> 20);
+    return;
+  }
+  common::write_file_atomically((dir / "replay.html").string(), replay->html);
+}
+
 }  // namespace
+
+bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geometry) {
+  if (options.output.replay && !replay_fits(geometry)) {
+    fmt::print(stderr, "warning: replay.html not written: the grid has {} sub-cells, a replay at most {} (--no-replay "
+               "leaves it out without this warning)\n", subcells_of(geometry), kReplayMaxSubcells);
+  }
+  return options.output.snapshots > 0 || (options.output.replay && replay_fits(geometry));
+}
+
+std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+  ReplayInput input;
+  input.history = files.history;
+  input.tones = map_tones(options, *files.model);
+  input.goals = files.goals;
+  input.title = options.world;
+  input.caption = map_caption(options);
+  input.steps = summary.steps;
+  input.summary = summary_pairs(format_summary(options, summary));
+  return replay_html(input);
+}
 
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files) {
@@ -374,7 +413,8 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
   common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
   if (options.output.trace) common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
-  if (files.history != nullptr) write_snapshots(d / "snapshots", options, summary, files);
+  if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(d / "snapshots", options, summary, files);
+  write_replay(d, options, summary, files);
 }
 
 }  // namespace app

@@ -23,14 +23,19 @@
 //   trace.csv           one row a control step (see trace_header()).
 //   snapshots/NN.png    --snapshots N: map.png as it was after each of snapshot_steps(steps,
 //                       N) (app/grid_history.hpp), 01.png first, the step in the caption.
+//   replay.html         the run in a browser, unless --no-replay: app/replay.hpp. Not written
+//                       (a warning on stderr) for a grid over kReplayMaxSubcells sub-cells or a
+//                       page over kReplayMaxBytes even with the whole run in one frame.
 // Every file is written to a temporary name in DIR, then renamed.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/grid_history.hpp"
 #include "app/map_picture.hpp"
+#include "app/replay.hpp"
 #include "app/run.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
@@ -78,8 +83,16 @@ struct RunFiles {
   const maze::Maze *truth = nullptr;    // truth.png
   const explore::Visits *visits = nullptr;
   std::function<LearnedSide(maze::Cell, maze::Side)> learned;
-  const GridHistory *history = nullptr;  // --snapshots: the run as it went
+  const GridHistory *history = nullptr;  // --snapshots, replay.html: the run as it went
 };
+
+// Whether a run with --out records a GridHistory: for --snapshots, or for replay.html when
+// the grid has at most kReplayMaxSubcells sub-cells (else a warning on stderr that the
+// replay is not written).
+bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geometry);
+
+// replay.html's bytes for this run, or nothing when it is too large (app/replay.hpp).
+std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &summary, const RunFiles &files);
 
 // visited[y * W + x]: whether the robot stood in cell (x, y), as score_map() takes it.
 std::vector<bool> visited_cells(const explore::Visits &visits);
@@ -87,7 +100,7 @@ std::vector<bool> visited_cells(const explore::Visits &visits);
 // truth.png's bytes (app/truth_picture.hpp) for this run.
 std::string truth_png_file(const RunOptions &options, const RunFiles &files);
 
-// Writes the six files into dir (prepared by prepare_output_dir).
+// Writes the files into dir (prepared by prepare_output_dir).
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files);
 

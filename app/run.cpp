@@ -107,7 +107,7 @@ struct RunState {
   bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
   std::string trace;          // trace.csv, when --out
-  std::optional<GridHistory> history;  // --snapshots
+  std::optional<GridHistory> history;  // --snapshots, replay.html
 };
 
 // --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
@@ -242,8 +242,10 @@ void check_fit(const RunOptions &options, const maze::Maze &truth, const maze::s
 }
 
 render::MapStyle map_style(const OutputOptions &output, const mapping::SensorModel &model,
-                           const robot::ControllerOptions &controller) {
+                           const robot::ControllerOptions &controller, int terminal_fd) {
   render::MapStyle style;
+  style.subcell_columns = subcell_columns(output.subcell_columns, terminal_fd, controller.geometry.width_subcells());
+  if (!output.animate) note_if_too_wide(terminal_fd, controller.geometry.width_subcells(), style.subcell_columns);
   style.ascii = output.ascii;
   style.unknown = output.unknown;
   style.initial_log_odds = static_cast<float>(model.prior_log_odds());
@@ -272,7 +274,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
     hooks.on_move = [&](const robot::MoveReport &report) {
       if (state.history) {
         state.history->record(report.step, *report.grid);
-        state.history->arrived(report.step, report.cell);
+        state.history->arrived(report.step, report.cell, report.heading);
       }
       if (printer) (*printer)(report);
       if (animator) {
@@ -348,14 +350,14 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   check_fit(options, truth, profile, controller_opts);
   webots::embedded::Simulation simulation(truth, profile, options.simulation);
   const mapping::SensorModel model(options.sensor);
-  render::MapStyle style = map_style(options.output, model, controller_opts);
+  render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   const std::string &out_dir = options.output.out_dir;
   if (!out_dir.empty()) prepare_output_dir(out_dir);
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
   if (!out_dir.empty() && options.output.trace) state.trace = trace_header();
-  if (!out_dir.empty() && options.output.snapshots > 0) {
+  if (!out_dir.empty() && keeps_history(options, controller_opts.geometry)) {
     state.history.emplace(controller_opts.geometry, style.initial_log_odds);
   }
   const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);

@@ -25,7 +25,7 @@ struct RunControls {
   std::istream *in = nullptr;           // --step reads lines here
   std::ostream *prompt = nullptr;       // --step's prompt, when set
   bool (*interrupted)() = nullptr;      // polled every step: true stops the run (Ctrl-C)
-  int terminal_fd = -1;                 // --animate: the screen size comes from here
+  int terminal_fd = -1;                 // the terminal: --animate's screen size, the map's width (app/terminal.hpp)
 };
 
 // What the planner found, for the summary.

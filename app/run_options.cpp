@@ -64,6 +64,7 @@ constexpr OptionUse kOptionUses[] = {
     {"--dilate", "without --plan-to", planning},
     {"--snapshots", "without --out", writing_files},
     {"--no-trace", "without --out", writing_files},
+    {"--no-replay", "without --out", writing_files},
 };
 
 // The sensing::ModelOption bits of the options given: option_name() is "--p-free/--p-occ"

@@ -34,9 +34,13 @@ struct OutputOptions {
   double fps = 30.0;                    // --fps, --animate's frames per second at most
   double speed = 10.0;                  // --speed: simulated seconds per wall-clock second
   bool step = false;                    // --step: wait for Enter (or q) after each cell
-  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, truth.png, summary.json, trace.csv
+  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, truth.png, summary.json, trace.csv, replay.html
   bool trace = true;                    // trace.csv with --out (--no-trace: not written)
   int snapshots = 0;                    // --snapshots N: N pictures through the run in DIR/snapshots/
+  bool replay = true;                   // replay.html with --out (--no-replay: not written)
+  // --narrow (1) or --wide (2): terminal columns a sub-cell; none: 2 when standard output is
+  // a terminal wide enough for the map so drawn, else 1 (pipes and files: the classroom look).
+  std::optional<int> subcell_columns;
 };
 
 // Planning on the learned grid after exploring.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstdio>
 #include <ostream>
 #include <string>
 #include <thread>
@@ -29,6 +30,23 @@ TerminalSize terminal_size(int fd) {
     return {ws.ws_col, ws.ws_row};
   }
   return {};
+}
+
+int subcell_columns(std::optional<int> asked, int fd, int map_subcells_wide) {
+  if (asked) return *asked;
+  if (fd < 0 || !is_terminal(fd)) return 1;
+  return 2 * map_subcells_wide <= terminal_size(fd).columns ? 2 : 1;
+}
+
+void note_if_too_wide(int fd, int map_subcells_wide, int columns) {
+  if (fd < 0 || !is_terminal(fd)) return;
+  const int width = map_subcells_wide * columns;
+  const int terminal = terminal_size(fd).columns;
+  if (width <= terminal) return;
+  fmt::print(stderr,
+             "note: the map is {} columns wide and this terminal {}: its lines wrap; see it whole in a file "
+             "(run ... > run.txt), follow the robot with --animate, or open --out's map.png and replay.html\n",
+             width, terminal);
 }
 
 SigintGuard::SigintGuard() {
@@ -73,7 +91,7 @@ void Animator::draw(const robot::StepReport &step, double x_m, double y_m) {
   const int map_rows = grid.height() * grid.k();
   const int map_cols = grid.width() * grid.k();
   const int rows = std::min(map_rows, std::max(1, options_.screen.rows - 2));
-  const int cols = std::min(map_cols, std::max(1, options_.screen.columns));
+  const int cols = std::min(map_cols, std::max(1, options_.screen.columns / style_.subcell_columns));
   render::MapStyle style = style_;
   int at_row = map_rows / 2;
   int at_col = map_cols / 2;

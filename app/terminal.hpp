@@ -5,6 +5,7 @@
 #include <chrono>
 #include <csignal>
 #include <iosfwd>
+#include <optional>
 
 #include "render/ascii_map.hpp"
 #include "robot/cell_controller.hpp"
@@ -19,6 +20,15 @@ struct TerminalSize {
 };
 // ioctl(TIOCGWINSZ) on fd; 80 x 24 when fd is not a terminal or reports 0.
 TerminalSize terminal_size(int fd);
+
+// The terminal columns a sub-cell is drawn with: `asked` (--narrow 1, --wide 2) when given;
+// else 2 when fd is a terminal at least 2 * map_subcells_wide columns wide, else 1 (a pipe
+// or a file, where the golden outputs live, or a map too wide: the classroom look).
+int subcell_columns(std::optional<int> asked, int fd, int map_subcells_wide);
+
+// When fd is a terminal narrower than the map drawn `columns` a sub-cell: one line on stderr
+// saying how to see the map whole (a file, --animate's window, --out's pictures).
+void note_if_too_wide(int fd, int map_subcells_wide, int columns);
 
 // While alive: SIGINT sets a flag instead of killing the process. Restores the previous
 // handler when destroyed. One at a time.

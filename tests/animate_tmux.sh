@@ -2,7 +2,8 @@
 # The animation in a real terminal: runs `maze_mapper run --animate` in a tmux pane, waits for
 # it to end, captures the pane and checks that the screen shows the final map and summary
 # (the alternate screen left, so the normal screen is back). Then a slow run is stopped with
-# Ctrl-C: the summary says so and the exit status is 130.
+# Ctrl-C: the summary says so and the exit status is 130. Then the map's width in a terminal:
+# two columns a sub-cell by default, one with --narrow, a note when it is too wide even so.
 # Usage: animate_tmux.sh MAZE_MAPPER WORLD
 set -eu
 program=$1
@@ -32,12 +33,16 @@ wait_for() {
   fail "no '$1' on the screen after $2 s"
 }
 
+# A session that keeps the server up between the tests' sessions (killing the last session
+# ends the server, and a new session at that moment finds it gone).
+tm new-session -d -s keep "sleep 600"
 tm new-session -d -s mm -x 100 -y 40 \
   "$program run $world --animate --fps 1000 --speed 1000; echo EXIT=\$?; sleep 60"
 wait_for "EXIT=" 60
 grep -q "EXIT=0" "$pane" || fail "exit status is not 0"
 grep -q "^wall_accuracy: 100.00%" "$pane" || fail "no summary"
-grep -q "^WWWWWWWWWWWW$" "$pane" || fail "no map"
+# In a terminal a sub-cell is two columns (the true aspect): lab4x4's north wall is 24 W.
+grep -q "^WWWWWWWWWWWWWWWWWWWWWWWW$" "$pane" || fail "no map two columns a sub-cell"
 grep -q "^end: done" "$pane" || fail "the run did not end as done"
 if grep -q "step .* t .* s" "$pane"; then fail "an animation frame left on the normal screen"; fi
 tm kill-session -t mm
@@ -51,4 +56,17 @@ tm send-keys -t mm C-c
 wait_for "EXIT=" 30
 grep -q "EXIT=130" "$pane" || fail "exit status after Ctrl-C is not 130"
 grep -q "^end: stopped (interrupted by Ctrl-C)" "$pane" || fail "no summary after Ctrl-C"
-echo "animation in tmux: ok"
+tm kill-session -t mm
+
+# --narrow: the classroom look in a terminal too.
+tm new-session -d -s mm -x 100 -y 40 "$program run $world --narrow --quiet; echo EXIT=\$?; sleep 60"
+wait_for "EXIT=" 60
+grep -q "^WWWWWWWWWWWW$" "$pane" || fail "--narrow: no map one column a sub-cell"
+tm kill-session -t mm
+
+# A map too wide for the terminal even one column a sub-cell (K 9: 36 columns in 30): a note
+# on how to see it whole.
+tm new-session -d -s mm -x 30 -y 100 "$program run $world --subcells 9 --max-steps 1 --quiet; echo EXIT=\$?; sleep 60"
+wait_for "EXIT=" 60
+grep -q "^note: the map is 36 columns" "$pane" || fail "no note on a map wider than the terminal"
+echo "animation and map widths in tmux: ok"

@@ -158,8 +158,9 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   CHECK(static_cast<std::int64_t>(csv.size()) - 1 == summary.steps);
   CHECK(updated > 0);
 
-  // Nothing but the six files (no temporaries).
-  CHECK(std::distance(fs::directory_iterator(dir.path / "out"), fs::directory_iterator()) == 6);
+  // Nothing but the seven files (no temporaries).
+  CHECK(fs::exists(dir.path / "out" / "replay.html"));
+  CHECK(std::distance(fs::directory_iterator(dir.path / "out"), fs::directory_iterator()) == 7);
 }
 
 TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {

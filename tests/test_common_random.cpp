@@ -95,3 +95,18 @@ TEST_CASE("Rng: normal() follows the standard normal distribution in the body an
     CHECK(std::abs(counts[bin] - expected) < 5.0 * std::sqrt(expected) + 1.0);
   }
 }
+
+TEST_CASE("Rng: first_normal(seed) is Rng(seed).normal(), on the fast path and off it") {
+  int slow_path = 0;
+  for (std::uint64_t seed = 0; seed < 20000; ++seed) {
+    const std::uint64_t s = seed * 0x9e3779b97f4a7c15ULL;
+    common::Rng rng(s);
+    const double expected = rng.normal();
+    CHECK(common::Rng::first_normal(s) == expected);
+    common::Rng again(s);
+    const std::uint64_t bits = again.next_u64();
+    const double u = 2.0 * (static_cast<double>(bits >> 11) * 0x1.0p-53) - 1.0;
+    if (std::abs(u) >= common::detail::kZiggurat.ratio[bits & 127]) ++slow_path;
+  }
+  CHECK(slow_path > 100);  // the fallback was exercised (about 1.2 % of seeds)
+}

@@ -53,6 +53,23 @@ TEST_CASE("render_map: W, arrows at visited centres, blanks; north at the top") 
         "W     \n");
 }
 
+TEST_CASE("render_map: two columns a sub-cell (the true aspect): W, blanks, unknown doubled; the arrow then a blank") {
+  const Tiny t;
+  render::MapStyle style;
+  style.ascii = true;
+  style.subcell_columns = 2;
+  CHECK(render::render_map(t.grid, t.visits, style) ==
+        "WWWWWW  WW  \n"
+        "WW>         \n"
+        "WW          \n");
+  style.unknown = '?';
+  style.robot = render::RobotMark{mapping::SubCell{4, 1}, "@"};
+  CHECK(render::render_map(t.grid, t.visits, style) ==
+        "WWWWWW??WW??\n"
+        "WW>   ??@ ??\n"
+        "WW??????????\n");
+}
+
 TEST_CASE("render_map: --unknown marks never-observed sub-cells") {
   const Tiny t;
   render::MapStyle style;

@@ -35,9 +35,18 @@ constexpr const char *kRobotColor = "\x1b[1;31m";
 
 enum class Glyph { plain, wall, unknown, arrow, robot };
 
+// The text of one sub-cell, `subcell_columns` wide: one-column text doubled, except an
+// arrow or the robot, which a blank follows.
+void put_text(std::string &out, const MapStyle &style, Glyph kind, std::string_view text) {
+  out += text;
+  for (int extra = 1; extra < style.subcell_columns; ++extra) {
+    out += (kind == Glyph::arrow || kind == Glyph::robot) ? std::string_view(" ") : text;
+  }
+}
+
 void put(std::string &out, const MapStyle &style, Glyph kind, std::string_view text) {
   if (!style.color || kind == Glyph::plain) {
-    out += text;
+    put_text(out, style, kind, text);
     return;
   }
   switch (kind) {
@@ -47,7 +56,7 @@ void put(std::string &out, const MapStyle &style, Glyph kind, std::string_view t
     case Glyph::robot: out += kRobotColor; break;
     case Glyph::plain: break;
   }
-  out += text;
+  put_text(out, style, kind, text);
   out += kReset;
 }
 
@@ -62,7 +71,7 @@ void put_subcell(std::string &out, const mapping::OccupancyGrid &grid, const exp
     return;
   }
   if (style.path != nullptr && (*style.path)[grid.index(c, s)]) {
-    out += '*';
+    put(out, style, Glyph::plain, "*");
     return;
   }
   if (s.i == mid && s.j == mid) {
@@ -78,7 +87,7 @@ void put_subcell(std::string &out, const mapping::OccupancyGrid &grid, const exp
   } else if (mapping::is_occupied(v, style.threshold)) {
     put(out, style, Glyph::wall, "W");
   } else {
-    out += ' ';
+    put(out, style, Glyph::plain, " ");
   }
 }
 
@@ -90,7 +99,7 @@ void render_window(std::string &out, const mapping::OccupancyGrid &grid,
   assert(w.first_row >= 0 && w.row_count >= 0 && w.first_row + w.row_count <= grid.height() * k);
   assert(w.first_col >= 0 && w.col_count >= 0 && w.first_col + w.col_count <= grid.width() * k);
   out.reserve(out.size() + static_cast<std::size_t>(w.row_count) *
-                               (static_cast<std::size_t>(w.col_count) + 1));
+                               (static_cast<std::size_t>(w.col_count * style.subcell_columns) + 1));
   for (int row = w.first_row; row < w.first_row + w.row_count; ++row) {
     for (int col = w.first_col; col < w.first_col + w.col_count; ++col) {
       put_subcell(out, grid, visits, style, row, col);

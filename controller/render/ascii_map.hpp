@@ -1,6 +1,8 @@
 #pragma once
 // The map as text (DESIGN §7): H*K lines of W*K characters, north at the top, one character
-// a sub-cell, each line ending in '\n':
+// a sub-cell (the classroom look), each line ending in '\n'; with subcell_columns 2, each
+// sub-cell is two columns, so that the maze has its true aspect in a terminal (W, *, the
+// unknown character and blanks doubled; an arrow or the robot followed by a blank):
 //   *         a sub-cell of a planned path, when one is given (over everything else)
 //   an arrow  at the centre of a visited cell: the last heading the robot had there
 //             (↑ → ↓ ←, or ^ > v < with ascii)
@@ -36,9 +38,11 @@ struct MapStyle {
   std::optional<RobotMark> robot;
   std::optional<float> threshold;  // --threshold: W when log-odds >= this (default: > 0)
   const std::vector<bool> *path = nullptr;  // per flat grid index: '*' (a planned path)
+  int subcell_columns = 1;       // 1 (the classroom look, the golden files) or 2 (true aspect)
 };
 
-// The part of the map drawn: sub-cell rows and columns counted from the north-west corner.
+// The part of the map drawn: sub-cell rows and columns counted from the north-west corner
+// (a column is a sub-cell, whatever subcell_columns).
 struct MapWindow {
   int first_row = 0;
   int row_count = 0;

@@ -12,15 +12,25 @@
 
 namespace maze::sim {
 
-common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step) {
+namespace {
+std::uint64_t sensor_seed(std::uint64_t seed, int device, std::int64_t step) {
   const auto d = static_cast<std::uint64_t>(device) + 1;
   const auto s = static_cast<std::uint64_t>(step);
-  return common::Rng(seed ^ (d * 0x9e3779b97f4a7c15ULL) ^ (s * 0xd1b54a32d192ed03ULL));
+  return seed ^ (d * 0x9e3779b97f4a7c15ULL) ^ (s * 0xd1b54a32d192ed03ULL);
+}
+}  // namespace
+
+common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step) {
+  return common::Rng(sensor_seed(seed, device, step));
+}
+
+std::uint64_t beam_seed(std::uint64_t seed, int device, std::int64_t step, int beam) {
+  const auto b = static_cast<std::uint64_t>(beam) + 1;
+  return sensor_seed(seed ^ (b * 0xbf58476d1ce4e5b9ULL), device, step);
 }
 
 common::Rng beam_rng(std::uint64_t seed, int device, std::int64_t step, int beam) {
-  const auto b = static_cast<std::uint64_t>(beam) + 1;
-  return sensor_rng(seed ^ (b * 0xbf58476d1ce4e5b9ULL), device, step);
+  return common::Rng(beam_seed(seed, device, step, beam));
 }
 
 void check_pose_free(const WallGrid &walls, const Pose &pose) {
@@ -45,6 +55,8 @@ LidarModel::LidarModel(const LidarSpec &spec) : spec_(spec) {
   for (int i = 0; i < spec.horizontal_resolution; ++i) {
     cos_.push_back(std::cos(beam_angle_rad(spec, i)));
     sin_.push_back(std::sin(beam_angle_rad(spec, i)));
+    const double turn = -beam_angle_rad(spec, i) / (2.0 * std::numbers::pi);
+    sweep_phase_.push_back(turn - std::floor(turn));
   }
 }
 
@@ -73,7 +85,7 @@ LidarModel::Viewpoint LidarModel::viewpoint(const WallGrid &walls, const Pose &p
 }
 
 float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
-                             common::Rng &rng) const {
+                             std::uint64_t noise_seed) const {
   const auto b = static_cast<std::size_t>(i);
   assert(b < cos_.size());
   const double sigma_m = noise * spec_.max_range_m;
@@ -81,7 +93,7 @@ float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoin
   const double dx = from.cos_yaw * cos_[b] - from.sin_yaw * sin_[b];
   const double dy = from.sin_yaw * cos_[b] + from.cos_yaw * sin_[b];
   double range = walls.cast_from(from.origin, dx, dy, reach_m);
-  if (sigma_m > 0.0) range += rng.normal(0.0, sigma_m);
+  if (sigma_m > 0.0) range += sigma_m * common::Rng::first_normal(noise_seed);
   const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
   return in_range ? static_cast<float>(range) : std::numeric_limits<float>::infinity();
 }

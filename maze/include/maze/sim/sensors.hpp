@@ -26,6 +26,8 @@ common::Rng sensor_rng(std::uint64_t seed, int device, std::int64_t step);
 // The random stream of one beam of a rotating lidar measured at a step: (seed, device, step,
 // beam) only, so a beam keeps its reading until the head sweeps it again.
 common::Rng beam_rng(std::uint64_t seed, int device, std::int64_t step, int beam);
+// The seed beam_rng seeds its generator with.
+std::uint64_t beam_seed(std::uint64_t seed, int device, std::int64_t step, int beam);
 
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
@@ -53,13 +55,17 @@ class LidarModel {
     double sin_yaw;
   };
   static Viewpoint viewpoint(const WallGrid &walls, const Pose &pose);
-  // Beam i alone from a viewpoint, as range_image measures it, its noise drawn from rng.
+  // Beam i alone from a viewpoint, as range_image measures it, its noise the first normal
+  // variate of Rng(noise_seed) (beam_seed).
   float beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
-                   common::Rng &rng) const;
+                   std::uint64_t noise_seed) const;
+  // Where a rotating head passes beam i: revolutions clockwise from ahead, in [0, 1).
+  double sweep_phase(int i) const { return sweep_phase_[static_cast<std::size_t>(i)]; }
 
  private:
   LidarSpec spec_;
   std::vector<double> cos_, sin_;  // of beam_angle_rad(spec_, i)
+  std::vector<double> sweep_phase_;
 };
 
 // Where a ray from (x, y) along angle_rad first meets a wall: the distance (WallGrid::cast's,

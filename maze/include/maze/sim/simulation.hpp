@@ -135,23 +135,39 @@ class Simulation {
     std::int64_t read_at_step = -1;  // the step whose reading `cache` holds
     std::int64_t enabled_at_step = -1;  // when the sampling period last went from 0 (lidars)
     std::vector<float> ranges;
+    // A rotating lidar's image, beam by beam: the step whose pose beam i's range was cast
+    // from (0: not swept yet, -1: never computed). A beam is cast again only when the head
+    // has passed it since; its range is a function of that step alone (pose, noise stream).
+    std::vector<std::int64_t> beam_steps;
     double cache[3] = {0.0, 0.0, 0.0};
   };
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
+  // One basic step of the differential drive: exact arcs at the wheels' constant rates.
   void advance(double dt_s);
+  void turn_wheel(Wheel &wheel, double rate_rad_s, double h_s, bool arrives);
+  // The body along the arc of wheel rates (rad/s) for h_s: one arc in free space, arcs of at
+  // most a tenth of the body radius each (pushed out of walls after each) near walls.
+  void move_body(double left_rad_s, double right_rad_s, double h_s);
+  static maze::sim::Pose arc_end(const maze::sim::Pose &from, double v_m_s, double w_rad_s, double h_s);
+  // How many arcs to move the body in: 1 when the arc to `end` stays clear of every wall.
+  int substeps_for(const maze::sim::Pose &end, double v_m_s, double w_rad_s, double h_s);
   // push_out, skipped while the body is inside the cached free_centres_ box (exact: the
   // box is conservative, so the pose is the same as with push_out every substep).
   void keep_body_out_of_walls();
-  double wheel_rate(const Wheel &wheel, double dt_s) const;
+  // A wheel's rate until its next change (position control: the set velocity towards the
+  // target, 0 on it), and the time until it reaches its target (infinity: never this way).
+  double wheel_rate_rad_s(const Wheel &wheel) const;
+  double time_to_target_s(const Wheel &wheel) const;
   bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
   void read_disabled(DeviceState &state);  // a disabled three-value device reads NaN
   common::Rng rng_for(int device) const;
   double lidar_noise(const maze::sim::LidarSpec &spec) const;
   void apply_lidar_faults(int device, const maze::sim::LidarSpec &spec, std::vector<float> &ranges) const;
   // The step (from 1 after enable) whose end pose beam i of a rotating lidar holds, or 0.
-  std::int64_t swept_at_step(const maze::sim::LidarSpec &spec, std::int64_t steps_enabled, int i) const;
+  std::int64_t swept_at_step(const maze::sim::LidarSpec &spec, const maze::sim::LidarModel &model,
+                             std::int64_t steps_enabled, int i) const;
   void rotating_range_image(int device, DeviceState &state, const maze::sim::LidarSpec &spec);
   float faulty_beam(int device, const maze::sim::LidarSpec &spec, std::int64_t step, int beam,
                     float range) const;

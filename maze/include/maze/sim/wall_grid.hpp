@@ -36,6 +36,11 @@ struct Box {
   bool strictly_contains(double x_m, double y_m) const {
     return x_m > x_min_m && x_m < x_max_m && y_m > y_min_m && y_m < y_max_m;
   }
+  // Whether the disc of radius margin_m around (x, y) lies strictly inside.
+  bool contains_with_margin(double x_m, double y_m, double margin_m) const {
+    return x_m - margin_m > x_min_m && x_m + margin_m < x_max_m && y_m - margin_m > y_min_m &&
+           y_m + margin_m < y_max_m;
+  }
 };
 
 // A point on a wall's surface within reach of a disc, and the disc centre's distance to it.

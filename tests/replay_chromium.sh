@@ -1,0 +1,69 @@
+#!/bin/sh
+# replay.html in a real browser: a run writes it, headless Chromium (no sandbox: CI runs as
+# root; a virtual time budget for the page's script) loads it from the file, and the test
+# fails on a JavaScript error (the page's window.onerror writes data-js-error on <body>), on
+# a script that did not finish (data-replay-ready on <body> is set after the last frame is
+# drawn), on a DOM without the slider, the K x K matrix or the summary, on a page that loads
+# anything from elsewhere, and on a blank screenshot (png_spread). #frame=0 seeks back to the
+# start (the path that redraws from nothing).
+# Skips (exit 77) when chromium is not installed, unless MAZE_MAPPER_REQUIRE_CHROMIUM is set
+# (.ci/run sets it): then a missing chromium fails.
+# Usage: replay_chromium.sh MAZE_MAPPER PNG_SPREAD WORLD [SCREENSHOT_COPY]
+set -eu
+program=$1
+png_spread=$2
+world=$3
+copy=${4:-}
+
+chromium=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$chromium" ]; then
+  if [ -n "${MAZE_MAPPER_REQUIRE_CHROMIUM:-}" ]; then
+    echo "FAIL: chromium is not installed and MAZE_MAPPER_REQUIRE_CHROMIUM is set (scripts/install-test-deps.sh)" >&2
+    exit 1
+  fi
+  echo "SKIP: chromium is not installed (scripts/install-test-deps.sh installs it)"
+  exit 77
+fi
+
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail() {
+  echo "FAIL: $1" >&2
+  for f in "$dir/chromium.err" "$dir/dom.html"; do
+    [ -f "$f" ] && { echo "--- $f (head) ---" >&2; head -c 3000 "$f" >&2; echo >&2; }
+  done
+  exit 1
+}
+
+"$program" run "$world" --quiet --no-trace --out "$dir/out" > "$dir/run.out" || fail "the run failed"
+page="$dir/out/replay.html"
+[ -s "$page" ] || fail "no replay.html"
+if grep -Eq '(src|href)=|https?:|@import|fetch\(' "$page"; then fail "replay.html refers to something outside itself"; fi
+
+# browser ARGS...: headless Chromium with a profile of its own, at most 60 s.
+browser() {
+  timeout 60 "$chromium" --headless --no-sandbox --disable-gpu --no-first-run --disable-extensions \
+    --disable-dev-shm-usage --user-data-dir="$dir/profile" --virtual-time-budget=10000 "$@" 2>> "$dir/chromium.err"
+}
+
+browser --dump-dom "file://$page" > "$dir/dom.html" || fail "chromium --dump-dom failed"
+grep -q 'data-js-error' "$dir/dom.html" && fail "a JavaScript error: $(grep -o 'data-js-error="[^"]*"' "$dir/dom.html")"
+grep -q 'data-replay-ready="[1-9]' "$dir/dom.html" || fail "the page's script did not finish (no data-replay-ready)"
+grep -q '<input type="range" id="step" min="0" max="[1-9][0-9]*"' "$dir/dom.html" || fail "no step slider with frames"
+grep -q '<button id="play"' "$dir/dom.html" || fail "no play button"
+coverage=$(sed -n 's/^coverage: //p' "$dir/run.out")
+grep -q "<dd id=\"summary-coverage\">$coverage</dd>" "$dir/dom.html" || fail "no summary coverage $coverage"
+grep -q '<dd id="summary-wall_accuracy">' "$dir/dom.html" || fail "no summary wall_accuracy"
+grep -q '<td class="occupied">+' "$dir/dom.html" || fail "no K x K matrix with an occupied sub-cell"
+moves=$(sed -n 's/^moves: //p' "$dir/run.out")
+grep -q "move $moves/$moves " "$dir/dom.html" || fail "the last frame is not move $moves/$moves"
+
+browser --dump-dom "file://$page#frame=0" > "$dir/dom.html" || fail "chromium --dump-dom #frame=0 failed"
+grep -q 'data-js-error' "$dir/dom.html" && fail "a JavaScript error at #frame=0"
+grep -q "move 0/$moves " "$dir/dom.html" || fail "#frame=0 does not show move 0/$moves"
+
+browser --window-size=1100,800 --hide-scrollbars --screenshot="$dir/shot.png" "file://$page" > /dev/null ||
+  fail "chromium --screenshot failed"
+"$png_spread" "$dir/shot.png" || fail "blank screenshot"
+[ -n "$copy" ] && cp "$dir/shot.png" "$copy"
+echo "replay.html in chromium: ok"
