@@ -45,7 +45,9 @@ Json to_json(const DistanceSensorSpec &d) {
               {"angle_rad", d.angle_rad},
               {"aperture_rad", d.aperture_rad},
               {"rays", d.rays},
-              {"lookup_table", table}};
+              {"lookup_table", table},
+              {"type", std::string(maze::sim::to_string(d.type))},
+              {"gaussian_width", d.gaussian_width}};
 }
 
 Json to_json(const BumperSpec &b) {
@@ -138,10 +140,17 @@ LookupRow read_row(const Node &n) {
   return {n.number("distance_m"), n.number("value"), n.number("noise_fraction")};
 }
 
+maze::sim::DistanceSensorType read_sensor_type(const Node &n) {
+  const std::string text = n.text("type");
+  const auto type = maze::sim::parse_distance_sensor_type(text);
+  if (!type) n.at("type").fail(fmt::format("must be \"generic\", \"infra-red\" or \"sonar\" (got \"{}\")", text));
+  return *type;
+}
+
 DistanceSensorSpec read_distance_sensor(const Node &n) {
-  n.object({"name", "angle_rad", "aperture_rad", "rays", "lookup_table"});
-  return {n.text("name"), n.number("angle_rad"), n.number("aperture_rad"), n.whole_number("rays"),
-          n.items("lookup_table", &read_row)};
+  n.object({"name", "angle_rad", "aperture_rad", "rays", "lookup_table", "type", "gaussian_width"});
+  return {n.text("name"),     n.number("angle_rad"),          n.number("aperture_rad"), n.whole_number("rays"),
+          n.items("lookup_table", &read_row), read_sensor_type(n), n.number("gaussian_width")};
 }
 
 BumperSpec read_bumper(const Node &n) {

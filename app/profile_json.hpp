@@ -14,7 +14,8 @@
 //     "lidars": [{"name", "horizontal_resolution", "fov_rad", "min_range_m", "max_range_m",
 //                 "noise", "frequency_hz"}],
 //     "distance_sensors": [{"name", "angle_rad", "aperture_rad", "rays",
-//                           "lookup_table": [{"distance_m", "value", "noise_fraction"}]}],
+//                           "lookup_table": [{"distance_m", "value", "noise_fraction"}],
+//                           "type" ("generic", "infra-red" or "sonar"), "gaussian_width"}],
 //     "bumpers": [{"name", "angle_rad", "half_arc_rad"}]
 //   }
 //

@@ -180,11 +180,12 @@ TEST_CASE("pie model: walls north and east in one scan, K = 3, beta 10 deg") {
         "+0.00 +0.85 +0.00\n"
         "-0.41 +0.00 +0.85\n"
         "+0.00 -0.41 +0.00\n");
-  // The arc stops short of the cell side (y 1.994 < 2): the neighbour's band is not touched.
+  // The arcs span two errors either side of the reading, 0.380 ... 0.428 m (y 1.970 ...
+  // 2.018): past the cell side, into the neighbour's band - the wall's other half.
   CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
         "+0.00 +0.00 +0.00\n"
         "+0.00 +0.00 +0.00\n"
-        "+0.00 +0.00 +0.00\n");
+        "+0.00 +0.85 +0.00\n");
   CHECK(grid.at(Cell{1, 1}, {0, 1}) == doctest::Approx(std::log(0.7 / 0.3)));
   CHECK(grid.at(Cell{1, 1}, {1, 0}) == doctest::Approx(std::log(0.4 / 0.6)));
 }
@@ -310,15 +311,16 @@ TEST_CASE("cone model: a sonar looking along a corridor leaves the side bands al
   const std::vector<RangeReading> one{reading(kNorth, 1.404, 5.0, 0.4, 0.066)};
   sensing::mark_cone(grid, one, update);
   update.apply(grid, model);
-  // Arc 1.311 ... 1.497 m: five bins at 0, +-0.08, +-0.16 rad. The axis bin gets p_occ
+  // Arc 1.219 ... 1.589 m (two errors of 6.6 % either side; past y = 3 it leaves the grid);
+  // from 1.25 m on it has five bins at 0, +-0.08, +-0.16 rad. The axis bin gets p_occ
   // (+0.41); the outer bins, 0.21 m off the axis, fall in the band's corners with weight
   // 1 - 0.8^2 = 0.36: p = 0.5 + 0.36 x 0.1 = 0.536, +0.14. In the free cone at y 2.33 ... 2.67
   // the outermost bin centre is 0.133 rad off the axis (0.13 m): the west and east bands,
   // 0.167 m away, are not freed (without the weighting the cone's edges, 0.2 m off the axis,
   // freed them at -0.85: the walls beside every corridor the sonar looked along).
-  // The free cone ends at 1.311 m, in 8 radial steps of 0.164 m; each sub-cell takes its
-  // nearest step's range weight 1 - (r / 1.311)^2: row 2 of cell (1, 2) from r 0.492 m
-  // (w 0.86, p 0.328, -0.72), row 1 from 0.819 m (w 0.61, p 0.378, -0.50).
+  // The free cone ends at 1.219 m, in 8 radial steps of 0.152 m; each sub-cell takes its
+  // nearest step's range weight 1 - (r / 1.219)^2: row 2 of cell (1, 2) from r 0.457 m
+  // (w 0.86, p 0.328, -0.72), row 1 from 0.762 m (w 0.61, p 0.378, -0.50).
   CHECK(render::format_cell_matrix(grid, Cell{1, 2}) ==
         "+0.14 +0.41 +0.14\n"
         "+0.00 -0.50 +0.00\n"
@@ -349,4 +351,57 @@ TEST_CASE("leveled update: a weighted mark moves p from the prior towards its le
   CHECK(grid.at(mapping::SubCell{1, 0}) == doctest::Approx(std::log10(0.3 / 0.7)));
   CHECK(grid.at(mapping::SubCell{2, 0}) == doctest::Approx(std::log10(0.55 / 0.45)));
   CHECK(grid.at(mapping::SubCell{3, 0}) == doctest::Approx(l0));
+}
+
+TEST_CASE("no-return readings: a sonar's tells of its cone only when it looks square to the grid") {
+  // Sonar, aperture 0.4 rad: square when the axis is within pi/8 - 0.2 = 0.193 rad of a grid axis.
+  RangeReading sonar = reading(kNorth, 5.0, 5.0, 0.4, 0.066);
+  sonar.echo_can_be_lost = true;
+  CHECK(sensing::no_return_tells(sonar));
+  sonar.angle_rad = kPi + 0.19;
+  CHECK(sensing::no_return_tells(sonar));
+  sonar.angle_rad = kPi + 0.2;
+  CHECK_FALSE(sensing::no_return_tells(sonar));
+  sonar.angle_rad = kPi / 4;  // the ring's diagonals hear nothing, wall or no wall
+  CHECK_FALSE(sensing::no_return_tells(sonar));
+  RangeReading ir = reading(kPi / 4, 1.5, 1.5, 0.03, 0.03);
+  CHECK(sensing::no_return_tells(ir));
+  // Nothing seen: within two errors of max, d (1 + 2 eps) >= max (1 - 2 eps): from 3.83 m.
+  CHECK(sensing::is_no_return(reading(kNorth, 3.9, 5.0, 0.4, 0.066)));
+  CHECK_FALSE(sensing::is_no_return(reading(kNorth, 3.8, 5.0, 0.4, 0.066)));
+}
+
+TEST_CASE("cone model: a sonar's lost echo at a slant marks nothing; square to the grid it frees the cone") {
+  const mapping::SensorModel model;
+  const auto scan = [&](double angle_rad) {
+    OccupancyGrid grid(geometry(3), 0.0f);
+    sensing::LeveledUpdate update = sensing::make_cone_update(model.options());
+    RangeReading r{Point{1.5, 1.5}, angle_rad, 5.1, 5.0, 0.4, 0.066, true};
+    sensing::mark_cone(grid, std::vector<RangeReading>{r}, update);
+    return update.apply(grid, model);
+  };
+  CHECK(scan(kPi / 4) == 0);
+  CHECK(scan(kNorth) > 0);
+}
+
+TEST_CASE("read_range_side: the reading facing a side reads it wall, open or unknown") {
+  const OccupancyGrid grid(geometry(3), 0.0f);
+  // Cell (1, 1); the north side's line y = 2 is 0.41 m from the rim at y 1.59.
+  const auto side = [&](std::vector<RangeReading> readings, mapping::Heading h) {
+    return sensing::read_range_side(grid, readings, Cell{1, 1}, h);
+  };
+  using mapping::Heading;
+  using mapping::SideState;
+  CHECK(side({reading(kNorth, 0.404, 1.5, 0.03, 0.03)}, Heading::north) == SideState::wall);
+  // Up to the line plus a quarter cell (0.66 m) is a wall; beyond it, or nothing seen, open.
+  CHECK(side({reading(kNorth, 0.65, 1.5, 0.03, 0.03)}, Heading::north) == SideState::wall);
+  CHECK(side({reading(kNorth, 0.67, 1.5, 0.03, 0.03)}, Heading::north) == SideState::open);
+  CHECK(side({reading(kNorth, 1.5, 1.5, 0.03, 0.03)}, Heading::north) == SideState::open);
+  // No reading faces east (0.1 rad at most off the side's normal).
+  CHECK(side({reading(kNorth, 0.404, 1.5, 0.03, 0.03)}, Heading::east) == SideState::unknown);
+  CHECK(side({reading(0.11, 0.404, 1.5, 0.03, 0.03)}, Heading::east) == SideState::unknown);
+  // A sonar square to the side that heard nothing: open (a wall there would have echoed).
+  RangeReading sonar = reading(kNorth, 5.0, 5.0, 0.4, 0.066);
+  sonar.echo_can_be_lost = true;
+  CHECK(side({sonar}, Heading::north) == SideState::open);
 }

@@ -49,7 +49,9 @@ TEST_CASE("setups: the lidar models mark with the sensor model, the range and bu
   for (const sensing::SetUp &s : sensing::setups()) {
     CAPTURE(s.name);
     CHECK(s.reads_lidar() == (s.make_update == nullptr));
-    CHECK(s.reads_lidar() == (s.arrival == sensing::Arrival::resolve_and_confirm));
+    // Whatever can read a side from where it stands (a lidar, a range ring) confirms it.
+    CHECK((s.arrival == sensing::Arrival::resolve_and_confirm) ==
+          (s.reads_lidar() || (s.reads_ranges() && s.kind != sensing::ModelKind::depth)));
     // Fixed course numbers and --p-free/--p-occ exclude each other.
     CHECK(s.fixed.has_value() != s.uses(sensing::kProbabilities));
   }

@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include "sensing/cell_model.hpp"
 
 namespace robot {
 
@@ -89,10 +88,7 @@ Motion Arrival::resolve(Cell c, Heading &facing) {
 
 Motion Arrival::confirm(Cell c) {
   for (const Heading h : mapping::kHeadings) {
-    const auto reads_wall = [&] {
-      const sensing::LidarScan *last = senses_.last_lidar_scan();
-      return last != nullptr && sensing::read_cell_side(options_.model, grid_, *last, c, h) == SideState::wall;
-    };
+    const auto reads_wall = [&] { return senses_.reads_side(c, h) == SideState::wall; };
     for (int attempt = 0; attempt < 3 * options_.max_rescans && walls_(c, h) == SideState::open && reads_wall();
          ++attempt) {
       if (const Motion s = rest_and_scan(c); s != Motion::ok) return s;

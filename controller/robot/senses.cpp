@@ -11,6 +11,7 @@
 
 #include "common/error.hpp"
 #include "robot/require_device.hpp"
+#include "sensing/cell_model.hpp"
 
 namespace robot {
 
@@ -64,8 +65,12 @@ void Senses::scan(Cell c, std::int64_t step) {
 
 std::size_t Senses::take_lidar_updates() { return std::exchange(lidar_updates_, 0); }
 
-const sensing::LidarScan *Senses::last_lidar_scan() const {
-  return previous_scan_.ranges.empty() ? nullptr : &previous_scan_;
+mapping::SideState Senses::reads_side(Cell c, mapping::Heading h) const {
+  if (setup_.reads_lidar()) {
+    if (previous_scan_.ranges.empty()) return mapping::SideState::unknown;
+    return sensing::read_cell_side(options_.model, grid_, previous_scan_, c, h);
+  }
+  return sensing::read_range_side(grid_, range_readings_, c, h);
 }
 
 Point Senses::position(Cell c) const { return drive_.gps().value_or(grid_.centre_of(c)); }
@@ -103,8 +108,10 @@ void Senses::scan_ranges(sensing::RangeMark mark, Cell c) {
   range_readings_.clear();
   for (std::size_t i = 0; i < range_sensors_.size(); ++i) {
     const RangeSensorMount &m = options_.sensing.ranges[i];
+    const webots::DistanceSensor &sensor = *range_sensors_[i];
     range_readings_.push_back({mounted(centre, m.angle_rad, m.offset_m), drive_.yaw_rad() + m.angle_rad,
-                               range_sensors_[i]->getValue(), m.max_range_m, m.aperture_rad, m.range_error});
+                               sensor.getValue(), m.max_range_m, m.aperture_rad, m.range_error,
+                               sensor.getType() == webots::DistanceSensor::SONAR});
   }
   mark(grid_, options_.sensing.range_model, centre, range_readings_, *leveled_);
   leveled_->apply(grid_, model_);

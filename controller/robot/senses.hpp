@@ -46,8 +46,10 @@ class Senses {
   void scan(mapping::Cell c, std::int64_t step);
   // Lidar sub-cells updated since the last call (the step report's count).
   std::size_t take_lidar_updates();
-  // The last raw lidar scan, or nothing before the first (or without a lidar).
-  const sensing::LidarScan *last_lidar_scan() const;
+  // What the last scan, taken in cell c, says of c's side h: the cell model's reading of a
+  // lidar scan (sensing::read_cell_side), or of range readings (sensing::read_range_side);
+  // unknown before the first scan and for bumpers.
+  mapping::SideState reads_side(mapping::Cell c, mapping::Heading h) const;
 
   // Bumpers: the readings now, marked (not applied); true when one is pressed.
   bool gather_bumps(mapping::Cell c);

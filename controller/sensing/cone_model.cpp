@@ -67,15 +67,25 @@ void mark_cone(const OccupancyGrid &grid, std::span<const RangeReading> readings
   const double error_limit_m = kConeUsableError * grid.geometry().cell_size_m;
   for (const RangeReading &r : readings) {
     if (!(r.range_m >= 0.0)) continue;
+    // A sonar at a slant to the grid that heard no echo may have met a wall: nothing to mark.
+    if (is_no_return(r) && !no_return_tells(r)) continue;
     // The usable range: where the distance error eps d still tells one cell side from the
     // next. Beyond it no arc is marked and the free cone stops there.
     const double usable_m =
         r.range_error > 0.0 ? std::min(r.max_range_m, error_limit_m / r.range_error) : r.max_range_m;
-    const bool hit = r.range_m < r.max_range_m && r.range_m <= usable_m;
-    const double d = hit ? r.range_m : std::min(r.range_m, usable_m);
-    const double near_m = d * (1.0 - r.range_error);
+    // A reading within its errors of max range saw nothing (is_no_return), as for the pie,
+    // and frees no farther than kConeNoReturnReach of max: a wall just short of max reads
+    // as nothing seen too.
+    const bool nothing_seen = is_no_return(r);
+    const bool hit = !nothing_seen && r.range_m <= usable_m;
+    const double reach_m = nothing_seen ? std::min(usable_m, kConeNoReturnReach * r.max_range_m) : usable_m;
+    const double d = hit ? r.range_m : std::min(r.range_m, reach_m);
+    // eps is the table's noise, a standard deviation: the arc spans kConeArcErrors of them
+    // either side of the reading, so the wall lies in it (95 % of readings at 2).
+    const double spread = kConeArcErrors * r.range_error;
+    const double near_m = d * (1.0 - spread);
     if (near_m > 0.0) sweep_free(grid, r, near_m, update);
-    if (hit) sweep_occupied(grid, r, near_m, d * (1.0 + r.range_error), update);
+    if (hit) sweep_occupied(grid, r, near_m, d * (1.0 + spread), update);
   }
 }
 

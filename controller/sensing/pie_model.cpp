@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 
 #include "common/angles.hpp"
 #include "mapping/traversal.hpp"
@@ -85,11 +86,11 @@ double distance_to_segment(const std::array<double, 2> &a, const std::array<doub
   return std::hypot(a[0] + t * ex, a[1] + t * ey);
 }
 
-// True when the reading's arc - radius clear_m, across the slice - passes through the
-// inside of the square [left, left + size] x [bottom, bottom + size]. The square clipped to
-// the wedge (convex, beta < 90 deg) is a convex polygon; its distances from the sensor fill
-// an interval [near, far], which holds the arc's radius strictly inside when the arc crosses.
-bool crossed_by_arc(const Slice &s, double left, double bottom, double size) {
+// True when the reading's arcs - radii inner_m ... outer_m, across the slice - pass through
+// the inside of the square [left, left + size] x [bottom, bottom + size]. The square clipped
+// to the wedge (convex, beta < 90 deg) is a convex polygon; its distances from the sensor
+// fill an interval [near, far], which overlaps (inner, outer) when an arc crosses.
+bool crossed_by_arcs(const Slice &s, double inner_m, double outer_m, double left, double bottom, double size) {
   const double x0 = left - s.origin.x_m;
   const double y0 = bottom - s.origin.y_m;
   Polygon poly{{{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}}}, 4};
@@ -110,7 +111,7 @@ bool crossed_by_arc(const Slice &s, double left, double bottom, double size) {
     far = std::max(far, std::hypot(poly.v[i][0], poly.v[i][1]));
     near = std::min(near, distance_to_segment(poly.v[i], poly.v[(i + 1) % poly.n]));
   }
-  return near < s.clear_m && s.clear_m < far;
+  return near < outer_m && inner_m < far;
 }
 
 // True when the slice's axis, between d (1 - 2 eps) and d (1 + 2 eps), comes within the
@@ -135,7 +136,7 @@ void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const
   // A contact only when the reading and a no-return reading lie more than kPieNoReturnErrors
   // of their own errors apart (the error is a fraction of the value).
   const double margin = kPieNoReturnErrors * r.range_error;
-  const bool contacting = r.range_m * (1.0 + margin) < r.max_range_m * (1.0 - margin);
+  const bool contacting = !is_no_return(r);
   // A contact no single wall can explain (rays averaged across a post's edge) is no information.
   if (contacting && !reaches_cell_side(grid.geometry(), r, margin)) return;
   // A clear reading frees up to what it measured, less its error: noise near max range
@@ -148,15 +149,20 @@ void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const
   const double usable_m = options.pie_usable_fraction * r.max_range_m;
   const Slice slice{r.origin, std::cos(r.angle_rad), std::sin(r.angle_rad),
                     options.pie_half_angle_rad, std::min(clear_m, usable_m), clear_m, outer_m};
+  // The obstacle lies within the reading's error either side of it (eps is a standard
+  // deviation): every sub-cell the arcs of those radii cross is occupied.
+  const double arc_inner_m = clear_m * (1.0 - margin);
+  const double arc_outer_m = clear_m * (1.0 + margin);
   const GridGeometry &g = grid.geometry();
   const double size = g.subcell_size_m();
   const auto to_index = [&](double v, double origin) {
     return static_cast<int>(std::floor((v - origin) / size));
   };
-  const int x0 = std::max(0, to_index(r.origin.x_m - outer_m, g.origin.x_m));
-  const int x1 = std::min(g.width_subcells() - 1, to_index(r.origin.x_m + outer_m, g.origin.x_m));
-  const int y0 = std::max(0, to_index(r.origin.y_m - outer_m, g.origin.y_m));
-  const int y1 = std::min(g.height_subcells() - 1, to_index(r.origin.y_m + outer_m, g.origin.y_m));
+  const double reach_m = std::max(outer_m, arc_outer_m);
+  const int x0 = std::max(0, to_index(r.origin.x_m - reach_m, g.origin.x_m));
+  const int x1 = std::min(g.width_subcells() - 1, to_index(r.origin.x_m + reach_m, g.origin.x_m));
+  const int y0 = std::max(0, to_index(r.origin.y_m - reach_m, g.origin.y_m));
+  const int y1 = std::min(g.height_subcells() - 1, to_index(r.origin.y_m + reach_m, g.origin.y_m));
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       const double left = g.origin.x_m + x * size;
@@ -170,7 +176,7 @@ void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const
         free = free || part == Part::clear;
         occupied = occupied || part == Part::contact;
       }
-      occupied = occupied || (contacting && crossed_by_arc(slice, left, bottom, size));
+      occupied = occupied || (contacting && crossed_by_arcs(slice, arc_inner_m, arc_outer_m, left, bottom, size));
       if (occupied) {
         update.mark(grid, SubCell{x, y}, 0);
       } else if (free) {
@@ -181,6 +187,18 @@ void mark_one(const OccupancyGrid &grid, const RangeModelOptions &options, const
 }
 
 }  // namespace
+
+bool is_no_return(const RangeReading &r) {
+  const double margin = kPieNoReturnErrors * r.range_error;
+  return !(r.range_m * (1.0 + margin) < r.max_range_m * (1.0 - margin));
+}
+
+bool no_return_tells(const RangeReading &r) {
+  if (!r.echo_can_be_lost) return true;
+  const double quarter = std::numbers::pi / 2.0;
+  const double off_axis = std::abs(r.angle_rad - quarter * std::round(r.angle_rad / quarter));
+  return off_axis + r.aperture_rad / 2.0 < kSonarEchoIncidence_rad;
+}
 
 LeveledUpdate make_pie_update() { return LeveledUpdate({kPieOccupiedP, kPieFreeP}); }
 

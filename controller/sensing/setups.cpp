@@ -47,10 +47,10 @@ const std::array<SetUp, 6> kSetUps{{
      MarkProbabilities{kDepthRayP, kDepthHitP, kDepthRobotP}, Arrival::look_around, RangeMark{&depth_mark},
      &depth_update},
     {ModelKind::pie, "pie", "the IR pie-slice update", "ir-ring", kPieBeta | kPieAlpha,
-     MarkProbabilities{kPieFreeP, kPieOccupiedP, std::nullopt}, Arrival::resolve, RangeMark{&pie_mark},
+     MarkProbabilities{kPieFreeP, kPieOccupiedP, std::nullopt}, Arrival::resolve_and_confirm, RangeMark{&pie_mark},
      &pie_update},
     {ModelKind::cone, "cone", "the sonar/IR cone sweep", "ir-ring", kProbabilities, std::nullopt,
-     Arrival::resolve, RangeMark{&cone_mark}, &make_cone_update},
+     Arrival::resolve_and_confirm, RangeMark{&cone_mark}, &make_cone_update},
 }};
 
 }  // namespace

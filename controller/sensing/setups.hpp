@@ -10,8 +10,8 @@
 //   ray    lidar          hambot         --p-free / --p-occ                  resolve, confirm
 //   bump   bumpers        bumper-depth   0.3 / 0.99999 (course)              probe
 //   depth  range sensors  bumper-depth   0.4 ray, 0.3 robot / 0.99999 (c.)   look around
-//   pie    range sensors  ir-ring        0.4 / 0.7 (course)                  resolve
-//   cone   range sensors  ir-ring        --p-free / --p-occ                  resolve
+//   pie    range sensors  ir-ring        0.4 / 0.7 (course)                  resolve, confirm
+//   cone   range sensors  ir-ring        --p-free / --p-occ                  resolve, confirm
 
 #include <cstddef>
 #include <optional>
@@ -59,6 +59,7 @@ using BumpMark = void (*)(const mapping::OccupancyGrid &grid, mapping::Point rob
 // What the robot does in a cell after its first scan there (robot/arrival.hpp).
 enum class Arrival {
   resolve_and_confirm,  // rescan and face the sides still unknown; rescan an open side the last scan calls a wall
+                        // (the lidar's cell-model reading, or the range sensor facing it)
   resolve,              // rescan and face the sides still unknown
   probe,                // feel each side still unknown with the bumpers
   look_around,          // in a new cell, face each side once and scan

@@ -203,9 +203,11 @@ void distance_sensor(std::string &out, const sim::DistanceSensorSpec &d, double 
   }
   fmt::format_to(std::back_inserter(out),
                  "    DistanceSensor {{\n      translation {} {} {}\n      rotation 0 0 1 {}\n      name {}\n"
-                 "      lookupTable [\n{}      ]\n      numberOfRays {}\n      aperture {}\n    }}\n",
+                 "      lookupTable [\n{}      ]\n      type {}\n      numberOfRays {}\n      aperture {}\n"
+                 "      gaussianWidth {}\n    }}\n",
                  num(rim_m * std::cos(d.angle_rad)), num(rim_m * std::sin(d.angle_rad)), num(z_m), num(d.angle_rad),
-                 quoted(d.name), table, d.rays, num(d.aperture_rad));
+                 quoted(d.name), table, quoted(std::string(sim::to_string(d.type))), d.rays, num(d.aperture_rad),
+                 num(d.gaussian_width));
 }
 
 // A bumper: a thin box just outside the rim, as wide as the chord of its arc.

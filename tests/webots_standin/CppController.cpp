@@ -85,5 +85,6 @@ double DistanceSensor::getValue() const { return NAN; }
 double DistanceSensor::getMaxValue() const { return 0.0; }
 double DistanceSensor::getMinValue() const { return 0.0; }
 double DistanceSensor::getAperture() const { return 0.0; }
+DistanceSensor::Type DistanceSensor::getType() const { return GENERIC; }
 
 }  // namespace webots

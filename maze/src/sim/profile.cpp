@@ -93,34 +93,54 @@ RobotProfile bumper_depth() {
   p.bumpers = front_bumpers();
   for (int i = 0; i < 9; ++i) {
     p.distance_sensors.push_back(
-        {fmt::format("depth{}", i), (60.0 - 15.0 * i) * kDeg, 0.0, 1, metres_table(4.0, 0.0)});
+        {fmt::format("depth{}", i), (60.0 - 15.0 * i) * kDeg, 0.0, 1, metres_table(4.0, 0.0),
+         DistanceSensorType::generic});
   }
   return p;
 }
 
 // Six IR sensors: the four directions the cell model needs and the two front diagonals.
-// Course numbers: aperture 0.03 rad, 3 rays, +-3 % distance error, range 1.5 m.
+// Course numbers: aperture 0.03 rad, 3 rays, +-3 % distance error, range 1.5 m. Webots'
+// infra-red type: the rays' Gaussian-weighted mean (the walls' colour is not modelled: a
+// reflection factor of 1).
 RobotProfile ir_ring() {
   RobotProfile p = base_robot("ir-ring", "six IR range sensors, narrow cone, 1.5 m");
   const double angles_deg[] = {0.0, 45.0, 90.0, 180.0, -90.0, -45.0};
   for (int i = 0; i < 6; ++i) {
     p.distance_sensors.push_back({fmt::format("ir{}", i), angles_deg[i] * kDeg, 0.03, 3,
-                                  metres_table(1.5, 0.03)});
+                                  metres_table(1.5, 0.03), DistanceSensorType::infra_red});
   }
   return p;
 }
 
 // Eight sonars every 45 deg. Course numbers: aperture 0.4 rad, 5 rays, +-6.6 % distance error.
+// Webots' sonar type: the nearest ray, rays beyond 22.5 deg incidence lost.
 RobotProfile sonar_ring() {
   RobotProfile p = base_robot("sonar-ring", "eight sonars, wide cone, 5 m");
   for (int i = 0; i < 8; ++i) {
     p.distance_sensors.push_back(
-        {fmt::format("so{}", i), 45.0 * i * kDeg, 0.4, 5, metres_table(5.0, 0.066)});
+        {fmt::format("so{}", i), 45.0 * i * kDeg, 0.4, 5, metres_table(5.0, 0.066), DistanceSensorType::sonar});
   }
   return p;
 }
 
 }  // namespace
+
+std::string_view to_string(DistanceSensorType type) {
+  switch (type) {
+    case DistanceSensorType::generic: return "generic";
+    case DistanceSensorType::infra_red: return "infra-red";
+    case DistanceSensorType::sonar: return "sonar";
+  }
+  return "generic";
+}
+
+std::optional<DistanceSensorType> parse_distance_sensor_type(std::string_view text) {
+  for (const auto t : {DistanceSensorType::generic, DistanceSensorType::infra_red, DistanceSensorType::sonar}) {
+    if (text == to_string(t)) return t;
+  }
+  return std::nullopt;
+}
 
 const std::vector<RobotProfile> &profiles() {
   static const std::vector<RobotProfile> all{hambot(),  hambot_12m(), bumper_depth(),
@@ -236,6 +256,7 @@ void validate_distance_sensor(const std::string &key, const DistanceSensorSpec &
   require_non_negative(key + ".aperture_rad", d.aperture_rad);
   require_at_most(key + ".aperture_rad", d.aperture_rad, kPi, "pi");
   if (d.rays < 1 || d.rays > 1000) bad(key + ".rays", fmt::format("must be 1 to 1000 (got {})", d.rays));
+  require_positive(key + ".gaussian_width", d.gaussian_width);
   if (d.lookup_table.empty()) bad(key + ".lookup_table", "must have at least one row");
   for (std::size_t i = 0; i < d.lookup_table.size(); ++i) {
     const std::string row = fmt::format("{}.lookup_table[{}]", key, i);

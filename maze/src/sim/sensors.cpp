@@ -98,31 +98,86 @@ float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoin
   return in_range ? static_cast<float>(range) : std::numeric_limits<float>::infinity();
 }
 
-double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &sensor,
-                             double body_radius_m, const Pose &pose, bool noisy,
-                             common::Rng &rng) {
+RayHit cast_hit(const WallGrid &walls, double x_m, double y_m, double angle_rad, double max_range_m) {
+  const double dx = std::cos(angle_rad);
+  const double dy = std::sin(angle_rad);
+  const double d = walls.cast_direction(x_m, y_m, dx, dy, max_range_m);
+  if (!std::isfinite(d)) return {d, 0.0, 0.0};
+  // Every face turned to free space lies on a line k s +- t/2 (the drawing in wall_grid.hpp):
+  // the hit point's distance from the nearest such line, across x and across y.
+  const WallGrid::CastOrigin at = walls.cast_origin(x_m + d * dx, y_m + d * dy);
+  const double s = walls.cell_size_m();
+  const double h = walls.wall_thickness_m() / 2.0;
+  const auto off_face = [&](double local_m) {
+    return std::abs(std::abs(local_m - s * std::round(local_m / s)) - h);
+  };
+  constexpr double kOnFace_m = 1e-9;
+  const double ex = off_face(at.local_x_m);
+  const double ey = off_face(at.local_y_m);
+  const bool on_x = ex <= kOnFace_m;
+  const bool on_y = ey <= kOnFace_m;
+  // On a box's edge (both faces): the face the ray meets more squarely.
+  const bool x_face = on_x && on_y ? std::abs(dx) >= std::abs(dy) : (on_x || (!on_y && ex < ey));
+  if (x_face) return {d, dx > 0.0 ? -1.0 : 1.0, 0.0};
+  return {d, 0.0, dy > 0.0 ? -1.0 : 1.0};
+}
+
+double ray_offset_rad(const DistanceSensorSpec &sensor, int k) {
+  assert(k >= 0 && k < sensor.rays);
+  if (sensor.rays == 1) return 0.0;
+  return -sensor.aperture_rad / 2.0 + k * sensor.aperture_rad / (sensor.rays - 1);
+}
+
+std::vector<double> ray_weights(const DistanceSensorSpec &sensor) {
+  std::vector<double> w(static_cast<std::size_t>(sensor.rays), 1.0);
+  double sum = 0.0;
+  for (int k = 0; k < sensor.rays; ++k) {
+    const double spread = sensor.aperture_rad * sensor.gaussian_width;
+    const double t = spread > 0.0 ? ray_offset_rad(sensor, k) / spread : 0.0;
+    w[static_cast<std::size_t>(k)] = std::exp(-t * t);
+    sum += w[static_cast<std::size_t>(k)];
+  }
+  for (double &v : w) v /= sum;
+  return w;
+}
+
+double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor, double body_radius_m,
+                         const Pose &pose) {
   assert(sensor.rays >= 1 && !sensor.lookup_table.empty());
   const double direction = pose.yaw_rad + sensor.angle_rad;
   const double ox = pose.x_m + body_radius_m * std::cos(direction);
   const double oy = pose.y_m + body_radius_m * std::sin(direction);
-  const double reach_m = sensor.lookup_table.back().distance_m;
-  double weighted = 0.0;
-  double weights = 0.0;
-  for (int k = 0; k < sensor.rays; ++k) {
-    const double offset =
-        sensor.rays == 1 ? 0.0
-                         : -sensor.aperture_rad / 2.0 + k * sensor.aperture_rad / (sensor.rays - 1);
-    const double w =
-        sensor.aperture_rad > 0.0 ? std::exp(-std::pow(offset / sensor.aperture_rad, 2)) : 1.0;
-    const double d = std::min(walls.cast(ox, oy, direction + offset, reach_m), reach_m);
-    weighted += w * d;
-    weights += w;
+  const double range_m = sensor.lookup_table.back().distance_m;
+  if (sensor.type == DistanceSensorType::sonar) {
+    double nearest = range_m;
+    for (int k = 0; k < sensor.rays; ++k) {
+      const double a = direction + ray_offset_rad(sensor, k);
+      const RayHit hit = cast_hit(walls, ox, oy, a, range_m);
+      // cos(incidence) = -(ray . normal)
+      const double cos_incidence = -(std::cos(a) * hit.normal_x + std::sin(a) * hit.normal_y);
+      if (hit.distance_m < nearest && cos_incidence > std::cos(kSonarMaxIncidence_rad)) nearest = hit.distance_m;
+    }
+    return nearest;
   }
-  const double distance = weighted / weights;
-  double value = lookup_value(sensor.lookup_table, distance);
-  const double fraction = lookup_noise_fraction(sensor.lookup_table, distance);
-  if (noisy && fraction > 0.0) value += rng.normal(0.0, fraction * value);
-  return value;
+  const std::vector<double> weights = ray_weights(sensor);
+  double distance = 0.0;
+  for (int k = 0; k < sensor.rays; ++k) {
+    const double d = walls.cast(ox, oy, direction + ray_offset_rad(sensor, k), range_m);
+    distance += weights[static_cast<std::size_t>(k)] * std::min(d, range_m);
+  }
+  return distance;
+}
+
+double lookup_reading(const std::vector<LookupRow> &table, double distance_m, bool noisy, common::Rng &rng) {
+  const double value = lookup_value(table, distance_m);
+  const double fraction = lookup_noise_fraction(table, distance_m);
+  return noisy && fraction > 0.0 ? value + rng.normal(0.0, fraction * value) : value;
+}
+
+double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &sensor,
+                             double body_radius_m, const Pose &pose, bool noisy,
+                             common::Rng &rng) {
+  return lookup_reading(sensor.lookup_table, sensor_distance_m(walls, sensor, body_radius_m, pose), noisy, rng);
 }
 
 bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body_radius_m,

@@ -155,5 +155,13 @@ double DistanceSensor::getMinValue() const {
   return min;
 }
 double DistanceSensor::getAperture() const { return simulation().distance_spec(index()).aperture_rad; }
+DistanceSensor::Type DistanceSensor::getType() const {
+  switch (simulation().distance_spec(index()).type) {
+    case maze::sim::DistanceSensorType::generic: return GENERIC;
+    case maze::sim::DistanceSensorType::infra_red: return INFRA_RED;
+    case maze::sim::DistanceSensorType::sonar: return SONAR;
+  }
+  return GENERIC;
+}
 
 }  // namespace webots

@@ -13,11 +13,14 @@
 // | bumper-depth  | as hambot                    | imu, gps; TouchSensor "bumper front",        |
 // |               |                              |   "bumper left" (+45 deg), "bumper right";   |
 // |               |                              |   DistanceSensor "depth0" ... "depth8" (+60  |
-// |               |                              |   ... -60 deg in 15 deg steps, one ray, 4 m) |
+// |               |                              |   ... -60 deg in 15 deg steps, one ray, 4 m, |
+// |               |                              |   type generic)                              |
 // | ir-ring       | as hambot                    | imu, gps; DistanceSensor "ir0" ... "ir5"     |
-// |               |                              |   (0, +45, +90, 180, -90, -45 deg; 1.5 m)    |
+// |               |                              |   (0, +45, +90, 180, -90, -45 deg; 1.5 m;    |
+// |               |                              |   type infra-red, 3 rays over 0.03 rad)      |
 // | sonar-ring    | as hambot                    | imu, gps; DistanceSensor "so0" ... "so7"     |
-// |               |                              |   (every 45 deg from 0 ccw; 5 m)             |
+// |               |                              |   (every 45 deg from 0 ccw; 5 m; type sonar, |
+// |               |                              |   5 rays over 0.4 rad)                       |
 // | micromouse    | as hambot                    | imu, gps; Lidar "lidar" (360 beams, 2 pi,    |
 // |               |                              |   0.02-1 m, fixed)                           |
 //
@@ -29,6 +32,7 @@
 // Profiles are data: app/profile_json.hpp prints one as JSON and reads one back
 // (`maze_mapper robot NAME`, `--robot FILE.json`); validate_profile() is the one check.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,12 +60,25 @@ struct LookupRow {
   bool operator==(const LookupRow &) const = default;
 };
 
+// Webots' DistanceSensor `type` (docs/reference/distancesensor.md): how the rays' distances
+// make one reading. generic and infra-red: the Gaussian-weighted mean of every ray's distance
+// (a ray that hits nothing counts as the table's last distance); sonar: the nearest ray whose
+// angle of incidence on the surface is below 22.5 deg (pi / 8), the others lost, the table's
+// last distance when every ray is lost. Webots' fourth type, laser (one ray, nearest), is
+// generic with one ray here.
+enum class DistanceSensorType { generic, infra_red, sonar };
+// "generic", "infra-red", "sonar" (Webots' spelling), and back; nothing for another text.
+std::string_view to_string(DistanceSensorType type);
+std::optional<DistanceSensorType> parse_distance_sensor_type(std::string_view text);
+
 struct DistanceSensorSpec {
   std::string name;
   double angle_rad = 0.0;     // mounting direction relative to the heading
   double aperture_rad = 0.0;  // the cone the rays spread over
   int rays = 1;
   std::vector<LookupRow> lookup_table;  // increasing distance
+  DistanceSensorType type = DistanceSensorType::generic;
+  double gaussian_width = 1.0;  // Webots' gaussianWidth: the ray weights' spread (generic, infra-red)
   bool operator==(const DistanceSensorSpec &) const = default;
 };
 
@@ -101,7 +118,8 @@ std::string profile_names();
 // name; positive finite wheel radius, axle, body radius and wheel speed; motors and encoders
 // named; device names unique; lidars with 1 to 100000 beams, a field of view in (0, 2 pi],
 // 0 <= min range < max range, noise >= 0 and frequency >= 0; distance sensors with at least
-// one ray, an aperture in [0, pi], a lookup table of increasing distances; bumpers with a
+// one ray, an aperture in [0, pi], a positive Gaussian width, a lookup table of increasing
+// distances; bumpers with a
 // half arc in (0, pi]. Every angle finite.
 void validate_profile(const RobotProfile &profile);
 

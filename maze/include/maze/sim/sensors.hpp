@@ -3,6 +3,7 @@
 // spec and a random source. The embedded simulator's devices and `maze_mapper scan` use them.
 
 #include <cstdint>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -67,10 +68,42 @@ class LidarModel {
   std::vector<double> sweep_phase_;
 };
 
-// A distance sensor on the rim of a body of body_radius_m: its rays spread evenly over the
-// aperture, each ray's distance (the table's last distance when nothing is nearer) weighted
-// like Webots (exp(-(ray angle / aperture)^2)), the mean distance looked up in the table and
-// Gaussian noise of sigma noise fraction x value added when noisy.
+// Where a ray from (x, y) along angle_rad first meets a wall: the distance (WallGrid::cast's,
+// +infinity beyond max_range_m) and the outward unit normal of the face it meets, (+-1, 0)
+// or (0, +-1) since walls are axis-aligned boxes; (0, 0) when nothing is hit. A ray that
+// meets a box exactly on its edge (two faces at once) takes the face it meets more squarely.
+struct RayHit {
+  double distance_m;
+  double normal_x, normal_y;
+};
+RayHit cast_hit(const WallGrid &walls, double x_m, double y_m, double angle_rad, double max_range_m);
+
+// A sonar ray whose angle of incidence on the surface is pi / 8 or more never returns
+// (Webots: "outside the reflexion cone of aperture 45 degrees").
+inline constexpr double kSonarMaxIncidence_rad = std::numbers::pi / 8.0;
+
+// Distance sensors as Webots computes them (docs/reference/distancesensor.md), in a flat
+// world. Ray k of n points at ray_offset_rad(k) from the sensor's axis: the rays spread
+// evenly over the aperture in the floor's plane, -a/2 ... +a/2 (one ray: on the axis).
+// Webots lays rays of a 3-D cone out in rings round the axis; in a world of vertical walls
+// only their spread across the plane matters, and this keeps Webots' left/right symmetry.
+double ray_offset_rad(const DistanceSensorSpec &sensor, int k);
+// The generic and infra-red types' ray weights, Webots' Gaussian: v_k = exp(-(t_k / (a g))^2),
+// t_k the ray's angle from the axis, a the aperture, g the Gaussian width, normalised to
+// sum to 1 (one ray, or aperture 0: equal weights).
+std::vector<double> ray_weights(const DistanceSensorSpec &sensor);
+// The distance the sensor measures, before its lookup table, from the rim of a body of
+// body_radius_m at pose, every ray cast to the table's last distance (its range), a ray that
+// hits nothing counting as that range. generic, infra-red: sum of weight x ray distance
+// (infra-red's colour factor is 1: our walls are one colour). sonar: the nearest ray among
+// those whose incidence is below kSonarMaxIncidence_rad; the range when every ray is lost.
+double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor, double body_radius_m,
+                         const Pose &pose);
+// The lookup table's response at distance_m (lookup_value) and, when noisy, plus Gaussian
+// noise of standard deviation noise fraction x value (Webots: v (1 + noise N(0, 1))); one
+// normal variate drawn from rng only when noisy and the noise fraction there is not 0.
+double lookup_reading(const std::vector<LookupRow> &table, double distance_m, bool noisy, common::Rng &rng);
+// lookup_reading(table, sensor_distance_m(...)): what the device's getValue() returns.
 double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &sensor,
                              double body_radius_m, const Pose &pose, bool noisy,
                              common::Rng &rng);

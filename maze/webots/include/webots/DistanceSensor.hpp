@@ -8,6 +8,10 @@ namespace webots {
 // (distance m, value, noise as a fraction of the value), linear in between.
 class DistanceSensor : public Device {
  public:
+  // getType(): how the rays make one value (Webots' `type` field): GENERIC and INFRA_RED
+  // average them, SONAR takes the nearest echo and loses rays beyond 22.5 deg incidence.
+  typedef enum { GENERIC = 0, INFRA_RED, SONAR, LASER } Type;
+
   virtual void enable(int samplingPeriod);
   virtual void disable();
   int getSamplingPeriod() const;
@@ -15,6 +19,7 @@ class DistanceSensor : public Device {
   double getMaxValue() const;
   double getMinValue() const;
   double getAperture() const;  // rad
+  Type getType() const;
 
  private:
   friend class embedded::Simulation;
