@@ -50,9 +50,19 @@ MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,
     ++score.reachable_cells;
     if (visited[i]) ++score.visited_reachable_cells;
   }
+  const auto w = static_cast<std::size_t>(truth.width());
+  const auto stood_in = [&](maze::Cell c) {
+    return truth.contains(c) && visited[static_cast<std::size_t>(c.y) * w + static_cast<std::size_t>(c.x)];
+  };
   for_each_scored_side(truth, reachable, [&](maze::Cell c, maze::Side s) {
     ++score.sides;
-    if (judge_side(truth.has_wall(c, s), learned(c, s)) == SideVerdict::right) ++score.sides_correct;
+    const SideVerdict verdict = judge_side(truth.has_wall(c, s), learned(c, s));
+    if (verdict == SideVerdict::right) {
+      ++score.sides_correct;
+    } else if (stood_in(c) || stood_in(maze::neighbour(c, s))) {
+      ++score.visited_sides_wrong;
+      if (score.first_visited_sides_wrong.size() < 3) score.first_visited_sides_wrong.push_back({c, s, verdict});
+    }
   });
   return score;
 }

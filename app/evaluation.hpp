@@ -6,6 +6,7 @@
 //   wall_accuracy = sides of reachable cells whose learned state (wall or open) matches the
 //                   truth / all such sides, in %; each side shared by two cells counts once,
 //                   the outer boundary is included, and a side never observed counts as wrong.
+//   visited_sides_wrong = those wrong sides that belong to a cell the robot stood in.
 
 #include <cstddef>
 #include <functional>
@@ -17,22 +18,34 @@ namespace app {
 
 enum class LearnedSide { unknown, open, wall };
 
-struct MapScore {
-  std::size_t reachable_cells = 0;
-  std::size_t visited_reachable_cells = 0;
-  std::size_t sides = 0;
-  std::size_t sides_correct = 0;
-
-  double coverage_percent() const;
-  double wall_accuracy_percent() const;
-};
-
 // What one scored side says about the map (truth.png draws each):
 //   right           the learned state matches the truth (a wall, or an opening)
 //   missed          a true wall the map lacks (learned open, or never observed)
 //   phantom         a wall the map invented (learned wall, truly open)
 //   unseen_opening  a true opening never observed (counts as wrong, as every unknown side)
 enum class SideVerdict { right, missed, phantom, unseen_opening };
+
+// A side the map got wrong, for the summary to name.
+struct WrongSide {
+  maze::Cell cell;
+  maze::Side side;
+  SideVerdict verdict;
+};
+
+struct MapScore {
+  std::size_t reachable_cells = 0;
+  std::size_t visited_reachable_cells = 0;
+  std::size_t sides = 0;
+  std::size_t sides_correct = 0;
+  // Scored sides of cells the robot stood in (on either side) that are not right, unknown
+  // included: a run may leave unvisited cells by design, never a wrong side where it stood.
+  std::size_t visited_sides_wrong = 0;
+  std::vector<WrongSide> first_visited_sides_wrong;  // the first three, in scan order
+
+  double coverage_percent() const;
+  double wall_accuracy_percent() const;
+};
+
 SideVerdict judge_side(bool true_wall, LearnedSide learned);
 
 // Calls scored(cell, side) once for each side wall_accuracy counts: the sides of reachable

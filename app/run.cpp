@@ -1,6 +1,7 @@
 #include "app/run.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -161,19 +162,52 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
   return p;
 }
 
-// The truth's verdict on a run that believed it was done: dfs and frontier mean to visit
-// every reachable cell (wall followers and floodfill may leave cells by design), so one that
-// ended "done" with reachable cells never visited got the maze wrong and must not say so.
+char side_letter(maze::Side s) {
+  return static_cast<char>(std::toupper(static_cast<unsigned char>(maze::to_string(s)[0])));
+}
+
+// "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
+std::string describe_wrong_sides(const MapScore &score) {
+  std::string named;
+  for (const WrongSide &w : score.first_visited_sides_wrong) {
+    const char *what = w.verdict == SideVerdict::phantom   ? "a wall that is not there"
+                       : w.verdict == SideVerdict::missed ? "a wall missed"
+                                                          : "an opening never seen";
+    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", side_letter(w.side), w.cell.x,
+                         w.cell.y, what);
+  }
+  const std::size_t n = score.visited_sides_wrong;
+  return fmt::format("{} side{} of visited cells learned wrong: {}{}", n, n == 1 ? "" : "s", named,
+                     n > score.first_visited_sides_wrong.size() ? ", ..." : "");
+}
+
+// The truth's verdict on a run that believed it was done (the controller never sees the
+// maze, so only the composition root can say it got the maze wrong, and must):
+//   wrong map   a side of a cell the robot stood in is learned wrong or never learned;
+//               whatever the strategy, where the robot stood it must have mapped right;
+//   incomplete  dfs and frontier mean to visit every reachable cell (wall followers and
+//               floodfill may leave cells by design): reachable cells never visited.
 void judge_ending(const RunOptions &options, RunSummary &summary) {
+  if (summary.reason == robot::EndReason::max_steps && !summary.max_steps_asked) {
+    // The default limit is a safety net far above what any set-up needs; reaching it is a failure.
+    summary.message = fmt::format("the default limit of {} steps ran out; --max-steps N allows more", summary.max_steps);
+  }
+  if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
+  const MapScore &score = summary.score;
+  const auto add = [&](const std::string &finding) {
+    summary.message = summary.message.empty() ? finding : fmt::format("{}; {}", finding, summary.message);
+  };
   const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
                               options.strategy == explore::StrategyKind::frontier;
-  const MapScore &score = summary.score;
-  if (!means_to_cover || score.visited_reachable_cells >= score.reachable_cells) return;
-  if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
-  const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
-  const std::string cells = fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells);
-  summary.message = summary.message.empty() ? cells : fmt::format("{}; {}", cells, summary.message);
-  summary.reason = robot::EndReason::incomplete;
+  if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
+    const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
+    add(fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells));
+    summary.reason = robot::EndReason::incomplete;
+  }
+  if (score.visited_sides_wrong > 0) {
+    add(describe_wrong_sides(score));
+    summary.reason = robot::EndReason::wrong_map;
+  }
 }
 
 }  // namespace
@@ -324,6 +358,7 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.width = truth.width();
   summary.height = truth.height();
   summary.max_steps = options.max_steps.value_or(max_steps_for(truth));
+  summary.max_steps_asked = options.max_steps.has_value();
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;

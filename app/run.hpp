@@ -46,6 +46,7 @@ struct RunSummary {
   int width = 0;
   int height = 0;
   std::int64_t max_steps = 0;           // the step limit in effect (--max-steps or max_steps_for)
+  bool max_steps_asked = false;         // the limit is the user's --max-steps, not max_steps_for's
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
