@@ -17,6 +17,7 @@
 #include "mapping/traversal.hpp"
 #include "common/random.hpp"
 #include "mapping/log_odds.hpp"
+#include "sensing/ray_model.hpp"
 #include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "sensing/scan.hpp"
@@ -266,4 +267,60 @@ TEST_CASE("ray model fast path: the benchmark's workload matches the reference")
     REQUIRE(fast_updated == reference_apply(reference_marks(options, slow, scan), model, slow));
   }
   for (std::size_t i = 0; i < fast.size(); ++i) REQUIRE(bits(fast.at_index(i)) == bits(slow.at_index(i)));
+}
+
+TEST_CASE("ray model: the dispatched kernel (AVX2 where the processor has it) marks as the SSE2 baseline") {
+  // The same random scans marked by both builds of the kernel, and by the reference: every
+  // value bit for bit. Short beams (within the grid's edges) walk in the four lanes, so a
+  // third of the scans keep their returns near the robot.
+  if (sensing::ray_kernel_isa() == sensing::RayKernelIsa::baseline) {
+    MESSAGE("this processor has no AVX2: only the baseline kernel ran");
+  }
+  common::Rng rng(20261201);
+  int scans_checked = 0;
+  for (const int k : {3, 5, 7, 9}) {
+    for (int world = 0; world < 12; ++world) {
+      Setup setup = random_setup(rng, k);
+      setup.geometry.width_cells += 8;  // room for beams that cannot reach the edge
+      setup.geometry.height_cells += 4;
+      const mapping::SensorModel model(setup.sensor);
+      const float prior = static_cast<float>(model.prior_log_odds());
+      OccupancyGrid baseline(setup.geometry, prior), dispatched(setup.geometry, prior), reference(setup.geometry, prior);
+      mapping::ScanUpdate update_baseline, update_dispatched;
+      const double cell_m = setup.geometry.cell_size_m;
+      for (int n = 0; n < 10; ++n) {
+        sensing::LidarScan scan;
+        scan.origin = random_origin(rng, setup.geometry);
+        scan.yaw_rad = rng.below(3) == 0 ? static_cast<double>(rng.below(8)) * kPi / 4 : rng.uniform(-4.0, 4.0);
+        scan.fov_rad = rng.below(4) == 0 ? rng.uniform(0.5, 2 * kPi) : 2 * kPi;
+        scan.min_range_m = 0.05;
+        scan.max_range_m = rng.below(2) == 0 ? 12.0 : 2 * cell_m;
+        const bool near = n % 3 != 0;
+        std::vector<float> ranges(rng.below(2) == 0 ? 360 : 1 + rng.below(40));
+        for (float &r : ranges) {
+          r = near ? static_cast<float>(rng.uniform(0.0, 2.5 * cell_m)) : random_range(rng, scan.max_range_m, 10 * cell_m);
+        }
+        scan.ranges = ranges;
+        sensing::mark_ray_model(setup.options, baseline, scan, mapping::Cell{0, 0}, update_baseline,
+                                sensing::RayKernelIsa::baseline);
+        sensing::mark_ray_model(setup.options, dispatched, scan, mapping::Cell{0, 0}, update_dispatched,
+                                sensing::ray_kernel_isa());
+        const std::size_t updated_baseline = update_baseline.apply(baseline, model);
+        const std::size_t updated_dispatched = update_dispatched.apply(dispatched, model);
+        const std::size_t updated_reference =
+            reference_apply(reference_marks(setup.options, reference, scan), model, reference);
+        INFO("K = " << k << ", world " << world << ", scan " << n);
+        REQUIRE(updated_baseline == updated_reference);
+        REQUIRE(updated_dispatched == updated_reference);
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < baseline.size(); ++i) {
+          differing += bits(baseline.at_index(i)) != bits(reference.at_index(i));
+          differing += bits(dispatched.at_index(i)) != bits(reference.at_index(i));
+        }
+        REQUIRE(differing == 0);
+        ++scans_checked;
+      }
+    }
+  }
+  CHECK(scans_checked == 4 * 12 * 10);
 }

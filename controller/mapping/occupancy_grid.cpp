@@ -1,6 +1,11 @@
 #include "mapping/occupancy_grid.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
+#include <cstring>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -127,11 +132,11 @@ std::uint32_t *ScanUpdate::IndexList::reserve(std::size_t more) {
 void ScanUpdate::open_scan(std::size_t grid_size) {
   if (tags_.size() < grid_size) tags_.resize(grid_size, 0);
   if (open_) return;
-  if (free_tag_ >= std::numeric_limits<std::uint32_t>::max() - 2) {
+  if (free_tag_ >= std::numeric_limits<std::uint32_t>::max() - 3) {
     std::fill(tags_.begin(), tags_.end(), 0);
     free_tag_ = 0;
   }
-  free_tag_ += 2;  // this scan: free_tag_ and free_tag_ + 1; the last one's are below
+  free_tag_ += 3;  // this scan: free_tag_ - 1 ... free_tag_ + 1; the last one's are below
   open_ = true;
 }
 
@@ -142,7 +147,37 @@ ScanUpdate::UniqueMarks ScanUpdate::unique_marks(const OccupancyGrid &grid) {
   marks.tags_ = tags_.data();
   marks.free_tag_ = free_tag_;
   marks.occupied_tag_ = free_tag_ + 1;
+  marks.stamp_tag_ = free_tag_ - 1;
   return marks;
+}
+
+std::uint32_t *ScanUpdate::UniqueMarks::list_stamped(std::uint32_t *out, std::uint32_t first,
+                                                     std::uint32_t last) const {
+  std::uint32_t i = first;
+#if defined(__SSE2__)
+  // Four tags a compare; each is listed branch-free (whether one is stamped is a coin toss).
+  const __m128i stamp = _mm_set1_epi32(static_cast<int>(stamp_tag_));
+  const __m128i listed = _mm_set1_epi32(static_cast<int>(free_tag_));
+  for (; last - i >= 4; i += 4) {
+    __m128i tags;
+    std::memcpy(&tags, tags_ + i, sizeof tags);
+    const __m128i hit = _mm_cmpeq_epi32(tags, stamp);
+    const auto bits = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(hit)));
+    const __m128i now = _mm_or_si128(_mm_andnot_si128(hit, tags), _mm_and_si128(hit, listed));
+    std::memcpy(tags_ + i, &now, sizeof now);
+    for (unsigned b = 0; b < 4; ++b) {
+      *out = i + b;
+      out += (bits >> b) & 1u;
+    }
+  }
+#endif
+  for (; i < last; ++i) {
+    const bool stamped = tags_[i] == stamp_tag_;
+    *out = i;
+    out += stamped ? 1 : 0;
+    tags_[i] = stamped ? free_tag_ : tags_[i];
+  }
+  return out;
 }
 
 void ScanUpdate::clear() {

@@ -149,6 +149,17 @@ class ScanUpdate {
       tags_[i] = fresh ? want : seen;
       return out + (fresh ? 1 : 0);
     }
+    // Stamping, for a loop that marks so many sub-cells twice or more that listing each as it
+    // goes would cost more than looking for them after: stamp_free_if marks sub-cell i free
+    // (when wanted_mask is all ones) without listing it; list_stamped then lists, from *out
+    // on, the sub-cells of flat indices [first, last) stamped and not yet listed this scan,
+    // as mark_free would have. Every stamp of a scan must be listed before apply().
+    void stamp_free_if(std::uint32_t i, std::uint32_t wanted_mask) const {
+      const std::uint32_t seen = tags_[i];
+      const std::uint32_t want = stamp_tag_ & wanted_mask;  // the stamp is below this scan's other tags
+      tags_[i] = seen < want ? want : seen;
+    }
+    std::uint32_t *list_stamped(std::uint32_t *out, std::uint32_t first, std::uint32_t last) const;
     // Occupied wins: a sub-cell already listed free is listed again here, and apply() skips
     // its free listing.
     std::uint32_t *mark_occupied(std::uint32_t *out, std::uint32_t i) const {
@@ -164,6 +175,7 @@ class ScanUpdate {
     std::uint32_t *tags_ = nullptr;
     std::uint32_t free_tag_ = 0;
     std::uint32_t occupied_tag_ = 0;
+    std::uint32_t stamp_tag_ = 0;
   };
   UniqueMarks unique_marks(const OccupancyGrid &grid);
 
@@ -204,7 +216,8 @@ class ScanUpdate {
   IndexList free_once_;                // UniqueMarks, each sub-cell once
   IndexList occupied_once_;
   // The per-scan update marker: per sub-cell, the tag of the last scan that listed it.
-  // A scan's tags are free_tag_ and free_tag_ + 1 (occupied); every older tag is smaller.
+  // A scan's tags are free_tag_ - 1 (stamped), free_tag_ and free_tag_ + 1 (occupied); every
+  // older tag is smaller.
   std::vector<std::uint32_t> tags_;
   std::uint32_t free_tag_ = 0;
   bool open_ = false;  // free_tag_ belongs to the scan under way

@@ -230,6 +230,17 @@ class FlatWalk {
         // next_x is NaN only from 0 * infinity (a direction too small to divide by, starting
         // on a boundary); trace_ray then ends in the first sub-cell.
         stuck_(t.next_x != t.next_x) {}
+  // A walk resumed where another left it (sensing/ray_lanes.hpp): t's directions and its
+  // current next_x, next_y; the steps left to the grid's edges; the flat index and place.
+  FlatWalk(const MoveTable<K> &moves, const TraversalStart &t, std::int64_t to_edge_x, std::int64_t to_edge_y,
+           std::uint32_t flat, unsigned place)
+      : axes_(t, to_edge_x, to_edge_y), moves_(moves.quadrant(t.step_x, t.step_y)), flat_(flat),
+        row_(4 * place), stuck_(false) {}
+  // The steps an axis has before the grid's edge: `ahead` or `behind` by its direction.
+  static std::int64_t to_edge(int step, int ahead, int behind) {
+    constexpr std::int64_t never = std::int64_t{1} << 40;  // an axis the beam does not move along
+    return step > 0 ? ahead : (step < 0 ? behind : never);
+  }
 
   // exit_m() < length_m: the beam leaves the current sub-cell before length_m.
   bool exits_before(double length_m) const { return !stuck_ && axes_.exits_before(length_m); }
@@ -280,11 +291,6 @@ class FlatWalk {
                                   std::uint32_t e) {
     // kFree (bit 10) spread to a mask: all ones when set.
     return marks.mark_free_if(out, here, static_cast<std::uint32_t>(static_cast<std::int32_t>(e << 21) >> 31));
-  }
-
-  static std::int64_t to_edge(int step, int ahead, int behind) {
-    constexpr std::int64_t never = std::int64_t{1} << 40;  // an axis the beam does not move along
-    return step > 0 ? ahead : (step < 0 ? behind : never);
   }
 
   AxisPair axes_;

@@ -18,8 +18,18 @@
 namespace sensing {
 
 // Gathers the marks of one scan into `update` (robot_cell is not used: every beam starts at
-// the scan's origin).
+// the scan's origin), with the kernel built for ray_kernel_isa().
 void mark_ray_model(const ModelOptions &options, const mapping::OccupancyGrid &grid, const LidarScan &scan,
                     mapping::Cell robot_cell, mapping::ScanUpdate &update);
+
+// The instruction sets the kernel is built for: SSE2 (every x86-64, and the portable build
+// elsewhere) and AVX2, four lanes a register. Both give the same marks.
+enum class RayKernelIsa { baseline, avx2 };
+// The one this processor runs: avx2 when it has AVX2, else baseline.
+RayKernelIsa ray_kernel_isa();
+// mark_ray_model with the kernel built for `isa` (tests run both); `isa` must be baseline or
+// ray_kernel_isa().
+void mark_ray_model(const ModelOptions &options, const mapping::OccupancyGrid &grid, const LidarScan &scan,
+                    mapping::Cell robot_cell, mapping::ScanUpdate &update, RayKernelIsa isa);
 
 }  // namespace sensing
