@@ -6,7 +6,8 @@
 //   wall_accuracy = sides of reachable cells whose learned state (wall or open) matches the
 //                   truth / all such sides, in %; each side shared by two cells counts once,
 //                   the outer boundary is included, and a side never observed counts as wrong.
-//   visited_sides_wrong = those wrong sides that belong to a cell the robot stood in.
+//   wrong sides where it looked = those wrong sides that belong to a cell the robot stood in
+//                   and scanned (wrong_sides_where_looked).
 
 #include <cstddef>
 #include <functional>
@@ -37,10 +38,6 @@ struct MapScore {
   std::size_t visited_reachable_cells = 0;
   std::size_t sides = 0;
   std::size_t sides_correct = 0;
-  // Scored sides of cells the robot stood in (on either side) that are not right, unknown
-  // included: a run may leave unvisited cells by design, never a wrong side where it stood.
-  std::size_t visited_sides_wrong = 0;
-  std::vector<WrongSide> first_visited_sides_wrong;  // the first three, in scan order
 
   double coverage_percent() const;
   double wall_accuracy_percent() const;
@@ -53,6 +50,16 @@ SideVerdict judge_side(bool true_wall, LearnedSide learned);
 // east side). `reachable` is truth.reachable_from_start().
 void for_each_scored_side(const maze::Maze &truth, const std::vector<bool> &reachable,
                           const std::function<void(maze::Cell, maze::Side)> &scored);
+
+// The scored sides that are not right (unknown included) of the cells looked[y * W + x] marks,
+// either cell of a shared side: a run may leave cells unvisited by design, never a wrong side
+// where it stood and looked. Counted, and the first three in scan order named.
+struct WrongSides {
+  std::size_t count = 0;
+  std::vector<WrongSide> first;
+};
+WrongSides wrong_sides_where_looked(const maze::Maze &truth, const std::vector<bool> &looked,
+                                    const std::function<LearnedSide(maze::Cell, maze::Side)> &learned);
 
 // visited[y * W + x] says whether the robot stood in cell (x, y); learned(cell, side) is the
 // controller's belief about that side. Costs O(W * H).

@@ -167,24 +167,25 @@ char side_letter(maze::Side s) {
 }
 
 // "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
-std::string describe_wrong_sides(const MapScore &score) {
+std::string describe_wrong_sides(const WrongSides &wrong) {
   std::string named;
-  for (const WrongSide &w : score.first_visited_sides_wrong) {
+  for (const WrongSide &w : wrong.first) {
     const char *what = w.verdict == SideVerdict::phantom   ? "a wall that is not there"
                        : w.verdict == SideVerdict::missed ? "a wall missed"
                                                           : "an opening never seen";
     named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", side_letter(w.side), w.cell.x,
                          w.cell.y, what);
   }
-  const std::size_t n = score.visited_sides_wrong;
+  const std::size_t n = wrong.count;
   return fmt::format("{} side{} of visited cells learned wrong: {}{}", n, n == 1 ? "" : "s", named,
-                     n > score.first_visited_sides_wrong.size() ? ", ..." : "");
+                     n > wrong.first.size() ? ", ..." : "");
 }
 
 // The truth's verdict on a run that believed it was done (the controller never sees the
 // maze, so only the composition root can say it got the maze wrong, and must):
-//   wrong map   a side of a cell the robot stood in is learned wrong or never learned;
-//               whatever the strategy, where the robot stood it must have mapped right;
+//   wrong map   a side of a cell the search visited (and so scanned in) is learned wrong or
+//               never learned; whatever the strategy, where the robot looked it must have
+//               mapped right (a speed run's cells, driven through unscanned, are not judged);
 //   incomplete  dfs and frontier mean to visit every reachable cell (wall followers and
 //               floodfill may leave cells by design): reachable cells never visited.
 void judge_ending(const RunOptions &options, RunSummary &summary) {
@@ -204,8 +205,8 @@ void judge_ending(const RunOptions &options, RunSummary &summary) {
     add(fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells));
     summary.reason = robot::EndReason::incomplete;
   }
-  if (score.visited_sides_wrong > 0) {
-    add(describe_wrong_sides(score));
+  if (summary.wrong_sides.count > 0) {
+    add(describe_wrong_sides(summary.wrong_sides));
     summary.reason = robot::EndReason::wrong_map;
   }
 }
@@ -366,6 +367,9 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
     return truth.is_goal(maze::Cell{c.x, c.y});
   });
   summary.score = score(truth, result, style.initial_log_odds, style.threshold);
+  // Where the robot looked: the search's cells (a speed run drives through cells unscanned).
+  summary.wrong_sides = wrong_sides_where_looked(truth, visited_cells(result.search_visits.value_or(result.visits)),
+                                                 learned_sides(result, style.initial_log_odds, style.threshold));
   judge_ending(options, summary);
   summary.sim_time_s = result.sim_time_s;
   summary.explore_time_s = result.explore_time_s;

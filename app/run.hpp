@@ -52,6 +52,7 @@ struct RunSummary {
   int visited = 0;
   bool reached_goal = false;  // the robot stood on one of the maze's goal cells
   MapScore score;
+  WrongSides wrong_sides;  // sides learned wrong where the robot looked (the verdict "wrong map")
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;
   bool interrupted = false;             // stopped by Ctrl-C (not by q)

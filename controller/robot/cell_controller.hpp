@@ -103,6 +103,9 @@ struct RunResult {
   // Speed run: time_s is nothing when none was made (not asked, exploring did not end
   // "done", or no known path to the goal).
   SpeedRun speed_run;
+  // When a speed run followed the search: the cells the search visited (and so scanned in);
+  // `visits` then holds the speed run's cells too, which it drives through without looking.
+  std::optional<explore::Visits> search_visits;
 };
 
 class CellController {
