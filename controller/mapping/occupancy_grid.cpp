@@ -1,10 +1,12 @@
 #include "mapping/occupancy_grid.hpp"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
 #endif
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstring>
 #include <cassert>
 #include <cmath>
@@ -151,26 +153,43 @@ ScanUpdate::UniqueMarks ScanUpdate::unique_marks(const OccupancyGrid &grid) {
   return marks;
 }
 
-std::uint32_t *ScanUpdate::UniqueMarks::list_stamped(std::uint32_t *out, std::uint32_t first,
-                                                     std::uint32_t last) const {
-  std::uint32_t i = first;
-#if defined(__SSE2__)
-  // Four tags a compare; each is listed branch-free (whether one is stamped is a coin toss).
-  const __m128i stamp = _mm_set1_epi32(static_cast<int>(stamp_tag_));
-  const __m128i listed = _mm_set1_epi32(static_cast<int>(free_tag_));
-  for (; last - i >= 4; i += 4) {
-    __m128i tags;
-    std::memcpy(&tags, tags_ + i, sizeof tags);
-    const __m128i hit = _mm_cmpeq_epi32(tags, stamp);
-    const auto bits = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(hit)));
-    const __m128i now = _mm_or_si128(_mm_andnot_si128(hit, tags), _mm_and_si128(hit, listed));
-    std::memcpy(tags_ + i, &now, sizeof now);
-    for (unsigned b = 0; b < 4; ++b) {
-      *out = i + b;
-      out += (bits >> b) & 1u;
+#if defined(__x86_64__) || defined(__i386__)
+namespace {
+
+// For each mask of 8 lanes, the lanes set, in order, a byte each: AVX2's left-packing.
+constexpr std::array<std::uint64_t, 256> kPackedLanes = [] {
+  std::array<std::uint64_t, 256> table{};
+  for (unsigned mask = 0; mask < 256; ++mask) {
+    unsigned n = 0;
+    for (unsigned lane = 0; lane < 8; ++lane) {
+      if ((mask >> lane & 1u) != 0) table[mask] |= std::uint64_t{lane} << (8 * n++);
     }
   }
-#endif
+  return table;
+}();
+
+}  // namespace
+
+// Eight tags a compare; the stamped ones' indices packed to the front and stored whole.
+[[gnu::target("avx2")]] std::uint32_t *ScanUpdate::UniqueMarks::list_stamped(std::uint32_t *out, std::uint32_t first,
+                                                                             std::uint32_t last) const {
+  std::uint32_t i = first;
+  const __m256i stamp = _mm256_set1_epi32(static_cast<int>(stamp_tag_));
+  const __m256i listed = _mm256_set1_epi32(static_cast<int>(free_tag_));
+  const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  for (; last - i >= 8; i += 8) {
+    __m256i tags;
+    std::memcpy(&tags, tags_ + i, sizeof tags);
+    const __m256i hit = _mm256_cmpeq_epi32(tags, stamp);
+    const auto bits = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(hit)));
+    const __m256i now = _mm256_blendv_epi8(tags, listed, hit);
+    std::memcpy(tags_ + i, &now, sizeof now);
+    const __m256i order = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kPackedLanes[bits])));
+    const __m256i packed = _mm256_permutevar8x32_epi32(
+        _mm256_add_epi32(lanes, _mm256_set1_epi32(static_cast<int>(i))), order);
+    std::memcpy(out, &packed, sizeof packed);
+    out += std::popcount(bits);
+  }
   for (; i < last; ++i) {
     const bool stamped = tags_[i] == stamp_tag_;
     *out = i;
@@ -179,6 +198,18 @@ std::uint32_t *ScanUpdate::UniqueMarks::list_stamped(std::uint32_t *out, std::ui
   }
   return out;
 }
+#else
+std::uint32_t *ScanUpdate::UniqueMarks::list_stamped(std::uint32_t *out, std::uint32_t first,
+                                                     std::uint32_t last) const {
+  for (std::uint32_t i = first; i < last; ++i) {
+    const bool stamped = tags_[i] == stamp_tag_;
+    *out = i;
+    out += stamped ? 1 : 0;
+    tags_[i] = stamped ? free_tag_ : tags_[i];
+  }
+  return out;
+}
+#endif
 
 void ScanUpdate::clear() {
   free_.clear();

@@ -153,13 +153,16 @@ class ScanUpdate {
     // goes would cost more than looking for them after: stamp_free_if marks sub-cell i free
     // (when wanted_mask is all ones) without listing it; list_stamped then lists, from *out
     // on, the sub-cells of flat indices [first, last) stamped and not yet listed this scan,
-    // as mark_free would have. Every stamp of a scan must be listed before apply().
+    // as mark_free would have, writing up to kStampSlack slots past the last it lists. Every
+    // stamp of a scan must be listed before apply(). On x86 it needs AVX2 (the stamping kernel
+    // runs only there).
     void stamp_free_if(std::uint32_t i, std::uint32_t wanted_mask) const {
       const std::uint32_t seen = tags_[i];
       const std::uint32_t want = stamp_tag_ & wanted_mask;  // the stamp is below this scan's other tags
       tags_[i] = seen < want ? want : seen;
     }
     std::uint32_t *list_stamped(std::uint32_t *out, std::uint32_t first, std::uint32_t last) const;
+    static constexpr std::size_t kStampSlack = 8;
     // Occupied wins: a sub-cell already listed free is listed again here, and apply() skips
     // its free listing.
     std::uint32_t *mark_occupied(std::uint32_t *out, std::uint32_t i) const {

@@ -21,12 +21,13 @@ using namespace ray_kernel;
 
 // Room for a scan's free marks: a beam lists at most one sub-cell per step and steps at
 // most width + height times in the grid, and a scan lists each sub-cell at most once; plus
-// the slot a mark writes before it knows whether it keeps it.
+// the slots a mark writes before it knows whether it keeps it (list_stamped writes eight).
 std::size_t free_room(const OccupancyGrid &grid, const LidarScan &scan) {
   const GridGeometry &g = grid.geometry();
   const std::size_t per_beam = static_cast<std::size_t>(g.width_subcells()) +
                                static_cast<std::size_t>(g.height_subcells()) + 2;
-  return std::min(grid.size(), static_cast<std::size_t>(scan.beam_count()) * per_beam) + 1;
+  return std::min(grid.size(), static_cast<std::size_t>(scan.beam_count()) * per_beam) + 1 +
+         ScanUpdate::UniqueMarks::kStampSlack;
 }
 
 // Room for its occupied marks: the hit and hit_depth behind it a beam.
@@ -41,20 +42,22 @@ double edge_free_reach_m(const GridGeometry &g, const TraversalOrigin &o) {
   return g.subcell_size_m() * (std::min({o.px, o.py, g.width_subcells() - o.px, g.height_subcells() - o.py}) - 2.0);
 }
 
-// Lists the sub-cells the lanes stamped: all within reach_m of the origin on both axes (the
-// cells around them, a row of cells at a time: a contiguous run of flat indices).
+// Lists the sub-cells the lanes stamped: all within reach_m of the origin (the cells around
+// them, a row of cells at a time: a contiguous run of flat indices).
 std::uint32_t *list_stamped_near(const GridGeometry &g, const TraversalOrigin &o, double reach_m,
                                  const ScanUpdate::UniqueMarks &marks, std::uint32_t *out) {
   const double reach = reach_m / g.subcell_size_m() + 1.0;  // sub-cells, and one for rounding
   const auto cell_of_axis = [&](double p, int subcells) {
-    return std::clamp(static_cast<int>(std::clamp(p, 0.0, subcells - 1.0)), 0, subcells - 1) / g.subcells;
+    return static_cast<int>(std::clamp(p, 0.0, subcells - 1.0)) / g.subcells;
   };
-  const int x0 = cell_of_axis(o.px - reach, g.width_subcells());
-  const int x1 = cell_of_axis(o.px + reach, g.width_subcells());
-  const int y0 = cell_of_axis(o.py - reach, g.height_subcells());
-  const int y1 = cell_of_axis(o.py + reach, g.height_subcells());
   const auto kk = static_cast<std::uint32_t>(g.subcells * g.subcells);
-  for (int y = y0; y <= y1; ++y) {
+  const int y1 = cell_of_axis(o.py + reach, g.height_subcells());
+  for (int y = cell_of_axis(o.py - reach, g.height_subcells()); y <= y1; ++y) {
+    // The row's sub-cells nearest the origin are dy from it; the circle is 2 half_x wide there.
+    const double dy = std::max({0.0, y * g.subcells - o.py, o.py - (y + 1) * g.subcells});
+    const double half_x = std::sqrt(std::max(0.0, reach * reach - dy * dy));
+    const int x0 = cell_of_axis(o.px - half_x, g.width_subcells());
+    const int x1 = cell_of_axis(o.px + half_x, g.width_subcells());
     const auto row = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(g.width_cells);
     out = marks.list_stamped(out, (row + static_cast<std::uint32_t>(x0)) * kk,
                              (row + static_cast<std::uint32_t>(x1) + 1) * kk);
