@@ -132,7 +132,7 @@ std::uint32_t *ScanUpdate::IndexList::reserve(std::size_t more) {
 }
 
 void ScanUpdate::open_scan(std::size_t grid_size) {
-  if (tags_.size() < grid_size) tags_.resize(grid_size, 0);
+  if (tags_.size() < grid_size + 1) tags_.resize(grid_size + 1, 0);  // and UniqueMarks::spare()
   if (open_) return;
   if (free_tag_ >= std::numeric_limits<std::uint32_t>::max() - 3) {
     std::fill(tags_.begin(), tags_.end(), 0);
@@ -143,8 +143,10 @@ void ScanUpdate::open_scan(std::size_t grid_size) {
 }
 
 ScanUpdate::UniqueMarks ScanUpdate::unique_marks(const OccupancyGrid &grid) {
-  open_scan(grid.size());
   UniqueMarks marks;
+  marks.first_ = !open_;
+  open_scan(grid.size());
+  marks.spare_ = static_cast<std::uint32_t>(grid.size());
   marks.owner_ = this;
   marks.tags_ = tags_.data();
   marks.free_tag_ = free_tag_;

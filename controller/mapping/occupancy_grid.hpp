@@ -162,6 +162,12 @@ class ScanUpdate {
       tags_[i] = seen < want ? want : seen;
     }
     std::uint32_t *list_stamped(std::uint32_t *out, std::uint32_t first, std::uint32_t last) const;
+    // When no sub-cell is tagged yet this scan (no marks through UniqueMarks before these),
+    // and until the first mark_free or mark_occupied, a stamp may be a plain store: stamp(i)
+    // stamps sub-cell i, and stamp(spare()) nothing (a slot past the grid's tags).
+    bool first_of_scan() const { return first_; }
+    void stamp(std::uint32_t i) const { tags_[i] = stamp_tag_; }
+    std::uint32_t spare() const { return spare_; }
     static constexpr std::size_t kStampSlack = 8;
     // Occupied wins: a sub-cell already listed free is listed again here, and apply() skips
     // its free listing.
@@ -179,6 +185,8 @@ class ScanUpdate {
     std::uint32_t free_tag_ = 0;
     std::uint32_t occupied_tag_ = 0;
     std::uint32_t stamp_tag_ = 0;
+    std::uint32_t spare_ = 0;
+    bool first_ = false;
   };
   UniqueMarks unique_marks(const OccupancyGrid &grid);
 

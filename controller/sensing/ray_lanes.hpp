@@ -97,7 +97,8 @@ template <int K>
 // every lane has ended (its beam leaves no more sub-cells before its length); a lane that
 // ended stands still. No lane may reach the grid's edge before its end. Marks by stamp
 // (ScanUpdate::UniqueMarks::stamp_free_if): the caller lists them.
-template <int K>
+// kPlain: UniqueMarks::stamp, a plain store, where the caller knows nothing else is tagged.
+template <int K, bool kPlain>
 [[gnu::target("avx2"), gnu::always_inline]] inline void walk_lanes(Lanes &v, const ScanUpdate::UniqueMarks &marks) {
   F64x4 nx = v.next_x, ny = v.next_y;
   const F64x4 dx = v.delta_x, dy = v.delta_y, len = v.length_m;
@@ -107,6 +108,7 @@ template <int K>
   const U64x4 fx = v.flat_x, fy = v.flat_y, cx = v.cross_x, cy = v.cross_y;
   const I32x8 zero = {}, last = zero + (K - 1), k = zero + K;
   const ScanUpdate::UniqueMarks m = marks;
+  const U64x4 spare = U64x4{} + std::uint64_t{marks.spare()};
   I64x4 go = (nx < len) | (ny < len);
   while (_mm256_movemask_pd(__builtin_bit_cast(__m256d, go)) != 0) {
     // trace_ray's rule as AxisPair::step has it: x steps when next_x <= next_y, y when
@@ -132,9 +134,15 @@ template <int K>
     // Through memory: four loads take the load ports, where four extractions would compete
     // with the walk for the vector ones.
     alignas(32) std::uint32_t at[8], wanted[8];
-    std::memcpy(at, &here, sizeof at);
-    std::memcpy(wanted, &freed, sizeof wanted);
-    for (int l = 0; l < 4; ++l) m.stamp_free_if(at[2 * l], wanted[2 * l]);
+    if constexpr (kPlain) {
+      const U64x4 to = (here & __builtin_bit_cast(U64x4, freed)) | (spare & ~__builtin_bit_cast(U64x4, freed));
+      std::memcpy(at, &to, sizeof at);
+      for (int l = 0; l < 4; ++l) m.stamp(at[2 * l]);
+    } else {
+      std::memcpy(at, &here, sizeof at);
+      std::memcpy(wanted, &freed, sizeof wanted);
+      for (int l = 0; l < 4; ++l) m.stamp_free_if(at[2 * l], wanted[2 * l]);
+    }
     go = (nx < len) | (ny < len);
   }
   v.next_x = nx;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "mapping/traversal.hpp"
@@ -162,28 +163,13 @@ void mark_rays_paired(ScanWalk<K> &w, const LidarScan &scan, const BeamTable &ta
 }
 
 #if defined(__x86_64__) || defined(__i386__)
-// The AVX2 build: beams that cannot reach the grid's edge walk four at a time (walk_lanes), a
-// quarter of the scan apart: beams side by side would cross the same sub-cells in the same
-// round, each stamp waiting on the one before, and beams a quarter turn apart take as many
-// steps (|cos| + |sin|). A beam that may reach the edge walks alone.
-template <int K>
-[[gnu::target("avx2")]] void mark_rays_lanes(ScanWalk<K> &w, const LidarScan &scan, const BeamTable &table) {
-  thread_local std::vector<Beam> inner;
-  inner.clear();
-  double reach_m = 0.0;  // the longest of them
-  for (int i = 0; i < scan.beam_count(); ++i) {
-    const std::optional<Beam> beam = w.beam(scan, table, i);
-    if (!beam) continue;
-    FlatWalk<K> walk(w.start, w.moves, beam->start);
-    if (!(beam->length_m < w.inside_m)) {
-      w.walk_alone(walk, beam->length_m, beam->no_return, true);
-    } else if (!walk.exits_before(beam->length_m)) {  // ends where it starts (or next_x is NaN: FlatWalk)
-      w.mark_end(walk, beam->no_return);
-    } else {
-      inner.push_back(*beam);
-      reach_m = std::max(reach_m, beam->length_m);
-    }
-  }
+// The walks of `inner`, four at a time (walk_lanes), a quarter of the scan apart: beams side
+// by side would cross the same sub-cells in the same round, each stamp waiting on the one
+// before, and beams a quarter turn apart take as many steps (|cos| + |sin|). Where each
+// ended goes to `ends`.
+template <int K, bool kPlain>
+[[gnu::target("avx2")]] void walk_in_lanes(ScanWalk<K> &w, const std::vector<Beam> &inner,
+                                           std::vector<std::pair<FlatWalk<K>, bool>> &ends) {
   const std::size_t quarter = (inner.size() + 3) / 4;
   Lanes lanes{};
   for (std::size_t j = 0; j < quarter; ++j) {
@@ -195,14 +181,51 @@ template <int K>
         lane_idle(lanes, l);
       }
     }
-    walk_lanes<K>(lanes, w.marks);
+    walk_lanes<K, kPlain>(lanes, w.marks);
     for (int l = 0; l < 4; ++l) {
-      if (j + static_cast<std::size_t>(l) * quarter >= inner.size()) continue;
-      FlatWalk<K> ended = lane_walk(lanes, l, w.moves);
-      w.mark_end(ended, lanes.no_return[l]);
+      if (j + static_cast<std::size_t>(l) * quarter < inner.size()) ends.emplace_back(lane_walk(lanes, l, w.moves), lanes.no_return[l]);
     }
   }
+}
+
+// The AVX2 build: beams that cannot reach the grid's edge walk in lanes (walk_in_lanes), the
+// others alone.
+template <int K>
+[[gnu::target("avx2")]] void mark_rays_lanes(ScanWalk<K> &w, const LidarScan &scan, const BeamTable &table) {
+  thread_local std::vector<Beam> inner, alone;
+  thread_local std::vector<std::pair<FlatWalk<K>, bool>> ends;
+  inner.clear();
+  alone.clear();
+  ends.clear();
+  double reach_m = 0.0;  // the longest of the beams in lanes
+  for (int i = 0; i < scan.beam_count(); ++i) {
+    const std::optional<Beam> beam = w.beam(scan, table, i);
+    if (!beam) continue;
+    // In lanes unless it may reach the edge, ends where it starts, or next_x is NaN (FlatWalk).
+    if (beam->length_m < w.inside_m && FlatWalk<K>(w.start, w.moves, beam->start).exits_before(beam->length_m)) {
+      inner.push_back(*beam);
+      reach_m = std::max(reach_m, beam->length_m);
+    } else {
+      alone.push_back(*beam);
+    }
+  }
+  // Nothing of this scan tagged yet: the lanes' stamps are plain stores until listed, and
+  // every other mark waits until then.
+  if (w.marks.first_of_scan()) {
+    walk_in_lanes<K, true>(w, inner, ends);
+  } else {
+    walk_in_lanes<K, false>(w, inner, ends);
+  }
   w.free_out = list_stamped_near(w.g, w.origin, reach_m, w.marks, w.free_out);
+  for (auto &[walk, no_return] : ends) w.mark_end(walk, no_return);
+  for (const Beam &beam : alone) {
+    FlatWalk<K> walk(w.start, w.moves, beam.start);
+    if (beam.length_m < w.inside_m) {
+      w.mark_end(walk, beam.no_return);
+    } else {
+      w.walk_alone(walk, beam.length_m, beam.no_return, true);
+    }
+  }
 }
 #endif
 
