@@ -52,7 +52,12 @@ MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,
   }
   for_each_scored_side(truth, reachable, [&](maze::Cell c, maze::Side s) {
     ++score.sides;
-    if (judge_side(truth.has_wall(c, s), learned(c, s)) == SideVerdict::right) ++score.sides_correct;
+    const LearnedSide belief = learned(c, s);
+    if (judge_side(truth.has_wall(c, s), belief) == SideVerdict::right) {
+      ++score.sides_correct;
+    } else if (belief != LearnedSide::unknown) {
+      ++score.sides_contradicted;
+    }
   });
   return score;
 }

@@ -22,6 +22,7 @@ struct MapScore {
   std::size_t visited_reachable_cells = 0;
   std::size_t sides = 0;
   std::size_t sides_correct = 0;
+  std::size_t sides_contradicted = 0;  // learned wall or open, and the truth says the other
 
   double coverage_percent() const;
   double wall_accuracy_percent() const;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "common/error.hpp"
 #include "maze/maze.hpp"
@@ -161,18 +162,31 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
   return p;
 }
 
-// The truth's verdict on a run that believed it was done: dfs and frontier mean to visit
-// every reachable cell (wall followers and floodfill may leave cells by design), so one that
-// ended "done" with reachable cells never visited got the maze wrong and must not say so.
+// The truth's verdict on a run that believed it was done: it must not say so when it got
+// the maze wrong. dfs and frontier mean to visit every reachable cell and map every side of
+// them (wall followers and floodfill may leave cells, and so sides, unknown by design), so
+// one that ended "done" with a reachable cell never visited or a side not right is
+// incomplete; any strategy's "done" is incomplete when a side it learned contradicts the truth.
 void judge_ending(const RunOptions &options, RunSummary &summary) {
+  if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
   const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
                               options.strategy == explore::StrategyKind::frontier;
   const MapScore &score = summary.score;
-  if (!means_to_cover || score.visited_reachable_cells >= score.reachable_cells) return;
-  if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
-  const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
-  const std::string cells = fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells);
-  summary.message = summary.message.empty() ? cells : fmt::format("{}; {}", cells, summary.message);
+  std::vector<std::string> faults;
+  if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
+    faults.push_back(fmt::format("{} of {} reachable cells never visited",
+                                 score.reachable_cells - score.visited_reachable_cells, score.reachable_cells));
+  }
+  // Every side of a reachable cell, or, when cells were missed or left by design, those learned.
+  const bool every_side = means_to_cover && faults.empty();
+  const std::size_t wrong = every_side ? score.sides - score.sides_correct : score.sides_contradicted;
+  if (wrong > 0 && summary.reason == robot::EndReason::done) {
+    faults.push_back(fmt::format("{} of {} sides mapped wrong{}", wrong, score.sides,
+                                 wrong == score.sides_contradicted ? "" : " or never observed"));
+  }
+  if (faults.empty()) return;
+  if (!summary.message.empty()) faults.push_back(summary.message);
+  summary.message = fmt::format("{}", fmt::join(faults, "; "));
   summary.reason = robot::EndReason::incomplete;
 }
 
