@@ -81,6 +81,24 @@ unsigned model_given_options(const GivenOptions &given) {
   return bits;
 }
 
+// The faults and the noise act on the lidar's beams: on a robot without one, --dropout and
+// --spikes do nothing, nor does a --noise other than 0 (which also makes the other sensors exact).
+void check_lidar_options(const GivenOptions &given, const RunOptions &options, std::vector<std::string> &warnings) {
+  const bool lidar_option = given.given("--dropout") || given.given("--spikes") ||
+                            (given.given("--noise") && options.simulation.noise.value_or(0.0) > 0.0);
+  if (!lidar_option) return;
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  if (!profile.lidars.empty()) return;
+  for (const char *option : {"--dropout", "--spikes"}) {
+    if (!given.given(option)) continue;
+    warnings.push_back(fmt::format("warning: {} has no effect: the robot {} has no lidar", option, profile.name));
+  }
+  if (given.given("--noise") && options.simulation.noise.value_or(0.0) > 0.0) {
+    warnings.push_back(fmt::format("warning: --noise {} has no effect: the robot {} has no lidar (--noise 0 "
+                                   "makes its sensors exact)", *options.simulation.noise, profile.name));
+  }
+}
+
 }  // namespace
 
 void validate_subcells(int subcells) {
@@ -128,6 +146,7 @@ std::vector<std::string> check_options_apply(const GivenOptions &given, const Ru
   for (std::string &warning : check_model_options(sensing::setup(options.model.kind), model_given_options(given))) {
     warnings.push_back(std::move(warning));
   }
+  check_lidar_options(given, options, warnings);
   return warnings;
 }
 
