@@ -114,3 +114,9 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
   CHECK(first[2] == "1");
   CHECK(fs::exists(dir.path / "map.png"));
 }
+
+// Regression (the trust sweep): `compare --subcells ""` compared nothing and exited 0.
+TEST_CASE("compare --subcells with no K is an error, not an empty comparison") {
+  CHECK_THROWS_WITH(test_cli::run({"compare", kWorld, "--subcells", ""}),
+                    "--subcells needs at least one K, a list like 3,5 (got '')");
+}
