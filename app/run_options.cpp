@@ -25,9 +25,7 @@ void validate(const OutputOptions &o) {
   if (o.unknown) validate_unknown(std::string_view(&*o.unknown, 1));
   require_above_zero("--fps", o.fps);
   require_above_zero("--speed", o.speed);
-  if (o.snapshots < 0 || o.snapshots > kMaxSnapshots) {
-    throw common::InputError(fmt::format("--snapshots must be from 1 to {} (got {})", kMaxSnapshots, o.snapshots));
-  }
+  if (o.snapshots != 0) validate_snapshots(o.snapshots);  // 0: none
 }
 
 void validate_run(const RunOptions &o) {
@@ -108,6 +106,12 @@ void validate_subcells(int subcells) {
   one_cell.height_cells = 1;
   one_cell.subcells = subcells;
   mapping::validate(one_cell, mapping::kDefaultMaxGridBytes);
+}
+
+void validate_snapshots(int snapshots) {
+  if (snapshots < 1 || snapshots > kMaxSnapshots) {
+    throw common::InputError(fmt::format("--snapshots must be from 1 to {} (got {})", kMaxSnapshots, snapshots));
+  }
 }
 
 void validate_unknown(std::string_view text) {
