@@ -99,6 +99,10 @@ void add_generate_command(CLI::App &cli, CommandContext &context) {
       std::cout << maze::write_text_map(m);
     } else {
       maze::save_world(m, args->out);
+      // As convert says it: a .num holds no goal, and the maze has one.
+      if (const auto dropped = maze::dropped_by(m, maze::format_for_output(args->out))) {
+        fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+      }
     }
     context.status = 0;
   });
