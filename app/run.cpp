@@ -338,6 +338,13 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.width = truth.width();
   summary.height = truth.height();
   summary.max_steps = options.max_steps.value_or(max_steps_for(truth));
+  // A stop the user asked for is as planned; the default limit, which a complete exploration
+  // never reaches, running out is not (--wheel-slip 0.98 on lab4x4 ended there, exit 0).
+  if (result.reason == robot::EndReason::max_steps && !options.max_steps) {
+    summary.default_limit = true;
+    summary.message = fmt::format("the default limit of {} steps ran out before the exploration ended; --max-steps N "
+                                  "allows more", summary.max_steps);
+  }
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;

@@ -46,6 +46,7 @@ struct RunSummary {
   int width = 0;
   int height = 0;
   std::int64_t max_steps = 0;           // the step limit in effect (--max-steps or max_steps_for)
+  bool default_limit = false;           // ended at max_steps_for's limit, no --max-steps given: a failure
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
@@ -104,7 +105,8 @@ std::string format_summary(const RunOptions &options, const RunSummary &summary)
 
 // The exit status a run ends with: 0 when it ended as planned (done, or stopped at
 // --max-steps, or quit with q), 130 when stopped by Ctrl-C (as a shell reports SIGINT), 1 when
-// the robot could not make progress or the simulation ended first.
+// the robot could not make progress, the map is incomplete or wrong, the default step limit
+// ran out (no --max-steps given), or the simulation ended first.
 int exit_status(const RunSummary &summary);
 
 }  // namespace app

@@ -68,8 +68,8 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
 
 int exit_status(const RunSummary &summary) {
   switch (summary.reason) {
-    case robot::EndReason::done:
-    case robot::EndReason::max_steps: return 0;
+    case robot::EndReason::done: return 0;
+    case robot::EndReason::max_steps: return summary.default_limit ? 1 : 0;
     case robot::EndReason::no_progress:
     case robot::EndReason::incomplete:
     case robot::EndReason::simulation_ended: return 1;

@@ -70,3 +70,22 @@ TEST_CASE("score_map: a side learned wrong is contradicted, an unknown one is no
   CHECK(score.sides_correct == 5);
   CHECK(score.sides_contradicted == 1);
 }
+
+// Regression (the trust sweep): `run --wheel-slip 0.98` ran out of the default step limit
+// (100,000 steps; no --max-steps given) at 93.75 % coverage and exited 0.
+TEST_CASE("the default step limit running out is a failure; a --max-steps the user gave is not") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  options.output.quiet = true;
+  options.simulation.wheel_slip = 0.98;
+  std::ostringstream sink;
+  const app::RunSummary limited = app::run_world(options, sink);
+  CHECK(limited.reason == robot::EndReason::max_steps);
+  CHECK(limited.message.find("the default limit of 100000 steps ran out") != std::string::npos);
+  CHECK(app::exit_status(limited) == 1);
+  options.max_steps = 100000;
+  const app::RunSummary asked = app::run_world(options, sink);
+  CHECK(asked.reason == robot::EndReason::max_steps);
+  CHECK(asked.message.empty());
+  CHECK(app::exit_status(asked) == 0);
+}
