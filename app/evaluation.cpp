@@ -52,14 +52,27 @@ MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,
   }
   for_each_scored_side(truth, reachable, [&](maze::Cell c, maze::Side s) {
     ++score.sides;
-    const LearnedSide belief = learned(c, s);
-    if (judge_side(truth.has_wall(c, s), belief) == SideVerdict::right) {
-      ++score.sides_correct;
-    } else if (belief != LearnedSide::unknown) {
-      ++score.sides_contradicted;
-    }
+    if (judge_side(truth.has_wall(c, s), learned(c, s)) == SideVerdict::right) ++score.sides_correct;
   });
   return score;
+}
+
+WrongSides wrong_sides_where_looked(const maze::Maze &truth, const std::vector<bool> &looked,
+                                    const std::function<LearnedSide(maze::Cell, maze::Side)> &learned) {
+  assert(looked.size() == static_cast<std::size_t>(truth.width()) * static_cast<std::size_t>(truth.height()));
+  const auto w = static_cast<std::size_t>(truth.width());
+  const auto looked_in = [&](maze::Cell c) {
+    return truth.contains(c) && looked[static_cast<std::size_t>(c.y) * w + static_cast<std::size_t>(c.x)];
+  };
+  WrongSides wrong;
+  for_each_scored_side(truth, truth.reachable_from_start(), [&](maze::Cell c, maze::Side s) {
+    if (!looked_in(c) && !looked_in(maze::neighbour(c, s))) return;
+    const SideVerdict verdict = judge_side(truth.has_wall(c, s), learned(c, s));
+    if (verdict == SideVerdict::right) return;
+    ++wrong.count;
+    if (wrong.first.size() < 3) wrong.first.push_back({c, s, verdict});
+  });
+  return wrong;
 }
 
 }  // namespace app

@@ -1,6 +1,7 @@
 #include "app/run.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -12,7 +13,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "common/error.hpp"
 #include "maze/maze.hpp"
@@ -162,32 +162,53 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
   return p;
 }
 
-// The truth's verdict on a run that believed it was done: it must not say so when it got
-// the maze wrong. dfs and frontier mean to visit every reachable cell and map every side of
-// them (wall followers and floodfill may leave cells, and so sides, unknown by design), so
-// one that ended "done" with a reachable cell never visited or a side not right is
-// incomplete; any strategy's "done" is incomplete when a side it learned contradicts the truth.
+char side_letter(maze::Side s) {
+  return static_cast<char>(std::toupper(static_cast<unsigned char>(maze::to_string(s)[0])));
+}
+
+// "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
+std::string describe_wrong_sides(const WrongSides &wrong) {
+  std::string named;
+  for (const WrongSide &w : wrong.first) {
+    const char *what = w.verdict == SideVerdict::phantom   ? "a wall that is not there"
+                       : w.verdict == SideVerdict::missed ? "a wall missed"
+                                                          : "an opening never seen";
+    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", side_letter(w.side), w.cell.x,
+                         w.cell.y, what);
+  }
+  const std::size_t n = wrong.count;
+  return fmt::format("{} side{} of visited cells learned wrong: {}{}", n, n == 1 ? "" : "s", named,
+                     n > wrong.first.size() ? ", ..." : "");
+}
+
+// The truth's verdict on a run that believed it was done (the controller never sees the
+// maze, so only the composition root can say it got the maze wrong, and must):
+//   wrong map   a side of a cell the search visited (and so scanned in) is learned wrong or
+//               never learned; whatever the strategy, where the robot looked it must have
+//               mapped right (a speed run's cells, driven through unscanned, are not judged);
+//   incomplete  dfs and frontier mean to visit every reachable cell (wall followers and
+//               floodfill may leave cells by design): reachable cells never visited.
 void judge_ending(const RunOptions &options, RunSummary &summary) {
+  if (summary.reason == robot::EndReason::max_steps && !summary.max_steps_asked) {
+    // The default limit is a safety net far above what any set-up needs; reaching it is a failure.
+    summary.message = fmt::format("the default limit of {} steps ran out; --max-steps N allows more", summary.max_steps);
+  }
   if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
+  const MapScore &score = summary.score;
+  const auto add = [&](const std::string &finding) {
+    summary.message = summary.message.empty() ? finding : fmt::format("{}; {}", finding, summary.message);
+  };
   const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
                               options.strategy == explore::StrategyKind::frontier;
-  const MapScore &score = summary.score;
-  std::vector<std::string> faults;
   if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
-    faults.push_back(fmt::format("{} of {} reachable cells never visited",
-                                 score.reachable_cells - score.visited_reachable_cells, score.reachable_cells));
+    const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
+    add(fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells));
+    summary.reason = robot::EndReason::incomplete;
   }
-  // Every side of a reachable cell, or, when cells were missed or left by design, those learned.
-  const bool every_side = means_to_cover && faults.empty();
-  const std::size_t wrong = every_side ? score.sides - score.sides_correct : score.sides_contradicted;
-  if (wrong > 0 && summary.reason == robot::EndReason::done) {
-    faults.push_back(fmt::format("{} of {} sides mapped wrong{}", wrong, score.sides,
-                                 wrong == score.sides_contradicted ? "" : " or never observed"));
+  if (summary.wrong_sides.count > 0) {
+    add(describe_wrong_sides(summary.wrong_sides));
+    summary.reason = robot::EndReason::wrong_map;
   }
-  if (faults.empty()) return;
-  if (!summary.message.empty()) faults.push_back(summary.message);
-  summary.message = fmt::format("{}", fmt::join(faults, "; "));
-  summary.reason = robot::EndReason::incomplete;
 }
 
 }  // namespace
@@ -338,13 +359,7 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.width = truth.width();
   summary.height = truth.height();
   summary.max_steps = options.max_steps.value_or(max_steps_for(truth));
-  // A stop the user asked for is as planned; the default limit, which a complete exploration
-  // never reaches, running out is not (--wheel-slip 0.98 on lab4x4 ended there, exit 0).
-  if (result.reason == robot::EndReason::max_steps && !options.max_steps) {
-    summary.default_limit = true;
-    summary.message = fmt::format("the default limit of {} steps ran out before the exploration ended; --max-steps N "
-                                  "allows more", summary.max_steps);
-  }
+  summary.max_steps_asked = options.max_steps.has_value();
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;
@@ -352,6 +367,9 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
     return truth.is_goal(maze::Cell{c.x, c.y});
   });
   summary.score = score(truth, result, style.initial_log_odds, style.threshold);
+  // Where the robot looked: the search's cells (a speed run drives through cells unscanned).
+  summary.wrong_sides = wrong_sides_where_looked(truth, visited_cells(result.search_visits.value_or(result.visits)),
+                                                 learned_sides(result, style.initial_log_odds, style.threshold));
   judge_ending(options, summary);
   summary.sim_time_s = result.sim_time_s;
   summary.explore_time_s = result.explore_time_s;

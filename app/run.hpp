@@ -46,12 +46,13 @@ struct RunSummary {
   int width = 0;
   int height = 0;
   std::int64_t max_steps = 0;           // the step limit in effect (--max-steps or max_steps_for)
-  bool default_limit = false;           // ended at max_steps_for's limit, no --max-steps given: a failure
+  bool max_steps_asked = false;         // the limit is the user's --max-steps, not max_steps_for's
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;
   bool reached_goal = false;  // the robot stood on one of the maze's goal cells
   MapScore score;
+  WrongSides wrong_sides;  // sides learned wrong where the robot looked (the verdict "wrong map")
   double sim_time_s = 0.0;
   double wall_time_ms = 0.0;
   bool interrupted = false;             // stopped by Ctrl-C (not by q)
@@ -105,8 +106,7 @@ std::string format_summary(const RunOptions &options, const RunSummary &summary)
 
 // The exit status a run ends with: 0 when it ended as planned (done, or stopped at
 // --max-steps, or quit with q), 130 when stopped by Ctrl-C (as a shell reports SIGINT), 1 when
-// the robot could not make progress, the map is incomplete or wrong, the default step limit
-// ran out (no --max-steps given), or the simulation ended first.
+// the robot could not make progress or the simulation ended first.
 int exit_status(const RunSummary &summary);
 
 }  // namespace app

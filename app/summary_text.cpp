@@ -69,9 +69,10 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
 int exit_status(const RunSummary &summary) {
   switch (summary.reason) {
     case robot::EndReason::done: return 0;
-    case robot::EndReason::max_steps: return summary.default_limit ? 1 : 0;
+    case robot::EndReason::max_steps: return summary.max_steps_asked ? 0 : 1;
     case robot::EndReason::no_progress:
     case robot::EndReason::incomplete:
+    case robot::EndReason::wrong_map:
     case robot::EndReason::simulation_ended: return 1;
     case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
   }

@@ -71,3 +71,5 @@ add_golden_test(map_log_room_bump ARGS map-log tests/data/logs/room_bump.csv --c
 add_golden_test(map_log_room_depth ARGS map-log tests/data/logs/room_depth.csv --cells 12,12 --boundary 0,6,0,6)
 add_golden_test(map_log_room_depth_25_base_e ARGS map-log tests/data/logs/room_depth.csv --cells 25,25 --boundary 0,6,0,6 --log-base e)
 add_golden_test(map_log_nan STATUS 2 STDERR ARGS map-log tests/data/logs/bad_nan.csv --boundary 0,5,0,5)
+# The truth's verdict: a done run with a side of a visited cell learned wrong says so, exit 1.
+add_golden_test(run_lab4x4_spikes_wrong_map STATUS 1 ARGS run worlds/lab4x4.txt --quiet --spikes 0.2 --seed 3)

@@ -46,3 +46,27 @@ TEST_CASE("score_map: each side once, boundary included, unknown counts as wrong
   CHECK(one_wrong.sides_correct == 6);
   CHECK(one_wrong.wall_accuracy_percent() == doctest::Approx(600.0 / 7));
 }
+
+TEST_CASE("wrong_sides_where_looked: a wrong side counts against the run only where the robot looked") {
+  const maze::Maze m = corridor();
+  // A phantom wall on the shared side 0|1, and a missed wall on cell 1's east side.
+  const auto two_wrong = [&](maze::Cell c, maze::Side s) {
+    if ((c == maze::Cell{0, 0} && s == maze::Side::east) || (c == maze::Cell{1, 0} && s == maze::Side::west)) {
+      return app::LearnedSide::wall;
+    }
+    if (c == maze::Cell{1, 0} && s == maze::Side::east) return app::LearnedSide::open;
+    return truth_of(m, c, s);
+  };
+  const app::WrongSides both = app::wrong_sides_where_looked(m, {true, true, false}, two_wrong);
+  CHECK(both.count == 2);
+  REQUIRE(both.first.size() == 2);
+  CHECK(both.first[0].cell == maze::Cell{0, 0});
+  CHECK(both.first[0].side == maze::Side::east);
+  CHECK(both.first[0].verdict == app::SideVerdict::phantom);
+  CHECK(both.first[1].verdict == app::SideVerdict::missed);
+  // Looked from cell 0 only: the shared side is still where the robot looked, cell 1's east is not.
+  CHECK(app::wrong_sides_where_looked(m, {true, false, false}, two_wrong).count == 1);
+  CHECK(app::wrong_sides_where_looked(m, {false, false, false}, two_wrong).count == 0);
+  const auto perfect = [&](maze::Cell c, maze::Side s) { return truth_of(m, c, s); };
+  CHECK(app::wrong_sides_where_looked(m, {true, true, false}, perfect).count == 0);
+}

@@ -413,3 +413,15 @@ TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes
   CHECK_FALSE(fs::exists(dir.path / "no_trace" / "trace.csv"));
   CHECK(fs::exists(dir.path / "no_trace" / "map.png"));
 }
+
+TEST_CASE("exit status: a wrong map fails; the step limit fails unless the user set it") {
+  app::RunSummary s;
+  CHECK(app::exit_status(s) == 0);
+  s.reason = robot::EndReason::wrong_map;
+  CHECK(app::exit_status(s) == 1);
+  s.reason = robot::EndReason::max_steps;
+  s.max_steps_asked = true;
+  CHECK(app::exit_status(s) == 0);
+  s.max_steps_asked = false;
+  CHECK(app::exit_status(s) == 1);
+}

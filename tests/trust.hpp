@@ -1,7 +1,7 @@
 #pragma once
-// The project's trust rule, as the tests check it: a run ends `done` exactly when it visited
-// every reachable cell and got every side right (app/run.cpp, judge_ending); a run that got
-// the maze wrong ends `incomplete` and says why.
+// The project's trust rule, as the tests check it: a dfs or frontier run ends `done` exactly
+// when it visited every reachable cell and got every side right (app/run.cpp, judge_ending);
+// a run that got the maze wrong ends `wrong map` or `incomplete` and says why.
 
 #include "app/run.hpp"
 
@@ -10,8 +10,7 @@ inline bool ends_as_mapped(const app::RunSummary &s) {
   return (s.reason == robot::EndReason::done) == right;
 }
 
-// Done, or incomplete for sides mapped wrong alone: what a noisy run may end as.
+// Done, or a wrong map (sides learned wrong where the robot stood): what a noisy run may end as.
 inline bool done_or_sides_wrong(const app::RunSummary &s) {
-  return s.reason == robot::EndReason::done ||
-         (s.reason == robot::EndReason::incomplete && s.message.find("sides mapped wrong") != std::string::npos);
+  return s.reason == robot::EndReason::done || s.reason == robot::EndReason::wrong_map;
 }

@@ -218,11 +218,15 @@ RunResult CellController::run(const RunHooks &hooks) {
                                                                   s.options.goals},
                                          s.walls);
   }
-  if (reason == EndReason::done && s.options.speed_run) reason = s.speed_run();
+  std::optional<explore::Visits> search_visits;
+  if (reason == EndReason::done && s.options.speed_run) {
+    search_visits = s.visits;
+    reason = s.speed_run();
+  }
   if (reason != EndReason::stopped) s.flush_step();
   return RunResult{reason,        std::move(s.message), s.steps,          s.moves,          search_visited,
                    s.robot.getTime(), std::move(s.grid), std::move(s.visits), std::move(s.path), explore_time_s,
-                   proof,         s.speed_result};
+                   proof,         s.speed_result,       std::move(search_visits)};
 }
 
 }  // namespace robot

@@ -35,8 +35,10 @@ namespace robot {
 // cell never visited stayed unknown however the robot looked at it (the controller's own
 // finding), or - set by the composition root, which holds the truth - reachable cells were
 // never visited.
-enum class EndReason { done, max_steps, no_progress, simulation_ended, stopped, incomplete };
-// "done", "max steps", "no progress", "simulation ended", "stopped", "incomplete"
+// wrong_map: set by the composition root only: the controller believed it was done, but a
+// side of a cell it visited is learned otherwise than the truth has it.
+enum class EndReason { done, max_steps, no_progress, simulation_ended, stopped, incomplete, wrong_map };
+// "done", "max steps", "no progress", "simulation ended", "stopped", "incomplete", "wrong map"
 std::string_view to_string(EndReason reason);
 
 // What the observer sees after the start scan and after every move into a cell.
@@ -101,6 +103,9 @@ struct RunResult {
   // Speed run: time_s is nothing when none was made (not asked, exploring did not end
   // "done", or no known path to the goal).
   SpeedRun speed_run;
+  // When a speed run followed the search: the cells the search visited (and so scanned in);
+  // `visits` then holds the speed run's cells too, which it drives through without looking.
+  std::optional<explore::Visits> search_visits;
 };
 
 class CellController {

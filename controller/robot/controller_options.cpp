@@ -60,6 +60,7 @@ std::string_view to_string(EndReason reason) {
     case EndReason::simulation_ended: return "simulation ended";
     case EndReason::stopped: return "stopped";
     case EndReason::incomplete: return "incomplete";
+    case EndReason::wrong_map: return "wrong map";
   }
   return "?";
 }

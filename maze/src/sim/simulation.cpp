@@ -68,13 +68,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kLeft = 0;
 constexpr int kRight = 1;
-// std::floor and std::ceil for the sweep's revolution counts (0 <= x < 2^53), inline: the
-// library calls were a sixth of the lidar's time. Exact: truncation is floor there.
-double floor_of_non_negative(double x) { return static_cast<double>(static_cast<std::int64_t>(x)); }
-double ceil_of_positive(double x) {
-  const double t = floor_of_non_negative(x);
-  return t < x ? t + 1.0 : t;
-}
 // Salts the seed of the fault draws so they are independent of the noise's.
 constexpr std::uint64_t kFaultSalt = 0x6a09e667f3bcc909ULL;
 
@@ -112,7 +105,7 @@ template <typename D>
 void Simulation::add_device(const std::string &name, Kind kind, int spec) {
   if (name.empty()) return;
   const int index = static_cast<int>(states_.size());
-  states_.push_back({kind, spec, 0, -1, -1, {}, {}, {0.0, 0.0, 0.0}});
+  states_.push_back({kind, spec, 0, -1, -1, {}, {}, {}, {0.0, 0.0, 0.0}});
   devices_.push_back(std::unique_ptr<Device>(new D(name, *this, index)));
 }
 
@@ -131,7 +124,9 @@ Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &pr
   }
   for (const maze::sim::LidarSpec &spec : profile_.lidars) {
     lidar_models_.emplace_back(spec);
+    lidar_sweeps_.emplace_back();
     if (spec.frequency_hz > 0.0) {
+      lidar_sweeps_.back().emplace(lidar_models_.back(), spec.frequency_hz * options_.basic_time_step_ms / 1000.0);
       // A beam holds a reading at most one revolution (and one step) old.
       const double steps_per_revolution = 1000.0 / (spec.frequency_hz * options_.basic_time_step_ms);
       history_steps_ = std::max(history_steps_, static_cast<std::size_t>(std::ceil(steps_per_revolution)) + 1);
@@ -243,20 +238,6 @@ const float *Simulation::lidar_range_image(int device) {
   return state.ranges.data();
 }
 
-std::int64_t Simulation::swept_at_step(const maze::sim::LidarSpec &spec, const maze::sim::LidarModel &model,
-                                       std::int64_t steps_enabled, int i) const {
-  // Revolutions the head turns in a step; step s (from 1) sweeps revolutions
-  // ((s - 1) r, s r]. The head passes beam i at revolutions u + k, k = 0, 1, ...
-  const double r = spec.frequency_hz * options_.basic_time_step_ms / 1000.0;
-  const double u = model.sweep_phase(i);  // in [0, 1): clockwise from ahead
-  const double turned = static_cast<double>(steps_enabled) * r;
-  if (turned < u) return 0;  // not passed yet
-  const double k = floor_of_non_negative(turned - u);
-  const double last_pass = u + k;  // the last pass at or before now, in revolutions
-  if (last_pass <= 0.0) return 0;
-  return std::clamp(static_cast<std::int64_t>(ceil_of_positive(last_pass / r)), std::int64_t{1}, steps_enabled);
-}
-
 const maze::sim::Pose &Simulation::pose_at_step(std::int64_t step) const {
   for (const PastPose &p : history_) {
     if (p.step == step) return p.pose;
@@ -270,8 +251,10 @@ void Simulation::rotating_range_image(int device, DeviceState &state, const maze
   if (state.beam_steps.size() != n) {
     state.beam_steps.assign(n, -1);
     state.ranges.assign(n, 0.0f);
+    state.last_pass.assign(n, 0);
   }
   const std::int64_t steps_enabled = steps_ - state.enabled_at_step;
+  lidar_sweeps_[static_cast<std::size_t>(state.spec)]->last_pass_steps(steps_enabled, state.last_pass);
   const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
   const double noise = lidar_noise(spec);
   // The viewpoints of the few steps the new beams hold, each computed once.
@@ -285,7 +268,7 @@ void Simulation::rotating_range_image(int device, DeviceState &state, const maze
   };
   for (std::size_t b = 0; b < n; ++b) {
     const auto i = static_cast<int>(b);
-    const std::int64_t s = swept_at_step(spec, model, steps_enabled, i);
+    const std::int64_t s = state.last_pass[b];
     const std::int64_t step = s == 0 ? 0 : state.enabled_at_step + s;
     if (state.beam_steps[b] == step) continue;  // the head has not passed it since
     state.beam_steps[b] = step;

@@ -36,6 +36,7 @@
 #include "common/random.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/profile.hpp"
+#include "maze/sim/lidar_sweep.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/wall_grid.hpp"
 
@@ -139,6 +140,7 @@ class Simulation {
     // from (0: not swept yet, -1: never computed). A beam is cast again only when the head
     // has passed it since; its range is a function of that step alone (pose, noise stream).
     std::vector<std::int64_t> beam_steps;
+    std::vector<std::int64_t> last_pass;  // scratch: LidarSweep::last_pass_steps
     double cache[3] = {0.0, 0.0, 0.0};
   };
 
@@ -165,9 +167,6 @@ class Simulation {
   common::Rng rng_for(int device) const;
   double lidar_noise(const maze::sim::LidarSpec &spec) const;
   void apply_lidar_faults(int device, const maze::sim::LidarSpec &spec, std::vector<float> &ranges) const;
-  // The step (from 1 after enable) whose end pose beam i of a rotating lidar holds, or 0.
-  std::int64_t swept_at_step(const maze::sim::LidarSpec &spec, const maze::sim::LidarModel &model,
-                             std::int64_t steps_enabled, int i) const;
   void rotating_range_image(int device, DeviceState &state, const maze::sim::LidarSpec &spec);
   float faulty_beam(int device, const maze::sim::LidarSpec &spec, std::int64_t step, int beam,
                     float range) const;
@@ -187,6 +186,7 @@ class Simulation {
   bool stop_requested_ = false;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
+  std::vector<std::optional<maze::sim::LidarSweep>> lidar_sweeps_;  // likewise; rotating ones only
   // The poses at the end of the last steps (the step number, the pose), oldest first: as
   // many as a rotating lidar's image can still hold; empty without one.
   struct PastPose {
