@@ -107,8 +107,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     controls.terminal_fd = STDOUT_FILENO;
     const SigintGuard sigint;
     const RunSummary summary = run_world(options, std::cout, controls);
-    const bool no_path = summary.plan && !summary.plan->found && !summary.interrupted;
-    context.status = std::max(exit_status(summary), no_path ? 1 : 0);
+    context.status = exit_status(summary);  // 1 when no path is found
   });
 }
 

@@ -72,3 +72,24 @@ TEST_CASE("the default step limit running out is a failure; a --max-steps the us
   CHECK(asked.message.empty());
   CHECK(app::exit_status(asked) == 0);
 }
+
+// Regression (the trust sweep): `run --plan-to 3,3 --dilate 1` found no path and exited 0,
+// where `plan --dilate 1` exits 1 for the same map.
+TEST_CASE("run --plan-to that finds no path exits 1, as plan does") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  options.output.quiet = true;
+  options.plan.to = mapping::Cell{3, 3};
+  options.plan.wavefront.dilate = 1;
+  std::ostringstream sink;
+  const app::RunSummary blocked = app::run_world(options, sink);
+  REQUIRE(blocked.plan);
+  CHECK_FALSE(blocked.plan->found);
+  CHECK(blocked.reason == robot::EndReason::done);
+  CHECK(app::exit_status(blocked) == 1);
+  options.plan.wavefront.dilate = 0;
+  const app::RunSummary found = app::run_world(options, sink);
+  REQUIRE(found.plan);
+  CHECK(found.plan->found);
+  CHECK(app::exit_status(found) == 0);
+}
