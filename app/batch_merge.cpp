@@ -60,6 +60,10 @@ std::optional<BatchRow> row_from(const std::vector<std::string> &f) {
   row.ran = !f[1].empty();
   row.ok = row.ran && row.error.empty();
   if (!row.ran) return row;
+  // As exit_status: a run that ended other than done (or at a step limit, which the CSV does
+  // not say was the user's) did not map its maze, whatever part it was merged from.
+  row.ok = row.ok && (f[8] == robot::to_string(robot::EndReason::done) ||
+                      f[8] == robot::to_string(robot::EndReason::max_steps));
   const std::optional<int> moves = whole(f[2]);
   const std::optional<double> coverage = decimal(f[3]);
   const std::optional<double> accuracy = decimal(f[4]);

@@ -127,7 +127,7 @@ std::string describe_usage_error(const CLI::App &cli, const CLI::ParseError &err
   static const std::regex conversion("Could not convert: (\\S+) = (.*)");
   static const std::regex missing("(\\S+): ([0-9]+) required \\S+ missing");
   static const std::regex too_few("(\\S+): At least ([0-9]+) required but received ([0-9]+)");
-  static const std::regex invalid("(-\\S+): (must .*)");
+  static const std::regex invalid("(\\S+): (must .*)");
   static const std::regex extras("The following arguments? (?:was|were) not expected: (.*)");
   std::smatch m;
   if (std::regex_match(text, m, conversion)) {

@@ -94,6 +94,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
     const int jobs = batch->jobs > 0 ? batch->jobs
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (!batch->csv.empty()) common::check_writable(batch->csv);  // before the runs, not after
     WorldList list = expand_worlds(batch->worlds);
     if (!batch->shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch->shard));
     if (list.worlds.empty() && !batch->shard.empty()) {

@@ -50,18 +50,19 @@ std::vector<std::string> split(const std::string &text, char separator) {
   return parts;
 }
 
-// "3,5" -> {3, 5}, each K checked.
+// "3,5" -> {3, 5}, each K checked: digits only (strtol took " 3" and "+3"), and whole as
+// typed (4294967299 was cast to the int 3; a longer one is no K).
 std::vector<int> parse_ks(const std::string &subcells) {
   std::vector<int> ks;
   for (const std::string &part : split(subcells, ',')) {
-    char *end = nullptr;
-    const long k = std::strtol(part.c_str(), &end, 10);
-    if (part.empty() || *end != '\0') {
-      throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
-    }
-    validate_subcells(static_cast<int>(k));
-    ks.push_back(static_cast<int>(k));
+    const bool digits = !part.empty() && part.size() <= 9 &&
+                        part.find_first_not_of("0123456789") == std::string::npos;
+    if (!digits) throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
+    const int k = std::stoi(part);
+    validate_subcells(k);
+    ks.push_back(k);
   }
+  if (ks.empty()) throw common::InputError("--subcells needs at least one K, a list like 3,5 (got '')");
   return ks;
 }
 

@@ -139,6 +139,12 @@ int run_demo_cone(const DemoConeInput &input) {
   for (const double v : pose) {
     if (!std::isfinite(v)) throw common::InputError("--pose must be three finite numbers");
   }
+  // Far from the origin a cell index loses its precision (1e308 m printed inf and nan rows).
+  constexpr double kMaxPoseCells = 1e6;
+  if (!(std::abs(pose[0]) / resolution_m <= kMaxPoseCells && std::abs(pose[1]) / resolution_m <= kMaxPoseCells)) {
+    throw common::InputError(fmt::format("--pose X and Y must lie within {:g} cells of --resolution of 0,0 (got {:g}, {:g})",
+                                         kMaxPoseCells, pose[0], pose[1]));
+  }
   const sensing::ConeSweepInput in{pose[0] / resolution_m, pose[1] / resolution_m, pose[2] * kDeg,
                                    range_m / resolution_m, kind.aperture_rad, kind.distance_error};
   const sensing::ConeSweep sweep = sensing::cone_sweep(in);

@@ -330,11 +330,24 @@ std::string header(const MapLogInput &input, const sensing::LogMapOptions &o, co
   return out;
 }
 
+// A pose off the grid marks nothing there, which the map alone would not tell.
+void warn_outside_boundary(const sensing::LogMapOptions &o, const Log &log) {
+  std::size_t outside = 0;
+  for (const sensing::LogStep &step : log.steps) {
+    const bool in = step.x_m >= o.x_start_m && step.x_m <= o.x_end_m && step.y_m >= o.y_start_m && step.y_m <= o.y_end_m;
+    if (!in) ++outside;
+  }
+  if (outside == 0) return;
+  fmt::print(stderr, "warning: {} of {} poses lie outside --boundary {:g},{:g},{:g},{:g}; what they sense off the grid is not mapped\n",
+             outside, log.steps.size(), o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m);
+}
+
 void run_map_log(const MapLogInput &input) {
   const sensing::LogMapOptions o = to_options(input);
   const Log log = read_log(input);
   check_sensor_options(input, log.sensor);
   const auto snapshots = snapshot_steps(input, log.steps.size());
+  warn_outside_boundary(o, log);
   if (!input.out_dir.empty()) prepare_output_dir(input.out_dir);
   sensing::LogGrid grid = sensing::make_log_grid(o);
   for (std::size_t n = 0; n < log.steps.size(); ++n) {

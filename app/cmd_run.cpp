@@ -42,9 +42,15 @@ void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run.add_option("--out", o.output.out_dir,
                  "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
-  run.add_option("--snapshots", o.output.snapshots,
-                 "N: with --out, N pictures of the map at equal fractions of the run's steps in "
-                 "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
+  // 0 is "none" inside (the default), not a value to type: --snapshots 0 wrote none, silently.
+  run.add_option_function<int>(
+      "--snapshots",
+      [&o](int n) {
+        validate_snapshots(n);
+        o.output.snapshots = n;
+      },
+      "N: with --out, N pictures of the map at equal fractions of the run's steps in "
+      "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
   run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv (a row a control step)");
   run.add_flag("--no-replay{false}", o.output.replay,
                "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
@@ -101,8 +107,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     controls.terminal_fd = STDOUT_FILENO;
     const SigintGuard sigint;
     const RunSummary summary = run_world(options, std::cout, controls);
-    const bool no_path = summary.plan && !summary.plan->found && !summary.interrupted;
-    context.status = std::max(exit_status(summary), no_path ? 1 : 0);
+    context.status = exit_status(summary);  // 1 when no path is found
   });
 }
 

@@ -106,7 +106,8 @@ std::string format_summary(const RunOptions &options, const RunSummary &summary)
 
 // The exit status a run ends with: 0 when it ended as planned (done, or stopped at
 // --max-steps, or quit with q), 130 when stopped by Ctrl-C (as a shell reports SIGINT), 1 when
-// the robot could not make progress or the simulation ended first.
+// the robot could not make progress or the simulation ended first, or when a path was asked
+// for (plan, run --plan-to) and none was found.
 int exit_status(const RunSummary &summary);
 
 }  // namespace app

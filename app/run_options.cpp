@@ -25,9 +25,7 @@ void validate(const OutputOptions &o) {
   if (o.unknown) validate_unknown(std::string_view(&*o.unknown, 1));
   require_above_zero("--fps", o.fps);
   require_above_zero("--speed", o.speed);
-  if (o.snapshots < 0 || o.snapshots > kMaxSnapshots) {
-    throw common::InputError(fmt::format("--snapshots must be from 1 to {} (got {})", kMaxSnapshots, o.snapshots));
-  }
+  if (o.snapshots != 0) validate_snapshots(o.snapshots);  // 0: none
 }
 
 void validate_run(const RunOptions &o) {
@@ -81,6 +79,24 @@ unsigned model_given_options(const GivenOptions &given) {
   return bits;
 }
 
+// The faults and the noise act on the lidar's beams: on a robot without one, --dropout and
+// --spikes do nothing, nor does a --noise other than 0 (which also makes the other sensors exact).
+void check_lidar_options(const GivenOptions &given, const RunOptions &options, std::vector<std::string> &warnings) {
+  const bool lidar_option = given.given("--dropout") || given.given("--spikes") ||
+                            (given.given("--noise") && options.simulation.noise.value_or(0.0) > 0.0);
+  if (!lidar_option) return;
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  if (!profile.lidars.empty()) return;
+  for (const char *option : {"--dropout", "--spikes"}) {
+    if (!given.given(option)) continue;
+    warnings.push_back(fmt::format("warning: {} has no effect: the robot {} has no lidar", option, profile.name));
+  }
+  if (given.given("--noise") && options.simulation.noise.value_or(0.0) > 0.0) {
+    warnings.push_back(fmt::format("warning: --noise {} has no effect: the robot {} has no lidar (--noise 0 "
+                                   "makes its sensors exact)", *options.simulation.noise, profile.name));
+  }
+}
+
 }  // namespace
 
 void validate_subcells(int subcells) {
@@ -90,6 +106,12 @@ void validate_subcells(int subcells) {
   one_cell.height_cells = 1;
   one_cell.subcells = subcells;
   mapping::validate(one_cell, mapping::kDefaultMaxGridBytes);
+}
+
+void validate_snapshots(int snapshots) {
+  if (snapshots < 1 || snapshots > kMaxSnapshots) {
+    throw common::InputError(fmt::format("--snapshots must be from 1 to {} (got {})", kMaxSnapshots, snapshots));
+  }
 }
 
 void validate_unknown(std::string_view text) {
@@ -128,6 +150,7 @@ std::vector<std::string> check_options_apply(const GivenOptions &given, const Ru
   for (std::string &warning : check_model_options(sensing::setup(options.model.kind), model_given_options(given))) {
     warnings.push_back(std::move(warning));
   }
+  check_lidar_options(given, options, warnings);
   return warnings;
 }
 

@@ -85,6 +85,9 @@ void validate(const RunOptions &options);
 // --subcells K alone: odd, 3 to 9 (common::InputError otherwise). validate() checks it too.
 void validate_subcells(int subcells);
 
+// --snapshots N typed: throws common::InputError unless 1 <= N <= 100 (0, none, is the default).
+void validate_snapshots(int snapshots);
+
 // --unknown CHAR: throws common::InputError unless text is one printable ASCII character
 // other than W.
 void validate_unknown(std::string_view text);

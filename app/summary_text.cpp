@@ -66,7 +66,9 @@ std::string format_summary(const RunOptions &options, const RunSummary &s) {
   return text;
 }
 
-int exit_status(const RunSummary &summary) {
+namespace {
+
+int ending_status(const RunSummary &summary) {
   switch (summary.reason) {
     case robot::EndReason::done: return 0;
     case robot::EndReason::max_steps: return summary.max_steps_asked ? 0 : 1;
@@ -77,6 +79,16 @@ int exit_status(const RunSummary &summary) {
     case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
   }
   return 1;
+}
+
+}  // namespace
+
+int exit_status(const RunSummary &summary) {
+  const int status = ending_status(summary);
+  // A path was asked for (plan, run --plan-to) and none found: not the run that was asked,
+  // whichever command asked (run --plan-to exited 0 where plan exits 1).
+  const bool no_path = summary.plan && !summary.plan->found;
+  return status == 0 && no_path ? 1 : status;
 }
 
 }  // namespace app

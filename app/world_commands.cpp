@@ -53,16 +53,24 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
                   fmt::format(".wbt: the controller's exploration strategy (default {})", args->wbt.strategy));
   cmd->add_option("--subcells", args->wbt.subcells,
                   fmt::format(".wbt: the controller's sub-cells per cell side, K (default {})", args->wbt.subcells));
-  cmd->callback([args, &context] {
+  cmd->callback([cmd, args, &context] {
     const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
+    // The controller's set-up travels in a .wbt only: for another format these do nothing.
+    for (const char *option : {"--robot", "--model", "--strategy", "--subcells"}) {
+      if (format != maze::Format::wbt && cmd->count(option) > 0) {
+        fmt::print(stderr, "warning: {} has no effect: only a .wbt world carries the robot and its controller\n",
+                   option);
+      }
+    }
     const maze::Maze maze = load_world_reporting(args->world, args->overrides).maze;
-    if (const auto dropped = maze::dropped_by(maze, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
     if (format == maze::Format::wbt) {
       maze::write_file_atomically(
           args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));
     } else {
       maze::save_world(maze, args->out);
     }
+    // Said once the file is written: a write that fails is its error line alone.
+    if (const auto dropped = maze::dropped_by(maze, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
     context.status = 0;
   });
 }
@@ -91,6 +99,10 @@ void add_generate_command(CLI::App &cli, CommandContext &context) {
       std::cout << maze::write_text_map(m);
     } else {
       maze::save_world(m, args->out);
+      // As convert says it: a .num holds no goal, and the maze has one.
+      if (const auto dropped = maze::dropped_by(m, maze::format_for_output(args->out))) {
+        fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+      }
     }
     context.status = 0;
   });

@@ -114,3 +114,19 @@ TEST_CASE("batch merge: a file that is no batch CSV says where") {
                                   app::kBatchCsvHeader));
   fs::remove(file);
 }
+
+TEST_CASE("batch merge: a row that ended incomplete, wrong or without progress is failed in the merged totals") {
+  const fs::path file = fs::temp_directory_path() / fmt::format("maze_mapper_merge_ends_{}.csv", ::getpid());
+  std::string csv = std::string(app::kBatchCsvHeader) + "\n";
+  for (const char *end : {"done", "wrong map", "incomplete", "no progress"}) {
+    csv += fmt::format("\"{}.txt\",4x4,29,100.00,97.50,,,3,{},\n", end, end);
+  }
+  common::write_file_atomically(file.string(), csv);
+  const std::vector<app::BatchRow> rows = app::read_batch_csvs({file.string()});
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0].ok);
+  CHECK_FALSE(rows[1].ok);
+  CHECK_FALSE(rows[2].ok);
+  CHECK_FALSE(rows[3].ok);
+  fs::remove(file);
+}

@@ -114,3 +114,15 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
   CHECK(first[2] == "1");
   CHECK(fs::exists(dir.path / "map.png"));
 }
+
+// Regression (the trust sweep): `compare --subcells ""` compared nothing and exited 0,
+// `run --out ""` wrote no file and `run ""` ran the default world, silently. A value typed
+// empty is refused for every option and positional (app/cli_app.cpp).
+TEST_CASE("an option's value typed empty is an error, not the option left out") {
+  CHECK_THROWS_WITH_AS(test_cli::run({"compare", kWorld, "--subcells", ""}), "--subcells: must not be empty",
+                       CLI::ValidationError);
+  CHECK_THROWS_AS(test_cli::run({"run", kWorld, "--out", ""}), CLI::ValidationError);
+  CHECK_THROWS_AS(test_cli::run({"run", ""}), CLI::ValidationError);
+  CHECK_THROWS_AS(test_cli::run({"batch", kWorld, "--csv", ""}), CLI::ValidationError);
+  CHECK_THROWS_AS(test_cli::run({"demo", "1d", "--measurements", ""}), CLI::ValidationError);
+}

@@ -243,3 +243,36 @@ TEST_CASE("strategy names and options") {
   CHECK(message([] { explore::validate({StrategyKind::dfs, 4, 4, {0, 0}, {{0, 9}}}); }) ==
         "error: goal cell (0,9) is outside the 4x4 maze");
 }
+
+TEST_CASE("wall followers: a circuit that misses the start, made by walls learned on the way, ends after one lap") {
+  // A 3 x 2 room, the robot at (0,0). Once it has left, its start cell turns out walled in
+  // (the map changed under it): the hand it follows can never bring it back to the start.
+  for (const StrategyKind kind : {StrategyKind::left_wall, StrategyKind::right_wall}) {
+    const Cell start{0, 0};
+    Explorer explorer({kind, 3, 2, start, {}});
+    bool start_walled_in = false;
+    const explore::WallQuery walls = [&](Cell c, Heading h) {
+      const Cell n = mapping::neighbour(c, h);
+      if (n.x < 0 || n.y < 0 || n.x >= 3 || n.y >= 2) return SideState::wall;
+      if (start_walled_in && (c == start || n == start)) return SideState::wall;
+      return SideState::open;
+    };
+    Cell at = start;
+    Heading heading = Heading::north;
+    int moves = 0;
+    while (moves < 100) {
+      const std::optional<Heading> d = explorer.next(at, heading, walls);
+      if (!d) break;
+      at = mapping::neighbour(at, *d);
+      heading = *d;
+      start_walled_in = true;
+      ++moves;
+    }
+    CAPTURE(static_cast<int>(kind));
+    CHECK(moves < 100);
+    // One lap of the 5 cells left visits each (cell, heading) it arrives with at most twice.
+    CHECK(moves <= 2 * 5 * 4);
+    CHECK(explorer.visited_count() == 6);
+    CHECK(at != start);
+  }
+}

@@ -123,6 +123,9 @@ Explorer::Explorer(const ExplorerOptions &options) : options_(options) {
     arrived_by_.assign(cells, Heading::north);
     queue_.reserve(cells);
   }
+  if (options_.kind == StrategyKind::left_wall || options_.kind == StrategyKind::right_wall) {
+    arrivals_.assign(cells * std::size(mapping::kHeadings), 0);
+  }
   if (options_.kind == StrategyKind::floodfill) {
     goal_.assign(cells, 0);
     for (const Cell g : options_.goals) goal_[flat(g)] = 1;
@@ -224,6 +227,9 @@ bool Explorer::plan_frontier(Cell c, const WallQuery &walls) {
 }
 
 std::optional<Heading> Explorer::next_follower(Cell c, Heading h, const WallQuery &walls) {
+  std::int32_t &arrived = arrivals_[flat(c) * std::size(mapping::kHeadings) + static_cast<std::size_t>(h)];
+  if (arrived == visited_count_ + 1) return std::nullopt;  // circling: nothing new since the last time here
+  arrived = visited_count_ + 1;
   const auto order = options_.kind == StrategyKind::left_wall ? left_hand(h) : right_hand(h);
   for (const Heading d : order) {
     if (!open(walls, c, d)) continue;

@@ -23,7 +23,9 @@
 //
 // Ending: dfs and frontier when no known-open unvisited cell remains next to a visited one
 // (every reachable cell visited); wall followers when back at the start about to repeat
-// their first move (a full circuit); floodfill once the shortest path is proven
+// their first move (a full circuit), or when they arrive in a cell with a heading they
+// arrived in it with before and no new cell visited since: walls learned on the way made a
+// circuit that misses the start, and it would repeat for ever; floodfill once the shortest path is proven
 // (proven()), or unproven when no goal is reachable through the sides not known to be walls
 // or an unknown side on the optimistic path belongs to a cell already visited.
 //
@@ -115,6 +117,8 @@ class Explorer {
   std::vector<mapping::Cell> stack_;               // dfs: the path from the start
   std::vector<mapping::Heading> plan_;             // frontier: remaining moves, last first
   std::optional<mapping::Heading> first_move_;     // followers
+  // followers: per cell and arrival heading, 1 + visited_count_ at the last such arrival.
+  std::vector<std::int32_t> arrivals_;
   std::vector<std::uint8_t> goal_;                 // floodfill: 1 on goal cells
   std::vector<std::uint8_t> target_;               // floodfill proving: 1 on cells to visit
   bool reached_goal_ = false;

@@ -20,6 +20,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kMaxCellsPerSide = 2000.0;
+constexpr double kMaxPoseCells = 1e6;  // the pose's distance from 0,0, in cells
 // A point this close to the sensor is at it (a cell corner i * r computed a rounding error
 // from the robot's x).
 constexpr double kAtSensor_m = 1e-9;
@@ -84,6 +85,11 @@ void validate(const PieDemoOptions &o) {
   require(o.resolution_m > 0.0, fmt::format("--resolution must be > 0 m (got {})", o.resolution_m));
   require(o.max_range_m > 0.0, fmt::format("--max-range must be > 0 m (got {})", o.max_range_m));
   const double reach = std::min(*std::max_element(o.readings_m.begin(), o.readings_m.end()), o.max_range_m) + o.contact_m;
+  // Far from the origin a cell index loses its precision (at 1e308 m every slice missed
+  // every cell, and the demo said "no cell updated").
+  require(std::abs(o.x_m) / o.resolution_m <= kMaxPoseCells && std::abs(o.y_m) / o.resolution_m <= kMaxPoseCells,
+          fmt::format("--pose X and Y must lie within {:g} cells of --resolution of 0,0 (got {:g}, {:g})",
+                      kMaxPoseCells, o.x_m, o.y_m));
   require(2.0 * reach / o.resolution_m <= kMaxCellsPerSide,
           fmt::format("the slices would span more than {} cells a side: raise --resolution", kMaxCellsPerSide));
 }

@@ -37,7 +37,8 @@ struct PieDemoOptions {
 
 // Throws common::InputError when a number is not finite, the readings and mounts differ in
 // count or are empty, a reading is negative, beta is not in (0, 90), alpha, the resolution
-// or the max range is not positive, or the slices would span more than 2,000 cells a side.
+// or the max range is not positive, the pose lies more than 1e6 cells from 0,0, or the
+// slices would span more than 2,000 cells a side.
 void validate(const PieDemoOptions &options);
 
 inline constexpr double kPieDemoOccupiedP = 0.7;

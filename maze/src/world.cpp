@@ -142,6 +142,11 @@ Format detect_format(std::string_view text, const std::string &file) {
     if (body[first] == '<') return Format::xml;
     if (body[first] >= '0' && body[first] <= '9') return Format::num;
   }
+  if (body.starts_with("#VRML_SIM")) {
+    throw common::InputError(common::SourceLocation{file, 1, 1},
+                             "a Webots .wbt world, which maze_mapper writes but does not read: use the text map, "
+                             "num or XML world it was made from");
+  }
   throw common::InputError(common::SourceLocation{file, 1, 1},
                            "cannot tell the format: expected a text map (first line 'o---o...'), num lines "
                            "'X Y N E S W' or XML '<world>'");

@@ -72,4 +72,17 @@ inline void write_file_atomically(const std::string &path, std::string_view cont
   }
 }
 
+// Throws what write_file_atomically(path, ...) would for a path it cannot write (a folder
+// missing or not writable, the path a directory), before the work that makes the content:
+// creates and removes the temporary file beside the target; the target is not touched.
+inline void check_writable(const std::string &path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) detail::fail_write(path, EISDIR);
+  const std::string temporary = detail::temporary_path_for(path);
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) detail::fail_write(path, errno);
+  ::close(fd);
+  ::unlink(temporary.c_str());
+}
+
 }  // namespace common

@@ -30,8 +30,9 @@ std::string format_scan(const Maze &maze, const ScanRequest &request) {
     throw common::InputError(fmt::format("robot '{}' has no lidar (robots with one: {})",
                                          profile.name, lidar_robots()));
   }
-  if (request.noise && !(*request.noise >= 0.0)) {
-    throw common::InputError(fmt::format("--noise must be >= 0 (got {})", *request.noise));
+  // run's rule, in run's words: a standard deviation of more than the max range is no lidar.
+  if (request.noise && !(*request.noise >= 0.0 && *request.noise <= 1.0)) {
+    throw common::InputError(fmt::format("--noise must be a fraction of the max range from 0 to 1 (got {})", *request.noise));
   }
   const WallGrid walls(maze);
   check_pose_free(walls, request.pose);

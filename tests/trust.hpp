@@ -1,0 +1,16 @@
+#pragma once
+// The project's trust rule, as the tests check it: a dfs or frontier run ends `done` exactly
+// when it visited every reachable cell and got every side right (app/run.cpp, judge_ending);
+// a run that got the maze wrong ends `wrong map` or `incomplete` and says why.
+
+#include "app/run.hpp"
+
+inline bool ends_as_mapped(const app::RunSummary &s) {
+  const bool right = s.score.coverage_percent() == 100.0 && s.score.wall_accuracy_percent() == 100.0;
+  return (s.reason == robot::EndReason::done) == right;
+}
+
+// Done, or a wrong map (sides learned wrong where the robot stood): what a noisy run may end as.
+inline bool done_or_sides_wrong(const app::RunSummary &s) {
+  return s.reason == robot::EndReason::done || s.reason == robot::EndReason::wrong_map;
+}
