@@ -375,6 +375,7 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.explore_time_s = result.explore_time_s;
   summary.shortest = result.shortest;
   summary.speed_run = result.speed_run;
+  summary.speed_run_asked = options.plan.speed_run;
   return summary;
 }
 

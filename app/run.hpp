@@ -60,6 +60,7 @@ struct RunSummary {
   double explore_time_s = 0.0;          // simulated time when the search ended
   std::optional<explore::ShortestPathProof> shortest;  // start to goal, when the maze has goals
   robot::SpeedRun speed_run;
+  bool speed_run_asked = false;         // --speed-run: speed_run.time_s must then hold one
 };
 
 // What the summary says of the known shortest path ("105 cells start to goal, proven").
@@ -107,7 +108,7 @@ std::string format_summary(const RunOptions &options, const RunSummary &summary)
 // The exit status a run ends with: 0 when it ended as planned (done, or stopped at
 // --max-steps, or quit with q), 130 when stopped by Ctrl-C (as a shell reports SIGINT), 1 when
 // the robot could not make progress or the simulation ended first, or when a path was asked
-// for (plan, run --plan-to) and none was found.
+// for (plan, run --plan-to) and none was found, or a --speed-run was asked and none was made.
 int exit_status(const RunSummary &summary);
 
 }  // namespace app

@@ -85,9 +85,9 @@ int ending_status(const RunSummary &summary) {
 
 int exit_status(const RunSummary &summary) {
   const int status = ending_status(summary);
-  // A path was asked for (plan, run --plan-to) and none found: not the run that was asked,
-  // whichever command asked (run --plan-to exited 0 where plan exits 1).
-  const bool no_path = summary.plan && !summary.plan->found;
+  // A path was asked for (plan, run --plan-to, --speed-run) and none found or driven: not the
+  // run that was asked, whichever command asked (run --plan-to exited 0 where plan exits 1).
+  const bool no_path = (summary.plan && !summary.plan->found) || (summary.speed_run_asked && !summary.speed_run.time_s);
   return status == 0 && no_path ? 1 : status;
 }
 

@@ -9,8 +9,3 @@ inline bool ends_as_mapped(const app::RunSummary &s) {
   const bool right = s.score.coverage_percent() == 100.0 && s.score.wall_accuracy_percent() == 100.0;
   return (s.reason == robot::EndReason::done) == right;
 }
-
-// Done, or a wrong map (sides learned wrong where the robot stood): what a noisy run may end as.
-inline bool done_or_sides_wrong(const app::RunSummary &s) {
-  return s.reason == robot::EndReason::done || s.reason == robot::EndReason::wrong_map;
-}
