@@ -32,7 +32,9 @@ TEST_CASE("LidarSweep: every beam's last pass, all beams at once, equals the one
                                             {39.0625, 64}, {10.0, 33}, {0.625, 16}};
   for (const maze::sim::LidarSpec &spec : shapes) {
     const maze::sim::LidarModel model(spec);
-    for (const auto &[hz, ms] : timings) {
+    for (const auto &timing : timings) {
+      const double hz = timing.first;  // named, not bound: clang 14 cannot capture a binding
+      const int ms = timing.second;
       const maze::sim::LidarSweep sweep(model, hz * ms / 1000.0);
       std::vector<std::int64_t> all(static_cast<std::size_t>(spec.horizontal_resolution));
       int mismatches = 0;
