@@ -25,9 +25,10 @@
 // (every reachable cell visited); wall followers when back at the start about to repeat
 // their first move (a full circuit), or when they arrive in a cell with a heading they
 // arrived in it with before and no new cell visited since: walls learned on the way made a
-// circuit that misses the start, and it would repeat for ever; floodfill once the shortest path is proven
-// (proven()), or unproven when no goal is reachable through the sides not known to be walls
-// or an unknown side on the optimistic path belongs to a cell already visited.
+// circuit that misses the start, and it would repeat for ever; floodfill once the shortest
+// path is proven (proven()), or unproven when no goal is reachable through the sides not
+// known to be walls or an unknown side on the optimistic path belongs to a cell already
+// visited.
 //
 // Cost per move: dfs O(1). frontier O(cells searched), bounded by the visited cells within
 // the distance of the nearest unvisited one, and only when it re-plans. floodfill O(cells)
