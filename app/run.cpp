@@ -1,7 +1,6 @@
 #include "app/run.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -162,10 +161,6 @@ PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
   return p;
 }
 
-char side_letter(maze::Side s) {
-  return static_cast<char>(std::toupper(static_cast<unsigned char>(maze::to_string(s)[0])));
-}
-
 // "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
 std::string describe_wrong_sides(const WrongSides &wrong) {
   std::string named;
@@ -173,7 +168,7 @@ std::string describe_wrong_sides(const WrongSides &wrong) {
     const char *what = w.verdict == SideVerdict::phantom   ? "a wall that is not there"
                        : w.verdict == SideVerdict::missed ? "a wall missed"
                                                           : "an opening never seen";
-    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", side_letter(w.side), w.cell.x,
+    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", mapping::to_char(to_heading(w.side)), w.cell.x,
                          w.cell.y, what);
   }
   const std::size_t n = wrong.count;
