@@ -5,9 +5,14 @@
 
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "maze/world.hpp"
+
+// CLI11 is header-only and its code is generated again in every file that includes it (about
+// 10 s a file under the sanitizer build): this header names its App only, so the files that
+// call a command's parts without building a command line do not pay for it.
+namespace CLI {
+class App;
+}
 
 namespace app {
 

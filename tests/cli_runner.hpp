@@ -1,19 +1,12 @@
 #pragma once
 // `maze_mapper ARGS...` run in the test's process through the real command line (CLI11 and
 // every subcommand), its standard output captured.
-#include <doctest/doctest.h>
-
+// CLI11 stays in cli_runner.cpp (see app/commands.hpp for why).
 #include <unistd.h>
 
 #include <filesystem>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
-
-#include "app/commands.hpp"
 
 namespace test_cli {
 
@@ -22,24 +15,9 @@ struct Ran {
   std::string out;
 };
 
-inline Ran run(std::vector<std::string> args) {
-  args.insert(args.begin(), "maze_mapper");
-  std::vector<const char *> argv;
-  for (const std::string &a : args) argv.push_back(a.c_str());
-  CLI::App cli{"maze_mapper", "maze_mapper"};
-  app::CommandContext context;
-  app::add_commands(cli, context);
-  std::ostringstream out;
-  std::streambuf *saved = std::cout.rdbuf(out.rdbuf());
-  try {
-    cli.parse(static_cast<int>(argv.size()), argv.data());
-  } catch (...) {
-    std::cout.rdbuf(saved);
-    throw;
-  }
-  std::cout.rdbuf(saved);
-  return {context.status, out.str()};
-}
+// Throws what the command line throws (CLI::Error, common::InputError); std::cout is
+// restored either way.
+Ran run(std::vector<std::string> args);
 
 // A fresh directory under the system's temporary directory, removed at the end.
 struct TempDir {

@@ -1,0 +1,31 @@
+#include "cli_runner.hpp"
+
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+
+namespace test_cli {
+
+Ran run(std::vector<std::string> args) {
+  args.insert(args.begin(), "maze_mapper");
+  std::vector<const char *> argv;
+  for (const std::string &a : args) argv.push_back(a.c_str());
+  CLI::App cli{"maze_mapper", "maze_mapper"};
+  app::CommandContext context;
+  app::add_commands(cli, context);
+  std::ostringstream out;
+  std::streambuf *saved = std::cout.rdbuf(out.rdbuf());
+  try {
+    cli.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (...) {
+    std::cout.rdbuf(saved);
+    throw;
+  }
+  std::cout.rdbuf(saved);
+  return {context.status, out.str()};
+}
+
+}  // namespace test_cli
