@@ -73,7 +73,9 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   auto args = std::make_shared<ScanArgs>();
   CLI::App *scan = cli.add_subcommand(
       "scan", "print one lidar range image at a pose: `index angle_rad range_m` a line");
-  scan->add_option("WORLD", args->world, "maze file")->required();
+  // Not required() for CLI11: a required positional takes the last of --pose's values when
+  // WORLD is left out, and the error then blames --pose. The callback asks for it instead.
+  scan->add_option("WORLD", args->world, "maze file");
   scan->add_option("--pose", args->pose,
                    "X Y YAW: position in metres (world frame) and heading in radians, counter-clockwise "
                    "from east, or in degrees with a deg suffix (90deg)")
@@ -87,6 +89,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   add_seed_option(*scan, args->seed, "the noise");
   add_cell_size_option(*scan, args->world_overrides);
   scan->callback([args, &context] {
+    if (args->world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
     const double x = metres(args->pose[0], "X");
     const double y = metres(args->pose[1], "Y");
     const double yaw = yaw_rad(args->pose[2]);

@@ -3,7 +3,9 @@
 # tree and expects exit status 2, nothing on standard output, and standard error exactly
 # EXPECTED and a newline. `ARGS... ~> EXPECTED` is a warning: exit status 0, standard error
 # exactly EXPECTED and a newline, standard output whatever the command prints. Arguments
-# are split on blanks (no quoting). Reports every failing case, then fails if there was one.
+# are split on blanks (no quoting). @TMP@ in a case stands for a scratch directory of this
+# run (emptied after each case; an error case must leave nothing in it: no half-written
+# output). Reports every failing case, then fails if there was one.
 # With MAZE_MAPPER_UPDATE_GOLDEN=1 the expectations are rewritten from what the program
 # prints (review `git diff tests/bad_inputs` after that).
 #   usage: run_bad_inputs.sh PROGRAM SOURCE_DIR
@@ -18,7 +20,8 @@ count=0
 updated=$(mktemp)
 out=$(mktemp)
 err=$(mktemp)
-trap 'rm -f "$updated" "$out" "$err"' EXIT
+scratch=$(mktemp -d)
+trap 'rm -f "$updated" "$out" "$err"; rm -rf "$scratch"' EXIT
 while IFS= read -r line || [ -n "$line" ]; do
   case $line in
     ''|'#'*) printf '%s\n' "$line" >>"$updated"; continue ;;
@@ -33,14 +36,17 @@ while IFS= read -r line || [ -n "$line" ]; do
   count=$((count + 1))
   status=0
   # shellcheck disable=SC2086  # the arguments are split on blanks on purpose
-  "$program" $args >"$out" 2>"$err" </dev/null || status=$?
-  actual=$(cat "$err")
+  "$program" $(printf '%s' "$args" | sed "s|@TMP@|$scratch|g") >"$out" 2>"$err" </dev/null || status=$?
+  actual=$(sed "s|$scratch|@TMP@|g" "$err")
+  left=$(ls -A "$scratch")
+  rm -rf "$scratch" && mkdir "$scratch"
   printf '%s %s %s\n' "$args" "$arrow" "$actual" >>"$updated"
   problem=""
   [ "$status" -eq "$want_status" ] || problem="exit status $status, expected $want_status"
   [ "$want_status" -ne 2 ] || [ ! -s "$out" ] || problem="${problem:+$problem; }something on standard output"
   [ "$(wc -l <"$err")" -eq 1 ] || problem="${problem:+$problem; }standard error is not one line"
   [ "$actual" = "$expected" ] || problem="${problem:+$problem; }message differs"
+  [ "$want_status" -ne 2 ] || [ -z "$left" ] || problem="${problem:+$problem; }left files behind: $left"
   if [ -n "$problem" ]; then
     failures=$((failures + 1))
     printf 'FAIL: %s\n  %s\n  expected: %s\n  actual:   %s\n' "$args" "$problem" "$expected" "$actual"
