@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -65,7 +67,8 @@ std::string read_file(const std::filesystem::path &path) {
 }
 
 std::filesystem::path fresh_directory(const std::string &name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
+  // The process id in the name: the unit tests of other files run beside these (ctest -j).
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -2,6 +2,8 @@
 // canonical text map; the Webots writer; safe writes.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -204,7 +206,7 @@ TEST_CASE("formats: the Webots world has the R2023b header, one Solid per wall r
 }
 
 TEST_CASE("formats: writes are atomic; an unwritable path leaves nothing behind") {
-  const auto dir = std::filesystem::temp_directory_path() / "maze_mapper_test_write";
+  const auto dir = std::filesystem::temp_directory_path() / ("maze_mapper_test_write_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string target = (dir / "out.txt").string();
