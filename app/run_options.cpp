@@ -97,6 +97,36 @@ void check_lidar_options(const GivenOptions &given, const RunOptions &options, s
   }
 }
 
+sensing::RangeSensorKind range_sensor_kind(maze::sim::DistanceSensorType type) {
+  switch (type) {
+    case maze::sim::DistanceSensorType::generic: return sensing::kGenericSensor;
+    case maze::sim::DistanceSensorType::infra_red: return sensing::kInfraRedSensor;
+    case maze::sim::DistanceSensorType::sonar: return sensing::kSonarSensor;
+  }
+  return sensing::kGenericSensor;
+}
+
+// A range model on range sensors it is not made for maps wrongly on every shipped world
+// (docs/models.md): a warning, not an error, since a profile of one's own may still be
+// worth the try, and the run's verdict says how it went.
+void check_range_sensor_kinds(const RunOptions &options, std::vector<std::string> &warnings) {
+  const sensing::SetUp &setup = sensing::setup(options.model.kind);
+  if (!setup.reads_ranges()) return;
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  std::string others;
+  unsigned seen = 0;
+  for (const maze::sim::DistanceSensorSpec &sensor : profile.distance_sensors) {
+    const sensing::RangeSensorKind kind = range_sensor_kind(sensor.type);
+    if ((setup.range_sensor_kinds & kind) != 0 || (seen & kind) != 0) continue;
+    seen |= kind;
+    others += (others.empty() ? "" : " and ") + std::string(sensing::to_string(kind));
+  }
+  if (others.empty()) return;
+  warnings.push_back(fmt::format("warning: the {} model is made for {} range sensors, and the robot {} has {} "
+                                 "ones: expect a wrong map",
+                                 setup.name, setup.range_sensor_kind_names(), profile.name, others));
+}
+
 }  // namespace
 
 void validate_subcells(int subcells) {
@@ -151,6 +181,7 @@ std::vector<std::string> check_options_apply(const GivenOptions &given, const Ru
     warnings.push_back(std::move(warning));
   }
   check_lidar_options(given, options, warnings);
+  check_range_sensor_kinds(options, warnings);
   return warnings;
 }
 

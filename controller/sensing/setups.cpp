@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cassert>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -45,12 +46,13 @@ const std::array<SetUp, 6> kSetUps{{
      &bump_update},
     {ModelKind::depth, "depth", "depth rays over the front 120 degrees", "bumper-depth", 0,
      MarkProbabilities{kDepthRayP, kDepthHitP, kDepthRobotP}, Arrival::look_around, RangeMark{&depth_mark},
-     &depth_update},
+     &depth_update, kGenericSensor},
     {ModelKind::pie, "pie", "the IR pie-slice update", "ir-ring", kPieBeta | kPieAlpha,
      MarkProbabilities{kPieFreeP, kPieOccupiedP, std::nullopt}, Arrival::resolve_and_confirm, RangeMark{&pie_mark},
-     &pie_update},
+     &pie_update, kInfraRedSensor},
     {ModelKind::cone, "cone", "the sonar/IR cone sweep", "ir-ring", kProbabilities, std::nullopt,
-     Arrival::resolve_and_confirm, RangeMark{&cone_mark}, &make_cone_update},
+     Arrival::resolve_and_confirm, RangeMark{&cone_mark}, &make_cone_update,
+     kInfraRedSensor | kSonarSensor},
 }};
 
 }  // namespace
@@ -58,6 +60,24 @@ const std::array<SetUp, 6> kSetUps{{
 std::string_view SetUp::devices() const {
   if (reads_lidar()) return "lidar";
   return reads_bumpers() ? "bumpers" : "range sensors";
+}
+
+std::string_view to_string(RangeSensorKind kind) {
+  switch (kind) {
+    case kGenericSensor: return "generic";
+    case kInfraRedSensor: return "infra-red";
+    case kSonarSensor: return "sonar";
+  }
+  return "?";
+}
+
+std::string SetUp::range_sensor_kind_names() const {
+  std::string names;
+  for (const RangeSensorKind sensor : {kGenericSensor, kInfraRedSensor, kSonarSensor}) {
+    if ((range_sensor_kinds & sensor) == 0) continue;
+    names += (names.empty() ? "" : " or ") + std::string(to_string(sensor));
+  }
+  return names;
 }
 
 std::string_view option_name(ModelOption option) {

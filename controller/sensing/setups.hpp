@@ -65,6 +65,17 @@ enum class Arrival {
   look_around,          // in a new cell, face each side once and scan
 };
 
+// The kinds of range sensor (Webots' DistanceSensor types) a range set-up's model is made
+// for, a bit set. On other kinds it maps wrongly: the pie slices are an IR sensor's narrow
+// beam, the cone sweep needs a cone, the depth rays are single rays (docs/models.md).
+enum RangeSensorKind : unsigned {
+  kGenericSensor = 1u << 0,   // "generic": the depth rays
+  kInfraRedSensor = 1u << 1,  // "infra-red"
+  kSonarSensor = 1u << 2,     // "sonar"
+};
+// "generic", "infra-red" or "sonar", Webots' spelling.
+std::string_view to_string(RangeSensorKind kind);
+
 // The run options a set-up's model may read besides those every set-up reads (K, --prior,
 // --log-base, --clamp, --threshold). A bit set.
 enum ModelOption : unsigned {
@@ -99,6 +110,8 @@ struct SetUp {
   std::variant<LidarMark, RangeMark, BumpMark> mark;
   // The range and bump models' marks and their levels; nothing for the lidar models.
   LeveledUpdate (*make_update)(const mapping::SensorModelOptions &sensor) = nullptr;
+  // The range set-ups: the RangeSensorKind bits their model is made for; 0 for the others.
+  unsigned range_sensor_kinds = 0;
 
   bool uses(ModelOption option) const { return (options & option) != 0; }
   bool reads_lidar() const { return std::holds_alternative<LidarMark>(mark); }
@@ -106,6 +119,8 @@ struct SetUp {
   bool reads_bumpers() const { return std::holds_alternative<BumpMark>(mark); }
   // "lidar", "range sensors", "bumpers": what a robot "has no" or a set-up "needs a robot with"
   std::string_view devices() const;
+  // The kinds in range_sensor_kinds: "infra-red", "infra-red or sonar".
+  std::string range_sensor_kind_names() const;
 };
 
 // Every set-up, in the order --help lists them.
