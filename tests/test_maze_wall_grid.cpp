@@ -152,6 +152,43 @@ TEST_CASE("WallGrid::cast_direction: bit for bit the reference on random rays th
   }
 }
 
+TEST_CASE("WallGrid::cast_direction: a direction with a subnormal component casts as the reference does") {
+  // 1 / dx overflows to infinity for a subnormal dx; the quadrant walk's slab arithmetic then
+  // differs from the reference's (an inf * 0 is NaN), so such rays take the reference's path.
+  maze::GeneratorOptions g;
+  g.width = 12;
+  g.height = 9;
+  g.seed = 4;
+  maze::Maze m = maze::generate_maze(g);
+  m.set_physical(0.7, maze::kDefaultWallThickness_m, -1.25, 2.5);
+  const maze::sim::WallGrid walls(m);
+  common::Rng rng(12);
+  int compared = 0;
+  for (int i = 0; i < 4000; ++i) {
+    double x = -1.25 + rng.uniform(0.0, 12 * 0.7);
+    double y = 2.5 + rng.uniform(0.0, 9 * 0.7);
+    // Every other origin on a box's edge across the tiny component: (edge - origin) is 0 there.
+    const double h = maze::kDefaultWallThickness_m / 2.0;
+    const double edge = std::floor(rng.uniform(0.0, 9.0)) * 0.7 + (i % 3 == 0 ? h : i % 3 == 1 ? 0.7 - h : 0.0);
+    if (i % 32 >= 16) (i % 16 < 8 ? x : y) = (i % 16 < 8 ? -1.25 : 2.5) + edge;
+    if (walls.inside_wall(x, y)) continue;
+    const double tiny = (i % 4 < 2 ? 1e-320 : 4.9e-324) * (i % 2 == 0 ? 1.0 : -1.0);
+    const double one = i % 8 < 4 ? 1.0 : -1.0;
+    const bool tiny_x = i % 16 < 8;
+    const double dx = tiny_x ? tiny : one;
+    const double dy = tiny_x ? one : tiny;
+    const double fast = walls.cast_direction(x, y, dx, dy, 12.0);
+    const double reference = walls.cast_reference(x, y, dx, dy, 12.0);
+    CAPTURE(x);
+    CAPTURE(y);
+    CAPTURE(dx);
+    CAPTURE(dy);
+    REQUIRE(std::bit_cast<std::uint64_t>(fast) == std::bit_cast<std::uint64_t>(reference));
+    ++compared;
+  }
+  CHECK(compared > 2000);
+}
+
 TEST_CASE("WallGrid::free_centres: a disc centred inside the box touches no wall") {
   // Conservative by construction; checked against contacts() at random points, with the
   // pair-of-cells boxes near open sides included.

@@ -169,8 +169,12 @@ double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
 
 double WallGrid::cast_from(const CastOrigin &origin, double dx, double dy,
                            double max_range_m) const {
-  // A ray along an axis has slabs it never crosses: the reference handles those exactly.
-  if (dx == 0.0 || dy == 0.0 || !(std::isfinite(dx) && std::isfinite(dy))) {
+  // A ray along an axis has slabs it never crosses: the reference handles those exactly. So
+  // does it a ray with a subnormal component, whose inverse overflows to infinity (an origin
+  // on a box edge then makes 0 * infinity, and the quadrant walk's order of max and min
+  // would turn that NaN into another answer than the reference's).
+  constexpr double kSmallestNormal = std::numeric_limits<double>::min();
+  if (std::abs(dx) < kSmallestNormal || std::abs(dy) < kSmallestNormal || !(std::isfinite(dx) && std::isfinite(dy))) {
     return cast_reference(origin.x_m, origin.y_m, dx, dy, max_range_m);
   }
   if (!origin.inside) return kInfinity;

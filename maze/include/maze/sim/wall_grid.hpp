@@ -82,7 +82,8 @@ class WallGrid {
   // cast_direction from a prepared origin: the same answers.
   double cast_from(const CastOrigin &origin, double dx, double dy, double max_range_m) const;
   // cast_direction's plain form, one slab test per box: the same answers bit for bit (the
-  // tests hold cast_direction to it); cast_direction uses it for rays along an axis.
+  // tests hold cast_direction to it); cast_direction uses it for rays along an axis and for
+  // rays with a subnormal component.
   double cast_reference(double x_m, double y_m, double dx, double dy, double max_range_m) const;
 
   // Pushes a disc of radius_m centred at (x, y) out of every wall it overlaps (the smallest
