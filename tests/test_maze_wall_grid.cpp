@@ -167,7 +167,7 @@ TEST_CASE("WallGrid::cast_direction: a direction with a subnormal component cast
   for (int i = 0; i < 4000; ++i) {
     double x = -1.25 + rng.uniform(0.0, 12 * 0.7);
     double y = 2.5 + rng.uniform(0.0, 9 * 0.7);
-    // Every other origin on a box's edge across the tiny component: (edge - origin) is 0 there.
+    // Half the origins on a box's edge across the tiny component: (edge - origin) is 0 there.
     const double edge = std::floor(rng.uniform(0.0, 9.0)) * 0.7 + (i % 3 == 0 ? h : i % 3 == 1 ? 0.7 - h : 0.0);
     if (i % 32 >= 16) (i % 16 < 8 ? x : y) = (i % 16 < 8 ? -1.25 : 2.5) + edge;
     if (walls.inside_wall(x, y)) continue;
