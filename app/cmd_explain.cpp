@@ -27,7 +27,7 @@ struct ProbabilityUse {
 };
 
 // The probabilities worth showing: this model's own, the classroom ones and those the seed
-// set-ups use (DESIGN §6: pie model logit(0.4) / logit(0.7); course reports' 0.99999).
+// set-ups use (docs/models.md: pie model logit(0.4) / logit(0.7); course reports' 0.99999).
 std::vector<ProbabilityUse> probabilities_in_use(const mapping::SensorModelOptions &o) {
   std::vector<ProbabilityUse> uses{
       {o.p_free, "--p-free"},

@@ -1,5 +1,5 @@
 #pragma once
-// The files of `run --out DIR` (DESIGN §7). They live in app/ because summary.json holds the
+// The files of `run --out DIR` (docs/output.md). They live in app/ because summary.json holds the
 // scores against the truth; the grid exports (PGM, PNG) read only the grid.
 //
 //   map.pgm + map.yaml  ROS map_server format: one pixel a sub-cell, north up, binary P5.

@@ -1,5 +1,5 @@
 #pragma once
-// Robot profiles as JSON files (DESIGN §5): `maze_mapper robot NAME` prints one, `--robot
+// Robot profiles as JSON files (docs/simulator.md, Robots): `maze_mapper robot NAME` prints one, `--robot
 // FILE.json` reads one back. A profile file states every field of maze::sim::RobotProfile,
 // units in the key names, in this order:
 //

@@ -83,7 +83,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls = {});
 
-// What a maze lab tells the robot's programmer (DESIGN §2), as run_maze gives it to the
+// What a maze lab tells the robot's programmer (ARCHITECTURE.md), as run_maze gives it to the
 // controller and a .wbt's controllerArgs carry it: the maze's size, cell size, origin, start
 // and goals, the run's mapping options and the robot's description from its profile (wheels,
 // device names, sensor mounts) - never the walls. Not validated.
@@ -101,7 +101,7 @@ void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &p
 std::int64_t max_steps_for(const maze::Maze &maze);
 std::int64_t max_steps_for(int width_cells, int height_cells);
 
-// The summary block (DESIGN §9), one `key: value` a line. Every key it prints is a key of
+// The summary block (docs/output.md), one `key: value` a line. Every key it prints is a key of
 // summary.json (app/outputs.hpp).
 std::string format_summary(const RunOptions &options, const RunSummary &summary);
 

@@ -1,4 +1,4 @@
-// The summary block a run ends with (DESIGN §9) and the exit status it ends with.
+// The summary block a run ends with (docs/output.md, The summary) and the exit status it ends with.
 
 #include <string>
 #include <string_view>

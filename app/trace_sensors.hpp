@@ -1,5 +1,5 @@
 #pragma once
-// The robot's own readings in trace.csv (issue 17), under the names `maze_mapper map-log`
+// The robot's own readings in trace.csv, under the names `maze_mapper map-log`
 // reads, so that a bump or depth run can be mapped again offline at another resolution.
 // Columns after trace_header()'s, as the robot has the devices:
 //

@@ -2,7 +2,7 @@
 // when the bench was configured with OctoMap (Debian's liboctomap-dev), into an OcTree by
 // insertPointCloud on a z = 0 plane at the same resolution with its default sensor model.
 //
-// Workload (issue 8): 1,000 scans of 360 beams, ranges uniform in [0.9, 1.1] m, from an
+// Workload: 1,000 scans of 360 beams, ranges uniform in [0.9, 1.1] m, from an
 // origin that moves 0.01 m and turns 0.01 rad per scan; 0.02 m sub-cells (K = 5, 0.1 m
 // cells). `--repeat` rounds (default 5), each 10 grid passes then one OctoMap pass; rates
 // are the medians over the rounds, the ratio the median of the rounds' ratios. Also times the scan-to-grid update of one 360-beam scan in the default world

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Builds the `bench` preset and prints one table of every benchmark of issue 8:
+# Builds the `bench` preset and prints one table of every benchmark:
 # the lidar scan (bench_lidar), ray integration against OctoMap and the default-world scan
 # update (bench_ray_integration), `maze_mapper run` on a 16 x 16 maze, and the scaling runs
 # (bench/scale.sh). Run from anywhere:

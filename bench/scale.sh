@@ -1,5 +1,5 @@
 #!/bin/sh
-# Exploration at scale (issue 8): generates perfect mazes of 64^2, 256^2, 512^2 and 1024^2
+# Exploration at scale: generates perfect mazes of 64^2, 256^2, 512^2 and 1024^2
 # cells (fixed seeds), runs `maze_mapper run FILE --quiet` (default robot, model and
 # strategy) under /usr/bin/time -v and prints one table row per size.
 #

@@ -1,6 +1,6 @@
 # The golden cases, one add_golden_test() a case. Refresh: scripts/refresh-goldens.sh
 
-# The 1-D log-odds exercise and the model's numbers (issue 2); no arguments maps the default world.
+# The 1-D log-odds exercise and the model's numbers; no arguments maps the default world.
 add_golden_test(main_no_arguments)
 add_golden_test(demo_1d_default ARGS demo 1d)
 add_golden_test(demo_1d_log_base_10 ARGS demo 1d --log-base 10)
@@ -15,7 +15,7 @@ add_golden_test(show_lab4x4_xml ARGS show worlds/lab4x4.xml)
 add_golden_test(generate_8x8_seed1 ARGS generate 8x8 --seed 1)
 add_golden_test(error_inconsistent_num STATUS 2 STDERR ARGS show tests/data/worlds/inconsistent.num)
 
-# The main job (issue 5): maze runs, byte for byte.
+# The main job: maze runs, byte for byte.
 add_golden_test(run_lab4x4_k3_cell_noise_off ARGS run worlds/lab4x4.txt --noise 0)
 add_golden_test(run_lab4x4_k5_cell ARGS run worlds/lab4x4.txt --subcells 5)
 add_golden_test(run_lab4x4_k9_cell_quiet ARGS run worlds/lab4x4.txt --subcells 9 --quiet)
@@ -30,7 +30,7 @@ add_golden_test(run_bad_subcells STATUS 2 STDERR ARGS run --subcells 4)
 add_golden_test(run_unknown_strategy STATUS 2 STDERR ARGS run --strategy spiral)
 add_golden_test(run_max_steps_quiet ARGS run worlds/lab4x4.txt --max-steps 500 --quiet)
 
-# The other classroom set-ups (issue 6): bump, depth, IR pie-slice and IR/sonar cone runs.
+# The other classroom set-ups: bump, depth, IR pie-slice and IR/sonar cone runs.
 add_golden_test(run_lab4x4_bump ARGS run worlds/lab4x4.txt --robot bumper-depth --model bump --log-base 10)
 add_golden_test(run_lab4x4_bump_threshold_quiet ARGS run worlds/lab4x4.txt --robot bumper-depth --model bump --log-base 10 --threshold -0.5 --quiet)
 add_golden_test(run_lab4x4_depth ARGS run worlds/lab4x4.txt --robot bumper-depth --model depth --log-base 10)
@@ -56,12 +56,12 @@ add_golden_test(compare_lab4x4_depth ARGS compare worlds/lab4x4.txt --robot bump
 add_golden_test(compare_bad_list STATUS 2 STDERR ARGS compare worlds/lab4x4.txt --subcells 3,x)
 add_golden_test(run_lab4x4_floodfill_speed_run ARGS run worlds/lab4x4.txt --strategy floodfill --speed-run --quiet)
 
-# One language for the command line (issue 16): `demo` alone lists the demos (exit 0, as
+# One language for the command line: `demo` alone lists the demos (exit 0, as
 # `robot` alone lists the robots); `plan` with no path found exits 1.
 add_golden_test(demo_list ARGS demo)
 add_golden_test(plan_lab4x4_dilate_no_path STATUS 1 ARGS plan worlds/lab4x4.txt --dilate 1)
 
-# The seeds' labs in their own shape (issue 17): Figure 1's pie-slice update and the lecture's
+# The seeds' labs in their own shape: Figure 1's pie-slice update and the lecture's
 # cone sweep, default output and a sonar sweep off-axis.
 add_golden_test(demo_pie_default ARGS demo pie)
 add_golden_test(demo_cone_default ARGS demo cone)

@@ -1,6 +1,6 @@
 #pragma once
 // Test helpers: a hand-written maze (the truth, for tests only) drawn as a micromouse text
-// map, and a lidar range image cast analytically against its walls (DESIGN §4 geometry:
+// map, and a lidar range image cast analytically against its walls (the conventions' geometry:
 // each wall a rectangle centred on its side, side length plus thickness long).
 
 #include <algorithm>
@@ -89,7 +89,7 @@ inline double ray_box(double px, double py, double dx, double dy, const Box &b) 
 }
 
 // The range image a noiseless lidar at `origin` facing yaw would read: n beams over fov,
-// DESIGN §2 order, +inf outside [min, max].
+// the conventions' beam order, +inf outside [min, max].
 inline std::vector<float> range_image(const std::vector<Box> &boxes, mapping::Point origin,
                                       double yaw_rad, int n, double fov_rad, double min_m,
                                       double max_m) {

@@ -1,5 +1,5 @@
 // `run`'s command line parsed without running (CommandContext::run_parse_only), as
-// fuzz/fuzz_run_cli.cpp parses it. Regression (the CI fuzz run, issue 9): with no arguments
+// fuzz/fuzz_run_cli.cpp parses it. Regression (the CI fuzz run): with no arguments
 // at all the fuzz target aborted, its check comparing the unset --max-steps as if it were 0.
 
 #include <doctest/doctest.h>

@@ -1,4 +1,4 @@
-// compare's table, --quiet and --out; plan --out's plan.png and plan.csv (issue 18 item 6).
+// compare's table, --quiet and --out; plan --out's plan.png and plan.csv.
 #include <doctest/doctest.h>
 
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// run --out's trace.csv mapped again by map-log (issue 17 item 1): a depth and a bump run of
+// run --out's trace.csv mapped again by map-log: a depth and a bump run of
 // lab4x4 on bumper-depth, mapped at 0.1 m cells, checked against the true maze's walls by a
 // plain distance-to-segment test; map-log --out's pictures read back by libpng.
 #include <doctest/doctest.h>

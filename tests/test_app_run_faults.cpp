@@ -1,4 +1,4 @@
-// Acceptance under simulated faults (issue 9): with 5 % of the lidar beams dropped (+inf) and
+// Acceptance under simulated faults: with 5 % of the lidar beams dropped (+inf) and
 // 1 % spiked (a random range), the mapper still maps every generated 16 x 16 maze to the end,
 // every cell visited, with wall_accuracy >= 99 %, with the cell model and with the ray model.
 // The scan filter (sensing/scan_filter.hpp) and the rescans of an unknown side make it so.

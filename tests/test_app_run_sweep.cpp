@@ -1,4 +1,4 @@
-// Acceptance over generated mazes (issue 5): whole runs, simulator and controller together.
+// Acceptance over generated mazes: whole runs, simulator and controller together.
 // These are the `acceptance` suite (CTest runs them in optimised builds only, see
 // tests/CMakeLists.txt; they take tens of seconds).
 
@@ -326,7 +326,7 @@ TEST_CASE("course XML: 0.5 m lattice worlds started on a node map fully with cel
   }
 }
 
-// A num file has no goal: --goal gives floodfill one, --start moves the start (issue 15).
+// A num file has no goal: --goal gives floodfill one, --start moves the start.
 TEST_CASE("num world: --goal 3,3 and --start give floodfill a goal it reaches") {
   app::RunOptions options;
   options.world = std::string(WORLDS_DIR) + "/lab4x4.num";

@@ -1,4 +1,4 @@
-// Acceptance of the micromouse search and speed run (issue 19): whole runs with the default
+// Acceptance of the micromouse search and speed run: whole runs with the default
 // sensor noise, floodfill searching until its path is proven shortest, then the speed run
 // from the start to the goal, against a breadth-first search of the true maze done here.
 

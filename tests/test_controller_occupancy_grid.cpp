@@ -65,7 +65,7 @@ TEST_CASE("Grid indexing: (cell, sub-cell) <-> global sub-cell <-> world point r
   }
 }
 
-TEST_CASE("Grid indexing: the conventions of DESIGN §3 at known points") {
+TEST_CASE("Grid indexing: the conventions of ARCHITECTURE.md at known points") {
   const OccupancyGrid grid(non_square(3), 0.0f);
   // Row i = 0 is the north band: its global row is the top one of the cell.
   CHECK(mapping::to_global(Cell{0, 0}, LocalSubCell{0, 0}, 3) == SubCell{0, 2});

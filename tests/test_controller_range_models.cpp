@@ -1,4 +1,4 @@
-// One-scan matrices of the bump, depth, pie and cone models (issue 6), as literal K x K
+// One-scan matrices of the bump, depth, pie and cone models, as literal K x K
 // tables of the centre cell of a 3 x 3 grid of 1 m cells, and the course's base-10 numbers.
 
 #include <doctest/doctest.h>

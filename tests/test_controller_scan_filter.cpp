@@ -1,6 +1,6 @@
 // The range-filtering stage (mapping/scan_filter.hpp): faulty beams become "no information"
 // (NaN) before any model marks the scan, and what a fault-free lidar sees passes unchanged
-// (issue 9).
+// (docs/robustness.md).
 
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
 // LidarScan::median_range: what the cell model reads a side through, so that a lone dropped
-// or spiked beam cannot flip a wall (issue 9).
+// or spiked beam cannot flip a wall.
 
 #include <doctest/doctest.h>
 

@@ -31,7 +31,7 @@ sensing::LidarScan scan_of(const std::vector<float> &ranges, double yaw, double 
 
 }  // namespace
 
-TEST_CASE("LidarScan: beam order of DESIGN §2 (0 back, 90 left, 180 ahead, 270 right)") {
+TEST_CASE("LidarScan: the conventions' beam order (0 back, 90 left, 180 ahead, 270 right)") {
   const std::vector<float> ranges(360, 1.0f);
   const auto north = scan_of(ranges, kPi / 2, 2 * kPi);
   CHECK(north.beam_angle_rad(0) == doctest::Approx(kPi));

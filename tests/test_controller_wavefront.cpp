@@ -1,4 +1,4 @@
-// The wavefront planner (issue 6): on a fully mapped maze its path length in cells equals
+// The wavefront planner: on a fully mapped maze its path length in cells equals
 // the true shortest path (breadth-first search on the true maze), over 100 generated mazes.
 
 #include <doctest/doctest.h>

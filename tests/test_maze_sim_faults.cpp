@@ -1,4 +1,4 @@
-// Simulated sensor and motion faults (issue 9): --dropout, --spikes, --stuck-bumper,
+// Simulated sensor and motion faults: --dropout, --spikes, --stuck-bumper,
 // --wheel-slip, and their validation.
 
 #include <doctest/doctest.h>

@@ -90,7 +90,7 @@ TEST_CASE("Robot(): attaches to the current simulation, and fails without one") 
   CHECK(sim.robot().getTime() == doctest::Approx(0.064));
 }
 
-TEST_CASE("Lidar: the range image at a known pose, in DESIGN §2 order") {
+TEST_CASE("Lidar: the range image at a known pose, in the conventions' beam order") {
   // 3 x 3 open maze, robot in the middle facing north.
   Simulation sim(maze::Maze(3, 3), hambot(), at(1.5, 1.5, kPi / 2));
   webots::Lidar *lidar = sim.robot().getLidar("lidar");

@@ -1,6 +1,6 @@
 #pragma once
 // Shortest cell-to-cell paths over what the robot knows of the walls, and the micromouse's
-// proof that the known path is the shortest one (issue 19).
+// proof that the known path is the shortest one.
 //
 // A path moves between adjacent cells through sides that are open; a side leading out of
 // the W x H grid is always a wall. An unknown side counts as open or closed as asked:

@@ -1,7 +1,7 @@
 #pragma once
 // Index types of the occupancy grid. Distinct types, never a bare pair of ints.
 //
-//   Cell{x, y}          a maze cell: column x from the west, row y from the south (DESIGN §3)
+//   Cell{x, y}          a maze cell: column x from the west, row y from the south (ARCHITECTURE.md)
 //   LocalSubCell{i, j}  a sub-cell inside its cell: row i from the north, column j from the west
 //   SubCell{x, y}       a sub-cell of the whole grid: column x from the west, row y from the south
 //

@@ -106,7 +106,7 @@ class OccupancyGrid {
 
 class SensorModel;
 
-// Gather, then apply (DESIGN §3): a scan marks the sub-cells it saw free and the ones it
+// Gather, then apply (ARCHITECTURE.md, Conventions): a scan marks the sub-cells it saw free and the ones it
 // saw occupied; occupied wins; apply() then gives each marked sub-cell exactly one update.
 // Marks outside the grid are ignored. One ScanUpdate serves many scans; apply() clears it.
 //

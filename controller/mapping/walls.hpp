@@ -1,5 +1,5 @@
 #pragma once
-// Walls for decisions, read from the grid only (DESIGN §6): never from the true maze.
+// Walls for decisions, read from the grid only (docs/models.md): never from the true maze.
 //
 // The side of cell c towards h is judged on two sub-cells: the middle of c's band h and the
 // middle of the neighbour's opposite band (the two halves of the wall, either side of the

@@ -1,5 +1,5 @@
 #pragma once
-// The wavefront planner on the learned sub-cell grid (issue 6).
+// The wavefront planner on the learned sub-cell grid.
 //
 // A sub-cell is free when its probability is below free_below_p (0.6 by default, compared
 // with a 1e-6 tolerance for the float storage; a

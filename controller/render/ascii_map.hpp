@@ -1,5 +1,5 @@
 #pragma once
-// The map as text (DESIGN §7): H*K lines of W*K characters, north at the top, one character
+// The map as text (docs/output.md): H*K lines of W*K characters, north at the top, one character
 // a sub-cell (the classroom look), each line ending in '\n'; with subcell_columns 2, each
 // sub-cell is two columns, so that the maze has its true aspect in a terminal (W, *, the
 // unknown character and blanks doubled; an arrow or the robot followed by a blank):

@@ -1,5 +1,5 @@
 #pragma once
-// The classroom sub-cell model (`--model cell`, the default set-up; DESIGN §6). Only the
+// The classroom sub-cell model (`--model cell`, the default set-up; docs/models.md). Only the
 // robot's own cell is updated. The beams nearest to world N, E, S, W decide, per side, wall
 // or opening:
 //   wall     the whole band (its middle and every sub-cell left and right of it)  p_occ,

@@ -1,5 +1,5 @@
 #pragma once
-// Inverse sensor models for the robots without a lidar (issue 6): bumpers, depth rays, an IR
+// Inverse sensor models for the robots without a lidar: bumpers, depth rays, an IR
 // ring (pie-slice model) and a sonar/IR ring (cone model). Each turns one set of readings
 // into marks on the grid; the controller reads the devices, these functions never do.
 //

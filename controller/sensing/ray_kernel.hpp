@@ -380,7 +380,7 @@ class BeamTable {
   std::vector<double> cos_, sin_;
 };
 
-// Frees the sub-cells a beam passes before it ends, as the ray model sees them (DESIGN §6),
+// Frees the sub-cells a beam passes before it ends, as the ray model sees them (docs/models.md),
 // and leaves `walk` at the end: the first sub-cell the beam does not leave within length_m.
 // Returns false when the beam left the grid first.
 //

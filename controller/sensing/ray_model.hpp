@@ -1,5 +1,5 @@
 #pragma once
-// The ray model (`--model ray`; DESIGN §6): every beam traced through the sub-cells it
+// The ray model (`--model ray`; docs/models.md): every beam traced through the sub-cells it
 // crosses (Amanatides-Woo, mapping/traversal.hpp; the fast walk is sensing/ray_kernel.hpp):
 // p_occ at the hit sub-cell and hit_depth sub-cells behind it, nothing beyond; before the
 // hit, p_free for the interior sub-cells it crosses and, where it crosses a cell side, for

@@ -1,7 +1,7 @@
 #pragma once
 // One planar lidar scan, independent of Webots: where it was taken and its ranges.
 //
-// Beam order is the Webots range-image order (DESIGN §2): beam i points at
+// Beam order is the Webots range-image order (ARCHITECTURE.md, Conventions): beam i points at
 //   fov/2 - i * fov / N   radians from the heading, counter-clockwise positive,
 // so with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right.
 //

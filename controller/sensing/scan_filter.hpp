@@ -1,6 +1,6 @@
 #pragma once
 // The range-filtering stage: what a lidar scan goes through before any model marks it, so
-// that faulty beams bring no information instead of wrong information (issue 9).
+// that faulty beams bring no information instead of wrong information (docs/robustness.md).
 //
 // Each reading comes out as it went in, or as NaN ("no information", which every model
 // ignores):

@@ -1,6 +1,6 @@
 #pragma once
 // Angles both sides use: no maze knowledge, radians throughout, counter-clockwise positive,
-// 0 east (the Webots convention of DESIGN §3).
+// 0 east (the Webots convention; ARCHITECTURE.md, Conventions).
 
 #include <cmath>
 #include <numbers>

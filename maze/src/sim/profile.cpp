@@ -16,7 +16,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-// The wheels, motors, encoders, IMU and GPS of FAIRIS-Lite's HamBot (DESIGN §5), as
+// The wheels, motors, encoders, IMU and GPS of FAIRIS-Lite's HamBot (docs/simulator.md, Robots), as
 // biorobaw/FAIRIS-Lite WebotsSim/protos/HamBot/HamBot.proto and fairis_lib/robot_lib/
 // hambot.py define them: wheel radius 0.045 m (the wheels' Cylinder), max wheel speed
 // 18 rad/s (RotationalMotor maxVelocity), axle 0.184 m (hambot.py's axel_length; the proto

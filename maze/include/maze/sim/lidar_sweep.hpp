@@ -1,5 +1,5 @@
 #pragma once
-// Where a rotating lidar's head last passed each beam (Webots' rotating Lidar, DESIGN §2):
+// Where a rotating lidar's head last passed each beam (Webots' rotating Lidar; docs/simulator.md):
 // the head turns `revolutions_per_step` revolutions (frequency x basic time step) a control
 // step, clockwise from ahead; the s-th step after enabling (s from 1) sweeps the revolutions
 // ((s - 1) r, s r]. Beam i lies at phase u_i in [0, 1) (LidarModel::sweep_phase), so the head

@@ -1,5 +1,5 @@
 #pragma once
-// Robot profiles: which wheels and devices a simulated robot has, as data (DESIGN §5).
+// Robot profiles: which wheels and devices a simulated robot has, as data (docs/simulator.md, Robots).
 // `--robot NAME` selects one; find_profile() says which names exist.
 //
 // Device names (the strings a controller passes to Robot::get*):

@@ -32,7 +32,7 @@ std::uint64_t beam_seed(std::uint64_t seed, int device, std::int64_t step, int b
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
 
-// The direction of lidar beam i relative to the heading: fov/2 - i fov/N (DESIGN §2), so with
+// The direction of lidar beam i relative to the heading: fov/2 - i fov/N (ARCHITECTURE.md, Conventions), so with
 // 360 beams over 2 pi index 0 looks back, 90 left, 180 ahead, 270 right.
 double beam_angle_rad(const LidarSpec &lidar, int i);
 

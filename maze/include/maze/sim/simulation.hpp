@@ -1,6 +1,6 @@
 #pragma once
 // The embedded simulator: a maze, one robot built from a profile, and simulated time, behind
-// the webots:: device API (DESIGN §2). The composition root builds one and hands the robot
+// the webots:: device API (ARCHITECTURE.md). The composition root builds one and hands the robot
 // to the controller, exactly as Webots starts a controller process:
 //
 //   maze::sim::SimulationOptions options;          // 32 ms basic step, seed, noise, limit

@@ -1,5 +1,5 @@
 #pragma once
-// The maze's walls as solid geometry, for ray casting and collisions (DESIGN §4).
+// The maze's walls as solid geometry, for ray casting and collisions (ARCHITECTURE.md, Conventions: walls as solids).
 //
 // A wall on a cell side is a rectangle centred on that side, as long as the side plus the
 // wall thickness and as thick as the wall. Cut along the cell grid, the solid part inside

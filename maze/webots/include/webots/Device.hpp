@@ -1,6 +1,6 @@
 #pragma once
 // Webots-compatible device API, the subset maze_mapper's embedded simulator implements
-// (DESIGN §2). Public members mirror the Webots R2023b C++ API so a controller written
+// (ARCHITECTURE.md). Public members mirror the Webots R2023b C++ API so a controller written
 // against these headers compiles unchanged against a real Webots installation. Private
 // members are the embedded simulator's plumbing and are not part of the API.
 

@@ -1,5 +1,5 @@
 #pragma once
-// webots::Robot: the controller's handle on the simulation (DESIGN §2).
+// webots::Robot: the controller's handle on the simulation (ARCHITECTURE.md, the two sides).
 
 #include <memory>
 #include <string>
