@@ -13,11 +13,13 @@
 #include <functional>
 #include <vector>
 
+#include "mapping/walls.hpp"
 #include "maze/maze.hpp"
 
 namespace app {
 
-enum class LearnedSide { unknown, open, wall };
+// What the map says of a side: the robot side's own state (mapping/walls.hpp), one enum for both.
+using LearnedSide = mapping::SideState;
 
 // What one scored side says about the map (truth.png draws each):
 //   right           the learned state matches the truth (a wall, or an opening)

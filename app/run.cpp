@@ -33,16 +33,6 @@ namespace {
 
 mapping::Cell to_mapping(maze::Cell c) { return {c.x, c.y}; }
 
-mapping::Heading to_heading(maze::Side s) {
-  switch (s) {
-    case maze::Side::north: return mapping::Heading::north;
-    case maze::Side::east: return mapping::Heading::east;
-    case maze::Side::south: return mapping::Heading::south;
-    case maze::Side::west: return mapping::Heading::west;
-  }
-  return mapping::Heading::north;
-}
-
 // The robot's description as the controller gets it (like a URDF): where each bumper and
 // range sensor sits and what it sees. Range sensors sit on the body's rim; their value is
 // metres, the far end of the lookup table is their max range and its noise their error.
@@ -81,20 +71,11 @@ robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
   if (!profile.lidars.empty()) d.lidar = profile.lidars.front().name;
   return d;
 }
-LearnedSide to_learned(mapping::SideState s) {
-  switch (s) {
-    case mapping::SideState::open: return LearnedSide::open;
-    case mapping::SideState::wall: return LearnedSide::wall;
-    case mapping::SideState::unknown: return LearnedSide::unknown;
-  }
-  return LearnedSide::unknown;
-}
-
 // The controller's belief about each side of the maze, read from its grid.
 std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result, float initial_log_odds,
                                                                  std::optional<float> threshold) {
   return [&result, initial_log_odds, threshold](maze::Cell c, maze::Side s) {
-    return to_learned(mapping::side_state(result.grid, initial_log_odds, to_mapping(c), to_heading(s), threshold));
+    return mapping::side_state(result.grid, initial_log_odds, to_mapping(c), s, threshold);
   };
 }
 
@@ -168,7 +149,7 @@ std::string describe_wrong_sides(const WrongSides &wrong) {
     const char *what = w.verdict == SideVerdict::phantom   ? "a wall that is not there"
                        : w.verdict == SideVerdict::missed ? "a wall missed"
                                                           : "an opening never seen";
-    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", mapping::to_char(to_heading(w.side)), w.cell.x,
+    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", common::to_char(w.side), w.cell.x,
                          w.cell.y, what);
   }
   const std::size_t n = wrong.count;
@@ -217,7 +198,7 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.geometry.cell_size_m = maze.cell_size_m();
   c.geometry.origin = {maze.origin_x_m(), maze.origin_y_m()};
   c.start = to_mapping(maze.start());
-  c.start_heading = to_heading(maze.start_heading());
+  c.start_heading = maze.start_heading();
   for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
   c.sensor = options.sensor;
   c.model = options.model;

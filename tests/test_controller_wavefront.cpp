@@ -17,7 +17,6 @@
 
 namespace {
 
-mapping::Heading to_heading(maze::Side s) { return static_cast<mapping::Heading>(static_cast<int>(s)); }
 
 // The grid a perfect cell-model run leaves: each cell's centre free; per side, a wall's band
 // (middle and corners) occupied, an opening's band middle free; the rest never observed.
@@ -33,7 +32,7 @@ mapping::OccupancyGrid fully_mapped(const maze::Maze &m, int k) {
       const mapping::Cell c{x, y};
       grid.at(c, {mid, mid}) = -1.0f;
       for (const maze::Side s : maze::kSides) {
-        const mapping::LocalSubCell b = mapping::band_middle(to_heading(s), k);
+        const mapping::LocalSubCell b = mapping::band_middle(s, k);
         if (!m.has_wall(maze::Cell{x, y}, s)) {
           grid.at(c, b) = -1.0f;
           continue;

@@ -18,6 +18,8 @@
 #include <cstddef>
 #include <functional>
 
+#include "common/compass.hpp"
+
 namespace mapping {
 
 struct Cell {
@@ -44,20 +46,18 @@ struct Point {
   double y_m = 0.0;
 };
 
-enum class Heading { north, east, south, west };
+// A robot's heading, and the side of a cell it faces: the one compass type (common/compass.hpp).
+using Heading = common::Compass;
+inline constexpr const auto &kHeadings = common::kCompassPoints;
+using common::dx;
+using common::dy;
+using common::opposite;
+using common::to_char;
+using common::turned_left;
+using common::turned_right;
+using common::yaw_rad;
 
-inline constexpr Heading kHeadings[] = {Heading::north, Heading::east, Heading::south,
-                                        Heading::west};
-
-constexpr int dx(Heading h) { return h == Heading::east ? 1 : h == Heading::west ? -1 : 0; }
-constexpr int dy(Heading h) { return h == Heading::north ? 1 : h == Heading::south ? -1 : 0; }
 constexpr Cell neighbour(Cell c, Heading h) { return {c.x + dx(h), c.y + dy(h)}; }
-constexpr Heading opposite(Heading h) { return static_cast<Heading>((static_cast<int>(h) + 2) % 4); }
-constexpr Heading turned_right(Heading h) { return static_cast<Heading>((static_cast<int>(h) + 1) % 4); }
-constexpr Heading turned_left(Heading h) { return static_cast<Heading>((static_cast<int>(h) + 3) % 4); }
-// Yaw in radians of a heading: east 0, north pi/2 (counter-clockwise positive).
-double yaw_rad(Heading h);
-char to_char(Heading h);  // 'N', 'E', 'S', 'W'
 
 constexpr SubCell to_global(Cell c, LocalSubCell s, int k) {
   return {c.x * k + s.j, c.y * k + (k - 1 - s.i)};

@@ -36,18 +36,6 @@ std::string human_bytes(std::uint64_t bytes) {
 
 }  // namespace
 
-double yaw_rad(Heading h) { return common::compass_yaw_rad(static_cast<int>(h)); }
-
-char to_char(Heading h) {
-  switch (h) {
-    case Heading::north: return 'N';
-    case Heading::east: return 'E';
-    case Heading::south: return 'S';
-    case Heading::west: return 'W';
-  }
-  return '?';
-}
-
 std::uint64_t grid_bytes(const GridGeometry &g) {
   return static_cast<std::uint64_t>(g.width_cells) * static_cast<std::uint64_t>(g.height_cells) *
          static_cast<std::uint64_t>(g.subcells) * static_cast<std::uint64_t>(g.subcells) *

@@ -6,16 +6,6 @@
 
 namespace maze {
 
-std::string_view to_string(Side s) {
-  switch (s) {
-    case Side::north: return "north";
-    case Side::east: return "east";
-    case Side::south: return "south";
-    case Side::west: return "west";
-  }
-  return "?";
-}
-
 Maze::Maze(int width, int height)
     : width_(width),
       height_(height),

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/compass.hpp"
+
 namespace maze {
 
 struct Cell {
@@ -20,21 +22,13 @@ struct Cell {
   friend constexpr auto operator<=>(const Cell &, const Cell &) = default;
 };
 
-enum class Side { north, east, south, west };
+// A side of a cell: the one compass type (common/compass.hpp).
+using Side = common::Compass;
+inline constexpr const auto &kSides = common::kCompassPoints;
+using common::opposite;
+using common::to_string;  // "north", "east", ...
 
-inline constexpr Side kSides[] = {Side::north, Side::east, Side::south, Side::west};
-
-constexpr Side opposite(Side s) { return static_cast<Side>((static_cast<int>(s) + 2) % 4); }
-constexpr Cell neighbour(Cell c, Side s) {
-  switch (s) {
-    case Side::north: return {c.x, c.y + 1};
-    case Side::east: return {c.x + 1, c.y};
-    case Side::south: return {c.x, c.y - 1};
-    case Side::west: return {c.x - 1, c.y};
-  }
-  return c;
-}
-std::string_view to_string(Side s);  // "north", "east", ...
+constexpr Cell neighbour(Cell c, Side s) { return {c.x + common::dx(s), c.y + common::dy(s)}; }
 
 // A wall as a segment on the cell grid, in metres (the wall's centre line, without thickness).
 struct WallSegment {
