@@ -50,6 +50,7 @@ BatchItem run_one(RunOptions options, const std::string &world, bool (*interrupt
   controls.interrupted = interrupted;
   try {
     item.summary = run_world(options, sink, controls);
+    item.report.emplace(options, item.summary);
     item.ran = true;
     item.interrupted = item.summary.interrupted;
     item.ok = exit_status(item.summary) == 0;
@@ -155,14 +156,15 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<st
 
 namespace {
 
-// The goal column: "reached", "not reached", or nothing when the maze has no goal.
-std::string goal_cell(const RunSummary &s) {
-  if (!s.shortest) return "";
-  return s.reached_goal ? "reached" : "not reached";
-}
+// The goal column: the report's "goal" ("reached", "not reached"), or nothing when the run
+// was not asked to reach one.
+std::string goal_cell(const BatchItem &item) { return item.report ? item.report->text("goal") : ""; }
 
-// The speed-run column: its cells, or nothing when none was made.
-std::string speed_run_cell(const RunSummary &s) { return s.speed_run.time_s ? std::to_string(s.speed_run.cells) : ""; }
+// The speed-run column: the report's speed run's cells, or nothing when none was made.
+std::string speed_run_cell(const BatchItem &item) {
+  const ReportEntry *run = item.report ? item.report->find("speed_run") : nullptr;
+  return run != nullptr && run->json.is_object() ? run->json["cells"].dump() : "";
+}
 
 }  // namespace
 
@@ -204,8 +206,8 @@ BatchRow row_of(const BatchItem &item) {
   row.moves = s.moves;
   row.coverage_percent = s.score.coverage_percent();
   row.wall_accuracy_percent = s.score.wall_accuracy_percent();
-  row.goal = goal_cell(s);
-  row.speed_run = speed_run_cell(s);
+  row.goal = goal_cell(item);
+  row.speed_run = speed_run_cell(item);
   row.ms = s.wall_time_ms;
   row.end = std::string(robot::to_string(s.reason));
   return row;
@@ -231,7 +233,7 @@ std::string format_batch_table(const std::vector<BatchItem> &items, double elaps
     out += fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>11}  {:>9}  {:>7.0f}  {}\n", item.world, width,
                        fmt::format("{}x{}", s.width, s.height), s.moves,
                        percent(s.score.coverage_percent()), percent(s.score.wall_accuracy_percent()),
-                       dash(goal_cell(s)), dash(speed_run_cell(s)), s.wall_time_ms, end);
+                       dash(goal_cell(item)), dash(speed_run_cell(item)), s.wall_time_ms, end);
   }
   out += format_totals(totals) + fmt::format("; elapsed {:.0f} ms", elapsed_ms);
   if (!skipped.empty()) {

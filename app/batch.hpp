@@ -4,11 +4,13 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/run.hpp"
+#include "app/run_report.hpp"
 
 namespace app {
 
@@ -36,6 +38,7 @@ struct BatchItem {
   bool interrupted = false;   // stopped by Ctrl-C, or never started because of it
   std::string error;          // the error line, when it did not run or did not end as planned
   RunSummary summary;         // when it ran
+  std::optional<RunReport> report;  // when it ran: the goal and speed_run columns come from it
 };
 
 // Runs options (world replaced) on each world with `jobs` threads (>= 1). progress(done,
@@ -56,7 +59,7 @@ struct BatchRow {
   long moves = 0;                   // the search's cell-to-cell moves (not the speed run's)
   double coverage_percent = 0.0;
   double wall_accuracy_percent = 0.0;
-  std::string goal;                 // "reached", "not reached", or empty: the maze has no goal
+  std::string goal;                 // the report's "goal": "reached", "not reached", or empty (not asked)
   std::string speed_run;            // the speed run's cells, or empty: none made
   double ms = 0.0;                  // wall-clock time of the run
   std::string end;                  // robot::to_string(EndReason)

@@ -16,6 +16,7 @@
 #include "app/batch.hpp"  // csv_quoted
 #include "app/outputs.hpp"
 #include "app/run.hpp"
+#include "app/run_report.hpp"
 #include "app/run_cli.hpp"
 #include "app/terminal.hpp"
 #include "commands.hpp"
@@ -88,17 +89,13 @@ void print_columns(const std::vector<std::vector<std::string>> &columns, std::os
   }
 }
 
-// A summary block's lines as (key, value), wall_time_ms left out: it varies from run to run,
+// A run's summary lines as (key, value), wall_time_ms left out: it varies from run to run,
 // and one total line at the end keeps the table stable.
 using Summary = std::vector<std::pair<std::string, std::string>>;
 
-Summary summary_pairs(const std::string &block) {
-  Summary pairs;
-  for (const std::string &line : split(block, '\n')) {
-    const std::size_t colon = line.find(": ");
-    if (colon == std::string::npos || line.starts_with("wall_time_ms: ")) continue;
-    pairs.emplace_back(line.substr(0, colon), line.substr(colon + 2));
-  }
+Summary table_pairs(const RunReport &report) {
+  Summary pairs = summary_pairs(report);
+  std::erase_if(pairs, [](const auto &pair) { return pair.first == "wall_time_ms"; });
   return pairs;
 }
 
@@ -167,11 +164,12 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
     }
     status = std::max(status, exit_status(summary));
     total_ms += summary.wall_time_ms;
-    const std::string block = format_summary(one, summary);
+    const RunReport report(one, summary);
+    const std::string block = format_summary(report);
     if (!text.str().ends_with(block)) throw common::RuntimeFailure("compare: a run's output does not end in its summary");
     const std::string map = text.str().substr(0, text.str().size() - block.size());
     maps.push_back(split(fmt::format("K {}\n", k) + map, '\n'));
-    summaries.push_back(summary_pairs(block));
+    summaries.push_back(table_pairs(report));
   }
   const auto table = summary_table(ks, summaries);
   if (!output.quiet) print_columns(maps, out);

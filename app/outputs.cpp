@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/run_report.hpp"
 #include "app/truth_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -268,66 +269,10 @@ Json options_json(const RunOptions &o, const RunSummary &s) {
   return j;
 }
 
-double two_decimals(double percent) { return std::round(percent * 100.0) / 100.0; }
-
-// The planning and speed-run keys of the summary block (null when it has none).
-void add_plan_keys(const RunOptions &o, const RunSummary &s, Json &j) {
-  j["plan"] = nullptr;
-  j["plan_length"] = nullptr;
-  if (s.plan) {
-    j["plan"] = Json{{"from", cell_json(s.plan->from)}, {"to", cell_json(s.plan->to)}, {"dilate", s.plan->dilate}};
-    j["plan_length"] = s.plan->found ? Json{{"subcells", s.plan->length_subcells}, {"cells", s.plan->length_cells}}
-                                     : Json("no path");
-  }
-  j["search"] = nullptr;
-  j["speed_run"] = nullptr;
-  j["speed_run_turns"] = nullptr;
-  if (!o.plan.speed_run) return;
-  j["search"] = Json{{"moves", s.moves}, {"visited", s.visited}, {"time_s", s.explore_time_s}};
-  const robot::SpeedRun &run = s.speed_run;
-  j["speed_run"] = run.time_s ? Json{{"cells", run.cells}, {"time_s", *run.time_s}, {"return_cells", run.return_cells}}
-                              : Json("none");
-  if (run.time_s) j["speed_run_turns"] = run.turns;
-}
-
-// The start-to-goal shortest paths as the search left them (null when the block has none).
-Json shortest_json(const RunOptions &o, const RunSummary &s) {
-  const bool micromouse = o.strategy == explore::StrategyKind::floodfill || o.plan.speed_run;
-  if (!micromouse || !s.shortest) return nullptr;
-  return Json{{"known_cells", or_null(s.shortest->known_moves)},
-              {"optimistic_cells", or_null(s.shortest->optimistic_moves)},
-              {"proven", s.shortest->proven()}};
-}
-
 }  // namespace
 
 std::string summary_json(const RunOptions &o, const RunSummary &s) {
-  Json j;
-  j["world"] = o.world;
-  j["size"] = fmt::format("{}x{}", s.width, s.height);
-  j["width"] = s.width;
-  j["height"] = s.height;
-  j["subcells"] = o.subcells;
-  j["model"] = std::string(sensing::to_string(o.model.kind));
-  j["threshold"] = or_null(o.threshold);
-  j["strategy"] = std::string(explore::to_string(o.strategy));
-  j["robot"] = o.robot;
-  j["seed"] = o.simulation.seed;
-  j["end"] = std::string(robot::to_string(s.reason));
-  j["end_message"] = s.message;
-  j["steps"] = s.steps;
-  j["moves"] = s.moves;
-  j["visited"] = s.visited;
-  j["goal"] = o.strategy == explore::StrategyKind::floodfill || o.plan.speed_run
-                  ? Json(s.reached_goal ? "reached" : "not reached")
-                  : Json(nullptr);
-  j["shortest_path"] = shortest_json(o, s);
-  j["reachable"] = s.score.reachable_cells;
-  j["coverage"] = two_decimals(s.score.coverage_percent());
-  j["wall_accuracy"] = two_decimals(s.score.wall_accuracy_percent());
-  add_plan_keys(o, s, j);
-  j["sim_time_s"] = s.sim_time_s;
-  j["wall_time_ms"] = s.wall_time_ms;
+  Json j = report_json(RunReport(o, s));
   j["options"] = options_json(o, s);
   return j.dump(2) + "\n";
 }
@@ -412,7 +357,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.title = options.world;
   input.caption = map_caption(options);
   input.steps = summary.steps;
-  input.summary = summary_pairs(format_summary(options, summary));
+  input.summary = summary_pairs(RunReport(options, summary));
   return replay_html(input);
 }
 

@@ -163,18 +163,4 @@ std::optional<Replay> replay_html(const ReplayInput &input) {
   }
 }
 
-std::vector<std::pair<std::string, std::string>> summary_pairs(const std::string &summary_text) {
-  std::vector<std::pair<std::string, std::string>> pairs;
-  std::size_t start = 0;
-  while (start < summary_text.size()) {
-    std::size_t end = summary_text.find('\n', start);
-    if (end == std::string::npos) end = summary_text.size();
-    const std::string line = summary_text.substr(start, end - start);
-    const std::size_t colon = line.find(": ");
-    if (colon != std::string::npos) pairs.emplace_back(line.substr(0, colon), line.substr(colon + 2));
-    start = end + 1;
-  }
-  return pairs;
-}
-
 }  // namespace app

@@ -60,7 +60,4 @@ std::optional<Replay> replay_html(const ReplayInput &input);
 // The data block's JSON with `moves_per_frame` moves a frame (>= 1), "</" not yet escaped.
 std::string replay_data_json(const ReplayInput &input, int moves_per_frame);
 
-// The summary block (format_summary's text) as (key, value) pairs, in order.
-std::vector<std::pair<std::string, std::string>> summary_pairs(const std::string &summary_text);
-
 }  // namespace app

@@ -130,12 +130,6 @@ TEST_CASE("replay page: self-contained, the data's \"</\" escaped; over the size
   CHECK_FALSE(app::replay_html(input));
 }
 
-TEST_CASE("summary_pairs: the summary block's key: value lines") {
-  CHECK(app::summary_pairs("world: a.txt\ncoverage: 100.00%\n\nend: stopped (quit with q)\n") ==
-        std::vector<std::pair<std::string, std::string>>{
-            {"world", "a.txt"}, {"coverage", "100.00%"}, {"end", "stopped (quit with q)"}});
-}
-
 TEST_CASE("run --out: replay.html has a frame a move, and its changes replayed give map.pgm's map") {
   const TempDir dir;
   const app::RunSummary summary = run_into(dir, "maze8x8.txt", true);
