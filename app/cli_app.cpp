@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
-#include "demo_commands.hpp"
 
 namespace app {
 namespace {
@@ -29,6 +28,8 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   cli.set_version_flag("--version", std::string(MAZE_MAPPER_VERSION), "print the version and exit");
   cli.require_subcommand(0, 1);
   add_run_command(cli, context);
+  add_compare_command(cli, context);
+  add_plan_command(cli, context);
   add_batch_command(cli, context);
   add_demo_command(cli, context);
   add_explain_command(cli, context);

@@ -76,6 +76,39 @@ void run_in_terminal(const RunOptions &options, CommandContext &context) {
   context.status = exit_status(summary);
 }
 
+}  // namespace
+
+std::string default_world() {
+  const std::string relative = "worlds/lab4x4.txt";
+  if (std::filesystem::exists(relative)) return relative;
+  return std::string(MAZE_MAPPER_WORLDS_DIR) + "/lab4x4.txt";
+}
+
+void add_run_command(CLI::App &cli, CommandContext &context) {
+  auto parsed = std::make_shared<RunOptions>();
+  auto no_color = std::make_shared<bool>(false);
+  CLI::App *run = cli.add_subcommand(
+      "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
+  add_exploration_options(*run, *parsed);
+  add_run_only_options(*run, *parsed, *no_color);
+  run->callback([run, parsed, no_color, &context] {
+    RunOptions options = checked_run_options(*run, *parsed, true);
+    const std::vector<std::string> warnings = options_not_applying(*run, options);
+    if (context.run_parse_only != nullptr) {
+      *context.run_parse_only = options;
+      return;
+    }
+    if (options.output.animate && !is_terminal(STDOUT_FILENO)) {
+      throw common::InputError(
+          "--animate redraws a terminal in place and standard output is not one; without --animate the run "
+          "prints the map at each new cell");
+    }
+    print_warnings(warnings);
+    options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
+    run_in_terminal(options, context);
+  });
+}
+
 void add_plan_command(CLI::App &cli, CommandContext &context) {
   auto parsed = std::make_shared<RunOptions>();
   CLI::App *plan = cli.add_subcommand(
@@ -109,41 +142,6 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     const RunSummary summary = run_world(options, std::cout, controls);
     context.status = exit_status(summary);  // 1 when no path is found
   });
-}
-
-}  // namespace
-
-std::string default_world() {
-  const std::string relative = "worlds/lab4x4.txt";
-  if (std::filesystem::exists(relative)) return relative;
-  return std::string(MAZE_MAPPER_WORLDS_DIR) + "/lab4x4.txt";
-}
-
-void add_run_command(CLI::App &cli, CommandContext &context) {
-  auto parsed = std::make_shared<RunOptions>();
-  auto no_color = std::make_shared<bool>(false);
-  CLI::App *run = cli.add_subcommand(
-      "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
-  add_exploration_options(*run, *parsed);
-  add_run_only_options(*run, *parsed, *no_color);
-  run->callback([run, parsed, no_color, &context] {
-    RunOptions options = checked_run_options(*run, *parsed, true);
-    const std::vector<std::string> warnings = options_not_applying(*run, options);
-    if (context.run_parse_only != nullptr) {
-      *context.run_parse_only = options;
-      return;
-    }
-    if (options.output.animate && !is_terminal(STDOUT_FILENO)) {
-      throw common::InputError(
-          "--animate redraws a terminal in place and standard output is not one; without --animate the run "
-          "prints the map at each new cell");
-    }
-    print_warnings(warnings);
-    options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
-    run_in_terminal(options, context);
-  });
-  add_compare_command(cli, context);
-  add_plan_command(cli, context);
 }
 
 RunOptions parse_run_options(int argc, const char *const *argv) {

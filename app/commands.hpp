@@ -24,8 +24,8 @@ struct CommandContext {
   RunOptions *run_parse_only = nullptr;
 };
 
-// Every subcommand above, and the program's own flags (--help, --version), in the order
-// `maze_mapper --help` lists them (cli_app.cpp).
+// Every subcommand below, and the program's own flags (--help, --version), in the order
+// `maze_mapper --help` lists them: one list, in cli_app.cpp.
 void add_commands(CLI::App &cli, CommandContext &context);
 
 // maze_mapper demo 1d: the textbook 1-D log-odds exercise; `demo` alone lists the demos
@@ -34,6 +34,9 @@ void add_demo_command(CLI::App &cli, CommandContext &context);
 
 // maze_mapper explain: the sensor model's numbers (cmd_explain.cpp).
 void add_explain_command(CLI::App &cli, CommandContext &context);
+
+// `map-log LOG.csv [options]` (cmd_map_log.cpp): the bump/depth log homework.
+void add_map_log_command(CLI::App &cli, CommandContext &context);
 
 // Loads a world (maze::load_world) and prints its warnings on stderr, one a line.
 maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides = {});
@@ -45,9 +48,11 @@ void add_show_command(CLI::App &cli, CommandContext &context);
 void add_convert_command(CLI::App &cli, CommandContext &context);
 // `generate WxH [--seed N] [--loops F] [--algorithm dfs|kruskal|prim] [-o FILE]`.
 void add_generate_command(CLI::App &cli, CommandContext &context);
-// `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp); with it `plan`
-// (explore, then a wavefront path; exit status 1 when none is found) and `compare`.
+// `run [WORLD] [options]`: explore and map a world (cmd_run.cpp, run.hpp).
 void add_run_command(CLI::App &cli, CommandContext &context);
+// `plan [WORLD] [--from X,Y] [--to X,Y] [options]`: explore, then a wavefront path on the
+// learned map; exit status 1 when none is found (cmd_run.cpp).
+void add_plan_command(CLI::App &cli, CommandContext &context);
 // `compare [WORLD] --subcells K1,K2,... [options]` (cmd_compare.cpp).
 void add_compare_command(CLI::App &cli, CommandContext &context);
 // The options `maze_mapper run ...` would run with (argv as main gets it: the program, then

@@ -1,6 +1,7 @@
 #pragma once
 // The course demos besides demo 1d, registered under `demo` by add_demo_command
-// (cmd_demo.cpp): `demo pie` (cmd_demo_pie.cpp) and `demo cone` (cmd_demo_cone.cpp).
+// (cmd_demo.cpp): `demo pie` (cmd_demo_pie.cpp) and `demo cone` (cmd_demo_cone.cpp), and the
+// number lists the course commands read. The top-level commands: commands.hpp.
 
 #include <string>
 #include <string_view>
@@ -14,8 +15,6 @@ namespace app {
 
 void add_demo_pie(CLI::App &demo, CommandContext &context);
 void add_demo_cone(CLI::App &demo, CommandContext &context);
-// `map-log LOG.csv [options]` (cmd_map_log.cpp): the bump/depth log homework.
-void add_map_log_command(CLI::App &cli, CommandContext &context);
 
 // "1, 1.5,0.8" -> {1, 1.5, 0.8}; throws common::InputError naming `option`:
 // "--readings item 2 is not a number (got 'x')". Exactly `count` items when count > 0.
