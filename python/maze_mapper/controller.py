@@ -4,13 +4,15 @@ InertialUnit, GPS, DistanceSensor and TouchSensor, with Webots' method names and
 
 Under `python3 -m maze_mapper.run CONTROLLER.py --world WORLD`, `from controller import Robot`
 imports this module, so a Webots controller that uses only these devices runs unchanged.
-Where it differs from Webots (docs/python.md): Lidar.getRangeImage() returns a NumPy float32
-array (one copy of the whole image; it indexes, slices and iterates like Webots' list), a
-disabled sensor reads NaN (a disabled lidar None), and there is no Supervisor, Camera,
-Display, Keyboard or point cloud: the controller sees the devices, never the maze.
+Where it differs from Webots (docs/python.md): Lidar.getRangeImage() returns a RangeImage,
+which behaves as Webots' list of floats without making a Python float of every beam until one
+is asked for (np.asarray(image) is the float32 array itself); a disabled sensor reads NaN (a
+disabled lidar None); and there is no Supervisor, Camera, Display, Keyboard or point cloud:
+the controller sees the devices, never the maze.
 """
 
 import sys
+from collections.abc import Sequence
 
 from . import _native
 
@@ -23,8 +25,64 @@ GPS = _native.GPS
 DistanceSensor = _native.DistanceSensor
 TouchSensor = _native.TouchSensor
 
+class RangeImage(Sequence):
+    """A lidar range image as Webots' Python API hands it, a list of floats (m; inf for no
+    return), kept as one float32 array: indexing gives a float, slicing a list, `+` joins as
+    lists do, iteration, len, min, index and count work as on a list, and np.asarray(image)
+    (or image.array) is the array itself, read-only, no copy."""
+
+    __slots__ = ("_array",)
+
+    def __init__(self, array):
+        self._array = array
+        array.flags.writeable = False
+
+    @property
+    def array(self):
+        return self._array
+
+    def __len__(self):
+        return self._array.shape[0]
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return self._array[index].tolist()
+        return float(self._array[index])
+
+    def __iter__(self):
+        return iter(self._array.tolist())
+
+    def __add__(self, other):
+        return self._array.tolist() + list(other)
+
+    def __radd__(self, other):
+        return list(other) + self._array.tolist()
+
+    def __eq__(self, other):
+        if isinstance(other, (list, tuple, RangeImage)):
+            return self._array.tolist() == list(other)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __array__(self, dtype=None, copy=None):
+        return self._array if dtype is None else self._array.astype(dtype, copy=False)
+
+    def __repr__(self):
+        return repr(self._array.tolist())
+
+
+def _get_range_image(lidar):
+    """The range image (a RangeImage), or None when the lidar is disabled."""
+    array = lidar._range_image()
+    return None if array is None else RangeImage(array)
+
+
+_native.Lidar.getRangeImage = _get_range_image
+_native.Lidar.range_image = property(_get_range_image)
+
 __all__ = ["Robot", "Device", "Lidar", "Motor", "PositionSensor", "InertialUnit", "GPS",
-           "DistanceSensor", "TouchSensor", "SimulationEnded"]
+           "DistanceSensor", "TouchSensor", "RangeImage", "SimulationEnded"]
 
 _SUPPORTED = ("Robot", "Lidar", "Motor", "PositionSensor", "InertialUnit", "GPS",
               "DistanceSensor", "TouchSensor")

@@ -138,8 +138,8 @@ void bind_devices(py::module_ &m) {
 
   py::class_<webots::Lidar, webots::Device> lidar(m, "Lidar");
   def_sampling(lidar);
-  lidar.def("getRangeImage", &range_image)
-      .def_property_readonly("range_image", &range_image)
+  // maze_mapper.controller wraps the array as Webots' list (RangeImage).
+  lidar.def("_range_image", &range_image)
       .def("getHorizontalResolution", &webots::Lidar::getHorizontalResolution)
       .def("getNumberOfLayers", &webots::Lidar::getNumberOfLayers)
       .def("getFov", &webots::Lidar::getFov)

@@ -31,7 +31,10 @@ for _ in range(20):
     robot.step(ts)
 print("moved", gps.getValues()[1] > y + 0.1, enc.getValue() > 3.0, round(robot.getTime(), 3))
 image = lidar.getRangeImage()
-print("image", len(image), type(image[0]).__name__, image.dtype, min(image) > 0)
+import numpy as np
+a = np.asarray(image)
+print("image", len(image), type(image[0]).__name__, a.dtype, a is image.array, min(image) > 0,
+      image[178:181] == [float(r) for r in a[178:181]], len(image[0:2] + image[358:]), image.index(image[90]) <= 90)
 '''
 
 
@@ -43,7 +46,7 @@ def test_a_webots_controller_runs_unchanged(controller_file):
     assert "lidar 360 1 6.283185" in lines
     assert "start 0.5 0.5 90" in lines
     assert "moved True True 0.672" in lines
-    assert "image 360 float32 float32 True" in lines
+    assert "image 360 float float32 True True True 4 True" in lines
     summary = summary_of(out)
     assert summary["end"] == "controller finished" and summary["steps"] == "21"
     assert summary["grid"].startswith("none kept")

@@ -40,7 +40,7 @@ def test_a_grid_renders_the_same_as_its_array():
     grid = maze_mapper.OccupancyGrid(2, 1)
     grid.array[:] = corridor()
     grid.visit(0, 0, "E")
-    assert grid.render() == maze_mapper.render(grid.array, grid)
+    assert grid.render() == maze_mapper.render(grid.array, grid) == maze_mapper.render(grid)
 
 
 def test_unknown_and_threshold():
