@@ -17,6 +17,10 @@ CHECK_GRID = os.path.join(EXAMPLES, "check_grid.py")
 MATRIX = re.compile(r"^cell \((\d+),(\d+)\) log-odds, north row first:\n((?:[-+]\d\.\d\d(?: [-+]\d\.\d\d)*\n)+)", re.M)
 
 
+def no_arrows(text):
+    return re.sub("[↑→↓←]", " ", text)
+
+
 def replay(scans_file):
     """The program's cell model and renderer over the controller's own readings."""
     s = np.load(scans_file)
@@ -46,9 +50,14 @@ def test_the_lab_controllers_map_is_the_programs_for_the_same_readings(name, siz
     assert len(matrices) == grid.visited_count
     for x, y, matrix in matrices:
         assert matrix == grid.cell_matrix(int(x), int(y))
+    # The program's own exploration of the world learns the same walls (the arrows, the
+    # route, differ).
+    truth = maze_mapper.load_world(world(name))
+    programs, _ = maze_mapper.explore_world(truth, subcells=subcells)
+    assert no_arrows(final_map(out, rows)) == no_arrows(programs.render())
     # Scored by the runner as `maze_mapper.score` scores the program's grid.
     summary = summary_of(out)
-    result = maze_mapper.score(maze_mapper.load_world(world(name)), grid)
+    result = maze_mapper.score(truth, grid)
     assert summary["coverage"] == f"{result.coverage_percent:.2f}%" == "100.00%"
     assert summary["wall_accuracy"] == f"{result.wall_accuracy_percent:.2f}%"
     assert "wrong_sides" not in summary
