@@ -15,9 +15,13 @@ against them runs here. Written from the course's documented behaviour; the devi
     go_forward(velocity=1), stop(), velocity_saturation(v, suppress=False)
     wheel_radius (0.045 m), axel_length (0.184 m), timestep (ms), max_motor_velocity (rad/s)
 
-Not here: the course's camera, display and supervisor functions (load_environment,
-teleport_robot, move_to_start): the runner places the robot at the world's start, and a
-controller never sees the maze.
+The course's supervisor functions change nothing here, as the controller never sees or moves
+the maze: load_environment(maze_file) says on stderr that the runner's --world is the maze,
+move_to_start() leaves the robot where the runner placed it (the world's start), and
+teleport_robot() raises NotImplementedError. No camera or display.
+
+Under maze_mapper.run, `from fairis_lib.robot_lib.hambot import HamBot` (the course's import)
+imports this class.
 """
 
 import math
@@ -99,3 +103,14 @@ class HamBot(Robot):
     def go_forward(self, velocity=1):
         for motor in self.all_motors:
             motor.setVelocity(self.velocity_saturation(velocity))
+
+    def load_environment(self, maze_file):
+        print(f"warning: load_environment({maze_file!r}) changes nothing: the maze is the runner's --world",
+              file=sys.stderr)
+
+    def move_to_start(self):
+        """The robot already stands at the world's start, where the runner placed it."""
+
+    def teleport_robot(self, x=0.0, y=0.0, z=0.0, theta=math.pi / 3):
+        raise NotImplementedError("teleport_robot needs a Webots supervisor: a controller here cannot move "
+                                  "the robot by hand")

@@ -1,6 +1,7 @@
 // A student's own arrays and cell lists, read into the program's types.
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <string>
 

@@ -110,8 +110,10 @@ def test_only_one_robot(controller_file):
 
 def test_the_course_robots_helpers(controller_file):
     source = '''
-from maze_mapper.hambot import HamBot
+from fairis_lib.robot_lib.hambot import HamBot
 robot = HamBot()
+robot.load_environment("Lab1_Task1.xml")
+robot.move_to_start()
 print("compass", robot.get_compass_reading(), robot.get_encoder_readings())
 robot.set_left_motor_velocity(-30)
 robot.set_right_motor_velocity(30, suppress=True)
@@ -127,7 +129,8 @@ print("ranges", len(robot.get_lidar_range_image()), robot.max_motor_velocity, ro
     assert "compass 90 [0.0, 0.0]" in lines
     assert "turned True True" in lines
     assert "ranges 360 18.0 0.045 0.184" in lines
-    assert err == "motor velocity -30 is beyond the maximum: set to -18.0\n"
+    assert err == ("warning: load_environment('Lab1_Task1.xml') changes nothing: the maze is the runner's --world\n"
+                   "motor velocity -30 is beyond the maximum: set to -18.0\n")
 
 
 def test_bad_runner_input_is_one_error_line(controller_file, tmp_path):
