@@ -1,0 +1,240 @@
+// The embedded simulator for Python controllers: the runner (maze_mapper.run) builds a
+// Simulation and makes it current; the controller's Robot attaches to it and sees only the
+// webots:: devices (the Webots method names), never the maze.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/stl.h>
+#include <webots/Device.hpp>
+#include <webots/DistanceSensor.hpp>
+#include <webots/GPS.hpp>
+#include <webots/InertialUnit.hpp>
+#include <webots/Lidar.hpp>
+#include <webots/Motor.hpp>
+#include <webots/PositionSensor.hpp>
+#include <webots/Robot.hpp>
+#include <webots/TouchSensor.hpp>
+
+#include "app/profile_json.hpp"
+#include "bindings.hpp"
+#include "common/error.hpp"
+#include "common/random.hpp"
+#include "maze/sim/simulation.hpp"
+#include "maze/world.hpp"
+
+namespace maze_mapper_python {
+
+namespace {
+
+// A simulation of one world and one robot, owned by the runner.
+class PySimulation {
+ public:
+  // max_steps: basic time steps before Robot::step returns -1 (0: no limit).
+  PySimulation(const maze::World &world, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
+               std::int64_t max_steps)
+      : truth_(world.maze), profile_(app::resolve_robot(robot)) {
+    if (max_steps < 0) throw common::InputError("--max-steps must be at least 1 (got " + std::to_string(max_steps) + ")");
+    maze::sim::SimulationOptions options;
+    options.seed = seed;
+    options.noise = noise;
+    options.time_limit_s = static_cast<double>(max_steps) * options.basic_time_step_ms / 1000.0;
+    options.validate();
+    simulation_ = std::make_unique<webots::embedded::Simulation>(truth_, profile_, options);
+  }
+
+  void make_current() {
+    if (!current_) current_ = std::make_unique<webots::embedded::CurrentSimulation>(*simulation_);
+  }
+  void release_current() { current_.reset(); }
+  bool is_current() const { return webots::embedded::current_simulation() == simulation_.get(); }
+
+  double time_s() const { return static_cast<double>(simulation_->time_ms()) / 1000.0; }
+  std::int64_t steps() const { return simulation_->time_ms() / simulation_->basic_time_step_ms(); }
+  const maze::sim::RobotProfile &profile() const { return profile_; }
+  void request_stop() { simulation_->request_stop(); }
+
+  // The device names of the robot, in the order Webots' Robot lists a robot's devices here:
+  // motors, encoders, IMU, GPS, lidars, distance sensors, bumpers.
+  std::vector<std::string> device_names() const {
+    std::vector<std::string> names = {profile_.left_motor, profile_.right_motor, profile_.left_encoder,
+                                      profile_.right_encoder};
+    if (!profile_.imu.empty()) names.push_back(profile_.imu);
+    if (!profile_.gps.empty()) names.push_back(profile_.gps);
+    for (const auto &l : profile_.lidars) names.push_back(l.name);
+    for (const auto &d : profile_.distance_sensors) names.push_back(d.name);
+    for (const auto &b : profile_.bumpers) names.push_back(b.name);
+    return names;
+  }
+
+ private:
+  maze::Maze truth_;
+  maze::sim::RobotProfile profile_;
+  std::unique_ptr<webots::embedded::Simulation> simulation_;
+  std::unique_ptr<webots::embedded::CurrentSimulation> current_;
+};
+
+// The Python simulation object made current last (kept alive by the robots attached to it).
+py::object &current_simulation_object() {
+  static py::object *object = new py::object();  // never destroyed: outlives the interpreter's teardown
+  return *object;
+}
+
+// The controller's handle: a webots::Robot on the current simulation.
+class PyRobot {
+ public:
+  PyRobot() : simulation_(current_simulation_object()) {
+    if (webots::embedded::current_simulation() == nullptr || simulation_.is_none()) {
+      throw common::RuntimeFailure(
+          "no simulation is running: run the controller with python3 -m maze_mapper.run CONTROLLER.py --world WORLD");
+    }
+    robot_ = std::make_unique<webots::Robot>();
+    names_ = simulation_.cast<const PySimulation &>().device_names();
+  }
+  int step(int duration_ms) { return robot_->step(duration_ms); }
+  double time_s() const { return robot_->getTime(); }
+  double basic_time_step_ms() const { return robot_->getBasicTimeStep(); }
+  std::string name() const { return robot_->getName(); }
+  webots::Device *device(const std::string &name) { return robot_->getDevice(name); }
+  const std::vector<std::string> &device_names() const { return names_; }
+
+ private:
+  py::object simulation_;
+  std::unique_ptr<webots::Robot> robot_;
+  std::vector<std::string> names_;
+};
+
+// A disabled device's three values are NaN in the simulator; Webots' Python API returns a list.
+std::vector<double> three(const double *values) { return {values[0], values[1], values[2]}; }
+
+std::optional<py::array_t<float>> range_image(const webots::Lidar &lidar) {
+  const float *ranges = lidar.getRangeImage();
+  if (ranges == nullptr) return std::nullopt;
+  // One copy of the whole image (Webots' Python API also hands a snapshot, a list): it stays
+  // as read when the robot steps on.
+  const auto n = static_cast<py::ssize_t>(lidar.getHorizontalResolution());
+  py::array_t<float> image(n);
+  std::copy(ranges, ranges + n, image.mutable_data());
+  return image;
+}
+
+template <typename Sensor>
+void def_sampling(py::class_<Sensor, webots::Device> &c) {
+  c.def("enable", &Sensor::enable, py::arg("sampling_period"))
+      .def("disable", &Sensor::disable)
+      .def("getSamplingPeriod", &Sensor::getSamplingPeriod)
+      .def_property("sampling_period", &Sensor::getSamplingPeriod, &Sensor::enable);
+}
+
+void bind_devices(py::module_ &m) {
+  py::class_<webots::Device>(m, "Device")
+      .def("getName", &webots::Device::getName)
+      .def("getModel", &webots::Device::getModel)
+      .def_property_readonly("name", &webots::Device::getName)
+      .def_property_readonly("model", &webots::Device::getModel);
+
+  py::class_<webots::Lidar, webots::Device> lidar(m, "Lidar");
+  def_sampling(lidar);
+  // maze_mapper.controller wraps the array as Webots' list (RangeImage).
+  lidar.def("_range_image", &range_image)
+      .def("getHorizontalResolution", &webots::Lidar::getHorizontalResolution)
+      .def("getNumberOfLayers", &webots::Lidar::getNumberOfLayers)
+      .def("getFov", &webots::Lidar::getFov)
+      .def("getMinRange", &webots::Lidar::getMinRange)
+      .def("getMaxRange", &webots::Lidar::getMaxRange)
+      .def("getFrequency", &webots::Lidar::getFrequency)
+      .def_property_readonly("horizontal_resolution", &webots::Lidar::getHorizontalResolution)
+      .def_property_readonly("number_of_layers", &webots::Lidar::getNumberOfLayers)
+      .def_property_readonly("fov", &webots::Lidar::getFov)
+      .def_property_readonly("min_range", &webots::Lidar::getMinRange)
+      .def_property_readonly("max_range", &webots::Lidar::getMaxRange)
+      .def_property_readonly("frequency", &webots::Lidar::getFrequency);
+
+  py::class_<webots::Motor, webots::Device>(m, "Motor")
+      .def("setPosition", &webots::Motor::setPosition, py::arg("position"))
+      .def("setVelocity", &webots::Motor::setVelocity, py::arg("velocity"))
+      .def("getVelocity", &webots::Motor::getVelocity)
+      .def("getMaxVelocity", &webots::Motor::getMaxVelocity)
+      .def_property_readonly("max_velocity", &webots::Motor::getMaxVelocity);
+
+  py::class_<webots::PositionSensor, webots::Device> encoder(m, "PositionSensor");
+  def_sampling(encoder);
+  encoder.def("getValue", &webots::PositionSensor::getValue)
+      .def_property_readonly("value", &webots::PositionSensor::getValue);
+
+  py::class_<webots::InertialUnit, webots::Device> imu(m, "InertialUnit");
+  def_sampling(imu);
+  const auto rpy = [](const webots::InertialUnit &u) { return three(u.getRollPitchYaw()); };
+  imu.def("getRollPitchYaw", rpy).def_property_readonly("roll_pitch_yaw", rpy);
+
+  py::class_<webots::GPS, webots::Device> gps(m, "GPS");
+  def_sampling(gps);
+  const auto values = [](const webots::GPS &g) { return three(g.getValues()); };
+  gps.def("getValues", values).def_property_readonly("value", values);
+
+  py::class_<webots::TouchSensor, webots::Device> touch(m, "TouchSensor");
+  def_sampling(touch);
+  touch.def("getValue", &webots::TouchSensor::getValue).def_property_readonly("value", &webots::TouchSensor::getValue);
+
+  py::class_<webots::DistanceSensor, webots::Device> distance(m, "DistanceSensor");
+  def_sampling(distance);
+  distance.def("getValue", &webots::DistanceSensor::getValue)
+      .def("getMinValue", &webots::DistanceSensor::getMinValue)
+      .def("getMaxValue", &webots::DistanceSensor::getMaxValue)
+      .def("getAperture", &webots::DistanceSensor::getAperture)
+      .def("getType", [](const webots::DistanceSensor &d) { return static_cast<int>(d.getType()); })
+      .def_property_readonly("value", &webots::DistanceSensor::getValue)
+      .def_property_readonly("min_value", &webots::DistanceSensor::getMinValue)
+      .def_property_readonly("max_value", &webots::DistanceSensor::getMaxValue)
+      .def_property_readonly("aperture", &webots::DistanceSensor::getAperture)
+      .def_property_readonly("type", [](const webots::DistanceSensor &d) { return static_cast<int>(d.getType()); });
+  distance.attr("GENERIC") = static_cast<int>(webots::DistanceSensor::GENERIC);
+  distance.attr("INFRA_RED") = static_cast<int>(webots::DistanceSensor::INFRA_RED);
+  distance.attr("SONAR") = static_cast<int>(webots::DistanceSensor::SONAR);
+  distance.attr("LASER") = static_cast<int>(webots::DistanceSensor::LASER);
+}
+
+}  // namespace
+
+void bind_simulator(py::module_ &m) {
+  bind_devices(m);
+
+  py::class_<PySimulation>(m, "Simulation",
+                           "The embedded simulator: a world and one robot (a built-in profile or a FILE.json). "
+                           "maze_mapper.run builds one; a controller only sees its Robot.")
+      .def(py::init<const maze::World &, const std::string &, std::uint64_t, std::optional<double>, std::int64_t>(),
+           py::arg("world"), py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
+           py::arg("noise") = py::none(), py::arg("max_steps") = 0)
+      .def(
+          "make_current",
+          [](py::object self) {
+            self.cast<PySimulation &>().make_current();
+            current_simulation_object() = self;
+          },
+          "Makes this the simulation a controller's Robot() attaches to.")
+      .def(
+          "release_current",
+          [](PySimulation &s) {
+            s.release_current();
+            current_simulation_object() = py::none();
+          })
+      .def("request_stop", &PySimulation::request_stop, "The controller's next step returns -1.")
+      .def_property_readonly("time_s", &PySimulation::time_s)
+      .def_property_readonly("steps", &PySimulation::steps)
+      .def_property_readonly("robot_name", [](const PySimulation &s) { return s.profile().name; })
+      .def("device_names", &PySimulation::device_names);
+
+  py::class_<PyRobot>(m, "RobotHandle")
+      .def(py::init<>())
+      .def("step", &PyRobot::step, py::arg("duration_ms"))
+      .def("getTime", &PyRobot::time_s)
+      .def("getBasicTimeStep", &PyRobot::basic_time_step_ms)
+      .def("getName", &PyRobot::name)
+      .def("device", &PyRobot::device, py::arg("name"), py::return_value_policy::reference_internal)
+      .def("device_names", &PyRobot::device_names);
+}
+
+}  // namespace maze_mapper_python

@@ -1,0 +1,54 @@
+"""What the Python tests share: where the program, the worlds and the examples are (CTest
+passes them, python/CMakeLists.txt), and running a controller under maze_mapper.run."""
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+PROGRAM = os.environ.get("MAZE_MAPPER_PROGRAM", "")
+WORLDS = os.environ.get("MAZE_MAPPER_WORLDS_DIR", "")
+EXAMPLES = os.environ.get("MAZE_MAPPER_EXAMPLES_DIR", "")
+REPO = os.path.dirname(WORLDS)
+
+
+def world(name):
+    return os.path.join(WORLDS, name)
+
+
+def program(*args, check=True):
+    """Runs the maze_mapper program from the top of the repository; (status, stdout, stderr)."""
+    done = subprocess.run([PROGRAM, *args], cwd=REPO, capture_output=True, text=True)
+    if check:
+        assert done.returncode == 0, done.stderr
+    return done.returncode, done.stdout, done.stderr
+
+
+def run_controller(path, *args, cwd=None):
+    """python3 -m maze_mapper.run PATH ARGS...; (status, stdout, stderr)."""
+    done = subprocess.run([sys.executable, "-m", "maze_mapper.run", str(path), *args],
+                          cwd=cwd or REPO, capture_output=True, text=True, timeout=300)
+    return done.returncode, done.stdout, done.stderr
+
+
+def summary_of(text):
+    """The `key: value` lines after the last blank line."""
+    block = text.rstrip("\n").split("\n\n")[-1]
+    return dict(line.split(": ", 1) for line in block.splitlines() if ": " in line)
+
+
+def final_map(text, rows):
+    """The map printed before the summary: the `rows` lines before its blank line."""
+    lines = text.rstrip("\n").split("\n\n")[-2].split("\n")
+    return "\n".join(lines[-rows:]) + "\n"
+
+
+@pytest.fixture
+def controller_file(tmp_path):
+    """Writes a controller's source to a file; returns its path."""
+    def write(source, name="my_controller.py"):
+        path = tmp_path / name
+        path.write_text(source)
+        return path
+    return write
