@@ -22,9 +22,6 @@ namespace maze_mapper_python {
 
 namespace {
 
-mapping::Heading to_heading(maze::Side s) { return static_cast<mapping::Heading>(static_cast<int>(s)); }
-maze::Side to_side(mapping::Heading h) { return static_cast<maze::Side>(static_cast<int>(h)); }
-
 const char *verdict_words(app::SideVerdict v) {
   switch (v) {
     case app::SideVerdict::right: return "right";
@@ -33,15 +30,6 @@ const char *verdict_words(app::SideVerdict v) {
     case app::SideVerdict::unseen_opening: return "an opening never seen";
   }
   return "right";
-}
-
-app::LearnedSide learned(mapping::SideState s) {
-  switch (s) {
-    case mapping::SideState::open: return app::LearnedSide::open;
-    case mapping::SideState::wall: return app::LearnedSide::wall;
-    case mapping::SideState::unknown: return app::LearnedSide::unknown;
-  }
-  return app::LearnedSide::unknown;
 }
 
 // A side the scorer counts as wrong: cell, side ('N', 'E', 'S', 'W') and what is wrong.
@@ -84,20 +72,20 @@ Score score_grid(const maze::Maze &truth, const mapping::OccupancyGrid &grid, co
                                          truth.width(), truth.height()));
   }
   const auto side_of = [&grid, initial_log_odds, threshold](maze::Cell c, maze::Side s) {
-    return learned(mapping::side_state(grid, initial_log_odds, {c.x, c.y}, to_heading(s), threshold));
+    return mapping::side_state(grid, initial_log_odds, {c.x, c.y}, s, threshold);
   };
   const std::vector<bool> visited = visited_cells(visits);
   Score score;
   score.map = app::score_map(truth, visited, side_of);
   app::for_each_scored_side(truth, truth.reachable_from_start(), [&](maze::Cell c, maze::Side s) {
     const app::SideVerdict v = app::judge_side(truth.has_wall(c, s), side_of(c, s));
-    if (v != app::SideVerdict::right) score.wrong.push_back({c.x, c.y, mapping::to_char(to_heading(s)), verdict_words(v)});
+    if (v != app::SideVerdict::right) score.wrong.push_back({c.x, c.y, common::to_char(s), verdict_words(v)});
   });
   const app::WrongSides where = app::wrong_sides_where_looked(truth, visited, side_of);
   score.wrong_where_looked = where.count;
   for (const app::WrongSide &w : where.first) {
     score.first_wrong_where_looked.push_back(
-        {w.cell.x, w.cell.y, mapping::to_char(to_heading(w.side)), verdict_words(w.verdict)});
+        {w.cell.x, w.cell.y, common::to_char(w.side), verdict_words(w.verdict)});
   }
   return score;
 }
@@ -159,7 +147,7 @@ void bind_world(py::module_ &m) {
       .def_property_readonly("start",
                              [](const maze::World &w) { return std::make_pair(w.maze.start().x, w.maze.start().y); })
       .def_property_readonly("start_heading",
-                             [](const maze::World &w) { return std::string(1, mapping::to_char(to_heading(w.maze.start_heading()))); })
+                             [](const maze::World &w) { return std::string(1, common::to_char(w.maze.start_heading())); })
       .def_property_readonly("goals",
                              [](const maze::World &w) {
                                std::vector<std::pair<int, int>> goals;
@@ -173,7 +161,7 @@ void bind_world(py::module_ &m) {
               throw common::InputError(
                   fmt::format("cell ({},{}) is outside the {}x{} maze", x, y, w.maze.width(), w.maze.height()));
             }
-            return w.maze.has_wall({x, y}, to_side(parse_heading(side)));
+            return w.maze.has_wall({x, y}, parse_heading(side));
           },
           py::arg("x"), py::arg("y"), py::arg("side"), "Whether side N, E, S or W of cell (x, y) is walled.")
       .def(
