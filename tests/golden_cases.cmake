@@ -72,7 +72,9 @@ add_golden_test(map_log_room_depth ARGS map-log tests/data/logs/room_depth.csv -
 add_golden_test(map_log_room_depth_25_base_e ARGS map-log tests/data/logs/room_depth.csv --cells 25,25 --boundary 0,6,0,6 --log-base e)
 add_golden_test(map_log_nan STATUS 2 STDERR ARGS map-log tests/data/logs/bad_nan.csv --boundary 0,5,0,5)
 # The truth's verdict: a done run with a side of a visited cell learned wrong says so, exit 1.
-add_golden_test(run_lab4x4_spikes_wrong_map STATUS 1 ARGS run worlds/lab4x4.txt --quiet --spikes 0.2 --seed 3)
+# On last year's robot: this term's (12 m, rounded depth) maps lab4x4 right through these
+# spikes at seeds 1 to 5.
+add_golden_test(run_lab4x4_spikes_wrong_map STATUS 1 ARGS run worlds/lab4x4.txt --quiet --spikes 0.2 --seed 3 --robot hambot-2025)
 # A --speed-run asked for and none made (the goal is walled in) is not the run that was asked: exit 1.
 add_golden_test(run_speed_run_goal_walled_in STATUS 1 STDERR ARGS run tests/data/worlds/goal_walled_in.txt --strategy floodfill --speed-run --quiet)
 
