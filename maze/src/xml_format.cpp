@@ -14,6 +14,8 @@
 
 #include "common/error.hpp"
 #include "maze/validate.hpp"
+#include "lattice.hpp"
+#include "xml_source.hpp"
 
 namespace maze {
 
@@ -23,85 +25,8 @@ namespace {
 constexpr double kGridTolerance = 1e-3;
 constexpr double kHeadingTolerance_rad = 0.01;
 
-struct Source {
-  std::string_view text;
-  const std::string &file;
-  std::vector<std::size_t> line_starts;
-
-  Source(std::string_view t, const std::string &f) : text(t), file(f) {
-    line_starts.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      if (text[i] == '\n') line_starts.push_back(i + 1);
-    }
-  }
-
-  // The element's line, and the column of `attribute=` on that line if it is there. Several
-  // elements on one line are told apart by counting the earlier siblings of the same name.
-  common::SourceLocation at(const tinyxml2::XMLElement &e, const char *attribute = nullptr) const {
-    const int line = e.GetLineNum();
-    if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {file, 0, 0};
-    const std::size_t begin = line_starts[static_cast<std::size_t>(line - 1)];
-    const std::size_t end = static_cast<std::size_t>(line) < line_starts.size()
-                                ? line_starts[static_cast<std::size_t>(line)]
-                                : text.size();
-    const std::string_view text_of_line = text.substr(begin, end - begin);
-    std::size_t column = find_tag(text_of_line, e.Name(), earlier_on_same_line(e));
-    if (attribute != nullptr && column != std::string_view::npos) {
-      column = text_of_line.find(fmt::format(" {}=", attribute), column);
-      if (column != std::string_view::npos) ++column;
-    }
-    if (column == std::string_view::npos) return {file, line, 0};
-    return {file, line, static_cast<int>(column + 1)};
-  }
-
-  static std::size_t earlier_on_same_line(const tinyxml2::XMLElement &e) {
-    std::size_t n = 0;
-    for (auto *p = e.PreviousSiblingElement(e.Name()); p != nullptr && p->GetLineNum() == e.GetLineNum();
-         p = p->PreviousSiblingElement(e.Name())) {
-      ++n;
-    }
-    return n;
-  }
-
-  // Where the (skip + 1)-th tag `<name` starts in the line.
-  static std::size_t find_tag(std::string_view line, std::string_view name, std::size_t skip) {
-    const std::string tag = fmt::format("<{}", name);
-    for (std::size_t at = line.find(tag); at != std::string_view::npos; at = line.find(tag, at + 1)) {
-      const std::size_t after = at + tag.size();
-      const bool whole = after == line.size() || std::string_view(" \t\r\n/>").find(line[after]) != std::string_view::npos;
-      if (!whole) continue;
-      if (skip == 0) return at;
-      --skip;
-    }
-    return std::string_view::npos;
-  }
-
-  common::InputError error(const tinyxml2::XMLElement &e, const char *attribute, std::string message) const {
-    return common::InputError(at(e, attribute), std::move(message));
-  }
-};
-
-std::optional<double> number(const tinyxml2::XMLElement &e, const char *name, const Source &src, bool required) {
-  const char *value = e.Attribute(name);
-  if (value == nullptr) {
-    if (required) throw src.error(e, nullptr, fmt::format("<{}> needs the attribute {}", e.Name(), name));
-    return std::nullopt;
-  }
-  std::string_view text(value);
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-  double result = 0.0;
-  const auto [stop, ec] = std::from_chars(text.data(), text.data() + text.size(), result);
-  const std::string shown(std::string_view(value).substr(0, 20));
-  if (ec != std::errc() || stop != text.data() + text.size() || text.empty()) {
-    throw src.error(e, name, fmt::format("{} is not a number: '{}'", name, shown));
-  }
-  if (!std::isfinite(result) || std::abs(result) > 1e9) {
-    const std::string_view unit = std::string_view(name) == "theta" ? "radians" : "metres";
-    throw src.error(e, name, fmt::format("{} is not a finite number of {}: '{}'", name, unit, shown));
-  }
-  return result;
-}
+using xml::number;
+using xml::Source;
 
 struct Segment {
   const tinyxml2::XMLElement *element;
@@ -159,19 +84,6 @@ constexpr double kMaxThicknessPerCell = 0.25;
 // binary number).
 constexpr double kLatticeTolerance = 1e-6;
 
-// The largest length dividing both a and b (>= 0) to within tol: Euclid on remainders, a
-// remainder within tol of 0 or of the divisor counting as none. 0 when both are 0.
-double common_divisor(double a, double b, double tol) {
-  if (a < b) std::swap(a, b);
-  while (b > tol) {
-    double r = std::fmod(a, b);
-    if (r > b - tol) r = 0.0;
-    a = b;
-    b = r;
-  }
-  return a;
-}
-
 struct Extent {
   double min_x, min_y, max_x, max_y;
 };
@@ -215,7 +127,7 @@ double infer_cell_size(const std::vector<Segment> &segments, const Extent &e, do
     for (const auto &[name, v] : ends) {
       const double offset = v - (name[0] == 'x' ? e.min_x : e.min_y);
       if (offset <= tol) continue;
-      const double next = common_divisor(cell, offset, tol);
+      const double next = lattice::common_divisor(cell, offset, tol);
       if (next > finest) {
         cell = next;
         continue;
@@ -262,48 +174,18 @@ std::vector<StartPoint> read_start_points(const tinyxml2::XMLElement &world, con
   return points;
 }
 
-bool on_lattice(double offset, double cell, double tol) {
-  return std::abs(offset - cell * std::round(offset / cell)) <= tol;
-}
-
-// The coarsest lattice from the origin that puts every start position on a cell centre: a
-// centre sits at an odd number of half cells from the origin, so the cell is the largest
-// length dividing every doubled offset, when each is an odd multiple of it. Nothing when
-// there is no start, a start sits on or before an origin line, the doubled offsets are not
-// all odd multiples of one length, or the cells would be no wider than four walls or too
-// many for a maze.
+// The coarsest lattice from the origin that puts every start position on a cell centre
+// (lattice::centres_lattice), or nothing without start positions.
 std::optional<double> start_lattice(const std::vector<StartPoint> &starts, const Extent &e, double thickness_m,
                                     double tol) {
-  std::vector<double> doubled;
-  double cell = 0.0;
+  if (starts.empty()) return std::nullopt;
+  std::vector<double> offsets;
   for (const StartPoint &p : starts) {
-    for (const double offset : {p.x - e.min_x, p.y - e.min_y}) {
-      if (offset <= tol) return std::nullopt;
-      doubled.push_back(2.0 * offset);
-      cell = common_divisor(cell, 2.0 * offset, tol);
-    }
-  }
-  if (cell <= thickness_m / kMaxThicknessPerCell) return std::nullopt;
-  for (const double d : doubled) {
-    if (!on_lattice(d, cell, 2.0 * tol) || std::llround(d / cell) % 2 == 0) return std::nullopt;
+    offsets.push_back(p.x - e.min_x);
+    offsets.push_back(p.y - e.min_y);
   }
   const double span = std::max(e.max_x - e.min_x, e.max_y - e.min_y);
-  if (span / cell > kMaxMazeSide + 0.5) return std::nullopt;
-  return cell;
-}
-
-// The coarsest lattice that puts every start on a cell centre and that every wall end lies
-// on: starts_cell / m for the smallest odd m that divides walls_cell into whole cells (the
-// centres of starts_cell / m are those of starts_cell, and more); nothing when none is wider
-// than four walls and fits kMaxMazeSide cells over the span.
-std::optional<double> shared_lattice(double starts_cell, double walls_cell, double thickness_m, double span,
-                                     double tol) {
-  for (int m = 1; m <= 2 * kMaxMazeSide + 1; m += 2) {
-    const double cell = starts_cell / m;
-    if (cell <= thickness_m / kMaxThicknessPerCell || span / cell > kMaxMazeSide + 0.5) return std::nullopt;
-    if (on_lattice(walls_cell, cell, tol)) return cell;
-  }
-  return std::nullopt;
+  return lattice::centres_lattice(offsets, thickness_m / kMaxThicknessPerCell, span, tol);
 }
 
 // The walls with an end off the lattice of `cell` from the origin.
@@ -311,8 +193,8 @@ std::vector<const Segment *> walls_off(const std::vector<Segment> &segments, con
                                        double tol) {
   std::vector<const Segment *> off;
   for (const Segment &s : segments) {
-    if (!on_lattice(s.x1 - e.min_x, cell, tol) || !on_lattice(s.y1 - e.min_y, cell, tol) ||
-        !on_lattice(s.x2 - e.min_x, cell, tol) || !on_lattice(s.y2 - e.min_y, cell, tol)) {
+    if (!lattice::on_lattice(s.x1 - e.min_x, cell, tol) || !lattice::on_lattice(s.y1 - e.min_y, cell, tol) ||
+        !lattice::on_lattice(s.x2 - e.min_x, cell, tol) || !lattice::on_lattice(s.y2 - e.min_y, cell, tol)) {
       off.push_back(&s);
     }
   }
@@ -362,7 +244,8 @@ Grid infer_grid(const std::vector<Segment> &segments, const std::vector<StartPoi
     g.cell = walls_cell;
     if (const std::optional<double> starts_cell = start_lattice(starts, e, thickness_m, tol)) {
       const double span = std::max(e.max_x - e.min_x, e.max_y - e.min_y);
-      const std::optional<double> shared = shared_lattice(*starts_cell, walls_cell, thickness_m, span, tol);
+      const std::optional<double> shared =
+          lattice::shared_lattice(*starts_cell, walls_cell, thickness_m / kMaxThicknessPerCell, span, tol);
       const std::vector<const Segment *> off = walls_off(segments, e, *starts_cell, tol);
       if (shared && walls_off(segments, e, *shared, tol).empty()) {
         g.cell = span / std::round(span / *shared);
@@ -551,65 +434,6 @@ XmlRead read_xml(std::string_view text, const std::string &file, const XmlReadOp
   const common::SourceLocation world_at = src.at(world);
   raw.where = [world_at](Cell, Side) { return world_at; };
   return {build_maze(raw), std::move(warnings)};
-}
-
-namespace {
-
-// The course's layout: every merged wall, every start position, the goals, the landmarks,
-// with the maze's south-west corner at (ox, oy).
-std::string write_xml_at(const Maze &maze, double ox, double oy) {
-  const double s = maze.cell_size_m();
-  const double dx = ox - maze.origin_x_m();
-  const double dy = oy - maze.origin_y_m();
-  std::string text = fmt::format(
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<!-- maze_mapper world: {}x{} cells of {} m, walls {} m thick -->\n<world cellSize=\"{}\">\n",
-      maze.width(), maze.height(), s, maze.wall_thickness_m(), s);
-  for (const WallSegment &w : maze.wall_segments()) {
-    fmt::format_to(std::back_inserter(text), "  <wall x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" width=\"{}\"/>\n",
-                   w.x1_m + dx, w.y1_m + dy, w.x2_m + dx, w.y2_m + dy, maze.wall_thickness_m());
-  }
-  for (const Landmark &l : maze.landmarks()) {
-    fmt::format_to(std::back_inserter(text),
-                   "  <landmark x=\"{}\" y=\"{}\" height=\"{}\" red=\"{}\" green=\"{}\" blue=\"{}\"/>\n",
-                   l.x_m + dx, l.y_m + dy, l.height_m, l.red, l.green, l.blue);
-  }
-  constexpr double kTheta[] = {std::numbers::pi / 2, 0.0, -std::numbers::pi / 2, std::numbers::pi};
-  const auto pos = [&](Cell c, Side heading) {
-    fmt::format_to(std::back_inserter(text), "    <pos x=\"{}\" y=\"{}\" theta=\"{}\"/>\n", ox + (c.x + 0.5) * s,
-                   oy + (c.y + 0.5) * s, kTheta[static_cast<int>(heading)]);
-  };
-  // The start first (a file's first position is its start), then the others in order.
-  text += "  <startPositions>\n";
-  pos(maze.start(), maze.start_heading());
-  const std::vector<StartPosition> positions = maze.start_positions();
-  bool start_written = false;
-  for (const StartPosition &p : positions) {
-    if (!start_written && p.cell == maze.start() && p.heading == maze.start_heading()) {
-      start_written = true;
-      continue;
-    }
-    pos(p.cell, p.heading);
-  }
-  text += "  </startPositions>\n";
-  int id = 0;
-  for (const Cell g : maze.goals()) {
-    fmt::format_to(std::back_inserter(text), "  <goal id=\"{}\" x=\"{}\" y=\"{}\"/>\n", id++, ox + (g.x + 0.5) * s,
-                   oy + (g.y + 0.5) * s);
-  }
-  text += "</world>\n";
-  return text;
-}
-
-}  // namespace
-
-std::string write_xml(const Maze &maze) {
-  const double s = maze.cell_size_m();
-  return write_xml_at(maze, -maze.width() * s / 2.0, -maze.height() * s / 2.0);
-}
-
-std::string write_xml_keeping_origin(const Maze &maze) {
-  return write_xml_at(maze, maze.origin_x_m(), maze.origin_y_m());
 }
 
 }  // namespace maze
