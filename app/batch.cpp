@@ -40,10 +40,15 @@ bool looks_like_maze(const fs::path &path) {
   }
 }
 
-BatchItem run_one(RunOptions options, const std::string &world, bool (*interrupted)()) {
+BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()) {
   BatchItem item;
-  item.world = world;
-  options.world = world;
+  item.world = job_name(job);
+  options.world = job.world;
+  if (job.start_position) {
+    options.world_overrides.start.reset();
+    options.world_overrides.random_start = false;
+    options.world_overrides.start_position = job.start_position;
+  }
   NullBuffer buffer;
   std::ostream sink(&buffer);
   RunControls controls;
@@ -126,7 +131,40 @@ WorldList expand_worlds(const std::vector<std::string> &paths) {
   return list;
 }
 
+std::string job_name(const BatchJob &job) {
+  return job.start_position ? fmt::format("{} pos:{}", job.world, *job.start_position) : job.world;
+}
+
+std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds) {
+  std::vector<BatchJob> jobs;
+  for (const std::string &w : worlds) jobs.push_back({w, std::nullopt});
+  return jobs;
+}
+
+std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, const maze::WorldOverrides &overrides) {
+  std::vector<BatchJob> jobs;
+  for (const std::string &w : worlds) {
+    std::size_t count = 0;
+    try {
+      maze::WorldOverrides size_only;
+      size_only.cell_size_m = overrides.cell_size_m;
+      count = maze::load_world(w, size_only).maze.start_positions().size();
+    } catch (const common::InputError &) {
+      jobs.push_back({w, std::nullopt});  // its run says why
+      continue;
+    }
+    for (std::size_t n = 1; n <= count; ++n) jobs.push_back({w, static_cast<int>(n)});
+  }
+  return jobs;
+}
+
 std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<std::string> &worlds,
+                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
+                                 bool (*interrupted)()) {
+  return run_batch(options, plain_jobs(worlds), jobs, progress, interrupted);
+}
+
+std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<BatchJob> &worlds,
                                  int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
                                  bool (*interrupted)()) {
   std::vector<BatchItem> items(worlds.size());
@@ -136,7 +174,7 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<st
   const auto work = [&] {
     for (std::size_t i = next++; i < worlds.size(); i = next++) {
       if (interrupted != nullptr && interrupted()) {
-        items[i].world = worlds[i];
+        items[i].world = job_name(worlds[i]);
         items[i].interrupted = true;
         items[i].error = "not run (interrupted by Ctrl-C)";
         continue;

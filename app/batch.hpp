@@ -41,10 +41,26 @@ struct BatchItem {
   std::optional<RunReport> report;  // when it ran: the goal and speed_run columns come from it
 };
 
-// Runs options (world replaced) on each world with `jobs` threads (>= 1). progress(done,
+// One run of a batch: a world, and the start position to start from (--each-start: pos:N,
+// 1-based), else the one the options say.
+struct BatchJob {
+  std::string world;
+  std::optional<int> start_position;
+};
+// The row's name of a job: "WORLD", or "WORLD pos:N".
+std::string job_name(const BatchJob &job);
+// --each-start: a job per start position of each world (maze::Maze::start_positions); a
+// world that does not load is one job (its run fails with the reason).
+std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, const maze::WorldOverrides &overrides);
+std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds);
+
+// Runs options (world and start replaced) on each job with `jobs` threads (>= 1). progress(done,
 // total) is called from one thread at a time after each run. When interrupted (may be null)
 // returns true, the runs in flight stop at their next step and no other starts; those
 // worlds come back with `interrupted` set.
+std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<BatchJob> &batch_jobs,
+                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
+                                 bool (*interrupted)() = nullptr);
 std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<std::string> &worlds,
                                  int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
                                  bool (*interrupted)() = nullptr);

@@ -44,8 +44,21 @@ std::optional<maze::Side> heading_of(std::string_view text) {
   return std::nullopt;
 }
 
-// --start X,Y[,HEADING]: the cell, and the heading (north unless given).
+// --start X,Y[,HEADING]: the cell, and the heading (north unless given); pos:N, random: the
+// world's N-th start position, or one of them.
 void parse_start(const std::string &text, maze::WorldOverrides &o) {
+  o.start.reset();
+  o.start_position.reset();
+  o.random_start = text == "random";
+  if (o.random_start) return;
+  if (text.starts_with("pos:")) {
+    int n = 0;
+    if (!whole_number(std::string_view(text).substr(4), n) || n < 1) {
+      throw common::InputError(fmt::format("--start pos:N needs N = 1, 2, ... (got '{}')", text));
+    }
+    o.start_position = n;
+    return;
+  }
   const std::size_t second = text.find(',', text.find(',') + 1);
   o.start = cell_of(std::string_view(text).substr(0, second));
   o.start_heading = maze::Side::north;
@@ -124,7 +137,8 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
   add_cell_size_option(command, overrides);
   command.add_option_function<std::string>(
       "--start", [&overrides](const std::string &text) { parse_start(text, overrides); },
-      "X,Y[,HEADING]: start cell, facing N, E, S or W (default the world's start, facing N)");
+      "X,Y[,HEADING], pos:N or random: start cell, facing N, E, S or W (default N); the world's N-th start "
+      "position; or one of them picked by --seed (default the world's start)");
   command.add_option_function<std::string>(
       "--goal",
       [&overrides](const std::string &text) {

@@ -18,7 +18,7 @@ namespace app {
 // description ends "(default <seed's value>)".
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what);
 
-// "hambot, hambot-12m, ...": the built-in robot profiles' names (maze::sim::profiles()).
+// "hambot, hambot-2025, ...": the built-in robot profiles' names (maze::sim::profiles()).
 std::string robot_names();
 
 // "X,Y" (whole numbers, blanks around them allowed) -> the cell; throws common::InputError

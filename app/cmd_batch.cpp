@@ -28,6 +28,7 @@ struct BatchInput {
   int jobs = 0;
   std::string csv;
   std::string shard;                  // --shard K/N
+  bool each_start = false;            // --each-start
   std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
   std::string merge_out;                // batch merge -o FILE
 };
@@ -82,6 +83,8 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   command->add_option("--shard", batch->shard,
                       "K/N: run only the K-th of N contiguous parts of the world list (job arrays; join the "
                       "parts' CSVs with batch merge)");
+  command->add_flag("--each-start", batch->each_start,
+                    "run each world once per start position it states (XML <pos>), a row each");
   add_merge_command(*command, batch);
   add_mapping_run_options(*command, *parsed);
   add_speed_run_option(*command, *parsed);
@@ -91,6 +94,10 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     RunOptions options = checked_run_options(*command, *parsed, false);
     options.output.quiet = true;
     print_warnings(options_not_applying(*command, options));
+    const maze::WorldOverrides &w = options.world_overrides;
+    if (batch->each_start && (w.start || w.start_position || w.random_start)) {
+      throw common::InputError("--each-start runs every start position: leave --start out");
+    }
     if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
     const int jobs = batch->jobs > 0 ? batch->jobs
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -107,7 +114,9 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     std::function<void(std::size_t, std::size_t)> progress;
     if (is_terminal(STDERR_FILENO)) progress = draw_progress;
     const SigintGuard sigint;
-    const std::vector<BatchItem> items = run_batch(options, list.worlds, jobs, progress, &SigintGuard::interrupted);
+    const std::vector<BatchJob> batch_jobs = batch->each_start ? each_start_jobs(list.worlds, options.world_overrides)
+                                                               : plain_jobs(list.worlds);
+    const std::vector<BatchItem> items = run_batch(options, batch_jobs, jobs, progress, &SigintGuard::interrupted);
     if (progress) fmt::print(stderr, "\r\x1b[K");
     const double elapsed_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();

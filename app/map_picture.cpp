@@ -20,6 +20,15 @@ double strength(double l, double one_update) { return std::clamp((l / one_update
 void draw_marks(Canvas &canvas, const mapping::GridGeometry &g, const MapMarks &marks) {
   const int scale = map_scale(g);
   const int cell_px = g.subcells * scale;
+  // Landmarks first: the other marks are drawn over them.
+  const double px_per_m = scale / g.subcell_size_m();
+  for (const LandmarkMark &l : marks.landmarks) {
+    const int x = static_cast<int>(std::lround((l.at.x_m - g.origin.x_m) * px_per_m));
+    const int y = static_cast<int>(std::lround((g.height_cells * g.cell_size_m - (l.at.y_m - g.origin.y_m)) * px_per_m));
+    const int r = std::max(2, static_cast<int>(std::lround(l.radius_m * px_per_m)));
+    canvas.disc(x, y, r + 1, Rgb{0, 0, 0});
+    canvas.disc(x, y, r, l.colour);
+  }
   for (const mapping::Cell goal : marks.goals) {
     const PixelPoint c = cell_centre_px(g, goal);
     const int inset = cell_px / 8;
@@ -60,6 +69,7 @@ Legend map_legend(const std::string &caption, const mapping::GridGeometry &g, co
   }
   legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
   if (!marks.planned.empty()) legend.items.push_back({Swatch::line, kPlannedColour, "planned path"});
+  if (!marks.landmarks.empty()) legend.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
   legend.px_per_m = map_scale(g) / g.subcell_size_m();
   return legend;
 }

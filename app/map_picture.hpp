@@ -11,7 +11,8 @@
 //            for every model (the increments are the set-up's own, see MapTones).
 //   marks    the path (cell centres in order of arrival) in red, the start a green square,
 //            the end (where the robot stopped) a blue disc, each goal cell a gold frame; a
-//            planned path (plan.png) through its sub-cells' centres in magenta
+//            planned path (plan.png) through its sub-cells' centres in magenta; each landmark
+//            a disc of its colour ringed in black
 //   legend   the caption ("model cell, K 3", and a note such as a snapshot's step), what
 //            each tone and mark means, and a scale bar in metres
 // Written with libpng (app/picture.hpp).
@@ -43,10 +44,19 @@ struct MapTones {
 
 Rgb tone(float log_odds, const MapTones &tones);
 
+// A landmark of the world (maze::Landmark), where it stands in the world frame (m), its
+// colour and radius.
+struct LandmarkMark {
+  mapping::Point at;
+  Rgb colour;
+  double radius_m = 0.0;
+};
+
 struct MapMarks {
   std::vector<mapping::Cell> path;   // cells in order of arrival, start first (may be empty)
   std::vector<mapping::Cell> goals;
   std::vector<mapping::SubCell> planned;  // a planned path (plan.png), sub-cell centres, in magenta
+  std::vector<LandmarkMark> landmarks;    // discs of their colour, ringed in black
 };
 
 // Pixels a sub-cell: ceil(100 / K), so a cell is at least 100 px, lowered for big mazes so

@@ -161,7 +161,7 @@ Json or_null(const std::optional<T> &value) {
 
 Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
 
-// --cell-size, --start, --goal as given (null when not).
+// --cell-size, --start (X,Y, pos:N or random), --goal as given (null when not).
 Json world_overrides_json(const maze::WorldOverrides &w) {
   const auto cell = [](maze::Cell c) { return Json::array({c.x, c.y}); };
   Json j;
@@ -171,6 +171,8 @@ Json world_overrides_json(const maze::WorldOverrides &w) {
     j["start"] = cell(*w.start);
     j["start"].push_back(std::string(maze::to_string(w.start_heading)));
   }
+  j["start_position"] = or_null(w.start_position);  // --start pos:N
+  j["random_start"] = w.random_start;               // --start random (by the seed)
   j["goals"] = nullptr;
   if (w.goals) {
     j["goals"] = Json::array();
@@ -300,7 +302,7 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
   const std::vector<std::int64_t> steps = snapshot_steps(summary.steps, count);
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
-    const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}};
+    const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}, files.landmarks};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
     common::write_file_atomically((dir / fmt::format("{:0{}}.png", i + 1, digits)).string(),
                                   png_file(grid, tones, marks, caption));
@@ -332,7 +334,7 @@ void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummar
     const mapping::Point p = files.grid->centre_of(plan.path[i]);
     fmt::format_to(std::back_inserter(csv), "{},{},{},{:.4f},{:.4f}\n", i, plan.path[i].x, plan.path[i].y, p.x_m, p.y_m);
   }
-  MapMarks marks{{}, files.goals, plan.path};
+  MapMarks marks{{}, files.goals, plan.path, files.landmarks};
   const std::string caption = fmt::format("{}, plan to ({},{})", map_caption(options), plan.to.x, plan.to.y);
   common::write_file_atomically((dir / "plan.png").string(),
                                 png_file(*files.grid, map_tones(options, *files.model), marks, caption));
@@ -354,6 +356,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.history = files.history;
   input.tones = map_tones(options, *files.model);
   input.goals = files.goals;
+  input.landmarks = files.landmarks;
   input.title = options.world;
   input.caption = map_caption(options);
   input.steps = summary.steps;
@@ -369,7 +372,7 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
   const MapTones tones = map_tones(options, *files.model);
   common::write_file_atomically((d / "map.png").string(),
-                                png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}}, map_caption(options)));
+                                png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options)));
   common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
   if (options.output.trace) common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);

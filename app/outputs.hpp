@@ -89,6 +89,7 @@ struct RunFiles {
   const explore::Visits *visits = nullptr;
   std::function<LearnedSide(maze::Cell, maze::Side)> learned;
   const GridHistory *history = nullptr;  // --snapshots, replay.html: the run as it went
+  std::vector<LandmarkMark> landmarks;   // the world's landmarks, drawn on the pictures
 };
 
 // Whether a run with --out records a GridHistory: for --snapshots, or for replay.html when

@@ -31,7 +31,8 @@ Json to_json(const LidarSpec &l) {
               {"min_range_m", l.min_range_m},
               {"max_range_m", l.max_range_m},
               {"noise", l.noise},
-              {"frequency_hz", l.frequency_hz}};
+              {"frequency_hz", l.frequency_hz},
+              {"resolution_m", l.resolution_m}};
 }
 
 Json to_json(const LookupRow &r) {
@@ -129,10 +130,10 @@ class Node {
 
 LidarSpec read_lidar(const Node &n) {
   n.object({"name", "horizontal_resolution", "fov_rad", "min_range_m", "max_range_m", "noise",
-            "frequency_hz"});
+            "frequency_hz", "resolution_m"});
   return {n.text("name"),         n.whole_number("horizontal_resolution"), n.number("fov_rad"),
           n.number("min_range_m"), n.number("max_range_m"),                n.number("noise"),
-          n.number("frequency_hz")};
+          n.number("frequency_hz"), n.number("resolution_m")};
 }
 
 LookupRow read_row(const Node &n) {

@@ -12,7 +12,7 @@
 //     "left_encoder": "left wheel encoder", "right_encoder": "right wheel encoder",
 //     "imu": "imu", "gps": "gps",                       ("" : the robot has none)
 //     "lidars": [{"name", "horizontal_resolution", "fov_rad", "min_range_m", "max_range_m",
-//                 "noise", "frequency_hz"}],
+//                 "noise", "frequency_hz", "resolution_m" (0: not quantised)}],
 //     "distance_sensors": [{"name", "angle_rad", "aperture_rad", "rays",
 //                           "lookup_table": [{"distance_m", "value", "noise_fraction"}],
 //                           "type" ("generic", "infra-red" or "sonar"), "gaussian_width"}],

@@ -144,7 +144,15 @@ std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
   }
   out += "\"goals\":";
   append_ints(out, goals);
-  out += ',';
+  out += ",\"landmarks\":[";
+  for (std::size_t i = 0; i < input.landmarks.size(); ++i) {
+    const LandmarkMark &l = input.landmarks[i];
+    fmt::format_to(std::back_inserter(out), "{}{:.4f},{:.4f},{:.4f},{},{},{}", i == 0 ? "" : ",",
+                   (l.at.x_m - g.origin.x_m) / g.cell_size_m, (l.at.y_m - g.origin.y_m) / g.cell_size_m,
+                   l.radius_m / g.cell_size_m, static_cast<int>(l.colour.r), static_cast<int>(l.colour.g),
+                   static_cast<int>(l.colour.b));
+  }
+  out += "],";
   append_path(out, h);
   out += ',';
   append_frames(out, input, moves_per_frame);

@@ -3,11 +3,12 @@
 // a browser - no network, its script, style and the run's data inline. A step slider
 // (<input type="range" id="step">) and play/pause; the learned map at each move drawn from
 // the log-odds in map.png's tones (app/map_picture.hpp); the robot and its heading; the path
-// so far; the goals; the K x K log-odds of the cell under the pointer (the robot's cell when
+// so far; the goals and landmarks; the K x K log-odds of the cell under the pointer (the robot's cell when
 // the pointer is elsewhere); the summary block. The page is app/replay_page.html, built in.
 //
 // The data (a <script type="application/json" id="replay-data"> block, every "</" written
-// "<\/"): the grid's geometry and tones, every arrival (step, cell, heading) and one frame a
+// "<\/"): the grid's geometry and tones, the landmarks (x and y in cells from the grid's
+// south-west corner, radius in cells, red, green, blue 0 to 255: six numbers each), every arrival (step, cell, heading) and one frame a
 // move: the sub-cells that changed since the previous frame, as pairs (gap, value) in
 // ascending flat-index order (OccupancyGrid::index; the first gap is the index itself), the
 // value 2 * round(100 * log-odds) + (1 if occupied by the map's rule, else 0), so the page
@@ -41,6 +42,7 @@ struct ReplayInput {
   const GridHistory *history = nullptr;  // the whole run, with an arrival at the start
   MapTones tones;
   std::vector<mapping::Cell> goals;
+  std::vector<LandmarkMark> landmarks;   // drawn as map.png draws them
   std::string title;                     // the world
   std::string caption;                   // "model cell, K 3"
   std::int64_t steps = 0;                // the run's last step

@@ -27,6 +27,7 @@
 #include "app/profile_json.hpp"
 #include "app/terminal.hpp"
 #include "app/trace_sensors.hpp"
+#include "app/truth_picture.hpp"
 
 namespace app {
 namespace {
@@ -399,7 +400,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   if (!out_dir.empty()) {
     RunFiles files{&result.grid, &model, &result.path, &state.trace, {}, &truth, &result.visits,
                    learned_sides(result, style.initial_log_odds, style.threshold),
-                   state.history ? &*state.history : nullptr};
+                   state.history ? &*state.history : nullptr, landmark_marks(truth)};
     for (const maze::Cell goal : truth.goals()) files.goals.push_back(to_mapping(goal));
     write_outputs(out_dir, options, summary, files);
   }

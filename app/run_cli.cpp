@@ -137,6 +137,7 @@ void add_exploration_options(CLI::App &command, RunOptions &o) {
 RunOptions checked_run_options(const CLI::App &command, RunOptions options, bool with_default_world) {
   if (command.count("--robot") == 0) options.robot = std::string(default_robot(options.model.kind));
   if (with_default_world && options.world.empty()) options.world = default_world();
+  options.world_overrides.random_start_seed = options.simulation.seed;  // --start random
   validate(options);
   return options;
 }

@@ -1,6 +1,7 @@
 #include "app/truth_picture.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -21,6 +22,19 @@ struct TruthLayout {
   int left(maze::Cell c) const { return side_px + c.x * cell_px; }
   int top(maze::Cell c) const { return side_px + (height_cells - 1 - c.y) * cell_px; }
 };
+
+// Each landmark a disc of its colour and the course's radius, ringed in black.
+void draw_landmarks(Canvas &canvas, const TruthLayout &l, const maze::Maze &m) {
+  const double px_per_m = l.cell_px / m.cell_size_m();
+  for (const LandmarkMark &mark : landmark_marks(m)) {
+    const int r = std::max(2, static_cast<int>(std::lround(mark.radius_m * px_per_m)));
+    const int x = l.side_px + static_cast<int>(std::lround((mark.at.x_m - m.origin_x_m()) * px_per_m));
+    const int y = l.side_px +
+                  static_cast<int>(std::lround((m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m));
+    canvas.disc(x, y, r + 1, Rgb{0, 0, 0});
+    canvas.disc(x, y, r, mark.colour);
+  }
+}
 
 TruthLayout layout_of(const TruthInput &in) {
   mapping::GridGeometry g;
@@ -64,6 +78,7 @@ void draw_cells(Canvas &canvas, const TruthLayout &l, const TruthInput &in, cons
       }
     }
   }
+  draw_landmarks(canvas, l, m);  // first: the goals and the start are drawn over them
   for (const maze::Cell goal : m.goals()) {
     const int inset = l.cell_px / 8;
     canvas.frame(l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset,
@@ -88,6 +103,7 @@ Legend truth_legend(const TruthInput &in, const TruthCounts &counts, const Truth
                   {Swatch::line, kUnseenColour, fmt::format("unseen opening ({})", counts.unseen_opening)},
                   {Swatch::box, kUnvisitedTone, "not visited"},
                   {Swatch::box, kUnreachableTone, "unreachable"}};
+  if (!in.truth->landmarks().empty()) legend.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
   legend.px_per_m = l.cell_px / in.truth->cell_size_m();
   return legend;
 }
@@ -101,6 +117,16 @@ MapScore TruthCounts::score() const {
   s.sides = right + missed + phantom + unseen_opening;
   s.sides_correct = right;
   return s;
+}
+
+std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth) {
+  const auto channel = [](double v) { return static_cast<unsigned char>(std::lround(255.0 * v)); };
+  std::vector<LandmarkMark> marks;
+  for (const maze::Landmark &l : truth.landmarks()) {
+    marks.push_back({mapping::Point{l.x_m, l.y_m}, Rgb{channel(l.red), channel(l.green), channel(l.blue)},
+                     maze::kLandmarkRadius_m});
+  }
+  return marks;
 }
 
 int truth_side_px(int cell_px) { return std::max(2, cell_px / 10); }

@@ -12,7 +12,8 @@
 //              phantom         kPhantomColour (magenta): a wall the map invented
 //              unseen opening  kUnseenColour (blue-grey), the middle half of the side only
 //            the walls of unreachable cells, not scored, in kUnscoredWallColour
-//   marks    the start a green square, the goals gold frames (app/map_picture.hpp)
+//   marks    the start a green square, the goals gold frames (app/map_picture.hpp), each
+//            landmark a disc of its colour ringed in black, as wide as the course's cylinder
 //   legend   the caption, "wall_accuracy 97.50% (156/160 sides)" and "coverage 93.75%
 //            (15/16 cells)", the numbers of the summary, then the colours with the counts
 //            ("missed (2)", ...) and a scale bar in metres.
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "app/evaluation.hpp"
+#include "app/map_picture.hpp"
 #include "app/picture.hpp"
 #include "maze/maze.hpp"
 
@@ -61,5 +63,8 @@ TruthCounts count_verdicts(const TruthInput &input);
 int truth_side_px(int cell_px);
 
 Canvas truth_picture(const TruthInput &input);
+
+// The maze's landmarks as the pictures mark them.
+std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth);
 
 }  // namespace app

@@ -15,6 +15,7 @@
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
 #include "maze/world.hpp"
+#include "maze/xml_format.hpp"
 
 namespace app {
 
@@ -40,11 +41,14 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     std::string world, out;
     maze::WorldOverrides overrides;
     WebotsExport wbt;
+    bool keep_origin = false;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
   cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
   add_cell_size_option(*cmd, args->overrides);
+  cmd->add_flag("--keep-origin", args->keep_origin,
+               ".xml: keep the world's own origin (default centred on (0, 0), as the course's files are)");
   cmd->add_option("--robot", args->wbt.robot,
                   fmt::format(".wbt: the robot the world carries, one of {} (default {})", robot_names(), args->wbt.robot));
   cmd->add_option("--model", args->wbt.model,
@@ -62,10 +66,15 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
                    option);
       }
     }
+    if (format != maze::Format::xml && args->keep_origin) {
+      fmt::print(stderr, "warning: --keep-origin has no effect: only an .xml world is centred\n");
+    }
     const maze::Maze maze = load_world_reporting(args->world, args->overrides).maze;
     if (format == maze::Format::wbt) {
       maze::write_file_atomically(
           args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));
+    } else if (format == maze::Format::xml && args->keep_origin) {
+      maze::write_file_atomically(args->out, maze::write_xml_keeping_origin(maze));
     } else {
       maze::save_world(maze, args->out);
     }

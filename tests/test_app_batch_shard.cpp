@@ -130,3 +130,27 @@ TEST_CASE("batch merge: a row that ended incomplete, wrong or without progress i
   CHECK_FALSE(rows[3].ok);
   fs::remove(file);
 }
+
+TEST_CASE("batch --each-start: a row per start position, each run from its own start") {
+  const std::string arena = std::string(TEST_DATA_DIR) + "/worlds/course_arena5_starts.xml";
+  const std::string lab = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  const std::string missing = std::string(WORLDS_DIR) + "/no-such-world.txt";
+  const std::vector<app::BatchJob> jobs = app::each_start_jobs({arena, lab, missing}, {});
+  REQUIRE(jobs.size() == 27);
+  CHECK(app::job_name(jobs[0]) == arena + " pos:1");
+  CHECK(app::job_name(jobs[24]) == arena + " pos:25");
+  CHECK(app::job_name(jobs[25]) == lab + " pos:1");
+  CHECK(app::job_name(jobs[26]) == missing);  // its row says why it did not run
+  app::RunOptions options;
+  options.output.quiet = true;
+  const std::vector<app::BatchJob> some{jobs[0], jobs[2], jobs[26]};
+  const std::vector<app::BatchItem> items = app::run_batch(options, some, 1, {});
+  REQUIRE(items.size() == 3);
+  CHECK(items[0].ok);
+  CHECK(items[1].ok);
+  CHECK(items[0].world == arena + " pos:1");
+  // pos:1 and pos:3 start in different cells, so their searches differ.
+  CHECK(items[0].summary.moves != items[1].summary.moves);
+  CHECK_FALSE(items[2].ran);
+  CHECK(items[2].bad_input);
+}

@@ -95,3 +95,23 @@ TEST_CASE("micromouse maps lab4x4 at 0.18 m cells with 12 mm walls (cell and ray
     CHECK(s.score.wall_accuracy_percent() == 100.0);
   }
 }
+
+TEST_CASE("run command line: --start pos:N and --start random, the latter by --seed") {
+  const app::RunOptions third = parse_run({"--start", "pos:3"});
+  CHECK(third.world_overrides.start_position == std::optional<int>{3});
+  CHECK_FALSE(third.world_overrides.start.has_value());
+  CHECK_FALSE(third.world_overrides.random_start);
+  const app::RunOptions random = parse_run({"--start", "random", "--seed", "9"});
+  CHECK(random.world_overrides.random_start);
+  CHECK(random.world_overrides.random_start_seed == 9);
+  CHECK_FALSE(random.world_overrides.start_position.has_value());
+  for (const char *bad : {"pos:0", "pos:", "pos:x", "pos:-1"}) {
+    CAPTURE(bad);
+    try {
+      parse_run({"--start", bad});
+      FAIL("no error");
+    } catch (const common::InputError &e) {
+      CHECK(e.diagnostic() == std::string("error: --start pos:N needs N = 1, 2, ... (got '") + bad + "')");
+    }
+  }
+}

@@ -126,7 +126,7 @@ TEST_CASE("map.png marks the end of the path with a blue disc") {
   g.width_cells = 3;
   g.height_cells = 2;
   const mapping::OccupancyGrid grid(g, 0.0f);
-  const app::MapMarks marks{{{0, 0}, {1, 0}, {1, 1}}, {{2, 1}}, {}};
+  const app::MapMarks marks{{{0, 0}, {1, 0}, {1, 1}}, {{2, 1}}, {}, {}};
   const app::Canvas canvas = app::map_picture(grid, app::MapTones{}, marks, "model cell, K 3");
   const app::PixelPoint end = app::cell_centre_px(g, {1, 1});
   CHECK(end.x == 153);

@@ -145,16 +145,16 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   CHECK(json.at("options").at("simulation").at("noise") == 0.0);
   CHECK(json.at("options").at("sensor").at("p_occ") == 0.6);
   CHECK(json.at("options").at("sensor").at("clamp").is_null());
-  CHECK(json.at("options").at("world_overrides").dump() == R"({"cell_size_m":null,"goals":null,"start":null})");
+  CHECK(json.at("options").at("world_overrides").dump() == R"({"cell_size_m":null,"goals":null,"random_start":false,"start":null,"start_position":null})");
 
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());
   CHECK(csv[0] == "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated,"
                   "gps_x_m,gps_y_m,imu_yaw_rad");
-  // hambot's lidar rotates at 12 Hz: the first scan waits a revolution (3 steps) at rest.
-  // Its GPS and IMU have no noise: the pose it reads is the true one.
-  CHECK(csv[1] == "1,0.032,0.5000,0.5000,1.5708,0,0,start,0,0.5000,0.5000,1.5708");
-  CHECK(csv[4] == "4,0.128,0.5000,0.5000,1.5708,0,0,rest,8,0.5000,0.5000,1.5708");
+  // hambot's lidar is fixed: the first scan is at once, in the start step, and the robot
+  // drives off the next. Its GPS and IMU have no noise: the pose it reads is the true one.
+  CHECK(csv[1] == "1,0.032,0.5000,0.5000,1.5708,0,0,start,8,0.5000,0.5000,1.5708");
+  CHECK(csv[4] == "4,0.128,0.5000,0.5432,1.5708,0,0,drive,0,0.5000,0.5432,1.5708");
   std::size_t updated = 0;
   for (std::size_t i = 1; i < csv.size(); ++i) {
     std::size_t at = 0;

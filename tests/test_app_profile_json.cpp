@@ -43,9 +43,10 @@ TEST_CASE("profile JSON: every built-in reads back to an equal profile, bit for 
 TEST_CASE("profile JSON: units in the key names, doubles in their shortest exact form") {
   const std::string text = app::profile_to_json(maze::sim::default_profile());
   CHECK(text.find("\"wheel_radius_m\": 0.045,") != std::string::npos);
-  CHECK(text.find("\"max_range_m\": 3.0,") != std::string::npos);
+  CHECK(text.find("\"max_range_m\": 12.0,") != std::string::npos);
   CHECK(text.find("\"fov_rad\": 6.283185307179586,") != std::string::npos);
-  CHECK(text.find("\"frequency_hz\": 12.0") != std::string::npos);
+  CHECK(text.find("\"frequency_hz\": 0.0,") != std::string::npos);
+  CHECK(text.find("\"resolution_m\": 0.01") != std::string::npos);
   CHECK(text.find("\"bumpers\": []") != std::string::npos);
   const std::string ir = app::profile_to_json(maze::sim::find_profile("ir-ring"));
   CHECK(ir.find("\"angle_rad\": 0.7853981633974483,") != std::string::npos);
@@ -53,7 +54,7 @@ TEST_CASE("profile JSON: units in the key names, doubles in their shortest exact
 
 TEST_CASE("profile JSON: an edited value loads") {
   const maze::sim::RobotProfile p =
-      app::profile_from_json(edited("\"max_range_m\": 3.0", "\"max_range_m\": 5.5"), "r.json");
+      app::profile_from_json(edited("\"max_range_m\": 12.0", "\"max_range_m\": 5.5"), "r.json");
   CHECK(p.lidars.at(0).max_range_m == 5.5);
 }
 
@@ -69,11 +70,15 @@ TEST_CASE("profile JSON: malformed JSON is FILE:LINE:COL") {
 }
 
 TEST_CASE("profile JSON: a bad value, an unknown key, a missing one or a wrong type names its key path") {
-  CHECK(load_error(edited("\"max_range_m\": 3.0", "\"max_range_m\": 0.01")) ==
-        "r.json: error: lidars[0].max_range_m must be greater than min_range_m (got 0.01 <= 0.07)");
+  CHECK(load_error(edited("\"max_range_m\": 12.0", "\"max_range_m\": 0.01")) ==
+        "r.json: error: lidars[0].max_range_m must be greater than min_range_m (got 0.01 <= 0.05)");
   CHECK(load_error(edited("\"max_range_m\"", "\"max_rang_m\"")) ==
         "r.json: error: lidars[0].max_rang_m is not a known key (known: name, horizontal_resolution, "
-        "fov_rad, min_range_m, max_range_m, noise, frequency_hz)");
+        "fov_rad, min_range_m, max_range_m, noise, frequency_hz, resolution_m)");
+  CHECK(load_error(edited("\"resolution_m\": 0.01", "\"resolution_m\": -1")) ==
+        "r.json: error: lidars[0].resolution_m must be a finite number >= 0 (got -1)");
+  CHECK(load_error(edited("\"resolution_m\": 0.01", "\"resolution_m\": \"1 cm\"")) ==
+        "r.json: error: lidars[0].resolution_m must be a number");
   CHECK(load_error(edited("\"gps\": \"gps\",", "")) == "r.json: error: gps is missing");
   CHECK(load_error(edited("\"horizontal_resolution\": 360", "\"horizontal_resolution\": 360.5")) ==
         "r.json: error: lidars[0].horizontal_resolution must be a whole number");

@@ -186,8 +186,8 @@ namespace {
 
 // Issue 14: at the scale where long views broke runs (corridors longer than the lidar's
 // range, seen end-on, taken for dropped beams; runs ended "done" at 5 % coverage). Every
-// combination of generator, loops, K, lidar model, lidar range (the course robot's 3 m, the
-// 12 m one) and faults (none, or 5 % dropout + 1 % spikes) at 128 x 128; at 256 x 256 one
+// combination of generator, loops, K, lidar model, lidar (this term's fixed 12 m, last
+// year's rotating 3 m) and faults (none, or 5 % dropout + 1 % spikes) at 128 x 128; at 256 x 256 one
 // run per generator, model and range, the other factors turning with the index. Each run must
 // end done with 100 % coverage and at least 99.9 % of the sides right.
 struct LargeRun {
@@ -201,7 +201,8 @@ struct LargeRun {
 };
 
 constexpr maze::Algorithm kAlgorithms[] = {maze::Algorithm::dfs, maze::Algorithm::kruskal, maze::Algorithm::prim};
-const char *const kLidarRobots[] = {"hambot", "hambot-12m"};
+// The default robot (a fixed 12 m lidar) and last year's (a rotating 3 m one): long views and short.
+const char *const kLidarRobots[] = {"hambot", "hambot-2025"};
 
 void check_large_run(const LargeRun &r, int index) {
   maze::GeneratorOptions g;

@@ -134,7 +134,7 @@ TEST_CASE("webots export: a model the robot cannot sense with is refused") {
   options.robot = "ir-ring";
   options.model = "cell";
   CHECK_THROWS_WITH_AS(app::webots_world(lab4x4(), "lab4x4", options),
-                       "robot 'ir-ring' has no lidar, which the 'cell' model needs (robots with lidar: hambot, hambot-12m, micromouse)", common::InputError);
+                       "robot 'ir-ring' has no lidar, which the 'cell' model needs (robots with lidar: hambot, hambot-2025, hambot-12m, micromouse)", common::InputError);
 }
 
 TEST_CASE("webots controller: on the embedded simulator it prints run's maps and matrices, no truth") {

@@ -44,10 +44,24 @@ bool same_walls(const maze::Maze &a, const maze::Maze &b) {
   return a.start() == b.start() && a.start_heading() == b.start_heading();
 }
 
+// m moved so that its centre is the origin, as convert writes XML by default.
+maze::Maze centred(maze::Maze m) {
+  const double s = m.cell_size_m();
+  m.set_physical(s, m.wall_thickness_m(), -m.width() * s / 2.0, -m.height() * s / 2.0);
+  return m;
+}
+
 void check_round_trips(const maze::Maze &m) {
   // The text map and XML keep everything our worlds use; num keeps walls and the start.
   CHECK(maze::read_text_map(maze::write_text_map(m), "t") == m);
-  CHECK(maze::read_xml(maze::write_xml(m), "x") == m);
+  CHECK(maze::read_xml(maze::write_xml_keeping_origin(m), "x") == m);
+  const std::string xml = maze::write_xml(m);
+  CHECK(maze::read_xml(xml, "x") == centred(m));
+  CHECK(maze::write_xml(maze::read_xml(xml, "x")) == xml);
+  // Each run of collinear walls is one <wall>.
+  std::size_t walls = 0;
+  for (std::size_t at = xml.find("<wall "); at != std::string::npos; at = xml.find("<wall ", at + 1)) ++walls;
+  CHECK(walls == m.wall_segments().size());
   const maze::Maze from_num = maze::read_num(maze::write_num(m), "n");
   CHECK(same_walls(from_num, m));
   CHECK(from_num.goals().empty());
@@ -131,11 +145,11 @@ TEST_CASE("formats: XML written and read back is the same maze, small cells far 
   xml += "</world>";
   const maze::Maze m = maze::read_xml(xml, "f");
   REQUIRE(m.width() == 200);
-  const std::string written = maze::write_xml(m);
+  const std::string written = maze::write_xml_keeping_origin(m);
   const maze::Maze again = maze::read_xml(written, "g");
   CHECK(again.cell_size_m() == m.cell_size_m());
   CHECK(again == m);
-  CHECK(maze::write_xml(again) == written);
+  CHECK(maze::write_xml_keeping_origin(again) == written);
 }
 
 TEST_CASE("formats: without an S the start is the south-west cell facing north") {
@@ -168,7 +182,7 @@ TEST_CASE("formats: XML infers cell size and origin, reads runs, start heading a
   CHECK(m.start_heading() == maze::Side::west);
   CHECK(m.goals() == std::vector<maze::Cell>{{1, 1}});
   // Written back, it reads as the same maze (physical set-up to rounding).
-  const maze::Maze again = maze::read_xml(maze::write_xml(m), "g");
+  const maze::Maze again = maze::read_xml(maze::write_xml_keeping_origin(m), "g");
   CHECK(maze::write_text_map(again) == maze::write_text_map(m));
   CHECK(again.start_heading() == maze::Side::west);
   CHECK(again.cell_size_m() == doctest::Approx(0.3));
@@ -276,10 +290,20 @@ TEST_CASE("formats: --cell-size, --start and --goal apply to the world loaded") 
   CHECK(w.maze.start() == maze::Cell{3, 0});
   CHECK(w.maze.start_heading() == maze::Side::west);
   CHECK(w.maze.goals() == std::vector<maze::Cell>{{1, 1}, {2, 2}});
-  // An XML world keeps its own size: the same one is accepted, another refused.
+  // An XML world that states no cellSize reads on the lattice --cell-size chooses (its walls
+  // on it); one written by convert states its own, and another is refused.
   maze::WorldOverrides same;
   same.cell_size_m = 0.5;
   CHECK(maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_lattice.xml", same).maze.cell_size_m() == 0.5);
+  CHECK(maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.xml", same).maze.width() == 8);
+  const std::string stated = maze::read_file(std::string(WORLDS_DIR) + "/lab4x4.xml");
+  try {
+    (void)maze::read_xml(maze::write_xml(maze::read_xml(stated, "lab4x4.xml")), "w.xml", maze::XmlReadOptions{0.5});
+    FAIL("no error");
+  } catch (const common::InputError &e) {
+    CHECK(e.diagnostic() == "error: --cell-size 0.5 m disagrees with the cellSize 1 m that w.xml states; leave "
+                            "--cell-size out");
+  }
   maze::WorldOverrides outside;
   outside.goals = std::vector<maze::Cell>{{0, 0}, {4, 0}};
   try {
@@ -288,4 +312,21 @@ TEST_CASE("formats: --cell-size, --start and --goal apply to the world loaded") 
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() == "error: --goal 4,0 is outside the 4x4 maze");
   }
+}
+
+TEST_CASE("convert to XML: centred on (0, 0), collinear walls merged, as the course writes its mazes") {
+  const maze::Maze m = maze::read_text_map(maze::read_file(std::string(WORLDS_DIR) + "/lab4x4.txt"), "lab4x4.txt");
+  const std::string xml = maze::write_xml(m);
+  // The 4 x 4 m frame from -2 to 2: its south side one wall, not four.
+  CHECK(xml.find("<wall x1=\"-2\" y1=\"-2\" x2=\"2\" y2=\"-2\" width=\"0.012\"/>") != std::string::npos);
+  CHECK(xml.find("<wall x1=\"-2\" y1=\"-2\" x2=\"-1\" y2=\"-2\"") == std::string::npos);
+  // The start (0,0) on its centre, facing north; the goal (3,3) on its centre.
+  CHECK(xml.find("<pos x=\"-1.5\" y=\"-1.5\" theta=\"1.5707963267948966\"/>") != std::string::npos);
+  CHECK(xml.find("<goal id=\"0\" x=\"1.5\" y=\"1.5\"/>") != std::string::npos);
+  const maze::Maze back = maze::read_xml(xml, "lab4x4.xml");
+  CHECK(back.origin_x_m() == -2.0);
+  CHECK(back.origin_y_m() == -2.0);
+  CHECK(maze::write_text_map(back) == maze::write_text_map(m));
+  // --keep-origin: from (0, 0) as the world has it.
+  CHECK(maze::write_xml_keeping_origin(m).find("<wall x1=\"0\" y1=\"0\" x2=\"4\" y2=\"0\"") != std::string::npos);
 }

@@ -30,9 +30,9 @@ maze::sim::SimulationOptions middle_of_3x3() {
   return o;
 }
 
-// hambot's rotating lidar after a whole revolution at rest (3 steps of 32 ms at 12 Hz).
+// hambot-2025's rotating lidar after a whole revolution at rest (3 steps of 32 ms at 12 Hz).
 std::vector<float> scan_once(const maze::sim::SimulationOptions &o) {
-  Simulation sim(maze::Maze(3, 3), maze::sim::default_profile(), o);
+  Simulation sim(maze::Maze(3, 3), maze::sim::find_profile("hambot-2025"), o);
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   for (int i = 0; i < 3; ++i) REQUIRE(sim.robot().step(32) == 0);

@@ -18,6 +18,7 @@ maze::sim::LidarSpec lidar(int beams, double fov_rad) {
   s.horizontal_resolution = beams;
   s.fov_rad = fov_rad;
   s.max_range_m = 3.0;
+  s.frequency_hz = 12.0;  // a rotating head: its beams on fov/2 - i fov/N
   return s;
 }
 

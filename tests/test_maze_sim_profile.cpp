@@ -24,22 +24,41 @@ TEST_CASE("profiles: hambot is the default and is the course robot exactly") {
   CHECK(p.lidars[0].name == "lidar");
   CHECK(p.lidars[0].horizontal_resolution == 360);
   CHECK(p.lidars[0].fov_rad == 2.0 * std::numbers::pi);
-  CHECK(p.lidars[0].min_range_m == 0.07);
-  CHECK(p.lidars[0].max_range_m == 3.0);
+  CHECK(p.lidars[0].min_range_m == 0.05);
+  CHECK(p.lidars[0].max_range_m == 12.0);
   CHECK(p.lidars[0].noise == 0.000833);
-  CHECK(p.lidars[0].frequency_hz == 12.0);
+  CHECK(p.lidars[0].frequency_hz == 0.0);  // type "fixed"
+  CHECK(p.lidars[0].resolution_m == 0.01);
+  CHECK(p.axle_m == 0.184);
+  CHECK(p.wheel_radius_m == 0.045);
+  CHECK(p.max_wheel_velocity_rad_s == 18.0);
   CHECK(p.bumpers.empty());
   CHECK(p.distance_sensors.empty());
 }
 
-TEST_CASE("profiles: hambot-12m is hambot with a 12 m lidar; micromouse fits a 0.18 m cell") {
+TEST_CASE("profiles: hambot-2025 is last year's robot; hambot-12m its rotating lidar reaching 12 m") {
+  maze::sim::RobotProfile last_year = maze::sim::find_profile("hambot-2025");
+  REQUIRE(last_year.lidars.size() == 1);
+  CHECK(last_year.lidars[0].min_range_m == 0.07);
+  CHECK(last_year.lidars[0].max_range_m == 3.0);
+  CHECK(last_year.lidars[0].frequency_hz == 12.0);
+  CHECK(last_year.lidars[0].resolution_m == 0.0);
+  // The same wheels and devices as this term's robot: only the lidar differs.
+  maze::sim::RobotProfile as_today = last_year;
+  as_today.name = "hambot";
+  as_today.description = maze::sim::default_profile().description;
+  as_today.lidars = maze::sim::default_profile().lidars;
+  CHECK(as_today == maze::sim::default_profile());
+
   maze::sim::RobotProfile long_range = maze::sim::find_profile("hambot-12m");
   CHECK(long_range.lidars.at(0).max_range_m == 12.0);
   long_range.lidars[0].max_range_m = 3.0;
-  long_range.name = "hambot";
-  long_range.description = maze::sim::default_profile().description;
-  CHECK(long_range == maze::sim::default_profile());
+  long_range.name = "hambot-2025";
+  long_range.description = last_year.description;
+  CHECK(long_range == last_year);
+}
 
+TEST_CASE("profiles: micromouse fits a 0.18 m cell") {
   const maze::sim::RobotProfile &mouse = maze::sim::find_profile("micromouse");
   const double between_walls_m = 0.18 - 0.012;
   CHECK(2.0 * mouse.body_radius_m < between_walls_m / 2.0);  // room to turn and to miss
@@ -73,7 +92,10 @@ std::string validation_error(const maze::sim::RobotProfile &p) {
 TEST_CASE("validate_profile: the first bad field by its key path") {
   maze::sim::RobotProfile p = maze::sim::default_profile();
   p.lidars[0].max_range_m = 0.05;
-  CHECK(validation_error(p) == "error: lidars[0].max_range_m must be greater than min_range_m (got 0.05 <= 0.07)");
+  CHECK(validation_error(p) == "error: lidars[0].max_range_m must be greater than min_range_m (got 0.05 <= 0.05)");
+  p = maze::sim::default_profile();
+  p.lidars[0].resolution_m = -0.01;
+  CHECK(validation_error(p) == "error: lidars[0].resolution_m must be a finite number >= 0 (got -0.01)");
   p = maze::sim::default_profile();
   p.lidars[0].fov_rad = 7.0;
   CHECK(validation_error(p) == "error: lidars[0].fov_rad must be at most 2 pi (got 7)");
@@ -121,7 +143,7 @@ TEST_CASE("find_profile: an unknown name lists the known ones") {
     FAIL("no error");
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() ==
-          "error: unknown robot 'roomba' (known robots: hambot, hambot-12m, bumper-depth, ir-ring, "
+          "error: unknown robot 'roomba' (known robots: hambot, hambot-2025, hambot-12m, bumper-depth, ir-ring, "
           "sonar-ring, micromouse)");
   }
 }

@@ -32,10 +32,17 @@ TEST_CASE("format_scan: index, angle and range a line, inf for no return") {
   request.noise = 0.0;
   const std::vector<std::string> out = lines(maze::sim::format_scan(corridor, request));
   REQUIRE(out.size() == 360);
-  CHECK(out[0] == "0 3.141593 0.494000");      // back: the west wall
-  CHECK(out[90] == "90 1.570796 0.494000");    // left: the north wall
-  CHECK(out[180] == "180 0.000000 inf");       // ahead: 19.494 m, beyond max range
-  CHECK(out[270] == "270 -1.570796 0.494000"); // right: the south wall
+  // The default robot's fixed lidar: beams half a degree in, depth 0.494 rounded to 0.49 and
+  // divided by cos 0.5 deg (test_maze_sim_fixed_lidar.cpp works it out).
+  CHECK(out[0] == "0 3.132866 0.490019");       // back: the west wall
+  CHECK(out[90] == "90 1.562070 0.490019");     // left: the north wall
+  CHECK(out[180] == "180 -0.008727 inf");       // ahead: 19.494 m, beyond max range
+  CHECK(out[270] == "270 -1.579523 0.490019");  // right: the south wall
+  // Last year's rotating lidar: the beams on whole degrees, no rounding.
+  request.profile = maze::sim::find_profile("hambot-2025");
+  const std::vector<std::string> old = lines(maze::sim::format_scan(corridor, request));
+  CHECK(old[0] == "0 3.141593 0.494000");
+  CHECK(old[180] == "180 0.000000 inf");
 }
 
 TEST_CASE("format_scan: the noise is the simulation's first reading with the same seed") {
@@ -79,7 +86,7 @@ TEST_CASE("format_scan: bad poses and robots are errors") {
   request.pose = {0.5, 0.5, 0.0};
   request.robot = "ir-ring";
   CHECK_THROWS_WITH_AS(maze::sim::format_scan(m, request),
-                       "robot 'ir-ring' has no lidar (robots with one: hambot, hambot-12m, micromouse)",
+                       "robot 'ir-ring' has no lidar (robots with one: hambot, hambot-2025, hambot-12m, micromouse)",
                        common::InputError);
   request.robot = "nope";
   CHECK_THROWS_AS(maze::sim::format_scan(m, request), common::InputError);

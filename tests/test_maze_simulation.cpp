@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -18,6 +20,7 @@
 
 #include "common/error.hpp"
 #include "maze/maze.hpp"
+#include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
 
 namespace {
@@ -38,13 +41,14 @@ maze::sim::SimulationOptions at(double x, double y, double yaw) {
   return o;
 }
 
-// The simulator's test robot: hambot's body, wheels and devices with a fixed 12 m lidar (the
-// seed set-ups') and bumper-depth's three bumpers; hambot itself rotates a 3 m lidar and has
-// no bumpers (the rotating lidar has its own tests below).
+// The simulator's test robot: hambot's body, wheels and devices with a fixed 12 m lidar that
+// does not round (so ranges are the exact distances) and bumper-depth's three bumpers;
+// hambot itself rounds to 1 cm (tests/test_maze_sim_fixed_lidar.cpp) and has no bumpers (the
+// rotating lidar has its own tests below).
 const maze::sim::RobotProfile &hambot() {
   static const maze::sim::RobotProfile p = [] {
     maze::sim::RobotProfile r = maze::sim::default_profile();
-    r.lidars[0] = {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0};
+    r.lidars[0] = {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0, 0.0};
     r.bumpers = maze::sim::find_profile("bumper-depth").bumpers;
     return r;
   }();
@@ -103,16 +107,18 @@ TEST_CASE("Lidar: the range image at a known pose, in the conventions' beam orde
   const float *ranges = lidar->getRangeImage();
   REQUIRE(ranges != nullptr);
   const double side = 1.5 - h;
-  const double corner = std::sqrt(2.0) * side;
-  CHECK(ranges[0] == doctest::Approx(side).epsilon(1e-6));      // back
-  CHECK(ranges[90] == doctest::Approx(side).epsilon(1e-6));     // left
-  CHECK(ranges[180] == doctest::Approx(side).epsilon(1e-6));    // ahead
-  CHECK(ranges[270] == doctest::Approx(side).epsilon(1e-6));    // right
-  CHECK(ranges[135] == doctest::Approx(corner).epsilon(1e-6));  // ahead-left corner
-  CHECK(ranges[225] == doctest::Approx(corner).epsilon(1e-6));  // ahead-right corner
+  // A fixed lidar's beam i points half a beam in: at pi - (i + 1/2) degrees from the heading.
+  const double half = std::cos(0.5 * kPi / 180.0);
+  CHECK(ranges[0] == doctest::Approx(side / half).epsilon(1e-6));    // back
+  CHECK(ranges[90] == doctest::Approx(side / half).epsilon(1e-6));   // left
+  CHECK(ranges[180] == doctest::Approx(side / half).epsilon(1e-6));  // ahead
+  CHECK(ranges[270] == doctest::Approx(side / half).epsilon(1e-6));  // right
+  const double corner = side / std::cos(44.5 * kPi / 180.0);         // 44.5 deg off a face
+  CHECK(ranges[135] == doctest::Approx(corner).epsilon(1e-6));       // ahead-left corner
+  CHECK(ranges[224] == doctest::Approx(corner).epsilon(1e-6));       // ahead-right corner
   // Every beam against the analytic distance to the square's inner faces.
   for (int i = 0; i < 360; ++i) {
-    const double a = kPi / 2 + kPi - i * 2 * kPi / 360;
+    const double a = kPi / 2 + kPi - (i + 0.5) * 2 * kPi / 360;
     const double expected = side / std::max(std::abs(std::cos(a)), std::abs(std::sin(a)));
     CHECK(ranges[i] == doctest::Approx(expected).epsilon(1e-6));
   }
@@ -125,7 +131,7 @@ TEST_CASE("Lidar: +infinity outside [min range, max range]") {
   lidar->enable(32);
   const float *ranges = lidar->getRangeImage();
   CHECK(std::isinf(ranges[180]));                               // the east end is 19.494 m away
-  CHECK(ranges[0] == doctest::Approx(0.5 - h).epsilon(1e-6));  // west wall behind
+  CHECK(ranges[0] == doctest::Approx((0.5 - h) / std::cos(0.5 * kPi / 180.0)).epsilon(1e-6));  // west wall behind
 }
 
 TEST_CASE("Lidar: noise has mean 0 and sigma noise x max range (10^5 samples)") {
@@ -142,7 +148,10 @@ TEST_CASE("Lidar: noise has mean 0 and sigma noise x max range (10^5 samples)") 
   for (int step = 0; step < 280; ++step) {
     const float *ranges = noisy.robot().getLidar("lidar")->getRangeImage();
     for (int i = 0; i < 360; ++i) {
-      const double e = static_cast<double>(ranges[i]) - static_cast<double>(exact_ranges[i]);
+      // A fixed lidar's noise is on the depth along its cube face's axis (Webots adds it before
+      // the merge divides by the cosine): back on that axis, sigma is noise x max range.
+      const double along_face = maze::sim::face_cos(maze::sim::beam_angle_rad(hambot().lidars[0], i));
+      const double e = (static_cast<double>(ranges[i]) - static_cast<double>(exact_ranges[i])) * along_face;
       sum += e;
       sum_sq += e * e;
       ++n;
@@ -391,6 +400,17 @@ maze::sim::RobotProfile rotating_robot(double frequency_hz) {
   return p;
 }
 
+// The range of beam i (beam offset `offset`, in beams) of a 360-beam lidar at (x, y) facing
+// yaw, in the open 3 x 3 maze: the nearest inner wall face, h in from the maze's edges.
+double room_range(double x, double y, double yaw, int i, double offset) {
+  const double a = yaw + kPi - (i + offset) * 2 * kPi / 360;
+  const double dx = std::cos(a);
+  const double dy = std::sin(a);
+  const double tx = dx > 0 ? (3.0 - h - x) / dx : dx < 0 ? (h - x) / dx : std::numeric_limits<double>::infinity();
+  const double ty = dy > 0 ? (3.0 - h - y) / dy : dy < 0 ? (h - y) / dy : std::numeric_limits<double>::infinity();
+  return std::min(tx, ty);
+}
+
 std::vector<float> image(webots::Lidar *lidar) {
   const float *r = lidar->getRangeImage();
   REQUIRE(r != nullptr);
@@ -414,40 +434,46 @@ TEST_CASE("Rotating lidar: a slice per step, from ahead clockwise, 0 where not y
   }
 }
 
-TEST_CASE("Rotating lidar: after a revolution at rest, the fixed lidar's image") {
+TEST_CASE("Rotating lidar: after a revolution at rest, every beam is the range from the rest pose") {
   Simulation fixed(maze::Maze(3, 3), rotating_robot(0.0), at(1.5, 1.5, 0.3));
   Simulation rotating(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, 0.3));
-  fixed.robot().getLidar("lidar")->enable(32);
   webots::Lidar *lidar = rotating.robot().getLidar("lidar");
   lidar->enable(32);
   CHECK(fixed.robot().getLidar("lidar")->getFrequency() == 0.0);
   for (int i = 0; i < 3; ++i) REQUIRE(rotating.robot().step(32) == 0);
-  CHECK(image(lidar) == image(fixed.robot().getLidar("lidar")));
+  const std::vector<float> after_one = image(lidar);
+  for (int i = 0; i < 360; ++i) {
+    CAPTURE(i);
+    CHECK(after_one[static_cast<std::size_t>(i)] == doctest::Approx(room_range(1.5, 1.5, 0.3, i, 0.0)).epsilon(1e-6));
+  }
+  for (int i = 0; i < 3; ++i) REQUIRE(rotating.robot().step(32) == 0);
+  CHECK(image(lidar) == after_one);
 }
 
 TEST_CASE("Rotating lidar: mid-turn, each beam is as seen from the pose of the step that swept it") {
-  Simulation fixed(maze::Maze(3, 3), rotating_robot(0.0), at(1.5, 1.5, 0.0));
   Simulation rotating(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, 0.0));
-  webots::Lidar *fixed_lidar = fixed.robot().getLidar("lidar");
   webots::Lidar *lidar = rotating.robot().getLidar("lidar");
-  fixed_lidar->enable(32);
+  webots::InertialUnit *imu = rotating.robot().getInertialUnit("imu");
+  webots::GPS *gps = rotating.robot().getGPS("gps");
   lidar->enable(32);
-  drive(fixed.robot(), -5.0, 5.0);
+  imu->enable(32);
+  gps->enable(32);
   drive(rotating.robot(), -5.0, 5.0);
-  std::vector<std::vector<float>> fixed_images;
+  std::vector<std::array<double, 3>> poses;  // x, y, yaw at the end of each step
   for (int i = 0; i < 10; ++i) {
-    REQUIRE(fixed.robot().step(32) == 0);
     REQUIRE(rotating.robot().step(32) == 0);
-    fixed_images.push_back(image(fixed_lidar));
+    poses.push_back({gps->getValues()[0], gps->getValues()[1], imu->getRollPitchYaw()[2]});
   }
   const std::vector<float> mixed = image(lidar);
+  const auto seen_from = [&](std::size_t step, int i) {
+    const std::array<double, 3> &p = poses[step];
+    return std::abs(static_cast<double>(mixed[static_cast<std::size_t>(i)]) - room_range(p[0], p[1], p[2], i, 0.0)) < 1e-5;
+  };
   int from_last_step = 0;
-  for (std::size_t i = 0; i < mixed.size(); ++i) {
+  for (int i = 0; i < 360; ++i) {
     CAPTURE(i);
-    const bool from_a_recent_step = mixed[i] == fixed_images[9][i] || mixed[i] == fixed_images[8][i] ||
-                                    mixed[i] == fixed_images[7][i];
-    CHECK(from_a_recent_step);
-    if (mixed[i] == fixed_images[9][i]) ++from_last_step;
+    CHECK((seen_from(9, i) || seen_from(8, i) || seen_from(7, i)));
+    if (seen_from(9, i)) ++from_last_step;
   }
   CHECK(from_last_step < 200);  // the rest come from the two steps before
 }

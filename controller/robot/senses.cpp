@@ -89,6 +89,7 @@ void Senses::scan_lidar(sensing::LidarMark mark, Cell c, std::int64_t step) {
   s.fov_rad = lidar_->getFov();
   s.min_range_m = lidar_->getMinRange();
   s.max_range_m = lidar_->getMaxRange();
+  s.beam_offset = revolution_steps_ > 0 ? 0.0 : 0.5;  // a fixed lidar's beams sit half a beam in
   s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar_->getHorizontalResolution()));
   // A scan before in the same control step is the same reading, not a second look.
   const bool second_look = !previous_scan_.ranges.empty() && previous_scan_step_ < step;

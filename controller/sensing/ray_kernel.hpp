@@ -357,13 +357,14 @@ std::uint32_t *FlatWalk<K>::free_until(double length_m, const ScanUpdate::Unique
 }
 
 // cos and sin of every beam's angle relative to the heading, for one beam count and field
-// of view (computed again only when those change, so not per scan).
+// of view and beam offset (computed again only when those change, so not per scan).
 class BeamTable {
  public:
   void prepare(const LidarScan &scan) {
-    if (scan.beam_count() == count_ && scan.fov_rad == fov_rad_) return;
+    if (scan.beam_count() == count_ && scan.fov_rad == fov_rad_ && scan.beam_offset == offset_) return;
     count_ = scan.beam_count();
     fov_rad_ = scan.fov_rad;
+    offset_ = scan.beam_offset;
     cos_.resize(static_cast<std::size_t>(count_));
     sin_.resize(static_cast<std::size_t>(count_));
     for (int i = 0; i < count_; ++i) {
@@ -377,6 +378,7 @@ class BeamTable {
  private:
   int count_ = -1;
   double fov_rad_ = 0.0;
+  double offset_ = 0.0;
   std::vector<double> cos_, sin_;
 };
 

@@ -14,7 +14,7 @@
 namespace sensing {
 
 double LidarScan::beam_angle_rad(int i) const {
-  return fov_rad / 2.0 - i * fov_rad / beam_count();
+  return fov_rad / 2.0 - (i + beam_offset) * fov_rad / beam_count();
 }
 
 std::optional<float> LidarScan::median_range(int centre, double half_window_rad) const {
@@ -82,7 +82,7 @@ std::optional<int> LidarScan::beam_towards(double world_angle_rad) const {
   if (n == 0 || !(fov_rad > 0.0)) return std::nullopt;
   const double relative = common::wrap_angle_rad(world_angle_rad - yaw_rad);
   const double step = fov_rad / n;
-  const long nearest = std::lround((fov_rad / 2.0 - relative) / step);
+  const long nearest = std::lround((fov_rad / 2.0 - relative) / step - beam_offset);
   const bool full_circle = fov_rad >= 2.0 * std::numbers::pi - 1e-9;
   if (full_circle) return static_cast<int>(((nearest % n) + n) % n);
   if (nearest < 0 || nearest >= n) return std::nullopt;

@@ -2,8 +2,10 @@
 // One planar lidar scan, independent of Webots: where it was taken and its ranges.
 //
 // Beam order is the Webots range-image order (ARCHITECTURE.md, Conventions): beam i points at
-//   fov/2 - i * fov / N   radians from the heading, counter-clockwise positive,
-// so with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right.
+//   fov/2 - (i + beam_offset) * fov / N   radians from the heading, counter-clockwise positive,
+// so with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right. A rotating
+// lidar's beam_offset is 0; a fixed one's is 1/2 (Webots renders a fixed lidar as a camera
+// whose pixel i is centred half a beam in: docs/simulator.md).
 //
 // Readings:
 //   finite, within [min_range_m, max_range_m]   a return at that range (a hit)
@@ -26,6 +28,7 @@ struct LidarScan {
   double fov_rad = 0.0;     // (0, 2 pi]
   double min_range_m = 0.0;
   double max_range_m = 0.0;
+  double beam_offset = 0.0;  // in beams: 0 for a rotating lidar, 0.5 for a fixed one
   std::span<const float> ranges;  // N readings, m, beam order above; not owned
 
   int beam_count() const { return static_cast<int>(ranges.size()); }

@@ -54,6 +54,19 @@ void Maze::set_wall(Cell c, Side s, bool present) {
   }
 }
 
+std::vector<StartPosition> Maze::start_positions() const {
+  if (start_positions_.empty()) return {StartPosition{start_, start_heading_}};
+  return start_positions_;
+}
+
+void Maze::set_start_positions(std::vector<StartPosition> positions) {
+  if (positions.size() <= 1) {
+    start_positions_.clear();
+    return;
+  }
+  start_positions_ = std::move(positions);
+}
+
 void Maze::set_physical(double cell_size_m, double wall_thickness_m, double origin_x_m,
                         double origin_y_m) {
   cell_size_m_ = cell_size_m;

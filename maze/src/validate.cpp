@@ -130,6 +130,8 @@ Maze build_maze(const RawMaze &raw) {
     }
   }
   maze.set_start(raw.start, raw.start_heading);
+  maze.set_start_positions(raw.start_positions);
+  maze.set_landmarks(raw.landmarks);
   for (const Cell g : raw.goals) maze.add_goal(g);
   maze.set_physical(raw.cell_size_m, raw.wall_thickness_m, raw.origin_x_m, raw.origin_y_m);
   return maze;

@@ -84,6 +84,23 @@ void walls(std::string &out, const Maze &maze) {
   }
 }
 
+// The course's landmarks: coloured cylinders standing on the floor, solid like the course's
+// (a real Webots lidar and camera see them; the embedded simulator does not).
+void landmarks(std::string &out, const Maze &maze) {
+  int n = 0;
+  for (const Landmark &l : maze.landmarks()) {
+    ++n;
+    fmt::format_to(std::back_inserter(out),
+                   "Solid {{\n  translation {} {} {}\n  children [\n    Shape {{\n      appearance PBRAppearance {{\n"
+                   "        baseColor {} {} {}\n        roughness 1\n        metalness 0\n      }}\n"
+                   "      geometry DEF LANDMARK_{} Cylinder {{\n        height {}\n        radius {}\n      }}\n"
+                   "    }}\n  ]\n  name \"landmark {}\"\n  recognitionColors [\n    {} {} {}\n  ]\n"
+                   "  boundingObject USE LANDMARK_{}\n  locked TRUE\n}}\n",
+                   num(l.x_m), num(l.y_m), num(l.height_m / 2), num(l.red), num(l.green), num(l.blue), n,
+                   num(l.height_m), num(kLandmarkRadius_m), n, num(l.red), num(l.green), num(l.blue), n);
+  }
+}
+
 void markers(std::string &out, const Maze &maze) {
   const double s = maze.cell_size_m();
   auto centre = [&](Cell c, double &x, double &y) {
@@ -182,7 +199,8 @@ void caster(std::string &out, std::string_view where, double x_m, const BodyShap
 }
 
 // Webots' near clipping plane must not exceed minRange. A rotating head (frequency > 0) is
-// Webots' type "rotating" at defaultFrequency, as the profile says.
+// Webots' type "rotating" at defaultFrequency, as the profile says. No resolution is
+// Webots' -1.
 void lidar(std::string &out, const sim::LidarSpec &l, double z_m) {
   const std::string type = l.frequency_hz > 0.0
                                ? fmt::format("      type \"rotating\"\n      defaultFrequency {}\n", num(l.frequency_hz))
@@ -190,9 +208,10 @@ void lidar(std::string &out, const sim::LidarSpec &l, double z_m) {
   fmt::format_to(std::back_inserter(out),
                  "    Lidar {{\n      translation 0 0 {}\n      name {}\n      horizontalResolution {}\n"
                  "      fieldOfView {}\n      numberOfLayers 1\n      near {}\n      minRange {}\n      maxRange {}\n"
-                 "{}      projection \"cylindrical\"\n      noise {}\n    }}\n",
+                 "{}      projection \"cylindrical\"\n      noise {}\n      resolution {}\n    }}\n",
                  num(z_m), quoted(l.name), l.horizontal_resolution, num(l.fov_rad),
-                 num(std::min(0.01, l.min_range_m)), num(l.min_range_m), num(l.max_range_m), type, num(l.noise));
+                 num(std::min(0.01, l.min_range_m)), num(l.min_range_m), num(l.max_range_m), type, num(l.noise),
+                 l.resolution_m > 0.0 ? num(l.resolution_m) : std::string("-1"));
 }
 
 // A distance sensor on the rim, looking out along its angle (a sensor looks along its x axis).
@@ -266,6 +285,7 @@ std::string write_wbt(const Maze &maze, std::string_view title, const WbtRobot &
   std::string out;
   header(out, maze, safe_title);
   walls(out, maze);
+  landmarks(out, maze);
   markers(out, maze);
   if (robot.profile != nullptr) robot_node(out, maze, robot);
   return out;

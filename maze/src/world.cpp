@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "common/random.hpp"
 #include "maze/num_format.hpp"
 #include "maze/text_map.hpp"
 #include "maze/validate.hpp"
@@ -67,21 +68,32 @@ void require_inside(const Maze &maze, Cell c, std::string_view option) {
   }
 }
 
+// An XML world reads --cell-size itself (read_xml's options).
 void apply_cell_size(World &world, double cell_size_m) {
-  Maze &m = world.maze;
-  if (world.format != Format::xml) {
-    m.set_physical(cell_size_m, kDefaultWallThickness_m, 0.0, 0.0);
+  if (world.format != Format::xml) world.maze.set_physical(cell_size_m, kDefaultWallThickness_m, 0.0, 0.0);
+}
+
+void apply_start_position(World &world, const WorldOverrides &o) {
+  const std::vector<StartPosition> positions = world.maze.start_positions();
+  std::size_t index = 0;
+  if (o.start_position) {
+    if (*o.start_position < 1 || static_cast<std::size_t>(*o.start_position) > positions.size()) {
+      throw common::InputError(fmt::format("--start pos:{}: {} states {} start position{} (pos:1 to pos:{})",
+                                           *o.start_position, world.file, positions.size(),
+                                           positions.size() == 1 ? "" : "s", positions.size()));
+    }
+    index = static_cast<std::size_t>(*o.start_position - 1);
+  } else if (o.random_start) {
+    index = random_start_index(o.random_start_seed, positions.size());
+  } else {
     return;
   }
-  if (std::abs(cell_size_m - m.cell_size_m()) > 1e-9 * m.cell_size_m()) {
-    throw common::InputError(fmt::format("--cell-size {} m disagrees with the {} m cells of {}; an XML world has "
-                                         "its own size: leave --cell-size out",
-                                         cell_size_m, m.cell_size_m(), world.file));
-  }
+  world.maze.set_start(positions[index].cell, positions[index].heading);
 }
 
 void apply(World &world, const WorldOverrides &o) {
   if (o.cell_size_m) apply_cell_size(world, *o.cell_size_m);
+  apply_start_position(world, o);
   if (o.start) {
     require_inside(world.maze, *o.start, "--start");
     world.maze.set_start(*o.start, o.start_heading);
@@ -132,6 +144,11 @@ std::string joined(const std::vector<std::string> &parts) {
 
 }  // namespace
 
+std::size_t random_start_index(std::uint64_t seed, std::size_t count) {
+  common::Rng rng(seed ^ 0x7374617274ULL);
+  return static_cast<std::size_t>(rng.next_u64() % count);
+}
+
 Format detect_format(std::string_view text, const std::string &file) {
   if (text.empty()) throw common::InputError(common::SourceLocation{file, 0, 0}, "the file is empty; expected a maze");
   std::string_view body = text;
@@ -167,7 +184,14 @@ World load_world(const std::string &path) { return load_world(path, WorldOverrid
 World load_world(const std::string &path, const WorldOverrides &overrides) {
   const std::string text = read_file(path);
   const Format format = detect_format(text, path);
-  World world{read_world(text, path), path, {}, format};
+  std::vector<std::string> warnings;
+  const auto read = [&]() -> Maze {
+    if (format != Format::xml) return read_world(text, path);
+    XmlRead xml = read_xml(text, path, XmlReadOptions{overrides.cell_size_m});
+    warnings = std::move(xml.warnings);
+    return std::move(xml.maze);
+  };
+  World world{read(), path, std::move(warnings), format};
   apply(world, overrides);
   if (const auto summary = unreachable_summary(world.maze)) {
     world.warnings.push_back(fmt::format("{}: warning: {}", path, *summary));
@@ -205,6 +229,12 @@ std::optional<std::string> dropped_by(const Maze &maze, Format format) {
     return std::nullopt;
   }
   if (!default_physical(maze)) parts.push_back(physical_of(maze));
+  if (const std::size_t n = maze.start_positions().size(); n > 1) {
+    parts.push_back(fmt::format("the other {} start position{}", n - 1, n == 2 ? "" : "s"));
+  }
+  if (const std::size_t n = maze.landmarks().size(); n > 0) {
+    parts.push_back(fmt::format("{} landmark{}", n, n == 1 ? "" : "s"));
+  }
   if (parts.empty()) return std::nullopt;
   return fmt::format("dropped {}: {}", joined(parts), holds);
 }

@@ -14,6 +14,8 @@
 
 #include "common/error.hpp"
 #include "maze/validate.hpp"
+#include "lattice.hpp"
+#include "xml_source.hpp"
 
 namespace maze {
 
@@ -23,85 +25,8 @@ namespace {
 constexpr double kGridTolerance = 1e-3;
 constexpr double kHeadingTolerance_rad = 0.01;
 
-struct Source {
-  std::string_view text;
-  const std::string &file;
-  std::vector<std::size_t> line_starts;
-
-  Source(std::string_view t, const std::string &f) : text(t), file(f) {
-    line_starts.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      if (text[i] == '\n') line_starts.push_back(i + 1);
-    }
-  }
-
-  // The element's line, and the column of `attribute=` on that line if it is there. Several
-  // elements on one line are told apart by counting the earlier siblings of the same name.
-  common::SourceLocation at(const tinyxml2::XMLElement &e, const char *attribute = nullptr) const {
-    const int line = e.GetLineNum();
-    if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {file, 0, 0};
-    const std::size_t begin = line_starts[static_cast<std::size_t>(line - 1)];
-    const std::size_t end = static_cast<std::size_t>(line) < line_starts.size()
-                                ? line_starts[static_cast<std::size_t>(line)]
-                                : text.size();
-    const std::string_view text_of_line = text.substr(begin, end - begin);
-    std::size_t column = find_tag(text_of_line, e.Name(), earlier_on_same_line(e));
-    if (attribute != nullptr && column != std::string_view::npos) {
-      column = text_of_line.find(fmt::format(" {}=", attribute), column);
-      if (column != std::string_view::npos) ++column;
-    }
-    if (column == std::string_view::npos) return {file, line, 0};
-    return {file, line, static_cast<int>(column + 1)};
-  }
-
-  static std::size_t earlier_on_same_line(const tinyxml2::XMLElement &e) {
-    std::size_t n = 0;
-    for (auto *p = e.PreviousSiblingElement(e.Name()); p != nullptr && p->GetLineNum() == e.GetLineNum();
-         p = p->PreviousSiblingElement(e.Name())) {
-      ++n;
-    }
-    return n;
-  }
-
-  // Where the (skip + 1)-th tag `<name` starts in the line.
-  static std::size_t find_tag(std::string_view line, std::string_view name, std::size_t skip) {
-    const std::string tag = fmt::format("<{}", name);
-    for (std::size_t at = line.find(tag); at != std::string_view::npos; at = line.find(tag, at + 1)) {
-      const std::size_t after = at + tag.size();
-      const bool whole = after == line.size() || std::string_view(" \t\r\n/>").find(line[after]) != std::string_view::npos;
-      if (!whole) continue;
-      if (skip == 0) return at;
-      --skip;
-    }
-    return std::string_view::npos;
-  }
-
-  common::InputError error(const tinyxml2::XMLElement &e, const char *attribute, std::string message) const {
-    return common::InputError(at(e, attribute), std::move(message));
-  }
-};
-
-std::optional<double> number(const tinyxml2::XMLElement &e, const char *name, const Source &src, bool required) {
-  const char *value = e.Attribute(name);
-  if (value == nullptr) {
-    if (required) throw src.error(e, nullptr, fmt::format("<{}> needs the attribute {}", e.Name(), name));
-    return std::nullopt;
-  }
-  std::string_view text(value);
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-  double result = 0.0;
-  const auto [stop, ec] = std::from_chars(text.data(), text.data() + text.size(), result);
-  const std::string shown(std::string_view(value).substr(0, 20));
-  if (ec != std::errc() || stop != text.data() + text.size() || text.empty()) {
-    throw src.error(e, name, fmt::format("{} is not a number: '{}'", name, shown));
-  }
-  if (!std::isfinite(result) || std::abs(result) > 1e9) {
-    const std::string_view unit = std::string_view(name) == "theta" ? "radians" : "metres";
-    throw src.error(e, name, fmt::format("{} is not a finite number of {}: '{}'", name, unit, shown));
-  }
-  return result;
-}
+using xml::number;
+using xml::Source;
 
 struct Segment {
   const tinyxml2::XMLElement *element;
@@ -159,19 +84,6 @@ constexpr double kMaxThicknessPerCell = 0.25;
 // binary number).
 constexpr double kLatticeTolerance = 1e-6;
 
-// The largest length dividing both a and b (>= 0) to within tol: Euclid on remainders, a
-// remainder within tol of 0 or of the divisor counting as none. 0 when both are 0.
-double common_divisor(double a, double b, double tol) {
-  if (a < b) std::swap(a, b);
-  while (b > tol) {
-    double r = std::fmod(a, b);
-    if (r > b - tol) r = 0.0;
-    a = b;
-    b = r;
-  }
-  return a;
-}
-
 struct Extent {
   double min_x, min_y, max_x, max_y;
 };
@@ -215,7 +127,7 @@ double infer_cell_size(const std::vector<Segment> &segments, const Extent &e, do
     for (const auto &[name, v] : ends) {
       const double offset = v - (name[0] == 'x' ? e.min_x : e.min_y);
       if (offset <= tol) continue;
-      const double next = common_divisor(cell, offset, tol);
+      const double next = lattice::common_divisor(cell, offset, tol);
       if (next > finest) {
         cell = next;
         continue;
@@ -246,15 +158,108 @@ double stated_cell_size(const tinyxml2::XMLElement &world, double thickness_m, c
   return stated;
 }
 
+struct StartPoint {
+  const tinyxml2::XMLElement *element;
+  double x, y;
+};
+
+std::vector<StartPoint> read_start_points(const tinyxml2::XMLElement &world, const Source &src) {
+  std::vector<StartPoint> points;
+  for (auto *starts = world.FirstChildElement("startPositions"); starts != nullptr;
+       starts = starts->NextSiblingElement("startPositions")) {
+    for (auto *pos = starts->FirstChildElement("pos"); pos != nullptr; pos = pos->NextSiblingElement("pos")) {
+      points.push_back({pos, *number(*pos, "x", src, true), *number(*pos, "y", src, true)});
+    }
+  }
+  return points;
+}
+
+// The coarsest lattice from the origin that puts every start position on a cell centre
+// (lattice::centres_lattice), or nothing without start positions.
+std::optional<double> start_lattice(const std::vector<StartPoint> &starts, const Extent &e, double thickness_m,
+                                    double tol) {
+  if (starts.empty()) return std::nullopt;
+  std::vector<double> offsets;
+  for (const StartPoint &p : starts) {
+    offsets.push_back(p.x - e.min_x);
+    offsets.push_back(p.y - e.min_y);
+  }
+  const double span = std::max(e.max_x - e.min_x, e.max_y - e.min_y);
+  return lattice::centres_lattice(offsets, thickness_m / kMaxThicknessPerCell, span, tol);
+}
+
+// The walls with an end off the lattice of `cell` from the origin.
+std::vector<const Segment *> walls_off(const std::vector<Segment> &segments, const Extent &e, double cell,
+                                       double tol) {
+  std::vector<const Segment *> off;
+  for (const Segment &s : segments) {
+    if (!lattice::on_lattice(s.x1 - e.min_x, cell, tol) || !lattice::on_lattice(s.y1 - e.min_y, cell, tol) ||
+        !lattice::on_lattice(s.x2 - e.min_x, cell, tol) || !lattice::on_lattice(s.y2 - e.min_y, cell, tol)) {
+      off.push_back(&s);
+    }
+  }
+  return off;
+}
+
+// "the wall (-1, -2.5)-(-1, -1.5) at line 9" for the first three, then "and N more".
+std::string named_walls(const std::vector<const Segment *> &walls) {
+  constexpr std::size_t kNamed = 3;
+  std::string text = walls.size() == 1 ? "the wall " : "the walls ";
+  for (std::size_t i = 0; i < std::min(kNamed, walls.size()); ++i) {
+    const Segment &w = *walls[i];
+    const bool last = i + 1 == walls.size();
+    text += fmt::format("{}({}, {})-({}, {}) at line {}", i == 0 ? "" : last ? " and " : ", ", w.x1, w.y1, w.x2,
+                        w.y2, w.element->GetLineNum());
+  }
+  if (walls.size() > kNamed) text += fmt::format(" and {} more", walls.size() - kNamed);
+  return text;
+}
+
 // The cell size the file states (cellSize, as write_xml writes it: a written maze reads back
-// with its very cell size), else the lattice of the wall ends.
-Grid infer_grid(const std::vector<Segment> &segments, double thickness_m, const Source &src,
-                const tinyxml2::XMLElement &world) {
+// with its very cell size), else the one chosen (--cell-size), else the lattice of the start
+// positions when every wall lies on it, else the lattice of the wall ends; in that last case,
+// when the start positions have a lattice of their own, a warning names the walls off it.
+Grid infer_grid(const std::vector<Segment> &segments, const std::vector<StartPoint> &starts, double thickness_m,
+                const Source &src, const tinyxml2::XMLElement &world, const XmlReadOptions &options,
+                std::vector<std::string> &warnings) {
   const Extent e = extent_of(segments);
   check_thin_walls(segments, thickness_m, src);
   const std::optional<double> stated = number(world, "cellSize", src, false);
   Grid g{e.min_x, e.min_y, 0.0, 0, 0};
-  g.cell = stated ? stated_cell_size(world, thickness_m, src, *stated) : infer_cell_size(segments, e, thickness_m, src);
+  if (stated) {
+    g.cell = stated_cell_size(world, thickness_m, src, *stated);
+    if (options.cell_size_m && std::abs(*options.cell_size_m - g.cell) > 1e-9 * g.cell) {
+      throw common::InputError(fmt::format("--cell-size {} m disagrees with the cellSize {} m that {} states; leave "
+                                           "--cell-size out",
+                                           *options.cell_size_m, g.cell, src.file));
+    }
+  } else if (options.cell_size_m) {
+    g.cell = *options.cell_size_m;
+    if (thickness_m >= kMaxThicknessPerCell * g.cell) {
+      throw common::InputError(fmt::format("--cell-size {} m is not more than four walls of {} m", g.cell, thickness_m));
+    }
+  } else {
+    const double tol = kLatticeTolerance * std::max({1.0, e.max_x - e.min_x, e.max_y - e.min_y});
+    const double walls_cell = infer_cell_size(segments, e, thickness_m, src);
+    g.cell = walls_cell;
+    if (const std::optional<double> starts_cell = start_lattice(starts, e, thickness_m, tol)) {
+      const double span = std::max(e.max_x - e.min_x, e.max_y - e.min_y);
+      const std::optional<double> shared =
+          lattice::shared_lattice(*starts_cell, walls_cell, thickness_m / kMaxThicknessPerCell, span, tol);
+      const std::vector<const Segment *> off = walls_off(segments, e, *starts_cell, tol);
+      if (shared && walls_off(segments, e, *shared, tol).empty()) {
+        g.cell = span / std::round(span / *shared);
+      } else if (!off.empty()) {
+        warnings.push_back(fmt::format(
+            "{}: warning: the start positions sit on the centres of {} m cells, but {} {} off that lattice: read "
+            "as {}x{} cells of {} m, the walls' own lattice; --cell-size {} keeps this reading without the warning, "
+            "--cell-size {} asks for {} m cells (the walls off them are then errors)",
+            src.file, *starts_cell, named_walls(off), off.size() == 1 ? "is" : "are",
+            std::round((e.max_x - e.min_x) / walls_cell), std::round((e.max_y - e.min_y) / walls_cell), walls_cell,
+            walls_cell, *starts_cell, *starts_cell));
+      }
+    }
+  }
   const double w = std::round((e.max_x - e.min_x) / g.cell);
   const double h = std::round((e.max_y - e.min_y) / g.cell);
   if (w < 1 || h < 1) throw src.error(world, nullptr, "the walls enclose no area: they all lie on one line");
@@ -338,14 +343,45 @@ Side heading_of(const tinyxml2::XMLElement &pos, const Source &src) {
   return kByQuarter[((q % 4) + 4) % 4];
 }
 
+// A colour component of a <landmark>: a number in [0, 1], 1 when left out.
+double colour(const tinyxml2::XMLElement &e, const char *name, const Source &src) {
+  const double v = number(e, name, src, false).value_or(1.0);
+  if (v < 0.0 || v > 1.0) throw src.error(e, name, fmt::format("{} must be 0 to 1, got {}", name, v));
+  return v;
+}
+
+// <landmark x y [height] [red green blue]/>: x and y required, inside the maze; height
+// positive (the course's 1.5 m when left out).
+Landmark read_landmark(const tinyxml2::XMLElement &e, const Grid &g, const Source &src) {
+  Landmark l;
+  l.x_m = *number(e, "x", src, true);
+  l.y_m = *number(e, "y", src, true);
+  (void)cell_at(e, g, src, "landmark");
+  l.height_m = number(e, "height", src, false).value_or(1.5);
+  if (!(l.height_m > 0.0)) throw src.error(e, "height", fmt::format("height must be positive, got {}", l.height_m));
+  l.red = colour(e, "red", src);
+  l.green = colour(e, "green", src);
+  l.blue = colour(e, "blue", src);
+  return l;
+}
+
 void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, const Source &src, RawMaze &raw) {
   raw.start_where = src.at(world);
-  if (const auto *starts = world.FirstChildElement("startPositions")) {
-    if (const auto *pos = starts->FirstChildElement("pos")) {
-      raw.start_heading = heading_of(*pos, src);
-      raw.start = cell_at(*pos, g, src, "start", raw.start_heading);
-      raw.start_where = src.at(*pos, "x");
+  for (auto *starts = world.FirstChildElement("startPositions"); starts != nullptr;
+       starts = starts->NextSiblingElement("startPositions")) {
+    for (auto *pos = starts->FirstChildElement("pos"); pos != nullptr; pos = pos->NextSiblingElement("pos")) {
+      const Side heading = heading_of(*pos, src);
+      raw.start_positions.push_back({cell_at(*pos, g, src, "start", heading), heading});
+      raw.start_positions_where.push_back(src.at(*pos, "x"));
     }
+  }
+  if (!raw.start_positions.empty()) {
+    raw.start = raw.start_positions.front().cell;
+    raw.start_heading = raw.start_positions.front().heading;
+    raw.start_where = raw.start_positions_where.front();
+  }
+  for (auto *e = world.FirstChildElement("landmark"); e != nullptr; e = e->NextSiblingElement("landmark")) {
+    raw.landmarks.push_back(read_landmark(*e, g, src));
   }
   for (auto *e = world.FirstChildElement("goal"); e != nullptr; e = e->NextSiblingElement("goal")) {
     raw.goals.push_back(cell_at(*e, g, src, "goal"));
@@ -376,14 +412,17 @@ const tinyxml2::XMLElement &parse(tinyxml2::XMLDocument &doc, const Source &src)
 
 }  // namespace
 
-Maze read_xml(std::string_view text, const std::string &file) {
+Maze read_xml(std::string_view text, const std::string &file) { return read_xml(text, file, {}).maze; }
+
+XmlRead read_xml(std::string_view text, const std::string &file, const XmlReadOptions &options) {
   const Source src(text, file);
   tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
   const tinyxml2::XMLElement &world = parse(doc, src);
 
   double thickness_m = kDefaultWallThickness_m;
   const auto segments = read_segments(world, src, thickness_m);
-  const Grid g = infer_grid(segments, thickness_m, src, world);
+  std::vector<std::string> warnings;
+  const Grid g = infer_grid(segments, read_start_points(world, src), thickness_m, src, world, options, warnings);
   RawMaze raw;
   raw.resize(g.width, g.height);
   rasterize(segments, g, src, raw);
@@ -394,45 +433,7 @@ Maze read_xml(std::string_view text, const std::string &file) {
   raw.origin_y_m = g.origin_y;
   const common::SourceLocation world_at = src.at(world);
   raw.where = [world_at](Cell, Side) { return world_at; };
-  return build_maze(raw);
-}
-
-std::string write_xml(const Maze &maze) {
-  const double s = maze.cell_size_m();
-  const double ox = maze.origin_x_m();
-  const double oy = maze.origin_y_m();
-  std::string text = fmt::format(
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<!-- maze_mapper world: {}x{} cells of {} m, walls {} m thick -->\n<world cellSize=\"{}\">\n",
-      maze.width(), maze.height(), s, maze.wall_thickness_m(), s);
-  auto wall = [&](double x1, double y1, double x2, double y2) {
-    fmt::format_to(std::back_inserter(text), "  <wall x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" width=\"{}\"/>\n", x1, y1,
-                   x2, y2, maze.wall_thickness_m());
-  };
-  for (int j = 0; j <= maze.height(); ++j) {
-    for (int x = 0; x < maze.width(); ++x) {
-      const bool present = j < maze.height() ? maze.has_wall({x, j}, Side::south) : maze.has_wall({x, j - 1}, Side::north);
-      if (present) wall(ox + x * s, oy + j * s, ox + (x + 1) * s, oy + j * s);
-    }
-  }
-  for (int i = 0; i <= maze.width(); ++i) {
-    for (int y = 0; y < maze.height(); ++y) {
-      const bool present = i < maze.width() ? maze.has_wall({i, y}, Side::west) : maze.has_wall({i - 1, y}, Side::east);
-      if (present) wall(ox + i * s, oy + y * s, ox + i * s, oy + (y + 1) * s);
-    }
-  }
-  constexpr double kTheta[] = {std::numbers::pi / 2, 0.0, -std::numbers::pi / 2, std::numbers::pi};
-  const Cell st = maze.start();
-  fmt::format_to(std::back_inserter(text),
-                 "  <startPositions>\n    <pos x=\"{}\" y=\"{}\" theta=\"{}\"/>\n  </startPositions>\n",
-                 ox + (st.x + 0.5) * s, oy + (st.y + 0.5) * s, kTheta[static_cast<int>(maze.start_heading())]);
-  int id = 0;
-  for (const Cell g : maze.goals()) {
-    fmt::format_to(std::back_inserter(text), "  <goal id=\"{}\" x=\"{}\" y=\"{}\"/>\n", id++, ox + (g.x + 0.5) * s,
-                   oy + (g.y + 0.5) * s);
-  }
-  text += "</world>\n";
-  return text;
+  return {build_maze(raw), std::move(warnings)};
 }
 
 }  // namespace maze

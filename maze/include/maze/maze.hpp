@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/compass.hpp"
@@ -35,6 +36,25 @@ struct WallSegment {
   double x1_m, y1_m, x2_m, y2_m;
 };
 
+// A start position: a cell and the heading the robot faces there.
+struct StartPosition {
+  Cell cell;
+  Side heading = Side::north;
+  friend bool operator==(const StartPosition &, const StartPosition &) = default;
+};
+
+// A landmark of the course's worlds: a coloured cylinder standing at (x, y), in metres, of
+// the given height; red, green, blue in [0, 1]. Its radius is the course's,
+// kLandmarkRadius_m. The embedded simulator's sensors do not see landmarks.
+struct Landmark {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double height_m = 0.0;
+  double red = 1.0, green = 1.0, blue = 1.0;
+  friend bool operator==(const Landmark &, const Landmark &) = default;
+};
+inline constexpr double kLandmarkRadius_m = 0.25;
+
 inline constexpr int kMaxMazeSide = 4096;
 inline constexpr double kDefaultCellSize_m = 1.0;
 inline constexpr double kDefaultWallThickness_m = 0.012;
@@ -59,6 +79,16 @@ class Maze {
     start_ = c;
     start_heading_ = heading;
   }
+
+  // Every start position the world states, in its order (an XML world's <pos> elements);
+  // just the start when it states one. The start is one of them unless --start chose another.
+  std::vector<StartPosition> start_positions() const;
+  // Keeps the list when it holds more than the start alone (so a maze with one start
+  // position equals one that never had a list).
+  void set_start_positions(std::vector<StartPosition> positions);
+
+  const std::vector<Landmark> &landmarks() const { return landmarks_; }
+  void set_landmarks(std::vector<Landmark> landmarks) { landmarks_ = std::move(landmarks); }
 
   // Goal cells in (x, y) order, each once.
   const std::vector<Cell> &goals() const { return goals_; }
@@ -102,6 +132,8 @@ class Maze {
   Cell start_{0, 0};
   Side start_heading_ = Side::north;
   std::vector<Cell> goals_;
+  std::vector<StartPosition> start_positions_;  // empty: the start alone
+  std::vector<Landmark> landmarks_;
   double cell_size_m_ = kDefaultCellSize_m;
   double wall_thickness_m_ = kDefaultWallThickness_m;
   double origin_x_m_ = 0.0;

@@ -27,6 +27,11 @@ struct RawMaze {
   common::SourceLocation start_where;  // where the file states the start (line 0: it does not)
   std::vector<Cell> goals;
   std::vector<common::SourceLocation> goal_where;  // one per goal
+  // Every start position when the file states several, the first being the start; checked
+  // inside like the start (start_positions_where: one per position).
+  std::vector<StartPosition> start_positions;
+  std::vector<common::SourceLocation> start_positions_where;
+  std::vector<Landmark> landmarks;
   double cell_size_m = kDefaultCellSize_m;
   double wall_thickness_m = kDefaultWallThickness_m;
   double origin_x_m = 0.0;

@@ -2,6 +2,8 @@
 // Worlds as files: reading one whatever its format (detected by content), writing one by the
 // output's extension, safely.
 
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,11 +31,21 @@ struct WorldOverrides {
   std::optional<double> cell_size_m;
   std::optional<Cell> start;           // replaces the file's start
   Side start_heading = Side::north;    // with start
+  // --start pos:N: the world's N-th start position (1-based), cell and heading.
+  std::optional<int> start_position;
+  // --start random: one of the world's start positions, the same for the same seed
+  // (random_start_index).
+  bool random_start = false;
+  std::uint64_t random_start_seed = 0;
   std::optional<std::vector<Cell>> goals;  // replace the file's goals
   // --goal centre: the goals are the maze's centre cells (the micromouse convention: 2 x 2 on
   // an even size, a row or column of 2 or one cell on odd ones), in place of the file's.
   bool centre_goals = false;
 };
+
+// The 0-based index of the start position --start random picks among count (>= 1) with seed:
+// the first draw of common::Rng(seed ^ 0x7374617274), modulo count.
+std::size_t random_start_index(std::uint64_t seed, std::size_t count);
 
 // The smallest and largest --cell-size: a cell wider than four default walls, and 1 km.
 inline constexpr double kMinCellSize_m = 4 * kDefaultWallThickness_m;

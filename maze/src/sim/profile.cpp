@@ -17,11 +17,11 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
 // The wheels, motors, encoders, IMU and GPS of FAIRIS-Lite's HamBot (docs/simulator.md, Robots), as
-// biorobaw/FAIRIS-Lite WebotsSim/protos/HamBot/HamBot.proto and fairis_lib/robot_lib/
-// hambot.py define them: wheel radius 0.045 m (the wheels' Cylinder), max wheel speed
-// 18 rad/s (RotationalMotor maxVelocity), axle 0.184 m (hambot.py's axel_length; the proto
-// puts the wheels' centres at +-0.090 m, 0.180 m apart). The body radius is not in the
-// course material: 0.09 m is our choice (the bounding box is 0.15 x 0.14 m).
+// biorobaw/FAIRIS-Lite WebotsSim/protos/HamBot/HamBot.proto defines them since the Spring
+// 2026 course update: wheel radius 0.045 m (the wheels' Cylinder), max wheel speed 18 rad/s
+// (RotationalMotor maxVelocity), axle 0.184 m (the wheel joints at +-0.092 m). The body
+// radius is not in the course material: 0.09 m is our choice (the bounding box is
+// 0.15 x 0.14 m).
 RobotProfile base_robot(std::string name, std::string description) {
   RobotProfile p;
   p.name = std::move(name);
@@ -39,10 +39,14 @@ RobotProfile base_robot(std::string name, std::string description) {
   return p;
 }
 
-// HamBot's Lidar node: 360 beams, fieldOfView 6.283184 (2 pi to the proto's 7 digits),
-// minRange 0.07, maxRange 3, noise 0.000833, type "rotating" at defaultFrequency 12 Hz.
-LidarSpec hambot_lidar(double max_range_m) {
-  return {"lidar", 360, 2.0 * kPi, 0.07, max_range_m, 0.000833, 12.0};
+// HamBot's Lidar node this term: 360 beams, fieldOfView 2 pi, near and minRange 0.05,
+// maxRange 12, noise 0.000833, resolution 0.01, type "fixed".
+LidarSpec hambot_lidar() { return {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0, 0.01}; }
+
+// Last year's (2025) Lidar node: minRange 0.07, maxRange 3, noise 0.000833, no resolution,
+// type "rotating" at defaultFrequency 12 Hz.
+LidarSpec hambot_2025_lidar(double max_range_m) {
+  return {"lidar", 360, 2.0 * kPi, 0.07, max_range_m, 0.000833, 12.0, 0.0};
 }
 
 // Three bumpers at 0 and +-45 deg, each covering a 45 deg arc: together the front 135 deg.
@@ -58,16 +62,25 @@ std::vector<LookupRow> metres_table(double range_m, double noise_fraction) {
 }
 
 RobotProfile hambot() {
-  RobotProfile p = base_robot("hambot", "the course robot (FAIRIS-Lite HamBot): 360-beam rotating lidar (3 m), IMU, GPS");
-  p.lidars.push_back(hambot_lidar(3.0));
+  RobotProfile p = base_robot("hambot", "the course robot (FAIRIS-Lite HamBot): fixed 360-beam lidar (12 m, 1 cm), IMU, GPS");
+  p.lidars.push_back(hambot_lidar());
   return p;
 }
 
-// For long corridors: a 3 m lidar sees 2.5 cells of 1 m, too few to tell a long corridor's
-// far wall; the seed set-ups' 12 m lidar sees them whole.
+// Last year's course robot: its lidar rotates (a revolution at rest before a whole image)
+// and sees 3 m, 2.5 cells of 1 m. Kept so that rotating-lidar and short-view behaviour stay
+// tested and last year's results can be reproduced.
+RobotProfile hambot_2025() {
+  RobotProfile p = base_robot("hambot-2025", "last year's HamBot: rotating 360-beam lidar (3 m, 12 Hz), IMU, GPS");
+  p.lidars.push_back(hambot_2025_lidar(3.0));
+  return p;
+}
+
+// Last year's rotating lidar reaching 12 m: the one profile with a rotating head and long
+// views together (a rotating image mixes the poses of a turn over far walls too).
 RobotProfile hambot_12m() {
-  RobotProfile p = base_robot("hambot-12m", "hambot with a 12 m lidar, for long corridors");
-  p.lidars.push_back(hambot_lidar(12.0));
+  RobotProfile p = base_robot("hambot-12m", "hambot-2025 with its rotating lidar reaching 12 m");
+  p.lidars.push_back(hambot_2025_lidar(12.0));
   return p;
 }
 
@@ -82,7 +95,7 @@ RobotProfile micromouse() {
   p.axle_m = 0.07;
   p.body_radius_m = 0.04;
   p.max_wheel_velocity_rad_s = 80.0;
-  p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.02, 1.0, 0.000833, 0.0});
+  p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.02, 1.0, 0.000833, 0.0, 0.0});
   return p;
 }
 
@@ -143,8 +156,8 @@ std::optional<DistanceSensorType> parse_distance_sensor_type(std::string_view te
 }
 
 const std::vector<RobotProfile> &profiles() {
-  static const std::vector<RobotProfile> all{hambot(),  hambot_12m(), bumper_depth(),
-                                             ir_ring(), sonar_ring(), micromouse()};
+  static const std::vector<RobotProfile> all{hambot(),       hambot_2025(), hambot_12m(), bumper_depth(),
+                                             ir_ring(),      sonar_ring(),  micromouse()};
   return all;
 }
 
@@ -249,6 +262,7 @@ void validate_lidar(const std::string &key, const LidarSpec &l) {
   }
   require_non_negative(key + ".noise", l.noise);
   require_non_negative(key + ".frequency_hz", l.frequency_hz);
+  require_non_negative(key + ".resolution_m", l.resolution_m);
 }
 
 void validate_distance_sensor(const std::string &key, const DistanceSensorSpec &d) {

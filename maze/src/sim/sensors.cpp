@@ -46,8 +46,35 @@ void check_pose_free(const WallGrid &walls, const Pose &pose) {
   }
 }
 
+double beam_offset(const LidarSpec &lidar) { return lidar.frequency_hz > 0.0 ? 0.0 : 0.5; }
+
 double beam_angle_rad(const LidarSpec &lidar, int i) {
-  return lidar.fov_rad / 2.0 - i * lidar.fov_rad / lidar.horizontal_resolution;
+  return lidar.fov_rad / 2.0 - (i + beam_offset(lidar)) * lidar.fov_rad / lidar.horizontal_resolution;
+}
+
+double face_cos(double beam_angle_rad) {
+  const double quarter = std::numbers::pi / 2.0;
+  return std::cos(beam_angle_rad - quarter * std::round(beam_angle_rad / quarter));
+}
+
+double quantised_m(double range_m, double resolution_m) {
+  if (!(resolution_m > 0.0)) return range_m;
+  return std::floor(range_m / resolution_m + 0.5) * resolution_m;
+}
+
+float fixed_lidar_reading(const LidarSpec &lidar, double range_m, double cos_face, double noise_m) {
+  constexpr float kNoReturn = std::numeric_limits<float>::infinity();
+  const double planar_m = range_m * cos_face;
+  if (!(planar_m >= lidar.min_range_m) || planar_m >= lidar.max_range_m) return kNoReturn;
+  const double reading_m = quantised_m(planar_m + noise_m, lidar.resolution_m) / cos_face;
+  if (!(reading_m >= lidar.min_range_m) || reading_m >= lidar.max_range_m) return kNoReturn;
+  return static_cast<float>(reading_m);
+}
+
+float rotating_lidar_reading(const LidarSpec &lidar, double range_m, double noise_m) {
+  const double reading_m = quantised_m(range_m + noise_m, lidar.resolution_m);
+  const bool in_range = reading_m >= lidar.min_range_m && reading_m <= lidar.max_range_m;
+  return in_range ? static_cast<float>(reading_m) : std::numeric_limits<float>::infinity();
 }
 
 LidarModel::LidarModel(const LidarSpec &spec) : spec_(spec) {
@@ -55,28 +82,33 @@ LidarModel::LidarModel(const LidarSpec &spec) : spec_(spec) {
   for (int i = 0; i < spec.horizontal_resolution; ++i) {
     cos_.push_back(std::cos(beam_angle_rad(spec, i)));
     sin_.push_back(std::sin(beam_angle_rad(spec, i)));
+    face_cos_.push_back(face_cos(beam_angle_rad(spec, i)));
     const double turn = -beam_angle_rad(spec, i) / (2.0 * std::numbers::pi);
     sweep_phase_.push_back(turn - std::floor(turn));
   }
+}
+
+float LidarModel::reading(int i, double range_m, double noise_m) const {
+  if (spec_.frequency_hz > 0.0) return rotating_lidar_reading(spec_, range_m, noise_m);
+  return fixed_lidar_reading(spec_, range_m, face_cos_[static_cast<std::size_t>(i)], noise_m);
 }
 
 void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &pose,
                              common::Rng &rng, std::span<float> out) const {
   assert(out.size() == cos_.size());
   const double sigma_m = noise * spec_.max_range_m;
-  // Cast a little past max range so that noise can bring a far hit back into range.
-  const double reach_m = spec_.max_range_m + 6.0 * sigma_m;
+  // Cast a little past max range so that noise (and rounding) can bring a far hit back
+  // into range.
+  const double reach_m = spec_.max_range_m + 6.0 * sigma_m + spec_.resolution_m;
   const double c = std::cos(pose.yaw_rad);
   const double s = std::sin(pose.yaw_rad);
-  constexpr float kNoReturn = std::numeric_limits<float>::infinity();
   const WallGrid::CastOrigin origin = walls.cast_origin(pose.x_m, pose.y_m);
   for (std::size_t i = 0; i < cos_.size(); ++i) {
     const double dx = c * cos_[i] - s * sin_[i];
     const double dy = s * cos_[i] + c * sin_[i];
-    double range = walls.cast_from(origin, dx, dy, reach_m);
-    if (sigma_m > 0.0) range += rng.normal(0.0, sigma_m);
-    const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
-    out[i] = in_range ? static_cast<float>(range) : kNoReturn;
+    const double range = walls.cast_from(origin, dx, dy, reach_m);
+    const double noise_m = sigma_m > 0.0 ? rng.normal(0.0, sigma_m) : 0.0;
+    out[i] = reading(static_cast<int>(i), range, noise_m);
   }
 }
 
@@ -89,13 +121,12 @@ float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoin
   const auto b = static_cast<std::size_t>(i);
   assert(b < cos_.size());
   const double sigma_m = noise * spec_.max_range_m;
-  const double reach_m = spec_.max_range_m + 6.0 * sigma_m;
+  const double reach_m = spec_.max_range_m + 6.0 * sigma_m + spec_.resolution_m;
   const double dx = from.cos_yaw * cos_[b] - from.sin_yaw * sin_[b];
   const double dy = from.sin_yaw * cos_[b] + from.cos_yaw * sin_[b];
-  double range = walls.cast_from(from.origin, dx, dy, reach_m);
-  if (sigma_m > 0.0) range += sigma_m * common::Rng::first_normal(noise_seed);
-  const bool in_range = range >= spec_.min_range_m && range <= spec_.max_range_m;
-  return in_range ? static_cast<float>(range) : std::numeric_limits<float>::infinity();
+  const double range = walls.cast_from(from.origin, dx, dy, reach_m);
+  const double noise_m = sigma_m > 0.0 ? sigma_m * common::Rng::first_normal(noise_seed) : 0.0;
+  return reading(i, range, noise_m);
 }
 
 RayHit cast_hit(const WallGrid &walls, double x_m, double y_m, double angle_rad, double max_range_m) {

@@ -6,10 +6,12 @@
 //
 // | profile       | motors / encoders            | other devices                                |
 // |---------------|------------------------------|----------------------------------------------|
-// | hambot        | "left motor", "right motor", | Lidar "lidar" (360 beams, 2 pi, 0.07-3 m,    |
-// |  (default)    | "left wheel encoder",        |   noise 0.000833, rotating at 12 Hz);        |
+// | hambot        | "left motor", "right motor", | Lidar "lidar" (360 beams, 2 pi, 0.05-12 m,   |
+// |  (default)    | "left wheel encoder",        |   noise 0.000833, resolution 0.01 m, fixed); |
 // |               | "right wheel encoder"        |   InertialUnit "imu"; GPS "gps"; no bumpers  |
-// | hambot-12m    | as hambot                    | as hambot, the lidar reaching 12 m           |
+// | hambot-2025   | as hambot                    | as hambot, last year's lidar: 0.07-3 m,      |
+// |               |                              |   no resolution, rotating at 12 Hz           |
+// | hambot-12m    | as hambot                    | as hambot-2025, the lidar reaching 12 m      |
 // | bumper-depth  | as hambot                    | imu, gps; TouchSensor "bumper front",        |
 // |               |                              |   "bumper left" (+45 deg), "bumper right";   |
 // |               |                              |   DistanceSensor "depth0" ... "depth8" (+60  |
@@ -48,6 +50,9 @@ struct LidarSpec {
   double noise = 0.0;  // Gaussian sigma as a fraction of max_range_m (Webots' `noise`)
   // A rotating head's frequency (Webots' `type "rotating"`, `defaultFrequency`); 0: fixed.
   double frequency_hz = 0.0;
+  // Webots' `resolution`: every range is rounded to the nearest multiple of it (ties away
+  // from zero), after the noise; 0: not quantised (Webots' -1). docs/simulator.md says how.
+  double resolution_m = 0.0;
   bool operator==(const LidarSpec &) const = default;
 };
 
@@ -110,14 +115,14 @@ const std::vector<RobotProfile> &profiles();
 const RobotProfile &default_profile();
 // The profile called name; throws common::InputError naming the known profiles otherwise.
 const RobotProfile &find_profile(std::string_view name);
-// "hambot, hambot-12m, bumper-depth, ir-ring, sonar-ring, micromouse"
+// "hambot, hambot-2025, hambot-12m, bumper-depth, ir-ring, sonar-ring, micromouse"
 std::string profile_names();
 
 // Throws common::InputError naming the first bad field by its key path, e.g.
 // "lidars[0].max_range_m must be greater than min_range_m (got 0.05 <= 0.07)". Checks: a
 // name; positive finite wheel radius, axle, body radius and wheel speed; motors and encoders
 // named; device names unique; lidars with 1 to 100000 beams, a field of view in (0, 2 pi],
-// 0 <= min range < max range, noise >= 0 and frequency >= 0; distance sensors with at least
+// 0 <= min range < max range, noise >= 0, frequency >= 0 and resolution >= 0; distance sensors with at least
 // one ray, an aperture in [0, pi], a positive Gaussian width, a lookup table of increasing
 // distances; bumpers with a
 // half arc in (0, pi]. Every angle finite.

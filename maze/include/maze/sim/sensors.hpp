@@ -32,9 +32,30 @@ std::uint64_t beam_seed(std::uint64_t seed, int device, std::int64_t step, int b
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
 
-// The direction of lidar beam i relative to the heading: fov/2 - i fov/N (ARCHITECTURE.md, Conventions), so with
-// 360 beams over 2 pi index 0 looks back, 90 left, 180 ahead, 270 right.
+// The direction of lidar beam i relative to the heading, as Webots points it: a rotating
+// lidar's at fov/2 - i fov/N, a fixed lidar's half a beam in, fov/2 - (i + 1/2) fov/N (the
+// centre of pixel i of the camera Webots renders it with; docs/simulator.md). Either way,
+// with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right.
 double beam_angle_rad(const LidarSpec &lidar, int i);
+// 0 (rotating) or 0.5 (fixed): beam_angle_rad's offset, in beams.
+double beam_offset(const LidarSpec &lidar);
+
+// Webots renders a fixed lidar with cameras facing every quarter turn (ahead, left, back,
+// right) and measures depth along the facing camera's axis: the cosine of a beam's angle
+// from the nearest of those axes, in [cos(pi/4), 1].
+double face_cos(double beam_angle_rad);
+// range_m rounded to the nearest multiple of resolution_m, halves up (Webots'
+// depth_resolution shader: floor(r / resolution + 0.5) x resolution); unchanged when
+// resolution_m is not positive.
+double quantised_m(double range_m, double resolution_m);
+// What a fixed Webots lidar returns for a beam whose wall is range_m away, cos_face its
+// face_cos, noise_m its Gaussian draw: the depth along the face's axis, range_m x cos_face,
+// is +infinity outside [min range, max range); else noise is added to it, it is quantised,
+// divided by cos_face back to a range along the beam, and that is +infinity outside
+// [min range, max range) again.
+float fixed_lidar_reading(const LidarSpec &lidar, double range_m, double cos_face, double noise_m);
+// A rotating lidar's: range_m plus noise_m, quantised, +infinity outside [min, max].
+float rotating_lidar_reading(const LidarSpec &lidar, double range_m, double noise_m);
 
 // A lidar with its beam directions computed once.
 class LidarModel {
@@ -42,10 +63,10 @@ class LidarModel {
   explicit LidarModel(const LidarSpec &spec);
   const LidarSpec &spec() const { return spec_; }
 
-  // The range image at pose, in out (spec.horizontal_resolution values, m): the distance to
-  // the first wall plus Gaussian noise of sigma noise x max range, +infinity when that is
-  // outside [min range, max range]. One normal variate is drawn per beam, in index order,
-  // whether or not the beam returns; noise 0 draws none.
+  // The range image at pose, in out (spec.horizontal_resolution values, m): each beam's
+  // distance to the first wall with Gaussian noise of sigma noise x max range, as
+  // fixed_lidar_reading or rotating_lidar_reading make it a reading. One normal variate is
+  // drawn per beam, in index order, whether or not the beam returns; noise 0 draws none.
   void range_image(const WallGrid &walls, double noise, const Pose &pose, common::Rng &rng,
                    std::span<float> out) const;
   // Where beams are cast from: a pose's cast origin and heading, computed once per pose.
@@ -63,8 +84,12 @@ class LidarModel {
   double sweep_phase(int i) const { return sweep_phase_[static_cast<std::size_t>(i)]; }
 
  private:
+  // Beam i's reading of a wall range_m away with noise_m of noise, as the lidar's type makes it.
+  float reading(int i, double range_m, double noise_m) const;
+
   LidarSpec spec_;
   std::vector<double> cos_, sin_;  // of beam_angle_rad(spec_, i)
+  std::vector<double> face_cos_;   // face_cos(beam_angle_rad(spec_, i))
   std::vector<double> sweep_phase_;
 };
 

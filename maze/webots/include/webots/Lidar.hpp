@@ -4,10 +4,13 @@
 
 namespace webots {
 
-// A planar lidar. The range image is ordered left to right as seen from the sensor:
-// beam i points at fov/2 - i * fov / N from the heading (counter-clockwise positive), so
-// with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead, 270 right. A reading
-// outside [min range, max range] is +infinity. Ranges are computed when read (lazily).
+// A planar lidar. The range image is ordered left to right as seen from the sensor: a fixed
+// lidar's beam i points at fov/2 - (i + 1/2) * fov / N from the heading (counter-clockwise
+// positive; the centre of pixel i of the image Webots renders), a rotating lidar's at
+// fov/2 - i * fov / N, so with 360 beams over 2 pi, index 0 looks back, 90 left, 180 ahead,
+// 270 right. A reading outside [min range, max range] is +infinity; a fixed lidar's
+// `resolution` rounds the depth as Webots does (docs/simulator.md). Ranges are computed when
+// read (lazily).
 //
 // A rotating lidar (getFrequency() > 0; Webots' `type "rotating"`) fills its range image a
 // slice per basic time step, as Webots does: its head starts facing ahead when the lidar is
