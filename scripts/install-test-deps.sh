@@ -1,6 +1,15 @@
 #!/bin/sh
-# Installs, on top of scripts/install-deps.sh, what the tests that need a browser use:
-# Debian's chromium, for tests/replay_chromium.sh (replay.html loaded in headless Chromium).
-# maze_mapper itself does not need it; without it that test is skipped, unless
-# MAZE_MAPPER_REQUIRE_CHROMIUM is set (.ci/run sets it and runs this script first).
-exec "$(dirname "$0")/install-deps.sh" chromium
+# Installs, on top of scripts/install-deps.sh, what the tests and CI need; maze_mapper itself
+# needs none of it:
+#   doctest-dev                 the unit tests (without it the release preset builds no tests)
+#   clang libclang-rt-14-dev    the fuzz preset: the sanitizer build of the suite and libFuzzer
+#   universal-ctags             style/sizes (scripts/check_sizes.sh)
+#   tmux                        animate_tmux (--animate in a real terminal)
+#   chromium                    replay_chromium (replay.html in headless Chromium; skipped
+#                               without it unless MAZE_MAPPER_REQUIRE_CHROMIUM is set, as
+#                               .ci/run does)
+#   dpkg-dev file man-db        the Debian package stage (tests/package_deb.sh): CPack's
+#                               dpkg-shlibdeps and file, and `man` to read the installed page
+# Further package names given as arguments are installed too.
+exec "$(dirname "$0")/install-deps.sh" doctest-dev clang libclang-rt-14-dev universal-ctags tmux chromium \
+    dpkg-dev file man-db "$@"
