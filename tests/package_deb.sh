@@ -15,7 +15,15 @@ if dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok ins
     fail "$package is installed already; remove it first (apt remove $package)"
 fi
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+installed=0
+# A failing check still removes the package it installed (the machine is left as found).
+cleanup() {
+    if [ "$installed" -eq 1 ]; then
+        DEBIAN_FRONTEND=noninteractive apt-get remove -y -qq --purge "$package" > /dev/null 2>&1 || true
+    fi
+    rm -rf "$work"
+}
+trap cleanup EXIT
 
 rm -f "$build"/maze_mapper_*.deb
 (cd "$build" && cpack -G DEB > "$work/cpack.log") || { cat "$work/cpack.log" >&2; fail "cpack"; }
@@ -25,6 +33,7 @@ echo "depends: $(dpkg-deb -f "$deb" Depends)"
 
 find /usr -xdev | sort > "$work/before"
 export DEBIAN_FRONTEND=noninteractive
+installed=1
 apt-get install -y -qq "$deb" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt install"; }
 dpkg -L "$package" > "$work/files"
 
@@ -38,7 +47,7 @@ echo "ran: maze_mapper, maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.tx
 
 # Every command --help lists, and every one those list (demo 1d, batch merge), in the man page.
 MANPAGER=cat MANWIDTH=80 man maze_mapper > "$work/man.txt" 2> "$work/man.err" || { cat "$work/man.err" >&2; fail "man maze_mapper"; }
-commands() { "$@" --help | sed -n '/^Subcommands:/,/^$/p' | awk '/^  [^ ]/ { print $1 }'; }
+commands() { "$@" --help | sed -n '/^Commands:/,/^$/p' | awk '/^  [^ ]/ { print $1 }'; }
 names=()
 for command in $(commands maze_mapper); do
     names+=("$command")
@@ -64,6 +73,7 @@ done
 echo "completion: bash completes 'maze_mapper run --rob' to --robot; zsh and fish installed"
 
 apt-get remove -y -qq --purge "$package" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt remove"; }
+installed=0
 find /usr -xdev | sort > "$work/after"
 if ! diff "$work/before" "$work/after" > "$work/diff"; then
     cat "$work/diff" >&2
