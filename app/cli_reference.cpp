@@ -1,5 +1,6 @@
 #include "app/cli_reference.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <iostream>
 #include <map>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/help_format.hpp"
 #include "common/error.hpp"
 
 namespace app {
@@ -122,8 +124,16 @@ void man_command(const CommandNode &node, std::string &out) {
   for (const CLI::Option *p : positionals(*node.app)) {
     out += fmt::format(".TP\n\\fI{}\\fR\n{}\n", roff(p->get_name()), roff(p->get_description()));
   }
+  // In --help's order of groups (app/help_format.hpp), each group's options as registered.
+  std::vector<const CLI::Option *> options = named_options(*node.app);
+  const auto rank = [](const CLI::Option *o) {
+    const std::vector<std::string> order{"Options", kWorldGroup, kRobotGroup, kExplorationGroup, kFaultsGroup, kOutputGroup};
+    return static_cast<std::size_t>(std::find(order.begin(), order.end(), o->get_group()) - order.begin());
+  };
+  std::stable_sort(options.begin(), options.end(),
+                   [&rank](const CLI::Option *a, const CLI::Option *b) { return rank(a) < rank(b); });
   std::string group;
-  for (const CLI::Option *o : named_options(*node.app)) {
+  for (const CLI::Option *o : options) {
     if (o->get_group() != group && o->get_group() != "Options" && o->get_group() != "OPTIONS") {
       out += fmt::format(".PP\n\\fI{}:\\fR\n", roff(o->get_group()));
     }
