@@ -317,7 +317,7 @@ std::string zsh_completion(const CLI::App &root) {
         if (takes_value(*o)) taking_value.push_back(name);
       }
     }
-    branches += fmt::format("    \"{}\") commands=({}); options=({}); taking_value=({}) ;;\n", path,
+    branches += fmt::format("    \"{}\") subs=({}); opts=({}); valued=({}) ;;\n", path,
                             fmt::join(commands, " "), fmt::join(options, " "), fmt::join(taking_value, " "));
   }
   return fmt::format(R"(#compdef maze_mapper
@@ -325,7 +325,8 @@ std::string zsh_completion(const CLI::App &root) {
 # (maze_mapper {ref} zsh).
 _maze_mapper() {{
     local cmdpath="" word i
-    local -a commands options taking_value
+    # Not commands, options: zsh's own (zsh/parameter) parameters.
+    local -a subs opts valued
     for ((i = 2; i < CURRENT; i++)); do
         word=${{words[i]}}
         case "$cmdpath/$word" in
@@ -334,12 +335,12 @@ _maze_mapper() {{
     done
     case "$cmdpath" in
 {branches}    esac
-    if (( ${{taking_value[(Ie)${{words[CURRENT-1]}}]}} )); then
+    if (( ${{valued[(Ie)${{words[CURRENT-1]}}]}} )); then
         _files
     elif [[ $PREFIX == -* ]]; then
-        _describe -t options option options
+        _describe -t options option opts
     else
-        (( ${{#commands}} )) && _describe -t commands command commands
+        (( ${{#subs}} )) && _describe -t commands command subs
         _files
     fi
 }}
