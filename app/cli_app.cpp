@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli_reference.hpp"
+#include "app/help_format.hpp"
 #include "commands.hpp"
 
 namespace app {
@@ -39,7 +41,9 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   add_generate_command(cli, context);
   add_scan_command(cli, context);
   add_robot_command(cli, context);
+  add_reference_command(cli);
   refuse_empty_values(cli);
+  use_readable_help(cli);
 }
 
 }  // namespace app

@@ -1,6 +1,7 @@
 #include "cli_errors.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <regex>
 #include <sstream>
 
@@ -54,6 +55,7 @@ const CLI::App &chosen(const CLI::App &cli) {
 std::vector<std::string> option_names(const CLI::App &app) {
   std::vector<std::string> names;
   for (const CLI::Option *o : app.get_options()) {
+    if (o->get_group().empty()) continue;  // hidden: an old spelling, not one to suggest
     for (const std::string &l : o->get_lnames()) names.push_back("--" + l);
     for (const std::string &s : o->get_snames()) names.push_back("-" + s);
   }
@@ -63,6 +65,7 @@ std::vector<std::string> option_names(const CLI::App &app) {
 std::vector<std::string> command_names(const CLI::App &app) {
   std::vector<std::string> names;
   for (const CLI::App *sub : app.get_subcommands([](const CLI::App *) { return true; })) {
+    if (sub->get_group().empty()) continue;  // hidden (the build's __reference)
     names.push_back(sub->get_name());
   }
   return names;
@@ -70,6 +73,25 @@ std::vector<std::string> command_names(const CLI::App &app) {
 
 std::string either(const std::vector<std::string> &names) {
   return names.size() == 1 ? names[0] : fmt::format("{} or {}", names[0], names[1]);
+}
+
+// The options `typed` may have meant. A short option is one letter, and every other letter is
+// one edit from it: -q means the long options starting with q (--quiet), or the same letter in
+// the other case; a long name typed with one dash (-quiet) is read with two.
+std::vector<std::string> close_option_names(const std::string &typed, const std::vector<std::string> &names) {
+  if (typed.size() == 2 && typed[1] != '-') {
+    std::vector<std::string> close;
+    for (const std::string &name : names) {
+      const bool long_with_letter = name.size() > 3 && name.starts_with("--") && name[2] == typed[1];
+      const bool other_case = name.size() == 2 && name != typed &&
+                              std::tolower(static_cast<unsigned char>(name[1])) == std::tolower(static_cast<unsigned char>(typed[1]));
+      if (long_with_letter || other_case) close.push_back(name);
+    }
+    if (close.size() > 2) close.clear();  // -s: --seed, --strategy, --subcells... no guess
+    return close;
+  }
+  if (typed.size() > 2 && typed[1] != '-') return close_names("-" + typed, names);
+  return close_names(typed, names);
 }
 
 // The first word CLI11 did not expect, told with the names it may have meant.
@@ -85,7 +107,7 @@ std::string unexpected(const CLI::App &cli, const std::string &words) {
   const CLI::App &app = chosen(cli);
   const std::string where = &app == &cli ? "maze_mapper" : app.get_name();
   if (first.starts_with("-")) {
-    const std::vector<std::string> close = close_names(first, option_names(app));
+    const std::vector<std::string> close = close_option_names(first, option_names(app));
     return close.empty() ? fmt::format("{} has no option {}", where, first)
                          : fmt::format("{} has no option {}; did you mean {}?", where, first, either(close));
   }

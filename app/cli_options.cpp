@@ -2,7 +2,10 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string_view>
 #include <system_error>
@@ -12,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "demo_commands.hpp"
 #include "maze/sim/profile.hpp"
 
 namespace app {
@@ -139,14 +143,79 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
       "--start", [&overrides](const std::string &text) { parse_start(text, overrides); },
       "X,Y[,HEADING], pos:N or random: start cell, facing N, E, S or W (default N); the world's N-th start "
       "position; or one of them picked by --seed (default the world's start)");
-  command.add_option_function<std::string>(
-      "--goal",
-      [&overrides](const std::string &text) {
-        overrides.centre_goals = text == "centre" || text == "center";
-        if (!overrides.centre_goals) overrides.goals = parse_goals(text);
-      },
-      "X,Y[;X,Y...] or centre: goal cells, in place of the world's; centre: the maze's centre cells (2x2 on "
-      "an even size, the micromouse convention) (default the world's)");
+  command
+      .add_option_function<std::vector<std::string>>(
+          "--goal",
+          [&overrides](const std::vector<std::string> &texts) {
+            overrides.goals.reset();
+            overrides.centre_goals = false;
+            std::vector<maze::Cell> all;
+            for (const std::string &text : texts) {
+              if (text == "centre" || text == "center") {
+                if (texts.size() > 1) throw common::InputError("--goal centre stands alone (it names the centre cells)");
+                overrides.centre_goals = true;
+                continue;
+              }
+              const std::vector<maze::Cell> goals = parse_goals(text);
+              if (goals.size() > 1) {
+                std::string repeated;
+                for (const maze::Cell &g : goals) repeated += fmt::format("{}--goal {},{}", repeated.empty() ? "" : " ", g.x, g.y);
+                fmt::print(stderr, "{}\n", old_spelling_warning("--goal " + text, repeated));
+              }
+              all.insert(all.end(), goals.begin(), goals.end());
+            }
+            if (!all.empty()) overrides.goals = all;
+          },
+          "X,Y|centre: a goal cell, in place of the world's; repeat it for more (--goal 7,7 --goal 7,8); "
+          "centre: the maze's centre cells (2x2 on an even size, the micromouse convention) (default the world's)")
+      ->expected(1)
+      ->allow_extra_args(false)  // --goal 3,3 WORLD: the world is not a goal
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+PoseArgument parse_pose(const std::string &text, const std::string &option, std::vector<std::string> &warnings) {
+  std::string numbers = text;
+  bool radians = false;
+  if (numbers.ends_with("rad")) {
+    radians = true;
+    numbers.resize(numbers.size() - 3);
+  } else if (numbers.ends_with("deg")) {
+    numbers.resize(numbers.size() - 3);
+  }
+  const std::vector<double> values = parse_number_list(numbers, option, 3);
+  for (const double v : values) {
+    if (!std::isfinite(v)) throw common::InputError(fmt::format("{} must be three finite numbers", option));
+  }
+  PoseArgument pose{values[0], values[1], values[2], values[2]};
+  if (radians) {
+    pose.yaw_deg = values[2] * 180.0 / std::numbers::pi;
+    if (std::abs(values[2]) > 2.0 * std::numbers::pi) {
+      warnings.push_back(fmt::format("warning: {} YAW {}rad is {:g} degrees, more than a turn; for {} degrees write {} "
+                                     "{:g},{:g},{}",
+                                     option, values[2], pose.yaw_deg, values[2], option, values[0], values[1], values[2]));
+    }
+  } else {
+    pose.yaw_rad = values[2] * std::numbers::pi / 180.0;
+  }
+  return pose;
+}
+
+std::string old_spelling_warning(const std::string &old_spelling, const std::string &new_spelling) {
+  return fmt::format("warning: {} is the old spelling; write {} (the old one goes in the next release)", old_spelling,
+                     new_spelling);
+}
+
+CLI::Option *add_old_spelling(CLI::App &command, const std::string &old_name, const std::string &new_name,
+                              std::function<void(const std::string &)> take) {
+  return command
+      .add_option_function<std::string>(
+          old_name,
+          [old_name, new_name, take](const std::string &value) {
+            fmt::print(stderr, "{}\n", old_spelling_warning(old_name, new_name));
+            take(value);
+          },
+          fmt::format("VALUE: the old spelling of {}", new_name))
+      ->group("");
 }
 
 }  // namespace app

@@ -3,7 +3,9 @@
 // are checked, the same everywhere.
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -25,11 +27,35 @@ std::string robot_names();
 // naming `option` as the user typed it: "--to must be X,Y (got '1')".
 mapping::Cell parse_cell(const std::string &text, const std::string &option);
 
-// --cell-size M alone (scan, convert), or with --start X,Y[,HEADING] and --goal X,Y[;X,Y...]
-// (run, compare, plan, batch), parsed straight into the overrides and checked as they are
-// read (common::InputError naming the option). Cells are checked against the maze when it
+// --cell-size M alone (scan, convert), or with --start X,Y[,HEADING] and --goal X,Y (repeated
+// for more cells; the old X,Y;X,Y warns) (run, compare, plan, batch), parsed straight into the
+// overrides and checked as they are read (common::InputError naming the option). Cells are checked against the maze when it
 // is loaded (maze::load_world).
 void add_cell_size_option(CLI::App &command, maze::WorldOverrides &overrides);
 void add_world_options(CLI::App &command, maze::WorldOverrides &overrides);
+
+// A pose as every command spells it: X,Y,YAW in one word (no quoting), X and Y in metres, YAW
+// in degrees counter-clockwise from east, or with its unit: 90deg, 1.5708rad. Both angles
+// are given; yaw_deg is exactly as typed when YAW was degrees, yaw_rad when radians.
+struct PoseArgument {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double yaw_deg = 0.0;
+  double yaw_rad = 0.0;
+};
+// Throws common::InputError naming `option`: "--pose needs 3 numbers (got 2)", "--pose must
+// be three finite numbers". A YAW in radians larger than 2 pi looks like degrees: a warning
+// line saying so is added to `warnings`.
+PoseArgument parse_pose(const std::string &text, const std::string &option, std::vector<std::string> &warnings);
+
+// The warning an old spelling gives (kept for one release): "warning: OLD is the old spelling;
+// write NEW (OLD goes in the next release)".
+std::string old_spelling_warning(const std::string &old_spelling, const std::string &new_spelling);
+
+// `old_name` kept for one release as another name of an option with a value: hidden from
+// --help, the man page and the completions, it passes its value to `take` and warns on
+// standard error with old_spelling_warning(old_name, new_name).
+CLI::Option *add_old_spelling(CLI::App &command, const std::string &old_name, const std::string &new_name,
+                              std::function<void(const std::string &)> take);
 
 }  // namespace app

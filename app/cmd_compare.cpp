@@ -197,7 +197,7 @@ void add_compare_command(CLI::App &cli, CommandContext &context) {
   compare->remove_option(compare->get_option("--subcells"));
   compare->add_option("--subcells", *subcells, "K1,K2,...: the resolutions to compare (default 3,5)");
   compare->add_flag("--quiet", output->quiet, "print only the summaries' table, not the maps");
-  compare->add_option("--out", output->out_dir,
+  compare->add_option("-o,--out", output->out_dir,
                       "DIR: compare.csv (a row per K) and run --out's files for each K in DIR/kK/ (trace.csv left out)");
   compare->callback([compare, parsed, subcells, output, &context] {
     const std::vector<int> ks = parse_ks(*subcells);

@@ -3,14 +3,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <numbers>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "app/cli_options.hpp"
 #include "app/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -135,9 +138,12 @@ int run_demo_cone(const DemoConeInput &input) {
   if (range_m / resolution_m > kMaxRangeCells) {
     throw common::InputError(fmt::format("--range is more than {:g} cells of --resolution", kMaxRangeCells));
   }
-  const auto pose = input.pose.empty() ? std::vector<double>{0.0, 0.0, 90.0} : parse_number_list(input.pose, "--pose", 3);
-  for (const double v : pose) {
-    if (!std::isfinite(v)) throw common::InputError("--pose must be three finite numbers");
+  std::vector<double> pose{0.0, 0.0, 90.0};
+  if (!input.pose.empty()) {
+    std::vector<std::string> warnings;
+    const PoseArgument given = parse_pose(input.pose, "--pose", warnings);
+    for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+    pose = {given.x_m, given.y_m, given.yaw_deg};
   }
   // Far from the origin a cell index loses its precision (1e308 m printed inf and nan rows).
   constexpr double kMaxPoseCells = 1e6;
@@ -173,7 +179,7 @@ void add_demo_cone(CLI::App &demo, CommandContext &context) {
   auto input = std::make_shared<DemoConeInput>();
   cone->add_option("--sensor", input->sensor, "ir or sonar (default ir)");
   CLI::Option *range = cone->add_option("--range", input->range_m, "the reading D, m (default 0.2 for ir, 1 for sonar)");
-  cone->add_option("--pose", input->pose, "X,Y,DEG: the sensor, m and deg (default 0,0,90)");
+  cone->add_option("--pose", input->pose, "X,Y,YAW: the sensor, m and degrees (1.5708rad: radians) (default 0,0,90)");
   CLI::Option *resolution = cone->add_option("--resolution", input->resolution_m, "a grid cell, m (default 0.01 for ir, 0.05 for sonar)");
   cone->add_option("--csv", input->csv_path, "FILE: i,j of the marked cells");
   cone->add_option("--png", input->png_path, "FILE: the marked cells and the beam's edges as a PNG picture");

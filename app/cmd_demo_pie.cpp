@@ -4,14 +4,17 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
 #include <system_error>
 
 #include <fmt/format.h>
 
+#include "app/cli_options.hpp"
 #include "app/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -148,8 +151,10 @@ sensing::PieDemoOptions to_options(const DemoPieInput &input) {
   if (!input.readings.empty()) o.readings_m = parse_number_list(input.readings, "--readings");
   if (!input.mounts.empty()) o.mounts_deg = parse_number_list(input.mounts, "--mounts");
   if (!input.pose.empty()) {
-    const auto pose = parse_number_list(input.pose, "--pose", 3);
-    o.x_m = pose[0], o.y_m = pose[1], o.heading_deg = pose[2];
+    std::vector<std::string> warnings;
+    const PoseArgument pose = parse_pose(input.pose, "--pose", warnings);
+    for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+    o.x_m = pose.x_m, o.y_m = pose.y_m, o.heading_deg = pose.yaw_deg;
   }
   sensing::validate(o);
   return o;
@@ -208,7 +213,7 @@ void add_demo_pie(CLI::App &demo, CommandContext &context) {
   sensing::PieDemoOptions &o = input->options;
   pie->add_option("--readings", input->readings, "comma-separated IR readings in m, left to right (default 1,1.5,1.5,0.8,1.2,1.5)");
   pie->add_option("--mounts", input->mounts, "the sensors' directions from the heading, deg, left positive (default 75,45,15,-15,-45,-75)");
-  pie->add_option("--pose", input->pose, "X,Y,DEG: the robot (default 1.5,2.5,270)");
+  pie->add_option("--pose", input->pose, "X,Y,YAW: the robot, m and degrees (1.5708rad: radians) (default 1.5,2.5,270)");
   pie->add_option("--beta", o.half_angle_deg, fmt::format("slice half-angle, deg (default {:g})", o.half_angle_deg));
   pie->add_option("--alpha", o.contact_m, fmt::format("contact depth, m (default {:g})", o.contact_m));
   pie->add_option("--resolution", o.resolution_m, fmt::format("cell side, m (default {:g})", o.resolution_m));

@@ -15,6 +15,8 @@
 
 #include <fmt/format.h>
 
+#include "app/cli_options.hpp"
+#include "app/help_format.hpp"
 #include "app/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -214,12 +216,12 @@ sensing::LogMapOptions to_options(const MapLogInput &input) {
 
 // The steps (1-based) after which a snapshot is taken: fractions of the log, rounded.
 std::vector<std::size_t> snapshot_steps(const MapLogInput &input, std::size_t steps) {
-  if (!input.snapshots.empty() && input.out_dir.empty()) throw common::InputError("--snapshots needs --out DIR");
+  if (!input.snapshots.empty() && input.out_dir.empty()) throw common::InputError("--snapshots-at needs --out DIR");
   const auto fractions = input.snapshots.empty() ? std::vector<double>{1.0 / 3, 2.0 / 3, 1.0}
-                                                 : parse_number_list(input.snapshots, "--snapshots");
+                                                 : parse_number_list(input.snapshots, "--snapshots-at");
   std::vector<std::size_t> out;
   for (const double f : fractions) {
-    if (!(f > 0.0 && f <= 1.0)) throw common::InputError(fmt::format("--snapshots are fractions in (0, 1] (got {})", f));
+    if (!(f > 0.0 && f <= 1.0)) throw common::InputError(fmt::format("--snapshots-at are fractions in (0, 1] (got {})", f));
     out.push_back(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(f * static_cast<double>(steps)))));
   }
   return out;
@@ -374,15 +376,17 @@ void add_map_log_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("LOG", input->log_path, "CSV: t,x,y,theta and bump_right,bump_left,bump_front or depth_1..depth_9, or run --out's trace.csv")->required();
   cmd->add_option("--sensor", input->sensor, "bump or depth (default the one the log's columns hold)");
   cmd->add_option("--cells", input->cells, "X,Y: numCells (default 25,25)");
-  cmd->add_option("--boundary", input->boundary, "XS,XE,YS,YE: the grid's extent, m (required)");
+  show_as_required(*cmd->add_option("--boundary", input->boundary, "XS,XE,YS,YE: the grid's extent, m (required)"));
   cmd->add_option("--prior", o.prior, "prior probability (default 0.5)");
   cmd->add_option("--log-base", input->base, "e or 10 (default 10, the homework's)");
   CLI::Option *radius = cmd->add_option("--bump-radius", o.bump_radius_m, fmt::format("centre to the bumpers' contact points, m (default {:g})", o.bump_radius_m));
   CLI::Option *angles = cmd->add_option("--depth-angles", input->depth_angles, "A1,...,A9: depth_1..depth_9's directions, deg, left positive (default 28.5 ... -28.5)");
   CLI::Option *depth_max = cmd->add_option("--depth-max", o.depth_max_m, "depth max range, m: readings >= it are ignored (default 10)");
   cmd->add_option("--threshold", input->threshold, "log-odds at or above which a cell is drawn W (default -0.5)");
-  cmd->add_option("--snapshots", input->snapshots, "F1,F2,...: fractions of the log to write grids at (default 0.333,0.667,1; needs --out)");
-  cmd->add_option("--out", input->out_dir, "DIR: logodds.csv (Y rows, north first) and logodds.png, logodds_stepN.csv and .png per snapshot, thresholded.txt and .png");
+  cmd->add_option("--snapshots-at", input->snapshots, "F1,F2,...: fractions of the log to write grids at (default 0.333,0.667,1; needs --out)");
+  // run's --snapshots is a count; this one's fractions were --snapshots before.
+  add_old_spelling(*cmd, "--snapshots", "--snapshots-at", [input](const std::string &text) { input->snapshots = text; });
+  cmd->add_option("-o,--out", input->out_dir, "DIR: logodds.csv (Y rows, north first) and logodds.png, logodds_stepN.csv and .png per snapshot, thresholded.txt and .png");
   cmd->callback([&context, input, radius, angles, depth_max] {
     input->bump_options_given = radius->count() > 0;
     input->depth_options_given = angles->count() + depth_max->count() > 0;

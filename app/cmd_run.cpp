@@ -4,12 +4,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "app/cli_options.hpp"
 #include "app/run.hpp"
@@ -34,13 +34,13 @@ void add_width_options(CLI::App &command, RunOptions &o) {
 }
 
 // What only `run` takes, besides the exploration options.
-void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
+void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
   run.add_flag("--quiet", o.output.quiet, "print only the final map and the summary");
   add_speed_run_option(run, o);
   run.add_option_function<std::string>(
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
-  run.add_option("--out", o.output.out_dir,
+  run.add_option("-o,--out", o.output.out_dir,
                  "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
   // 0 is "none" inside (the default), not a value to type: --snapshots 0 wrote none, silently.
   run.add_option_function<int>(
@@ -54,7 +54,17 @@ void add_run_only_options(CLI::App &run, RunOptions &o, bool &no_color) {
   run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv (a row a control step)");
   run.add_flag("--no-replay{false}", o.output.replay,
                "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
-  run.add_flag("--no-color", no_color, "no ANSI colours (default colours when stdout is a terminal)");
+  run.add_option_function<std::string>(
+      "--color", [&color](const std::string &text) { color = parse_color_choice(text); },
+      "WHEN: ANSI colours auto (when standard output is a terminal and NO_COLOR is not set), always or never "
+      "(default auto)");
+  run.add_flag_callback("--no-color",
+                        [&color] {
+                          fmt::print(stderr, "{}\n", old_spelling_warning("--no-color", "--color never"));
+                          color = ColorChoice::never;
+                        },
+                        "the old spelling of --color never")
+      ->group("");
   run.add_flag("--animate", o.output.animate,
                "redraw the map in place as the robot moves (standard output must be a terminal)");
   add_width_options(run, o);
@@ -78,20 +88,14 @@ void run_in_terminal(const RunOptions &options, CommandContext &context) {
 
 }  // namespace
 
-std::string default_world() {
-  const std::string relative = "worlds/lab4x4.txt";
-  if (std::filesystem::exists(relative)) return relative;
-  return std::string(MAZE_MAPPER_WORLDS_DIR) + "/lab4x4.txt";
-}
-
 void add_run_command(CLI::App &cli, CommandContext &context) {
   auto parsed = std::make_shared<RunOptions>();
-  auto no_color = std::make_shared<bool>(false);
+  auto color = std::make_shared<ColorChoice>(ColorChoice::automatic);
   CLI::App *run = cli.add_subcommand(
       "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
   add_exploration_options(*run, *parsed);
-  add_run_only_options(*run, *parsed, *no_color);
-  run->callback([run, parsed, no_color, &context] {
+  add_run_only_options(*run, *parsed, *color);
+  run->callback([run, parsed, color, &context] {
     RunOptions options = checked_run_options(*run, *parsed, true);
     const std::vector<std::string> warnings = options_not_applying(*run, options);
     if (context.run_parse_only != nullptr) {
@@ -104,7 +108,7 @@ void add_run_command(CLI::App &cli, CommandContext &context) {
           "prints the map at each new cell");
     }
     print_warnings(warnings);
-    options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
+    options.output.color = use_color(*color, STDOUT_FILENO);
     run_in_terminal(options, context);
   });
 }
@@ -122,7 +126,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
   plan->add_option_function<std::string>(
       "--to", [parsed](const std::string &text) { parsed->plan.to = parse_cell(text, "--to"); },
       "X,Y: goal cell of the path (default the maze's first goal)");
-  plan->add_option("--out", parsed->output.out_dir,
+  plan->add_option("-o,--out", parsed->output.out_dir,
                    "DIR: run --out's files, and plan.png (the learned map with the planned path) and plan.csv (its sub-cells)");
   plan->callback([plan, parsed, &context] {
     RunOptions options = checked_run_options(*plan, *parsed, true);

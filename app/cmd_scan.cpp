@@ -1,6 +1,7 @@
-// maze_mapper scan WORLD --pose X Y YAW [--robot NAME] [--noise X] [--seed N]
+// maze_mapper scan WORLD --pose X,Y,YAW [--robot NAME] [--noise X] [--seed N]
 // Prints one lidar range image at a pose: `index angle_rad range_m` a line, `inf` for no return.
-// YAW is radians (counter-clockwise from east), or degrees written with a deg suffix (90deg).
+// The pose is spelled as everywhere (app/cli_options.hpp: YAW in degrees, or 1.5708rad); the
+// old `--pose X Y YAW` (three words, YAW in radians or 90deg) still works, with a warning.
 
 #include <charconv>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include "maze/sim/profile.hpp"
 
 #include "app/run_cli.hpp"
+#include "app/help_format.hpp"
 #include "app/profile_json.hpp"
 #include "commands.hpp"
 #include "maze/sim/scan.hpp"
@@ -67,20 +69,49 @@ double yaw_rad(const std::string &text) {
       "--pose YAW must be a finite number of radians, or of degrees with a deg suffix like 90deg (got '{}')", text));
 }
 
+// The pose from --pose's words: one word X,Y,YAW (the words after it, when WORLD was not given
+// before, are WORLD: CLI11 gives --pose up to three), or the old three words X Y YAW.
+maze::sim::Pose scan_pose(ScanArgs &args, std::vector<std::string> &warnings) {
+  const std::vector<std::string> &words = args.pose;
+  if (words.size() == 3 && words[0].find(',') == std::string::npos) {
+    if (args.world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
+    const double x = metres(words[0], "X");
+    const double y = metres(words[1], "Y");
+    const double yaw = yaw_rad(words[2]);
+    const bool in_degrees = words[2].ends_with("deg");
+    const double degrees = yaw * 180.0 / std::numbers::pi;
+    warnings.push_back(old_spelling_warning(fmt::format("--pose {} {} {}", words[0], words[1], words[2]),
+                                            fmt::format("--pose {:g},{:g},{:g} (YAW in degrees)", x, y, degrees)));
+    if (!in_degrees && std::abs(yaw) > 2.0 * std::numbers::pi) {
+      warnings.push_back(fmt::format("warning: --pose YAW {} is taken as radians ({:g} degrees); for {} degrees write "
+                                     "--pose {:g},{:g},{}",
+                                     words[2], degrees, words[2], x, y, words[2]));
+    }
+    return {x, y, yaw};
+  }
+  for (std::size_t i = 1; i < words.size(); ++i) {
+    if (!args.world.empty()) throw common::InputError(fmt::format("scan: unexpected argument '{}'", words[i]));
+    args.world = words[i];
+  }
+  if (args.world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
+  const PoseArgument pose = parse_pose(words[0], "--pose", warnings);
+  return {pose.x_m, pose.y_m, pose.yaw_rad};
+}
+
 }  // namespace
 
 void add_scan_command(CLI::App &cli, CommandContext &context) {
   auto args = std::make_shared<ScanArgs>();
   CLI::App *scan = cli.add_subcommand(
       "scan", "print one lidar range image at a pose: `index angle_rad range_m` a line");
-  // Not required() for CLI11: a required positional takes the last of --pose's values when
-  // WORLD is left out, and the error then blames --pose. The callback asks for it instead.
-  scan->add_option("WORLD", args->world, "maze file");
-  scan->add_option("--pose", args->pose,
-                   "X Y YAW: position in metres (world frame) and heading in radians, counter-clockwise "
-                   "from east, or in degrees with a deg suffix (90deg)")
-      ->expected(3)
-      ->required();
+  // Not required() for CLI11: a required positional takes a value of --pose's when WORLD is
+  // left out, and the error then blames --pose. scan_pose asks for it instead.
+  show_as_required(*scan->add_option("WORLD", args->world, "maze file"));
+  CLI::Option *pose = scan->add_option("--pose", args->pose,
+                                       "X,Y,YAW: position in metres (world frame) and heading in degrees, "
+                                       "counter-clockwise from east (1.5708rad: in radians)");
+  pose->expected(1, 3)->required();
+  show_as_required(*pose);
   scan->add_option("--robot", args->robot,
                    fmt::format("NAME or FILE.json: robot profile with a lidar, one of {} (default {})", robot_names(),
                                args->robot));
@@ -89,18 +120,18 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   add_seed_option(*scan, args->seed, "the noise");
   add_cell_size_option(*scan, args->world_overrides);
   scan->callback([args, &context] {
-    if (args->world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
-    const double x = metres(args->pose[0], "X");
-    const double y = metres(args->pose[1], "Y");
-    const double yaw = yaw_rad(args->pose[2]);
+    std::vector<std::string> warnings;
+    const maze::sim::Pose at = scan_pose(*args, warnings);
     const maze::Maze maze = load_world_reporting(args->world, args->world_overrides).maze;
     maze::sim::ScanRequest request;
-    request.pose = {x, y, yaw};
+    request.pose = at;
     request.robot = args->robot;
     if (names_a_profile_file(args->robot)) request.profile = resolve_robot(args->robot);
     request.noise = args->noise;
     request.seed = args->seed;
-    std::cout << maze::sim::format_scan(maze, request);
+    const std::string scan_text = maze::sim::format_scan(maze, request);
+    print_warnings(warnings);  // once the scan is sure: an error stays the one line on stderr
+    std::cout << scan_text;
     context.status = 0;
   });
 }

@@ -61,8 +61,6 @@ void add_compare_command(CLI::App &cli, CommandContext &context);
 RunOptions parse_run_options(int argc, const char *const *argv);
 // `batch WORLD... [--jobs N] [--csv FILE] [run options]` (cmd_batch.cpp, batch.hpp).
 void add_batch_command(CLI::App &cli, CommandContext &context);
-// The default world: worlds/lab4x4.txt from the working directory, else the source tree's.
-std::string default_world();
 // `scan WORLD --pose X Y YAW [--cell-size M]`: one lidar range image, `index angle_rad range_m`
 // a line. YAW is radians, or degrees with a `deg` suffix (90deg).
 void add_scan_command(CLI::App &cli, CommandContext &context);

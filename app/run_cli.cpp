@@ -11,6 +11,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/shipped_worlds.hpp"
 #include "common/error.hpp"
 #include "model_options.hpp"
 
@@ -122,7 +123,7 @@ void add_speed_run_option(CLI::App &command, RunOptions &o) {
 }
 
 void add_exploration_options(CLI::App &command, RunOptions &o) {
-  command.add_option("WORLD", o.world, "maze file (default worlds/lab4x4.txt)");
+  command.add_option("WORLD", o.world, "maze file (default lab4x4.txt, from worlds/ here or the shipped worlds)");
   add_mapping_run_options(command, o);
   command.add_flag("--ascii", o.output.ascii, "heading arrows as ^ > v < instead of ↑ → ↓ ←");
   command.add_option_function<std::string>(
@@ -131,7 +132,7 @@ void add_exploration_options(CLI::App &command, RunOptions &o) {
         validate_unknown(text);
         o.output.unknown = text[0];
       },
-      "CHAR drawn for never-observed sub-cells (default blank)");
+      "CHAR: drawn for never-observed sub-cells (default blank)");
 }
 
 RunOptions checked_run_options(const CLI::App &command, RunOptions options, bool with_default_world) {

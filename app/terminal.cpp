@@ -6,11 +6,14 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <string>
 #include <thread>
 
 #include <fmt/format.h>
+
+#include "common/error.hpp"
 
 namespace app {
 namespace {
@@ -23,6 +26,19 @@ extern "C" void on_sigint(int) { g_interrupted.store(true); }
 }  // namespace
 
 bool is_terminal(int fd) { return ::isatty(fd) == 1; }
+
+ColorChoice parse_color_choice(const std::string &text) {
+  if (text == "auto") return ColorChoice::automatic;
+  if (text == "always") return ColorChoice::always;
+  if (text == "never") return ColorChoice::never;
+  throw common::InputError(fmt::format("--color must be auto, always or never (got '{}')", text));
+}
+
+bool use_color(ColorChoice choice, int fd) {
+  if (choice != ColorChoice::automatic) return choice == ColorChoice::always;
+  const char *no_color = std::getenv("NO_COLOR");
+  return (no_color == nullptr || *no_color == '\0') && is_terminal(fd);
+}
 
 TerminalSize terminal_size(int fd) {
   winsize ws{};

@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 // The terminal side of `run`: its size, the alternate screen for --animate, Ctrl-C.
 
 #include <atomic>
@@ -13,6 +14,13 @@
 namespace app {
 
 bool is_terminal(int fd);
+
+// --color WHEN: auto colours when the output is a terminal and NO_COLOR is unset or empty
+// (no-color.org); always and never as they say (the command line over the environment).
+enum class ColorChoice { automatic, always, never };
+// "auto", "always", "never"; anything else throws common::InputError naming --color.
+ColorChoice parse_color_choice(const std::string &text);
+bool use_color(ColorChoice choice, int fd);
 
 struct TerminalSize {
   int columns = 80;

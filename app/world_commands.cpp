@@ -97,7 +97,8 @@ void add_generate_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--loops", args->loops,
                   fmt::format("fraction (0 to 1) of the perfect maze's interior walls removed (default {})", args->loops));
   cmd->add_option("--algorithm", args->algorithm, fmt::format("dfs, kruskal or prim (default {})", args->algorithm));
-  cmd->add_option("-o,--output", args->out, "FILE: write there (format by extension) instead of standard output");
+  cmd->add_option("-o,--out", args->out, "FILE: write there (format by extension) instead of standard output");
+  add_old_spelling(*cmd, "--output", "-o/--out", [args](const std::string &file) { args->out = file; });
   cmd->callback([args, &context] {
     const maze::Cell size = maze::parse_size(args->size);
     maze::GeneratorOptions options{size.x, size.y, args->seed, args->loops, maze::parse_algorithm(args->algorithm)};

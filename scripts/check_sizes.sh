@@ -1,7 +1,7 @@
 #!/bin/sh
 # Lists the classes over 160 lines, functions over 70 and source files over 450 in the
 # project's own sources (common, maze, controller, app), and fails when there is one: the
-# sizes a reader can hold in mind. Needs universal-ctags (scripts/install-deps.sh).
+# sizes a reader can hold in mind. Needs universal-ctags (scripts/install-test-deps.sh).
 # Usage: scripts/check_sizes.sh [SOURCE_DIR]
 set -eu
 cd "${1:-$(dirname "$0")/..}"

@@ -1,12 +1,12 @@
 #!/bin/sh
-# Installs the Debian 12 packages maze_mapper needs to build and test, and any further
-# package names given as arguments (scripts/install-bench-deps.sh passes its own).
+# Installs the Debian 12 packages building and running maze_mapper needs, and any further
+# package names given as arguments (scripts/install-test-deps.sh and
+# scripts/install-bench-deps.sh pass their own). Nothing here is for the tests alone.
 # Idempotent: packages already present are left alone and apt is not called.
 set -eu
 
-PACKAGES="cmake ninja-build g++ clang libclang-rt-14-dev \
-libeigen3-dev libfmt-dev doctest-dev libcli11-dev libtinyxml2-dev libbenchmark-dev \
-libpng-dev nlohmann-json3-dev tmux universal-ctags $*"
+PACKAGES="cmake ninja-build g++ \
+libeigen3-dev libfmt-dev libcli11-dev libtinyxml2-dev libpng-dev nlohmann-json3-dev $*"
 
 missing=""
 for pkg in $PACKAGES; do

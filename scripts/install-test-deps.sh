@@ -1,8 +1,18 @@
 #!/bin/sh
-# Installs, on top of scripts/install-deps.sh, what the tests that need a browser use:
-# Debian's chromium, for tests/replay_chromium.sh (replay.html loaded in headless Chromium).
-# maze_mapper itself does not need it; without it that test is skipped, unless
-# MAZE_MAPPER_REQUIRE_CHROMIUM is set (.ci/run sets it and runs this script first).
-# Also the Python module's build and tests (python/, MAZE_MAPPER_PYTHON): pybind11-dev,
-# python3-dev, python3-numpy, python3-pytest.
-exec "$(dirname "$0")/install-deps.sh" chromium pybind11-dev python3-dev python3-numpy python3-pytest
+# Installs, on top of scripts/install-deps.sh, what the tests and CI need; maze_mapper itself
+# needs none of it:
+#   doctest-dev                 the unit tests (without it the release preset builds no tests)
+#   clang libclang-rt-14-dev    the fuzz preset: the sanitizer build of the suite and libFuzzer
+#   universal-ctags             style/sizes (scripts/check_sizes.sh)
+#   tmux                        animate_tmux (--animate in a real terminal)
+#   chromium                    replay_chromium (replay.html in headless Chromium; skipped
+#                               without it unless MAZE_MAPPER_REQUIRE_CHROMIUM is set, as
+#                               .ci/run does)
+#   dpkg-dev file man-db        the Debian package stage (tests/package_deb.sh): CPack's
+#                               dpkg-shlibdeps and file, and `man` to read the installed page
+#   pybind11-dev python3-dev    the Python module (python/, MAZE_MAPPER_PYTHON) and its tests
+#   python3-numpy python3-pytest
+# Further package names given as arguments are installed too.
+exec "$(dirname "$0")/install-deps.sh" doctest-dev clang libclang-rt-14-dev universal-ctags tmux chromium \
+    dpkg-dev file man-db \
+    pybind11-dev python3-dev python3-numpy python3-pytest "$@"

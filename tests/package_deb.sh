@@ -1,0 +1,82 @@
+#!/bin/bash
+# The Debian package as a teacher hands it out, on this machine (root; CI's own Debian 12):
+# CPack builds maze_mapper_VERSION_ARCH.deb from a release build, `apt install` installs it,
+# the program maps its default world and a shipped one from another directory, `man` shows
+# every command, bash completes `maze_mapper run --rob` to --robot, and removing the package
+# leaves nothing under /usr that was not there before. Needs dpkg-dev, file and man-db
+# (scripts/install-test-deps.sh). Usage: tests/package_deb.sh [BUILD_DIR] (build/release).
+set -euo pipefail
+build=$(realpath "${1:-build/release}")
+package=maze-mapper
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+[ "$(id -u)" -eq 0 ] || fail "needs root (apt install)"
+if dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    fail "$package is installed already; remove it first (apt remove $package)"
+fi
+work=$(mktemp -d)
+installed=0
+# A failing check still removes the package it installed (the machine is left as found).
+cleanup() {
+    if [ "$installed" -eq 1 ]; then
+        DEBIAN_FRONTEND=noninteractive apt-get remove -y -qq --purge "$package" > /dev/null 2>&1 || true
+    fi
+    rm -rf "$work"
+}
+trap cleanup EXIT
+
+rm -f "$build"/maze_mapper_*.deb
+(cd "$build" && cpack -G DEB > "$work/cpack.log") || { cat "$work/cpack.log" >&2; fail "cpack"; }
+deb=$(ls "$build"/maze_mapper_*.deb)
+echo "package: $deb"
+echo "depends: $(dpkg-deb -f "$deb" Depends)"
+
+find /usr -xdev | sort > "$work/before"
+export DEBIAN_FRONTEND=noninteractive
+installed=1
+apt-get install -y -qq "$deb" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt install"; }
+dpkg -L "$package" > "$work/files"
+
+cd "$work"  # under /tmp: no worlds/ here
+maze_mapper > "$work/main.out" || fail "maze_mapper from /tmp exited $?"
+grep -q '^world: /usr/share/maze_mapper/worlds/lab4x4.txt$' "$work/main.out" || fail "the default world: $(grep '^world:' "$work/main.out")"
+grep -q '^end: done$' "$work/main.out" || fail "the default world was not mapped: $(grep '^end:' "$work/main.out")"
+maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.txt --quiet > "$work/run.out" || fail "run maze8x8 exited $?"
+grep -q '^end: done$' "$work/run.out" || fail "maze8x8 was not mapped"
+echo "ran: maze_mapper, maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.txt (end: done)"
+
+# Every command --help lists, and every one those list (demo 1d, batch merge), in the man page.
+MANPAGER=cat MANWIDTH=80 man maze_mapper > "$work/man.txt" 2> "$work/man.err" || { cat "$work/man.err" >&2; fail "man maze_mapper"; }
+commands() { "$@" --help | sed -n '/^Commands:/,/^$/p' | awk '/^  [^ ]/ { print $1 }'; }
+names=()
+for command in $(commands maze_mapper); do
+    names+=("$command")
+    for sub in $(commands maze_mapper "$command"); do names+=("$command $sub"); done
+done
+checked=0
+for heading in "${names[@]}"; do
+    grep -q "^   $heading\$" "$work/man.txt" || fail "man maze_mapper has no section for '$heading'"
+    checked=$((checked + 1))
+done
+[ "$checked" -gt 10 ] || fail "only $checked commands found in --help"
+echo "man: a section for each of $checked commands"
+
+completion=/usr/share/bash-completion/completions/maze_mapper
+grep -qx "$completion" "$work/files" || fail "no bash completion installed"
+# shellcheck disable=SC2016
+got=$(bash -c 'source "$1"; COMP_WORDS=(maze_mapper run --rob); COMP_CWORD=2; _maze_mapper; echo "${COMPREPLY[*]}"' _ "$completion")
+[ "$got" = "--robot" ] || fail "bash completes 'maze_mapper run --rob' to '$got'"
+for f in /usr/share/zsh/vendor-completions/_maze_mapper /usr/share/fish/vendor_completions.d/maze_mapper.fish \
+         /usr/share/doc/maze_mapper/README.md /usr/share/maze_mapper/worlds/lab4x4.txt; do
+    grep -qx "$f" "$work/files" || fail "$f is not in the package"
+done
+echo "completion: bash completes 'maze_mapper run --rob' to --robot; zsh and fish installed"
+
+apt-get remove -y -qq --purge "$package" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt remove"; }
+installed=0
+find /usr -xdev | sort > "$work/after"
+if ! diff "$work/before" "$work/after" > "$work/diff"; then
+    cat "$work/diff" >&2
+    fail "removing $package left /usr changed"
+fi
+echo "removed: /usr as before the install"

@@ -1,0 +1,150 @@
+// The man page and the shell completions (app/cli_reference.hpp): generated from the command
+// tree, so every visible command and every option of each must be in each of them, in the
+// form each reads; these walk the tree, so a command or option added later is covered too.
+
+#include <doctest/doctest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli_reference.hpp"
+#include "app/commands.hpp"
+
+namespace {
+
+struct Program {
+  CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot", "maze_mapper"};
+  app::CommandContext context;
+  Program() { app::add_commands(cli, context); }
+};
+
+std::string roff_name(std::string name) {
+  std::string out;
+  for (const char c : name) out += c == '-' ? std::string("\\-") : std::string(1, c);
+  return out;
+}
+
+// The man page's section of one command: from its ".SS" heading to the next heading.
+std::string man_section(const std::string &page, const std::string &path) {
+  const std::string heading = ".SS \"" + roff_name(path) + "\"\n";
+  const std::size_t start = page.find(heading);
+  if (start == std::string::npos) return "";
+  std::size_t end = page.find("\n.S", start + heading.size());
+  return page.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+// The line of a completion script's case branch for one command ("/run", "" for the program).
+std::string case_line(const std::string &script, const std::string &path) {
+  std::string slashed = path.empty() ? "" : "/" + path;
+  for (char &c : slashed) c = c == ' ' ? '/' : c;
+  std::istringstream lines(script);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("    \"" + slashed + "\")")) return line;
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("the man page has a section for every command, with every option of each") {
+  const Program program;
+  const std::string page = app::man_page(program.cli, "0.0.0");
+  const std::vector<app::CommandNode> nodes = app::visible_commands(program.cli);
+  CHECK(nodes.size() > 10);
+  for (const app::CommandNode &node : nodes) {
+    const std::string section = node.path.empty() ? page.substr(page.find(".SH OPTIONS")) : man_section(page, node.path);
+    INFO("command: ", node.path);
+    REQUIRE(!section.empty());
+    for (const CLI::Option *option : node.app->get_options()) {
+      if (option->get_group().empty()) continue;  // hidden: an old spelling
+      if (!option->nonpositional()) {
+        CHECK(section.find("\\fI" + roff_name(option->get_name()) + "\\fR") != std::string::npos);
+        continue;
+      }
+      for (const std::string &name : app::option_names(*option)) {
+        INFO("option: ", name);
+        CHECK(section.find("\\fB" + roff_name(name) + "\\fR") != std::string::npos);
+      }
+    }
+  }
+  // The hidden command that prints it stays out of it; no line starts a roff request by accident.
+  CHECK(page.find(app::kReferenceCommand) == std::string::npos);
+  CHECK(page.find("\n.\n") == std::string::npos);
+}
+
+TEST_CASE("the bash and zsh completions offer every command and option, and say which take a value") {
+  const Program program;
+  const std::string bash = app::bash_completion(program.cli);
+  const std::string zsh = app::zsh_completion(program.cli);
+  for (const app::CommandNode &node : app::visible_commands(program.cli)) {
+    INFO("command: ", node.path);
+    const std::string bash_line = case_line(bash, node.path);
+    const std::string zsh_line = case_line(zsh, node.path);
+    REQUIRE(!bash_line.empty());
+    REQUIRE(!zsh_line.empty());
+    const std::string bash_options = bash_line.substr(0, bash_line.find("taking_value="));
+    const std::string bash_taking = bash_line.substr(bash_line.find("taking_value="));
+    for (const CLI::Option *option : node.app->get_options()) {
+      if (option->get_group().empty()) continue;  // hidden: an old spelling
+      if (!option->nonpositional()) continue;
+      for (const std::string &name : app::option_names(*option)) {
+        INFO("option: ", name);
+        CHECK(bash_options.find(" " + name + " ") != std::string::npos);
+        CHECK(zsh_line.find("'" + name + ":") != std::string::npos);
+        CHECK((bash_taking.find(" " + name + " ") != std::string::npos) == app::takes_value(*option));
+      }
+    }
+    for (const CLI::App *sub : node.app->get_subcommands([](const CLI::App *) { return true; })) {
+      if (sub->get_group().empty()) {
+        CHECK(bash_line.find(app::kReferenceCommand) == std::string::npos);
+        continue;
+      }
+      CHECK(bash_line.find(sub->get_name()) != std::string::npos);
+      CHECK(zsh_line.find("'" + sub->get_name() + ":") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("the fish completion has a line for every option of every command") {
+  const Program program;
+  const std::string fish = app::fish_completion(program.cli);
+  for (const app::CommandNode &node : app::visible_commands(program.cli)) {
+    INFO("command: ", node.path);
+    // The condition names the command's last word ("demo cone": ... from cone).
+    const std::string condition =
+        node.path.empty() ? std::string("'__fish_use_subcommand'")
+                          : "__fish_seen_subcommand_from " + node.path.substr(node.path.rfind(' ') + 1);
+    for (const CLI::Option *option : node.app->get_options()) {
+      if (option->get_group().empty()) continue;  // hidden: an old spelling
+      if (!option->nonpositional()) continue;
+      std::string flags;
+      for (const std::string &l : option->get_lnames()) flags += " -l " + l;
+      for (const std::string &s : option->get_snames()) flags += " -s " + s;
+      INFO("option: ", flags);
+      bool found = false;
+      std::istringstream lines(fish);
+      for (std::string line; std::getline(lines, line);) {
+        found = found || (line.find(condition) != std::string::npos && line.find(flags + " ") != std::string::npos);
+      }
+      CHECK(found);
+    }
+  }
+}
+
+TEST_CASE("an option's value is named by its description's capitals, else by its type") {
+  CLI::App command;
+  std::string text;
+  int number = 0;
+  bool flag = false;
+  const CLI::Option *robot = command.add_option("--robot", text, "NAME or FILE.json: robot profile");
+  const CLI::Option *cell = command.add_option("--to", text, "X,Y: goal cell");
+  const CLI::Option *plain = command.add_option("--count", number, "how many: at most 3");
+  const CLI::Option *switch_ = command.add_flag("--quiet", flag, "say less");
+  CHECK(app::value_name(*robot) == "NAME or FILE.json");
+  CHECK(app::value_name(*cell) == "X,Y");
+  CHECK(app::value_name(*plain) == "N");
+  CHECK(app::value_name(*switch_).empty());
+}
