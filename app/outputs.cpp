@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -332,6 +333,10 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   return j.dump(2) + "\n";
 }
 
+bool trace_every_step(const RunOptions &options) {
+  return options.output.trace_steps || !sensing::setup(options.model.kind).reads_lidar();
+}
+
 std::string trace_header(const std::string &sensor_columns) {
   return "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated" + sensor_columns + "\n";
 }
@@ -345,7 +350,45 @@ void append_trace_row(std::string &csv, const robot::StepReport &step, double x_
 
 namespace {
 
-void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+// The names write_outputs() may write in DIR (snapshots/ apart).
+constexpr std::array<const char *, 9> kOutputNames{"map.pgm",    "map.yaml",    "map.png",  "truth.png", "summary.json",
+                                                   "trace.csv", "replay.html", "plan.png", "plan.csv"};
+
+// "NN.png", two digits or more: a snapshot's name.
+bool is_snapshot_name(const std::string &name) {
+  if (name.size() < 6 || !name.ends_with(".png")) return false;
+  return std::all_of(name.begin(), name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Removes a file an earlier run left (a regular file or a link; never anything else).
+void remove_stale(const fs::path &path) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (ec || !(fs::is_regular_file(status) || fs::is_symlink(status))) return;
+  fs::remove(path, ec);
+}
+
+// The files of an earlier run that this one did not write: those of the program's names in
+// `dir`, and snapshots/NN.png (snapshots/ itself when that empties it).
+void remove_stale_outputs(const fs::path &dir, const std::vector<std::string> &written) {
+  for (const char *name : kOutputNames) {
+    if (std::find(written.begin(), written.end(), name) == written.end()) remove_stale(dir / name);
+  }
+  const fs::path snapshots = dir / "snapshots";
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(snapshots, ec))) return;
+  for (const fs::directory_entry &entry : fs::directory_iterator(snapshots, ec)) {
+    const std::string name = "snapshots/" + entry.path().filename().string();
+    if (is_snapshot_name(entry.path().filename().string()) &&
+        std::find(written.begin(), written.end(), name) == written.end()) {
+      remove_stale(entry.path());
+    }
+  }
+  if (fs::is_empty(snapshots, ec) && !ec) fs::remove(snapshots, ec);
+}
+
+void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
+                     std::vector<std::string> &written) {
   std::error_code ec;
   fs::create_directory(dir, ec);
   if (ec) fail_out(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
@@ -357,8 +400,9 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
     const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
     const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
-    common::write_file_atomically((dir / fmt::format("{:0{}}.png", i + 1, digits)).string(),
-                                  png_file(grid, tones, marks, caption));
+    const std::string name = fmt::format("{:0{}}.png", i + 1, digits);
+    common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption));
+    written.push_back("snapshots/" + name);
   }
 }
 
@@ -368,7 +412,8 @@ std::size_t subcells_of(const mapping::GridGeometry &g) {
 
 bool replay_fits(const mapping::GridGeometry &g) { return subcells_of(g) <= kReplayMaxSubcells; }
 
-void write_replay(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+void write_replay(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
+                  std::vector<std::string> &written) {
   if (!options.output.replay || files.history == nullptr || !replay_fits(files.grid->geometry())) return;
   const std::optional<Replay> replay = replay_file(options, summary, files);
   if (!replay) {
@@ -377,6 +422,7 @@ void write_replay(const fs::path &dir, const RunOptions &options, const RunSumma
     return;
   }
   common::write_file_atomically((dir / "replay.html").string(), replay->html);
+  written.push_back("replay.html");
 }
 
 // --plan-to / plan: plan.png (the learned map with the planned path) and plan.csv (its
@@ -416,9 +462,14 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   return replay_html(input);
 }
 
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &inputs) {
+  for (const char *name : kOutputNames) common::refuse_output_over_input("--out", (fs::path(dir) / name).string(), inputs);
+}
+
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files) {
   const fs::path d(dir);
+  std::vector<std::string> written{"map.pgm", "map.yaml", "map.png", "truth.png", "summary.json"};
   const auto initial = static_cast<float>(files.model->prior_log_odds());
   common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
@@ -427,10 +478,20 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
                                 png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}}, map_caption(options)));
   common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
-  if (options.output.trace) common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
-  if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(d / "snapshots", options, summary, files);
-  write_replay(d, options, summary, files);
-  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files);
+  if (files.trace != nullptr) {
+    files.trace->commit();
+    written.emplace_back("trace.csv");
+  }
+  if (options.output.snapshots > 0 && files.history != nullptr) {
+    write_snapshots(d / "snapshots", options, summary, files, written);
+  }
+  write_replay(d, options, summary, files, written);
+  if (summary.plan && summary.plan->found) {
+    write_plan(d, options, *summary.plan, files);
+    written.emplace_back("plan.png");
+    written.emplace_back("plan.csv");
+  }
+  remove_stale_outputs(d, written);
 }
 
 }  // namespace app

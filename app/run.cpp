@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
+#include <filesystem>
 #include <cstdio>
 #include <functional>
 #include <istream>
@@ -13,7 +15,9 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
@@ -107,11 +111,50 @@ struct RunState {
   bool quit = false;          // q at a --step prompt
   bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
-  std::string trace;          // trace.csv, when --out
+  std::optional<common::OutputFile> trace;  // trace.csv, when --out: written as the run goes
+  std::string trace_row;      // one row (reused)
+  bool trace_every_step = true;  // else a row when something changes (trace_row_due)
+  std::optional<robot::Action> last_action;  // of the step before
+  mapping::Cell last_cell;
+  // The last step and its true pose when its row was left out: written at the end (its
+  // readings are the devices' then, as no step came after it).
+  std::optional<robot::StepReport> skipped_step;
+  maze::sim::Pose skipped_pose;
   std::optional<TraceSensors> trace_sensors;  // its columns of the robot's readings
   std::string sensor_values;  // one row's readings (reused)
   std::optional<GridHistory> history;  // --snapshots, replay.html
+  std::vector<std::uint32_t> grid_changes;  // the grid's change log, for the history
 };
+
+// Whether the trace's default form writes this step's row: the first step, a step whose
+// action or cell differs from the step before, a step whose scan updated the grid. Steps
+// that only go on with the same motion are left out (the last step is written at the end).
+bool trace_row_due(const RunState &state, const robot::StepReport &step) {
+  return !state.last_action || step.action != *state.last_action || !(step.cell == state.last_cell) ||
+         step.subcells_updated > 0;
+}
+
+void format_and_write_row(RunState &state, const robot::StepReport &step, const maze::sim::Pose &pose) {
+  state.trace_row.clear();
+  state.sensor_values.clear();
+  state.trace_sensors->append_values(state.sensor_values);
+  append_trace_row(state.trace_row, step, pose.x_m, pose.y_m, pose.yaw_rad, state.sensor_values);
+  state.trace->write(state.trace_row);
+}
+
+// Decides before formatting: formatting every row only to drop most was most of the trace's cost.
+void write_trace_row(RunState &state, const robot::StepReport &step, const maze::sim::Pose &pose) {
+  const bool due = state.trace_every_step || trace_row_due(state, step);
+  state.last_action = step.action;
+  state.last_cell = step.cell;
+  if (due) {
+    format_and_write_row(state, step, pose);
+    state.skipped_step.reset();
+  } else {
+    state.skipped_step = step;
+    state.skipped_pose = pose;
+  }
+}
 
 // --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
 // of the input the run goes on to its end without stopping.
@@ -195,6 +238,11 @@ void judge_ending(const RunOptions &options, RunSummary &summary) {
   };
   const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
                               options.strategy == explore::StrategyKind::frontier;
+  // Floodfill means to reach a goal: done without one (walled off from the start) is not done.
+  if (options.strategy == explore::StrategyKind::floodfill && !summary.reached_goal) {
+    add("the goal was never reached (walled off from the start?)");
+    summary.reason = robot::EndReason::incomplete;
+  }
   if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
     const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
     add(fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells));
@@ -294,7 +342,6 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
                        robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
                        const RunControls &controls, RunState &state) {
   const OutputOptions &o = options.output;
-  const bool lidar_only = sensing::setup(options.model.kind).reads_lidar();
   std::optional<ScreenGuard> screen;
   std::optional<Animator> animator;
   if (o.animate) {
@@ -307,7 +354,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   if (printer || animator || o.step || state.history) {
     hooks.on_move = [&](const robot::MoveReport &report) {
       if (state.history) {
-        state.history->record(report.step, *report.grid);
+        state.history->record(report.step, *report.grid, state.grid_changes);
         state.history->arrived(report.step, report.cell, report.heading);
       }
       if (printer) (*printer)(report);
@@ -321,24 +368,24 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
     };
   }
   if (!o.out_dir.empty() || animator || o.step || controls.interrupted) {
+    // The step is counted in the run's steps whatever this returns: its trace row is written
+    // before a stop is answered, so that the trace holds every step.
     hooks.on_step = [&](const robot::StepReport &step) {
+      const maze::sim::Pose &pose = simulation.pose();
+      if (state.trace) write_trace_row(state, step, pose);
+      if (state.history && !state.grid_changes.empty()) {
+        state.history->record(step.step, *step.grid, state.grid_changes);
+      }
       if (controls.interrupted && controls.interrupted()) {
         state.interrupted = true;
         return false;
       }
       if (state.quit) return false;
-      const maze::sim::Pose &pose = simulation.pose();
-      if (state.trace_sensors) {
-        state.sensor_values.clear();
-        state.trace_sensors->append_values(state.sensor_values);
-        append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad, state.sensor_values);
-      }
-      // Only lidar scans are counted in subcells_updated; other sensors' marks may come any step.
-      if (state.history && (step.subcells_updated > 0 || !lidar_only)) state.history->record(step.step, *step.grid);
       if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
       return true;
     };
   }
+  if (state.history) hooks.grid_changes = &state.grid_changes;
   return controller.run(hooks);
 }
 
@@ -349,7 +396,7 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.message = result.message;
   if (result.reason == robot::EndReason::stopped) {
     summary.interrupted = state.interrupted;
-    summary.message = state.interrupted ? "interrupted by Ctrl-C" : "quit with q";
+    summary.message = state.interrupted ? "interrupted by " + common::interrupt_name() : "quit with q";
   }
   summary.width = truth.width();
   summary.height = truth.height();
@@ -395,18 +442,24 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   const std::string &out_dir = options.output.out_dir;
-  if (!out_dir.empty()) prepare_output_dir(out_dir);
+  if (!out_dir.empty()) {
+    prepare_output_dir(out_dir);
+    refuse_outputs_over_inputs(out_dir, {options.world});
+  }
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
   if (!out_dir.empty() && options.output.trace) {
     state.trace_sensors.emplace(simulation.robot(), controller_opts);
-    state.trace = trace_header(state.trace_sensors->header());
+    state.trace.emplace((std::filesystem::path(out_dir) / "trace.csv").string());
+    state.trace->write(trace_header(state.trace_sensors->header()));
+    state.trace_every_step = trace_every_step(options);
   }
   if (!out_dir.empty() && keeps_history(options, controller_opts.geometry)) {
     state.history.emplace(controller_opts.geometry, style.initial_log_odds);
   }
   const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
+  if (state.trace && state.skipped_step) format_and_write_row(state, *state.skipped_step, state.skipped_pose);
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
@@ -415,12 +468,20 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   if (options.plan.to) summary.plan = plan_path(options, result, model, style, planned);
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  // A full disk is said after the summary, which the user still gets.
+  std::exception_ptr no_space;
   if (!out_dir.empty()) {
-    RunFiles files{&result.grid, &model, &result.path, &state.trace, {}, &truth, &result.visits,
-                   learned_sides(result, style.initial_log_odds, style.threshold),
+    RunFiles files{&result.grid, &model, &result.path, state.trace ? &*state.trace : nullptr, {}, &truth,
+                   &result.visits, learned_sides(result, style.initial_log_odds, style.threshold),
                    state.history ? &*state.history : nullptr};
     for (const maze::Cell goal : truth.goals()) files.goals.push_back(to_mapping(goal));
-    write_outputs(out_dir, options, summary, files);
+    // From here a stop signal ends the process: each file whole or absent, none half-written.
+    const common::SignalsEndProcess signals_end_process;
+    try {
+      write_outputs(out_dir, options, summary, files);
+    } catch (const common::NoSpaceError &) {
+      no_space = std::current_exception();
+    }
   }
   if (summary.interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";
@@ -429,6 +490,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
     out << planned.str();
   }
   out << format_summary(options, summary);
+  if (no_space) {
+    out << std::flush;
+    std::rethrow_exception(no_space);
+  }
   return summary;
 }
 
