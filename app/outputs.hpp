@@ -39,6 +39,7 @@
 
 #include "app/grid_history.hpp"
 #include "app/map_picture.hpp"
+#include "app/output_dir.hpp"
 #include "app/replay.hpp"
 #include "app/run.hpp"
 #include "common/atomic_file.hpp"
@@ -48,16 +49,6 @@
 #include "robot/cell_controller.hpp"
 
 namespace app {
-
-// Makes sure DIR can take the outputs before anything runs: creates it (and its parents)
-// when missing, and checks that it is a directory a file can be created in (by creating and
-// removing a probe file). Throws common::InputError "--out DIR: REASON" otherwise; then no
-// directory it created is left behind.
-void prepare_output_dir(const std::string &dir);
-
-// Throws common::InputError "--out DIR/NAME is also an input ..." when one of the files the
-// run may write in DIR is one of `inputs` (the world), before anything runs.
-void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &inputs);
 
 // The pixel of one sub-cell in map.pgm: 0, 254 or 205 (see above).
 unsigned char pgm_pixel(float log_odds, float initial_log_odds);

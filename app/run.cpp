@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
-#include <filesystem>
 #include <cstdio>
 #include <functional>
 #include <istream>
@@ -24,13 +23,13 @@
 #include "maze/world.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/walls.hpp"
-#include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
 #include "robot/progress_printer.hpp"
 #include "app/outputs.hpp"
 #include "app/profile_json.hpp"
 #include "app/terminal.hpp"
-#include "app/trace_sensors.hpp"
+#include "app/plan_path.hpp"
+#include "app/trace_writer.hpp"
 
 namespace app {
 namespace {
@@ -111,50 +110,10 @@ struct RunState {
   bool quit = false;          // q at a --step prompt
   bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
-  std::optional<common::OutputFile> trace;  // trace.csv, when --out: written as the run goes
-  std::string trace_row;      // one row (reused)
-  bool trace_every_step = true;  // else a row when something changes (trace_row_due)
-  std::optional<robot::Action> last_action;  // of the step before
-  mapping::Cell last_cell;
-  // The last step and its true pose when its row was left out: written at the end (its
-  // readings are the devices' then, as no step came after it).
-  std::optional<robot::StepReport> skipped_step;
-  maze::sim::Pose skipped_pose;
-  std::optional<TraceSensors> trace_sensors;  // its columns of the robot's readings
-  std::string sensor_values;  // one row's readings (reused)
+  std::optional<TraceWriter> trace;  // trace.csv, when --out
   std::optional<GridHistory> history;  // --snapshots, replay.html
   std::vector<std::uint32_t> grid_changes;  // the grid's change log, for the history
 };
-
-// Whether the trace's default form writes this step's row: the first step, a step whose
-// action or cell differs from the step before, a step whose scan updated the grid. Steps
-// that only go on with the same motion are left out (the last step is written at the end).
-bool trace_row_due(const RunState &state, const robot::StepReport &step) {
-  return !state.last_action || step.action != *state.last_action || !(step.cell == state.last_cell) ||
-         step.subcells_updated > 0;
-}
-
-void format_and_write_row(RunState &state, const robot::StepReport &step, const maze::sim::Pose &pose) {
-  state.trace_row.clear();
-  state.sensor_values.clear();
-  state.trace_sensors->append_values(state.sensor_values);
-  append_trace_row(state.trace_row, step, pose.x_m, pose.y_m, pose.yaw_rad, state.sensor_values);
-  state.trace->write(state.trace_row);
-}
-
-// Decides before formatting: formatting every row only to drop most was most of the trace's cost.
-void write_trace_row(RunState &state, const robot::StepReport &step, const maze::sim::Pose &pose) {
-  const bool due = state.trace_every_step || trace_row_due(state, step);
-  state.last_action = step.action;
-  state.last_cell = step.cell;
-  if (due) {
-    format_and_write_row(state, step, pose);
-    state.skipped_step.reset();
-  } else {
-    state.skipped_step = step;
-    state.skipped_pose = pose;
-  }
-}
 
 // --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
 // of the input the run goes on to its end without stopping.
@@ -178,30 +137,6 @@ void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option)
     throw common::InputError(fmt::format("{} {},{} is outside the {}x{} maze", option, c.x, c.y,
                                          maze.width(), maze.height()));
   }
-}
-
-// Plans on the learned grid and prints the map with the path drawn as '*'.
-PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
-                      const mapping::SensorModel &model, render::MapStyle style, std::ostream &out) {
-  PlanSummary p;
-  p.from = options.plan.from.value_or(result.path.back());
-  p.to = *options.plan.to;
-  p.dilate = options.plan.wavefront.dilate;
-  const auto path = plan::wavefront(result.grid, model, p.from, p.to, options.plan.wavefront);
-  if (!path) {
-    out << fmt::format("no path from ({},{}) to ({},{}) on the learned map\n\n", p.from.x, p.from.y,
-                       p.to.x, p.to.y);
-    return p;
-  }
-  p.found = true;
-  p.length_subcells = path->length_subcells;
-  p.length_cells = path->length_cells;
-  p.path = path->subcells;
-  const std::vector<bool> mask = plan::path_mask(result.grid, *path);
-  style.path = &mask;
-  out << fmt::format("planned path ({},{}) -> ({},{}):\n", p.from.x, p.from.y, p.to.x, p.to.y);
-  out << render::render_map(result.grid, result.visits, style) << '\n';
-  return p;
 }
 
 // "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
@@ -240,7 +175,7 @@ void judge_ending(const RunOptions &options, RunSummary &summary) {
                               options.strategy == explore::StrategyKind::frontier;
   // Floodfill means to reach a goal: done without one (walled off from the start) is not done.
   if (options.strategy == explore::StrategyKind::floodfill && !summary.reached_goal) {
-    add("the goal was never reached (walled off from the start?)");
+    add("no goal reached");
     summary.reason = robot::EndReason::incomplete;
   }
   if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
@@ -372,7 +307,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
     // before a stop is answered, so that the trace holds every step.
     hooks.on_step = [&](const robot::StepReport &step) {
       const maze::sim::Pose &pose = simulation.pose();
-      if (state.trace) write_trace_row(state, step, pose);
+      if (state.trace) state.trace->on_step(step, pose);
       if (state.history && !state.grid_changes.empty()) {
         state.history->record(step.step, *step.grid, state.grid_changes);
       }
@@ -450,16 +385,13 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
   if (!out_dir.empty() && options.output.trace) {
-    state.trace_sensors.emplace(simulation.robot(), controller_opts);
-    state.trace.emplace((std::filesystem::path(out_dir) / "trace.csv").string());
-    state.trace->write(trace_header(state.trace_sensors->header()));
-    state.trace_every_step = trace_every_step(options);
+    state.trace.emplace(out_dir, simulation.robot(), controller_opts, trace_every_step(options));
   }
   if (!out_dir.empty() && keeps_history(options, controller_opts.geometry)) {
     state.history.emplace(controller_opts.geometry, style.initial_log_odds);
   }
   const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
-  if (state.trace && state.skipped_step) format_and_write_row(state, *state.skipped_step, state.skipped_pose);
+  if (state.trace) state.trace->finish();
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
@@ -471,7 +403,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   // A full disk is said after the summary, which the user still gets.
   std::exception_ptr no_space;
   if (!out_dir.empty()) {
-    RunFiles files{&result.grid, &model, &result.path, state.trace ? &*state.trace : nullptr, {}, &truth,
+    RunFiles files{&result.grid, &model, &result.path, state.trace ? &state.trace->file() : nullptr, {}, &truth,
                    &result.visits, learned_sides(result, style.initial_log_odds, style.threshold),
                    state.history ? &*state.history : nullptr};
     for (const maze::Cell goal : truth.goals()) files.goals.push_back(to_mapping(goal));

@@ -175,10 +175,7 @@ std::string read_world_text(const std::string &path) {
     const std::size_t start = text.size();
     text.append(buffer, static_cast<std::size_t>(n));
     if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
-      const std::string_view before = std::string_view(text).substr(0, nul);
-      if (!format_known && before.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string_view::npos) {
-        (void)detect_format(before, path);
-      }
+      if (!format_known) (void)detect_format(text, path);  // a NUL first: no format at all
       throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
     }
     if (!format_known && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {

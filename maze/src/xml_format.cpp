@@ -37,43 +37,25 @@ struct Source {
 
   // The element's line, and the column of `attribute=` on that line if it is there. Several
   // elements on one line are told apart by counting the earlier siblings of the same name.
-  common::SourceLocation at(const tinyxml2::XMLElement &e, const char *attribute = nullptr) const {
-    const int line = e.GetLineNum();
-    if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {file, 0, 0};
-    const std::string_view text_of_line = line_text(line);
-    return located(line, text_of_line, find_tag(text_of_line, e.Name(), earlier_on_same_line(e)), attribute);
-  }
-
-  // at() for elements of one name visited in document order: each tag is searched from the
-  // one before on the same line, so that N elements on one line cost O(line), not O(N * line).
+  // With a cursor (elements of one name visited in document order), the tag is searched from
+  // the one before on its line: N elements on one line cost O(line), not O(N * line).
   struct Cursor {
     int line = 0;
     std::size_t from = 0;
   };
-  common::SourceLocation at_next(const tinyxml2::XMLElement &e, const char *attribute, Cursor &cursor) const {
+  common::SourceLocation at(const tinyxml2::XMLElement &e, const char *attribute = nullptr,
+                            Cursor *cursor = nullptr) const {
     const int line = e.GetLineNum();
     if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {file, 0, 0};
-    if (line != cursor.line) cursor = Cursor{line, 0};
-    const std::string_view text_of_line = line_text(line);
-    std::size_t column = find_tag(text_of_line.substr(cursor.from), e.Name(), 0);
-    if (column != std::string_view::npos) {
-      column += cursor.from;
-      cursor.from = column + 1;
-    }
-    return located(line, text_of_line, column, attribute);
-  }
-
-  std::string_view line_text(int line) const {
     const std::size_t begin = line_starts[static_cast<std::size_t>(line - 1)];
     const std::size_t end = static_cast<std::size_t>(line) < line_starts.size()
                                 ? line_starts[static_cast<std::size_t>(line)]
                                 : text.size();
-    return text.substr(begin, end - begin);
-  }
-
-  // The tag at `column` of the line, moved on to ` attribute=` when there is one.
-  common::SourceLocation located(int line, std::string_view text_of_line, std::size_t column,
-                                 const char *attribute) const {
+    const std::string_view text_of_line = text.substr(begin, end - begin);
+    if (cursor != nullptr && cursor->line != line) *cursor = Cursor{line, 0};
+    std::size_t column = cursor == nullptr ? find_tag(text_of_line, e.Name(), earlier_on_same_line(e))
+                                           : find_tag(text_of_line.substr(cursor->from), e.Name(), 0);
+    if (cursor != nullptr && column != std::string_view::npos) cursor->from = (column += cursor->from) + 1;
     if (attribute != nullptr && column != std::string_view::npos) {
       column = text_of_line.find(fmt::format(" {}=", attribute), column);
       if (column != std::string_view::npos) ++column;
@@ -378,7 +360,7 @@ void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, cons
   Source::Cursor cursor;
   for (auto *e = world.FirstChildElement("goal"); e != nullptr; e = e->NextSiblingElement("goal")) {
     raw.goals.push_back(cell_at(*e, g, src, "goal"));
-    raw.goal_where.push_back(src.at_next(*e, "x", cursor));
+    raw.goal_where.push_back(src.at(*e, "x", &cursor));
   }
 }
 
