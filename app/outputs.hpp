@@ -20,7 +20,8 @@
 //                       "plan" without planning, ...), plus "options": every option in
 //                       effect, one object a concern of RunOptions ("max_steps" is the limit
 //                       in effect; a null "noise" is the robot's own).
-//   trace.csv           one row a control step (see trace_header()), map-log can read it.
+//   trace.csv           rows of control steps (trace_every_step(): every step, or the steps
+//                       where something happens; see trace_header()), map-log can read it.
 //   snapshots/NN.png    --snapshots N: map.png as it was after each of snapshot_steps(steps,
 //                       N) (app/grid_history.hpp), 01.png first, the step in the caption.
 //   replay.html         the run in a browser, unless --no-replay: app/replay.hpp. Not written
