@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "maze/world.hpp"
 
 namespace app {
@@ -109,6 +110,22 @@ bool natural_less(const std::string &a, const std::string &b) {
   return a.size() - i < b.size() - j;
 }
 
+namespace {
+
+// "a folder", "a dangling link", "a FIFO", ...: why a folder's entry is no file to run.
+std::string kind_of(const fs::path &entry) {
+  std::error_code ec;
+  const fs::file_status target = fs::status(entry, ec);
+  if (fs::is_symlink(fs::symlink_status(entry, ec)) && !fs::exists(target)) return "a dangling link";
+  if (fs::is_directory(target)) return "a folder: folders are not searched";
+  if (fs::is_fifo(target)) return "a FIFO";
+  if (fs::is_block_file(target) || fs::is_character_file(target)) return "a device";
+  if (fs::is_socket(target)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
+
 WorldList expand_worlds(const std::vector<std::string> &paths) {
   WorldList list;
   for (const std::string &path : paths) {
@@ -118,8 +135,10 @@ WorldList expand_worlds(const std::vector<std::string> &paths) {
       continue;
     }
     std::vector<fs::path> files;
+    std::vector<fs::path> others;  // subfolders, dangling links, FIFOs, devices, sockets
     for (const fs::directory_entry &entry : fs::directory_iterator(path, ec)) {
-      if (entry.is_regular_file(ec)) files.push_back(entry.path());
+      std::error_code entry_ec;
+      (entry.is_regular_file(entry_ec) ? files : others).push_back(entry.path());
     }
     if (ec) throw common::InputError(fmt::format("{}: cannot list the folder: {}", path, ec.message()));
     std::sort(files.begin(), files.end(),
@@ -127,6 +146,9 @@ WorldList expand_worlds(const std::vector<std::string> &paths) {
     for (const fs::path &file : files) {
       (looks_like_maze(file) ? list.worlds : list.skipped).push_back(file.string());
     }
+    std::sort(others.begin(), others.end(),
+              [](const fs::path &a, const fs::path &b) { return natural_less(a.string(), b.string()); });
+    for (const fs::path &other : others) list.skipped.push_back(fmt::format("{} ({})", other.string(), kind_of(other)));
   }
   return list;
 }
@@ -176,7 +198,7 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<Ba
       if (interrupted != nullptr && interrupted()) {
         items[i].world = job_name(worlds[i]);
         items[i].interrupted = true;
-        items[i].error = "not run (interrupted by Ctrl-C)";
+        items[i].error = "not run (interrupted by " + common::interrupt_name() + ")";
         continue;
       }
       items[i] = run_one(options, worlds[i], interrupted);
@@ -310,7 +332,7 @@ std::string format_batch_csv(const std::vector<BatchItem> &items) {
 }
 
 int batch_exit_status(const std::vector<BatchItem> &items) {
-  if (std::any_of(items.begin(), items.end(), [](const BatchItem &i) { return i.interrupted; })) return 130;
+  if (std::any_of(items.begin(), items.end(), [](const BatchItem &i) { return i.interrupted; })) return common::interrupted_exit_status();
   if (std::all_of(items.begin(), items.end(), [](const BatchItem &i) { return i.ok; })) return 0;
   if (std::all_of(items.begin(), items.end(), [](const BatchItem &i) { return i.bad_input; })) return 2;
   return 1;

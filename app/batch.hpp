@@ -22,7 +22,9 @@ struct WorldList {
   // still fail to load, and is then a failed row), in natural order ("s4" before "s10").
   std::vector<std::string> worlds;
   // Files in the directories that are no maze at all (a README, an image), in the same
-  // order: not run, but named in the totals.
+  // order, then their entries that are no regular file, each with what it is ("sub (a folder:
+  // folders are not searched)", "x.txt (a dangling link)", a FIFO, a device): not run, but
+  // named in the totals.
   std::vector<std::string> skipped;
 };
 WorldList expand_worlds(const std::vector<std::string> &paths);

@@ -1,6 +1,7 @@
 // batch --shard K/N and batch merge (see app/batch.hpp).
 
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -26,7 +27,9 @@ std::optional<int> whole(std::string_view text) {
 std::optional<double> decimal(std::string_view text) {
   double value = 0.0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    return std::nullopt;  // "nan" and "inf" parse, and are no time or percentage
+  }
   return value;
 }
 
@@ -89,11 +92,20 @@ void read_one(const std::string &file, std::vector<BatchRow> &rows) {
                              fmt::format("not a batch CSV (the first line must be '{}')", kBatchCsvHeader));
   }
   for (int number = 2; std::getline(in, line); ++number) {
-    const auto fields = csv_fields(line);
+    // A quoted field may hold a newline (a path with one): the record goes on on the next line.
+    const int first = number;
+    std::optional<std::vector<std::string>> fields = csv_fields(line);
+    std::string more;
+    while (!fields && std::getline(in, more)) {
+      ++number;
+      line += '\n';
+      line += more;
+      fields = csv_fields(line);
+    }
     const std::optional<BatchRow> row =
         fields && fields->size() == 10 ? row_from(*fields) : std::optional<BatchRow>();
     if (!row) {
-      throw common::InputError(common::SourceLocation{file, number, 0},
+      throw common::InputError(common::SourceLocation{file, first, 0},
                                fmt::format("not a batch CSV row (10 fields: {})", kBatchCsvHeader));
     }
     rows.push_back(*row);

@@ -18,6 +18,7 @@
 #include "app/terminal.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
+#include "common/interrupt.hpp"
 #include "common/error.hpp"
 
 namespace app {
@@ -51,6 +52,7 @@ void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput
   merge->add_option("CSV", batch->merge_csvs, "the parts' --csv files, part 1 first")->required();
   merge->add_option("-o,--out", batch->merge_out, "FILE: write the joined CSV here (default stdout)");
   merge->callback([batch] {
+    if (!batch->merge_out.empty()) common::refuse_output_over_input("-o", batch->merge_out, batch->merge_csvs);
     const std::vector<BatchRow> rows = read_batch_csvs(batch->merge_csvs);
     std::string csv(kBatchCsvHeader);
     csv += '\n';
@@ -103,6 +105,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (!batch->csv.empty()) common::check_writable(batch->csv);  // before the runs, not after
     WorldList list = expand_worlds(batch->worlds);
+    if (!batch->csv.empty()) common::refuse_output_over_input("--csv", batch->csv, list.worlds);
     if (!batch->shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch->shard));
     if (list.worlds.empty() && !batch->shard.empty()) {
       fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch->shard);
@@ -113,17 +116,17 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     const auto started = std::chrono::steady_clock::now();
     std::function<void(std::size_t, std::size_t)> progress;
     if (is_terminal(STDERR_FILENO)) progress = draw_progress;
-    const SigintGuard sigint;
+    const common::SignalsStopWork stop_signals;  // until the CSV holds the finished runs
     const std::vector<BatchJob> batch_jobs = batch->each_start ? each_start_jobs(list.worlds, options.world_overrides)
                                                                : plain_jobs(list.worlds);
-    const std::vector<BatchItem> items = run_batch(options, batch_jobs, jobs, progress, &SigintGuard::interrupted);
+    const std::vector<BatchItem> items = run_batch(options, batch_jobs, jobs, progress, &common::interrupted);
     if (progress) fmt::print(stderr, "\r\x1b[K");
     const double elapsed_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     for (const BatchItem &item : items) {
       if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
     }
-    std::cout << format_batch_table(items, elapsed_ms, list.skipped);
+    std::cout << format_batch_table(items, elapsed_ms, list.skipped) << std::flush;
     if (!batch->csv.empty()) common::write_file_atomically(batch->csv, format_batch_csv(items));
     context.status = batch_exit_status(items);
   });

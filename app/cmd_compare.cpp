@@ -21,6 +21,7 @@
 #include "app/terminal.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
+#include "common/interrupt.hpp"
 #include "common/error.hpp"
 
 namespace app {
@@ -55,12 +56,17 @@ std::vector<std::string> split(const std::string &text, char separator) {
 // typed (4294967299 was cast to the int 3; a longer one is no K).
 std::vector<int> parse_ks(const std::string &subcells) {
   std::vector<int> ks;
+  // split() drops a trailing empty part: "3," would pass as "3".
+  if (subcells.ends_with(',')) throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
   for (const std::string &part : split(subcells, ',')) {
     const bool digits = !part.empty() && part.size() <= 9 &&
                         part.find_first_not_of("0123456789") == std::string::npos;
     if (!digits) throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
     const int k = std::stoi(part);
     validate_subcells(k);
+    if (std::find(ks.begin(), ks.end(), k) != ks.end()) {
+      throw common::InputError(fmt::format("--subcells lists K {} twice (got '{}'); each K is one run", k, subcells));
+    }
     ks.push_back(k);
   }
   if (ks.empty()) throw common::InputError("--subcells needs at least one K, a list like 3,5 (got '')");
@@ -149,8 +155,8 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
   int status = 0;
   double total_ms = 0.0;
   RunControls controls;
-  controls.interrupted = &SigintGuard::interrupted;
-  const SigintGuard sigint;
+  controls.interrupted = &common::interrupted;
+  const common::SignalsStopWork stop_signals;
   if (!output.out_dir.empty()) prepare_output_dir(output.out_dir);
   for (const int k : ks) {
     RunOptions one = options;
@@ -159,7 +165,7 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
     std::ostringstream text;
     const RunSummary summary = run_world(one, text, controls);
     if (summary.interrupted) {
-      out << "compare: interrupted by Ctrl-C\n";
+      out << fmt::format("compare: interrupted by {}\n", common::interrupt_name());
       return exit_status(summary);
     }
     status = std::max(status, exit_status(summary));

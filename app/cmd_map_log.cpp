@@ -2,8 +2,8 @@
 // Cornell-style homework (sensing/log_map.hpp for the rule, docs/lab-map-log.md).
 
 #include <charconv>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -388,6 +388,9 @@ void add_map_log_command(CLI::App &cli, CommandContext &context) {
   add_old_spelling(*cmd, "--snapshots", "--snapshots-at", [input](const std::string &text) { input->snapshots = text; });
   cmd->add_option("-o,--out", input->out_dir, "DIR: logodds.csv (Y rows, north first) and logodds.png, logodds_stepN.csv and .png per snapshot, thresholded.txt and .png");
   cmd->callback([&context, input, radius, angles, depth_max] {
+    if (!std::isfinite(input->threshold)) {
+      throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", input->threshold));
+    }
     input->bump_options_given = radius->count() > 0;
     input->depth_options_given = angles->count() + depth_max->count() > 0;
     run_map_log(*input);

@@ -4,14 +4,17 @@
 
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "app/cli_options.hpp"
 #include "app/profile_json.hpp"
+#include "app/run.hpp"
 #include "commands.hpp"
 #include "maze/sim/profile.hpp"
+#include "sensing/setups.hpp"
 
 namespace app {
 namespace {
@@ -25,6 +28,25 @@ void list_profiles(std::ostream &out) {
   }
 }
 
+// A profile file passes only what `run --robot FILE` passes: besides its own checks (made
+// when it is read), one control step of the default world with the first set-up whose
+// devices it has, which checks what only the controller and the simulator check (a noise
+// whose range error overflows, a device name the robot does not carry).
+void check_as_run_does(const std::string &file, const maze::sim::RobotProfile &profile) {
+  RunOptions options;
+  options.world = default_world();
+  options.robot = file;
+  options.max_steps = 1;
+  options.output.quiet = true;
+  for (const sensing::SetUp &setup : sensing::setups()) {
+    if (!has_devices(profile, setup)) continue;
+    options.model.kind = setup.kind;
+    std::ostringstream ignored;
+    run_world(options, ignored);
+    return;
+  }
+}
+
 }  // namespace
 
 void add_robot_command(CLI::App &cli, CommandContext &context) {
@@ -35,7 +57,9 @@ void add_robot_command(CLI::App &cli, CommandContext &context) {
     if (name->empty()) {
       list_profiles(std::cout);
     } else {
-      std::cout << profile_to_json(resolve_robot(*name));
+      const maze::sim::RobotProfile profile = resolve_robot(*name);
+      if (names_a_profile_file(*name)) check_as_run_does(*name, profile);
+      std::cout << profile_to_json(profile);
     }
     context.status = 0;
   });

@@ -17,6 +17,7 @@
 #include "app/terminal.hpp"
 #include "commands.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "maze/world.hpp"
 
 namespace app {
@@ -51,7 +52,10 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
       },
       "N: with --out, N pictures of the map at equal fractions of the run's steps in "
       "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
-  run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv (a row a control step)");
+  run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv");
+  run.add_flag("--trace-steps", o.output.trace_steps,
+               "with --out, trace.csv a row every control step (default for cell and ray: a row when the "
+               "action or cell changes or a scan updates the map)");
   run.add_flag("--no-replay{false}", o.output.replay,
                "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
   run.add_option_function<std::string>(
@@ -79,9 +83,9 @@ void run_in_terminal(const RunOptions &options, CommandContext &context) {
   RunControls controls;
   controls.in = &std::cin;
   if (options.output.step && is_terminal(STDIN_FILENO)) controls.prompt = &std::cerr;
-  controls.interrupted = &SigintGuard::interrupted;
+  controls.interrupted = &common::interrupted;
   controls.terminal_fd = STDOUT_FILENO;
-  const SigintGuard sigint;
+  const common::SignalsStopWork stop_signals;
   const RunSummary summary = run_world(options, std::cout, controls);
   context.status = exit_status(summary);
 }
@@ -140,9 +144,9 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
       options.plan.to = mapping::Cell{world.maze.goals().front().x, world.maze.goals().front().y};
     }
     RunControls controls;
-    controls.interrupted = &SigintGuard::interrupted;
+    controls.interrupted = &common::interrupted;
     controls.terminal_fd = STDOUT_FILENO;
-    const SigintGuard sigint;
+    const common::SignalsStopWork stop_signals;
     const RunSummary summary = run_world(options, std::cout, controls);
     context.status = exit_status(summary);  // 1 when no path is found
   });

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "app/run.hpp"
+#include "common/interrupt.hpp"
 
 namespace app {
 namespace {
@@ -18,7 +19,7 @@ int ending_status(const RunSummary &summary) {
     case robot::EndReason::incomplete:
     case robot::EndReason::wrong_map:
     case robot::EndReason::simulation_ended: return 1;
-    case robot::EndReason::stopped: return summary.interrupted ? 130 : 0;
+    case robot::EndReason::stopped: return summary.interrupted ? common::interrupted_exit_status() : 0;
   }
   return 1;
 }

@@ -1,5 +1,6 @@
 #include "app/grid_history.hpp"
 
+#include <algorithm>
 #include <span>
 
 namespace app {
@@ -16,6 +17,19 @@ void GridHistory::record(std::int64_t step, const mapping::OccupancyGrid &grid) 
     last_[i] = now[i];
     changes_.push_back(Change{step, static_cast<std::uint32_t>(i), now[i]});
   }
+}
+
+void GridHistory::record(std::int64_t step, const mapping::OccupancyGrid &grid, std::vector<std::uint32_t> &written) {
+  // Sorted, so that the changes of one call come in index order as the whole-grid compare gives them.
+  std::sort(written.begin(), written.end());
+  written.erase(std::unique(written.begin(), written.end()), written.end());
+  for (const std::uint32_t i : written) {
+    const float now = grid.at_index(i);
+    if (now == last_[i]) continue;
+    last_[i] = now;
+    changes_.push_back(Change{step, i, now});
+  }
+  written.clear();
 }
 
 void GridHistory::arrived(std::int64_t step, mapping::Cell cell, mapping::Heading heading) {

@@ -5,8 +5,10 @@
 // when the run is over.
 //
 // record() compares the grid with its own copy of the last recorded state: O(W * H * K * K)
-// a call, and 16 bytes kept a changed sub-cell. A change is dated by the call that first sees
-// it, so the run calls it after every step that may have changed the grid.
+// a call; given the grid's change log (OccupancyGrid::set_change_log) it compares only the
+// sub-cells written since, so that a run's history costs in proportion to what changed, not
+// to the area times the steps. 16 bytes kept a changed sub-cell. A change is dated by the
+// call that first sees it, so the run calls it after every step that may have changed the grid.
 
 #include <cstdint>
 #include <vector>
@@ -24,6 +26,9 @@ class GridHistory {
 
   // Notes the sub-cells that differ from the last recorded state, as changed at `step`.
   void record(std::int64_t step, const mapping::OccupancyGrid &grid);
+  // The same, looking only at the sub-cells in `written` (the grid's change log since the
+  // last call, every write there), which it empties.
+  void record(std::int64_t step, const mapping::OccupancyGrid &grid, std::vector<std::uint32_t> &written);
   // Notes that the robot arrived in `cell` at `step` (the start at step 0 or its first step),
   // facing `heading`.
   void arrived(std::int64_t step, mapping::Cell cell, mapping::Heading heading = mapping::Heading::north);

@@ -12,7 +12,9 @@
 
 #include "cli_errors.hpp"
 #include "commands.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 
 namespace {
 
@@ -27,6 +29,7 @@ int main(int argc, char **argv) {
                "maze_mapper"};
   app::CommandContext context;
   app::add_commands(cli, context);
+  common::install_signal_handlers();
 
   try {
     if (argc <= 1) {
@@ -51,21 +54,29 @@ int main(int argc, char **argv) {
   } catch (const CLI::CallForVersion &e) {
     return cli.exit(e);
   } catch (const CLI::ParseError &e) {
-    fmt::print(stderr, "error: {}\n", app::describe_usage_error(cli, e));
+    fmt::print(stderr, "error: {}\n", common::printable(app::describe_usage_error(cli, e)));
     return kExitUsage;
   } catch (const common::InputError &e) {
     std::cout.flush();
     fmt::print(stderr, "{}\n", e.diagnostic());
     return kExitUsage;
+  } catch (const common::Interrupted &e) {
+    std::cout.flush();
+    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    return common::interrupted_exit_status();
+  } catch (const common::NoSpaceError &e) {
+    std::cout.flush();
+    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    return common::kExitNoSpace;
   } catch (const common::RuntimeFailure &e) {
     std::cout.flush();
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
     return kExitFailure;
   } catch (const std::bad_alloc &) {
     fmt::print(stderr, "error: out of memory\n");
     return kExitFailure;
   } catch (const std::exception &e) {
-    fmt::print(stderr, "error: internal failure: {}\n", e.what());
+    fmt::print(stderr, "error: internal failure: {}\n", common::printable(e.what()));
     return kExitFailure;
   }
 }

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -29,56 +30,10 @@ namespace fs = std::filesystem;
   throw common::InputError(fmt::format("--out {}: {}", dir, reason));
 }
 
-// The first missing ancestor of dir (dir itself when only it is missing), to remove on failure.
-fs::path first_missing(const fs::path &dir) {
-  fs::path missing;
-  for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
-    std::error_code ec;
-    if (fs::exists(p, ec) || ec) break;
-    missing = p;
-    if (p == p.parent_path()) break;
-  }
-  return missing;
-}
-
-void probe_writable(const std::string &dir) {
-  const fs::path probe = fs::path(dir) / fmt::format(".maze_mapper.probe.{}", ::getpid());
-  const std::string name = probe.string();
-  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) fail_out(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
-  ::close(fd);
-  ::unlink(name.c_str());
-}
-
 std::string fixed(double v, int decimals) { return fmt::format("{:.{}f}", v, decimals); }
 
+// The first missing ancestor of dir (dir itself when only it is missing), to remove on failure.
 }  // namespace
-
-void prepare_output_dir(const std::string &dir) {
-  if (dir.empty()) fail_out(dir, "an empty path");
-  const fs::path path(dir);
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (fs::exists(status)) {
-    if (!fs::is_directory(status)) fail_out(dir, "exists and is not a directory");
-    probe_writable(dir);
-    return;
-  }
-  const fs::path created = first_missing(path);
-  errno = 0;
-  fs::create_directories(path, ec);
-  if (ec || !fs::is_directory(path)) {
-    const std::string reason = ec ? ec.message() : std::string(std::strerror(errno != 0 ? errno : EACCES));
-    if (!created.empty()) fs::remove_all(created, ec);
-    fail_out(dir, fmt::format("cannot create the directory: {}", reason));
-  }
-  try {
-    probe_writable(dir);
-  } catch (const common::InputError &) {
-    if (!created.empty()) fs::remove_all(created, ec);
-    throw;
-  }
-}
 
 unsigned char pgm_pixel(float log_odds, float initial_log_odds) {
   if (!mapping::observed(log_odds, initial_log_odds)) return 205;
@@ -279,6 +234,10 @@ std::string summary_json(const RunOptions &o, const RunSummary &s) {
   return j.dump(2) + "\n";
 }
 
+bool trace_every_step(const RunOptions &options) {
+  return options.output.trace_steps || !sensing::setup(options.model.kind).reads_lidar();
+}
+
 std::string trace_header(const std::string &sensor_columns) {
   return "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated" + sensor_columns + "\n";
 }
@@ -292,7 +251,8 @@ void append_trace_row(std::string &csv, const robot::StepReport &step, double x_
 
 namespace {
 
-void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
+                     std::vector<std::string> &written) {
   std::error_code ec;
   fs::create_directory(dir, ec);
   if (ec) fail_out(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
@@ -304,8 +264,9 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
     const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
     const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}, files.landmarks};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
-    common::write_file_atomically((dir / fmt::format("{:0{}}.png", i + 1, digits)).string(),
-                                  png_file(grid, tones, marks, caption));
+    const std::string name = fmt::format("{:0{}}.png", i + 1, digits);
+    common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption));
+    written.push_back("snapshots/" + name);
   }
 }
 
@@ -315,7 +276,8 @@ std::size_t subcells_of(const mapping::GridGeometry &g) {
 
 bool replay_fits(const mapping::GridGeometry &g) { return subcells_of(g) <= kReplayMaxSubcells; }
 
-void write_replay(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+void write_replay(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
+                  std::vector<std::string> &written) {
   if (!options.output.replay || files.history == nullptr || !replay_fits(files.grid->geometry())) return;
   const std::optional<Replay> replay = replay_file(options, summary, files);
   if (!replay) {
@@ -324,6 +286,7 @@ void write_replay(const fs::path &dir, const RunOptions &options, const RunSumma
     return;
   }
   common::write_file_atomically((dir / "replay.html").string(), replay->html);
+  written.push_back("replay.html");
 }
 
 // --plan-to / plan: plan.png (the learned map with the planned path) and plan.csv (its
@@ -367,6 +330,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files) {
   const fs::path d(dir);
+  std::vector<std::string> written{"map.pgm", "map.yaml", "map.png", "truth.png", "summary.json"};
   const auto initial = static_cast<float>(files.model->prior_log_odds());
   common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
@@ -375,10 +339,20 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
                                 png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options)));
   common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
-  if (options.output.trace) common::write_file_atomically((d / "trace.csv").string(), *files.trace_csv);
-  if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(d / "snapshots", options, summary, files);
-  write_replay(d, options, summary, files);
-  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files);
+  if (files.trace != nullptr) {
+    files.trace->commit();
+    written.emplace_back("trace.csv");
+  }
+  if (options.output.snapshots > 0 && files.history != nullptr) {
+    write_snapshots(d / "snapshots", options, summary, files, written);
+  }
+  write_replay(d, options, summary, files, written);
+  if (summary.plan && summary.plan->found) {
+    write_plan(d, options, *summary.plan, files);
+    written.emplace_back("plan.png");
+    written.emplace_back("plan.csv");
+  }
+  remove_stale_outputs(dir, written);
 }
 
 }  // namespace app

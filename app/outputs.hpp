@@ -20,7 +20,8 @@
 //                       "plan" without planning, ...), plus "options": every option in
 //                       effect, one object a concern of RunOptions ("max_steps" is the limit
 //                       in effect; a null "noise" is the robot's own).
-//   trace.csv           one row a control step (see trace_header()), map-log can read it.
+//   trace.csv           rows of control steps (trace_every_step(): every step, or the steps
+//                       where something happens; see trace_header()), map-log can read it.
 //   snapshots/NN.png    --snapshots N: map.png as it was after each of snapshot_steps(steps,
 //                       N) (app/grid_history.hpp), 01.png first, the step in the caption.
 //   replay.html         the run in a browser, unless --no-replay: app/replay.hpp. Not written
@@ -29,7 +30,8 @@
 //   plan.png, plan.csv  --plan-to (or `plan --out`) when a path was found: map.png's picture
 //                       with the planned path in magenta instead of the exploration's; the
 //                       path's sub-cells in order, `index,subcell_x,subcell_y,x_m,y_m`.
-// Every file is written to a temporary name in DIR, then renamed.
+// Every file is written to a temporary name in DIR, then renamed (trace.csv too: its rows go
+// to the temporary as the run goes, so its memory is a buffer, not the whole trace).
 
 #include <functional>
 #include <optional>
@@ -38,20 +40,16 @@
 
 #include "app/grid_history.hpp"
 #include "app/map_picture.hpp"
+#include "app/output_dir.hpp"
 #include "app/replay.hpp"
 #include "app/run.hpp"
+#include "common/atomic_file.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
 #include "robot/cell_controller.hpp"
 
 namespace app {
-
-// Makes sure DIR can take the outputs before anything runs: creates it (and its parents)
-// when missing, and checks that it is a directory a file can be created in (by creating and
-// removing a probe file). Throws common::InputError "--out DIR: REASON" otherwise; then no
-// directory it created is left behind.
-void prepare_output_dir(const std::string &dir);
 
 // The pixel of one sub-cell in map.pgm: 0, 254 or 205 (see above).
 unsigned char pgm_pixel(float log_odds, float initial_log_odds);
@@ -75,6 +73,12 @@ std::string summary_json(const RunOptions &options, const RunSummary &summary);
 // prints it; see robot::StepReport), what the robot did, and the sub-cells its scan updated;
 // then `sensor_columns` (app/trace_sensors.hpp: the pose the robot reads, its bumps or depth).
 std::string trace_header(const std::string &sensor_columns = "");
+// Whether trace.csv has a row every control step: with --trace-steps, and for the set-ups
+// whose readings map-log reads back (bump, depth, pie, cone: their bump or range columns).
+// Else (cell, ray: a lidar robot's columns are its pose) a row when the action or the cell
+// differs from the step before or a scan updated the grid, and the first and last steps: a
+// 256 x 256 maze's trace is then megabytes, not a gigabyte.
+bool trace_every_step(const RunOptions &options);
 // One row; `sensor_values` are the sensor columns' values (",..."), as the header has them.
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
                       double yaw_rad, const std::string &sensor_values = "");
@@ -83,7 +87,7 @@ struct RunFiles {
   const mapping::OccupancyGrid *grid = nullptr;
   const mapping::SensorModel *model = nullptr;
   const std::vector<mapping::Cell> *path = nullptr;
-  const std::string *trace_csv = nullptr;
+  common::OutputFile *trace = nullptr;  // trace.csv as written during the run: committed here
   std::vector<mapping::Cell> goals;     // the maze's goal cells, marked on the pictures
   const maze::Maze *truth = nullptr;    // truth.png
   const explore::Visits *visits = nullptr;
@@ -106,7 +110,10 @@ std::vector<bool> visited_cells(const explore::Visits &visits);
 // truth.png's bytes (app/truth_picture.hpp) for this run.
 std::string truth_png_file(const RunOptions &options, const RunFiles &files);
 
-// Writes the files into dir (prepared by prepare_output_dir).
+// Writes the files into dir (prepared by prepare_output_dir); then removes the files an
+// earlier run left there that this one did not write (of the names above only: trace.csv
+// after --no-trace, replay.html, plan.*, snapshots/NN.png beyond this run's N; nothing
+// else in DIR is touched), so that DIR holds one run's outputs.
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files);
 

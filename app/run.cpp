@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <cstdio>
 #include <functional>
 #include <istream>
@@ -13,20 +14,23 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/walls.hpp"
-#include "plan/wavefront.hpp"
 #include "render/ascii_map.hpp"
 #include "robot/progress_printer.hpp"
 #include "app/outputs.hpp"
 #include "app/profile_json.hpp"
 #include "app/terminal.hpp"
+#include "app/plan_path.hpp"
 #include "app/trace_sensors.hpp"
+#include "app/trace_writer.hpp"
 #include "app/truth_picture.hpp"
 
 namespace app {
@@ -89,10 +93,9 @@ struct RunState {
   bool quit = false;          // q at a --step prompt
   bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
-  std::string trace;          // trace.csv, when --out
-  std::optional<TraceSensors> trace_sensors;  // its columns of the robot's readings
-  std::string sensor_values;  // one row's readings (reused)
+  std::optional<TraceWriter> trace;  // trace.csv, when --out
   std::optional<GridHistory> history;  // --snapshots, replay.html
+  std::vector<std::uint32_t> grid_changes;  // the grid's change log, for the history
 };
 
 // --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
@@ -117,30 +120,6 @@ void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option)
     throw common::InputError(fmt::format("{} {},{} is outside the {}x{} maze", option, c.x, c.y,
                                          maze.width(), maze.height()));
   }
-}
-
-// Plans on the learned grid and prints the map with the path drawn as '*'.
-PlanSummary plan_path(const RunOptions &options, const robot::RunResult &result,
-                      const mapping::SensorModel &model, render::MapStyle style, std::ostream &out) {
-  PlanSummary p;
-  p.from = options.plan.from.value_or(result.path.back());
-  p.to = *options.plan.to;
-  p.dilate = options.plan.wavefront.dilate;
-  const auto path = plan::wavefront(result.grid, model, p.from, p.to, options.plan.wavefront);
-  if (!path) {
-    out << fmt::format("no path from ({},{}) to ({},{}) on the learned map\n\n", p.from.x, p.from.y,
-                       p.to.x, p.to.y);
-    return p;
-  }
-  p.found = true;
-  p.length_subcells = path->length_subcells;
-  p.length_cells = path->length_cells;
-  p.path = path->subcells;
-  const std::vector<bool> mask = plan::path_mask(result.grid, *path);
-  style.path = &mask;
-  out << fmt::format("planned path ({},{}) -> ({},{}):\n", p.from.x, p.from.y, p.to.x, p.to.y);
-  out << render::render_map(result.grid, result.visits, style) << '\n';
-  return p;
 }
 
 // "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
@@ -177,6 +156,11 @@ void judge_ending(const RunOptions &options, RunSummary &summary) {
   };
   const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
                               options.strategy == explore::StrategyKind::frontier;
+  // Floodfill means to reach a goal: done without one (walled off from the start) is not done.
+  if (options.strategy == explore::StrategyKind::floodfill && !summary.reached_goal) {
+    add("no goal reached");
+    summary.reason = robot::EndReason::incomplete;
+  }
   if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
     const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
     add(fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells));
@@ -276,7 +260,6 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
                        robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
                        const RunControls &controls, RunState &state) {
   const OutputOptions &o = options.output;
-  const bool lidar_only = sensing::setup(options.model.kind).reads_lidar();
   std::optional<ScreenGuard> screen;
   std::optional<Animator> animator;
   if (o.animate) {
@@ -289,7 +272,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   if (printer || animator || o.step || state.history) {
     hooks.on_move = [&](const robot::MoveReport &report) {
       if (state.history) {
-        state.history->record(report.step, *report.grid);
+        state.history->record(report.step, *report.grid, state.grid_changes);
         state.history->arrived(report.step, report.cell, report.heading);
       }
       if (printer) (*printer)(report);
@@ -303,24 +286,24 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
     };
   }
   if (!o.out_dir.empty() || animator || o.step || controls.interrupted) {
+    // The step is counted in the run's steps whatever this returns: its trace row is written
+    // before a stop is answered, so that the trace holds every step.
     hooks.on_step = [&](const robot::StepReport &step) {
+      const maze::sim::Pose &pose = simulation.pose();
+      if (state.trace) state.trace->on_step(step, pose);
+      if (state.history && !state.grid_changes.empty()) {
+        state.history->record(step.step, *step.grid, state.grid_changes);
+      }
       if (controls.interrupted && controls.interrupted()) {
         state.interrupted = true;
         return false;
       }
       if (state.quit) return false;
-      const maze::sim::Pose &pose = simulation.pose();
-      if (state.trace_sensors) {
-        state.sensor_values.clear();
-        state.trace_sensors->append_values(state.sensor_values);
-        append_trace_row(state.trace, step, pose.x_m, pose.y_m, pose.yaw_rad, state.sensor_values);
-      }
-      // Only lidar scans are counted in subcells_updated; other sensors' marks may come any step.
-      if (state.history && (step.subcells_updated > 0 || !lidar_only)) state.history->record(step.step, *step.grid);
       if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
       return true;
     };
   }
+  if (state.history) hooks.grid_changes = &state.grid_changes;
   return controller.run(hooks);
 }
 
@@ -331,7 +314,7 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.message = result.message;
   if (result.reason == robot::EndReason::stopped) {
     summary.interrupted = state.interrupted;
-    summary.message = state.interrupted ? "interrupted by Ctrl-C" : "quit with q";
+    summary.message = state.interrupted ? "interrupted by " + common::interrupt_name() : "quit with q";
   }
   summary.width = truth.width();
   summary.height = truth.height();
@@ -377,18 +360,21 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   const std::string &out_dir = options.output.out_dir;
-  if (!out_dir.empty()) prepare_output_dir(out_dir);
+  if (!out_dir.empty()) {
+    prepare_output_dir(out_dir);
+    refuse_outputs_over_inputs(out_dir, {options.world});
+  }
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
   if (!out_dir.empty() && options.output.trace) {
-    state.trace_sensors.emplace(simulation.robot(), controller_opts);
-    state.trace = trace_header(state.trace_sensors->header());
+    state.trace.emplace(out_dir, simulation.robot(), controller_opts, trace_every_step(options));
   }
   if (!out_dir.empty() && keeps_history(options, controller_opts.geometry)) {
     state.history.emplace(controller_opts.geometry, style.initial_log_odds);
   }
   const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
+  if (state.trace) state.trace->finish();
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
@@ -397,12 +383,20 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   if (options.plan.to) summary.plan = plan_path(options, result, model, style, planned);
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  // A full disk is said after the summary, which the user still gets.
+  std::exception_ptr no_space;
   if (!out_dir.empty()) {
-    RunFiles files{&result.grid, &model, &result.path, &state.trace, {}, &truth, &result.visits,
-                   learned_sides(result, style.initial_log_odds, style.threshold),
+    RunFiles files{&result.grid, &model, &result.path, state.trace ? &state.trace->file() : nullptr, {}, &truth,
+                   &result.visits, learned_sides(result, style.initial_log_odds, style.threshold),
                    state.history ? &*state.history : nullptr, landmark_marks(truth)};
     for (const maze::Cell goal : truth.goals()) files.goals.push_back(to_mapping(goal));
-    write_outputs(out_dir, options, summary, files);
+    // From here a stop signal ends the process: each file whole or absent, none half-written.
+    const common::SignalsEndProcess signals_end_process;
+    try {
+      write_outputs(out_dir, options, summary, files);
+    } catch (const common::NoSpaceError &) {
+      no_space = std::current_exception();
+    }
   }
   if (summary.interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";
@@ -411,6 +405,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
     out << planned.str();
   }
   out << format_summary(options, summary);
+  if (no_space) {
+    out << std::flush;
+    std::rethrow_exception(no_space);
+  }
   return summary;
 }
 

@@ -1,7 +1,10 @@
 #include "app/run_cli.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -109,8 +112,20 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   add_robot_and_faults(command, o);
   add_model_options(command, o.sensor);
   add_clamp_option(command, o.sensor);
-  command.add_option("--max-steps", o.max_steps,
-                     "N: stop after this many control steps (default 1000 a cell, at least 100000)");
+  // CLI11 alone clamps a number past the type's range to its maximum, silently.
+  const CLI::Validator whole_steps(
+      [](std::string &text) {
+        std::int64_t value = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const bool whole = !text.empty() && ec == std::errc() && end == text.data() + text.size();
+        return whole ? std::string()
+                     : fmt::format("must be a whole number from 1 to {} (got '{}')",
+                                   std::numeric_limits<std::int64_t>::max(), text);
+      },
+      "");
+  command
+      .add_option("--max-steps", o.max_steps, "N: stop after this many control steps (default 1000 a cell, at least 100000)")
+      ->check(whole_steps);
   command.add_option("--dilate", o.plan.wavefront.dilate,
                      fmt::format("N: planning: grow obstacles by N sub-cells (default {})", o.plan.wavefront.dilate));
   add_world_options(command, o.world_overrides);

@@ -1,5 +1,6 @@
 #include "app/run_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -33,6 +34,13 @@ void validate_run(const RunOptions &o) {
   if (o.threshold && !std::isfinite(*o.threshold)) {
     throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *o.threshold));
   }
+  // Log-odds never leave the clamp: a threshold outside it marks no wall, or every sub-cell.
+  if (o.threshold && o.sensor.clamp && (*o.threshold > o.sensor.clamp->max || *o.threshold < o.sensor.clamp->min)) {
+    throw common::InputError(fmt::format("--threshold {} lies outside --clamp {} {}: the log-odds never pass it, so "
+                                         "the map {}", *o.threshold, o.sensor.clamp->min, o.sensor.clamp->max,
+                                         *o.threshold > o.sensor.clamp->max ? "would hold no wall"
+                                                                             : "would be walls everywhere"));
+  }
   const std::optional<double> &noise = o.simulation.noise;
   if (noise && !(*noise >= 0.0 && *noise <= 1.0)) {
     throw common::InputError(fmt::format("--noise must be a fraction of the max range from 0 to 1 (got {})", *noise));
@@ -62,6 +70,7 @@ constexpr OptionUse kOptionUses[] = {
     {"--dilate", "without --plan-to", planning},
     {"--snapshots", "without --out", writing_files},
     {"--no-trace", "without --out", writing_files},
+    {"--trace-steps", "without --out", writing_files},
     {"--no-replay", "without --out", writing_files},
 };
 
@@ -95,6 +104,12 @@ void check_lidar_options(const GivenOptions &given, const RunOptions &options, s
     warnings.push_back(fmt::format("warning: --noise {} has no effect: the robot {} has no lidar (--noise 0 "
                                    "makes its sensors exact)", *options.simulation.noise, profile.name));
   }
+}
+
+bool has_bumper(const RunOptions &options) {
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  return std::any_of(profile.bumpers.begin(), profile.bumpers.end(),
+                     [&](const maze::sim::BumperSpec &b) { return b.name == options.simulation.stuck_bumper; });
 }
 
 sensing::RangeSensorKind range_sensor_kind(maze::sim::DistanceSensorType type) {
@@ -182,6 +197,12 @@ std::vector<std::string> check_options_apply(const GivenOptions &given, const Ru
   }
   check_lidar_options(given, options, warnings);
   check_range_sensor_kinds(options, warnings);
+  // Only a bumper set-up reads the bumpers (sensing/setups.cpp): a stuck one changes nothing
+  // else. (A bumper the robot lacks is the simulator's error, said alone.)
+  const sensing::SetUp &setup = sensing::setup(options.model.kind);
+  if (given.given("--stuck-bumper") && !setup.reads_bumpers() && has_bumper(options)) {
+    warnings.push_back(fmt::format("warning: --stuck-bumper has no effect with the {} model (read by bump)", setup.name));
+  }
   return warnings;
 }
 

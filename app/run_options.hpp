@@ -36,6 +36,7 @@ struct OutputOptions {
   bool step = false;                    // --step: wait for Enter (or q) after each cell
   std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, truth.png, summary.json, trace.csv, replay.html
   bool trace = true;                    // trace.csv with --out (--no-trace: not written)
+  bool trace_steps = false;             // --trace-steps: a row every control step (see trace_every_step)
   int snapshots = 0;                    // --snapshots N: N pictures through the run in DIR/snapshots/
   bool replay = true;                   // replay.html with --out (--no-replay: not written)
   // --narrow (1) or --wide (2): terminal columns a sub-cell; none: 2 when standard output is

@@ -18,11 +18,6 @@
 namespace app {
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void on_sigint(int) { g_interrupted.store(true); }
-
 }  // namespace
 
 bool is_terminal(int fd) { return ::isatty(fd) == 1; }
@@ -64,18 +59,6 @@ void note_if_too_wide(int fd, int map_subcells_wide, int columns) {
              "(run ... > run.txt), follow the robot with --animate, or open --out's map.png and replay.html\n",
              width, terminal);
 }
-
-SigintGuard::SigintGuard() {
-  g_interrupted.store(false);
-  struct sigaction action {};
-  action.sa_handler = on_sigint;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, &previous_);
-}
-
-SigintGuard::~SigintGuard() { sigaction(SIGINT, &previous_, nullptr); }
-
-bool SigintGuard::interrupted() { return g_interrupted.load(); }
 
 ScreenGuard::ScreenGuard(std::ostream &out) : out_(out) {
   out_ << "\x1b[?1049h\x1b[?25l\x1b[H\x1b[2J" << std::flush;

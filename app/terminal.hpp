@@ -1,10 +1,11 @@
 #pragma once
+// The terminal side of `run`: its size, the alternate screen for --animate. (Ctrl-C and the
+// other stop signals: common/interrupt.hpp.)
+
 #include <string>
-// The terminal side of `run`: its size, the alternate screen for --animate, Ctrl-C.
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <iosfwd>
 #include <optional>
 
@@ -37,20 +38,6 @@ int subcell_columns(std::optional<int> asked, int fd, int map_subcells_wide);
 // When fd is a terminal narrower than the map drawn `columns` a sub-cell: one line on stderr
 // saying how to see the map whole (a file, --animate's window, --out's pictures).
 void note_if_too_wide(int fd, int map_subcells_wide, int columns);
-
-// While alive: SIGINT sets a flag instead of killing the process. Restores the previous
-// handler when destroyed. One at a time.
-class SigintGuard {
- public:
-  SigintGuard();
-  ~SigintGuard();
-  SigintGuard(const SigintGuard &) = delete;
-  SigintGuard &operator=(const SigintGuard &) = delete;
-  static bool interrupted();
-
- private:
-  struct sigaction previous_ {};
-};
 
 // While alive: the alternate screen, the cursor hidden. Destroying it (also on an exception
 // or after Ctrl-C) shows the cursor and returns to the normal screen, which is unchanged.

@@ -12,6 +12,7 @@
 #include "app/cli_options.hpp"
 #include "commands.hpp"
 #include "app/webots_export.hpp"
+#include "common/atomic_file.hpp"
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
 #include "maze/world.hpp"
@@ -59,6 +60,7 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
                   fmt::format(".wbt: the controller's sub-cells per cell side, K (default {})", args->wbt.subcells));
   cmd->callback([cmd, args, &context] {
     const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
+    common::refuse_output_over_input("", args->out, {args->world});
     // The controller's set-up travels in a .wbt only: for another format these do nothing.
     for (const char *option : {"--robot", "--model", "--strategy", "--subcells"}) {
       if (format != maze::Format::wbt && cmd->count(option) > 0) {

@@ -92,3 +92,35 @@ TEST_CASE("run --snapshots 3: three pictures that differ, the map filling in, th
   CHECK(unknown_pixels(shots[1], map_height) > unknown_pixels(shots[2], map_height));
   CHECK(map_part(shots[2], map_height) == map_part(final_map, map_height));
 }
+
+TEST_CASE("with the grid's change log the history records what the whole-grid compare records") {
+  mapping::GridGeometry g;
+  g.width_cells = 3;
+  g.height_cells = 2;
+  mapping::OccupancyGrid grid(g, 0.0f);
+  std::vector<std::uint32_t> written;
+  grid.set_change_log(&written);
+  app::GridHistory logged(g, 0.0f);
+  app::GridHistory compared(g, 0.0f);
+  grid.at_index(7) = 0.5f;
+  grid.at_index(2) = -0.5f;
+  grid.at_index(7) = 0.5f;  // written twice, one change
+  CHECK(written == std::vector<std::uint32_t>{7, 2, 7});
+  logged.record(1, grid, written);
+  compared.record(1, grid);
+  CHECK(written.empty());
+  grid.at_index(2) = -0.5f;  // written, unchanged
+  grid.at_index(40) = 1.0f;
+  logged.record(2, grid, written);
+  compared.record(2, grid);
+  REQUIRE(logged.changes() == compared.changes());
+  for (std::size_t i = 0; i < logged.changes(); ++i) {
+    CHECK(logged.change_log()[i].step == compared.change_log()[i].step);
+    CHECK(logged.change_log()[i].index == compared.change_log()[i].index);
+    CHECK(logged.change_log()[i].value == compared.change_log()[i].value);
+  }
+  const mapping::OccupancyGrid copy = grid;  // a copy logs nothing
+  mapping::OccupancyGrid other = copy;
+  other.at_index(3) = 1.0f;
+  CHECK(written.empty());
+}

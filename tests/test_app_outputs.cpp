@@ -99,6 +99,7 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   const TempDir dir;
   app::RunOptions options = lab_options();
   options.output.out_dir = (dir.path / "out").string();
+  options.output.trace_steps = true;  // the default form: the next case
   std::ostringstream out;
   const app::RunSummary summary = app::run_world(options, out);
   REQUIRE(summary.reason == robot::EndReason::done);
@@ -214,6 +215,56 @@ TEST_CASE("--step: Enter goes on, q stops the run cleanly with a summary") {
   const app::RunSummary full = app::run_world(options, out, controls);
   CHECK(full.reason == robot::EndReason::done);
   CHECK(full.moves == 29);
+}
+
+TEST_CASE("the default trace keeps the first and last steps and every step where the action or cell changes "
+          "or a scan updates the map, as --trace-steps has them") {
+  const TempDir dir;
+  app::RunOptions options = lab_options();
+  options.output.out_dir = (dir.path / "every").string();
+  options.output.trace_steps = true;
+  std::ostringstream out;
+  const app::RunSummary summary = app::run_world(options, out);
+  options.output.out_dir = (dir.path / "default").string();
+  options.output.trace_steps = false;
+  app::run_world(options, out);
+  const std::vector<std::string> every = lines_of(read_all(dir.path / "every" / "trace.csv"));
+  const std::vector<std::string> thinned = lines_of(read_all(dir.path / "default" / "trace.csv"));
+  REQUIRE(static_cast<std::int64_t>(every.size()) == summary.steps + 1);
+  const auto fields = [](const std::string &row) {
+    std::vector<std::string> f;
+    std::stringstream in(row);
+    for (std::string field; std::getline(in, field, ',');) f.push_back(field);
+    return f;
+  };
+  std::vector<std::string> expected{every[0]};
+  for (std::size_t i = 1; i < every.size(); ++i) {
+    const std::vector<std::string> now = fields(every[i]);
+    const bool first = i == 1;
+    const bool last = i + 1 == every.size();
+    bool changed = first || last || now[8] != "0";
+    if (!first) {
+      const std::vector<std::string> before = fields(every[i - 1]);
+      changed = changed || now[5] != before[5] || now[6] != before[6] || now[7] != before[7];
+    }
+    if (changed) expected.push_back(every[i]);
+  }
+  CHECK(thinned == expected);
+  CHECK(thinned.size() * 10 < every.size());  // 127 rows of 2,697 on lab4x4
+}
+
+TEST_CASE("an interrupted run's trace has a row for every step it counts") {
+  const TempDir dir;
+  app::RunOptions options = lab_options();
+  options.output.out_dir = (dir.path / "out").string();
+  options.output.trace_steps = true;
+  g_polls = 0;
+  app::RunControls controls;
+  controls.interrupted = interrupt_after_100_steps;
+  std::ostringstream out;
+  const app::RunSummary summary = app::run_world(options, out, controls);
+  CHECK(summary.steps == 101);
+  CHECK(lines_of(read_all(dir.path / "out" / "trace.csv")).size() == 102);  // the header and 101 rows
 }
 
 TEST_CASE("an interrupt stops the run at the next step; exit status 130") {
@@ -382,6 +433,7 @@ TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes
   app::RunOptions options = lab_options();
   options.output.quiet = false;
   options.output.out_dir = (dir.path / "out").string();
+  options.output.trace_steps = true;
   std::ostringstream out;
   app::run_world(options, out);
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));

@@ -259,6 +259,16 @@ std::size_t apply_lists(std::span<const std::uint32_t> occupied_once,
 
 }  // namespace
 
+void ScanUpdate::log_marks(std::vector<std::uint32_t> &log, std::size_t grid_size) const {
+  log.insert(log.end(), occupied_once_.view().begin(), occupied_once_.view().end());
+  log.insert(log.end(), free_once_.view().begin(), free_once_.view().end());
+  for (const std::vector<std::size_t> *list : {&occupied_, &free_}) {
+    for (const std::size_t i : *list) {
+      if (i < grid_size) log.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+}
+
 std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model,
                               double free_increment, double occupied_increment) {
   open_scan(grid.size());
@@ -276,6 +286,7 @@ std::size_t ScanUpdate::apply(OccupancyGrid &grid, const SensorModel &model,
                                  tags, size, free_tag_, {occupied_increment, 0.0, 0.0},
                                  {free_increment, 0.0, 0.0});
   }
+  if (grid.change_log_.log != nullptr) log_marks(*grid.change_log_.log, size);
   clear();
   return updated;
 }

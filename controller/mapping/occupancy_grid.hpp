@@ -81,10 +81,18 @@ class OccupancyGrid {
 
   float at(Cell c, LocalSubCell s) const { return values_[index(c, s)]; }
   float at(SubCell s) const { return values_[index(s)]; }
-  float &at(Cell c, LocalSubCell s) { return values_[index(c, s)]; }
-  float &at(SubCell s) { return values_[index(s)]; }
+  float &at(Cell c, LocalSubCell s) { return values_[noted(index(c, s))]; }
+  float &at(SubCell s) { return values_[noted(index(s))]; }
   float at_index(std::size_t flat) const { return values_[flat]; }
-  float &at_index(std::size_t flat) { return values_[flat]; }
+  float &at_index(std::size_t flat) { return values_[noted(flat)]; }
+
+  // The change log, for an observer that must know what each step changed without comparing
+  // the whole grid (a run's history for its replay): while set, every sub-cell written through
+  // the non-const accessors or a ScanUpdate is appended to *log as its flat index (repeats,
+  // and writes that changed nothing, included). The log's owner reads and empties it; the
+  // grid only appends. Null (the default): nothing is logged.
+  // A copy or a moved-to grid logs nothing (the log belongs to the grid it was set on).
+  void set_change_log(std::vector<std::uint32_t> *log) { change_log_.log = log; }
 
   // One cell's K x K log-odds, row 0 = north band, column 0 = west band.
   CellMatrix cell_matrix(Cell c) const;
@@ -100,8 +108,23 @@ class OccupancyGrid {
 
  private:
   friend class ScanUpdate;
+  std::size_t noted(std::size_t flat) {
+    if (change_log_.log != nullptr) change_log_.log->push_back(static_cast<std::uint32_t>(flat));
+    return flat;
+  }
+  // Not carried by a copy or a move.
+  struct ChangeLog {
+    std::vector<std::uint32_t> *log = nullptr;
+    ChangeLog() = default;
+    ChangeLog(const ChangeLog &) {}
+    ChangeLog &operator=(const ChangeLog &) {
+      log = nullptr;
+      return *this;
+    }
+  };
   GridGeometry geometry_;
   std::vector<float> values_;
+  ChangeLog change_log_;
 };
 
 class SensorModel;
@@ -221,6 +244,8 @@ class ScanUpdate {
   };
 
   void open_scan(std::size_t grid_size);
+  // Appends every sub-cell this scan marked inside the grid to a grid's change log.
+  void log_marks(std::vector<std::uint32_t> &log, std::size_t grid_size) const;
 
   std::vector<std::size_t> free_;      // mark_free, duplicates allowed
   std::vector<std::size_t> occupied_;  // mark_occupied, duplicates allowed

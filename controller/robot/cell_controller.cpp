@@ -208,6 +208,7 @@ RunResult CellController::run(const RunHooks &hooks) {
   assert(!s.ran && "CellController::run is called once");
   s.ran = true;
   s.hooks = hooks;
+  s.grid.set_change_log(hooks.grid_changes);
   EndReason reason = s.explore();
   const double explore_time_s = s.robot.getTime();
   const int search_visited = s.visits.count();

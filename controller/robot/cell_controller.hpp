@@ -75,6 +75,9 @@ using StepObserver = std::function<bool(const StepReport &)>;
 struct RunHooks {
   Observer on_move;        // after the start scan and after every move into a cell
   StepObserver on_step;    // after every control step
+  // When set: the grid logs every sub-cell it writes here during the run
+  // (OccupancyGrid::set_change_log), for the observer to read and empty.
+  std::vector<std::uint32_t> *grid_changes = nullptr;
 };
 
 // The speed run, when one was made (cells > 0 or time_s set).

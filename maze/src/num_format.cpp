@@ -155,6 +155,7 @@ void check_every_cell_once(const Parser &p, std::vector<Entry> &entries) {
 }  // namespace
 
 Maze read_num(std::string_view text, const std::string &file) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 BOM, as the text map and XML take it
   const Parser parser{text, file};
   auto entries = std::make_shared<std::vector<Entry>>(parser.entries());
   check_every_cell_once(parser, *entries);

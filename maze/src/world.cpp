@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "maze/num_format.hpp"
@@ -43,23 +44,6 @@ struct FileDescriptor {
 common::InputError cannot(std::string_view what, const std::string &path, int error) {
   return common::InputError(fmt::format("cannot {} {}: {}", what, path, std::strerror(error)));
 }
-
-bool write_all(int fd, std::string_view content) {
-  while (!content.empty()) {
-    const ssize_t n = ::write(fd, content.data(), content.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    content.remove_prefix(static_cast<std::size_t>(n));
-  }
-  return true;
-}
-
-mode_t file_mode() {
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  return static_cast<mode_t>(0666 & ~mask);
-}
-
 
 void require_inside(const Maze &maze, Cell c, std::string_view option) {
   if (!maze.contains(c)) {
@@ -181,8 +165,49 @@ Maze read_world(std::string_view text, const std::string &file) {
 
 World load_world(const std::string &path) { return load_world(path, WorldOverrides{}); }
 
+namespace {
+
+// The location of byte `offset` of `text`, line and column from 1.
+common::SourceLocation location_of(std::string_view text, std::size_t offset, const std::string &file) {
+  const std::string_view before = text.substr(0, offset);
+  const auto line = static_cast<int>(std::count(before.begin(), before.end(), '\n')) + 1;
+  const std::size_t line_start = before.rfind('\n');
+  const std::size_t column = line_start == std::string_view::npos ? offset + 1 : offset - line_start;
+  return common::SourceLocation{file, line, static_cast<int>(column)};
+}
+
+// A world file, read in proportion: its format is told from the first bytes that are not
+// blank (so `show /dev/zero` or an image fails at once, not after 1 GiB), and reading stops
+// at the first NUL byte, which no maze format holds.
+std::string read_world_text(const std::string &path) {
+  const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (file.fd < 0) throw cannot("read", path, errno);
+  std::string text;
+  bool format_known = false;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(file.fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw cannot("read", path, errno);
+    const std::size_t start = text.size();
+    text.append(buffer, static_cast<std::size_t>(n));
+    if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
+      if (!format_known) (void)detect_format(text, path);  // a NUL first: no format at all
+      throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
+    }
+    if (!format_known && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {
+      (void)detect_format(text, path);
+      format_known = true;
+    }
+    if (n == 0) return text;
+    if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
+  }
+}
+
+}  // namespace
+
 World load_world(const std::string &path, const WorldOverrides &overrides) {
-  const std::string text = read_file(path);
+  const std::string text = read_world_text(path);
   const Format format = detect_format(text, path);
   std::vector<std::string> warnings;
   const auto read = [&]() -> Maze {
@@ -270,21 +295,7 @@ std::string read_file(const std::string &path) {
 }
 
 void write_file_atomically(const std::string &path, std::string_view content) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-  std::string temp = (dir / fmt::format(".{}.tmp.XXXXXX", target.filename().string())).string();
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw cannot("write", path, errno);
-  int error = 0;
-  {
-    const FileDescriptor file(fd);
-    if (::fchmod(fd, file_mode()) != 0 || !write_all(fd, content) || ::fsync(fd) != 0) error = errno;
-  }
-  if (error == 0 && ::rename(temp.c_str(), path.c_str()) != 0) error = errno;
-  if (error != 0) {
-    ::unlink(temp.c_str());
-    throw cannot("write", path, error);
-  }
+  common::write_file_atomically(path, content);
 }
 
 }  // namespace maze

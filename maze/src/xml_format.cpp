@@ -383,9 +383,10 @@ void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, cons
   for (auto *e = world.FirstChildElement("landmark"); e != nullptr; e = e->NextSiblingElement("landmark")) {
     raw.landmarks.push_back(read_landmark(*e, g, src));
   }
+  Source::Cursor cursor;
   for (auto *e = world.FirstChildElement("goal"); e != nullptr; e = e->NextSiblingElement("goal")) {
     raw.goals.push_back(cell_at(*e, g, src, "goal"));
-    raw.goal_where.push_back(src.at(*e, "x"));
+    raw.goal_where.push_back(src.at(*e, "x", &cursor));
   }
 }
 

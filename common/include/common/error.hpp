@@ -8,11 +8,29 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
 
 namespace common {
+
+// `text` with every control byte (below 0x20, and 0x7f: an ESC, a newline, a carriage return
+// that an input file or a path may hold) written as \xNN, so that a message stays one line
+// and cannot drive the terminal. Other bytes (UTF-8 included) are kept.
+inline std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      out += fmt::format("\\x{:02x}", byte);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
 
 // Where in an input file something is; line and column count from 1, 0 means "not known".
 struct SourceLocation {
@@ -32,12 +50,13 @@ class InputError : public std::runtime_error {
   const SourceLocation &where() const { return where_; }
   const std::string &message() const { return message_; }
 
-  // The one line the user sees: "FILE:LINE:COL: error: WHAT", or "error: WHAT".
+  // The one line the user sees: "FILE:LINE:COL: error: WHAT", or "error: WHAT", control
+  // bytes escaped (printable()).
   std::string diagnostic() const {
-    if (where_.file.empty()) return fmt::format("error: {}", message_);
-    if (where_.line == 0) return fmt::format("{}: error: {}", where_.file, message_);
-    if (where_.column == 0) return fmt::format("{}:{}: error: {}", where_.file, where_.line, message_);
-    return fmt::format("{}:{}:{}: error: {}", where_.file, where_.line, where_.column, message_);
+    if (where_.file.empty()) return printable(fmt::format("error: {}", message_));
+    if (where_.line == 0) return printable(fmt::format("{}: error: {}", where_.file, message_));
+    if (where_.column == 0) return printable(fmt::format("{}:{}: error: {}", where_.file, where_.line, message_));
+    return printable(fmt::format("{}:{}:{}: error: {}", where_.file, where_.line, where_.column, message_));
   }
 
  private:

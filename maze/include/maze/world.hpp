@@ -83,9 +83,9 @@ void save_world(const Maze &maze, const std::string &path);
 // The whole file; throws common::InputError "cannot read FILE: reason" (also above 1 GiB).
 std::string read_file(const std::string &path);
 
-// Writes to a temporary file in the target's directory, then renames it over the target, so
-// readers never see half a file. On failure nothing is left behind and common::InputError
-// "cannot write FILE: reason" is thrown.
+// common::write_file_atomically (common/atomic_file.hpp): a regular file through a temporary
+// renamed over it, a symbolic link's target likewise, a device or FIFO written directly. On
+// failure nothing is left behind and common::InputError "cannot write FILE: reason" is thrown.
 void write_file_atomically(const std::string &path, std::string_view content);
 
 }  // namespace maze

@@ -1,0 +1,296 @@
+#!/bin/sh
+# The fault-and-signal suite: what the program writes to, and how it stops. Every case
+# asserts that nothing the user pointed at is destroyed, that no file is left half-written
+# (no ".NAME.tmp.PID" temporary survives, every output present is whole), and the exit
+# status. Run as root in CI (the device cases use mknod then; /dev/null is checked as well).
+# Signals are sent once the process has reported the phase they aim at (its output, the
+# files it has written), not after a guessed sleep, except the batch case (see there).
+#   usage: run_faults.sh PROGRAM SOURCE_DIR
+set -u
+program=$1
+source_dir=$2
+cd "$source_dir" || exit 1
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+failures=0
+count=0
+
+fail() {
+  failures=$((failures + 1))
+  printf 'FAIL: %s: %s\n' "$case_name" "$1"
+}
+begin() {
+  [ -z "${case_name:-}" ] || printf '%4ss  %s\n' "$(($(date +%s) - case_started))" "$case_name"
+  case_started=$(date +%s)
+  case_name=$1
+  count=$((count + 1))
+  dir="$scratch/$count"
+  mkdir -p "$dir"
+}
+# No temporary left anywhere under the case's directory.
+no_temporaries() {
+  left=$(find "$dir" -name '.*.tmp.*' 2>/dev/null)
+  [ -z "$left" ] || fail "temporaries left: $left"
+}
+# Waits (at most ~20 s) until `test "$@"` holds.
+wait_for() {
+  tries=0
+  until test "$@"; do
+    tries=$((tries + 1))
+    [ "$tries" -lt 400 ] || return 1
+    sleep 0.05
+  done
+}
+# Waits until file $1 contains the text $2 (at most ~20 s).
+wait_for_text() {
+  tries=0
+  until grep -q "$2" "$1" 2>/dev/null; do
+    tries=$((tries + 1))
+    [ "$tries" -lt 400 ] || return 1
+    sleep 0.05
+  done
+}
+# A file ends with a newline (a CSV or JSON written whole).
+ends_whole() {
+  [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
+}
+# A PNG ends with its IEND chunk.
+png_whole() {
+  [ "$(tail -c 8 "$1" | od -An -c | tr -d ' \n')" = 'IEND256B`202' ]
+}
+
+lab=worlds/lab4x4.txt
+"$program" generate 24x24 --seed 3 -o "$scratch/maze24.txt" || exit 1
+"$program" generate 64x64 --seed 5 -o "$scratch/maze64.txt" || exit 1
+"$program" generate 256x256 --seed 1 -o "$scratch/maze256.txt" || exit 1
+
+# --- Writes that respect their target ---------------------------------------------------
+
+begin "a character device stays a device (/dev/null)"
+"$program" batch "$lab" --csv /dev/null >/dev/null 2>"$dir/err" || fail "batch --csv /dev/null failed: $(cat "$dir/err")"
+[ -c /dev/null ] || fail "/dev/null is no longer a character device"
+"$program" batch "$lab" --csv "$dir/part.csv" >/dev/null 2>&1
+"$program" batch merge "$dir/part.csv" -o /dev/null >/dev/null 2>"$dir/err" || fail "batch merge -o /dev/null failed: $(cat "$dir/err")"
+[ -c /dev/null ] || fail "/dev/null is no longer a character device"
+
+if [ "$(id -u)" = 0 ]; then
+  begin "a device node of our own, as root"
+  mknod "$dir/null.csv" c 1 3 || fail "mknod"
+  "$program" batch "$lab" --csv "$dir/null.csv" >/dev/null 2>&1 || fail "batch --csv DEVICE failed"
+  [ -c "$dir/null.csv" ] || fail "the device node was replaced"
+  no_temporaries
+fi
+
+begin "a FIFO stays a FIFO and its reader gets the content"
+mkfifo "$dir/fifo.txt"
+cat "$dir/fifo.txt" >"$dir/got" &
+reader=$!
+"$program" generate 4x4 --seed 9 -o "$dir/fifo.txt" 2>"$dir/err" || fail "generate -o FIFO failed: $(cat "$dir/err")"
+wait "$reader"
+[ -p "$dir/fifo.txt" ] || fail "the FIFO was replaced"
+"$program" generate 4x4 --seed 9 >"$dir/want"
+cmp -s "$dir/got" "$dir/want" || fail "the FIFO's reader did not get the maze"
+no_temporaries
+
+begin "a symbolic link stays a link and its target gets the content"
+printf 'old\n' >"$dir/target.txt"
+ln -s target.txt "$dir/link.txt"
+"$program" generate 4x4 --seed 9 -o "$dir/link.txt" 2>"$dir/err" || fail "generate -o LINK failed: $(cat "$dir/err")"
+[ -L "$dir/link.txt" ] || fail "the link was replaced by a file"
+"$program" generate 4x4 --seed 9 >"$dir/want"
+cmp -s "$dir/target.txt" "$dir/want" || fail "the link's target does not hold the maze"
+ln -s missing.txt "$dir/dangling.txt"
+"$program" convert "$lab" "$dir/dangling.txt" 2>"$dir/err" || fail "convert to a dangling link failed: $(cat "$dir/err")"
+[ -L "$dir/dangling.txt" ] && [ -f "$dir/missing.txt" ] || fail "a dangling link's target was not created through it"
+no_temporaries
+
+begin "an output that is an input is refused before anything runs"
+cp "$lab" "$dir/a.txt"
+status=0
+"$program" batch "$dir/a.txt" --csv "$dir/a.txt" >"$dir/out" 2>"$dir/err" || status=$?
+[ "$status" = 2 ] || fail "batch a.txt --csv a.txt: exit $status, expected 2"
+grep -q "^error: --csv .*a.txt is also an input: refusing to overwrite it$" "$dir/err" || fail "message: $(cat "$dir/err")"
+cmp -s "$dir/a.txt" "$lab" || fail "a.txt changed"
+ln -s a.txt "$dir/alias.txt"
+status=0
+"$program" convert "$dir/a.txt" "$dir/alias.txt" 2>"$dir/err" || status=$?
+[ "$status" = 2 ] || fail "convert a.txt alias-of-a.txt: exit $status, expected 2"
+cmp -s "$dir/a.txt" "$lab" || fail "a.txt changed by convert"
+"$program" batch "$lab" --csv "$dir/part.csv" >/dev/null 2>&1
+status=0
+"$program" batch merge "$dir/part.csv" -o "$dir/part.csv" >/dev/null 2>&1 || status=$?
+[ "$status" = 2 ] || fail "batch merge X -o X: exit $status, expected 2"
+no_temporaries
+
+begin "a full device (/dev/full) is exit status 4, said once"
+"$program" batch "$lab" --csv "$dir/part.csv" >/dev/null 2>&1
+status=0
+"$program" batch merge "$dir/part.csv" -o /dev/full >/dev/null 2>"$dir/err" || status=$?
+[ "$status" = 4 ] || fail "batch merge -o /dev/full: exit $status, expected 4"
+grep -q "^error: cannot write /dev/full: No space left on device$" "$dir/err" || fail "message: $(cat "$dir/err")"
+[ -c /dev/full ] || fail "/dev/full is no longer a device"
+
+begin "a full disk under --out: exit status 4, the summary still printed, no temporary left"
+mkdir -p "$dir/tiny"
+# A 16 KiB tmpfs in a mount namespace of its own (root only; skipped where mounting is not allowed).
+if unshare -m sh -c "mount -t tmpfs -o size=16k tmpfs '$dir/tiny' && exit 0" 2>/dev/null; then
+  status=0
+  unshare -m sh -c "mount -t tmpfs -o size=16k tmpfs '$dir/tiny' && '$program' run '$lab' --quiet --trace-steps \
+    --out '$dir/tiny/out' >'$dir/out' 2>'$dir/err'; status=\$?; ls -A '$dir/tiny/out' >'$dir/left'; exit \$status" ||
+    status=$?
+  [ "$status" = 4 ] || fail "exit $status, expected 4"
+  grep -q "^end: done" "$dir/out" || fail "no summary"
+  grep -q "^error: cannot write .*: No space left on device$" "$dir/err" || fail "message: $(cat "$dir/err")"
+  ! grep -q '\.tmp\.' "$dir/left" || fail "temporaries left: $(cat "$dir/left")"
+else
+  echo "     (skipped: mounting a tmpfs is not allowed here)"
+fi
+
+# --- --out owns its directory's outputs -------------------------------------------------
+
+begin "a reused --out loses the files this run does not write, and nothing else"
+mkdir -p "$dir/out/snapshots"
+for f in trace.csv replay.html plan.png plan.csv snapshots/04.png; do printf 'stale\n' >"$dir/out/$f"; done
+printf 'mine\n' >"$dir/out/notes.txt"
+"$program" run "$lab" --out "$dir/out" --no-trace --no-replay >/dev/null 2>&1 || fail "run failed"
+for f in trace.csv replay.html plan.png plan.csv snapshots/04.png snapshots; do
+  [ ! -e "$dir/out/$f" ] || fail "stale $f kept"
+done
+[ -f "$dir/out/notes.txt" ] || fail "a file of the user's removed"
+[ -f "$dir/out/summary.json" ] || fail "no summary.json"
+
+# --- Smaller items: each seen once, each checked here --------------------------------------
+
+begin "a CSV of batch whose path holds a newline merges back"
+mkdir -p "$dir/folder"
+nl_name="$dir/folder/two
+lines.txt"
+cp "$lab" "$nl_name"
+"$program" batch "$dir/folder" --csv "$dir/rows.csv" >/dev/null 2>&1 || fail "batch of a folder failed"
+"$program" batch merge "$dir/rows.csv" -o "$dir/merged.csv" >/dev/null 2>"$dir/err" || fail "merge: $(cat "$dir/err")"
+cmp -s "$dir/rows.csv" "$dir/merged.csv" || fail "the merged CSV differs from the part"
+
+begin "a folder's subfolders, dangling links and FIFOs are named, not skipped silently"
+mkdir -p "$dir/folder/sub"
+cp "$lab" "$dir/folder/a.txt"
+ln -s missing.txt "$dir/folder/gone.txt"
+mkfifo "$dir/folder/pipe.txt"
+"$program" batch "$dir/folder" >"$dir/out" 2>&1 || fail "batch failed"
+for said in "gone.txt (a dangling link)" "pipe.txt (a FIFO)" "sub (a folder: folders are not searched)"; do
+  grep -qF "$said" "$dir/out" || fail "not named: $said"
+done
+
+begin "floodfill that cannot reach its goal does not end done"
+status=0
+"$program" run tests/faults/walled_goal.txt --strategy floodfill --quiet >"$dir/out" 2>&1 || status=$?
+[ "$status" = 1 ] || fail "exit $status, expected 1"
+grep -q "^end: incomplete" "$dir/out" || fail "$(grep '^end' "$dir/out")"
+
+begin "a .num world with a UTF-8 BOM reads as without"
+"$program" show tests/faults/bom.num >"$dir/bom" 2>&1 || fail "$(cat "$dir/bom")"
+"$program" show worlds/lab4x4.num >"$dir/plain" 2>&1
+cmp -s "$dir/bom" "$dir/plain" || fail "the BOM changed what is read"
+
+begin "--stuck-bumper with a model that reads no bumper is a warning"
+"$program" run "$lab" --quiet --max-steps 1 --model depth --stuck-bumper "bumper front" >/dev/null 2>"$dir/err"
+grep -qx "warning: --stuck-bumper has no effect with the depth model (read by bump)" "$dir/err" || fail "$(cat "$dir/err")"
+
+# --- Signals ----------------------------------------------------------------------------
+
+# $1 signal name, $2 expected status: run on a big maze, signalled once it prints its map.
+signal_in_run_loop() {
+  begin "SIG$1 in the run loop: exit $2, the files whole, the trace a row a step"
+  "$program" run "$scratch/maze64.txt" --out "$dir/out" --no-replay --trace-steps >"$dir/stdout" 2>"$dir/err" &
+  pid=$!
+  wait_for_text "$dir/stdout" "^step" || fail "the run printed no step"
+  kill -"$1" "$pid"
+  status=0
+  wait "$pid" || status=$?
+  [ "$status" = "$2" ] || fail "exit $status, expected $2"
+  grep -q '"end": "stopped"' "$dir/out/summary.json" || fail "summary.json does not say stopped"
+  steps=$(sed -n 's/^ *"steps": \([0-9]*\),$/\1/p' "$dir/out/summary.json")
+  rows=$(($(wc -l <"$dir/out/trace.csv") - 1))
+  [ "$rows" = "$steps" ] || fail "trace.csv has $rows rows for $steps steps"
+  ends_whole "$dir/out/trace.csv" || fail "trace.csv cut"
+  png_whole "$dir/out/map.png" || fail "map.png cut"
+  no_temporaries
+}
+signal_in_run_loop INT 130
+signal_in_run_loop TERM 143
+signal_in_run_loop HUP 129
+
+begin "SIGTERM while the files are written (a FIFO holds the writer): exit 143, nothing half-written"
+mkdir -p "$dir/out"
+mkfifo "$dir/out/replay.html"
+"$program" run "$lab" --out "$dir/out" >/dev/null 2>"$dir/err" &
+pid=$!
+wait_for -f "$dir/out/summary.json" || fail "summary.json never came"
+kill -TERM "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" = 143 ] || fail "exit $status, expected 143"
+[ -p "$dir/out/replay.html" ] || fail "the FIFO was replaced"
+ends_whole "$dir/out/trace.csv" || fail "trace.csv cut"
+ends_whole "$dir/out/summary.json" || fail "summary.json cut"
+no_temporaries
+
+begin "SIGTERM while batch waits to write its CSV (a FIFO without a reader): exit 143"
+mkfifo "$dir/rows.csv"
+"$program" batch "$lab" --csv "$dir/rows.csv" >"$dir/stdout" 2>"$dir/err" &
+pid=$!
+wait_for_text "$dir/stdout" "^totals\|worlds" || fail "batch printed no table"
+kill -TERM "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" = 143 ] || fail "exit $status, expected 143"
+[ -p "$dir/rows.csv" ] || fail "the FIFO was replaced"
+
+# The one timed case: batch prints nothing until its runs end, so the signal comes a second
+# in, when the 4x4 world has long finished (25 ms) and the 256x256 one (5 s on an idle
+# machine) is running.
+begin "SIGTERM of a batch keeps its finished rows"
+"$program" batch "$lab" "$scratch/maze256.txt" --jobs 1 --csv "$dir/rows.csv" >"$dir/stdout" 2>"$dir/err" &
+pid=$!
+sleep 1
+kill -TERM "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" = 143 ] || fail "exit $status, expected 143"
+[ "$(wc -l <"$dir/rows.csv")" = 2 ] || fail "rows.csv: $(cat "$dir/rows.csv")"
+grep -q "lab4x4" "$dir/rows.csv" || fail "the finished row is not in rows.csv"
+no_temporaries
+
+# --- The soak: random runs interrupted at random moments (seeded; ~20 s) -----------------
+
+seed=${MAZE_MAPPER_SOAK_SEED:-1}
+i=0
+while [ "$i" -lt 8 ]; do
+  i=$((i + 1))
+  seed=$(((seed * 1103515245 + 12345) % 2147483648))
+  size=$((8 + seed % 24))
+  delay_ms=$(((seed / 64) % 600))
+  case $(((seed / 8) % 3)) in 0) sig=INT want=130 ;; 1) sig=TERM want=143 ;; *) sig=HUP want=129 ;; esac
+  snapshots=$(((seed / 16) % 4))
+  begin "soak $i: ${size}x${size}, SIG$sig after ${delay_ms} ms"
+  "$program" generate "${size}x${size}" --seed "$seed" -o "$dir/maze.txt" || fail "generate"
+  if [ "$snapshots" -gt 0 ]; then extra="--snapshots $snapshots"; else extra=""; fi
+  # shellcheck disable=SC2086
+  "$program" run "$dir/maze.txt" --out "$dir/out" $extra >/dev/null 2>"$dir/err" &
+  pid=$!
+  sleep "$(printf '%d.%03d' $((delay_ms / 1000)) $((delay_ms % 1000)))"
+  kill -"$sig" "$pid" 2>/dev/null
+  status=0
+  wait "$pid" || status=$?
+  case $status in 0 | 1 | "$want") ;; *) fail "exit $status" ;; esac
+  for f in "$dir"/out/*.csv "$dir"/out/*.json "$dir"/out/*.yaml; do
+    [ ! -e "$f" ] || ends_whole "$f" || fail "$f cut"
+  done
+  for f in "$dir"/out/*.png "$dir"/out/snapshots/*.png; do
+    [ ! -e "$f" ] || png_whole "$f" || fail "$f cut"
+  done
+  no_temporaries
+done
+
+begin ""
+echo "$((count - 1)) fault and signal cases, $failures failed"
+[ "$failures" -eq 0 ]
