@@ -30,6 +30,7 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   cli.require_subcommand(0, 1);
   add_run_command(cli, context);
   add_batch_command(cli, context);
+  add_mms_command(cli, context);
   add_demo_command(cli, context);
   add_explain_command(cli, context);
   add_map_log_command(cli, context);
