@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "maze/maz_format.hpp"
 #include "maze/num_format.hpp"
 #include "maze/text_map.hpp"
 #include "maze/validate.hpp"
@@ -134,6 +135,7 @@ std::string joined(const std::vector<std::string> &parts) {
 
 Format detect_format(std::string_view text, const std::string &file) {
   if (text.empty()) throw common::InputError(common::SourceLocation{file, 0, 0}, "the file is empty; expected a maze");
+  if (looks_like_maz(text)) return Format::maz;
   std::string_view body = text;
   if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
   if (!body.empty() && (body[0] == 'o' || body[0] == '+')) return Format::text_map;
@@ -149,7 +151,7 @@ Format detect_format(std::string_view text, const std::string &file) {
   }
   throw common::InputError(common::SourceLocation{file, 1, 1},
                            "cannot tell the format: expected a text map (first line 'o---o...'), num lines "
-                           "'X Y N E S W' or XML '<world>'");
+                           "'X Y N E S W', XML '<world>' or a 256-byte binary .maz");
 }
 
 Maze read_world(std::string_view text, const std::string &file) {
@@ -157,6 +159,7 @@ Maze read_world(std::string_view text, const std::string &file) {
     case Format::text_map: return read_text_map(text, file);
     case Format::num: return read_num(text, file);
     case Format::xml: return read_xml(text, file);
+    case Format::maz: return read_maz(text, file);
     case Format::wbt: break;
   }
   throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read Webots worlds");
@@ -182,20 +185,29 @@ Format format_for_output(const std::string &path) {
   if (ext == ".num") return Format::num;
   if (ext == ".xml") return Format::xml;
   if (ext == ".wbt") return Format::wbt;
+  if (ext == ".maz") return Format::maz;
   throw common::InputError(
-      fmt::format("cannot tell the output format of '{}' from its extension: use .txt, .num, .xml or .wbt", path));
+      fmt::format("cannot tell the output format of '{}' from its extension: use .txt, .num, .xml, .wbt or .maz", path));
 }
 
 std::optional<std::string> dropped_by(const Maze &maze, Format format) {
   std::vector<std::string> parts;
   const char *holds = "";
-  if (format == Format::num) {
-    holds = "a num file holds only the walls";
+  if (format == Format::num || format == Format::maz) {
+    holds = format == Format::num ? "a num file holds only the walls" : "a .maz file holds only the walls";
     if (maze.start() != Cell{0, 0} || maze.start_heading() != Side::north) {
       parts.push_back(fmt::format("the start ({},{}) facing {}", maze.start().x, maze.start().y,
                                   to_string(maze.start_heading())));
     }
-    if (!maze.goals().empty()) parts.push_back(goals_of(maze));
+    // A .maz maze's goal is the classic centre 2 x 2, which it keeps.
+    std::vector<Cell> centre;
+    for (const int x : {maze.width() / 2 - 1, maze.width() / 2}) {
+      for (const int y : {maze.height() / 2 - 1, maze.height() / 2}) centre.push_back({x, y});
+    }
+    std::vector<Cell> goals = maze.goals();
+    std::sort(goals.begin(), goals.end());
+    const bool kept = format == Format::maz && goals == centre;
+    if (!maze.goals().empty() && !kept) parts.push_back(goals_of(maze));
   } else if (format == Format::text_map) {
     holds = "a text map holds walls, start cell and goals; its start faces north";
     if (maze.start_heading() != Side::north) {
@@ -215,6 +227,7 @@ std::string format_world(const Maze &maze, Format format, std::string_view title
     case Format::num: return write_num(maze);
     case Format::xml: return write_xml(maze);
     case Format::wbt: return write_wbt(maze, title);
+    case Format::maz: return write_maz(maze);
   }
   return {};
 }
