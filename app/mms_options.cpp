@@ -37,15 +37,15 @@ void add_mms_options(CLI::App &command, MmsOptions &o) {
         if (found == words.end()) throw common::InputError(fmt::format("--until must be exit, goal or start (got '{}')", text));
         o.until = found->second;
       },
-      "exit|goal|start: end when the algorithm exits (default), when the robot first reaches the goal, or when it "
-      "is back at the start after the goal");
+      "exit|goal|start: end when the algorithm exits, when the robot first reaches the goal, or when it is back "
+      "at the start after the goal (default exit)");
   command.add_option("--time-limit", o.time_limit_s,
                      fmt::format("S: wall-clock seconds the algorithm has, the whole run (default {:g})", o.time_limit_s));
   command.add_option("--max-line", o.max_line_bytes,
                      fmt::format("BYTES: a longer line from the algorithm ends the run (default {})", o.max_line_bytes));
   command.add_flag("--ignore-invalid", o.ignore_invalid,
-                   "skip a line that is no command with a warning, as mms does (default: it ends the run, "
-                   "naming the line)");
+                   "skip a line that is no command with a warning, as mms does; without it such a line ends the "
+                   "run, naming the line");
 }
 
 bool mms_options_given(const CLI::App &command) {
