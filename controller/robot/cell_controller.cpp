@@ -45,8 +45,39 @@ struct CellController::Impl {
     }
   }
 
+  // Drives a route without mapping, each straight in one ramped leg; counts the cells driven.
+  Motion follow_ramped(const std::vector<Heading> &route, int &cells) {
+    const double cell_m = body.options.geometry.cell_size_m;
+    for (std::size_t i = 0; i < route.size();) {
+      const Heading h = route[i];
+      std::size_t end = i;
+      while (end < route.size() && route[end] == h) ++end;
+      Motion m = body.drive.turn_to(h);
+      body.heading = h;
+      body.visits.record(body.cell, body.heading);
+      Cell last = body.cell;
+      for (std::size_t k = i; k < end; ++k) last = mapping::neighbour(last, h);
+      const int straight = static_cast<int>(end - i);
+      if (m == Motion::ok) {
+        m = body.drive.drive_ramped(body.grid.centre_of(last), h, straight * cell_m, fmt::format("cell ({},{})", last.x, last.y));
+      }
+      if (m != Motion::ok) return m;
+      for (std::size_t k = i; k < end; ++k) {
+        body.cell = mapping::neighbour(body.cell, h);
+        body.path.push_back(body.cell);
+        body.visits.record(body.cell, body.heading);
+      }
+      cells += straight;
+      i = end;
+    }
+    return Motion::ok;
+  }
+
+  bool ramped() const { return body.options.motion.ramp_acceleration_m_s2 > 0.0 && body.options.motion.ramp_top_speed_m_s > 0.0; }
+
   // Drives a route cell by cell, without mapping; counts the cells driven.
   Motion follow(const std::vector<Heading> &route, int &cells) {
+    if (ramped()) return follow_ramped(route, cells);
     for (const Heading h : route) {
       Motion m = body.drive.turn_to(h);
       body.heading = h;
