@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,12 @@ template <typename T>
 Json or_null(const std::optional<T> &value) {
   return value ? Json(*value) : Json(nullptr);
 }
+
+// A stat as mms prints it (6 significant digits), as a JSON number: 47.4, not the float's
+// 47.400001525878906.
+Json stat(float value) { return std::stod(mms_number(value)); }
+
+Json stat(const std::optional<float> &value) { return value ? stat(*value) : Json(nullptr); }
 
 }  // namespace
 
@@ -33,11 +40,11 @@ std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, c
   j["crashes"] = r.crashes;
   j["total_distance"] = s.total_distance();
   j["total_turns"] = s.total_turns();
-  j["total_effective_distance"] = s.total_effective_distance();
+  j["total_effective_distance"] = stat(s.total_effective_distance());
   j["best_run_distance"] = or_null(s.best_run_distance());
   j["best_run_turns"] = or_null(s.best_run_turns());
-  j["best_run_effective_distance"] = or_null(s.best_run_effective_distance());
-  j["score"] = s.score();
+  j["best_run_effective_distance"] = stat(s.best_run_effective_distance());
+  j["score"] = stat(s.score());
   return j.dump(2) + "\n";
 }
 

@@ -169,3 +169,28 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
   CHECK(csv.starts_with(std::string(app::kMmsBatchCsvHeader) + "\n"));
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
 }
+
+TEST_CASE("mms --out: summary.json holds mms's stats and score, marks.txt the algorithm's marks") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("mms_out_{}", ::getpid());
+  fs::remove_all(dir);
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+  options.output.quiet = true;
+  options.output.out_dir = dir.string();
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "goal_then_loop.sh"};
+  mms.until = app::MmsUntil::goal;
+  std::ostringstream out;
+  (void)app::run_mms_world(options, mms, out);
+  std::ifstream file(dir / "summary.json");
+  std::ostringstream text;
+  text << file.rdbuf();
+  const std::string json = text.str();
+  CHECK(json.find("\"mms_end\": \"reached\"") != std::string::npos);
+  CHECK(json.find("\"best_run_distance\": 4") != std::string::npos);
+  CHECK(json.find("\"score\": 5.5") != std::string::npos);
+  CHECK(json.find("\"goal\": \"reached\"") != std::string::npos);
+  CHECK(fs::exists(dir / "marks.txt"));
+  CHECK(fs::exists(dir / "map.png"));
+  fs::remove_all(dir);
+}
