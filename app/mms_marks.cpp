@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "app/mms_protocol.hpp"
+
 namespace app {
 
 MmsMarks::MmsMarks(int w, int h)
@@ -46,8 +48,10 @@ std::string render_marks(const MmsMarks &m, bool color) {
       const char c = m.colors[at(x, y)];
       std::string shown = !text.empty() ? text.substr(0, 3) : (c != 0 ? std::string(1, c) : std::string());
       shown.resize(3, ' ');
-      if (color && c != 0) {
-        out += fmt::format("\x1b[7m{}\x1b[0m", shown);  // reverse video: the cell is coloured
+      if (const auto rgb = mms_color_rgb(c); color && rgb) {
+        // The cell's background in mms's colour; the text black on light colours, else white.
+        const int ink = rgb->r + rgb->g + rgb->b > 380 ? 30 : 97;
+        out += fmt::format("\x1b[48;2;{};{};{}m\x1b[{}m{}\x1b[0m", rgb->r, rgb->g, rgb->b, ink, shown);
       } else {
         out += shown;
       }

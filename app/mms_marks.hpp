@@ -23,7 +23,7 @@ struct MmsMarks {
 
 // The algorithm's marks drawn as a text map (o---o posts and walls, as `show` prints a
 // maze), each cell showing the first 3 characters of its text, else its colour letter; with
-// colour, a cell's colour as its background. Then "text (X,Y): TEXT" for texts cut short.
+// colour (a terminal), the cell's background in mms's colour (24-bit ANSI). Then "text (X,Y): TEXT" for texts cut short.
 std::string render_marks(const MmsMarks &marks, bool color);
 
 }  // namespace app

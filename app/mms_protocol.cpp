@@ -31,11 +31,19 @@ constexpr std::array kAnswered{
     Word{"getStat", MmsVerb::get_stat, true},
 };
 
-constexpr std::array<std::pair<char, std::string_view>, 17> kColors{{
-    {'k', "black"}, {'b', "blue"}, {'a', "gray"}, {'c', "cyan"}, {'g', "green"}, {'o', "orange"},
-    {'r', "red"}, {'w', "white"}, {'y', "yellow"}, {'B', "dark blue"}, {'C', "dark cyan"},
-    {'A', "dark gray"}, {'G', "dark green"}, {'O', "dark orange"}, {'R', "dark red"},
-    {'V', "dark violet"}, {'Y', "dark yellow"},
+struct Color {
+  char letter;
+  std::string_view name;
+  MmsRgb rgb;  // as mms draws it
+};
+
+constexpr std::array<Color, 17> kColors{{
+    {'k', "black", {0, 0, 0}},          {'b', "blue", {0, 0, 179}},         {'a', "gray", {179, 179, 179}},
+    {'c', "cyan", {0, 102, 102}},       {'g', "green", {0, 179, 0}},        {'o', "orange", {179, 102, 0}},
+    {'r', "red", {204, 0, 0}},          {'w', "white", {255, 255, 255}},    {'y', "yellow", {179, 179, 0}},
+    {'B', "dark blue", {0, 0, 51}},     {'C', "dark cyan", {0, 51, 51}},    {'A', "dark gray", {26, 26, 26}},
+    {'G', "dark green", {0, 77, 0}},    {'O', "dark orange", {51, 26, 0}},  {'R', "dark red", {77, 0, 0}},
+    {'V', "dark violet", {51, 0, 51}},  {'Y', "dark yellow", {51, 51, 0}},
 }};
 
 constexpr std::size_t kMaxTextChars = 10;
@@ -175,8 +183,15 @@ bool has_answer(MmsVerb verb) {
 }
 
 std::optional<std::string_view> mms_color_name(char letter) {
-  for (const auto &[c, name] : kColors) {
-    if (c == letter) return name;
+  for (const Color &c : kColors) {
+    if (c.letter == letter) return c.name;
+  }
+  return std::nullopt;
+}
+
+std::optional<MmsRgb> mms_color_rgb(char letter) {
+  for (const Color &c : kColors) {
+    if (c.letter == letter) return c.rgb;
   }
   return std::nullopt;
 }

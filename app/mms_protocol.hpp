@@ -61,8 +61,15 @@ ParsedLine parse_mms_line(std::string_view line);
 // Whether a command is answered (all but setWall ... clearAllText).
 bool has_answer(MmsVerb verb);
 
-// The colours mms knows, by letter (its README's table, and O, V from its source).
+// The colours mms knows, by letter (its README's table, and O, V from its source), and the
+// red, green, blue mms draws each in.
 std::optional<std::string_view> mms_color_name(char letter);
+struct MmsRgb {
+  int r = 0;
+  int g = 0;
+  int b = 0;
+};
+std::optional<MmsRgb> mms_color_rgb(char letter);
 
 // mms's stats and score, as its Stats tab and getStat compute them:
 //   distance            cells asked to move (moveForward N adds N, also when it crashes

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "app/mms_marks.hpp"
 #include "app/mms_protocol.hpp"
 
 using app::MmsStats;
@@ -100,4 +101,21 @@ TEST_CASE("mms stats: the README's effective distance, runs, the best run and th
   CHECK(s.best_run_distance() == 3);
   CHECK(s.best_run_turns() == 0);
   CHECK(s.stat("best-run-effective-distance") == "2.5");
+}
+
+TEST_CASE("mms marks: a wall on both sides, text before colour, mms's colour as the background") {
+  app::MmsMarks m(2, 1);
+  m.set_wall(0, 0, 'e', true);
+  CHECK(m.walls[0] == 2);
+  CHECK(m.walls[1] == 8);
+  m.texts[0] = "12345";
+  m.colors[1] = 'r';
+  CHECK(app::render_marks(m, false) ==
+        "o   o   o\n"
+        " 123|r   \n"
+        "o   o   o\n"
+        "text (0,0): 12345\n");
+  CHECK(app::render_marks(m, true).find("\x1b[48;2;204;0;0m\x1b[97mr  \x1b[0m") != std::string::npos);
+  m.set_wall(0, 0, 'e', false);
+  CHECK(m.walls[1] == 0);
 }
