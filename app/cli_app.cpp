@@ -33,6 +33,7 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   add_compare_command(cli, context);
   add_plan_command(cli, context);
   add_batch_command(cli, context);
+  add_mms_command(cli, context);
   add_demo_command(cli, context);
   add_explain_command(cli, context);
   add_map_log_command(cli, context);

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "app/batch.hpp"
+#include "app/mms_options.hpp"
 #include "app/run_cli.hpp"
 #include "app/terminal.hpp"
 #include "commands.hpp"
@@ -90,7 +91,9 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   add_merge_command(*command, batch);
   add_mapping_run_options(*command, *parsed);
   add_speed_run_option(*command, *parsed);
-  command->callback([command, parsed, batch, &context] {
+  auto mms = std::make_shared<MmsOptions>();
+  add_mms_options(*command, *mms);
+  command->callback([command, parsed, batch, mms, &context] {
     if (command->got_subcommand("merge")) return;
     if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (maze files or folders), or: batch merge CSV...");
     RunOptions options = checked_run_options(*command, *parsed, false);
@@ -112,6 +115,10 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     } else if (list.worlds.empty()) {
       throw common::InputError(fmt::format("no world to run: the folders hold no maze file ({} other file{} skipped)",
                                            list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
+    }
+    if (!context.child_command.empty() || mms_options_given(*command)) {
+      context.status = run_mms_batch_command(*command, options, *mms, context.child_command, list, jobs, batch->csv);
+      return;
     }
     const auto started = std::chrono::steady_clock::now();
     std::function<void(std::size_t, std::size_t)> progress;

@@ -4,6 +4,7 @@
 // User errors are thrown as common::InputError and reported by main().
 
 #include <string>
+#include <vector>
 
 #include "maze/world.hpp"
 
@@ -22,9 +23,19 @@ struct CommandContext {
   int status = 0;  // exit status of the command that ran
   // When set, `run` stores its checked options here instead of running (fuzzing, tests).
   RunOptions *run_parse_only = nullptr;
+  // `mms ... -- COMMAND ARGS...` and `batch ... -- COMMAND ARGS...`: the words after the first
+  // `--`, cut off the command line before CLI11 reads it (split_child_command).
+  std::vector<std::string> child_command;
 };
 
-// Every subcommand below, and the program's own flags (--help, --version), in the order
+// For `mms` and `batch`: the arguments before the first `--` (what CLI11 parses) and the
+// words after it into context.child_command; other command lines unchanged.
+std::vector<std::string> split_child_command(const std::vector<std::string> &args, CommandContext &context);
+// `mms [WORLD] [options] -- COMMAND [ARGS...]`: an mms-protocol algorithm drives the robot
+// (cmd_mms.cpp, mms_session.hpp).
+void add_mms_command(CLI::App &cli, CommandContext &context);
+
+// Every subcommand declared here, and the program's own flags (--help, --version), in the order
 // `maze_mapper --help` lists them: one list, in cli_app.cpp.
 void add_commands(CLI::App &cli, CommandContext &context);
 

@@ -39,7 +39,10 @@ int main(int argc, char **argv) {
       for (const std::string &word : as_if) as_if_argv.push_back(word.c_str());
       cli.parse(static_cast<int>(as_if_argv.size()), as_if_argv.data());
     } else {
-      cli.parse(argc, argv);
+      const std::vector<std::string> args = app::split_child_command(std::vector<std::string>(argv, argv + argc), context);
+      std::vector<const char *> parsed;
+      for (const std::string &word : args) parsed.push_back(word.c_str());
+      cli.parse(static_cast<int>(parsed.size()), parsed.data());
     }
     std::cout.flush();
     if (!std::cout) {

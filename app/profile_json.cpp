@@ -85,6 +85,7 @@ class Node {
   }
 
   Node at(const char *key) const { return Node(json_.at(key), key_path(key)); }
+  bool has(const char *key) const { return json_.is_object() && json_.contains(key); }
 
   double number(const char *key) const {
     const Node n = at(key);
@@ -160,10 +161,21 @@ BumperSpec read_bumper(const Node &n) {
 }
 
 RobotProfile read_profile(const Node &n) {
-  n.object({"name", "description", "wheel_radius_m", "axle_m", "body_radius_m",
-            "max_wheel_velocity_rad_s", "left_motor", "right_motor", "left_encoder",
-            "right_encoder", "imu", "gps", "lidars", "distance_sensors", "bumpers"});
+  if (n.has("speed_run")) {
+    n.object({"name", "description", "wheel_radius_m", "axle_m", "body_radius_m",
+              "max_wheel_velocity_rad_s", "left_motor", "right_motor", "left_encoder",
+              "right_encoder", "imu", "gps", "lidars", "distance_sensors", "bumpers", "speed_run"});
+  } else {
+    n.object({"name", "description", "wheel_radius_m", "axle_m", "body_radius_m",
+              "max_wheel_velocity_rad_s", "left_motor", "right_motor", "left_encoder",
+              "right_encoder", "imu", "gps", "lidars", "distance_sensors", "bumpers"});
+  }
   RobotProfile p;
+  if (n.has("speed_run")) {
+    const Node s = n.at("speed_run");
+    s.object({"acceleration_m_s2", "top_speed_m_s"});
+    p.speed_run = maze::sim::SpeedRunProfile{s.number("acceleration_m_s2"), s.number("top_speed_m_s")};
+  }
   p.name = n.text("name");
   p.description = n.text("description");
   p.wheel_radius_m = n.number("wheel_radius_m");
@@ -205,7 +217,7 @@ std::string parse_reason(const std::string &what) {
 }  // namespace
 
 std::string profile_to_json(const RobotProfile &p) {
-  const Json j{{"name", p.name},
+  Json j{{"name", p.name},
                {"description", p.description},
                {"wheel_radius_m", p.wheel_radius_m},
                {"axle_m", p.axle_m},
@@ -220,6 +232,10 @@ std::string profile_to_json(const RobotProfile &p) {
                {"lidars", list(p.lidars)},
                {"distance_sensors", list(p.distance_sensors)},
                {"bumpers", list(p.bumpers)}};
+  if (p.speed_run) {
+    j["speed_run"] = Json{{"acceleration_m_s2", p.speed_run->acceleration_m_s2},
+                          {"top_speed_m_s", p.speed_run->top_speed_m_s}};
+  }
   return j.dump(2) + "\n";
 }
 

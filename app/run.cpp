@@ -198,6 +198,10 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
     c.scan_filter.range_noise_m = options.simulation.noise.value_or(lidar.noise) * lidar.max_range_m;
   }
   c.speed_run = options.plan.speed_run;
+  if (profile.speed_run) {
+    c.motion.ramp_acceleration_m_s2 = profile.speed_run->acceleration_m_s2;
+    c.motion.ramp_top_speed_m_s = profile.speed_run->top_speed_m_s;
+  }
   c.sensing = sensing_of(profile);
   c.sensing.range_model = options.range_model;
   if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);

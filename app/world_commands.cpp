@@ -29,7 +29,7 @@ maze::World load_world_reporting(const std::string &path, const maze::WorldOverr
 void add_show_command(CLI::App &cli, CommandContext &context) {
   auto *cmd = cli.add_subcommand("show", "print a world as a canonical micromouse text map");
   auto world = std::make_shared<std::string>();
-  cmd->add_option("WORLD", *world, "maze file: text map, num or XML (detected by content)")->required();
+  cmd->add_option("WORLD", *world, "maze file: text map, num, XML or .maz (detected by content)")->required();
   cmd->callback([world, &context] {
     std::cout << maze::write_text_map(load_world_reporting(*world).maze);
     context.status = 0;
@@ -45,8 +45,8 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     bool keep_origin = false;
   };
   auto args = std::make_shared<Args>();
-  cmd->add_option("WORLD", args->world, "maze file: text map, num or XML (detected by content)")->required();
-  cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml or .wbt (Webots R2023b)")->required();
+  cmd->add_option("WORLD", args->world, "maze file: text map, num, XML or .maz (detected by content)")->required();
+  cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml, .maz (16 x 16, binary) or .wbt (Webots R2023b)")->required();
   add_cell_size_option(*cmd, args->overrides);
   cmd->add_flag("--keep-origin", args->keep_origin,
                ".xml: keep the world's own origin (default centred on (0, 0), as the course's files are)");

@@ -10,9 +10,10 @@
 #                               .ci/run does)
 #   dpkg-dev file man-db        the Debian package stage (tests/package_deb.sh): CPack's
 #                               dpkg-shlibdeps and file, and `man` to read the installed page
+#   python3                     the example mms algorithm in Python (tests/mms_examples.sh)
 #   pybind11-dev python3-dev    the Python module (python/, MAZE_MAPPER_PYTHON) and its tests
 #   python3-numpy python3-pytest
 # Further package names given as arguments are installed too.
 exec "$(dirname "$0")/install-deps.sh" doctest-dev clang libclang-rt-14-dev universal-ctags tmux chromium \
     dpkg-dev file man-db \
-    pybind11-dev python3-dev python3-numpy python3-pytest "$@"
+    python3 pybind11-dev python3-dev python3-numpy python3-pytest "$@"

@@ -144,3 +144,31 @@ TEST_CASE("Drive: a chassis that does not move is no progress, named; the step l
   CHECK(limited.drive.turn_to(Heading::south) == robot::Motion::max_steps);
   CHECK(limited.steps == 3);
 }
+
+TEST_CASE("Drive: a ramped straight speeds up at the ramp's acceleration to its top speed and stops at the target") {
+  FakeChassis chassis;
+  robot::MotionOptions options;
+  options.ramp_acceleration_m_s2 = 1.0;
+  options.ramp_top_speed_m_s = 0.5;
+  double last_v = 0.0;
+  double max_v = 0.0;
+  double max_dv = 0.0;
+  int steps = 0;
+  robot::Drive drive{chassis, options, 32, [&](robot::Action) {
+                       const double v = chassis.radius_m * (chassis.left_rad_s + chassis.right_rad_s) / 2.0;
+                       max_v = std::max(max_v, v);
+                       max_dv = std::max(max_dv, std::abs(v - last_v));
+                       last_v = v;
+                       chassis.advance(0.032);
+                       ++steps;
+                       return robot::Motion::ok;
+                     }};
+  REQUIRE(drive.drive_ramped(Point{0.5, 3.5}, Heading::north, 3.0, "three cells on") == robot::Motion::ok);
+  CHECK(chassis.y_m == doctest::Approx(3.5).epsilon(0.001));
+  CHECK(max_v == doctest::Approx(0.5));            // the top speed, reached on 3 m
+  // About a * dt a step, up or down; the last stop, from under sqrt(2 a * 2 tolerance), at most twice that.
+  CHECK(max_dv <= 2.0 * 1.0 * 0.032);
+  // A trapezoid: 0.5 s up and 0.5 s down (0.125 m each), 2.75 m at 0.5 m/s: 6.5 s, about 203 steps.
+  CHECK(steps > 180);
+  CHECK(steps < 230);
+}

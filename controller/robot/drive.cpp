@@ -88,12 +88,18 @@ class DriveLeg {
     measure();
   }
   bool arrived() const { return std::abs(remaining_m_) < tolerance_m_; }
-  Command command() const {
-    return {drive_.speed_m_s(remaining_m_), drive_.turn_rate_rad_s(drive_.heading_error_rad(h_, offset_m_))};
+  Command command() {
+    double v = drive_.speed_m_s(remaining_m_);
+    if (ramped_) {
+      v = drive_.ramped_speed_m_s(remaining_m_, last_v_m_s_);
+      last_v_m_s_ = v;
+    }
+    return {v, drive_.turn_rate_rad_s(drive_.heading_error_rad(h_, offset_m_))};
   }
   void after_step() const {
     if (after_) after_();
   }
+  void ramp() { ramped_ = true; }
   void measure() {
     const std::optional<Point> p = drive_.gps();
     if (!p) {
@@ -124,6 +130,8 @@ class DriveLeg {
   const std::function<void()> &after_;
   double remaining_m_ = 0.0;
   double offset_m_ = 0.0;
+  bool ramped_ = false;
+  double last_v_m_s_ = 0.0;
 };
 
 // Forward along heading h from `centre` at creep speed until stop() or limit_m along.
@@ -248,6 +256,15 @@ Motion Drive::drive_to(Point target, Heading h, double distance_m, std::string_v
   return come_to_rest();
 }
 
+Motion Drive::drive_ramped(Point target, Heading h, double distance_m, std::string_view what) {
+  start_odometry();
+  const std::function<void()> none;
+  DriveLeg leg(*this, target, h, distance_m, options_.position_tolerance_m, what, none);
+  leg.ramp();
+  if (const Motion s = follow(leg, Action::drive); s != Motion::ok) return s;
+  return come_to_rest();
+}
+
 Motion Drive::creep(Heading h, Point centre, double limit_m, std::string_view what, const std::function<bool()> &stop) {
   start_odometry();
   CreepLeg leg(*this, h, centre, limit_m, options_.creep_speed_m_s, what, stop);
@@ -262,6 +279,14 @@ double Drive::travelled_m() const {
 
 double Drive::speed_m_s(double remaining_m) const {
   return std::clamp(options_.drive_gain * remaining_m / dt_s_, -max_v_m_s_, max_v_m_s_);
+}
+
+double Drive::ramped_speed_m_s(double remaining_m, double last_m_s) const {
+  const double a = options_.ramp_acceleration_m_s2;
+  const double top = std::min(options_.ramp_top_speed_m_s, max_wheel_rad_s_ * options_.wheel_radius_m);
+  const double stop = std::sqrt(2.0 * a * std::max(remaining_m, 0.0));
+  const double v = std::min({options_.drive_gain * remaining_m / dt_s_, last_m_s + a * dt_s_, top, stop});
+  return std::clamp(v, -top, top);
 }
 
 double Drive::turn_rate_rad_s(double heading_error_rad) const {

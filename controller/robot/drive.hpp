@@ -63,6 +63,10 @@ struct MotionOptions {
   double stall_epsilon = 1e-4;
   std::int64_t max_steps = 2'000'000;  // --max-steps: control steps, the whole run
   double creep_speed_m_s = 0.1;       // bump probing: forward speed while feeling for a wall
+  // The speed run's straights (the robot's description): a trapezoidal speed profile up to
+  // this acceleration and top speed (capped by the motors); 0: none, cell by cell.
+  double ramp_acceleration_m_s2 = 0.0;
+  double ramp_top_speed_m_s = 0.0;
 };
 
 // Throws common::InputError when a number is unusable: positive sizes, speeds and
@@ -136,6 +140,10 @@ class Drive {
   // step. `what` names the target in the no-progress message.
   Motion drive_to(mapping::Point target, mapping::Heading h, double distance_m, std::string_view what,
                   const std::function<void()> &after_step = {});
+  // As drive_to, with the speed also capped by a trapezoidal profile: from rest, up by
+  // ramp_acceleration_m_s2 each second to ramp_top_speed_m_s, and down so as to stop at the
+  // target (v <= sqrt(2 a d)). Needs the ramp options set.
+  Motion drive_ramped(mapping::Point target, mapping::Heading h, double distance_m, std::string_view what);
   // Creeps forward along heading h from `centre` until stop() (asked before every step) or
   // limit_m along; stays moving (the caller comes to rest). `what` names it when it stalls.
   Motion creep(mapping::Heading h, mapping::Point centre, double limit_m, std::string_view what,
@@ -148,6 +156,10 @@ class Drive {
   // The loop's commands, shared by every leg: v = drive_gain * remaining / dt and
   // w = turn_gain * heading_error / dt, capped.
   double speed_m_s(double remaining_m) const;
+  // drive_ramped's command: speed_m_s's proportional law, capped by the motors (not the
+  // cruise speed), the ramp's top speed, last_m_s plus one step's acceleration, and the
+  // speed that still stops at the target, sqrt(2 a remaining).
+  double ramped_speed_m_s(double remaining_m, double last_m_s) const;
   double turn_rate_rad_s(double heading_error_rad) const;
   // The heading error driving along heading h with `offset_m` to the left of the line.
   double heading_error_rad(mapping::Heading h, double offset_m) const;

@@ -11,12 +11,14 @@
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "maze/maz_format.hpp"
 #include "common/random.hpp"
 #include "maze/num_format.hpp"
 #include "maze/text_map.hpp"
@@ -135,6 +137,7 @@ std::size_t random_start_index(std::uint64_t seed, std::size_t count) {
 
 Format detect_format(std::string_view text, const std::string &file) {
   if (text.empty()) throw common::InputError(common::SourceLocation{file, 0, 0}, "the file is empty; expected a maze");
+  if (looks_like_maz(text)) return Format::maz;
   std::string_view body = text;
   if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
   if (!body.empty() && (body[0] == 'o' || body[0] == '+')) return Format::text_map;
@@ -150,7 +153,7 @@ Format detect_format(std::string_view text, const std::string &file) {
   }
   throw common::InputError(common::SourceLocation{file, 1, 1},
                            "cannot tell the format: expected a text map (first line 'o---o...'), num lines "
-                           "'X Y N E S W' or XML '<world>'");
+                           "'X Y N E S W', XML '<world>' or a 256-byte binary .maz");
 }
 
 Maze read_world(std::string_view text, const std::string &file) {
@@ -158,6 +161,7 @@ Maze read_world(std::string_view text, const std::string &file) {
     case Format::text_map: return read_text_map(text, file);
     case Format::num: return read_num(text, file);
     case Format::xml: return read_xml(text, file);
+    case Format::maz: return read_maz(text, file);
     case Format::wbt: break;
   }
   throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read Webots worlds");
@@ -177,13 +181,13 @@ common::SourceLocation location_of(std::string_view text, std::size_t offset, co
 }
 
 // A world file, read in proportion: its format is told from the first bytes that are not
-// blank (so `show /dev/zero` or an image fails at once, not after 1 GiB), and reading stops
-// at the first NUL byte, which no maze format holds.
+// blank (so `show /dev/zero` or an image fails at once, not after 1 GiB); reading stops at the
+// first NUL byte, which no text format holds, and a binary .maz one byte past its 256.
 std::string read_world_text(const std::string &path) {
   const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (file.fd < 0) throw cannot("read", path, errno);
   std::string text;
-  bool format_known = false;
+  std::optional<Format> format;
   char buffer[1 << 16];
   for (;;) {
     const ssize_t n = ::read(file.fd, buffer, sizeof buffer);
@@ -191,13 +195,15 @@ std::string read_world_text(const std::string &path) {
     if (n < 0) throw cannot("read", path, errno);
     const std::size_t start = text.size();
     text.append(buffer, static_cast<std::size_t>(n));
-    if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
-      if (!format_known) (void)detect_format(text, path);  // a NUL first: no format at all
-      throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
+    if (!format && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {
+      format = detect_format(text, path);  // throws when the first bytes are no format at all
     }
-    if (!format_known && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {
-      (void)detect_format(text, path);
-      format_known = true;
+    if (format == Format::maz) {
+      if (n == 0 || text.size() > kMazBytes) return text;  // read_maz says what is wrong with the size
+      continue;
+    }
+    if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
+      throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
     }
     if (n == 0) return text;
     if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
@@ -231,20 +237,29 @@ Format format_for_output(const std::string &path) {
   if (ext == ".num") return Format::num;
   if (ext == ".xml") return Format::xml;
   if (ext == ".wbt") return Format::wbt;
+  if (ext == ".maz") return Format::maz;
   throw common::InputError(
-      fmt::format("cannot tell the output format of '{}' from its extension: use .txt, .num, .xml or .wbt", path));
+      fmt::format("cannot tell the output format of '{}' from its extension: use .txt, .num, .xml, .wbt or .maz", path));
 }
 
 std::optional<std::string> dropped_by(const Maze &maze, Format format) {
   std::vector<std::string> parts;
   const char *holds = "";
-  if (format == Format::num) {
-    holds = "a num file holds only the walls";
+  if (format == Format::num || format == Format::maz) {
+    holds = format == Format::num ? "a num file holds only the walls" : "a .maz file holds only the walls";
     if (maze.start() != Cell{0, 0} || maze.start_heading() != Side::north) {
       parts.push_back(fmt::format("the start ({},{}) facing {}", maze.start().x, maze.start().y,
                                   to_string(maze.start_heading())));
     }
-    if (!maze.goals().empty()) parts.push_back(goals_of(maze));
+    // A .maz maze's goal is the classic centre 2 x 2, which it keeps.
+    std::vector<Cell> centre;
+    for (const int x : {maze.width() / 2 - 1, maze.width() / 2}) {
+      for (const int y : {maze.height() / 2 - 1, maze.height() / 2}) centre.push_back({x, y});
+    }
+    std::vector<Cell> goals = maze.goals();
+    std::sort(goals.begin(), goals.end());
+    const bool kept = format == Format::maz && goals == centre;
+    if (!maze.goals().empty() && !kept) parts.push_back(goals_of(maze));
   } else if (format == Format::text_map) {
     holds = "a text map holds walls, start cell and goals; its start faces north";
     if (maze.start_heading() != Side::north) {
@@ -270,6 +285,7 @@ std::string format_world(const Maze &maze, Format format, std::string_view title
     case Format::num: return write_num(maze);
     case Format::xml: return write_xml(maze);
     case Format::wbt: return write_wbt(maze, title);
+    case Format::maz: return write_maz(maze);
   }
   return {};
 }

@@ -13,7 +13,7 @@
 
 namespace maze {
 
-enum class Format { text_map, num, xml, wbt };
+enum class Format { text_map, num, xml, wbt, maz };
 
 // A maze read from a file, with what the user should hear about it.
 struct World {

@@ -96,6 +96,8 @@ RobotProfile micromouse() {
   p.body_radius_m = 0.04;
   p.max_wheel_velocity_rad_s = 80.0;
   p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.02, 1.0, 0.000833, 0.0, 0.0});
+  // Its speed run: 2 m/s^2 up to 1 m/s (the motors' 80 rad/s), straights in one go.
+  p.speed_run = SpeedRunProfile{2.0, 1.0};
   return p;
 }
 
@@ -298,6 +300,10 @@ void validate_profile(const RobotProfile &p) {
   require_positive("wheel_radius_m", p.wheel_radius_m);
   require_positive("axle_m", p.axle_m);
   require_positive("body_radius_m", p.body_radius_m);
+  if (p.speed_run) {
+    require_positive("speed_run.acceleration_m_s2", p.speed_run->acceleration_m_s2);
+    require_positive("speed_run.top_speed_m_s", p.speed_run->top_speed_m_s);
+  }
   require_positive("max_wheel_velocity_rad_s", p.max_wheel_velocity_rad_s);
   DeviceNameSet names;
   names.add("left_motor", p.left_motor, true);

@@ -94,6 +94,15 @@ struct BumperSpec {
   bool operator==(const BumperSpec &) const = default;
 };
 
+// How a robot built for racing drives the micromouse speed run: each straight of the known
+// path as one leg, speeding up at acceleration_m_s2 to top_speed_m_s and slowing down to stop
+// at its end (a trapezoidal speed profile), instead of stopping in every cell.
+struct SpeedRunProfile {
+  double acceleration_m_s2 = 0.0;
+  double top_speed_m_s = 0.0;
+  bool operator==(const SpeedRunProfile &) const = default;
+};
+
 struct RobotProfile {
   std::string name;
   std::string description;
@@ -107,6 +116,7 @@ struct RobotProfile {
   std::vector<LidarSpec> lidars;
   std::vector<DistanceSensorSpec> distance_sensors;
   std::vector<BumperSpec> bumpers;
+  std::optional<SpeedRunProfile> speed_run;  // none: the speed run drives cell by cell
   bool operator==(const RobotProfile &) const = default;
 };
 

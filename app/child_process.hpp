@@ -1,0 +1,81 @@
+#pragma once
+// A child process spoken to line by line: its standard input and output on pipes, its
+// standard error the same as ours (what it logs shows where we print), in a process group
+// of its own so that ending it ends what it started too. POSIX only.
+//
+// Reading waits with a deadline and a line-length cap, so a child that hangs, floods or
+// writes one endless line is noticed; writing never blocks (what the child does not read
+// yet waits in a buffer, flushed while reading). Destroying a ChildProcess that still runs
+// kills its group and reaps it: no child outlives its owner's scope.
+
+#include <signal.h>
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace app {
+
+// How a child ended.
+struct ChildExit {
+  bool exited = false;   // by exit(): code holds its status
+  int code = 0;
+  int signal = 0;        // killed by this signal (when not exited)
+  bool ok() const { return exited && code == 0; }
+};
+// "exit status 0", "exit status 3", "killed by signal 11 (SIGSEGV)".
+std::string describe(const ChildExit &e);
+
+class ChildProcess {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  // Starts argv[0], searched on PATH, with argv. Throws common::InputError when it cannot
+  // be started (not found, not executable). SIGPIPE is ignored in this process from then on
+  // (a child that closed its input must not end us).
+  explicit ChildProcess(const std::vector<std::string> &argv);
+  ~ChildProcess();
+  ChildProcess(const ChildProcess &) = delete;
+  ChildProcess &operator=(const ChildProcess &) = delete;
+
+  enum class Read {
+    line,         // a whole line, without its "\n" or "\r\n"
+    closed,       // the child closed its output (it ended, most likely)
+    timeout,      // the deadline passed first
+    too_long,     // max_bytes arrived without a line end
+    interrupted,  // interrupted() said so (Ctrl-C, SIGTERM)
+  };
+  // The next line of the child's output; flushes what waits for its input meanwhile.
+  // interrupted may be null; it is asked every 50 ms.
+  Read read_line(std::string &line, Clock::time_point deadline, std::size_t max_bytes, bool (*interrupted)());
+  // Queues text for the child's input. Text to a child that closed its input is dropped.
+  void write(std::string_view text);
+
+  // Waits until the deadline for the child to exit on its own, then kills its group;
+  // reaps it either way.
+  ChildExit finish(Clock::time_point deadline);
+  // Kills its group now and reaps it.
+  ChildExit kill();
+  pid_t pid() const { return pid_; }
+
+ private:
+  void flush_input();
+  bool reap(int options);
+
+  pid_t pid_ = -1;
+  int to_child_ = -1;    // its standard input
+  int from_child_ = -1;  // its standard output
+  std::string pending_input_;
+  std::string buffer_;   // output read past the last line
+  bool output_closed_ = false;
+  bool reaped_ = false;
+  ChildExit exit_;
+};
+
+  struct sigaction previous_term_ {};
+};
+
+}  // namespace app

@@ -1,0 +1,95 @@
+#include "robot/command_controller.hpp"
+
+#include <utility>
+
+#include <webots/Robot.hpp>
+
+#include "explore/shortest_path.hpp"
+#include "robot/cell_robot.hpp"
+
+namespace robot {
+
+using mapping::Cell;
+using mapping::Heading;
+using mapping::SideState;
+
+CommandController::CommandController(webots::Robot &robot, const ControllerOptions &options)
+    : body_(std::make_unique<CellRobot>(robot, options)) {}
+
+CommandController::~CommandController() = default;
+
+Motion CommandController::start(const RunHooks &hooks) {
+  body_->hooks = hooks;
+  return body_->start();
+}
+
+Cell CommandController::cell() const { return body_->cell; }
+
+SideState CommandController::side(Cell c, Heading h) const { return body_->walls(c, h); }
+
+Motion CommandController::look(Heading h, SideState &state) {
+  CellRobot &b = *body_;
+  state = b.walls(b.cell, h);
+  if (state != SideState::unknown) return Motion::ok;
+  if (const Motion s = b.turn_to(h); s != Motion::ok) return s;
+  for (int attempt = 0; attempt <= b.options.max_rescans && state == SideState::unknown; ++attempt) {
+    if (const Motion s = b.drive.come_to_rest(); s != Motion::ok) return s;
+    for (int i = 0; i < b.senses.revolution_steps(); ++i) {
+      if (const Motion s = b.drive.come_to_rest(); s != Motion::ok) return s;
+    }
+    b.senses.scan(b.cell, b.steps);
+    state = b.walls(b.cell, h);
+  }
+  return Motion::ok;
+}
+
+Motion CommandController::turn_to(Heading h) {
+  if (body_->heading == h) return Motion::ok;
+  return body_->turn_to(h);
+}
+
+Motion CommandController::move(Heading h) {
+  CellRobot &b = *body_;
+  if (const Motion s = turn_to(h); s != Motion::ok) return s;
+  if (const Motion s = b.drive_ahead(); s != Motion::ok) return s;
+  ++b.moves;
+  const bool new_cell = !b.visits.visited(b.cell);
+  b.visits.record(b.cell, b.heading);
+  return b.arrive(new_cell);
+}
+
+Motion CommandController::return_to_start(bool &found) {
+  CellRobot &b = *body_;
+  const explore::MazeSize size{b.options.geometry.width_cells, b.options.geometry.height_cells};
+  const auto route = explore::shortest_route(size, b.cell, {b.options.start}, b.walls, explore::UnknownSides::closed, b.heading);
+  found = route.has_value();
+  if (!found) return Motion::ok;
+  for (const Heading h : *route) {
+    if (const Motion s = turn_to(h); s != Motion::ok) return s;
+    if (const Motion s = b.drive_ahead(); s != Motion::ok) return s;
+    b.visits.record(b.cell, b.heading);
+  }
+  return turn_to(b.options.start_heading);
+}
+
+const mapping::OccupancyGrid &CommandController::grid() const { return body_->grid; }
+const explore::Visits &CommandController::visits() const { return body_->visits; }
+std::int64_t CommandController::steps() const { return body_->steps; }
+double CommandController::time_s() const { return body_->robot.getTime(); }
+
+EndReason CommandController::ended(Motion s, std::string &message) {
+  const EndReason reason = body_->ended(s);
+  message = body_->message;
+  return reason;
+}
+
+RunResult CommandController::finish(EndReason reason, std::string message) {
+  CellRobot &b = *body_;
+  if (reason != EndReason::stopped) b.flush_step();
+  const int visited = b.visits.count();
+  const double time_s = b.robot.getTime();
+  return RunResult{reason, std::move(message), b.steps, b.moves, visited, time_s, std::move(b.grid), std::move(b.visits),
+                   std::move(b.path), time_s, std::nullopt, SpeedRun{}, std::nullopt};
+}
+
+}  // namespace robot

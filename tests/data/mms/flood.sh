@@ -1,0 +1,3 @@
+#!/bin/sh
+# Writes one endless line.
+yes x | tr -d '\n'

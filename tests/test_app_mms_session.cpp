@@ -1,0 +1,196 @@
+// mms-protocol algorithms driving the simulated robot: the README's conversation in both
+// wall modes, and tiny scripts that misbehave on purpose (hang, crash, garbage, flood, give
+// up): each ends the run with its reason, and no child is left behind.
+
+#include <doctest/doctest.h>
+
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "app/batch.hpp"
+#include "app/mms_batch.hpp"
+#include "app/mms_session.hpp"
+#include "common/error.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScripts = std::string(TEST_DATA_DIR) + "/mms/";
+
+app::MmsRun run_script(const std::string &world, const std::string &script, app::MmsWalls walls,
+                       double time_limit_s = 20.0) {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/" + world;
+  options.output.quiet = true;
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + script};
+  mms.walls = walls;
+  mms.time_limit_s = time_limit_s;
+  std::ostringstream out;
+  return app::run_mms_world(options, mms, out);
+}
+
+// Whether a process runs (a zombie waiting for its new parent to reap it does not).
+bool running(const std::string &pid) {
+  std::ifstream stat("/proc/" + pid + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const std::size_t after_name = line.rfind(')');
+  return after_name != std::string::npos && line.size() > after_name + 2 && line[after_name + 2] != 'Z';
+}
+
+}  // namespace
+
+TEST_CASE("mms: the README's example conversation runs unchanged, answers checked, in both wall modes") {
+  for (const app::MmsWalls walls : {app::MmsWalls::truth, app::MmsWalls::sensed}) {
+    const app::MmsRun run = run_script("classic16x16.txt", "readme_conversation.sh", walls);
+    INFO(run.mms.message);
+    CHECK(run.mms.end == app::MmsEnd::exited);
+    CHECK(run.mms.lines == 18);
+    CHECK(run.mms.crashes == 1);
+    CHECK(run.summary.moves == 1);  // one cell north (ackReset's drive back is no move of the algorithm)
+    CHECK(run.mms.stats.total_distance() == 1);
+    CHECK(run.mms.stats.total_turns() == 1);
+    CHECK(run.mms.marks.walls[0] == 8);  // setWall 0 0 W
+    CHECK(run.mms.marks.texts[16].empty());  // set, then cleared
+  }
+}
+
+TEST_CASE("mms: --until goal ends an algorithm that never exits, once it stands in the centre") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+  options.output.quiet = true;
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "goal_then_loop.sh"};
+  mms.until = app::MmsUntil::goal;
+  std::ostringstream out;
+  const app::MmsRun run = app::run_mms_world(options, mms, out);
+  CHECK(run.mms.end == app::MmsEnd::reached);
+  CHECK(run.summary.reached_goal);
+  CHECK(run.mms.stats.best_run_distance() == 4);
+  CHECK(run.mms.stats.best_run_turns() == 1);
+  CHECK(run.mms.stats.score() == doctest::Approx(1 + 4 + 0.1 * (1 + 4)));
+  CHECK(app::exit_status(run) == 0);
+  CHECK(out.str().find("score: 5.5\n") != std::string::npos);
+}
+
+TEST_CASE("mms: misbehaving algorithms end the run with their reason, their process killed and reaped") {
+  SUBCASE("hangs: the time limit, its sleeping child killed too") {
+    const std::string pid_file = fs::temp_directory_path() / fmt::format("mms_hang_{}.pid", ::getpid());
+    ::setenv("MMS_TEST_PIDFILE", pid_file.c_str(), 1);
+    const auto started = std::chrono::steady_clock::now();
+    const app::MmsRun run = run_script("lab4x4.txt", "hang.sh", app::MmsWalls::truth, 1.0);
+    ::unsetenv("MMS_TEST_PIDFILE");
+    std::string sleeper;
+    std::ifstream(pid_file) >> sleeper;
+    fs::remove(pid_file);
+    REQUIRE_FALSE(sleeper.empty());
+    for (int i = 0; i < 100 && running(sleeper); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    CHECK_FALSE(running(sleeper));
+    CHECK(run.mms.end == app::MmsEnd::time_limit);
+    CHECK(run.mms.message == "no end after 1 s (--time-limit), 1 lines");
+    CHECK(std::chrono::steady_clock::now() - started < std::chrono::seconds(10));
+    REQUIRE(run.mms.exit);
+    CHECK(run.mms.exit->signal == SIGKILL);
+    CHECK(app::exit_status(run) == 1);
+  }
+  SUBCASE("crashes") {
+    const app::MmsRun run = run_script("lab4x4.txt", "crash.sh", app::MmsWalls::sensed);
+    CHECK(run.mms.end == app::MmsEnd::failed);
+    CHECK(run.mms.message == "the algorithm ended (killed by signal 11 (SIGSEGV)) after 1 lines");
+  }
+  SUBCASE("writes garbage: the line and its number") {
+    const app::MmsRun run = run_script("lab4x4.txt", "garbage.sh", app::MmsWalls::truth);
+    CHECK(run.mms.end == app::MmsEnd::protocol_error);
+    CHECK(run.mms.message == "line 2 \"hello, simulator\": unknown command");
+  }
+  SUBCASE("floods one endless line") {
+    const app::MmsRun run = run_script("lab4x4.txt", "flood.sh", app::MmsWalls::truth);
+    CHECK(run.mms.end == app::MmsEnd::protocol_error);
+    CHECK(run.mms.message == "line 1: longer than 4096 bytes (--max-line)");
+  }
+  SUBCASE("exits early") {
+    const app::MmsRun run = run_script("lab4x4.txt", "early_exit.sh", app::MmsWalls::truth);
+    CHECK(run.mms.end == app::MmsEnd::failed);
+    CHECK(run.mms.message == "the algorithm ended (exit status 3) after 1 lines");
+    CHECK_FALSE(run.summary.reached_goal);
+    CHECK(run.mms.stats.score() == 2000.0F);
+  }
+}
+
+TEST_CASE("mms: a command that cannot start is a bad input") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  app::MmsOptions mms;
+  mms.command = {"/no/such/algorithm"};
+  std::ostringstream out;
+  CHECK_THROWS_WITH_AS(app::run_mms_world(options, mms, out), "cannot start '/no/such/algorithm': No such file or directory",
+                       common::InputError);
+}
+
+TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail their rows only") {
+  app::RunOptions options;
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "by_size.sh"};
+  mms.time_limit_s = 2.0;
+  const app::WorldList list = app::expand_worlds({WORLDS_DIR});
+  const std::vector<app::MmsBatchItem> items = app::run_mms_batch(options, mms, list.worlds, 2, {}, nullptr);
+  REQUIRE(items.size() == list.worlds.size());
+  int ok = 0;
+  for (const app::MmsBatchItem &item : items) {
+    INFO(item.world << ": " << item.error);
+    REQUIRE(item.ran);
+    const int width = item.run.summary.width;
+    const app::MmsEnd end = item.run.mms.end;
+    if (width == 4) CHECK(item.error == "failed: the algorithm ended (killed by signal 11 (SIGSEGV)) after 1 lines");
+    if (width == 8) CHECK(end == app::MmsEnd::time_limit);
+    if (width == 16) CHECK(item.error == "protocol error: line 2 \"garbage from a confused mouse\": unknown command");
+    if (width == 32) CHECK(item.error == "failed: the algorithm ended (exit status 3) after 1 lines");
+    if (width == 6) CHECK(item.ok);
+    ok += item.ok ? 1 : 0;
+  }
+  CHECK(ok == 1);
+  CHECK(app::mms_batch_exit_status(items) == 1);
+  const std::string table = app::format_mms_batch_table(items, 0.0, list.skipped);
+  CHECK(table.find("total: 8 worlds, 1 ok, 7 failed; goal reached 1 of 8") != std::string::npos);
+  const std::string csv = app::format_mms_batch_csv(items);
+  CHECK(csv.starts_with(std::string(app::kMmsBatchCsvHeader) + "\n"));
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
+}
+
+TEST_CASE("mms --out: summary.json holds mms's stats and score, marks.txt the algorithm's marks") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("mms_out_{}", ::getpid());
+  fs::remove_all(dir);
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+  options.output.quiet = true;
+  options.output.out_dir = dir.string();
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "goal_then_loop.sh"};
+  mms.until = app::MmsUntil::goal;
+  std::ostringstream out;
+  (void)app::run_mms_world(options, mms, out);
+  std::ifstream file(dir / "summary.json");
+  std::ostringstream text;
+  text << file.rdbuf();
+  const std::string json = text.str();
+  CHECK(json.find("\"mms_end\": \"reached\"") != std::string::npos);
+  CHECK(json.find("\"best_run_distance\": 4") != std::string::npos);
+  CHECK(json.find("\"score\": 5.5") != std::string::npos);
+  CHECK(json.find("\"goal\": \"reached\"") != std::string::npos);
+  CHECK(fs::exists(dir / "marks.txt"));
+  CHECK(fs::exists(dir / "map.png"));
+  fs::remove_all(dir);
+}
