@@ -75,7 +75,4 @@ class ChildProcess {
   ChildExit exit_;
 };
 
-  struct sigaction previous_term_ {};
-};
-
 }  // namespace app

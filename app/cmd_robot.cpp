@@ -12,6 +12,7 @@
 #include "app/cli_options.hpp"
 #include "app/profile_json.hpp"
 #include "app/run.hpp"
+#include "app/shipped_worlds.hpp"
 #include "commands.hpp"
 #include "maze/sim/profile.hpp"
 #include "sensing/setups.hpp"

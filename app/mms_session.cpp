@@ -12,6 +12,7 @@
 #include "app/mms_mouse.hpp"
 #include "app/mms_outputs.hpp"
 #include "app/outputs.hpp"
+#include "app/truth_picture.hpp"
 #include "app/profile_json.hpp"
 #include "app/terminal.hpp"
 #include "common/error.hpp"
@@ -263,7 +264,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
 
   if (!out_dir.empty()) {
     RunFiles files{&result.grid, &model, &result.path, nullptr, {}, &truth, &result.visits,
-                   learned_sides(result, style), nullptr};
+                   learned_sides(result, style), nullptr, landmark_marks(truth)};
     for (const maze::Cell goal : truth.goals()) files.goals.push_back(Cell{goal.x, goal.y});
     write_mms_outputs(out_dir, options, mms, run, files);
   }

@@ -68,8 +68,9 @@ class Node {
  public:
   Node(const Json &json, std::string path) : json_(json), path_(std::move(path)) {}
 
-  // Checks that this is an object with exactly these keys.
-  const Node &object(std::initializer_list<const char *> keys) const {
+  // Checks that this is an object with these keys and no other, each present unless it is one
+  // of `optional` (which must also be among `keys`).
+  const Node &object(std::initializer_list<const char *> keys, std::initializer_list<const char *> optional = {}) const {
     if (!json_.is_object()) fail("must be an object");
     for (const auto &item : json_.items()) {
       if (std::none_of(keys.begin(), keys.end(), [&](const char *k) { return item.key() == k; })) {
@@ -79,7 +80,8 @@ class Node {
       }
     }
     for (const char *k : keys) {
-      if (!json_.contains(k)) Node(json_, key_path(k)).fail("is missing");
+      const bool may_miss = std::any_of(optional.begin(), optional.end(), [&](const char *o) { return std::string_view(o) == k; });
+      if (!may_miss && !json_.contains(k)) Node(json_, key_path(k)).fail("is missing");
     }
     return *this;
   }
@@ -129,12 +131,15 @@ class Node {
   std::string path_;
 };
 
+// resolution_m may be left out (0: ranges not quantised), so a profile saved before lidars
+// had it still loads.
 LidarSpec read_lidar(const Node &n) {
   n.object({"name", "horizontal_resolution", "fov_rad", "min_range_m", "max_range_m", "noise",
-            "frequency_hz", "resolution_m"});
+            "frequency_hz", "resolution_m"},
+           {"resolution_m"});
   return {n.text("name"),         n.whole_number("horizontal_resolution"), n.number("fov_rad"),
           n.number("min_range_m"), n.number("max_range_m"),                n.number("noise"),
-          n.number("frequency_hz"), n.number("resolution_m")};
+          n.number("frequency_hz"), n.has("resolution_m") ? n.number("resolution_m") : 0.0};
 }
 
 LookupRow read_row(const Node &n) {

@@ -60,7 +60,7 @@ TEST_CASE("scan --pose X,Y,YAW prints what the old --pose X Y YAW (radians) prin
   const test_cli::Ran world_after = test_cli::run({"scan", "--pose", "0.5,0.5,90", world, "--noise", "0"});
   CHECK(now.out == old.out);
   CHECK(world_after.out == now.out);
-  CHECK(now.out.starts_with("0 3.141593 0.494000\n"));
+  CHECK(now.out.starts_with("0 3.132866 0.490019\n"));  // the fixed lidar: beam 0 half a beam in, 1 cm rounding
   CHECK_THROWS_WITH_AS(test_cli::run({"scan", world, "--pose", "0.5,0.5,90", "other.txt"}),
                        "scan: unexpected argument 'other.txt'", common::InputError);
 }
