@@ -186,31 +186,42 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<st
   return run_batch(options, plain_jobs(worlds), jobs, progress, interrupted);
 }
 
-std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<BatchJob> &worlds,
-                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
-                                 bool (*interrupted)()) {
-  std::vector<BatchItem> items(worlds.size());
+void for_each_in_pool(std::size_t count, int jobs, const std::function<void(std::size_t)> &run,
+                      const std::function<void(std::size_t)> &skip,
+                      const std::function<void(std::size_t, std::size_t)> &progress, bool (*interrupted)()) {
   std::atomic<std::size_t> next{0};
   std::mutex report;
   std::size_t done = 0;
   const auto work = [&] {
-    for (std::size_t i = next++; i < worlds.size(); i = next++) {
+    for (std::size_t i = next++; i < count; i = next++) {
       if (interrupted != nullptr && interrupted()) {
-        items[i].world = job_name(worlds[i]);
-        items[i].interrupted = true;
-        items[i].error = "not run (interrupted by " + common::interrupt_name() + ")";
+        skip(i);
         continue;
       }
-      items[i] = run_one(options, worlds[i], interrupted);
+      run(i);
       const std::lock_guard lock(report);
       ++done;
-      if (progress) progress(done, worlds.size());
+      if (progress) progress(done, count);
     }
   };
   const auto threads = static_cast<std::size_t>(std::max(1, jobs));
   std::vector<std::jthread> pool;
-  for (std::size_t t = 1; t < std::min(threads, worlds.size()); ++t) pool.emplace_back(work);
+  for (std::size_t t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
   work();
+}
+
+std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<BatchJob> &worlds,
+                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
+                                 bool (*interrupted)()) {
+  std::vector<BatchItem> items(worlds.size());
+  for_each_in_pool(
+      worlds.size(), jobs, [&](std::size_t i) { items[i] = run_one(options, worlds[i], interrupted); },
+      [&](std::size_t i) {
+        items[i].world = job_name(worlds[i]);
+        items[i].interrupted = true;
+        items[i].error = "not run (interrupted by " + common::interrupt_name() + ")";
+      },
+      progress, interrupted);
   return items;
 }
 

@@ -56,6 +56,14 @@ std::string job_name(const BatchJob &job);
 std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, const maze::WorldOverrides &overrides);
 std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds);
 
+// The pool both batches run on: run(i) for every i in [0, count), on `jobs` threads (>= 1),
+// each index once, in any order. Once interrupted (may be null) returns true, skip(i) is
+// called instead for the indices not started yet. progress(done, count) (may be empty) is
+// called from one thread at a time after each run.
+void for_each_in_pool(std::size_t count, int jobs, const std::function<void(std::size_t)> &run,
+                      const std::function<void(std::size_t)> &skip,
+                      const std::function<void(std::size_t, std::size_t)> &progress, bool (*interrupted)());
+
 // Runs options (world and start replaced) on each job with `jobs` threads (>= 1). progress(done,
 // total) is called from one thread at a time after each run. When interrupted (may be null)
 // returns true, the runs in flight stop at their next step and no other starts; those

@@ -1,16 +1,14 @@
 #include "app/mms_batch.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <mutex>
 #include <ostream>
 #include <sstream>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "app/batch.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 
 namespace app {
 namespace {
@@ -75,27 +73,14 @@ std::vector<MmsBatchItem> run_mms_batch(const RunOptions &options, const MmsOpti
                                         const std::function<void(std::size_t, std::size_t)> &progress,
                                         bool (*interrupted)()) {
   std::vector<MmsBatchItem> items(worlds.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex report;
-  std::size_t done = 0;
-  const auto work = [&] {
-    for (std::size_t i = next++; i < worlds.size(); i = next++) {
-      if (interrupted != nullptr && interrupted()) {
+  for_each_in_pool(
+      worlds.size(), jobs, [&](std::size_t i) { items[i] = run_one(options, mms, worlds[i], interrupted); },
+      [&](std::size_t i) {
         items[i].world = worlds[i];
         items[i].interrupted = true;
-        items[i].error = "not run (interrupted)";
-        continue;
-      }
-      items[i] = run_one(options, mms, worlds[i], interrupted);
-      const std::lock_guard lock(report);
-      ++done;
-      if (progress) progress(done, worlds.size());
-    }
-  };
-  const auto threads = static_cast<std::size_t>(std::max(1, jobs));
-  std::vector<std::jthread> pool;
-  for (std::size_t t = 1; t < std::min(threads, worlds.size()); ++t) pool.emplace_back(work);
-  work();
+        items[i].error = "not run (interrupted by " + common::interrupt_name() + ")";
+      },
+      progress, interrupted);
   return items;
 }
 

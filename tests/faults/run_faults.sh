@@ -245,13 +245,13 @@ wait "$pid" || status=$?
 [ "$status" = 143 ] || fail "exit $status, expected 143"
 [ -p "$dir/rows.csv" ] || fail "the FIFO was replaced"
 
-# The one timed case: batch prints nothing until its runs end, so the signal comes a second
-# in, when the 4x4 world has long finished (25 ms) and the 256x256 one (5 s on an idle
-# machine) is running.
+# The one timed case: batch prints nothing until its runs end, so the signal comes two
+# seconds in, when the 4x4 world has long finished (25 ms; a second was once too little on a
+# loaded machine) and the 256x256 one (5 s on an idle machine) is running.
 begin "SIGTERM of a batch keeps its finished rows"
 "$program" batch "$lab" "$scratch/maze256.txt" --jobs 1 --csv "$dir/rows.csv" >"$dir/stdout" 2>"$dir/err" &
 pid=$!
-sleep 1
+sleep 2
 kill -TERM "$pid"
 status=0
 wait "$pid" || status=$?
