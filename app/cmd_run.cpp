@@ -85,6 +85,7 @@ void run_in_terminal(const RunOptions &options, CommandContext &context) {
   if (options.output.step && is_terminal(STDIN_FILENO)) controls.prompt = &std::cerr;
   controls.interrupted = &common::interrupted;
   controls.terminal_fd = STDOUT_FILENO;
+  controls.progress_fd = progress_fd(options.output.quiet, options.output.animate);
   const common::SignalsStopWork stop_signals;
   const RunSummary summary = run_world(options, std::cout, controls);
   context.status = exit_status(summary);
@@ -146,6 +147,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     RunControls controls;
     controls.interrupted = &common::interrupted;
     controls.terminal_fd = STDOUT_FILENO;
+    controls.progress_fd = progress_fd(true, false);  // plan explores quietly
     const common::SignalsStopWork stop_signals;
     const RunSummary summary = run_world(options, std::cout, controls);
     context.status = exit_status(summary);  // 1 when no path is found

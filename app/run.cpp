@@ -273,13 +273,16 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   robot::RunHooks hooks;
   std::optional<robot::ProgressPrinter> printer;
   if (!o.quiet && !o.animate) printer.emplace(out, style, truth.width() * truth.height());
-  if (printer || animator || o.step || state.history) {
+  std::optional<ProgressLine> progress;
+  if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, truth.width() * truth.height());
+  if (printer || animator || o.step || state.history || progress) {
     hooks.on_move = [&](const robot::MoveReport &report) {
       if (state.history) {
         state.history->record(report.step, *report.grid, state.grid_changes);
         state.history->arrived(report.step, report.cell, report.heading);
       }
       if (printer) (*printer)(report);
+      if (progress) progress->update(report.moves, report.visits->count(), report.sim_time_s);
       if (animator) {
         const maze::sim::Pose &pose = simulation.pose();
         animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,

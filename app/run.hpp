@@ -27,6 +27,7 @@ struct RunControls {
   std::ostream *prompt = nullptr;       // --step's prompt, when set
   bool (*interrupted)() = nullptr;      // polled every step: true stops the run (Ctrl-C)
   int terminal_fd = -1;                 // the terminal: --animate's screen size, the map's width (app/terminal.hpp)
+  int progress_fd = -1;                 // where a one-line progress is drawn (app/terminal.hpp), -1: none
 };
 
 // What the planner found, for the summary.
