@@ -249,7 +249,10 @@ render::MapStyle map_style(const OutputOptions &output, const mapping::SensorMod
                            const robot::ControllerOptions &controller, int terminal_fd) {
   render::MapStyle style;
   style.subcell_columns = subcell_columns(output.subcell_columns, terminal_fd, controller.geometry.width_subcells());
-  if (!output.animate) note_if_too_wide(terminal_fd, controller.geometry.width_subcells(), style.subcell_columns);
+  // A run that prints as it goes shows the part around the robot instead (view_for_terminal).
+  if (output.quiet && !output.animate) {
+    note_if_too_wide(terminal_fd, controller.geometry.width_subcells(), style.subcell_columns);
+  }
   style.ascii = output.ascii;
   style.unknown = output.unknown;
   style.initial_log_odds = static_cast<float>(model.prior_log_odds());
@@ -272,7 +275,12 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   }
   robot::RunHooks hooks;
   std::optional<robot::ProgressPrinter> printer;
-  if (!o.quiet && !o.animate) printer.emplace(out, style, truth.width() * truth.height());
+  if (!o.quiet && !o.animate) {
+    const int k = options.subcells;
+    printer.emplace(out, style, truth.width() * truth.height(),
+                    view_for_terminal(controls.terminal_fd, k, truth.height() * k, truth.width() * k,
+                                      style.subcell_columns));
+  }
   std::optional<ProgressLine> progress;
   if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, truth.width() * truth.height());
   if (printer || animator || o.step || state.history || progress) {

@@ -92,16 +92,27 @@ void note_if_too_wide(int fd, int map_subcells_wide, int columns) {
              width, terminal);
 }
 
+std::optional<robot::ProgressPrinter::View> view_for_terminal(int fd, int k, int map_rows, int map_cols,
+                                                              int subcell_columns) {
+  if (fd < 0 || !is_terminal(fd)) return std::nullopt;
+  const TerminalSize screen = terminal_size(fd);
+  // 20 blocks a second at most: what a reader can follow, and far less than the run costs.
+  const robot::ProgressPrinter::View view{std::max(3, screen.rows - (k + 3)),
+                                          std::max(3, screen.columns / std::max(1, subcell_columns)),
+                                          std::chrono::milliseconds(50)};
+  if (view.rows >= map_rows && view.cols >= map_cols) return std::nullopt;
+  fmt::print(stderr,
+             "note: the map is {}x{} sub-cells, the terminal shows {}x{}: up to 20 moves a second print the part around "
+             "the robot; the final map is printed whole\n",
+             map_cols, map_rows, view.cols, view.rows);
+  return view;
+}
+
 ScreenGuard::ScreenGuard(std::ostream &out) : out_(out) {
   out_ << "\x1b[?1049h\x1b[?25l\x1b[H\x1b[2J" << std::flush;
 }
 
 ScreenGuard::~ScreenGuard() { out_ << "\x1b[0m\x1b[?25h\x1b[?1049l" << std::flush; }
-
-int follow(int at, int size, int total) {
-  if (size >= total) return 0;
-  return std::clamp(at - size / 2, 0, total - size);
-}
 
 Animator::Animator(std::ostream &out, const render::MapStyle &style, const AnimationOptions &options)
     : out_(out), style_(style), options_(options), next_frame_(std::chrono::steady_clock::now()) {}
@@ -124,14 +135,12 @@ void Animator::draw(const robot::StepReport &step, double x_m, double y_m) {
   const int rows = std::min(map_rows, std::max(1, options_.screen.rows - 2));
   const int cols = std::min(map_cols, std::max(1, options_.screen.columns / style_.subcell_columns));
   render::MapStyle style = style_;
-  int at_row = map_rows / 2;
-  int at_col = map_cols / 2;
+  mapping::SubCell at{map_cols / 2, map_rows / 2};
   if (const auto s = grid.subcell_at(mapping::Point{x_m, y_m})) {
     style.robot = render::RobotMark{*s, "@"};
-    at_row = map_rows - 1 - s->y;
-    at_col = s->x;
+    at = *s;
   }
-  const render::MapWindow window{follow(at_row, rows, map_rows), rows, follow(at_col, cols, map_cols), cols};
+  const render::MapWindow window = render::window_around(grid, at, rows, cols);
   std::string frame = "\x1b[H";
   frame += render::format_status(static_cast<long>(step.step), step.cell, step.heading,
                                  step.visits->count(), grid.width() * grid.height());

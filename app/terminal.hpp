@@ -11,6 +11,7 @@
 
 #include "render/ascii_map.hpp"
 #include "robot/cell_controller.hpp"
+#include "robot/progress_printer.hpp"
 
 namespace app {
 
@@ -65,6 +66,14 @@ class ProgressLine {
 // is off; -1 (none) otherwise.
 int progress_fd(bool quiet, bool animate);
 
+// The part of the map `run` prints in each block when standard output (fd) is a terminal
+// smaller than the map: the terminal's rows less the status line, the cell's K x K matrix
+// and the blank line, and its columns; none (the whole map) in pipes, files and where the
+// map fits. Such a view prints at most 20 blocks a second. When there is one, says so once on
+// stderr.
+std::optional<robot::ProgressPrinter::View> view_for_terminal(int fd, int k, int map_rows, int map_cols,
+                                                              int subcell_columns);
+
 // While alive: the alternate screen, the cursor hidden. Destroying it (also on an exception
 // or after Ctrl-C) shows the cursor and returns to the normal screen, which is unchanged.
 class ScreenGuard {
@@ -77,10 +86,6 @@ class ScreenGuard {
  private:
   std::ostream &out_;
 };
-
-// The first row or column of a window of `size` that keeps `at` in its middle, within
-// [0, total - size] (0 when the window is as big as the map).
-int follow(int at, int size, int total);
 
 struct AnimationOptions {
   double fps = 30.0;          // frames per wall-clock second, at most

@@ -93,6 +93,16 @@ void put_subcell(std::string &out, const mapping::OccupancyGrid &grid, const exp
 
 }  // namespace
 
+MapWindow window_around(const mapping::OccupancyGrid &grid, mapping::SubCell at, int rows, int cols) {
+  const int map_rows = grid.height() * grid.k();
+  const int map_cols = grid.width() * grid.k();
+  const int row_count = std::clamp(rows, 1, map_rows);
+  const int col_count = std::clamp(cols, 1, map_cols);
+  const int at_row = map_rows - 1 - at.y;  // rows count from the north
+  return {std::clamp(at_row - row_count / 2, 0, map_rows - row_count), row_count,
+          std::clamp(at.x - col_count / 2, 0, map_cols - col_count), col_count};
+}
+
 void render_window(std::string &out, const mapping::OccupancyGrid &grid,
                    const explore::Visits &visits, const MapStyle &style, const MapWindow &w) {
   [[maybe_unused]] const int k = grid.k();

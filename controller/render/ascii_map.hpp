@@ -50,6 +50,10 @@ struct MapWindow {
   int col_count = 0;
 };
 
+// The window of at most rows x cols sub-cells that keeps sub-cell `at` in its middle, moved
+// back inside the map at its edges; the whole map where it fits.
+MapWindow window_around(const mapping::OccupancyGrid &grid, mapping::SubCell at, int rows, int cols);
+
 // Appends the window's rows, each ending in '\n'; the window must lie within the map
 // (H*K rows, W*K columns). Cost: row_count * col_count.
 void render_window(std::string &out, const mapping::OccupancyGrid &grid,

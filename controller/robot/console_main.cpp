@@ -32,7 +32,7 @@ int run(const ControllerOptions &options, std::ostream &out) {
   render::MapStyle style;
   style.initial_log_odds = static_cast<float>(mapping::SensorModel(options.sensor).prior_log_odds());
   style.threshold = options.occupied_threshold;
-  const ProgressPrinter printer(out, style, options.geometry.width_cells * options.geometry.height_cells);
+  ProgressPrinter printer(out, style, options.geometry.width_cells * options.geometry.height_cells);
   const RunResult result = controller.run([&printer](const MoveReport &report) { printer(report); });
   out << render::render_map(result.grid, result.visits, style) << '\n' << summary(result) << std::flush;
   return exit_status(result.reason);
