@@ -49,9 +49,9 @@ TEST_CASE("RunReport: the summary block is the entries with a printed value, in 
 TEST_CASE("RunReport: summary.json holds every entry, null where the run has none") {
   const app::RunReport report(options_for(explore::StrategyKind::dfs), finished_run());
   const nlohmann::ordered_json j = app::report_json(report);
-  for (const auto &[key, value] : app::summary_pairs(report)) {
-    CAPTURE(key);
-    CHECK(j.contains(key));
+  for (const auto &line : app::summary_pairs(report)) {
+    CAPTURE(line.first);
+    CHECK(j.contains(line.first));
   }
   CHECK(j["width"] == 4);
   CHECK(j["threshold"].is_null());
