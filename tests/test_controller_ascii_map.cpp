@@ -1,10 +1,14 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <chrono>
+#include <sstream>
 #include <string>
 
 #include "explore/visits.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "render/ascii_map.hpp"
+#include "robot/progress_printer.hpp"
 
 using mapping::Cell;
 using mapping::Heading;
@@ -152,4 +156,61 @@ TEST_CASE("format_cell_matrix: signed, 2 decimals, aligned; no -0.00") {
 TEST_CASE("format_status") {
   CHECK(render::format_status(412, {2, 3}, Heading::north, 7, 16) ==
         "step 412  cell (2,3)  heading N  visited 7/16");
+}
+
+TEST_CASE("window_around: the part of the map around a sub-cell, moved back inside at the edges") {
+  mapping::GridGeometry g;
+  g.width_cells = 10;
+  g.height_cells = 4;
+  g.subcells = 3;  // 30 x 12 sub-cells
+  const mapping::OccupancyGrid grid(g, 0.0f);
+  // In the middle: centred (row 12 - 1 - 6 = 5 from the north, less half of 4).
+  const render::MapWindow middle = render::window_around(grid, mapping::SubCell{15, 6}, 4, 10);
+  CHECK(middle.first_row == 3);
+  CHECK(middle.row_count == 4);
+  CHECK(middle.first_col == 10);
+  CHECK(middle.col_count == 10);
+  // At the south-west corner: the window's south-west corner is the map's.
+  const render::MapWindow corner = render::window_around(grid, mapping::SubCell{0, 0}, 4, 10);
+  CHECK(corner.first_row == 8);
+  CHECK(corner.first_col == 0);
+  // Larger than the map: the whole map.
+  const render::MapWindow whole = render::window_around(grid, mapping::SubCell{29, 11}, 100, 100);
+  CHECK(whole.first_row == 0);
+  CHECK(whole.row_count == 12);
+  CHECK(whole.first_col == 0);
+  CHECK(whole.col_count == 30);
+}
+
+TEST_CASE("ProgressPrinter: with a view smaller than the map, the part around the robot and which part") {
+  mapping::GridGeometry g;
+  g.width_cells = 10;
+  g.height_cells = 4;
+  g.subcells = 3;  // 30 x 12 sub-cells
+  const mapping::OccupancyGrid grid(g, 0.0f);
+  explore::Visits visits(10, 4);
+  visits.record(Cell{5, 2}, Heading::north);
+  robot::MoveReport report;
+  report.step = 7;
+  report.moves = 1;
+  report.cell = Cell{5, 2};
+  report.grid = &grid;
+  report.visits = &visits;
+  std::ostringstream out;
+  robot::ProgressPrinter printer(out, {}, 40, robot::ProgressPrinter::View{4, 10, std::chrono::milliseconds(0)});
+  printer(report);
+  // The robot's centre sub-cell (16, 7) is row 4 from the north: rows 2-5, columns 11-20.
+  CHECK(out.str() ==
+        "step 7  cell (5,2)  heading N  visited 1/40  view 11,2 of 30x12\n"
+        "          \n"
+        "          \n"
+        "     \u2191    \n"
+        "          \n"
+        "\n");
+  std::ostringstream whole;
+  robot::ProgressPrinter no_view(whole, {}, 40);
+  no_view(report);
+  const std::string text = whole.str();
+  CHECK(text.find("view") == std::string::npos);
+  CHECK(std::count(text.begin(), text.end(), '\n') == 1 + 12 + 1);
 }
