@@ -53,7 +53,11 @@ struct Command {
 class TurnLeg {
  public:
   TurnLeg(const Drive &drive, Heading h, double tolerance_rad)
-      : drive_(drive), h_(h), target_rad_(mapping::yaw_rad(h)), tolerance_rad_(tolerance_rad), last_(drive.yaw_rad()) {}
+      : drive_(drive), name_(1, mapping::to_char(h)), target_rad_(mapping::yaw_rad(h)), tolerance_rad_(tolerance_rad),
+        last_(drive.yaw_rad()) {}
+  TurnLeg(const Drive &drive, double yaw_rad, double tolerance_rad)
+      : drive_(drive), name_(fmt::format("{:.4f} rad", yaw_rad)), target_rad_(yaw_rad), tolerance_rad_(tolerance_rad),
+        last_(drive.yaw_rad()) {}
   bool arrived() const { return std::abs(error()) < tolerance_rad_; }
   Command command() const { return {0.0, drive_.turn_rate_rad_s(error())}; }
   void after_step() const {}
@@ -63,14 +67,13 @@ class TurnLeg {
   }
   double progress() const { return turned_; }
   std::string stalled(int steps) const {
-    return fmt::format("turning to {} made no progress for {} steps (yaw {:.4f} rad)", mapping::to_char(h_), steps,
-                       drive_.yaw_rad());
+    return fmt::format("turning to {} made no progress for {} steps (yaw {:.4f} rad)", name_, steps, drive_.yaw_rad());
   }
 
  private:
   double error() const { return common::wrap_angle_rad(target_rad_ - drive_.yaw_rad()); }
   const Drive &drive_;
-  Heading h_;
+  std::string name_;
   double target_rad_;
   double tolerance_rad_;
   double last_;
@@ -83,18 +86,27 @@ class DriveLeg {
  public:
   DriveLeg(const Drive &drive, Point target, Heading h, double distance_m, double tolerance_m, std::string_view what,
            const std::function<void()> &after)
-      : drive_(drive), target_(target), h_(h), distance_m_(distance_m), tolerance_m_(tolerance_m), what_(what),
-        after_(after) {
+      : drive_(drive), target_(target), name_(1, mapping::to_char(h)), yaw_rad_(mapping::yaw_rad(h)),
+        dir_x_(mapping::dx(h)), dir_y_(mapping::dy(h)), distance_m_(distance_m), tolerance_m_(tolerance_m),
+        what_(what), after_(after) {
     measure();
   }
-  bool arrived() const { return std::abs(remaining_m_) < tolerance_m_; }
+  // Along any yaw (the room controller's legs), stopping early when stop() says so.
+  DriveLeg(const Drive &drive, Point target, double yaw_rad, double distance_m, double tolerance_m,
+           std::string_view what, const std::function<void()> &after, const std::function<bool()> &stop)
+      : drive_(drive), target_(target), name_(fmt::format("{:.4f} rad", yaw_rad)), yaw_rad_(yaw_rad),
+        dir_x_(std::cos(yaw_rad)), dir_y_(std::sin(yaw_rad)), distance_m_(distance_m), tolerance_m_(tolerance_m),
+        what_(what), after_(after), stop_(&stop) {
+    measure();
+  }
+  bool arrived() const { return std::abs(remaining_m_) < tolerance_m_ || (stop_ != nullptr && *stop_ && (*stop_)()); }
   Command command() {
     double v = drive_.speed_m_s(remaining_m_);
     if (ramped_) {
       v = drive_.ramped_speed_m_s(remaining_m_, last_v_m_s_);
       last_v_m_s_ = v;
     }
-    return {v, drive_.turn_rate_rad_s(drive_.heading_error_rad(h_, offset_m_))};
+    return {v, drive_.turn_rate_rad_s(drive_.heading_error_rad(yaw_rad_, offset_m_))};
   }
   void after_step() const {
     if (after_) after_();
@@ -109,25 +121,27 @@ class DriveLeg {
     }
     const double ex = target_.x_m - p->x_m;
     const double ey = target_.y_m - p->y_m;
-    const double dir_x = mapping::dx(h_);
-    const double dir_y = mapping::dy(h_);
-    remaining_m_ = ex * dir_x + ey * dir_y;
-    offset_m_ = -(ex * -dir_y + ey * dir_x);
+    remaining_m_ = ex * dir_x_ + ey * dir_y_;
+    offset_m_ = -(ex * -dir_y_ + ey * dir_x_);
   }
   double progress() const { return remaining_m_; }
   std::string stalled(int steps) const {
-    return fmt::format("driving {} to {} made no progress for {} steps ({:.3f} m to go)", mapping::to_char(h_), what_,
-                       steps, remaining_m_);
+    return fmt::format("driving {} to {} made no progress for {} steps ({:.3f} m to go)", name_, what_, steps,
+                       remaining_m_);
   }
 
  private:
   const Drive &drive_;
   Point target_;
-  Heading h_;
+  std::string name_;
+  double yaw_rad_;
+  double dir_x_;
+  double dir_y_;
   double distance_m_;
   double tolerance_m_;
   std::string_view what_;
   const std::function<void()> &after_;
+  const std::function<bool()> *stop_ = nullptr;
   double remaining_m_ = 0.0;
   double offset_m_ = 0.0;
   bool ramped_ = false;
@@ -265,6 +279,21 @@ Motion Drive::drive_ramped(Point target, Heading h, double distance_m, std::stri
   return come_to_rest();
 }
 
+Motion Drive::turn_to_yaw(double yaw_rad) {
+  moved_ = false;
+  TurnLeg leg(*this, yaw_rad, options_.yaw_tolerance_rad);
+  if (const Motion s = follow(leg, Action::turn); s != Motion::ok) return s;
+  return moved_ ? come_to_rest() : Motion::ok;
+}
+
+Motion Drive::drive_along(Point target, double yaw_rad, double distance_m, std::string_view what,
+                          const std::function<void()> &after_step, const std::function<bool()> &stop) {
+  start_odometry();
+  DriveLeg leg(*this, target, yaw_rad, distance_m, options_.position_tolerance_m, what, after_step, stop);
+  if (const Motion s = follow(leg, Action::drive); s != Motion::ok) return s;
+  return come_to_rest();
+}
+
 Motion Drive::creep(Heading h, Point centre, double limit_m, std::string_view what, const std::function<bool()> &stop) {
   start_odometry();
   CreepLeg leg(*this, h, centre, limit_m, options_.creep_speed_m_s, what, stop);
@@ -294,7 +323,11 @@ double Drive::turn_rate_rad_s(double heading_error_rad) const {
 }
 
 double Drive::heading_error_rad(Heading h, double offset_m) const {
-  return common::wrap_angle_rad(mapping::yaw_rad(h) - yaw_rad()) - options_.lateral_gain * offset_m;
+  return heading_error_rad(mapping::yaw_rad(h), offset_m);
+}
+
+double Drive::heading_error_rad(double target_yaw_rad, double offset_m) const {
+  return common::wrap_angle_rad(target_yaw_rad - yaw_rad()) - options_.lateral_gain * offset_m;
 }
 
 void Drive::start_odometry() { start_angles_ = chassis_.wheel_angles(); }

@@ -144,6 +144,13 @@ class Drive {
   // ramp_acceleration_m_s2 each second to ramp_top_speed_m_s, and down so as to stop at the
   // target (v <= sqrt(2 a d)). Needs the ramp options set.
   Motion drive_ramped(mapping::Point target, mapping::Heading h, double distance_m, std::string_view what);
+  // Continuous space (the room controller): turns in place to a yaw (rad, the conventions),
+  // coming to rest when it moved; drives along yaw_rad to `target` (backwards when it is
+  // behind), distance_m away by the encoders without a GPS, then comes to rest. The drive
+  // also ends, at rest, when stop() (asked before every step, when set) says so.
+  Motion turn_to_yaw(double yaw_rad);
+  Motion drive_along(mapping::Point target, double yaw_rad, double distance_m, std::string_view what,
+                     const std::function<void()> &after_step, const std::function<bool()> &stop);
   // Creeps forward along heading h from `centre` until stop() (asked before every step) or
   // limit_m along; stays moving (the caller comes to rest). `what` names it when it stalls.
   Motion creep(mapping::Heading h, mapping::Point centre, double limit_m, std::string_view what,
@@ -163,6 +170,7 @@ class Drive {
   double turn_rate_rad_s(double heading_error_rad) const;
   // The heading error driving along heading h with `offset_m` to the left of the line.
   double heading_error_rad(mapping::Heading h, double offset_m) const;
+  double heading_error_rad(double target_yaw_rad, double offset_m) const;
 
  private:
   template <typename Leg>

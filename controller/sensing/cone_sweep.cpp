@@ -24,9 +24,11 @@ ConeSweepStep step_at(const ConeSweepInput &in, double r) {
 }  // namespace
 
 ConeSweep cone_sweep(const ConeSweepInput &in) {
+  return cone_sweep_between(in, in.d_cells * (1 - in.eps), in.d_cells * (1 + in.eps));
+}
+
+ConeSweep cone_sweep_between(const ConeSweepInput &in, double start, double end) {
   ConeSweep sweep;
-  const double start = in.d_cells * (1 - in.eps);
-  const double end = in.d_cells * (1 + in.eps);
   for (int j = 0; start + j * kConeSweepInc <= end + kRounding; ++j) {
     ConeSweepStep s = step_at(in, start + j * kConeSweepInc);
     for (int k = 0; -in.sigma_rad / 2 + k * s.omega_rad <= in.sigma_rad / 2 + kRounding; ++k) {

@@ -56,5 +56,8 @@ struct ConeSweep {
 
 // The sweep of a valid input (d, sigma > 0, eps in [0, 1), all finite; checked by the caller).
 ConeSweep cone_sweep(const ConeSweepInput &input);
+// The same sweep over the radii r_j = start + j INC while r_j <= end (cells), whatever d and
+// eps say: the room map's free cone (0 ... d (1 - eps)) uses it. At r = 0 one point, the sensor.
+ConeSweep cone_sweep_between(const ConeSweepInput &input, double start_cells, double end_cells);
 
 }  // namespace sensing

@@ -33,7 +33,7 @@ void require_finite(double value, const char *what) {
   require(std::isfinite(value), fmt::format("{} must be a finite number (got {})", what, value));
 }
 
-enum class Part { outside, clear, contact };
+using Part = PieVerdict;
 
 // Where point (px, py) lies with respect to one sensor's slices.
 Part part_of(const PieDemoSlice &s, double beta_rad, double px, double py) {
@@ -48,10 +48,9 @@ Part part_of(const PieDemoSlice &s, double beta_rad, double px, double py) {
   return distance <= s.clear_m ? Part::clear : Part::contact;
 }
 
-// The verdict of one sensor on the cell [i r, (i+1) r] x [j r, (j+1) r].
-Part verdict(const PieDemoSlice &s, double beta_rad, double r, int i, int j) {
-  const double x0 = i * r;
-  const double y0 = j * r;
+}  // namespace
+
+PieVerdict pie_demo_verdict(const PieDemoSlice &s, double beta_rad, double x0, double y0, double r) {
   const double points[5][2] = {{x0, y0}, {x0 + r, y0}, {x0, y0 + r}, {x0 + r, y0 + r}, {x0 + r / 2, y0 + r / 2}};
   bool clear = false;
   for (const auto &p : points) {
@@ -60,6 +59,13 @@ Part verdict(const PieDemoSlice &s, double beta_rad, double r, int i, int j) {
     clear = clear || part == Part::clear;
   }
   return clear ? Part::clear : Part::outside;
+}
+
+namespace {
+
+// The verdict of one sensor on the cell [i r, (i+1) r] x [j r, (j+1) r].
+Part verdict(const PieDemoSlice &s, double beta_rad, double r, int i, int j) {
+  return pie_demo_verdict(s, beta_rad, i * r, j * r, r);
 }
 
 }  // namespace

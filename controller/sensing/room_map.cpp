@@ -1,0 +1,231 @@
+// The room map and its marks (sensing/room_map.hpp).
+
+#include "sensing/room_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+#include "mapping/log_odds.hpp"
+#include "mapping/traversal.hpp"
+#include "sensing/cone_sweep.hpp"
+#include "sensing/pie_demo.hpp"
+
+namespace sensing {
+namespace {
+
+constexpr double kSquareTolerance = 1e-9;
+
+void require(bool ok, const std::string &message) {
+  if (!ok) throw common::InputError(message);
+}
+
+void require_boundary(const RoomBoundary &b) {
+  for (const double v : {b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m}) {
+    require(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
+  }
+  require(b.x_start_m < b.x_end_m, fmt::format("--boundary: XS must be less than XE (got {} and {})", b.x_start_m, b.x_end_m));
+  require(b.y_start_m < b.y_end_m, fmt::format("--boundary: YS must be less than YE (got {} and {})", b.y_start_m, b.y_end_m));
+}
+
+}  // namespace
+
+RoomGridSpec room_grid_from_cells(const RoomBoundary &b, int cells_x, int cells_y) {
+  require_boundary(b);
+  require(cells_x >= 1 && cells_y >= 1 && cells_x <= kMaxRoomCellsPerSide && cells_y <= kMaxRoomCellsPerSide,
+          fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxRoomCellsPerSide, cells_x, cells_y));
+  const double w = b.width_m() / cells_x;
+  const double h = b.height_m() / cells_y;
+  require(std::abs(w - h) <= kSquareTolerance * std::max(w, h),
+          fmt::format("--cells {},{} over a {:g} x {:g} m boundary makes cells {:g} m wide and {:g} m high: the room "
+                      "map's cells are square (try --cells {},{} or --resolution {:g})",
+                      cells_x, cells_y, b.width_m(), b.height_m(), w, h, cells_x,
+                      std::max(1, static_cast<int>(std::lround(b.height_m() / w))), w));
+  RoomGridSpec s{b, cells_x, cells_y, w};
+  return s;
+}
+
+RoomGridSpec room_grid_from_resolution(const RoomBoundary &b, double cell_m) {
+  require_boundary(b);
+  require(std::isfinite(cell_m) && cell_m > 0.0, fmt::format("--resolution must be > 0 m (got {})", cell_m));
+  const double nx = std::ceil(b.width_m() / cell_m - 1e-9);
+  const double ny = std::ceil(b.height_m() / cell_m - 1e-9);
+  require(nx <= kMaxRoomCellsPerSide && ny <= kMaxRoomCellsPerSide,
+          fmt::format("--resolution {:g} m over a {:g} x {:g} m boundary makes {:g} x {:g} cells; at most {} a side",
+                      cell_m, b.width_m(), b.height_m(), nx, ny, kMaxRoomCellsPerSide));
+  RoomGridSpec s;
+  s.cells_x = std::max(1, static_cast<int>(nx));
+  s.cells_y = std::max(1, static_cast<int>(ny));
+  s.cell_m = cell_m;
+  s.boundary = {b.x_start_m, b.x_start_m + s.cells_x * cell_m, b.y_start_m, b.y_start_m + s.cells_y * cell_m};
+  return s;
+}
+
+std::uint64_t room_map_bytes(const RoomGridSpec &s) {
+  // a double per cell, a level byte and a marked index for a scan's marks
+  const auto cells = static_cast<std::uint64_t>(s.cells_x) * static_cast<std::uint64_t>(s.cells_y);
+  return cells * (sizeof(double) + 1 + sizeof(std::size_t));
+}
+
+void validate(const RoomGridSpec &s, std::uint64_t max_bytes) {
+  require_boundary(s.boundary);
+  require(s.cells_x >= 1 && s.cells_y >= 1 && s.cells_x <= kMaxRoomCellsPerSide && s.cells_y <= kMaxRoomCellsPerSide,
+          fmt::format("the room map must have 1 to {} cells a side (got {} x {})", kMaxRoomCellsPerSide, s.cells_x,
+                      s.cells_y));
+  require(std::isfinite(s.cell_m) && s.cell_m > 0.0, fmt::format("the room map's cells must be > 0 m (got {})", s.cell_m));
+  const std::uint64_t bytes = room_map_bytes(s);
+  require(bytes <= max_bytes, fmt::format("a {} x {} room map would take {:.1f} MiB, more than {:.0f} MiB: use a coarser "
+                                          "--resolution or fewer --cells",
+                                          s.cells_x, s.cells_y, static_cast<double>(bytes) / 1048576.0,
+                                          static_cast<double>(max_bytes) / 1048576.0));
+}
+
+RoomMap::RoomMap(const RoomGridSpec &spec, const mapping::SensorModel &model) : spec_(spec), model_(model) {
+  validate(spec_);
+  geometry_.width_cells = spec_.cells_x;
+  geometry_.height_cells = spec_.cells_y;
+  geometry_.subcells = 1;
+  geometry_.cell_size_m = spec_.cell_m;
+  geometry_.origin = {spec_.boundary.x_start_m, spec_.boundary.y_start_m};
+  grid_.cells_x = spec_.cells_x;
+  grid_.cells_y = spec_.cells_y;
+  grid_.log_odds.assign(static_cast<std::size_t>(spec_.cells_x) * static_cast<std::size_t>(spec_.cells_y),
+                        model_.prior_log_odds());
+}
+
+std::optional<RoomCell> RoomMap::cell_at(mapping::Point p) const {
+  const double fx = std::floor((p.x_m - spec_.boundary.x_start_m) / spec_.cell_m);
+  const double fy = std::floor((p.y_m - spec_.boundary.y_start_m) / spec_.cell_m);
+  if (!(fx >= 0 && fy >= 0 && fx < spec_.cells_x && fy < spec_.cells_y)) return std::nullopt;
+  return RoomCell{static_cast<int>(fx), static_cast<int>(fy)};
+}
+
+mapping::Point RoomMap::centre_of(RoomCell c) const {
+  return {spec_.boundary.x_start_m + (c.i + 0.5) * spec_.cell_m, spec_.boundary.y_start_m + (c.j + 0.5) * spec_.cell_m};
+}
+
+LogMapOptions RoomMap::log_options() const {
+  LogMapOptions o;
+  o.cells_x = spec_.cells_x;
+  o.cells_y = spec_.cells_y;
+  o.x_start_m = spec_.boundary.x_start_m;
+  o.x_end_m = spec_.boundary.x_end_m;
+  o.y_start_m = spec_.boundary.y_start_m;
+  o.y_end_m = spec_.boundary.y_end_m;
+  o.prior = model_.options().prior;
+  o.base = model_.options().base;
+  return o;
+}
+
+void RoomMarks::mark(const RoomMap &map, RoomCell c, int level) {
+  if (!map.contains(c)) return;
+  if (level_.size() != map.size()) level_.assign(map.size(), kUnmarked);
+  const std::size_t flat = map.index(c);
+  const auto l = static_cast<std::uint8_t>(level);
+  if (level_[flat] == kUnmarked) marked_.push_back(flat);
+  level_[flat] = std::min(level_[flat], l);
+}
+
+void RoomMarks::mark(const RoomMap &map, mapping::Point p, int level) {
+  if (const auto c = map.cell_at(p)) mark(map, *c, level);
+}
+
+int RoomMarks::level_of(const RoomMap &map, RoomCell c) const {
+  if (!map.contains(c) || level_.size() != map.size()) return -1;
+  const std::uint8_t l = level_[map.index(c)];
+  return l == kUnmarked ? -1 : l;
+}
+
+std::size_t RoomMarks::apply(RoomMap &map) {
+  const mapping::SensorModel &model = map.model();
+  const double increments[2] = {model.increment_for(level_p_[0]), model.increment_for(level_p_[1])};
+  std::vector<double> &values = map.log_grid().log_odds;
+  for (const std::size_t flat : marked_) {
+    values[flat] = mapping::apply(values[flat], increments[level_[flat]], model.options().clamp);
+    level_[flat] = kUnmarked;
+  }
+  const std::size_t count = marked_.size();
+  marked_.clear();
+  return count;
+}
+
+void mark_room_lidar(const RoomMap &map, const LidarScan &scan, RoomMarks &marks) {
+  for (int n = 0; n < scan.beam_count(); ++n) {
+    const ReadingKind kind = scan.kind(n);
+    if (kind == ReadingKind::invalid) continue;
+    const bool hit = kind == ReadingKind::hit;
+    const double reach = hit ? scan.ranges[static_cast<std::size_t>(n)] : scan.max_range_m;
+    const double a = scan.beam_world_angle_rad(n);
+    const double dx = std::cos(a);
+    const double dy = std::sin(a);
+    mapping::trace_ray(map.geometry(), scan.origin, dx, dy, [&](mapping::SubCell s, double exit_m) {
+      if (exit_m >= reach) return false;
+      marks.mark(map, RoomCell{s.x, s.y}, kRoomFree);
+      return true;
+    });
+    const mapping::Point end{scan.origin.x_m + reach * dx, scan.origin.y_m + reach * dy};
+    marks.mark(map, end, hit ? kRoomOccupied : kRoomFree);
+  }
+}
+
+void mark_room_pie(const RoomMap &map, const RangeModelOptions &options, std::span<const RangeReading> readings,
+                   RoomMarks &marks) {
+  const double r = map.cell_m();
+  const double x0 = map.spec().boundary.x_start_m;
+  const double y0 = map.spec().boundary.y_start_m;
+  for (const RangeReading &reading : readings) {
+    if (!(reading.range_m >= 0.0)) continue;  // NaN: no reading
+    PieDemoSlice s;
+    s.x_m = reading.origin.x_m;
+    s.y_m = reading.origin.y_m;
+    s.heading_deg = reading.angle_rad * 180.0 / 3.14159265358979323846;
+    s.reading_m = reading.range_m;
+    s.contact = reading.range_m < reading.max_range_m;
+    s.clear_m = std::min(reading.range_m, reading.max_range_m);
+    s.contact_m = s.contact ? s.clear_m + options.pie_contact_m : s.clear_m;
+    const double reach = s.contact_m;
+    const int i0 = std::max(0, static_cast<int>(std::floor((s.x_m - reach - x0) / r)) - 1);
+    const int i1 = std::min(map.cells_x() - 1, static_cast<int>(std::floor((s.x_m + reach - x0) / r)) + 1);
+    const int j0 = std::max(0, static_cast<int>(std::floor((s.y_m - reach - y0) / r)) - 1);
+    const int j1 = std::min(map.cells_y() - 1, static_cast<int>(std::floor((s.y_m + reach - y0) / r)) + 1);
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const PieVerdict v = pie_demo_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
+        if (v == PieVerdict::outside) continue;
+        marks.mark(map, RoomCell{i, j}, v == PieVerdict::contact ? kRoomOccupied : kRoomFree);
+      }
+    }
+  }
+}
+
+void mark_room_cone(const RoomMap &map, std::span<const RangeReading> readings, RoomMarks &marks) {
+  const double r = map.cell_m();
+  for (const RangeReading &reading : readings) {
+    if (!(reading.range_m >= 0.0)) continue;
+    ConeSweepInput in;
+    in.x_cells = (reading.origin.x_m - map.spec().boundary.x_start_m) / r;
+    in.y_cells = (reading.origin.y_m - map.spec().boundary.y_start_m) / r;
+    in.phi_rad = reading.angle_rad;
+    in.sigma_rad = reading.aperture_rad;
+    in.eps = reading.range_error;
+    const bool nothing_seen = reading.range_m >= reading.max_range_m * (1.0 - 2.0 * reading.range_error);
+    if (nothing_seen) {
+      if (reading.echo_can_be_lost) continue;
+      const double reach_cells = reading.max_range_m * kConeNoReturnReach / r;
+      in.d_cells = reach_cells;
+      for (const auto &[i, j] : cone_sweep_between(in, 0.0, reach_cells).cells) marks.mark(map, RoomCell{i, j}, kRoomFree);
+      continue;
+    }
+    in.d_cells = reading.range_m / r;
+    const double inner = in.d_cells * (1.0 - in.eps);
+    for (const auto &[i, j] : cone_sweep(in).cells) marks.mark(map, RoomCell{i, j}, kRoomOccupied);
+    for (const auto &[i, j] : cone_sweep_between(in, 0.0, inner - kConeSweepInc).cells) {
+      marks.mark(map, RoomCell{i, j}, kRoomFree);
+    }
+  }
+}
+
+}  // namespace sensing
