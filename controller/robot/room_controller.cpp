@@ -1,0 +1,424 @@
+#include "robot/room_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numbers>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include <webots/Robot.hpp>
+
+#include "common/angles.hpp"
+#include "common/error.hpp"
+#include "common/random.hpp"
+#include "plan/room_wavefront.hpp"
+
+namespace robot {
+namespace {
+
+using mapping::Point;
+using sensing::RoomCell;
+
+constexpr int kMaxRoomDilate = 8;
+constexpr int kMaxFrontierAttempts = 3;  // a frontier cell aimed at this often and still unobserved is set aside
+
+int time_step_of(webots::Robot &robot, const MotionOptions &m) {
+  return m.time_step_ms > 0 ? m.time_step_ms : static_cast<int>(std::lround(robot.getBasicTimeStep()));
+}
+
+void require(bool ok, const std::string &message) {
+  if (!ok) throw common::InputError(message);
+}
+
+}  // namespace
+
+std::string_view to_string(RoomStrategy s) {
+  switch (s) {
+    case RoomStrategy::waypoints: return "waypoints";
+    case RoomStrategy::wavefront: return "wavefront";
+    case RoomStrategy::frontier: return "frontier";
+    case RoomStrategy::wander: return "wander";
+  }
+  return "?";
+}
+
+RoomStrategy parse_room_strategy(std::string_view name) {
+  for (const RoomStrategy s : {RoomStrategy::waypoints, RoomStrategy::wavefront, RoomStrategy::frontier,
+                               RoomStrategy::wander}) {
+    if (to_string(s) == name) return s;
+  }
+  throw common::InputError(
+      fmt::format("--strategy must be waypoints, wavefront, frontier or wander in a room (got '{}')", name));
+}
+
+std::string_view to_string(RoomEnding e) {
+  switch (e) {
+    case RoomEnding::done: return "done";
+    case RoomEnding::goal_reached: return "goal reached";
+    case RoomEnding::arrived: return "arrived";
+    case RoomEnding::blocked: return "blocked";
+    case RoomEnding::unreachable: return "unreachable";
+    case RoomEnding::incomplete: return "incomplete";
+    case RoomEnding::time_up: return "time up";
+    case RoomEnding::no_progress: return "no progress";
+    case RoomEnding::max_steps: return "max steps";
+    case RoomEnding::simulation_ended: return "simulation ended";
+    case RoomEnding::stopped: return "stopped";
+  }
+  return "?";
+}
+
+void validate(const RoomOptions &o) {
+  require(o.strategy != RoomStrategy::waypoints || !o.waypoints.empty(),
+          "--strategy waypoints needs --waypoints X,Y;X,Y...");
+  require(o.strategy != RoomStrategy::wavefront || o.goal.has_value(), "--strategy wavefront needs --goal X,Y");
+  require(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time S");
+  require(o.dilate >= 0 && o.dilate <= kMaxRoomDilate,
+          fmt::format("--dilate must be 0 to {} cells (got {})", kMaxRoomDilate, o.dilate));
+  require(o.free_below_p > 0.0 && o.free_below_p <= 1.0, "the free threshold must be in (0, 1]");
+  require(std::isfinite(o.time_limit_s) && o.time_limit_s >= 0.0,
+          fmt::format("--time must be >= 0 s (got {})", o.time_limit_s));
+  for (const Point &p : o.waypoints) {
+    require(std::isfinite(p.x_m) && std::isfinite(p.y_m), "--waypoints must be finite numbers");
+  }
+  require(o.stop_distance_m > 0.0 && o.back_off_m > 0.0 && o.view_m > 0.0, "room distances must be > 0 m");
+}
+
+RoomController::RoomController(webots::Robot &robot, const ControllerOptions &options, const RoomOptions &room,
+                               sensing::RoomMap &map, RoomStepHook on_step)
+    : robot_(robot),
+      options_(options),
+      room_(room),
+      map_(map),
+      on_step_(std::move(on_step)),
+      time_step_ms_(time_step_of(robot, options.motion)),
+      chassis_(robot, options.devices),
+      drive_(chassis_, options.motion, time_step_ms_, [this](Action a) { return step(a); }),
+      senses_(robot, options, map),
+      position_(room.start) {
+  chassis_.enable(time_step_ms_);
+  senses_.enable(time_step_ms_);
+}
+
+double RoomController::time_s() const { return robot_.getTime(); }
+
+void RoomController::update_pose() {
+  const WheelAngles now = chassis_.wheel_angles();
+  if (const std::optional<Point> gps = chassis_.gps()) {
+    position_ = *gps;
+  } else {
+    const double d = options_.motion.wheel_radius_m *
+                     ((now.left_rad - last_wheels_.left_rad) + (now.right_rad - last_wheels_.right_rad)) / 2.0;
+    position_.x_m += d * std::cos(drive_.yaw_rad());
+    position_.y_m += d * std::sin(drive_.yaw_rad());
+  }
+  last_wheels_ = now;
+}
+
+Motion RoomController::step(Action) {
+  if (steps_ >= options_.motion.max_steps) return Motion::max_steps;
+  if (room_.time_limit_s > 0.0 && robot_.getTime() >= room_.time_limit_s) {
+    time_up_ = true;
+    return Motion::stopped;
+  }
+  if (robot_.step(time_step_ms_) == -1) return Motion::ended;
+  ++steps_;
+  update_pose();
+  senses_.scan(position_, drive_.yaw_rad(), robot_.getTime());
+  trajectory_.push_back(position_);
+  if (on_step_) on_step_(*this);
+  return Motion::ok;
+}
+
+bool RoomController::blocked_ahead() const {
+  return senses_.bumped() || senses_.clearance_ahead_m() < room_.stop_distance_m;
+}
+
+RoomCell RoomController::robot_cell() const {
+  const auto c = map_.cell_at(position_);
+  if (c) return *c;
+  const auto clampi = [](double v, int n) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
+  const auto &b = map_.spec().boundary;
+  return {clampi((position_.x_m - b.x_start_m) / map_.cell_m(), map_.cells_x()),
+          clampi((position_.y_m - b.y_start_m) / map_.cell_m(), map_.cells_y())};
+}
+
+Motion RoomController::go_to(Point p, bool stop_early, bool *stopped) {
+  *stopped = false;
+  const double ex = p.x_m - position_.x_m;
+  const double ey = p.y_m - position_.y_m;
+  const double distance = std::hypot(ex, ey);
+  if (distance < options_.motion.position_tolerance_m) return Motion::ok;
+  const double yaw = std::atan2(ey, ex);
+  if (const Motion m = drive_.turn_to_yaw(yaw); m != Motion::ok) return m;
+  const std::function<void()> none;
+  bool hit = false;
+  const std::function<bool()> stop = [&] {
+    if (!stop_early) return false;
+    hit = blocked_ahead();
+    return hit;
+  };
+  const Motion m = drive_.drive_along(p, yaw, distance, "the point", none, stop);
+  *stopped = hit;
+  return m;
+}
+
+Motion RoomController::look_around() {
+  const double start = drive_.yaw_rad();
+  for (int quarter = 1; quarter <= 4; ++quarter) {
+    if (const Motion m = drive_.turn_to_yaw(common::wrap_angle_rad(start + quarter * std::numbers::pi / 2));
+        m != Motion::ok) {
+      return m;
+    }
+  }
+  return Motion::ok;
+}
+
+std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
+  std::vector<bool> out(map_.size(), false);
+  for (std::size_t n = 0; n < map_.size(); ++n) {
+    out[n] = map_.probability_at(n) >= room_.free_below_p - 1e-9;
+  }
+  const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
+  std::vector<bool> grown = plan::dilated(g, out, room_.dilate);
+  if (unknown_blocked) {
+    for (std::size_t n = 0; n < map_.size(); ++n) grown[n] = grown[n] || map_.unobserved_at(n);
+  }
+  grown[map_.index(robot_cell())] = false;  // where the robot stands
+  return grown;
+}
+
+RoomEnding RoomController::finish(Motion m) {
+  switch (m) {
+    case Motion::ok: return RoomEnding::done;
+    case Motion::max_steps: message_ = "the step limit was reached"; return RoomEnding::max_steps;
+    case Motion::no_progress: message_ = drive_.failure(); return RoomEnding::no_progress;
+    case Motion::ended: message_ = "the simulation ended"; return RoomEnding::simulation_ended;
+    case Motion::stopped:
+      if (time_up_) {
+        message_ = fmt::format("the time limit of {:g} s was reached", room_.time_limit_s);
+        return RoomEnding::time_up;
+      }
+      message_ = "stopped";
+      return RoomEnding::stopped;
+  }
+  return RoomEnding::stopped;
+}
+
+RoomEnding RoomController::run() {
+  update_pose();
+  if (const Motion m = step(Action::start); m != Motion::ok) return finish(m);
+  switch (room_.strategy) {
+    case RoomStrategy::waypoints: return run_waypoints();
+    case RoomStrategy::wavefront: return run_wavefront();
+    case RoomStrategy::frontier: return run_frontier();
+    case RoomStrategy::wander: return run_wander();
+  }
+  return RoomEnding::stopped;
+}
+
+RoomEnding RoomController::run_waypoints() {
+  for (std::size_t n = 0; n < room_.waypoints.size(); ++n) {
+    const Point p = room_.waypoints[n];
+    bool stopped = false;
+    if (const Motion m = go_to(p, true, &stopped); m != Motion::ok) return finish(m);
+    if (stopped) {
+      message_ = fmt::format("leg {} to ({:g}, {:g}) stopped at ({:.2f}, {:.2f}): {}", n + 1, p.x_m, p.y_m,
+                             position_.x_m, position_.y_m,
+                             senses_.bumped() ? std::string("a bumper is pressed")
+                                              : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
+      return RoomEnding::blocked;
+    }
+  }
+  message_ = fmt::format("reached all {} waypoints", room_.waypoints.size());
+  return RoomEnding::arrived;
+}
+
+RoomEnding RoomController::run_wavefront() {
+  const auto goal_cell = map_.cell_at(*room_.goal);
+  if (!goal_cell) {
+    message_ = fmt::format("the goal ({:g}, {:g}) is outside the map", room_.goal->x_m, room_.goal->y_m);
+    return RoomEnding::unreachable;
+  }
+  const std::size_t goal = map_.index(*goal_cell);
+  const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
+  for (;;) {
+    const std::size_t here = map_.index(robot_cell());
+    if (here == goal) {
+      bool stopped = false;
+      if (const Motion m = go_to(*room_.goal, false, &stopped); m != Motion::ok) return finish(m);
+      message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", room_.goal->x_m, room_.goal->y_m, steps_);
+      return RoomEnding::goal_reached;
+    }
+    wave_ = plan::wave_from(g, obstacles(false), goal);
+    const auto path = plan::descend(g, wave_, here);
+    if (!path) {
+      path_.clear();
+      message_ = fmt::format("no path to the goal ({:g}, {:g}) on the map with obstacles grown by {} cell{}",
+                             room_.goal->x_m, room_.goal->y_m, room_.dilate, room_.dilate == 1 ? "" : "s");
+      return RoomEnding::unreachable;
+    }
+    path_ = *path;
+    // The closest point of the path ahead: its next cell.
+    bool stopped = false;
+    if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[1])), false, &stopped); m != Motion::ok) {
+      return finish(m);
+    }
+  }
+}
+
+RoomEnding RoomController::run_frontier() {
+  const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
+  std::vector<bool> set_aside(map_.size(), false);
+  std::vector<std::uint8_t> attempts(map_.size(), 0);  // visits aimed at each frontier cell
+  const int view_cells = std::max(1, static_cast<int>(std::floor(room_.view_m / map_.cell_m())));
+  if (const Motion m = look_around(); m != Motion::ok) return finish(m);
+  for (;;) {
+    // Frontier cells: unobserved, beside a cell seen free.
+    std::vector<bool> frontier(map_.size(), false);
+    std::size_t open = 0;
+    std::size_t aside = 0;
+    for (std::size_t n = 0; n < map_.size(); ++n) {
+      if (!map_.unobserved_at(n)) continue;
+      const RoomCell c = map_.cell_of_index(n);
+      bool beside_free = false;
+      for (const auto &d : {std::pair{0, 1}, std::pair{1, 0}, std::pair{0, -1}, std::pair{-1, 0}}) {
+        const RoomCell nb{c.i + d.first, c.j + d.second};
+        if (!map_.contains(nb)) continue;
+        const std::size_t k = map_.index(nb);
+        beside_free = beside_free || (!map_.unobserved_at(k) && map_.probability_at(k) < 0.5);
+      }
+      if (!beside_free) continue;
+      if (set_aside[n]) {
+        ++aside;
+      } else {
+        frontier[n] = true;
+        ++open;
+      }
+    }
+    frontier_left_ = open + aside;
+    if (open == 0) {
+      if (aside == 0) {
+        message_ = "no frontier left";
+        return RoomEnding::done;
+      }
+      message_ = fmt::format("{} frontier cell{} could not be observed from the free space reached", aside,
+                             aside == 1 ? "" : "s");
+      return RoomEnding::incomplete;
+    }
+    // Cells within view of a frontier: a breadth-first spread from every frontier cell, view_cells deep,
+    // over cells not seen occupied.
+    std::vector<std::int32_t> near(map_.size(), -1);
+    std::vector<std::size_t> nearest_frontier(map_.size(), 0);
+    std::deque<std::size_t> queue;
+    for (std::size_t n = 0; n < map_.size(); ++n) {
+      if (frontier[n]) {
+        near[n] = 0;
+        nearest_frontier[n] = n;
+        queue.push_back(n);
+      }
+    }
+    while (!queue.empty()) {
+      const std::size_t c = queue.front();
+      queue.pop_front();
+      if (near[c] >= view_cells) continue;
+      const RoomCell rc = map_.cell_of_index(c);
+      for (const auto &d : {std::pair{0, 1}, std::pair{1, 0}, std::pair{0, -1}, std::pair{-1, 0}}) {
+        const RoomCell nb{rc.i + d.first, rc.j + d.second};
+        if (!map_.contains(nb)) continue;
+        const std::size_t k = map_.index(nb);
+        if (near[k] >= 0 || map_.probability_at(k) >= room_.free_below_p - 1e-9) continue;
+        near[k] = near[c] + 1;
+        nearest_frontier[k] = nearest_frontier[c];
+        queue.push_back(k);
+      }
+    }
+    const std::size_t here = map_.index(robot_cell());
+    const std::vector<bool> blocked = obstacles(true);
+    const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, here);
+    std::size_t target = map_.size();
+    for (std::size_t n = 0; n < map_.size(); ++n) {
+      if (steps[n] < 0 || near[n] < 0) continue;
+      if (target == map_.size() || steps[n] < steps[target]) target = n;
+    }
+    if (target == map_.size()) {
+      for (std::size_t n = 0; n < map_.size(); ++n) set_aside[n] = set_aside[n] || frontier[n];
+      continue;  // every frontier out of reach: the next round ends
+    }
+    const std::size_t aim = nearest_frontier[target];
+    // The path there: down a wave from the target.
+    wave_ = plan::wave_from(g, blocked, target);
+    const auto path = plan::descend(g, wave_, here);
+    path_ = path ? *path : std::vector<std::size_t>{here};
+    // Drive the path's corners: cells where the direction changes, and the last.
+    bool stopped = false;
+    for (std::size_t k = 1; k < path_.size(); ++k) {
+      const bool last = k + 1 == path_.size();
+      if (!last) {
+        const long d1 = static_cast<long>(path_[k]) - static_cast<long>(path_[k - 1]);
+        const long d2 = static_cast<long>(path_[k + 1]) - static_cast<long>(path_[k]);
+        if (d1 == d2) continue;
+      }
+      if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[k])), true, &stopped); m != Motion::ok) {
+        return finish(m);
+      }
+      if (stopped) break;
+      // The map grew while driving: stop when the rest of the path is now blocked.
+      bool now_blocked = false;
+      const std::vector<bool> fresh = obstacles(false);
+      for (std::size_t r = k; r < path_.size(); ++r) now_blocked = now_blocked || fresh[path_[r]];
+      if (now_blocked) break;
+    }
+    if (stopped) {
+      // Back off a little before planning again.
+      const double yaw = drive_.yaw_rad();
+      const Point back{position_.x_m - room_.back_off_m * std::cos(yaw), position_.y_m - room_.back_off_m * std::sin(yaw)};
+      const std::function<void()> none;
+      const std::function<bool()> never = [] { return false; };
+      if (const Motion m = drive_.drive_along(back, yaw, -room_.back_off_m, "backing off", none, never);
+          m != Motion::ok) {
+        return finish(m);
+      }
+    }
+    if (map_.index(robot_cell()) == target || !stopped) {
+      if (const Motion m = look_around(); m != Motion::ok) return finish(m);
+    }
+    attempts[aim] = static_cast<std::uint8_t>(std::min(attempts[aim] + 1, 255));
+    if (map_.unobserved_at(aim) && (map_.index(robot_cell()) == target || attempts[aim] >= kMaxFrontierAttempts)) {
+      set_aside[aim] = true;
+    }
+  }
+}
+
+RoomEnding RoomController::run_wander() {
+  common::Rng rng(room_.seed);
+  const std::function<void()> none;
+  const std::function<bool()> never = [] { return false; };
+  for (;;) {
+    const double yaw = drive_.yaw_rad();
+    const double far = 1000.0;
+    const Point ahead{position_.x_m + far * std::cos(yaw), position_.y_m + far * std::sin(yaw)};
+    const std::function<bool()> stop = [this] { return blocked_ahead(); };
+    if (const Motion m = drive_.drive_along(ahead, yaw, far, "ahead", none, stop); m != Motion::ok) {
+      if (m == Motion::no_progress) {
+        // pushing against something the sensors did not stop: back off and turn as after a bump
+      } else {
+        return finish(m);
+      }
+    }
+    const Point back{position_.x_m - room_.back_off_m * std::cos(yaw), position_.y_m - room_.back_off_m * std::sin(yaw)};
+    if (const Motion m = drive_.drive_along(back, yaw, -room_.back_off_m, "backing off", none, never);
+        m != Motion::ok && m != Motion::no_progress) {
+      return finish(m);
+    }
+    const double turn = rng.uniform(std::numbers::pi / 2, std::numbers::pi) * (rng.uniform01() < 0.5 ? -1.0 : 1.0);
+    if (const Motion m = drive_.turn_to_yaw(common::wrap_angle_rad(drive_.yaw_rad() + turn)); m != Motion::ok) {
+      return finish(m);
+    }
+  }
+}
+
+}  // namespace robot

@@ -1,0 +1,138 @@
+#pragma once
+// The room controller, beside the cell controller: a robot in an arena, driving in continuous
+// space and mapping onto the room map (sensing/room_map.hpp). Its pose is its own devices'
+// (GPS and IMU; without a GPS, the encoders integrated along the IMU's yaw), never the truth.
+// Every control step it scans (RoomSenses) and records its pose; the strategies:
+//
+//   waypoints  for each point: turn to it, then drive straight; a bump or a return ahead
+//              closer than stop_distance_m stops the leg, and the run ends `blocked` saying
+//              which leg and why.
+//   wavefront  the lab's loop: a cell is free when p < free_below_p (0.6), obstacles grown
+//              by `dilate` cells, 4 neighbours; plan from the robot's cell to the goal's
+//              (plan/room_wavefront.hpp), drive to the path's next cell (the closest point of
+//              the path), scanning every step; when it is reached, plan again from there on
+//              the grown map. Ends at the goal (`goal_reached`), or `unreachable` when the
+//              wave does not reach the robot.
+//   frontier   plan through cells seen free (p < free_below_p, observed, not within `dilate`
+//              cells of one seen occupied) to the nearest cell within view_m of a frontier
+//              (an unobserved cell beside one seen free), drive the path, then turn a full
+//              turn there scanning. A frontier still unobserved after a visit that aimed at it
+//              is set aside. Ends `done` when no frontier is left, `incomplete` (with how many
+//              cells) when only set-aside or unreachable ones are.
+//   wander     drive straight until a bump or a return ahead, back off back_off_m, turn a
+//              seeded random 90 ... 180 deg either way; until the time limit (`time_up`).
+//
+// A time limit (time_limit_s > 0) ends any strategy `time_up`.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mapping/grid_types.hpp"
+#include "robot/drive.hpp"
+#include "robot/options.hpp"
+#include "robot/room_senses.hpp"
+#include "sensing/room_map.hpp"
+
+namespace webots {
+class Robot;
+}
+
+namespace robot {
+
+enum class RoomStrategy { waypoints, wavefront, frontier, wander };
+std::string_view to_string(RoomStrategy s);
+// "waypoints", "wavefront", "frontier" or "wander"; common::InputError naming --strategy.
+RoomStrategy parse_room_strategy(std::string_view name);
+
+struct RoomOptions {
+  RoomStrategy strategy = RoomStrategy::frontier;
+  std::vector<mapping::Point> waypoints;
+  std::optional<mapping::Point> goal;   // wavefront
+  int dilate = 1;                       // cells
+  double free_below_p = 0.6;
+  double time_limit_s = 0.0;            // 0: none (wander needs one)
+  double stop_distance_m = 0.2;         // a return ahead closer than this (from the centre) stops a leg
+  double back_off_m = 0.1;              // wander
+  double view_m = 0.5;                  // frontier: a target within this of its frontier
+  std::uint64_t seed = 1;               // wander's turns
+  mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS
+};
+
+// Throws common::InputError: waypoints empty for waypoints, no goal for wavefront, no time
+// limit for wander, dilate outside 0 ... 8, a number not finite or out of range.
+void validate(const RoomOptions &options);
+
+enum class RoomEnding { done, goal_reached, arrived, blocked, unreachable, incomplete, time_up, no_progress,
+                        max_steps, simulation_ended, stopped };
+std::string_view to_string(RoomEnding e);
+
+// What a step hook sees: the controller after a control step.
+class RoomController;
+using RoomStepHook = std::function<void(const RoomController &)>;
+
+class RoomController {
+ public:
+  // The robot, options and map must outlive the controller; options validated by the caller.
+  RoomController(webots::Robot &robot, const ControllerOptions &options, const RoomOptions &room,
+                 sensing::RoomMap &map, RoomStepHook on_step = {});
+
+  // Runs the strategy to its end.
+  RoomEnding run();
+  const std::string &message() const { return message_; }
+
+  const sensing::RoomMap &map() const { return map_; }
+  mapping::Point position() const { return position_; }
+  double yaw_rad() const { return drive_.yaw_rad(); }
+  std::int64_t steps() const { return steps_; }
+  double time_s() const;
+  const std::vector<mapping::Point> &trajectory() const { return trajectory_; }
+  // The last plan: its cells (flat indices, start first) and the wave it came from
+  // (plan/room_wavefront.hpp's numbers; empty before a wavefront plan).
+  const std::vector<std::size_t> &path() const { return path_; }
+  const std::vector<std::int32_t> &wave() const { return wave_; }
+  const RoomSenses &senses() const { return senses_; }
+  // frontier: cells still unobserved beside seen-free ones when it ended.
+  std::size_t frontier_left() const { return frontier_left_; }
+
+ private:
+  Motion step(Action action);
+  void update_pose();
+  bool blocked_ahead() const;
+  // Turn to p, then drive straight to it; stop_early: a bump or a return ahead ends the leg.
+  // Sets *stopped when that happened.
+  Motion go_to(mapping::Point p, bool stop_early, bool *stopped);
+  Motion look_around();
+  std::vector<bool> obstacles(bool unknown_blocked) const;
+  sensing::RoomCell robot_cell() const;
+  RoomEnding finish(Motion m);
+
+  RoomEnding run_waypoints();
+  RoomEnding run_wavefront();
+  RoomEnding run_frontier();
+  RoomEnding run_wander();
+
+  webots::Robot &robot_;
+  const ControllerOptions &options_;
+  const RoomOptions &room_;
+  sensing::RoomMap &map_;
+  RoomStepHook on_step_;
+  int time_step_ms_;
+  WebotsChassis chassis_;
+  Drive drive_;
+  RoomSenses senses_;
+  mapping::Point position_;
+  WheelAngles last_wheels_;
+  std::int64_t steps_ = 0;
+  bool time_up_ = false;
+  std::vector<mapping::Point> trajectory_;
+  std::vector<std::size_t> path_;
+  std::vector<std::int32_t> wave_;
+  std::size_t frontier_left_ = 0;
+  std::string message_;
+};
+
+}  // namespace robot

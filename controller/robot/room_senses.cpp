@@ -1,0 +1,166 @@
+#include "robot/room_senses.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <span>
+
+#include <fmt/format.h>
+
+#include <webots/DistanceSensor.hpp>
+#include <webots/Lidar.hpp>
+#include <webots/Robot.hpp>
+#include <webots/TouchSensor.hpp>
+
+#include "common/angles.hpp"
+#include "common/error.hpp"
+#include "robot/require_device.hpp"
+
+namespace robot {
+namespace {
+
+sensing::RoomMarks marks_for(RoomSensing s, const mapping::SensorModelOptions &sensor) {
+  if (s == RoomSensing::pie) return {sensing::kPieOccupiedP, sensing::kPieFreeP};
+  return {sensor.p_occ, sensor.p_free};
+}
+
+}  // namespace
+
+RoomSensing room_sensing_for(sensing::ModelKind kind) {
+  switch (kind) {
+    case sensing::ModelKind::cell:
+    case sensing::ModelKind::ray: return RoomSensing::lidar;
+    case sensing::ModelKind::pie: return RoomSensing::pie;
+    case sensing::ModelKind::cone: return RoomSensing::cone;
+    case sensing::ModelKind::bump: return RoomSensing::bump;
+    case sensing::ModelKind::depth: return RoomSensing::depth;
+  }
+  return RoomSensing::lidar;
+}
+
+RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, sensing::RoomMap &map)
+    : options_(options),
+      map_(map),
+      sensing_(room_sensing_for(options.model.kind)),
+      log_options_(map.log_options()),
+      filter_(options.scan_filter),
+      marks_(marks_for(sensing_, options.sensor)) {
+  switch (sensing_) {
+    case RoomSensing::lidar:
+      lidar_ = require_device(robot.getLidar(options.devices.lidar), options.devices.lidar);
+      break;
+    case RoomSensing::bump: {
+      const auto &mounts = options.sensing.bumpers;
+      for (std::size_t i = 0; i < mounts.size(); ++i) {
+        bumpers_.push_back(require_device(robot.getTouchSensor(mounts[i].name), mounts[i].name));
+        const double a = mounts[i].angle_rad;
+        const int side = std::abs(a) < 0.1 ? 2 : (a > 0 ? 1 : 0);
+        bumper_of_side_[side] = static_cast<int>(i);
+        log_options_.bump_radius_m = mounts[i].offset_m;
+      }
+      if (mounts.size() != 3 || bumper_of_side_[0] < 0 || bumper_of_side_[1] < 0 || bumper_of_side_[2] < 0) {
+        throw common::InputError(fmt::format(
+            "the bump set-up in a room needs three bumpers, front and +-45 deg (the homework's); the robot has {}",
+            mounts.size()));
+      }
+      break;
+    }
+    case RoomSensing::depth:
+      if (options.sensing.ranges.size() != sensing::kLogDepthRays) {
+        throw common::InputError(fmt::format("the depth set-up in a room needs {} depth rays; the robot has {}",
+                                             sensing::kLogDepthRays, options.sensing.ranges.size()));
+      }
+      [[fallthrough]];
+    case RoomSensing::pie:
+    case RoomSensing::cone:
+      for (std::size_t i = 0; i < options.sensing.ranges.size(); ++i) {
+        const RangeSensorMount &m = options.sensing.ranges[i];
+        range_sensors_.push_back(require_device(robot.getDistanceSensor(m.name), m.name));
+        if (sensing_ == RoomSensing::depth) {
+          log_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
+          log_options_.depth_max_m = m.max_range_m + m.offset_m;
+        }
+      }
+      break;
+  }
+}
+
+void RoomSenses::enable(int time_step_ms) {
+  if (lidar_ != nullptr) lidar_->enable(time_step_ms);
+  for (webots::TouchSensor *b : bumpers_) b->enable(time_step_ms);
+  for (webots::DistanceSensor *r : range_sensors_) r->enable(time_step_ms);
+}
+
+void RoomSenses::read_ranges(mapping::Point centre, double yaw_rad) {
+  readings_.clear();
+  clearance_ahead_m_ = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < range_sensors_.size(); ++i) {
+    const RangeSensorMount &m = options_.sensing.ranges[i];
+    const webots::DistanceSensor &sensor = *range_sensors_[i];
+    const double a = yaw_rad + m.angle_rad;
+    const double value = sensor.getValue();
+    readings_.push_back({{centre.x_m + m.offset_m * std::cos(a), centre.y_m + m.offset_m * std::sin(a)}, a, value,
+                         m.max_range_m, m.aperture_rad, m.range_error,
+                         sensor.getType() == webots::DistanceSensor::SONAR});
+    if (std::abs(m.angle_rad) <= kAheadHalfAngle_rad && value > 0.0 && value < m.max_range_m) {
+      clearance_ahead_m_ = std::min(clearance_ahead_m_, value + m.offset_m);
+    }
+  }
+}
+
+std::size_t RoomSenses::scan(mapping::Point centre, double yaw_rad, double time_s) {
+  log_step_ = {};
+  log_step_.t = time_s;
+  log_step_.x_m = centre.x_m;
+  log_step_.y_m = centre.y_m;
+  log_step_.theta_rad = yaw_rad;
+  switch (sensing_) {
+    case RoomSensing::lidar: {
+      const float *ranges = lidar_->getRangeImage();
+      if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
+      sensing::LidarScan s;
+      s.origin = centre;
+      s.yaw_rad = yaw_rad;
+      s.fov_rad = lidar_->getFov();
+      s.min_range_m = lidar_->getMinRange();
+      s.max_range_m = lidar_->getMaxRange();
+      s.beam_offset = lidar_->getFrequency() > 0.0 ? 0.0 : 0.5;
+      s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar_->getHorizontalResolution()));
+      const sensing::LidarScan filtered = filter_.apply(s);
+      clearance_ahead_m_ = std::numeric_limits<double>::infinity();
+      for (int n = 0; n < filtered.beam_count(); ++n) {
+        if (filtered.kind(n) != sensing::ReadingKind::hit) continue;
+        if (std::abs(common::wrap_angle_rad(filtered.beam_angle_rad(n))) > kAheadHalfAngle_rad) continue;
+        clearance_ahead_m_ = std::min(clearance_ahead_m_, static_cast<double>(filtered.ranges[static_cast<std::size_t>(n)]));
+      }
+      sensing::mark_room_lidar(map_, filtered, marks_);
+      return marks_.apply(map_);
+    }
+    case RoomSensing::pie:
+      read_ranges(centre, yaw_rad);
+      sensing::mark_room_pie(map_, options_.sensing.range_model, readings_, marks_);
+      return marks_.apply(map_);
+    case RoomSensing::cone:
+      read_ranges(centre, yaw_rad);
+      sensing::mark_room_cone(map_, readings_, marks_);
+      return marks_.apply(map_);
+    case RoomSensing::bump:
+      log_step_.bump_right = bumpers_[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
+      log_step_.bump_left = bumpers_[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
+      log_step_.bump_front = bumpers_[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
+      bumped_ = log_step_.bump_right || log_step_.bump_left || log_step_.bump_front;
+      sensing::apply_log_step(log_options_, sensing::LogSensor::bump, log_step_, map_.log_grid());
+      return 1;
+    case RoomSensing::depth:
+      read_ranges(centre, yaw_rad);
+      for (std::size_t i = 0; i < readings_.size(); ++i) {
+        // map-log's depth is the distance from the robot's centre along the ray
+        log_step_.depth_m[i] = readings_[i].range_m + options_.sensing.ranges[i].offset_m;
+      }
+      sensing::apply_log_step(log_options_, sensing::LogSensor::depth, log_step_, map_.log_grid());
+      return 1;
+  }
+  return 0;
+}
+
+}  // namespace robot

@@ -1,0 +1,70 @@
+#pragma once
+// What a robot in a room senses with, read into the room map (sensing/room_map.hpp): its
+// lidar, its IR or sonar ring, its bumpers or its depth rays, as its set-up says (--model:
+// cell and ray read the lidar with the room's ray marks; pie, cone, bump and depth their own).
+// One scan reads every device at the pose the robot's own devices give, marks and applies.
+// It also keeps what the last scan says of the way ahead (the nearest return within
+// kAheadHalfAngle of the heading, from the robot's centre) and whether a bumper is pressed.
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "mapping/grid_types.hpp"
+#include "robot/options.hpp"
+#include "sensing/log_map.hpp"
+#include "sensing/room_map.hpp"
+#include "sensing/scan_filter.hpp"
+
+namespace webots {
+class DistanceSensor;
+class Lidar;
+class Robot;
+class TouchSensor;
+}  // namespace webots
+
+namespace robot {
+
+enum class RoomSensing { lidar, pie, cone, bump, depth };
+RoomSensing room_sensing_for(sensing::ModelKind kind);
+
+// A return within this angle of the heading counts as ahead.
+inline constexpr double kAheadHalfAngle_rad = 0.35;
+
+class RoomSenses {
+ public:
+  // Finds the devices (common::InputError naming one the robot lacks; bump needs three
+  // bumpers at 0 and +-45 deg, depth nine range sensors, as the homework's log has).
+  RoomSenses(webots::Robot &robot, const ControllerOptions &options, sensing::RoomMap &map);
+  void enable(int time_step_ms);
+
+  // Reads every device at the robot's pose, marks and applies; returns the cells updated.
+  std::size_t scan(mapping::Point centre, double yaw_rad, double time_s);
+
+  // The last scan's nearest return ahead from the robot's centre, m (infinity: none).
+  double clearance_ahead_m() const { return clearance_ahead_m_; }
+  bool bumped() const { return bumped_; }
+  // The last scan as map-log reads it (bump and depth set-ups).
+  const sensing::LogStep &log_step() const { return log_step_; }
+  RoomSensing sensing() const { return sensing_; }
+
+ private:
+  void read_ranges(mapping::Point centre, double yaw_rad);
+
+  const ControllerOptions &options_;
+  sensing::RoomMap &map_;
+  RoomSensing sensing_;
+  sensing::LogMapOptions log_options_;
+  webots::Lidar *lidar_ = nullptr;
+  std::vector<webots::TouchSensor *> bumpers_;
+  std::vector<webots::DistanceSensor *> range_sensors_;
+  int bumper_of_side_[3] = {-1, -1, -1};  // right, left, front: index into bumpers_
+  sensing::ScanFilter filter_;
+  sensing::RoomMarks marks_;
+  std::vector<sensing::RangeReading> readings_;
+  sensing::LogStep log_step_;
+  double clearance_ahead_m_ = std::numeric_limits<double>::infinity();
+  bool bumped_ = false;
+};
+
+}  // namespace robot
