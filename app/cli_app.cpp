@@ -37,6 +37,7 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   add_demo_command(cli, context);
   add_explain_command(cli, context);
   add_map_log_command(cli, context);
+  add_room_command(cli, context);
   add_show_command(cli, context);
   add_convert_command(cli, context);
   add_generate_command(cli, context);

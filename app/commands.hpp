@@ -49,6 +49,9 @@ void add_explain_command(CLI::App &cli, CommandContext &context);
 // `map-log LOG.csv [options]` (cmd_map_log.cpp): the bump/depth log homework.
 void add_map_log_command(CLI::App &cli, CommandContext &context);
 
+// `room WORLD --strategy ...` (cmd_room.cpp): a robot in a room maps it onto a numCells grid.
+void add_room_command(CLI::App &cli, CommandContext &context);
+
 // Loads a world (maze::load_world) and prints its warnings on stderr, one a line.
 maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides = {});
 

@@ -1,0 +1,72 @@
+#pragma once
+// `maze_mapper room WORLD`: a robot in a room (robot/room_controller.hpp) mapping onto a
+// numCells grid (sensing/room_map.hpp) in the embedded simulator, and what people look at:
+// the ASCII map (W occupied, . free, blank never observed, * the last planned path, the
+// robot's arrow), snapshots at simulated times and at control steps, the wavefront's numbers,
+// the trajectory, the thresholded binary map and the summary, which scores the map against
+// the truth rasterised at the map's resolution. --out DIR writes trace.csv (map-log reads it
+// back to the same grid for the bump and depth set-ups), logodds.csv, map.pgm + map.yaml and
+// summary.json.
+//
+// The truth of a cell is its centre: inside a solid (a wall, an obstacle) or outside the
+// world is occupied, else free; the reachable free cells are the free cells 4-connected to
+// the start's.
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "mapping/sensor_model.hpp"
+#include "maze/sim/simulation.hpp"
+#include "robot/room_controller.hpp"
+#include "sensing/range_models.hpp"
+#include "sensing/room_map.hpp"
+#include "sensing/setups.hpp"
+
+namespace app {
+
+struct RoomRunOptions {
+  std::string world;
+  robot::RoomOptions room;
+  std::optional<int> cells_x, cells_y;        // --cells X,Y
+  std::optional<double> resolution_m;         // --resolution M (default 0.1)
+  std::optional<sensing::RoomBoundary> boundary;  // --boundary (default: the world's extent)
+  std::string robot;                          // --robot (default: the set-up's robot)
+  std::optional<mapping::Point> start;        // --start X,Y (default: the world's start)
+  std::optional<double> start_yaw_deg;
+  mapping::SensorModelOptions sensor;
+  sensing::ModelOptions model;                // kind: --model (default ray)
+  sensing::RangeModelOptions range_model;
+  std::optional<double> threshold;            // log-odds drawn W at or above (default 0; bump/depth -0.5)
+  std::vector<double> snapshots_at_s;
+  std::vector<std::int64_t> snapshot_steps;
+  std::string out_dir;
+  bool quiet = false;                         // no maps, the summary only
+  maze::sim::SimulationOptions simulation;
+  std::optional<std::int64_t> max_steps;
+};
+
+struct RoomSummary {
+  robot::RoomEnding ending = robot::RoomEnding::done;
+  std::string message;
+  std::int64_t steps = 0;
+  double sim_time_s = 0.0;
+  double wall_time_ms = 0.0;
+  int cells_x = 0, cells_y = 0;
+  double cell_m = 0.0;
+  std::size_t cells_right = 0, cells_total = 0;  // thresholded map against the truth, every cell
+  std::size_t observed_cells_right = 0, observed_cells = 0;
+  std::size_t reachable_free = 0, reachable_free_observed = 0;
+  double observed_share() const {
+    return reachable_free == 0 ? 1.0 : static_cast<double>(reachable_free_observed) / static_cast<double>(reachable_free);
+  }
+};
+
+// Checks everything (common::InputError, before anything runs), runs, prints on `out`.
+RoomSummary run_room(const RoomRunOptions &options, std::ostream &out);
+// 0: done, goal reached, every waypoint reached, wander's time up; 1 otherwise.
+int room_exit_status(const RoomSummary &summary);
+
+}  // namespace app
