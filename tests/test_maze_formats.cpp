@@ -248,7 +248,7 @@ TEST_CASE("formats: the output format comes from the extension") {
     FAIL("no error");
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() ==
-          "error: cannot tell the output format of 'maze.png' from its extension: use .txt, .num, .xml, .wbt or .maz");
+          "error: cannot tell the output format of 'maze.png' from its extension: use .txt, .num, .xml, .wbt, .maz or .room");
   }
 }
 
