@@ -7,6 +7,9 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <iostream>
+#include <variant>
+#include <array>
 #include <numbers>
 #include <sstream>
 
@@ -22,8 +25,10 @@
 #include "common/compass.hpp"
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
-#include "maze/sim/wall_grid.hpp"
-#include "maze/world.hpp"
+#include "maze/arena.hpp"
+#include "maze/arena_truth.hpp"
+#include "maze/arena_world.hpp"
+#include "maze/maze.hpp"
 #include "plan/room_wavefront.hpp"
 
 namespace app {
@@ -34,25 +39,8 @@ using sensing::RoomCell;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// The world as the room run needs it: solids by point, the extent, the start.
-struct RoomWorld {
-  std::function<bool(double, double)> solid;  // inside a wall or obstacle, or outside the world
-  sensing::RoomBoundary extent;
-  maze::sim::Pose start;
-};
-
 bool is_log_set_up(sensing::ModelKind k) {
   return k == sensing::ModelKind::bump || k == sensing::ModelKind::depth;
-}
-
-// The truth per cell: solid at its centre.
-std::vector<bool> truth_occupied(const RoomWorld &world, const sensing::RoomMap &map) {
-  std::vector<bool> occupied(map.size(), false);
-  for (std::size_t n = 0; n < map.size(); ++n) {
-    const Point c = map.centre_of(map.cell_of_index(n));
-    occupied[n] = world.solid(c.x_m, c.y_m);
-  }
-  return occupied;
 }
 
 char arrow_of(double yaw_rad) {
@@ -113,16 +101,6 @@ std::string wave_numbers(const sensing::RoomMap &map, const std::vector<std::int
   return out;
 }
 
-RoomWorld world_of_maze(const maze::Maze &m, const maze::sim::WallGrid &walls) {
-  RoomWorld w;
-  w.solid = [&walls](double x, double y) { return !walls.inside_maze(x, y) || walls.inside_wall(x, y); };
-  w.extent = {m.origin_x_m(), m.origin_x_m() + m.width() * m.cell_size_m(), m.origin_y_m(),
-              m.origin_y_m() + m.height() * m.cell_size_m()};
-  w.start = {m.origin_x_m() + (m.start().x + 0.5) * m.cell_size_m(), m.origin_y_m() + (m.start().y + 0.5) * m.cell_size_m(),
-             common::compass_yaw_rad(static_cast<int>(m.start_heading()))};
-  return w;
-}
-
 void write_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
                    const std::string &summary_json, double threshold) {
   std::ostringstream csv;
@@ -161,8 +139,22 @@ int room_exit_status(const RoomSummary &s) {
 RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
   const auto started = std::chrono::steady_clock::now();
   // ---- everything checked before anything runs ----
-  const maze::World loaded = maze::load_world(options.world);
-  const maze::Maze &truth_maze = loaded.maze;
+  maze::ArenaOverrides arena_overrides;
+  if (options.boundary) {
+    arena_overrides.boundary_m = std::array<double, 4>{options.boundary->x_start_m, options.boundary->x_end_m,
+                                                       options.boundary->y_start_m, options.boundary->y_end_m};
+  }
+  const maze::AnyWorld loaded = maze::load_any_world(options.world, {}, arena_overrides);
+  maze::Arena arena;
+  if (const auto *a = std::get_if<maze::ArenaWorld>(&loaded)) {
+    arena = a->arena;
+    for (const std::string &w : a->warnings) std::cerr << w << '\n';
+  } else {
+    const auto &m = std::get<maze::World>(loaded);
+    if (options.boundary) throw common::InputError("--boundary applies to arenas; a maze's map covers the maze");
+    arena = maze::arena_from_maze(m.maze);
+    for (const std::string &w : m.warnings) std::cerr << w << '\n';
+  }
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const std::string robot_name = options.robot.empty() ? std::string(setup.default_robot) : options.robot;
   const maze::sim::RobotProfile profile = resolve_robot(robot_name);
@@ -171,14 +163,13 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
                                          setup.name));
   }
   robot::validate(options.room);
-  const maze::sim::WallGrid walls(truth_maze);
-  RoomWorld world = world_of_maze(truth_maze, walls);
+  maze::ArenaPose start_pose = arena.start();
   if (options.start) {
-    world.start.x_m = options.start->x_m;
-    world.start.y_m = options.start->y_m;
+    start_pose.x_m = options.start->x_m;
+    start_pose.y_m = options.start->y_m;
   }
-  if (options.start_yaw_deg) world.start.yaw_rad = *options.start_yaw_deg * kDeg;
-  const sensing::RoomBoundary boundary = options.boundary.value_or(world.extent);
+  if (options.start_yaw_deg) start_pose.yaw_rad = *options.start_yaw_deg * kDeg;
+  const sensing::RoomBoundary boundary{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
   const sensing::RoomGridSpec spec =
       options.cells_x ? sensing::room_grid_from_cells(boundary, *options.cells_x, *options.cells_y)
                       : sensing::room_grid_from_resolution(boundary, options.resolution_m.value_or(0.1));
@@ -187,14 +178,16 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
     return p.x_m >= spec.boundary.x_start_m && p.x_m < spec.boundary.x_end_m && p.y_m >= spec.boundary.y_start_m &&
            p.y_m < spec.boundary.y_end_m;
   };
-  const Point start{world.start.x_m, world.start.y_m};
+  const Point start{start_pose.x_m, start_pose.y_m};
   if (!inside(start)) {
     throw common::InputError(fmt::format("the start ({:g}, {:g}) is outside the boundary {:g},{:g},{:g},{:g}", start.x_m,
                                          start.y_m, spec.boundary.x_start_m, spec.boundary.x_end_m,
                                          spec.boundary.y_start_m, spec.boundary.y_end_m));
   }
-  if (world.solid(start.x_m, start.y_m)) {
-    throw common::InputError(fmt::format("the start ({:g}, {:g}) is inside an obstacle", start.x_m, start.y_m));
+  {
+    maze::Arena placed = arena;
+    placed.starts = {start_pose};
+    if (const maze::ArenaCheck bad = maze::check_starts_clear(placed, profile.body_radius_m)) throw *bad;
   }
   if (options.room.goal) {
     if (!inside(*options.room.goal)) {
@@ -211,11 +204,12 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
   run_options.model = options.model;
   run_options.range_model = options.range_model;
   run_options.max_steps = options.max_steps;
-  robot::ControllerOptions controller = controller_options(run_options, truth_maze, profile);
+  robot::ControllerOptions controller = controller_options(run_options, maze::Maze(1, 1), profile);
   controller.motion.max_steps = options.max_steps.value_or(std::int64_t{2'000'000});
   robot::RoomOptions room = options.room;
   room.start = start;
   room.stop_distance_m = std::max(room.stop_distance_m, profile.body_radius_m + 0.08);
+  room.body_radius_m = profile.body_radius_m;
   const mapping::SensorModel model(options.sensor);
   sensing::RoomMap map(spec, model);
   if (!options.out_dir.empty()) {
@@ -223,8 +217,15 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
     refuse_outputs_over_inputs(options.out_dir, {options.world});
   }
   maze::sim::SimulationOptions sim = options.simulation;
-  sim.start = world.start;
-  webots::embedded::Simulation simulation(truth_maze, profile, sim);
+  sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
+  // The truth at the map's resolution, over the map's extent (a --resolution that does not
+  // divide the boundary reaches past it by less than a cell).
+  maze::Arena on_grid = arena;
+  on_grid.x_max_m = spec.boundary.x_end_m;
+  on_grid.y_max_m = spec.boundary.y_end_m;
+  on_grid.starts = {start_pose};
+  const maze::ArenaTruth truth = maze::rasterise_arena(on_grid, spec.cells_x, spec.cells_y, profile.body_radius_m);
+  webots::embedded::Simulation simulation(arena, profile, sim);
 
   // ---- the run ----
   const double threshold = threshold_of(options);
@@ -281,23 +282,19 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
   summary.cell_m = spec.cell_m;
 
   // ---- the score against the truth ----
-  const std::vector<bool> occupied = truth_occupied(world, map);
   summary.cells_total = map.size();
   for (std::size_t n = 0; n < map.size(); ++n) {
     const bool says_occupied = map.log_odds_at(n) >= threshold;
-    const bool right = says_occupied == occupied[n];
+    const bool right = says_occupied == (truth.occupied[n] != 0);
     summary.cells_right += right ? 1 : 0;
     if (!map.unobserved_at(n)) {
       ++summary.observed_cells;
       summary.observed_cells_right += right ? 1 : 0;
     }
   }
-  const plan::FlatGrid g{spec.cells_x, spec.cells_y};
-  const auto start_cell = map.cell_at(start);
-  const std::vector<std::int32_t> reach = plan::steps_from(g, occupied, map.index(*start_cell));
   std::size_t first_left = map.size();
   for (std::size_t n = 0; n < map.size(); ++n) {
-    if (reach[n] < 0) continue;
+    if (truth.reachable[n] == 0) continue;
     ++summary.reachable_free;
     if (!map.unobserved_at(n)) {
       ++summary.reachable_free_observed;
@@ -305,8 +302,16 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
       first_left = n;
     }
   }
+  const bool all_seen = summary.reachable_free_observed == summary.reachable_free;
+  if (options.room.strategy == robot::RoomStrategy::frontier && summary.ending == robot::RoomEnding::incomplete &&
+      all_seen) {
+    // What the robot could not observe lies in obstacles or out of reach: the free space is mapped.
+    summary.ending = robot::RoomEnding::done;
+    summary.message += fmt::format(", none of them reachable free space: every one of the {} reachable free cells "
+                                   "is observed", summary.reachable_free);
+  }
   if (options.room.strategy == robot::RoomStrategy::frontier && summary.ending == robot::RoomEnding::done &&
-      summary.reachable_free_observed < summary.reachable_free) {
+      !all_seen) {
     // The controller found no frontier, yet reachable free space is unobserved: not done.
     const Point p = map.centre_of(map.cell_of_index(first_left));
     summary.ending = robot::RoomEnding::incomplete;

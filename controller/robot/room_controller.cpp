@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <deque>
 #include <limits>
 #include <numbers>
@@ -23,7 +24,9 @@ using mapping::Point;
 using sensing::RoomCell;
 
 constexpr int kMaxRoomDilate = 8;
-constexpr int kMaxFrontierAttempts = 3;  // a frontier cell aimed at this often and still unobserved is set aside
+constexpr int kMaxFrontierAttempts = 3;
+// A planned leg (on the grown map) stops only when a return ahead is this close to the body.
+constexpr double kTouchMargin_m = 0.03;  // a frontier cell aimed at this often and still unobserved is set aside
 
 int time_step_of(webots::Robot &robot, const MotionOptions &m) {
   return m.time_step_ms > 0 ? m.time_step_ms : static_cast<int>(std::lround(robot.getBasicTimeStep()));
@@ -129,12 +132,36 @@ Motion RoomController::step(Action) {
   update_pose();
   senses_.scan(position_, drive_.yaw_rad(), robot_.getTime());
   trajectory_.push_back(position_);
+  mark_under_body();
   if (on_step_) on_step_(*this);
   return Motion::ok;
 }
 
+void RoomController::mark_under_body() {
+  if (under_body_.size() != map_.size()) under_body_.assign(map_.size(), false);
+  const double r = room_.body_radius_m;
+  const auto lo = map_.cell_at({position_.x_m - r, position_.y_m - r});
+  const auto hi = map_.cell_at({position_.x_m + r, position_.y_m + r});
+  const RoomCell here = robot_cell();
+  const RoomCell a = lo.value_or(here);
+  const RoomCell b = hi.value_or(here);
+  for (int j = std::min(a.j, here.j); j <= std::max(b.j, here.j); ++j) {
+    for (int i = std::min(a.i, here.i); i <= std::max(b.i, here.i); ++i) {
+      const Point c = map_.centre_of({i, j});
+      if (map_.contains({i, j}) && std::hypot(c.x_m - position_.x_m, c.y_m - position_.y_m) <= r) {
+        under_body_[map_.index({i, j})] = true;
+      }
+    }
+  }
+  under_body_[map_.index(here)] = true;
+}
+
 bool RoomController::blocked_ahead() const {
   return senses_.bumped() || senses_.clearance_ahead_m() < room_.stop_distance_m;
+}
+
+bool RoomController::touching_ahead() const {
+  return senses_.bumped() || senses_.clearance_ahead_m() < room_.body_radius_m + kTouchMargin_m;
 }
 
 RoomCell RoomController::robot_cell() const {
@@ -146,7 +173,7 @@ RoomCell RoomController::robot_cell() const {
           clampi((position_.y_m - b.y_start_m) / map_.cell_m(), map_.cells_y())};
 }
 
-Motion RoomController::go_to(Point p, bool stop_early, bool *stopped) {
+Motion RoomController::go_to(Point p, StopWhen when, bool *stopped) {
   *stopped = false;
   const double ex = p.x_m - position_.x_m;
   const double ey = p.y_m - position_.y_m;
@@ -157,8 +184,8 @@ Motion RoomController::go_to(Point p, bool stop_early, bool *stopped) {
   const std::function<void()> none;
   bool hit = false;
   const std::function<bool()> stop = [&] {
-    if (!stop_early) return false;
-    hit = blocked_ahead();
+    if (when == StopWhen::never) return false;
+    hit = when == StopWhen::obstacle_ahead ? blocked_ahead() : touching_ahead();
     return hit;
   };
   const Motion m = drive_.drive_along(p, yaw, distance, "the point", none, stop);
@@ -177,6 +204,21 @@ Motion RoomController::look_around() {
   return Motion::ok;
 }
 
+bool RoomController::sees(std::size_t from, std::size_t to) const {
+  const Point a = map_.centre_of(map_.cell_of_index(from));
+  const Point b = map_.centre_of(map_.cell_of_index(to));
+  const double length = std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
+  const int samples = static_cast<int>(std::ceil(length / (map_.cell_m() / 4)));
+  for (int k = 1; k < samples; ++k) {
+    const double f = static_cast<double>(k) / samples;
+    const auto c = map_.cell_at({a.x_m + f * (b.x_m - a.x_m), a.y_m + f * (b.y_m - a.y_m)});
+    if (!c) return false;
+    const std::size_t n = map_.index(*c);
+    if (n != to && map_.probability_at(n) >= room_.free_below_p - 1e-9) return false;
+  }
+  return true;
+}
+
 std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
   std::vector<bool> out(map_.size(), false);
   for (std::size_t n = 0; n < map_.size(); ++n) {
@@ -185,7 +227,9 @@ std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
   std::vector<bool> grown = plan::dilated(g, out, room_.dilate);
   if (unknown_blocked) {
-    for (std::size_t n = 0; n < map_.size(); ++n) grown[n] = grown[n] || map_.unobserved_at(n);
+    for (std::size_t n = 0; n < map_.size(); ++n) {
+      grown[n] = grown[n] || (map_.unobserved_at(n) && !(n < under_body_.size() && under_body_[n]));
+    }
   }
   grown[map_.index(robot_cell())] = false;  // where the robot stands
   return grown;
@@ -224,7 +268,7 @@ RoomEnding RoomController::run_waypoints() {
   for (std::size_t n = 0; n < room_.waypoints.size(); ++n) {
     const Point p = room_.waypoints[n];
     bool stopped = false;
-    if (const Motion m = go_to(p, true, &stopped); m != Motion::ok) return finish(m);
+    if (const Motion m = go_to(p, StopWhen::obstacle_ahead, &stopped); m != Motion::ok) return finish(m);
     if (stopped) {
       message_ = fmt::format("leg {} to ({:g}, {:g}) stopped at ({:.2f}, {:.2f}): {}", n + 1, p.x_m, p.y_m,
                              position_.x_m, position_.y_m,
@@ -249,7 +293,7 @@ RoomEnding RoomController::run_wavefront() {
     const std::size_t here = map_.index(robot_cell());
     if (here == goal) {
       bool stopped = false;
-      if (const Motion m = go_to(*room_.goal, false, &stopped); m != Motion::ok) return finish(m);
+      if (const Motion m = go_to(*room_.goal, StopWhen::never, &stopped); m != Motion::ok) return finish(m);
       message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", room_.goal->x_m, room_.goal->y_m, steps_);
       return RoomEnding::goal_reached;
     }
@@ -264,7 +308,7 @@ RoomEnding RoomController::run_wavefront() {
     path_ = *path;
     // The closest point of the path ahead: its next cell.
     bool stopped = false;
-    if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[1])), false, &stopped); m != Motion::ok) {
+    if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[1])), StopWhen::touching, &stopped); m != Motion::ok) {
       return finish(m);
     }
   }
@@ -339,10 +383,19 @@ RoomEnding RoomController::run_frontier() {
     const std::size_t here = map_.index(robot_cell());
     const std::vector<bool> blocked = obstacles(true);
     const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, here);
-    std::size_t target = map_.size();
+    // The nearest reachable cell that sees its frontier cell: no cell seen occupied on the line.
+    std::vector<std::size_t> candidates;
     for (std::size_t n = 0; n < map_.size(); ++n) {
-      if (steps[n] < 0 || near[n] < 0) continue;
-      if (target == map_.size() || steps[n] < steps[target]) target = n;
+      if (steps[n] >= 0 && near[n] >= 0) candidates.push_back(n);
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [&steps](std::size_t a, std::size_t b) { return steps[a] < steps[b]; });
+    std::size_t target = map_.size();
+    for (const std::size_t n : candidates) {
+      if (sees(n, nearest_frontier[n])) {
+        target = n;
+        break;
+      }
     }
     if (target == map_.size()) {
       for (std::size_t n = 0; n < map_.size(); ++n) set_aside[n] = set_aside[n] || frontier[n];
@@ -362,7 +415,7 @@ RoomEnding RoomController::run_frontier() {
         const long d2 = static_cast<long>(path_[k + 1]) - static_cast<long>(path_[k]);
         if (d1 == d2) continue;
       }
-      if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[k])), true, &stopped); m != Motion::ok) {
+      if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[k])), StopWhen::touching, &stopped); m != Motion::ok) {
         return finish(m);
       }
       if (stopped) break;
@@ -387,6 +440,7 @@ RoomEnding RoomController::run_frontier() {
       if (const Motion m = look_around(); m != Motion::ok) return finish(m);
     }
     attempts[aim] = static_cast<std::uint8_t>(std::min(attempts[aim] + 1, 255));
+    if (std::getenv("ROOM_DEBUG")) fmt::print(stderr, "at ({:.2f},{:.2f}) target ({:.2f},{:.2f}) aim ({:.2f},{:.2f}) stopped {} unobserved {} attempts {}\n", position_.x_m, position_.y_m, map_.centre_of(map_.cell_of_index(target)).x_m, map_.centre_of(map_.cell_of_index(target)).y_m, map_.centre_of(map_.cell_of_index(aim)).x_m, map_.centre_of(map_.cell_of_index(aim)).y_m, stopped, map_.unobserved_at(aim), attempts[aim]);
     if (map_.unobserved_at(aim) && (map_.index(robot_cell()) == target || attempts[aim] >= kMaxFrontierAttempts)) {
       set_aside[aim] = true;
     }

@@ -59,6 +59,7 @@ struct RoomOptions {
   double back_off_m = 0.1;              // wander
   double view_m = 0.5;                  // frontier: a target within this of its frontier
   std::uint64_t seed = 1;               // wander's turns
+  double body_radius_m = 0.09;          // the cells under the body count as seen free for planning
   mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS
 };
 
@@ -101,10 +102,16 @@ class RoomController {
  private:
   Motion step(Action action);
   void update_pose();
+  void mark_under_body();
+  // Whether the line between two cells' centres crosses no cell seen occupied (besides `to`).
+  bool sees(std::size_t from, std::size_t to) const;
+  // A bump, or a return ahead closer than stop_distance_m (waypoints, wander).
   bool blocked_ahead() const;
-  // Turn to p, then drive straight to it; stop_early: a bump or a return ahead ends the leg.
-  // Sets *stopped when that happened.
-  Motion go_to(mapping::Point p, bool stop_early, bool *stopped);
+  // A bump, or a return ahead about to touch the body (legs planned on the grown map).
+  bool touching_ahead() const;
+  enum class StopWhen { never, obstacle_ahead, touching };
+  // Turn to p, then drive straight to it, ending early as `when` says; sets *stopped then.
+  Motion go_to(mapping::Point p, StopWhen when, bool *stopped);
   Motion look_around();
   std::vector<bool> obstacles(bool unknown_blocked) const;
   sensing::RoomCell robot_cell() const;
@@ -131,6 +138,7 @@ class RoomController {
   std::vector<mapping::Point> trajectory_;
   std::vector<std::size_t> path_;
   std::vector<std::int32_t> wave_;
+  std::vector<bool> under_body_;  // cells the body has stood on: free whatever the map says
   std::size_t frontier_left_ = 0;
   std::string message_;
 };

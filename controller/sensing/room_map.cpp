@@ -183,7 +183,9 @@ void mark_room_pie(const RoomMap &map, const RangeModelOptions &options, std::sp
     s.y_m = reading.origin.y_m;
     s.heading_deg = reading.angle_rad * 180.0 / 3.14159265358979323846;
     s.reading_m = reading.range_m;
-    s.contact = reading.range_m < reading.max_range_m;
+    // A reading within two of its errors of max range saw nothing (is_no_return): the
+    // sensor's noise must not make phantom contacts at max range.
+    s.contact = reading.range_m < reading.max_range_m && !is_no_return(reading);
     s.clear_m = std::min(reading.range_m, reading.max_range_m);
     s.contact_m = s.contact ? s.clear_m + options.pie_contact_m : s.clear_m;
     const double reach = s.contact_m;

@@ -15,7 +15,9 @@
 //          return frees up to max range; an invalid one marks nothing.
 //   pie    each IR reading's slices as `demo pie` draws them (sensing/pie_demo.hpp): a cell
 //          whose corners or centre fall in the contact slice only is occupied (0.7), else in
-//          the clear slice free (0.4).
+//          the clear slice free (0.4). A reading within two of its errors of max range
+//          (is_no_return) is clear, not a contact: the noise near max range would otherwise
+//          draw phantom walls at 1.5 m all round.
 //   cone   IR or sonar: the lecture's cone sweep (sensing/cone_sweep.hpp) of the arc
 //          d (1 - eps) ... d (1 + eps) occupied (p_occ), the same sweep of the cone inside,
 //          0 ... d (1 - eps) - INC, free (p_free). Nothing seen: an IR frees the cone up to
