@@ -155,6 +155,11 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
     arena = maze::arena_from_maze(m.maze);
     for (const std::string &w : m.warnings) std::cerr << w << '\n';
   }
+  return run_room_in(arena, options, out, started);
+}
+
+RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
+                        std::chrono::steady_clock::time_point started) {
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const std::string robot_name = options.robot.empty() ? std::string(setup.default_robot) : options.robot;
   const maze::sim::RobotProfile profile = resolve_robot(robot_name);
@@ -322,6 +327,12 @@ RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   if (!options.quiet) {
+    for (; next_time < times.size(); ++next_time) {
+      out << fmt::format("--- t = {:g} s: the run ended at {:.1f} s ---\n\n", times[next_time], summary.sim_time_s);
+    }
+    for (; next_step < steps.size(); ++next_step) {
+      out << fmt::format("--- step {}: the run ended at step {} ---\n\n", steps[next_step], summary.steps);
+    }
     snapshot(controller_loop, "end");
     out << "trajectory (x, y every second):\n";
     const auto &traj = controller_loop.trajectory();

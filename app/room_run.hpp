@@ -12,6 +12,7 @@
 // world is occupied, else free; the reachable free cells are the free cells 4-connected to
 // the start's.
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <ostream>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "mapping/sensor_model.hpp"
+#include "maze/arena.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/room_controller.hpp"
 #include "sensing/range_models.hpp"
@@ -64,8 +66,12 @@ struct RoomSummary {
   }
 };
 
-// Checks everything (common::InputError, before anything runs), runs, prints on `out`.
+// Loads options.world (a maze runs as the arena of its walls), checks everything
+// (common::InputError, before anything runs), runs, prints on `out`.
 RoomSummary run_room(const RoomRunOptions &options, std::ostream &out);
+// The same in an arena given in code (options.world only names it; --boundary is the arena's).
+RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
+                        std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
 // 0: done, goal reached, every waypoint reached, wander's time up; 1 otherwise.
 int room_exit_status(const RoomSummary &summary);
 

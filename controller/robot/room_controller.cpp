@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <deque>
 #include <limits>
 #include <numbers>
@@ -440,7 +439,6 @@ RoomEnding RoomController::run_frontier() {
       if (const Motion m = look_around(); m != Motion::ok) return finish(m);
     }
     attempts[aim] = static_cast<std::uint8_t>(std::min(attempts[aim] + 1, 255));
-    if (std::getenv("ROOM_DEBUG")) fmt::print(stderr, "at ({:.2f},{:.2f}) target ({:.2f},{:.2f}) aim ({:.2f},{:.2f}) stopped {} unobserved {} attempts {}\n", position_.x_m, position_.y_m, map_.centre_of(map_.cell_of_index(target)).x_m, map_.centre_of(map_.cell_of_index(target)).y_m, map_.centre_of(map_.cell_of_index(aim)).x_m, map_.centre_of(map_.cell_of_index(aim)).y_m, stopped, map_.unobserved_at(aim), attempts[aim]);
     if (map_.unobserved_at(aim) && (map_.index(robot_cell()) == target || attempts[aim] >= kMaxFrontierAttempts)) {
       set_aside[aim] = true;
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <fmt/format.h>
@@ -193,8 +194,18 @@ void mark_room_pie(const RoomMap &map, const RangeModelOptions &options, std::sp
     const int i1 = std::min(map.cells_x() - 1, static_cast<int>(std::floor((s.x_m + reach - x0) / r)) + 1);
     const int j0 = std::max(0, static_cast<int>(std::floor((s.y_m - reach - y0) / r)) - 1);
     const int j1 = std::min(map.cells_y() - 1, static_cast<int>(std::floor((s.y_m + reach - y0) / r)) + 1);
+    const double half_diagonal = r * std::sqrt(0.5);
     for (int j = j0; j <= j1; ++j) {
       for (int i = i0; i <= i1; ++i) {
+        // Cells wholly beyond the slices' reach or angle cannot hold a point of them.
+        const double cx = x0 + (i + 0.5) * r - s.x_m;
+        const double cy = y0 + (j + 0.5) * r - s.y_m;
+        const double centre_m = std::hypot(cx, cy);
+        if (centre_m - half_diagonal > reach) continue;
+        if (centre_m > 2 * half_diagonal) {
+          const double off = std::abs(std::remainder(std::atan2(cy, cx) - reading.angle_rad, 2 * std::numbers::pi));
+          if (off - std::asin(half_diagonal / centre_m) > options.pie_half_angle_rad + 1e-9) continue;
+        }
         const PieVerdict v = pie_demo_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
         if (v == PieVerdict::outside) continue;
         marks.mark(map, RoomCell{i, j}, v == PieVerdict::contact ? kRoomOccupied : kRoomFree);
