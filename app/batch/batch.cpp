@@ -1,3 +1,4 @@
+#include "common/csv.hpp"
 #include "app/report/files_recorder.hpp"
 #include "app/batch/batch.hpp"
 
@@ -318,20 +319,11 @@ std::string format_batch_table(const std::vector<BatchItem> &items, double elaps
   return out + "\n";
 }
 
-std::string csv_quoted(const std::string &text) {
-  std::string q = "\"";
-  for (const char c : text) {
-    if (c == '"') q += '"';
-    q += c;
-  }
-  return q + "\"";
-}
-
 std::string format_batch_csv_row(const BatchRow &row) {
-  if (!row.ran) return fmt::format("{},,,,,,,,,{}\n", csv_quoted(row.world), csv_quoted(row.error));
-  return fmt::format("{},{},{},{:.2f},{:.2f},{},{},{:.0f},{},{}\n", csv_quoted(row.world), row.size, row.moves,
+  if (!row.ran) return fmt::format("{},,,,,,,,,{}\n", common::csv_field(row.world), common::csv_field(row.error));
+  return fmt::format("{},{},{},{:.2f},{:.2f},{},{},{:.0f},{},{}\n", common::csv_field(row.world), row.size, row.moves,
                      row.coverage_percent, row.wall_accuracy_percent, row.goal, row.speed_run, row.ms, row.end,
-                     csv_quoted(row.error));
+                     common::csv_field(row.error));
 }
 
 std::string format_batch_csv(const std::vector<BatchItem> &items) {

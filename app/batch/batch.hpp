@@ -119,11 +119,10 @@ std::string format_batch_table(const std::vector<BatchItem> &items, double elaps
 
 inline constexpr std::string_view kBatchCsvHeader =
     "world,size,moves,coverage,wall_accuracy,goal,speed_run,ms,end,error";
-// The same as CSV, kBatchCsvHeader then a line a row, empty where a column does not apply;
-// interrupted worlds are left out (the file holds the finished runs).
+// The same as CSV (common/csv.hpp), kBatchCsvHeader then a line a row, empty where a column
+// does not apply; interrupted worlds are left out (the file holds the finished runs).
 std::string format_batch_csv(const std::vector<BatchItem> &items);
 std::string format_batch_csv_row(const BatchRow &row);
-std::string csv_quoted(const std::string &text);
 
 // --shard K/N: the K-th (1-based) of N contiguous, near-equal parts of the world list, the
 // same on every machine for the same list; parts 1 ... N together are the list, in order.

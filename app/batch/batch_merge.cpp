@@ -1,58 +1,29 @@
 // batch --shard K/N and batch merge (see app/batch/batch.hpp).
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "common/parse_number.hpp"
+#include "common/csv.hpp"
 #include "app/batch/batch.hpp"
 #include "common/error.hpp"
 
 namespace app {
 namespace {
 
-std::optional<int> whole(std::string_view text) {
-  int value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
-std::optional<double> decimal(std::string_view text) {
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-    return std::nullopt;  // "nan" and "inf" parse, and are no time or percentage
-  }
-  return value;
-}
-
-// The fields of one CSV line ("" quoted, "" inside for a quote); nothing when a quote is
-// left open.
-std::optional<std::vector<std::string>> csv_fields(std::string_view line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-      fields.back() += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  if (quoted) return std::nullopt;
-  return fields;
+// The fields' texts of one CSV line (common/csv.hpp); nothing when a quote is left open.
+std::optional<std::vector<std::string>> csv_texts(std::string_view line) {
+  const std::optional<std::vector<common::CsvField>> fields = common::csv_fields(line);
+  if (!fields) return std::nullopt;
+  std::vector<std::string> texts;
+  for (const common::CsvField &f : *fields) texts.push_back(f.text);
+  return texts;
 }
 
 // One row from its fields (kBatchCsvHeader's columns); nothing when a number does not parse.
@@ -67,10 +38,10 @@ std::optional<BatchRow> row_from(const std::vector<std::string> &f) {
   // not say was the user's) did not map its maze, whatever part it was merged from.
   row.ok = row.ok && (f[8] == robot::to_string(robot::EndReason::done) ||
                       f[8] == robot::to_string(robot::EndReason::max_steps));
-  const std::optional<int> moves = whole(f[2]);
-  const std::optional<double> coverage = decimal(f[3]);
-  const std::optional<double> accuracy = decimal(f[4]);
-  const std::optional<double> ms = decimal(f[7]);
+  const std::optional<int> moves = common::parse_number<int>(f[2]);
+  const std::optional<double> coverage = common::parse_number<double>(f[3]);
+  const std::optional<double> accuracy = common::parse_number<double>(f[4]);
+  const std::optional<double> ms = common::parse_number<double>(f[7]);
   if (!moves || !coverage || !accuracy || !ms) return std::nullopt;
   row.size = f[1];
   row.moves = *moves;
@@ -94,13 +65,13 @@ void read_one(const std::string &file, std::vector<BatchRow> &rows) {
   for (int number = 2; std::getline(in, line); ++number) {
     // A quoted field may hold a newline (a path with one): the record goes on on the next line.
     const int first = number;
-    std::optional<std::vector<std::string>> fields = csv_fields(line);
+    std::optional<std::vector<std::string>> fields = csv_texts(line);
     std::string more;
     while (!fields && std::getline(in, more)) {
       ++number;
       line += '\n';
       line += more;
-      fields = csv_fields(line);
+      fields = csv_texts(line);
     }
     const std::optional<BatchRow> row =
         fields && fields->size() == 10 ? row_from(*fields) : std::optional<BatchRow>();
@@ -116,8 +87,8 @@ void read_one(const std::string &file, std::vector<BatchRow> &rows) {
 
 Shard parse_shard(const std::string &text) {
   const std::size_t slash = text.find('/');
-  const std::optional<int> k = slash == std::string::npos ? std::nullopt : whole(std::string_view(text).substr(0, slash));
-  const std::optional<int> n = slash == std::string::npos ? std::nullopt : whole(std::string_view(text).substr(slash + 1));
+  const std::optional<int> k = slash == std::string::npos ? std::nullopt : common::parse_number<int>(std::string_view(text).substr(0, slash));
+  const std::optional<int> n = slash == std::string::npos ? std::nullopt : common::parse_number<int>(std::string_view(text).substr(slash + 1));
   if (!k || !n || *n < 1 || *k < 1 || *k > *n) {
     throw common::InputError(fmt::format("--shard must be K/N with 1 <= K <= N, e.g. 2/8 (got '{}')", text));
   }

@@ -1,3 +1,4 @@
+#include "common/csv.hpp"
 #include "app/batch/mms_batch.hpp"
 
 #include <algorithm>
@@ -140,7 +141,7 @@ std::string format_mms_batch_csv(const std::vector<MmsBatchItem> &items) {
     std::string line;
     for (const std::string &cell : cells_of(item)) {
       if (!line.empty()) line += ',';
-      line += csv_quoted(cell);
+      line += common::csv_field(cell);
     }
     out += line + '\n';
   }

@@ -1,14 +1,13 @@
+#include "common/parse_number.hpp"
 #include "app/cli/cli_options.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <string_view>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -22,10 +21,9 @@ namespace app {
 namespace {
 
 bool whole_number(std::string_view text, int &value) {
-  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+  const std::optional<int> number = common::parse_number_trimmed<int>(text);
+  if (number) value = *number;
+  return number.has_value();
 }
 
 // "X,Y", or nothing.
@@ -107,10 +105,7 @@ double checked_cell_size(double m) {
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
   const CLI::Validator whole_from_zero(
       [](std::string &text) {
-        std::uint64_t value = 0;
-        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-        const bool whole = !text.empty() && ec == std::errc() && end == text.data() + text.size();
-        return whole ? std::string()
+        return common::parse_number<std::uint64_t>(text) ? std::string()
                      : fmt::format("must be a whole number from 0 to {} (got '{}')",
                                    std::numeric_limits<std::uint64_t>::max(), text);
       },

@@ -13,8 +13,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/parse_number.hpp"
+#include "common/csv.hpp"
 #include "app/report/files_recorder.hpp"
-#include "app/batch/batch.hpp"  // csv_quoted
 #include "app/report/outputs.hpp"
 #include "app/run/run.hpp"
 #include "app/run/run_report.hpp"
@@ -63,7 +64,7 @@ std::vector<int> parse_ks(const std::string &subcells) {
     const bool digits = !part.empty() && part.size() <= 9 &&
                         part.find_first_not_of("0123456789") == std::string::npos;
     if (!digits) throw common::InputError(fmt::format("--subcells must be a list like 3,5 (got '{}')", subcells));
-    const int k = std::stoi(part);
+    const int k = common::parse_number<int>(part).value_or(0);
     validate_subcells(k);
     if (std::find(ks.begin(), ks.end(), k) != ks.end()) {
       throw common::InputError(fmt::format("--subcells lists K {} twice (got '{}'); each K is one run", k, subcells));
@@ -128,11 +129,6 @@ std::vector<std::vector<std::string>> summary_table(const std::vector<int> &ks, 
   return columns;
 }
 
-// A CSV field, quoted only when it must be.
-std::string csv_field(const std::string &text) {
-  return text.find_first_of(",\"\n") == std::string::npos ? text : csv_quoted(text);
-}
-
 // compare.csv: a row per K, the K first, then the summary's keys as the table prints them.
 std::string compare_csv(const std::vector<int> &ks, const std::vector<std::vector<std::string>> &table) {
   std::string out = "k";
@@ -140,7 +136,10 @@ std::string compare_csv(const std::vector<int> &ks, const std::vector<std::vecto
   out += "\n";
   for (std::size_t n = 0; n < ks.size(); ++n) {
     out += std::to_string(ks[n]);
-    for (std::size_t row = 1; row < table[n + 1].size(); ++row) out += "," + csv_field(table[n + 1][row]);
+    for (std::size_t row = 1; row < table[n + 1].size(); ++row) {
+      out += ',';
+      out += common::csv_field(table[n + 1][row]);
+    }
     out += "\n";
   }
   return out;

@@ -2,18 +2,17 @@
 // model and its conventions, render/demo_1d_render.hpp for the table and plots).
 
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <iostream>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "common/parse_number.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/demo_commands.hpp"
 #include "common/atomic_file.hpp"
@@ -45,13 +44,12 @@ std::string_view trimmed(std::string_view text) {
 }
 
 double parse_measurement(std::string_view item, std::size_t number) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-  if (item.empty() || error != std::errc{} || end != item.data() + item.size()) {
+  const std::optional<double> value = common::parse_real(item);  // finite: checked with the others
+  if (!value) {
     throw common::InputError(
         fmt::format("--measurements item {} is not a number (got '{}')", number, item));
   }
-  return value;
+  return *value;
 }
 
 // "101, 82,91" -> {101, 82, 91}; an empty or blank text is an empty list.

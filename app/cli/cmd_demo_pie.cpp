@@ -2,7 +2,6 @@
 // (sensing/pie_demo.hpp for the rule, docs/lab-pie.md for the exercise).
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,10 +9,10 @@
 #include <numbers>
 #include <string>
 #include <vector>
-#include <system_error>
 
 #include <fmt/format.h>
 
+#include "common/parse_number.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "common/atomic_file.hpp"
@@ -190,14 +189,12 @@ std::vector<double> parse_number_list(std::string_view text, const std::string &
   for (std::size_t start = 0;;) {
     const std::size_t comma = text.find(',', start);
     std::string_view item = text.substr(start, comma == std::string_view::npos ? text.npos : comma - start);
-    while (!item.empty() && (item.front() == ' ' || item.front() == '\t')) item.remove_prefix(1);
-    while (!item.empty() && (item.back() == ' ' || item.back() == '\t')) item.remove_suffix(1);
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-    if (item.empty() || error != std::errc{} || end != item.data() + item.size()) {
+    item = common::trim_blanks(item);
+    const std::optional<double> value = common::parse_real(item);  // finite: checked by each option
+    if (!value) {
       throw common::InputError(fmt::format("{} item {} is not a number (got '{}')", option, values.size() + 1, item));
     }
-    values.push_back(value);
+    values.push_back(*value);
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }

@@ -1,7 +1,6 @@
 // maze_mapper map-log LOG.csv: a pose + bump/depth log mapped onto a numCells grid, the
 // Cornell-style homework (sensing/log_map.hpp for the rule, docs/lab-map-log.md).
 
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,7 +9,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -18,6 +16,8 @@
 #include "app/cli/cli_options.hpp"
 #include "app/cli/help_format.hpp"
 #include "app/picture/plain_grid_picture.hpp"
+#include "common/csv.hpp"
+#include "common/parse_number.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "app/cli/demo_commands.hpp"
@@ -55,24 +55,12 @@ void check_sensor_options(const MapLogInput &input, sensing::LogSensor sensor) {
   }
 }
 
-// A CSV field: its text and the column (1-based) it starts at.
-struct Field {
-  std::string text;
-  int column;
-};
-
-std::vector<Field> split_fields(const std::string &line) {
-  std::vector<Field> fields;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    std::string text = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const std::size_t first = text.find_first_not_of(" \t\r");
-    text = first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-    fields.push_back({text, static_cast<int>(start) + 1});
-    if (comma == std::string::npos) return fields;
-    start = comma + 1;
-  }
+// The fields of one line of the log (common/csv.hpp), blanks around each removed.
+std::vector<common::CsvField> split_fields(const std::string &file, int number, const std::string &line) {
+  std::optional<std::vector<common::CsvField>> fields = common::csv_fields(line);
+  if (!fields) throw common::InputError({file, number, 1}, "a quoted field is not closed on its line");
+  for (common::CsvField &f : *fields) f.text = std::string(common::trim_blanks(f.text));
+  return std::move(*fields);
 }
 
 // run --out's trace.csv names for the log's columns (app/report/trace_sensors.hpp): the time, the
@@ -120,13 +108,12 @@ sensing::LogSensor pick_sensor(const MapLogInput &input, const Columns &columns)
   return depth ? sensing::LogSensor::depth : sensing::LogSensor::bump;
 }
 
-double number_at(const std::string &file, int line, const Field &f, const std::string &name) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(f.text.data(), f.text.data() + f.text.size(), value);
-  if (f.text.empty() || error != std::errc{} || end != f.text.data() + f.text.size() || !std::isfinite(value)) {
+double number_at(const std::string &file, int line, const common::CsvField &f, const std::string &name) {
+  const std::optional<double> value = common::parse_number<double>(f.text);
+  if (!value) {
     throw common::InputError({file, line, f.column}, fmt::format("{} must be a finite number (got '{}')", name, f.text));
   }
-  return value;
+  return *value;
 }
 
 struct Log {
@@ -134,7 +121,7 @@ struct Log {
   std::vector<sensing::LogStep> steps;
 };
 
-sensing::LogStep parse_step(const std::string &file, int line, const std::vector<Field> &fields, const Columns &c,
+sensing::LogStep parse_step(const std::string &file, int line, const std::vector<common::CsvField> &fields, const Columns &c,
                             sensing::LogSensor sensor) {
   const auto value = [&](const std::string &name) {
     const std::size_t at = *c.find(name);
@@ -166,7 +153,7 @@ Log read_log(const MapLogInput &input) {
   std::string line;
   if (!std::getline(in, line)) throw common::InputError({input.log_path, 0, 0}, "the log is empty; expected a header line");
   Columns columns;
-  for (const Field &f : split_fields(line)) columns.names.push_back(f.text);
+  for (const common::CsvField &f : split_fields(input.log_path, 1, line)) columns.names.push_back(f.text);
   Log log;
   log.sensor = pick_sensor(input, columns);
   std::vector<std::string> needed{"t", "x", "y", "theta"};
@@ -181,7 +168,7 @@ Log read_log(const MapLogInput &input) {
   }
   for (int number = 2; std::getline(in, line); ++number) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const auto fields = split_fields(line);
+    const auto fields = split_fields(input.log_path, number, line);
     if (fields.size() != columns.names.size()) {
       throw common::InputError({input.log_path, number, 1},
                                fmt::format("expected {} fields like the header, got {}", columns.names.size(), fields.size()));

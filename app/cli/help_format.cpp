@@ -1,3 +1,4 @@
+#include "common/parse_number.hpp"
 #include "app/cli/help_format.hpp"
 
 #include <unistd.h>
@@ -274,9 +275,8 @@ void assign_groups(CLI::App &command, const std::shared_ptr<ReadableFormatter> &
 
 std::size_t help_width() {
   if (const char *text = std::getenv("COLUMNS")) {
-    char *end = nullptr;
-    const long n = std::strtol(text, &end, 10);
-    if (end != text && *end == '\0' && n >= 40 && n <= 500) return static_cast<std::size_t>(n);
+    const std::optional<int> n = common::parse_number<int>(text);
+    if (n && *n >= 40 && *n <= 500) return static_cast<std::size_t>(*n);
   }
   if (is_terminal(STDOUT_FILENO)) return static_cast<std::size_t>(std::clamp(terminal_size(STDOUT_FILENO).columns, 40, 500));
   return 80;

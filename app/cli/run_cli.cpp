@@ -1,7 +1,7 @@
+#include "common/parse_number.hpp"
 #include "app/cli/run_cli.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
@@ -115,10 +115,7 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   // CLI11 alone clamps a number past the type's range to its maximum, silently.
   const CLI::Validator whole_steps(
       [](std::string &text) {
-        std::int64_t value = 0;
-        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-        const bool whole = !text.empty() && ec == std::errc() && end == text.data() + text.size();
-        return whole ? std::string()
+        return common::parse_number<std::int64_t>(text) ? std::string()
                      : fmt::format("must be a whole number from 1 to {} (got '{}')",
                                    std::numeric_limits<std::int64_t>::max(), text);
       },

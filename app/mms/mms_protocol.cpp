@@ -1,7 +1,7 @@
+#include "common/parse_number.hpp"
 #include "app/mms/mms_protocol.hpp"
 
 #include <array>
-#include <charconv>
 #include <limits>
 #include <vector>
 
@@ -67,10 +67,7 @@ std::vector<std::string_view> tokens_of(std::string_view line) {
 // A decimal integer with an optional sign, the whole token.
 std::optional<int> integer(std::string_view token) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  int value = 0;
-  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (ec != std::errc() || end != token.data() + token.size() || token.empty()) return std::nullopt;
-  return value;
+  return common::parse_number<int>(token);
 }
 
 ParsedLine failed(std::string error) { return ParsedLine{std::nullopt, std::move(error)}; }
