@@ -1,0 +1,135 @@
+// maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/room_run.hpp).
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/cli/cli_options.hpp"
+#include "app/cli/model_options.hpp"
+#include "app/room/room_run.hpp"
+#include "common/error.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/demo_commands.hpp"
+
+namespace app {
+namespace {
+
+struct RoomInput {
+  std::string strategy = "frontier";
+  std::string model = "ray";
+  std::string cells, resolution, boundary, waypoints, goal, start, snapshots_at, snapshot_steps;
+  RoomRunOptions options;
+};
+
+mapping::Point point_of(const std::string &text, const std::string &option) {
+  const std::vector<double> v = parse_number_list(text, option, 2);
+  return {v[0], v[1]};
+}
+
+void build(RoomInput &in, const CLI::App &cmd) {
+  RoomRunOptions &o = in.options;
+  o.room.strategy = robot::parse_room_strategy(in.strategy);
+  if (in.model == "cell") {
+    throw common::InputError("--model cell reads a maze's cell sides; in a room the lidar marks with --model ray");
+  }
+  o.model.kind = sensing::parse_model(in.model);
+  if (!in.cells.empty() && !in.resolution.empty()) throw common::InputError("give --cells or --resolution, not both");
+  if (!in.cells.empty()) {
+    const std::vector<double> c = parse_number_list(in.cells, "--cells", 2);
+    for (const double v : c) {
+      if (!(v >= 1 && v <= sensing::kMaxRoomCellsPerSide && v == std::floor(v))) {
+        throw common::InputError(fmt::format("--cells must be X,Y with each a whole number 1 to {} (got {})",
+                                             sensing::kMaxRoomCellsPerSide, in.cells));
+      }
+    }
+    o.cells_x = static_cast<int>(c[0]);
+    o.cells_y = static_cast<int>(c[1]);
+  }
+  if (!in.resolution.empty()) o.resolution_m = parse_number_list(in.resolution, "--resolution", 1)[0];
+  if (!in.boundary.empty()) {
+    const std::vector<double> b = parse_number_list(in.boundary, "--boundary", 4);
+    o.boundary = sensing::RoomBoundary{b[0], b[1], b[2], b[3]};
+  }
+  if (!in.waypoints.empty()) {
+    std::string text = in.waypoints;
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t semi = text.find(';', start);
+      o.room.waypoints.push_back(point_of(text.substr(start, semi == std::string::npos ? std::string::npos : semi - start),
+                                          "--waypoints"));
+      if (semi == std::string::npos) break;
+      start = semi + 1;
+    }
+  }
+  if (!in.goal.empty()) o.room.goal = point_of(in.goal, "--goal");
+  if (!in.start.empty()) {
+    const std::vector<double> s = parse_number_list(in.start, "--start");
+    if (s.size() != 2 && s.size() != 3) throw common::InputError("--start must be X,Y or X,Y,DEG");
+    o.start = mapping::Point{s[0], s[1]};
+    if (s.size() == 3) o.start_yaw_deg = s[2];
+  }
+  if (!in.snapshots_at.empty()) o.snapshots_at_s = parse_number_list(in.snapshots_at, "--snapshots-at");
+  if (!in.snapshot_steps.empty()) {
+    for (const double v : parse_number_list(in.snapshot_steps, "--snapshot-steps")) {
+      if (!(v >= 1 && v == std::floor(v))) throw common::InputError("--snapshot-steps must be whole numbers >= 1");
+      o.snapshot_steps.push_back(static_cast<std::int64_t>(v));
+    }
+  }
+  // Options of one strategy given to another are refused, not ignored.
+  const auto given = [&cmd](const char *name) { return cmd.get_option(name)->count() > 0; };
+  using robot::RoomStrategy;
+  if (given("--waypoints") && o.room.strategy != RoomStrategy::waypoints) {
+    throw common::InputError("--waypoints applies to --strategy waypoints only");
+  }
+  if (given("--goal") && o.room.strategy != RoomStrategy::wavefront) {
+    throw common::InputError("--goal applies to --strategy wavefront only");
+  }
+  if (given("--dilate") && o.room.strategy != RoomStrategy::wavefront && o.room.strategy != RoomStrategy::frontier) {
+    throw common::InputError("--dilate applies to --strategy wavefront and frontier only");
+  }
+}
+
+}  // namespace
+
+void add_room_command(CLI::App &cli, CommandContext &context) {
+  CLI::App *cmd = cli.add_subcommand("room", "a robot in a room or arena maps it onto a numCells grid: waypoints, "
+                                             "wavefront to a goal, frontier exploration or wander");
+  auto in = std::make_shared<RoomInput>();
+  RoomRunOptions &o = in->options;
+  cmd->add_option("WORLD", o.world, "the world file")->required();
+  cmd->add_option("--strategy", in->strategy, "waypoints, wavefront, frontier or wander (default frontier)");
+  cmd->add_option("--model", in->model, "ray (lidar), pie or cone (IR/sonar ring), bump or depth (default ray)");
+  cmd->add_option("--robot", o.robot, "a robot profile or JSON file (default: the set-up's robot)");
+  cmd->add_option("--cells", in->cells, "X,Y: numCells over the boundary (square cells)");
+  cmd->add_option("--resolution", in->resolution, "M: cell size, m (default 0.1)");
+  cmd->add_option("--boundary", in->boundary, "XS,XE,YS,YE: the map's extent, m (default the world's)");
+  cmd->add_option("--start", in->start, "X,Y[,DEG]: where the robot starts, m (default the world's start)");
+  cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
+  cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
+  cmd->add_option("--dilate", o.room.dilate, "N: obstacles grown by N cells for planning (default 1)");
+  cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most (wander needs it; default none)");
+  cmd->add_option("--snapshots-at", in->snapshots_at, "T1,T2,...: print the map at these simulated seconds");
+  cmd->add_option("--snapshot-steps", in->snapshot_steps, "N1,N2,...: print the map at these control steps");
+  cmd->add_option("--threshold", o.threshold, "log-odds drawn W at or above (default 0; bump and depth -0.5)");
+  cmd->add_option("--max-steps", o.max_steps, "control steps at most (default 2000000)");
+  add_seed_option(*cmd, o.simulation.seed, "the simulation's noise and wander's turns");
+  add_model_options(*cmd, o.sensor);
+  cmd->add_flag("--quiet", o.quiet, "print the summary only");
+  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json");
+  cmd->callback([&context, in, cmd] {
+    build(*in, *cmd);
+    in->options.room.seed = in->options.simulation.seed;
+    if (in->options.model.kind == sensing::ModelKind::bump || in->options.model.kind == sensing::ModelKind::depth) {
+      if (cmd->get_option("--log-base")->count() == 0) in->options.sensor.base = mapping::LogBase::ten;
+    }
+    const RoomSummary summary = run_room(in->options, std::cout);
+    context.status = room_exit_status(summary);
+  });
+}
+
+}  // namespace app
