@@ -385,7 +385,10 @@ RoomEnding RoomController::run_frontier() {
     // The nearest reachable cell that sees its frontier cell: no cell seen occupied on the line.
     std::vector<std::size_t> candidates;
     for (std::size_t n = 0; n < map_.size(); ++n) {
-      if (steps[n] >= 0 && near[n] >= 0) candidates.push_back(n);
+      // Each visit that left its frontier cell unobserved brings the next one nearer to it.
+      if (steps[n] >= 0 && near[n] >= 0 && near[n] <= std::max(1, view_cells >> attempts[nearest_frontier[n]])) {
+        candidates.push_back(n);
+      }
     }
     std::stable_sort(candidates.begin(), candidates.end(),
                      [&steps](std::size_t a, std::size_t b) { return steps[a] < steps[b]; });
@@ -439,7 +442,7 @@ RoomEnding RoomController::run_frontier() {
       if (const Motion m = look_around(); m != Motion::ok) return finish(m);
     }
     attempts[aim] = static_cast<std::uint8_t>(std::min(attempts[aim] + 1, 255));
-    if (map_.unobserved_at(aim) && (map_.index(robot_cell()) == target || attempts[aim] >= kMaxFrontierAttempts)) {
+    if (map_.unobserved_at(aim) && attempts[aim] >= kMaxFrontierAttempts) {
       set_aside[aim] = true;
     }
   }
