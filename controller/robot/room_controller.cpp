@@ -22,7 +22,6 @@ namespace {
 using mapping::Point;
 using sensing::RoomCell;
 
-constexpr int kMaxRoomDilate = 8;
 constexpr int kMaxFrontierAttempts = 3;
 // A planned leg (on the grown map) stops only when a return ahead is this close to the body.
 constexpr double kTouchMargin_m = 0.03;  // a frontier cell aimed at this often and still unobserved is set aside
@@ -31,63 +30,7 @@ int time_step_of(webots::Robot &robot, const MotionOptions &m) {
   return m.time_step_ms > 0 ? m.time_step_ms : static_cast<int>(std::lround(robot.getBasicTimeStep()));
 }
 
-void require(bool ok, const std::string &message) {
-  if (!ok) throw common::InputError(message);
-}
-
 }  // namespace
-
-std::string_view to_string(RoomStrategy s) {
-  switch (s) {
-    case RoomStrategy::waypoints: return "waypoints";
-    case RoomStrategy::wavefront: return "wavefront";
-    case RoomStrategy::frontier: return "frontier";
-    case RoomStrategy::wander: return "wander";
-  }
-  return "?";
-}
-
-RoomStrategy parse_room_strategy(std::string_view name) {
-  for (const RoomStrategy s : {RoomStrategy::waypoints, RoomStrategy::wavefront, RoomStrategy::frontier,
-                               RoomStrategy::wander}) {
-    if (to_string(s) == name) return s;
-  }
-  throw common::InputError(
-      fmt::format("--strategy must be waypoints, wavefront, frontier or wander in a room (got '{}')", name));
-}
-
-std::string_view to_string(RoomEnding e) {
-  switch (e) {
-    case RoomEnding::done: return "done";
-    case RoomEnding::goal_reached: return "goal reached";
-    case RoomEnding::arrived: return "arrived";
-    case RoomEnding::blocked: return "blocked";
-    case RoomEnding::unreachable: return "unreachable";
-    case RoomEnding::incomplete: return "incomplete";
-    case RoomEnding::time_up: return "time up";
-    case RoomEnding::no_progress: return "no progress";
-    case RoomEnding::max_steps: return "max steps";
-    case RoomEnding::simulation_ended: return "simulation ended";
-    case RoomEnding::stopped: return "stopped";
-  }
-  return "?";
-}
-
-void validate(const RoomOptions &o) {
-  require(o.strategy != RoomStrategy::waypoints || !o.waypoints.empty(),
-          "--strategy waypoints needs --waypoints X,Y;X,Y...");
-  require(o.strategy != RoomStrategy::wavefront || o.goal.has_value(), "--strategy wavefront needs --goal X,Y");
-  require(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time S");
-  require(o.dilate >= 0 && o.dilate <= kMaxRoomDilate,
-          fmt::format("--dilate must be 0 to {} cells (got {})", kMaxRoomDilate, o.dilate));
-  require(o.free_below_p > 0.0 && o.free_below_p <= 1.0, "the free threshold must be in (0, 1]");
-  require(std::isfinite(o.time_limit_s) && o.time_limit_s >= 0.0,
-          fmt::format("--time must be >= 0 s (got {})", o.time_limit_s));
-  for (const Point &p : o.waypoints) {
-    require(std::isfinite(p.x_m) && std::isfinite(p.y_m), "--waypoints must be finite numbers");
-  }
-  require(o.stop_distance_m > 0.0 && o.back_off_m > 0.0 && o.view_m > 0.0, "room distances must be > 0 m");
-}
 
 RoomController::RoomController(webots::Robot &robot, const ControllerOptions &options, const RoomOptions &room,
                                sensing::RoomMap &map, RoomStepHook on_step)
@@ -313,6 +256,37 @@ RoomEnding RoomController::run_wavefront() {
   }
 }
 
+void RoomController::spread_view(const std::vector<bool> &frontier, int view_cells, std::vector<std::int32_t> &near,
+                                 std::vector<std::size_t> &nearest_frontier) const {
+  // Cells within view of a frontier: a breadth-first spread from every frontier cell, view_cells deep,
+  // over cells not seen occupied.
+  near.assign(map_.size(), -1);
+  nearest_frontier.assign(map_.size(), 0);
+  std::deque<std::size_t> queue;
+  for (std::size_t n = 0; n < map_.size(); ++n) {
+    if (frontier[n]) {
+      near[n] = 0;
+      nearest_frontier[n] = n;
+      queue.push_back(n);
+    }
+  }
+  while (!queue.empty()) {
+    const std::size_t c = queue.front();
+    queue.pop_front();
+    if (near[c] >= view_cells) continue;
+    const RoomCell rc = map_.cell_of_index(c);
+    for (const auto &d : {std::pair{0, 1}, std::pair{1, 0}, std::pair{0, -1}, std::pair{-1, 0}}) {
+      const RoomCell nb{rc.i + d.first, rc.j + d.second};
+      if (!map_.contains(nb)) continue;
+      const std::size_t k = map_.index(nb);
+      if (near[k] >= 0 || map_.probability_at(k) >= room_.free_below_p - 1e-9) continue;
+      near[k] = near[c] + 1;
+      nearest_frontier[k] = nearest_frontier[c];
+      queue.push_back(k);
+    }
+  }
+}
+
 RoomEnding RoomController::run_frontier() {
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
   std::vector<bool> set_aside(map_.size(), false);
@@ -352,33 +326,9 @@ RoomEnding RoomController::run_frontier() {
                              aside == 1 ? "" : "s");
       return RoomEnding::incomplete;
     }
-    // Cells within view of a frontier: a breadth-first spread from every frontier cell, view_cells deep,
-    // over cells not seen occupied.
-    std::vector<std::int32_t> near(map_.size(), -1);
-    std::vector<std::size_t> nearest_frontier(map_.size(), 0);
-    std::deque<std::size_t> queue;
-    for (std::size_t n = 0; n < map_.size(); ++n) {
-      if (frontier[n]) {
-        near[n] = 0;
-        nearest_frontier[n] = n;
-        queue.push_back(n);
-      }
-    }
-    while (!queue.empty()) {
-      const std::size_t c = queue.front();
-      queue.pop_front();
-      if (near[c] >= view_cells) continue;
-      const RoomCell rc = map_.cell_of_index(c);
-      for (const auto &d : {std::pair{0, 1}, std::pair{1, 0}, std::pair{0, -1}, std::pair{-1, 0}}) {
-        const RoomCell nb{rc.i + d.first, rc.j + d.second};
-        if (!map_.contains(nb)) continue;
-        const std::size_t k = map_.index(nb);
-        if (near[k] >= 0 || map_.probability_at(k) >= room_.free_below_p - 1e-9) continue;
-        near[k] = near[c] + 1;
-        nearest_frontier[k] = nearest_frontier[c];
-        queue.push_back(k);
-      }
-    }
+    std::vector<std::int32_t> near;
+    std::vector<std::size_t> nearest_frontier;
+    spread_view(frontier, view_cells, near, nearest_frontier);
     const std::size_t here = map_.index(robot_cell());
     const std::vector<bool> blocked = obstacles(true);
     const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, here);

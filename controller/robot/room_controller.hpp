@@ -105,6 +105,10 @@ class RoomController {
   void mark_under_body();
   // Whether the line between two cells' centres crosses no cell seen occupied (besides `to`).
   bool sees(std::size_t from, std::size_t to) const;
+  // Cells within view_cells steps (over cells not seen occupied) of a frontier cell: their
+  // steps (-1 beyond) and the frontier cell they are nearest.
+  void spread_view(const std::vector<bool> &frontier, int view_cells, std::vector<std::int32_t> &near,
+                   std::vector<std::size_t> &nearest_frontier) const;
   // A bump, or a return ahead closer than stop_distance_m (waypoints, wander).
   bool blocked_ahead() const;
   // A bump, or a return ahead about to touch the body (legs planned on the grown map).
