@@ -124,6 +124,17 @@ class RoomController {
   RoomEnding run_waypoints();
   RoomEnding run_wavefront();
   RoomEnding run_frontier();
+  // frontier's steps (robot/room_frontier.cpp). The cell to drive to: the nearest by `steps`
+  // (from the robot, -1 unreachable) within view of a frontier cell (closer after each visit
+  // that left it unobserved, `attempts`) that sees it; map_.size() when none. Fills
+  // nearest_frontier (spread_view's).
+  std::size_t frontier_target(const std::vector<bool> &frontier, int view_cells,
+                              const std::vector<std::uint8_t> &attempts, const std::vector<std::int32_t> &steps,
+                              std::vector<std::size_t> &nearest_frontier) const;
+  // Drives path_'s corners until its end, a touch (sets *stopped) or the rest of it seen blocked.
+  Motion drive_path_corners(bool *stopped);
+  // Straight back by back_off_m.
+  Motion back_off();
   RoomEnding run_wander();
 
   webots::Robot &robot_;
