@@ -31,7 +31,8 @@ struct Frontier {
 
 // Frontier cells: unobserved, beside a cell seen free; those set aside are counted apart.
 Frontier find_frontier(const sensing::RoomMap &map, const std::vector<bool> &set_aside) {
-  Frontier count{std::vector<bool>(map.size(), false)};
+  Frontier count;
+  count.cells = std::vector<bool>(map.size(), false);
   for (std::size_t n = 0; n < map.size(); ++n) {
     if (!map.unobserved_at(n)) continue;
     const RoomCell c = map.cell_of_index(n);

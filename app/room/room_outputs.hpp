@@ -1,0 +1,36 @@
+#pragma once
+// What the room run (app/room/room_run.hpp) prints and writes: the maps as text, the summary,
+// and --out DIR's files.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/room/room_run.hpp"
+#include "robot/room_controller.hpp"
+#include "sensing/room_map.hpp"
+#include "sensing/setups.hpp"
+
+namespace app {
+
+// The ASCII map, north row first: W at or above the threshold, . below, blank never observed,
+// * the last planned path, the robot's arrow.
+std::string room_ascii_map(const robot::RoomController &c, double threshold);
+// 1 at or above the threshold, else 0, north row first.
+std::string room_binary_map(const sensing::RoomMap &map, double threshold);
+// The wave's numbers, north row first, right-aligned; "" for an empty wave.
+std::string room_wave_numbers(const sensing::RoomMap &map, const std::vector<std::int32_t> &wave);
+// The summary people read (the last line: the wall time).
+std::string room_summary_text(const RoomRunOptions &options, const std::string &robot_name,
+                              const sensing::SetUp &setup, const sensing::RoomGridSpec &spec,
+                              const RoomSummary &summary);
+// summary.json's text (no wall time: the same run writes the same file).
+std::string room_summary_json(const RoomRunOptions &options, const std::string &robot_name,
+                              const sensing::SetUp &setup, const sensing::RoomGridSpec &spec,
+                              const RoomSummary &summary);
+// Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml and summary.json into dir,
+// each atomically.
+void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
+                        const std::string &summary_json, double threshold);
+
+}  // namespace app
