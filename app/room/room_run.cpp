@@ -18,7 +18,6 @@
 #include "app/room/room_outputs.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
-#include "app/run/run_options.hpp"
 #include "common/compass.hpp"
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
@@ -103,15 +102,14 @@ void check_places(const maze::Arena &arena, const RoomRunOptions &options, const
   }
 }
 
-// The controller's options for the robot and set-up, at most --max-steps (2 000 000) steps.
+// The controller's options: the robot's description (the room command has no --noise: the
+// scan filter takes the lidar's data sheet), the set-up, at most --max-steps (2 000 000) steps.
 robot::ControllerOptions room_controller_options(const RoomRunOptions &options,
                                                  const maze::sim::RobotProfile &profile) {
-  RunOptions run_options;
-  run_options.sensor = options.sensor;
-  run_options.model = options.model;
-  run_options.range_model = options.range_model;
-  run_options.max_steps = options.max_steps;
-  robot::ControllerOptions controller = controller_options(run_options, maze::Maze(1, 1), profile);
+  robot::ControllerOptions controller = robot_description(profile, std::nullopt);
+  controller.sensor = options.sensor;
+  controller.model = options.model;
+  controller.sensing.range_model = options.range_model;
   controller.motion.max_steps = options.max_steps.value_or(std::int64_t{2'000'000});
   return controller;
 }

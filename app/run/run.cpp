@@ -168,9 +168,28 @@ void judge_ending(const RunOptions &options, RunSummary &summary) {
 
 }  // namespace
 
+robot::ControllerOptions robot_description(const maze::sim::RobotProfile &profile,
+                                           std::optional<double> noise_fraction) {
+  robot::ControllerOptions c;
+  c.motion.wheel_radius_m = profile.wheel_radius_m;
+  c.motion.axle_m = profile.axle_m;
+  c.devices = devices_of(profile);
+  if (!profile.lidars.empty()) {
+    const maze::sim::LidarSpec &lidar = profile.lidars.front();
+    // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
+    c.scan_filter.range_noise_m = noise_fraction.value_or(lidar.noise) * lidar.max_range_m;
+  }
+  if (profile.speed_run) {
+    c.motion.ramp_acceleration_m_s2 = profile.speed_run->acceleration_m_s2;
+    c.motion.ramp_top_speed_m_s = profile.speed_run->top_speed_m_s;
+  }
+  c.sensing = sensing_of(profile);
+  return c;
+}
+
 robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
                                             const maze::sim::RobotProfile &profile) {
-  robot::ControllerOptions c;
+  robot::ControllerOptions c = robot_description(profile, options.simulation.noise);
   c.geometry.width_cells = maze.width();
   c.geometry.height_cells = maze.height();
   c.geometry.subcells = options.subcells;
@@ -182,21 +201,8 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.sensor = options.sensor;
   c.model = options.model;
   c.strategy = options.strategy;
-  c.motion.wheel_radius_m = profile.wheel_radius_m;
-  c.motion.axle_m = profile.axle_m;
   c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
-  c.devices = devices_of(profile);
-  if (!profile.lidars.empty()) {
-    const maze::sim::LidarSpec &lidar = profile.lidars.front();
-    // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
-    c.scan_filter.range_noise_m = options.simulation.noise.value_or(lidar.noise) * lidar.max_range_m;
-  }
   c.speed_run = options.plan.speed_run;
-  if (profile.speed_run) {
-    c.motion.ramp_acceleration_m_s2 = profile.speed_run->acceleration_m_s2;
-    c.motion.ramp_top_speed_m_s = profile.speed_run->top_speed_m_s;
-  }
-  c.sensing = sensing_of(profile);
   c.sensing.range_model = options.range_model;
   if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
   return c;

@@ -95,6 +95,12 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
 robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
                                             const maze::sim::RobotProfile &profile);
 
+// The robot's description from its profile, the part of controller_options() that needs no
+// maze: wheels (and a speed run's ramp), device names, sensor mounts, and the scan filter's
+// range noise (noise_fraction, else the lidar's data sheet). Every other field is default.
+robot::ControllerOptions robot_description(const maze::sim::RobotProfile &profile,
+                                           std::optional<double> noise_fraction);
+
 // True when the robot has the devices the set-up reads (a lidar, bumpers, range sensors).
 bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &setup);
 
