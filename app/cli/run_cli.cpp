@@ -1,4 +1,5 @@
 #include "common/parse_number.hpp"
+#include "app/cli/cli_errors.hpp"
 #include "app/cli/run_cli.hpp"
 
 #include <algorithm>
@@ -113,13 +114,11 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   add_model_options(command, o.sensor);
   add_clamp_option(command, o.sensor);
   // CLI11 alone clamps a number past the type's range to its maximum, silently.
-  const CLI::Validator whole_steps(
-      [](std::string &text) {
-        return common::parse_number<std::int64_t>(text) ? std::string()
-                     : fmt::format("must be a whole number from 1 to {} (got '{}')",
-                                   std::numeric_limits<std::int64_t>::max(), text);
-      },
-      "");
+  const CLI::Validator whole_steps = usage_check("--max-steps", [](const std::string &text) {
+    return common::parse_number<std::int64_t>(text) ? std::string()
+                                                      : fmt::format("must be a whole number from 1 to {} (got '{}')",
+                                                                    std::numeric_limits<std::int64_t>::max(), text);
+  });
   command
       .add_option("--max-steps", o.max_steps, "N: stop after this many control steps (default 1000 a cell, at least 100000)")
       ->check(whole_steps);
