@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_runner.hpp"
+#include "common/error.hpp"
 #include "png_reader.hpp"
 
 namespace {
@@ -119,12 +120,13 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
 
 // Regression (the trust sweep): `compare --subcells ""` compared nothing and exited 0,
 // `run --out ""` wrote no file and `run ""` ran the default world, silently. A value typed
-// empty is refused for every option and positional (app/cli/cli_app.cpp).
+// empty is refused for every option and positional (app/cli/cli_errors.hpp).
 TEST_CASE("an option's value typed empty is an error, not the option left out") {
-  CHECK_THROWS_WITH_AS(test_cli::run({"compare", kWorld, "--subcells", ""}), "--subcells: must not be empty",
-                       CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"run", kWorld, "--out", ""}), CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"run", ""}), CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"batch", kWorld, "--csv", ""}), CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"demo", "1d", "--measurements", ""}), CLI::ValidationError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"compare", kWorld, "--subcells", ""}), "--subcells must not be empty",
+                       common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"run", kWorld, "--out", ""}), "--out must not be empty", common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"run", ""}), "WORLD must not be empty", common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"batch", kWorld, "--csv", ""}), "--csv must not be empty", common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"demo", "1d", "--measurements", ""}), "--measurements must not be empty",
+                       common::InputError);
 }
