@@ -84,7 +84,7 @@ std::string map_caption(const RunOptions &options) {
 
 std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
                      const std::string &caption) {
-  return encode_png(map_picture(grid, tones, marks, caption));
+  return map_picture(grid, tones, marks, caption).encode();
 }
 
 std::vector<bool> visited_cells(const explore::Visits &visits) {
@@ -102,7 +102,7 @@ std::string truth_png_file(const RunOptions &options, const RunFiles &files) {
   const std::vector<bool> visited = visited_cells(*files.visits);
   const TruthInput input{files.truth, &visited, files.learned, options.subcells,
                          fmt::format("truth: {}", map_caption(options))};
-  return encode_png(truth_picture(input));
+  return truth_picture(input).encode();
 }
 
 namespace {
