@@ -13,8 +13,8 @@
 
 #include "cli_runner.hpp"
 #include "png_reader.hpp"
-#include "app/plain_grid_picture.hpp"
-#include "app/run.hpp"
+#include "app/picture/plain_grid_picture.hpp"
+#include "app/run/run.hpp"
 #include "maze/world.hpp"
 
 namespace {

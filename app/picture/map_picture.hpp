@@ -1,0 +1,87 @@
+#pragma once
+// map.png (and the snapshots): the learned grid as a picture a projector survives, north up,
+// each sub-cell a square of map_scale() pixels, a legend strip under it.
+//
+//   tone     never observed: a blue-grey mid tone, kUnknownTone, whatever the prior
+//            occupied (log-odds above 0, or at least --threshold): dark, 70 after one
+//            occupied update down to 0 after four or more
+//            free (observed, not occupied): light, 215 after one free update up to 255
+//            after four or more
+//            So one p_occ update already reads as a wall, and the three tones stay apart
+//            for every model (the increments are the set-up's own, see MapTones).
+//   marks    the path (cell centres in order of arrival) in red, the start a green square,
+//            the robot (where it stands at the picture's step) a blue disc, each goal cell a
+//            gold frame; a planned path (plan.png) through its sub-cells' centres in
+//            magenta, its start a magenta disc and its end a magenta ring; each landmark a
+//            disc of its colour ringed in black
+//   axes     cell indices (x, y), as the messages name cells
+//   legend   the caption ("model cell, K 3", and a note such as a snapshot's step), what
+//            each mark means, a colour bar of the tones by log-odds (map_tone_bar) with the
+//            never-observed swatch, and a scale bar in metres
+// Drawn by app/picture/drawing.hpp in the layout of app/picture/figure.hpp.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/picture/drawing.hpp"
+#include "app/picture/figure.hpp"
+#include "mapping/grid_types.hpp"
+#include "mapping/occupancy_grid.hpp"
+
+namespace app {
+
+inline constexpr Rgb kUnknownTone{150, 160, 190};
+inline constexpr Rgb kPathColour{220, 30, 30};
+inline constexpr Rgb kStartColour{20, 170, 40};
+inline constexpr Rgb kEndColour{30, 90, 220};
+inline constexpr Rgb kGoalColour{240, 170, 0};
+inline constexpr Rgb kPlannedColour{200, 0, 200};
+
+// What the tones are measured against, in the grid's log-odds.
+struct MapTones {
+  float initial_log_odds = 0.0f;        // l(prior): never observed
+  std::optional<float> threshold;       // --threshold: occupied when >= this (default > 0)
+  double occupied_increment = 0.4055;   // one occupied update of the set-up, > 0
+  double free_increment = -0.8473;      // one free update of the set-up, < 0
+};
+
+Rgb tone(float log_odds, const MapTones &tones);
+// The tone of an observed sub-cell (occupied or free by the rule above).
+Rgb observed_tone(double log_odds, const MapTones &tones);
+// The colour bar of these tones: log-odds from four free updates (left, "free") to four
+// occupied updates (right, "occupied"), each of the knots (four and one free update, the
+// occupied threshold, one and four occupied updates) a tick an equal part of the bar apart,
+// and `unknown_label` (e.g. "never observed") in kUnknownTone after it.
+ColourBar map_tone_bar(const MapTones &tones, const std::string &unknown_label);
+
+// A landmark of the world (maze::Landmark), where it stands in the world frame (m), its
+// colour and radius.
+struct LandmarkMark {
+  mapping::Point at;
+  Rgb colour;
+  double radius_m = 0.0;
+};
+
+struct MapMarks {
+  std::vector<mapping::Cell> path;   // cells in order of arrival, start first (may be empty)
+  std::vector<mapping::Cell> goals;
+  std::vector<mapping::SubCell> planned;  // a planned path (plan.png), sub-cell centres, in magenta
+  std::vector<LandmarkMark> landmarks;    // discs of their colour, ringed in black
+};
+
+// Pixels a sub-cell: ceil(100 / K), so a cell is at least 100 px, lowered for big mazes so
+// that the map stays within 4096 px a side where it can (never below 1).
+int map_scale(const mapping::GridGeometry &geometry);
+
+// The picture (app/figure.hpp's layout); `caption` is the legend's first line. The robot's
+// mark is at marks.path's last cell.
+Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                    const std::string &caption, PictureFormat format = PictureFormat::png);
+
+// Where the map's top-left corner is in the picture of a grid of this geometry.
+PointPx map_origin_px(const mapping::GridGeometry &geometry);
+// The pixel centre of a cell in that picture.
+PointPx cell_centre_px(const mapping::GridGeometry &geometry, mapping::Cell c);
+
+}  // namespace app

@@ -1,0 +1,209 @@
+#include "app/report/truth_picture.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "app/picture/map_picture.hpp"
+
+namespace app {
+namespace {
+
+std::size_t flat(const maze::Maze &m, maze::Cell c) {
+  return static_cast<std::size_t>(c.y) * static_cast<std::size_t>(m.width()) + static_cast<std::size_t>(c.x);
+}
+
+// Where the maze is drawn: cell (x, y)'s top-left corner is origin + side_px + (x, H - 1 - y)
+// * cell_px, origin the map area's top-left corner.
+struct TruthLayout {
+  PointPx origin;
+  double cell_px = 0;
+  double side_px = 0;
+  int height_cells = 0;
+  double left(maze::Cell c) const { return origin.x + side_px + c.x * cell_px; }
+  double top(maze::Cell c) const { return origin.y + side_px + (height_cells - 1 - c.y) * cell_px; }
+};
+
+// Each landmark a disc of its colour and the course's radius, ringed in black.
+void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m) {
+  const double px_per_m = l.cell_px / m.cell_size_m();
+  for (const LandmarkMark &mark : landmark_marks(m)) {
+    const PointPx at{l.origin.x + l.side_px + (mark.at.x_m - m.origin_x_m()) * px_per_m,
+                     l.origin.y + l.side_px + (m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m};
+    page.ringed_disc(at, std::max(2.0, mark.radius_m * px_per_m), mark.colour, 1.0, Rgb{0, 0, 0});
+  }
+}
+
+Figure truth_figure(const TruthInput &in) {
+  mapping::GridGeometry g;
+  g.width_cells = in.truth->width();
+  g.height_cells = in.truth->height();
+  g.subcells = in.subcells;
+  const int cell_px = in.subcells * map_scale(g);
+  const int side_px = truth_side_px(cell_px);
+  Figure fig;
+  fig.map_w_px = in.truth->width() * cell_px + 2 * side_px;
+  fig.map_h_px = in.truth->height() * cell_px + 2 * side_px;
+  fig.axes = Axes{in.truth->width(), in.truth->height(), static_cast<double>(cell_px), 0, 0, static_cast<double>(side_px)};
+  return fig;
+}
+
+TruthLayout layout_of(const TruthInput &in, PointPx origin) {
+  const Figure fig = truth_figure(in);
+  TruthLayout l;
+  l.origin = origin;
+  l.cell_px = fig.axes->cell_px;
+  l.side_px = fig.axes->offset_px;
+  l.height_cells = in.truth->height();
+  return l;
+}
+
+// The side as a bar centred on the cell's edge; `fraction` of its length, centred.
+RectPx side_rect(const TruthLayout &l, maze::Cell c, maze::Side s, double fraction) {
+  const double t = l.side_px;
+  const double length = l.cell_px * fraction + (fraction < 1.0 ? 0 : t);
+  const double inset = (l.cell_px + t - length) / 2;
+  const double x0 = l.left(c) - t / 2;
+  const double y0 = l.top(c) - t / 2;
+  switch (s) {
+    case maze::Side::north: return {x0 + inset, y0, length, t};
+    case maze::Side::south: return {x0 + inset, y0 + l.cell_px, length, t};
+    case maze::Side::west: return {x0, y0 + inset, t, length};
+    case maze::Side::east: return {x0 + l.cell_px, y0 + inset, t, length};
+  }
+  return {};
+}
+
+void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable) {
+  const maze::Maze &m = *in.truth;
+  std::vector<Rgb> tones;
+  std::vector<RectPx> unscored;
+  for (int row = 0; row < m.height(); ++row) {
+    for (int x = 0; x < m.width(); ++x) {
+      const maze::Cell c{x, m.height() - 1 - row};
+      tones.push_back(!reachable[flat(m, c)] ? kUnreachableTone
+                      : (*in.visited)[flat(m, c)] ? kWhite : kUnvisitedTone);
+      if (!reachable[flat(m, c)]) {
+        for (const maze::Side s : maze::kSides) {
+          if (m.has_wall(c, s)) unscored.push_back(side_rect(l, c, s, 1.0));
+        }
+      }
+    }
+  }
+  page.blocks(tones, m.width(), m.height(), {l.origin.x + l.side_px, l.origin.y + l.side_px}, l.cell_px, l.cell_px);
+  page.fill_rects(unscored, kUnscoredWallColour);
+  draw_landmarks(page, l, m);  // first: the goals and the start are drawn over them
+  const double line = std::max(1.0, l.cell_px / 14);
+  for (const maze::Cell goal : m.goals()) {
+    const double inset = l.cell_px / 8 + line / 2;
+    page.stroke_rect({l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset}, line,
+                     kGoalColour);
+  }
+  const double side = std::max(2.0, l.cell_px / 3);
+  const maze::Cell start = m.start();
+  page.fill_rect({l.left(start) + (l.cell_px - side) / 2, l.top(start) + (l.cell_px - side) / 2, side, side}, kStartColour);
+}
+
+void truth_legend(Figure &fig, const TruthInput &in, const TruthCounts &counts, const TruthLayout &l) {
+  const MapScore score = counts.score();
+  fig.lines.push_back(in.caption);
+  fig.lines.push_back(fmt::format("wall_accuracy {:.2f}% ({}/{} sides)", score.wall_accuracy_percent(),
+                                  score.sides_correct, score.sides));
+  fig.lines.push_back(fmt::format("coverage {:.2f}% ({}/{} cells)", score.coverage_percent(),
+                                  score.visited_reachable_cells, score.reachable_cells));
+  fig.items = {{Swatch::line, kRightWallColour, "wall right"},
+               {Swatch::line, kMissedColour, fmt::format("missed ({})", counts.missed)},
+               {Swatch::line, kPhantomColour, fmt::format("phantom ({})", counts.phantom)},
+               {Swatch::line, kUnseenColour, fmt::format("unseen opening ({})", counts.unseen_opening)},
+               {Swatch::box, kWhite, "visited"},
+               {Swatch::box, kUnvisitedTone, "not visited"},
+               {Swatch::box, kUnreachableTone, "unreachable"},
+               {Swatch::line, kUnscoredWallColour, "wall, not scored"},
+               {Swatch::square, kStartColour, "start"},
+               {Swatch::frame, kGoalColour, "goal"}};
+  if (!in.truth->landmarks().empty()) fig.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
+  fig.px_per_m = l.cell_px / in.truth->cell_size_m();
+}
+
+}  // namespace
+
+MapScore TruthCounts::score() const {
+  MapScore s;
+  s.reachable_cells = reachable_cells;
+  s.visited_reachable_cells = visited_reachable_cells;
+  s.sides = right + missed + phantom + unseen_opening;
+  s.sides_correct = right;
+  return s;
+}
+
+std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth) {
+  const auto channel = [](double v) { return static_cast<unsigned char>(std::lround(255.0 * v)); };
+  std::vector<LandmarkMark> marks;
+  for (const maze::Landmark &l : truth.landmarks()) {
+    marks.push_back({mapping::Point{l.x_m, l.y_m}, Rgb{channel(l.red), channel(l.green), channel(l.blue)},
+                     maze::kLandmarkRadius_m});
+  }
+  return marks;
+}
+
+int truth_side_px(int cell_px) { return std::max(2, cell_px / 10); }
+
+TruthCounts count_verdicts(const TruthInput &in) {
+  const std::vector<bool> reachable = in.truth->reachable_from_start();
+  TruthCounts counts;
+  for (std::size_t i = 0; i < reachable.size(); ++i) {
+    if (!reachable[i]) continue;
+    ++counts.reachable_cells;
+    if ((*in.visited)[i]) ++counts.visited_reachable_cells;
+  }
+  for_each_scored_side(*in.truth, reachable, [&](maze::Cell c, maze::Side s) {
+    switch (judge_side(in.truth->has_wall(c, s), in.learned(c, s))) {
+      case SideVerdict::right: ++counts.right; break;
+      case SideVerdict::missed: ++counts.missed; break;
+      case SideVerdict::phantom: ++counts.phantom; break;
+      case SideVerdict::unseen_opening: ++counts.unseen_opening; break;
+    }
+  });
+  return counts;
+}
+
+PointPx truth_origin_px(const maze::Maze &truth, int subcells) {
+  TruthInput in;
+  in.truth = &truth;
+  in.subcells = subcells;
+  const TruthLayout l = layout_of(in, layout_figure(truth_figure(in)).map_origin);
+  return {l.origin.x + l.side_px, l.origin.y + l.side_px};
+}
+
+Drawing truth_picture(const TruthInput &in, PictureFormat format) {
+  const maze::Maze &m = *in.truth;
+  const std::vector<bool> reachable = m.reachable_from_start();
+  const TruthCounts counts = count_verdicts(in);
+  Figure fig = truth_figure(in);
+  truth_legend(fig, in, counts, layout_of(in, {}));
+  const FigureLayout layout = layout_figure(fig);
+  const TruthLayout l = layout_of(in, layout.map_origin);
+  Drawing page(layout.width, layout.height, format);
+  draw_cells(page, l, in, reachable);
+  std::vector<RectPx> right, missed, phantom, unseen;
+  for_each_scored_side(m, reachable, [&](maze::Cell c, maze::Side s) {
+    const bool wall = m.has_wall(c, s);
+    switch (judge_side(wall, in.learned(c, s))) {
+      case SideVerdict::right:
+        if (wall) right.push_back(side_rect(l, c, s, 1.0));
+        break;
+      case SideVerdict::missed: missed.push_back(side_rect(l, c, s, 1.0)); break;
+      case SideVerdict::phantom: phantom.push_back(side_rect(l, c, s, 1.0)); break;
+      case SideVerdict::unseen_opening: unseen.push_back(side_rect(l, c, s, 0.5)); break;
+    }
+  });
+  page.fill_rects(right, kRightWallColour);
+  page.fill_rects(missed, kMissedColour);
+  page.fill_rects(phantom, kPhantomColour);
+  page.fill_rects(unseen, kUnseenColour);
+  draw_figure(page, fig, layout);
+  return page;
+}
+
+}  // namespace app
