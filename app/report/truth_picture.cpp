@@ -75,7 +75,8 @@ RectPx side_rect(const TruthLayout &l, maze::Cell c, maze::Side s, double fracti
   return {};
 }
 
-void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable) {
+void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable,
+                double min_mark_px) {
   const maze::Maze &m = *in.truth;
   std::vector<Rgb> tones;
   std::vector<RectPx> unscored;
@@ -100,7 +101,7 @@ void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const
     page.stroke_rect({l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset}, line,
                      kGoalColour);
   }
-  const double side = std::max(2.0, l.cell_px / 3);
+  const double side = std::max({2.0, l.cell_px / 3, min_mark_px});
   const maze::Cell start = m.start();
   page.fill_rect({l.left(start) + (l.cell_px - side) / 2, l.top(start) + (l.cell_px - side) / 2, side, side}, kStartColour);
 }
@@ -185,7 +186,7 @@ Drawing truth_picture(const TruthInput &in, PictureFormat format) {
   const FigureLayout layout = layout_figure(fig);
   const TruthLayout l = layout_of(in, layout.map_origin);
   Drawing page(layout.width, layout.height, format);
-  draw_cells(page, l, in, reachable);
+  draw_cells(page, l, in, reachable, 0.6 * layout.font_px);
   std::vector<RectPx> right, missed, phantom, unseen;
   for_each_scored_side(m, reachable, [&](maze::Cell c, maze::Side s) {
     const bool wall = m.has_wall(c, s);
