@@ -333,6 +333,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.title = options.world;
   input.caption = map_caption(options);
   input.steps = summary.steps;
+  input.reachable_cells = summary.score.reachable_cells;
   input.summary = summary_pairs(RunReport(options, summary));
   return replay_html(input);
 }
