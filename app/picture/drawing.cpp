@@ -302,20 +302,20 @@ double text_width(std::string_view s, double size_px) {
   return e.x_advance;
 }
 
-double text_ascent(double size_px) {
+namespace {
+
+cairo_font_extents_t font_extents(double size_px) {
   cairo_t *cr = metrics_context();
   set_font(cr, size_px);
   cairo_font_extents_t e;
   cairo_font_extents(cr, &e);
-  return e.ascent;
+  return e;
 }
 
-double text_descent(double size_px) {
-  cairo_t *cr = metrics_context();
-  set_font(cr, size_px);
-  cairo_font_extents_t e;
-  cairo_font_extents(cr, &e);
-  return e.descent;
-}
+}  // namespace
+
+double text_ascent(double size_px) { return font_extents(size_px).ascent; }
+
+double text_descent(double size_px) { return font_extents(size_px).descent; }
 
 }  // namespace app
