@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <variant>
@@ -378,4 +379,17 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
       maze::load_any_world(std::string(WORLDS_DIR) + "/thick_arena.xml", {}, {})).arena;
   CHECK(thick.x_min_m == -8.5);
   CHECK(thick.y_max_m == 8.5);
+}
+
+TEST_CASE("every file in worlds/ loads as a maze or an arena") {
+  int arenas = 0;
+  int mazes = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(WORLDS_DIR)) {
+    if (entry.path().filename() == "README.md") continue;
+    CAPTURE(entry.path().string());
+    const maze::AnyWorld world = maze::load_any_world(entry.path().string(), {}, {});
+    (maze::is_arena(world) ? arenas : mazes) += 1;
+  }
+  CHECK(arenas == 3);
+  CHECK(mazes >= 8);
 }
