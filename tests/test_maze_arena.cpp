@@ -229,7 +229,7 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
   const std::string xml = maze::write_xml_arena(a);
   CHECK(xml ==
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        "<!-- maze_mapper arena: 2 obstacles, boundary 5 x 3 m -->\n<world>\n"
+        "<!-- maze_mapper arena: 2 obstacles, boundary 5 x 3 m -->\n<world name=\"test room\">\n"
         "  <boundary xs=\"0\" xe=\"5\" ys=\"0\" ye=\"3\"/>\n"
         "  <wall x1=\"1\" y1=\"1.5\" x2=\"2\" y2=\"1.5\" width=\"1\"/>\n"
         "  <wall x1=\"3\" y1=\"0\" x2=\"3\" y2=\"1.2\" width=\"0.1\"/>\n"
@@ -242,6 +242,11 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
   CHECK(back.arena.obstacles[1].bounds() == a.obstacles[1].bounds());
   CHECK(maze::write_room(back.arena) == maze::write_room(maze::read_room(maze::write_room(back.arena), "c")));
   CHECK(back.arena.x_max_m == 5);
+  CHECK(back.arena.name == "test room");
+  // A yaw at any angle goes through degrees and back exactly.
+  maze::Arena turned = a;
+  turned.starts[0].yaw_rad = 0.785398;
+  CHECK(maze::read_room(maze::write_room(turned), "t").starts[0].yaw_rad == 0.785398);
   CHECK_THROWS_WITH_AS(maze::format_arena(a, maze::Format::num),
                        "a num file holds a grid maze; an arena is written as .room or .xml", common::InputError);
 
@@ -311,10 +316,7 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
 TEST_CASE("truth: a rotated obstacle marks exactly the cells its area meets") {
   // A square of side sqrt(2) m turned 45 degrees about (2, 2): a diamond reaching 1 m each way.
   maze::Arena a = maze::read_room("boundary 0 4 0 4\nstart 0.5 0.5\n", "f");
-  maze::Obstacle o = maze::Obstacle::from_box(2 - std::sqrt(0.5), 2 - std::sqrt(0.5), 2 + std::sqrt(0.5),
-                                              2 + std::sqrt(0.5));
-  o.angle_rad = kPi / 4;
-  a.obstacles.push_back(o);
+  a.obstacles.push_back(maze::Obstacle::oriented(2, 2, std::sqrt(0.5), std::sqrt(0.5), kPi / 4));
   const maze::ArenaTruth t = maze::rasterise_arena(a, 4, 4, 0.0);
   // The diamond's corners touch (1, 2), (3, 2), (2, 1), (2, 3): the four central cells only.
   CHECK(t.occupied == std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0});

@@ -37,9 +37,7 @@ const double kRoot2 = std::sqrt(2.0);
 // kept apart: the diamond's corners are at (5 +- sqrt 2, 8.5) and (5, 8.5 +- sqrt 2).
 maze::Arena two_obstacles() {
   maze::Arena a = maze::read_room("boundary 0 10 0 10\nrect 4 4 6 6\nstart 1 1 0\n", "f");
-  maze::Obstacle diamond = maze::Obstacle::from_box(4, 7.5, 6, 9.5);
-  diamond.angle_rad = kPi / 4;
-  a.obstacles.push_back(diamond);
+  a.obstacles.push_back(maze::Obstacle::oriented(5, 8.5, 1, 1, kPi / 4));
   maze::validate_arena(a, 0.1);
   return a;
 }

@@ -96,6 +96,22 @@ struct Parser {
   }
 };
 
+// The yaw in degrees, in the fewest digits that read back (times pi / 180) as the very yaw.
+std::string degrees_of(double yaw_rad) {
+  const double deg = yaw_rad * 180.0 / std::numbers::pi;
+  for (int digits = 6; digits < 17; ++digits) {
+    const std::string text = fmt::format("{:.{}g}", deg, digits);
+    double back = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), back);
+    if (back * std::numbers::pi / 180.0 == yaw_rad) return text;
+  }
+  return fmt::format("{}", deg);
+}
+
+// A length or coordinate as written: 12 significant digits (a picometre on a metre; the
+// rounding of sums and halves in doubles left out), -0 as 0.
+std::string metres(double v) { return fmt::format("{:.12g}", v + 0.0); }
+
 }  // namespace
 
 bool looks_like_room(std::string_view text) {
@@ -188,23 +204,28 @@ Arena read_room(std::string_view text, const std::string &file) {
 
 std::string write_room(const Arena &arena) {
   std::string text = fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
-                                 arena.obstacles.size() == 1 ? "" : "s", arena.width_m(), arena.height_m());
+                                 arena.obstacles.size() == 1 ? "" : "s", metres(arena.width_m()),
+                                 metres(arena.height_m()));
   if (!arena.name.empty()) fmt::format_to(std::back_inserter(text), "name {}\n", arena.name);
-  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", arena.x_min_m, arena.x_max_m, arena.y_min_m,
-                 arena.y_max_m);
+  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres(arena.x_min_m), metres(arena.x_max_m),
+                 metres(arena.y_min_m), metres(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
     if (o.axis_aligned()) {
       const auto b = o.bounds();
-      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", b[0], b[1], b[2], b[3]);
+      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres(b[0]), metres(b[1]), metres(b[2]),
+                     metres(b[3]));
     } else {
       const auto l = o.centre_line();
-      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", l[0], l[1], l[2], l[3], l[4]);
+      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", metres(l[0]), metres(l[1]), metres(l[2]),
+                     metres(l[3]), metres(l[4]));
     }
   }
   for (const ArenaPose &s : arena.starts) {
-    fmt::format_to(std::back_inserter(text), "start {} {} {:.10g}\n", s.x_m, s.y_m, s.yaw_rad * 180.0 / std::numbers::pi);
+    fmt::format_to(std::back_inserter(text), "start {} {} {}\n", metres(s.x_m), metres(s.y_m), degrees_of(s.yaw_rad));
   }
-  for (const ArenaPoint &g : arena.goals) fmt::format_to(std::back_inserter(text), "goal {} {}\n", g.x_m, g.y_m);
+  for (const ArenaPoint &g : arena.goals) {
+    fmt::format_to(std::back_inserter(text), "goal {} {}\n", metres(g.x_m), metres(g.y_m));
+  }
   return text;
 }
 
