@@ -1,4 +1,4 @@
-// libFuzzer target: the command line of `maze_mapper run`, built as app/main.cpp builds it and
+// libFuzzer target: the command line of `maze_mapper run`, built as app/cli/main.cpp builds it and
 // parsed without running (CommandContext::run_parse_only). The input is the argument list,
 // one argument a line. A bad command line must end in CLI::Error (CLI11's usage errors, help)
 // or common::InputError; anything else escapes and libFuzzer reports it.
@@ -12,8 +12,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/commands.hpp"
-#include "app/run.hpp"
+#include "app/cli/commands.hpp"
+#include "app/run/run.hpp"
 #include "common/error.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 
 namespace test_cli {
 

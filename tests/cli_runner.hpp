@@ -1,7 +1,7 @@
 #pragma once
 // `maze_mapper ARGS...` run in the test's process through the real command line (CLI11 and
 // every subcommand), its standard output captured.
-// CLI11 stays in cli_runner.cpp (see app/commands.hpp for why).
+// CLI11 stays in cli_runner.cpp (see app/cli/commands.hpp for why).
 #include <unistd.h>
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The generated bash completion (app/cli_reference.hpp) completes as a user types: the
+# The generated bash completion (app/cli/cli_reference.hpp) completes as a user types: the
 # command after `maze_mapper`, an option of the command typed (`run --rob` -> --robot), a
 # nested command's option (`batch merge -`), and files after an option taking a value.
 # Usage: completion_bash.sh BASH_COMPLETION_FILE

@@ -1,4 +1,4 @@
-// batch --shard K/N and batch merge (app/batch.hpp): the parts are disjoint and together the
+// batch --shard K/N and batch merge (app/batch/batch.hpp): the parts are disjoint and together the
 // whole list, and the merged parts' CSV is a single run's, apart from the times.
 #include <doctest/doctest.h>
 
@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "app/batch.hpp"
+#include "app/batch/batch.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 

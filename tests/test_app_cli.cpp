@@ -10,10 +10,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/cli_errors.hpp"
-#include "app/commands.hpp"
-#include "app/run.hpp"
-#include "app/run_options.hpp"
+#include "app/cli/cli_errors.hpp"
+#include "app/cli/commands.hpp"
+#include "app/run/run.hpp"
+#include "app/run/run_options.hpp"
 #include "common/error.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/sim/profile.hpp"
@@ -169,7 +169,7 @@ TEST_CASE("cli: options given that do nothing for what was asked are warned abou
   CHECK(warnings("batch", {"--dilate"}, options_with(false)) ==
         std::vector<std::string>{"warning: --dilate has no effect: batch plans no path"});
   CHECK(warnings("run", {}, options_with(false)).empty());
-  // Then the model's rules, from the set-up table (app/model_rules.hpp).
+  // Then the model's rules, from the set-up table (app/run/model_rules.hpp).
   CHECK(warnings("run", {"--hit-depth", "--fps"}, options_with(false)) ==
         std::vector<std::string>{"warning: --fps has no effect without --animate",
                                  "warning: --hit-depth has no effect with the cell model (read by ray)"});

@@ -1,4 +1,4 @@
-// The man page and the shell completions (app/cli_reference.hpp): generated from the command
+// The man page and the shell completions (app/cli/cli_reference.hpp): generated from the command
 // tree, so every visible command and every option of each must be in each of them, in the
 // form each reads; these walk the tree, so a command or option added later is covered too.
 
@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/cli_reference.hpp"
-#include "app/commands.hpp"
+#include "app/cli/cli_reference.hpp"
+#include "app/cli/commands.hpp"
 
 namespace {
 

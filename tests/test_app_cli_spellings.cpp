@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_options.hpp"
-#include "app/commands.hpp"
-#include "app/run_options.hpp"
-#include "app/terminal.hpp"
+#include "app/cli/cli_options.hpp"
+#include "app/cli/commands.hpp"
+#include "app/run/run_options.hpp"
+#include "app/run/terminal.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
-#include "app/run.hpp"
+#include "app/cli/commands.hpp"
+#include "app/run/run.hpp"
 #include "common/error.hpp"
 #include "maze/world.hpp"
 

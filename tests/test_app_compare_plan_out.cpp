@@ -119,7 +119,7 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
 
 // Regression (the trust sweep): `compare --subcells ""` compared nothing and exited 0,
 // `run --out ""` wrote no file and `run ""` ran the default world, silently. A value typed
-// empty is refused for every option and positional (app/cli_app.cpp).
+// empty is refused for every option and positional (app/cli/cli_app.cpp).
 TEST_CASE("an option's value typed empty is an error, not the option left out") {
   CHECK_THROWS_WITH_AS(test_cli::run({"compare", kWorld, "--subcells", ""}), "--subcells: must not be empty",
                        CLI::ValidationError);

@@ -1,6 +1,6 @@
 #include <doctest/doctest.h>
 
-#include "app/evaluation.hpp"
+#include "app/run/evaluation.hpp"
 
 namespace {
 

@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "app/grid_history.hpp"
-#include "app/map_picture.hpp"
-#include "app/run.hpp"
+#include "app/report/files_recorder.hpp"
+#include "app/report/grid_history.hpp"
+#include "app/picture/map_picture.hpp"
+#include "app/run/run.hpp"
 #include "png_reader.hpp"
 
 namespace {
@@ -76,7 +77,7 @@ TEST_CASE("run --snapshots 3: three pictures that differ, the map filling in, th
   o.output.out_dir = dir.string();
   o.output.snapshots = 3;
   std::ostringstream out;
-  app::run_world(o, out);
+  app::run_and_write(o, out);
   const int map_height = 12 * 34;
   std::vector<Png> shots;
   for (const char *name : {"01.png", "02.png", "03.png"}) {

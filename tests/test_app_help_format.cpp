@@ -1,4 +1,4 @@
-// --help as it reads (app/help_format.hpp): every visible command's help, found by walking the
+// --help as it reads (app/cli/help_format.hpp): every visible command's help, found by walking the
 // command tree (so commands added later are checked too), fits 80 columns with COLUMNS=80,
 // breaks no word, keeps no CLI11 leftovers, and its examples name options the command has.
 
@@ -13,9 +13,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/cli_reference.hpp"
-#include "app/commands.hpp"
-#include "app/help_format.hpp"
+#include "app/cli/cli_reference.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/help_format.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The truth's verdict on a run's ending (app/run.cpp, judge_ending), on real set-ups: a run
+// The truth's verdict on a run's ending (app/run/run.cpp, judge_ending), on real set-ups: a run
 // that got the maze wrong never ends `done` (exit status 0). Regression (the trust sweep):
 // `run worlds/lab4x4.txt --robot sonar-ring --model pie --seed 1` ended "done" at 67.50 %
 // wall accuracy, and `--robot bumper-depth --model cone --seed 1` at 82.50 %.
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "app/run.hpp"
+#include "app/run/run.hpp"
 
 namespace {
 

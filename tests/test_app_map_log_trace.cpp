@@ -13,7 +13,7 @@
 
 #include "cli_runner.hpp"
 #include "png_reader.hpp"
-#include "app/run.hpp"
+#include "app/run/run.hpp"
 #include "maze/world.hpp"
 
 namespace {

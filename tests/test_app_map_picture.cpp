@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "app/map_picture.hpp"
-#include "app/outputs.hpp"
-#include "app/picture.hpp"
-#include "app/run.hpp"
+#include "app/report/files_recorder.hpp"
+#include "app/picture/map_picture.hpp"
+#include "app/report/outputs.hpp"
+#include "app/picture/picture.hpp"
+#include "app/run/run.hpp"
 #include "png_reader.hpp"
 
 namespace {
@@ -83,7 +84,7 @@ TEST_CASE("map.png, every model: each sub-cell's tone is map.pgm's class; start,
     o.robot = s.robot;
     o.output.out_dir = dir.path.string();
     std::ostringstream out;
-    app::run_world(o, out);
+    app::run_and_write(o, out);
     const std::string pgm = test_png::read_all(dir.path / "map.pgm");
     const std::string pixels = pgm.substr(pgm.size() - 144);  // 12 x 12 sub-cells, north row first
     const Png png = test_png::read_png(test_png::read_all(dir.path / "map.png"));

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "app/mms_marks.hpp"
-#include "app/mms_protocol.hpp"
+#include "app/mms/mms_marks.hpp"
+#include "app/mms/mms_protocol.hpp"
 
 using app::MmsStats;
 using app::MmsVerb;

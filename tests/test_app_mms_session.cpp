@@ -18,9 +18,9 @@
 
 #include <fmt/format.h>
 
-#include "app/batch.hpp"
-#include "app/mms_batch.hpp"
-#include "app/mms_session.hpp"
+#include "app/batch/batch.hpp"
+#include "app/batch/mms_batch.hpp"
+#include "app/mms/mms_session.hpp"
 #include "common/error.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "app/model_rules.hpp"
+#include "app/run/model_rules.hpp"
 #include "common/error.hpp"
 
 using sensing::ModelKind;

@@ -17,9 +17,10 @@
 #include <nlohmann/json.hpp>
 
 #include "png_reader.hpp"
-#include "app/batch.hpp"
-#include "app/outputs.hpp"
-#include "app/run.hpp"
+#include "app/report/files_recorder.hpp"
+#include "app/batch/batch.hpp"
+#include "app/report/outputs.hpp"
+#include "app/run/run.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
@@ -101,7 +102,7 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   options.output.out_dir = (dir.path / "out").string();
   options.output.trace_steps = true;  // the default form: the next case
   std::ostringstream out;
-  const app::RunSummary summary = app::run_world(options, out);
+  const app::RunSummary summary = app::run_and_write(options, out);
   REQUIRE(summary.reason == robot::EndReason::done);
 
   const Pgm pgm = read_pgm(read_all(dir.path / "out" / "map.pgm"));
@@ -178,13 +179,13 @@ TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {
 
   options.output.out_dir = (dir.path / "file").string();
   std::ostringstream out;
-  CHECK_THROWS_WITH_AS(app::run_world(options, out),
+  CHECK_THROWS_WITH_AS(app::run_and_write(options, out),
                        ("--out " + options.output.out_dir + ": exists and is not a directory").c_str(),
                        common::InputError);
   CHECK(out.str().empty());
 
   options.output.out_dir = (dir.path / "file" / "a" / "b").string();
-  CHECK_THROWS_WITH_AS(app::run_world(options, out),
+  CHECK_THROWS_WITH_AS(app::run_and_write(options, out),
                        ("--out " + options.output.out_dir + ": cannot create the directory: Not a directory").c_str(),
                        common::InputError);
   CHECK(out.str().empty());
@@ -193,7 +194,7 @@ TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {
   // A bad world is found before the directory is made.
   options.world = std::string(TEST_DATA_DIR) + "/worlds/inconsistent.num";
   options.output.out_dir = (dir.path / "new").string();
-  CHECK_THROWS_AS(app::run_world(options, out), common::InputError);
+  CHECK_THROWS_AS(app::run_and_write(options, out), common::InputError);
   CHECK_FALSE(fs::exists(dir.path / "new"));
 }
 
@@ -204,7 +205,7 @@ TEST_CASE("--step: Enter goes on, q stops the run cleanly with a summary") {
   app::RunControls controls;
   controls.in = &in;
   std::ostringstream out;
-  const app::RunSummary summary = app::run_world(options, out, controls);
+  const app::RunSummary summary = app::run_and_write(options, out, controls);
   CHECK(summary.reason == robot::EndReason::stopped);
   CHECK(summary.moves == 2);
   CHECK(app::exit_status(summary) == 0);
@@ -212,7 +213,7 @@ TEST_CASE("--step: Enter goes on, q stops the run cleanly with a summary") {
 
   std::istringstream short_input("\n");  // input ends: the run goes on to its end
   controls.in = &short_input;
-  const app::RunSummary full = app::run_world(options, out, controls);
+  const app::RunSummary full = app::run_and_write(options, out, controls);
   CHECK(full.reason == robot::EndReason::done);
   CHECK(full.moves == 29);
 }
@@ -224,10 +225,10 @@ TEST_CASE("the default trace keeps the first and last steps and every step where
   options.output.out_dir = (dir.path / "every").string();
   options.output.trace_steps = true;
   std::ostringstream out;
-  const app::RunSummary summary = app::run_world(options, out);
+  const app::RunSummary summary = app::run_and_write(options, out);
   options.output.out_dir = (dir.path / "default").string();
   options.output.trace_steps = false;
-  app::run_world(options, out);
+  app::run_and_write(options, out);
   const std::vector<std::string> every = lines_of(read_all(dir.path / "every" / "trace.csv"));
   const std::vector<std::string> thinned = lines_of(read_all(dir.path / "default" / "trace.csv"));
   REQUIRE(static_cast<std::int64_t>(every.size()) == summary.steps + 1);
@@ -262,7 +263,7 @@ TEST_CASE("an interrupted run's trace has a row for every step it counts") {
   app::RunControls controls;
   controls.interrupted = interrupt_after_100_steps;
   std::ostringstream out;
-  const app::RunSummary summary = app::run_world(options, out, controls);
+  const app::RunSummary summary = app::run_and_write(options, out, controls);
   CHECK(summary.steps == 101);
   CHECK(lines_of(read_all(dir.path / "out" / "trace.csv")).size() == 102);  // the header and 101 rows
 }
@@ -273,7 +274,7 @@ TEST_CASE("an interrupt stops the run at the next step; exit status 130") {
   app::RunControls controls;
   controls.interrupted = interrupt_after_100_steps;
   std::ostringstream out;
-  const app::RunSummary summary = app::run_world(options, out, controls);
+  const app::RunSummary summary = app::run_and_write(options, out, controls);
   CHECK(summary.reason == robot::EndReason::stopped);
   CHECK(summary.interrupted);
   CHECK(summary.steps == 101);  // polled after each step: the 101st poll stops it
@@ -435,7 +436,7 @@ TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes
   options.output.out_dir = (dir.path / "out").string();
   options.output.trace_steps = true;
   std::ostringstream out;
-  app::run_world(options, out);
+  app::run_and_write(options, out);
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   int compared = 0;
   for (const std::string &line : lines_of(out.str())) {
@@ -461,7 +462,7 @@ TEST_CASE("trace.csv's cell is the console's at the same step; --no-trace writes
   options.output.quiet = true;
   options.output.trace = false;
   options.output.out_dir = (dir.path / "no_trace").string();
-  app::run_world(options, out);
+  app::run_and_write(options, out);
   CHECK_FALSE(fs::exists(dir.path / "no_trace" / "trace.csv"));
   CHECK(fs::exists(dir.path / "no_trace" / "map.png"));
 }

@@ -1,11 +1,11 @@
-// Robot profiles as JSON (app/profile_json.hpp): print -> load round-trips exactly, and every
+// Robot profiles as JSON (app/run/profile_json.hpp): print -> load round-trips exactly, and every
 // bad file says where.
 
 #include <doctest/doctest.h>
 
 #include <string>
 
-#include "app/profile_json.hpp"
+#include "app/run/profile_json.hpp"
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
 

@@ -13,9 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "png_reader.hpp"
-#include "app/outputs.hpp"
-#include "app/replay.hpp"
-#include "app/run.hpp"
+#include "app/report/files_recorder.hpp"
+#include "app/report/outputs.hpp"
+#include "app/report/replay.hpp"
+#include "app/run/run.hpp"
 
 namespace {
 
@@ -83,7 +84,7 @@ app::RunSummary run_into(const TempDir &dir, const std::string &world, bool repl
   o.output.replay = replay;
   o.output.out_dir = dir.path.string();
   std::ostringstream out;
-  return app::run_world(o, out);
+  return app::run_and_write(o, out);
 }
 
 }  // namespace

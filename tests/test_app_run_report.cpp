@@ -1,4 +1,4 @@
-// The run report (app/run_report.hpp): one list of entries that the summary block, summary.json,
+// The run report (app/run/run_report.hpp): one list of entries that the summary block, summary.json,
 // the replay's and compare's tables and batch's columns render. Built here from hand-made
 // results, so each rule is checked without a run.
 
@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "app/batch.hpp"
-#include "app/run_report.hpp"
+#include "app/batch/batch.hpp"
+#include "app/run/run_report.hpp"
 
 namespace {
 

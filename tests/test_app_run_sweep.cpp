@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "app/run.hpp"
+#include "app/run/run.hpp"
 #include "trust.hpp"
 #include "maze/generator.hpp"
 

@@ -1,4 +1,4 @@
-// Where the program finds its shipped worlds (app/shipped_worlds.hpp): the environment
+// Where the program finds its shipped worlds (app/run/shipped_worlds.hpp): the environment
 // variable, a checkout's worlds/, else beside the program (the build tree links its
 // share/maze_mapper/worlds to the source's worlds/, as an installed tree has it).
 
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "app/shipped_worlds.hpp"
+#include "app/run/shipped_worlds.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
 

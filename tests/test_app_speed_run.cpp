@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "true_shortest.hpp"
-#include "app/run.hpp"
+#include "app/run/run.hpp"
 #include "maze/generator.hpp"
 #include "maze/maze.hpp"
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "app/run.hpp"
+#include "app/run/run.hpp"
 
 TEST_CASE("speed run: the micromouse's ramped straights beat its search on classic16x16 at 0.18 m") {
   app::RunOptions options;

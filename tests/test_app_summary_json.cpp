@@ -15,8 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/commands.hpp"
-#include "app/run.hpp"
+#include "app/report/files_recorder.hpp"
+#include "app/cli/commands.hpp"
+#include "app/run/run.hpp"
 
 namespace {
 
@@ -49,7 +50,7 @@ Run run_with_out(std::vector<std::string> args) {
   for (const std::string &a : args) argv.push_back(a.c_str());
   const app::RunOptions options = app::parse_run_options(static_cast<int>(argv.size()), argv.data());
   std::ostringstream out;
-  app::run_world(options, out);
+  app::run_and_write(options, out);
   std::ifstream file(dir / "summary.json");
   Run run{printed_keys(out.str()), nlohmann::json::parse(file)};
   fs::remove_all(dir);

@@ -14,10 +14,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/evaluation.hpp"
-#include "app/map_picture.hpp"
-#include "app/run.hpp"
-#include "app/truth_picture.hpp"
+#include "app/report/files_recorder.hpp"
+#include "app/run/evaluation.hpp"
+#include "app/picture/map_picture.hpp"
+#include "app/run/run.hpp"
+#include "app/report/truth_picture.hpp"
 #include "png_reader.hpp"
 
 namespace {
@@ -106,7 +107,7 @@ TEST_CASE("truth.png: the sides' colours count to the summary's wall_accuracy, t
     if (c.max_steps > 0) o.max_steps = c.max_steps;
     o.output.out_dir = dir.string();
     std::ostringstream out;
-    const app::RunSummary summary = app::run_world(o, out);
+    const app::RunSummary summary = app::run_and_write(o, out);
     const nlohmann::json json = nlohmann::json::parse(test_png::read_all(dir / "summary.json"));
     const Png png = test_png::read_png(test_png::read_all(dir / "truth.png"));
     fs::remove_all(dir);

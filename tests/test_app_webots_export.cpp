@@ -1,4 +1,4 @@
-// `convert WORLD out.wbt` carries the robot (app/webots_export.hpp): every device of the
+// `convert WORLD out.wbt` carries the robot (app/report/webots_export.hpp): every device of the
 // profile by its name, the controller, and controllerArgs that the Webots controller's
 // parser reads back into what `run` gives the controller; that controller, run on the
 // embedded simulator, prints what `run` prints.
@@ -13,8 +13,8 @@
 
 #include "common/error.hpp"
 
-#include "app/run.hpp"
-#include "app/webots_export.hpp"
+#include "app/run/run.hpp"
+#include "app/report/webots_export.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/text_map.hpp"
 #include "maze/wbt_format.hpp"

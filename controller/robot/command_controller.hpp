@@ -1,6 +1,6 @@
 #pragma once
 // A cell controller driven by commands from outside instead of a strategy: an algorithm
-// speaking the mms protocol (app/mms_session.hpp) tells it to look at a side, turn, or
+// speaking the mms protocol (app/mms/mms_session.hpp) tells it to look at a side, turn, or
 // move one cell; it does each as CellController would (turn in place, drive one cell, arrive
 // and scan as the set-up says), and answers only from what its sensors mapped into the
 // grid. Like every controller it is told the maze's geometry, start and goals, never the

@@ -1,6 +1,6 @@
+#include "common/parse_number.hpp"
 #include "robot/controller_args.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -20,14 +20,7 @@ namespace {
 
 template <typename Number>
 std::optional<Number> number(std::string_view text) {
-  Number value{};
-  const char *end = text.data() + text.size();
-  const auto [at, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || at != end) return std::nullopt;
-  if constexpr (std::is_floating_point_v<Number>) {
-    if (!std::isfinite(value)) return std::nullopt;
-  }
-  return value;
+  return common::parse_number<Number>(text);
 }
 
 // Splits at the first `count` separators; the last part keeps the rest (a name with commas).

@@ -19,7 +19,7 @@
 #include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
-#include "app/profile_json.hpp"
+#include "app/run/profile_json.hpp"
 #include "bindings.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"

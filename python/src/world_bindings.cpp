@@ -1,4 +1,4 @@
-// Worlds, the scorer (the run's own rules, app/evaluation.hpp) and the program's own run.
+// Worlds, the scorer (the run's own rules, app/run/evaluation.hpp) and the program's own run.
 
 #include <optional>
 #include <string>
@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include "app/evaluation.hpp"
-#include "app/profile_json.hpp"
-#include "app/run.hpp"
+#include "app/run/evaluation.hpp"
+#include "app/run/profile_json.hpp"
+#include "app/run/run.hpp"
 #include "bindings.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"

@@ -31,7 +31,7 @@
 // A distance sensor's value is in metres of distance (its lookup table maps distance d to
 // value d), so the controller reads metres as from the lidar.
 //
-// Profiles are data: app/profile_json.hpp prints one as JSON and reads one back
+// Profiles are data: app/run/profile_json.hpp prints one as JSON and reads one back
 // (`maze_mapper robot NAME`, `--robot FILE.json`); validate_profile() is the one check.
 
 #include <optional>

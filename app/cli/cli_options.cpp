@@ -1,0 +1,216 @@
+#include "common/parse_number.hpp"
+#include "app/cli/cli_options.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+#include "app/cli/demo_commands.hpp"
+#include "maze/sim/profile.hpp"
+
+namespace app {
+namespace {
+
+bool whole_number(std::string_view text, int &value) {
+  const std::optional<int> number = common::parse_number_trimmed<int>(text);
+  if (number) value = *number;
+  return number.has_value();
+}
+
+// "X,Y", or nothing.
+std::optional<maze::Cell> cell_of(std::string_view text) {
+  const std::size_t comma = text.find(',');
+  maze::Cell c;
+  if (comma == std::string_view::npos || !whole_number(text.substr(0, comma), c.x) ||
+      !whole_number(text.substr(comma + 1), c.y)) {
+    return std::nullopt;
+  }
+  return c;
+}
+
+std::optional<maze::Side> heading_of(std::string_view text) {
+  constexpr std::pair<char, maze::Side> kHeadings[] = {
+      {'N', maze::Side::north}, {'E', maze::Side::east}, {'S', maze::Side::south}, {'W', maze::Side::west}};
+  for (const auto &[letter, side] : kHeadings) {
+    if (text.size() == 1 && std::toupper(static_cast<unsigned char>(text[0])) == letter) return side;
+  }
+  return std::nullopt;
+}
+
+// --start X,Y[,HEADING]: the cell, and the heading (north unless given); pos:N, random: the
+// world's N-th start position, or one of them.
+void parse_start(const std::string &text, maze::WorldOverrides &o) {
+  o.start.reset();
+  o.start_position.reset();
+  o.random_start = text == "random";
+  if (o.random_start) return;
+  if (text.starts_with("pos:")) {
+    int n = 0;
+    if (!whole_number(std::string_view(text).substr(4), n) || n < 1) {
+      throw common::InputError(fmt::format("--start pos:N needs N = 1, 2, ... (got '{}')", text));
+    }
+    o.start_position = n;
+    return;
+  }
+  const std::size_t second = text.find(',', text.find(',') + 1);
+  o.start = cell_of(std::string_view(text).substr(0, second));
+  o.start_heading = maze::Side::north;
+  if (second != std::string::npos) {
+    const std::optional<maze::Side> heading = heading_of(std::string_view(text).substr(second + 1));
+    if (heading) o.start_heading = *heading;
+    if (!heading) o.start.reset();
+  }
+  if (!o.start) {
+    throw common::InputError(
+        fmt::format("--start must be X,Y or X,Y,HEADING with HEADING N, E, S or W (got '{}')", text));
+  }
+}
+
+// --goal X,Y[;X,Y...]
+std::vector<maze::Cell> parse_goals(const std::string &text) {
+  std::vector<maze::Cell> goals;
+  std::string_view rest(text);
+  for (;;) {
+    const std::size_t semicolon = rest.find(';');
+    const std::optional<maze::Cell> goal = cell_of(rest.substr(0, semicolon));
+    if (!goal) {
+      throw common::InputError(fmt::format("--goal must be X,Y, a list X,Y;X,Y;... or centre (got '{}')", text));
+    }
+    goals.push_back(*goal);
+    if (semicolon == std::string_view::npos) return goals;
+    rest.remove_prefix(semicolon + 1);
+  }
+}
+
+double checked_cell_size(double m) {
+  if (!(m > maze::kMinCellSize_m && m <= maze::kMaxCellSize_m)) {
+    throw common::InputError(fmt::format(
+        "--cell-size must be more than {} m (four walls of {} m) and at most {} m (got {})", maze::kMinCellSize_m,
+        maze::kDefaultWallThickness_m, maze::kMaxCellSize_m, m));
+  }
+  return m;
+}
+
+}  // namespace
+
+CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
+  const CLI::Validator whole_from_zero(
+      [](std::string &text) {
+        return common::parse_number<std::uint64_t>(text) ? std::string()
+                     : fmt::format("must be a whole number from 0 to {} (got '{}')",
+                                   std::numeric_limits<std::uint64_t>::max(), text);
+      },
+      "");
+  return command.add_option("--seed", seed, fmt::format("N: seed of {} (default {})", what, seed))
+      ->check(whole_from_zero);
+}
+
+std::string robot_names() {
+  std::string names;
+  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) names += (names.empty() ? "" : ", ") + p.name;
+  return names;
+}
+
+mapping::Cell parse_cell(const std::string &text, const std::string &option) {
+  const std::optional<maze::Cell> c = cell_of(text);
+  if (!c) throw common::InputError(fmt::format("{} must be X,Y (got '{}')", option, text));
+  return mapping::Cell{c->x, c->y};
+}
+
+void add_cell_size_option(CLI::App &command, maze::WorldOverrides &overrides) {
+  command.add_option_function<double>(
+      "--cell-size", [&overrides](double m) { overrides.cell_size_m = checked_cell_size(m); },
+      "M: cell side of a text or num world, metres (default 1; an XML world has its own)");
+}
+
+void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
+  add_cell_size_option(command, overrides);
+  command.add_option_function<std::string>(
+      "--start", [&overrides](const std::string &text) { parse_start(text, overrides); },
+      "X,Y[,HEADING], pos:N or random: start cell, facing N, E, S or W (default N); the world's N-th start "
+      "position; or one of them picked by --seed (default the world's start)");
+  command
+      .add_option_function<std::vector<std::string>>(
+          "--goal",
+          [&overrides](const std::vector<std::string> &texts) {
+            overrides.goals.reset();
+            overrides.centre_goals = false;
+            std::vector<maze::Cell> all;
+            for (const std::string &text : texts) {
+              if (text == "centre" || text == "center") {
+                if (texts.size() > 1) throw common::InputError("--goal centre stands alone (it names the centre cells)");
+                overrides.centre_goals = true;
+                continue;
+              }
+              const std::vector<maze::Cell> goals = parse_goals(text);
+              if (goals.size() > 1) {
+                std::string repeated;
+                for (const maze::Cell &g : goals) repeated += fmt::format("{}--goal {},{}", repeated.empty() ? "" : " ", g.x, g.y);
+                fmt::print(stderr, "{}\n", old_spelling_warning("--goal " + text, repeated));
+              }
+              all.insert(all.end(), goals.begin(), goals.end());
+            }
+            if (!all.empty()) overrides.goals = all;
+          },
+          "X,Y|centre: a goal cell, in place of the world's; repeat it for more (--goal 7,7 --goal 7,8); "
+          "centre: the maze's centre cells (2x2 on an even size, the micromouse convention) (default the world's)")
+      ->expected(1)
+      ->allow_extra_args(false)  // --goal 3,3 WORLD: the world is not a goal
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+PoseArgument parse_pose(const std::string &text, const std::string &option, std::vector<std::string> &warnings) {
+  std::string numbers = text;
+  bool radians = false;
+  if (numbers.ends_with("rad")) {
+    radians = true;
+    numbers.resize(numbers.size() - 3);
+  } else if (numbers.ends_with("deg")) {
+    numbers.resize(numbers.size() - 3);
+  }
+  const std::vector<double> values = parse_number_list(numbers, option, 3);
+  for (const double v : values) {
+    if (!std::isfinite(v)) throw common::InputError(fmt::format("{} must be three finite numbers", option));
+  }
+  PoseArgument pose{values[0], values[1], values[2], values[2]};
+  if (radians) {
+    pose.yaw_deg = values[2] * 180.0 / std::numbers::pi;
+    if (std::abs(values[2]) > 2.0 * std::numbers::pi) {
+      warnings.push_back(fmt::format("warning: {} YAW {}rad is {:g} degrees, more than a turn; for {} degrees write {} "
+                                     "{:g},{:g},{}",
+                                     option, values[2], pose.yaw_deg, values[2], option, values[0], values[1], values[2]));
+    }
+  } else {
+    pose.yaw_rad = values[2] * std::numbers::pi / 180.0;
+  }
+  return pose;
+}
+
+std::string old_spelling_warning(const std::string &old_spelling, const std::string &new_spelling) {
+  return fmt::format("warning: {} is the old spelling; write {} (the old one goes in the next release)", old_spelling,
+                     new_spelling);
+}
+
+CLI::Option *add_old_spelling(CLI::App &command, const std::string &old_name, const std::string &new_name,
+                              std::function<void(const std::string &)> take) {
+  return command
+      .add_option_function<std::string>(
+          old_name,
+          [old_name, new_name, take](const std::string &value) {
+            fmt::print(stderr, "{}\n", old_spelling_warning(old_name, new_name));
+            take(value);
+          },
+          fmt::format("VALUE: the old spelling of {}", new_name))
+      ->group("");
+}
+
+}  // namespace app

@@ -1,0 +1,142 @@
+// maze_mapper batch WORLD... [--jobs N] [--csv FILE] [run options] (see app/batch/batch.hpp).
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/batch/batch.hpp"
+#include "app/cli/mms_options.hpp"
+#include "app/cli/run_cli.hpp"
+#include "app/run/terminal.hpp"
+#include "app/cli/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/interrupt.hpp"
+#include "common/error.hpp"
+
+namespace app {
+namespace {
+
+struct BatchInput {
+  std::vector<std::string> worlds;
+  int jobs = 0;
+  std::string csv;
+  std::string shard;                  // --shard K/N
+  bool each_start = false;            // --each-start
+  std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
+  std::string merge_out;                // batch merge -o FILE
+};
+
+// "[#########           ] 9/20" on one line of stderr, redrawn in place.
+void draw_progress(std::size_t done, std::size_t total) {
+  constexpr std::size_t kWidth = 30;
+  const std::size_t filled = total == 0 ? kWidth : done * kWidth / total;
+  fmt::print(stderr, "\r[{}{}] {}/{}", std::string(filled, '#'), std::string(kWidth - filled, ' '),
+             done, total);
+  if (done == total) fmt::print(stderr, "\r\x1b[K");
+  std::fflush(stderr);
+}
+
+// batch merge: the parts' rows joined into one CSV (-o FILE, else stdout), and the totals
+// recomputed from them (stdout with -o, else stderr).
+void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput> &batch) {
+  CLI::App *merge = batch_command.add_subcommand(
+      "merge", "join the CSVs of batch --shard parts (in the order given) and recompute the totals");
+  merge->add_option("CSV", batch->merge_csvs, "the parts' --csv files, part 1 first")->required();
+  merge->add_option("-o,--out", batch->merge_out, "FILE: write the joined CSV here (default stdout)");
+  merge->callback([batch] {
+    if (!batch->merge_out.empty()) common::refuse_output_over_input("-o", batch->merge_out, batch->merge_csvs);
+    const std::vector<BatchRow> rows = read_batch_csvs(batch->merge_csvs);
+    std::string csv(kBatchCsvHeader);
+    csv += '\n';
+    BatchTotals totals;
+    for (const BatchRow &row : rows) {
+      csv += format_batch_csv_row(row);
+      add_to_totals(totals, row);
+    }
+    const std::string line = format_totals(totals) + "\n";
+    if (batch->merge_out.empty()) {
+      std::cout << csv;
+      std::cerr << line;
+    } else {
+      common::write_file_atomically(batch->merge_out, csv);
+      std::cout << line;
+    }
+  });
+}
+
+}  // namespace
+
+void add_batch_command(CLI::App &cli, CommandContext &context) {
+  auto parsed = std::make_shared<RunOptions>();
+  auto batch = std::make_shared<BatchInput>();
+  CLI::App *command = cli.add_subcommand(
+      "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
+  command->add_option("WORLD", batch->worlds, "maze files or folders");
+  command->add_option("--jobs", batch->jobs, "N: parallel runs (default all cores)");
+  command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
+  command->add_option("--shard", batch->shard,
+                      "K/N: run only the K-th of N contiguous parts of the world list (job arrays; join the "
+                      "parts' CSVs with batch merge)");
+  command->add_flag("--each-start", batch->each_start,
+                    "run each world once per start position it states (XML <pos>), a row each");
+  add_merge_command(*command, batch);
+  add_mapping_run_options(*command, *parsed);
+  add_speed_run_option(*command, *parsed);
+  auto mms = std::make_shared<MmsOptions>();
+  add_mms_options(*command, *mms);
+  command->callback([command, parsed, batch, mms, &context] {
+    if (command->got_subcommand("merge")) return;
+    if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (maze files or folders), or: batch merge CSV...");
+    RunOptions options = checked_run_options(*command, *parsed, false);
+    options.output.quiet = true;
+    print_warnings(options_not_applying(*command, options));
+    const maze::WorldOverrides &w = options.world_overrides;
+    if (batch->each_start && (w.start || w.start_position || w.random_start)) {
+      throw common::InputError("--each-start runs every start position: leave --start out");
+    }
+    if (batch->jobs < 0) throw common::InputError(fmt::format("--jobs must be at least 1 (got {})", batch->jobs));
+    const int jobs = batch->jobs > 0 ? batch->jobs
+                                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (!batch->csv.empty()) common::check_writable(batch->csv);  // before the runs, not after
+    WorldList list = expand_worlds(batch->worlds);
+    if (!batch->csv.empty()) common::refuse_output_over_input("--csv", batch->csv, list.worlds);
+    if (!batch->shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch->shard));
+    if (list.worlds.empty() && !batch->shard.empty()) {
+      fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch->shard);
+    } else if (list.worlds.empty()) {
+      throw common::InputError(fmt::format("no world to run: the folders hold no maze file ({} other file{} skipped)",
+                                           list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
+    }
+    if (!context.child_command.empty() || mms_options_given(*command)) {
+      context.status = run_mms_batch_command(*command, options, *mms, context.child_command, list, jobs, batch->csv);
+      return;
+    }
+    const auto started = std::chrono::steady_clock::now();
+    std::function<void(std::size_t, std::size_t)> progress;
+    if (is_terminal(STDERR_FILENO)) progress = draw_progress;
+    const common::SignalsStopWork stop_signals;  // until the CSV holds the finished runs
+    const std::vector<BatchJob> batch_jobs = batch->each_start ? each_start_jobs(list.worlds, options.world_overrides)
+                                                               : plain_jobs(list.worlds);
+    const std::vector<BatchItem> items = run_batch(options, batch_jobs, jobs, progress, &common::interrupted);
+    if (progress) fmt::print(stderr, "\r\x1b[K");
+    const double elapsed_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    for (const BatchItem &item : items) {
+      if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
+    }
+    std::cout << format_batch_table(items, elapsed_ms, list.skipped) << std::flush;
+    if (!batch->csv.empty()) common::write_file_atomically(batch->csv, format_batch_csv(items));
+    context.status = batch_exit_status(items);
+  });
+}
+
+}  // namespace app

@@ -1,0 +1,65 @@
+// maze_mapper mms [WORLD] [options] -- COMMAND [ARGS...] (see app/mms/mms_session.hpp).
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/cli/mms_options.hpp"
+#include "app/mms/mms_session.hpp"
+#include "app/cli/run_cli.hpp"
+#include "app/run/terminal.hpp"
+#include "app/cli/commands.hpp"
+#include "common/error.hpp"
+#include "common/interrupt.hpp"
+
+namespace app {
+
+std::vector<std::string> split_child_command(const std::vector<std::string> &args, CommandContext &context) {
+  if (args.size() < 2 || (args[1] != "mms" && args[1] != "batch")) return args;
+  const auto dash = std::find(args.begin(), args.end(), "--");
+  if (dash == args.end()) return args;
+  context.child_command.assign(dash + 1, args.end());
+  return {args.begin(), dash};
+}
+
+void add_mms_command(CLI::App &cli, CommandContext &context) {
+  auto parsed = std::make_shared<RunOptions>();
+  auto mms = std::make_shared<MmsOptions>();
+  auto no_color = std::make_shared<bool>(false);
+  CLI::App *command = cli.add_subcommand(
+      "mms", "run an mms-protocol micromouse algorithm (any program: mms WORLD -- python3 algo.py) on the "
+             "simulated robot; print the map, its marks, and mms's stats and score");
+  add_exploration_options(*command, *parsed);
+  add_mms_options(*command, *mms);
+  command->add_flag("--quiet", parsed->output.quiet, "print only the final map, the marks and the summary");
+  command->add_option("--out", parsed->output.out_dir,
+                      "DIR: write map.pgm + map.yaml, map.png, truth.png, summary.json (with mms's stats and "
+                      "score) and marks.txt (the algorithm's marks)");
+  command->add_flag("--no-color", *no_color, "no ANSI colours (default colours when stdout is a terminal)");
+  command->add_flag("--transcript", mms->transcript,
+                    "print the conversation on stderr: `mms N> line` from the algorithm, `mms N< answer` back");
+  command->callback([command, parsed, mms, no_color, &context] {
+    RunOptions options = checked_run_options(*command, *parsed, true);
+    refuse_strategy_options(*command);
+    print_warnings(options_not_applying(*command, options));
+    options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
+    MmsOptions asked = *mms;
+    asked.command = context.child_command;
+    validate(asked);
+    RunControls controls;
+    controls.interrupted = &common::interrupted;
+    controls.terminal_fd = STDOUT_FILENO;
+    const common::SignalsStopWork stop_signals;  // the children are ended and reaped first
+    const MmsRun run = run_mms_world(options, asked, std::cout, controls);
+    context.status = exit_status(run);
+  });
+}
+
+}  // namespace app

@@ -1,0 +1,169 @@
+// maze_mapper run [WORLD] [options]: explore and map one world (see app/run/run.hpp), and plan:
+// explore, then a wavefront path on the learned map.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/report/files_recorder.hpp"
+#include "app/cli/cli_options.hpp"
+#include "app/run/run.hpp"
+#include "app/cli/run_cli.hpp"
+#include "app/run/terminal.hpp"
+#include "app/cli/commands.hpp"
+#include "common/error.hpp"
+#include "common/interrupt.hpp"
+#include "maze/world.hpp"
+
+namespace app {
+namespace {
+
+// --narrow, --wide: the terminal columns of a sub-cell (OutputOptions::subcell_columns).
+void add_width_options(CLI::App &command, RunOptions &o) {
+  CLI::Option *narrow = command.add_flag_callback(
+      "--narrow", [&o] { o.output.subcell_columns = 1; },
+      "one column a sub-cell, the classroom look (default when standard output is not a terminal)");
+  command
+      .add_flag_callback("--wide", [&o] { o.output.subcell_columns = 2; },
+                         "two columns a sub-cell, the maze at its true aspect (default in a terminal the map fits)")
+      ->excludes(narrow);
+}
+
+// What only `run` takes, besides the exploration options.
+void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
+  run.add_flag("--quiet", o.output.quiet, "print only the final map and the summary");
+  add_speed_run_option(run, o);
+  run.add_option_function<std::string>(
+      "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
+      "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
+  run.add_option("-o,--out", o.output.out_dir,
+                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
+  // 0 is "none" inside (the default), not a value to type: --snapshots 0 wrote none, silently.
+  run.add_option_function<int>(
+      "--snapshots",
+      [&o](int n) {
+        validate_snapshots(n);
+        o.output.snapshots = n;
+      },
+      "N: with --out, N pictures of the map at equal fractions of the run's steps in "
+      "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
+  run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv");
+  run.add_flag("--trace-steps", o.output.trace_steps,
+               "with --out, trace.csv a row every control step (default for cell and ray: a row when the "
+               "action or cell changes or a scan updates the map)");
+  run.add_flag("--no-replay{false}", o.output.replay,
+               "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
+  run.add_option_function<std::string>(
+      "--color", [&color](const std::string &text) { color = parse_color_choice(text); },
+      "WHEN: ANSI colours auto (when standard output is a terminal and NO_COLOR is not set), always or never "
+      "(default auto)");
+  run.add_flag_callback("--no-color",
+                        [&color] {
+                          fmt::print(stderr, "{}\n", old_spelling_warning("--no-color", "--color never"));
+                          color = ColorChoice::never;
+                        },
+                        "the old spelling of --color never")
+      ->group("");
+  run.add_flag("--animate", o.output.animate,
+               "redraw the map in place as the robot moves (standard output must be a terminal)");
+  add_width_options(run, o);
+  run.add_option("--fps", o.output.fps,
+                 fmt::format("--animate: frames per second, at most (default {:g})", o.output.fps));
+  run.add_option("--speed", o.output.speed,
+                 fmt::format("--animate: simulated seconds per wall-clock second (default {:g})", o.output.speed));
+  run.add_flag("--step", o.output.step, "stop after each cell: Enter goes on, q quits");
+}
+
+void run_in_terminal(const RunOptions &options, CommandContext &context) {
+  RunControls controls;
+  controls.in = &std::cin;
+  if (options.output.step && is_terminal(STDIN_FILENO)) controls.prompt = &std::cerr;
+  controls.interrupted = &common::interrupted;
+  controls.terminal_fd = STDOUT_FILENO;
+  controls.progress_fd = progress_fd(options.output.quiet, options.output.animate);
+  const common::SignalsStopWork stop_signals;
+  const RunSummary summary = run_and_write(options, std::cout, controls);
+  context.status = exit_status(summary);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App &cli, CommandContext &context) {
+  auto parsed = std::make_shared<RunOptions>();
+  auto color = std::make_shared<ColorChoice>(ColorChoice::automatic);
+  CLI::App *run = cli.add_subcommand(
+      "run", "explore a world cell by cell and map it; print the map as it goes and a summary");
+  add_exploration_options(*run, *parsed);
+  add_run_only_options(*run, *parsed, *color);
+  run->callback([run, parsed, color, &context] {
+    RunOptions options = checked_run_options(*run, *parsed, true);
+    const std::vector<std::string> warnings = options_not_applying(*run, options);
+    if (context.run_parse_only != nullptr) {
+      *context.run_parse_only = options;
+      return;
+    }
+    if (options.output.animate && !is_terminal(STDOUT_FILENO)) {
+      throw common::InputError(
+          "--animate redraws a terminal in place and standard output is not one; without --animate the run "
+          "prints the map at each new cell");
+    }
+    print_warnings(warnings);
+    options.output.color = use_color(*color, STDOUT_FILENO);
+    run_in_terminal(options, context);
+  });
+}
+
+void add_plan_command(CLI::App &cli, CommandContext &context) {
+  auto parsed = std::make_shared<RunOptions>();
+  CLI::App *plan = cli.add_subcommand(
+      "plan", "explore a world quietly, then plan a path on the learned map (wavefront) and draw it; "
+              "exit status 1 when no path is found");
+  add_exploration_options(*plan, *parsed);
+  add_width_options(*plan, *parsed);
+  plan->add_option_function<std::string>(
+      "--from", [parsed](const std::string &text) { parsed->plan.from = parse_cell(text, "--from"); },
+      "X,Y: start cell of the path (default the maze's start)");
+  plan->add_option_function<std::string>(
+      "--to", [parsed](const std::string &text) { parsed->plan.to = parse_cell(text, "--to"); },
+      "X,Y: goal cell of the path (default the maze's first goal)");
+  plan->add_option("-o,--out", parsed->output.out_dir,
+                   "DIR: run --out's files, and plan.png (the learned map with the planned path) and plan.csv (its sub-cells)");
+  plan->callback([plan, parsed, &context] {
+    RunOptions options = checked_run_options(*plan, *parsed, true);
+    options.output.quiet = true;
+    options.plan.only = true;
+    print_warnings(options_not_applying(*plan, options));
+    const maze::World world = maze::load_world(options.world, options.world_overrides);
+    if (!options.plan.from) options.plan.from = mapping::Cell{world.maze.start().x, world.maze.start().y};
+    if (!options.plan.to) {
+      if (world.maze.goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");
+      options.plan.to = mapping::Cell{world.maze.goals().front().x, world.maze.goals().front().y};
+    }
+    RunControls controls;
+    controls.interrupted = &common::interrupted;
+    controls.terminal_fd = STDOUT_FILENO;
+    controls.progress_fd = progress_fd(true, false);  // plan explores quietly
+    const common::SignalsStopWork stop_signals;
+    const RunSummary summary = run_and_write(options, std::cout, controls);
+    context.status = exit_status(summary);  // 1 when no path is found
+  });
+}
+
+RunOptions parse_run_options(int argc, const char *const *argv) {
+  CLI::App cli{"maze_mapper", "maze_mapper"};
+  cli.require_subcommand(0, 1);
+  RunOptions options;
+  CommandContext context;
+  context.run_parse_only = &options;
+  add_run_command(cli, context);
+  cli.parse(argc, argv);
+  return options;
+}
+
+}  // namespace app

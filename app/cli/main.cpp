@@ -1,0 +1,85 @@
+// maze_mapper: map a maze cell by cell into a 4D log-odds occupancy grid (see README.md).
+// This is the composition root: the only place that wires the world side to the controller.
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/cli/cli_errors.hpp"
+#include "app/cli/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "common/interrupt.hpp"
+
+namespace {
+
+constexpr int kExitUsage = 2;
+constexpr int kExitFailure = 1;
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot and map it into a "
+               "4D log-odds occupancy grid",
+               "maze_mapper"};
+  app::CommandContext context;
+  app::add_commands(cli, context);
+  common::install_signal_handlers();
+
+  try {
+    if (argc <= 1) {
+      // No arguments: the main job, mapping the default world.
+      const std::vector<std::string> as_if{argc == 1 ? argv[0] : "maze_mapper", "run"};
+      std::vector<const char *> as_if_argv;
+      for (const std::string &word : as_if) as_if_argv.push_back(word.c_str());
+      cli.parse(static_cast<int>(as_if_argv.size()), as_if_argv.data());
+    } else {
+      const std::vector<std::string> args = app::split_child_command(std::vector<std::string>(argv, argv + argc), context);
+      std::vector<const char *> parsed;
+      for (const std::string &word : args) parsed.push_back(word.c_str());
+      cli.parse(static_cast<int>(parsed.size()), parsed.data());
+    }
+    std::cout.flush();
+    if (!std::cout) {
+      fmt::print(stderr, "error: could not write to standard output\n");
+      return kExitFailure;
+    }
+    return context.status;
+  } catch (const CLI::CallForHelp &e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp &e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion &e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError &e) {
+    fmt::print(stderr, "error: {}\n", common::printable(app::describe_usage_error(cli, e)));
+    return kExitUsage;
+  } catch (const common::InputError &e) {
+    std::cout.flush();
+    fmt::print(stderr, "{}\n", e.diagnostic());
+    return kExitUsage;
+  } catch (const common::Interrupted &e) {
+    std::cout.flush();
+    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    return common::interrupted_exit_status();
+  } catch (const common::NoSpaceError &e) {
+    std::cout.flush();
+    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    return common::kExitNoSpace;
+  } catch (const common::RuntimeFailure &e) {
+    std::cout.flush();
+    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    return kExitFailure;
+  } catch (const std::bad_alloc &) {
+    fmt::print(stderr, "error: out of memory\n");
+    return kExitFailure;
+  } catch (const std::exception &e) {
+    fmt::print(stderr, "error: internal failure: {}\n", common::printable(e.what()));
+    return kExitFailure;
+  }
+}

@@ -1,0 +1,155 @@
+// The world subcommands: show, convert, generate.
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "app/cli/arena_options.hpp"
+#include "app/cli/cli_options.hpp"
+#include "app/cli/commands.hpp"
+#include "app/report/webots_export.hpp"
+#include "common/atomic_file.hpp"
+#include "maze/arena_text.hpp"
+#include "maze/generator.hpp"
+#include "maze/text_map.hpp"
+#include "maze/world.hpp"
+#include "maze/xml_format.hpp"
+
+namespace app {
+
+maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides) {
+  maze::World world = maze::load_world(path, overrides);
+  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  return world;
+}
+
+void add_show_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("show", "print a world: a maze as a canonical micromouse text map, an arena drawn on a grid");
+  struct Args {
+    std::string world, boundary;
+    std::optional<double> resolution_m;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WORLD", args->world, "maze or arena file: text map, num, XML, .maz or room (detected by content)")
+      ->required();
+  cmd->add_option("--resolution", args->resolution_m,
+                  "M: an arena's drawing, metres a cell (default: the finest of 0.05, 0.1, 0.2, 0.25, 0.5, 1 ... m "
+                  "that draws it in at most 60 cells a side)");
+  add_boundary_option(*cmd, args->boundary);
+  cmd->callback([args, &context] {
+    const maze::AnyWorld world = load_any_world_reporting(args->world, {}, arena_overrides(args->boundary));
+    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
+      const maze::Arena &a = arena->arena;
+      std::cout << maze::draw_arena(a, args->resolution_m.value_or(maze::default_arena_resolution_m(a)));
+    } else {
+      if (args->resolution_m) fmt::print(stderr, "warning: --resolution has no effect: {} is a grid maze\n", args->world);
+      std::cout << maze::write_text_map(std::get<maze::World>(world).maze);
+    }
+    context.status = 0;
+  });
+}
+
+void add_convert_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("convert", "write a world in the format OUT's extension names");
+  struct Args {
+    std::string world, out, boundary;
+    maze::WorldOverrides overrides;
+    WebotsExport wbt;
+    bool keep_origin = false;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WORLD", args->world, "maze or arena file: text map, num, XML, .maz or room (detected by content)")
+      ->required();
+  cmd->add_option("OUT", args->out,
+                  "output file: .txt (text map), .num, .xml, .maz (16 x 16, binary), .wbt (Webots R2023b) or .room "
+                  "(an arena; a maze's walls as rectangles)")
+      ->required();
+  add_cell_size_option(*cmd, args->overrides);
+  add_boundary_option(*cmd, args->boundary);
+  cmd->add_flag("--keep-origin", args->keep_origin,
+               ".xml: keep the world's own origin (default centred on (0, 0), as the course's files are)");
+  cmd->add_option("--robot", args->wbt.robot,
+                  fmt::format(".wbt: the robot the world carries, one of {} (default {})", robot_names(), args->wbt.robot));
+  cmd->add_option("--model", args->wbt.model,
+                  ".wbt: the controller's mapping model (default cell with a lidar, else bump with bumpers, else depth)");
+  cmd->add_option("--strategy", args->wbt.strategy,
+                  fmt::format(".wbt: the controller's exploration strategy (default {})", args->wbt.strategy));
+  cmd->add_option("--subcells", args->wbt.subcells,
+                  fmt::format(".wbt: the controller's sub-cells per cell side, K (default {})", args->wbt.subcells));
+  cmd->callback([cmd, args, &context] {
+    const maze::Format format = maze::format_for_output(args->out);  // a bad extension fails before any reading
+    common::refuse_output_over_input("", args->out, {args->world});
+    // The controller's set-up travels in a .wbt only: for another format these do nothing.
+    for (const char *option : {"--robot", "--model", "--strategy", "--subcells"}) {
+      if (format != maze::Format::wbt && cmd->count(option) > 0) {
+        fmt::print(stderr, "warning: {} has no effect: only a .wbt world carries the robot and its controller\n",
+                   option);
+      }
+    }
+    if (format != maze::Format::xml && args->keep_origin) {
+      fmt::print(stderr, "warning: --keep-origin has no effect: only an .xml world is centred\n");
+    }
+    const maze::AnyWorld world = load_any_world_reporting(args->world, args->overrides, arena_overrides(args->boundary));
+    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
+      maze::save_arena(arena->arena, args->out);  // .room or .xml; any other format is refused
+      if (args->keep_origin) fmt::print(stderr, "warning: --keep-origin has no effect: an arena keeps its coordinates\n");
+      context.status = 0;
+      return;
+    }
+    const maze::Maze &maze = std::get<maze::World>(world).maze;
+    if (format == maze::Format::wbt) {
+      maze::write_file_atomically(
+          args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));
+    } else if (format == maze::Format::xml && args->keep_origin) {
+      maze::write_file_atomically(args->out, maze::write_xml_keeping_origin(maze));
+    } else {
+      maze::save_world(maze, args->out);
+    }
+    // Said once the file is written: a write that fails is its error line alone.
+    if (const auto dropped = maze::dropped_by(maze, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+    context.status = 0;
+  });
+}
+
+void add_generate_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("generate", "generate a random maze and print it as a text map");
+  struct Args {
+    std::string size, algorithm = "dfs", out;
+    std::uint64_t seed = common::kDefaultSeed;
+    double loops = 0.0;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WxH", args->size, "maze size in cells, e.g. 16x16 (1 to 4096 each way)")->required();
+  add_seed_option(*cmd, args->seed, "the maze; the same seed gives the same maze");
+  cmd->add_option("--loops", args->loops,
+                  fmt::format("fraction (0 to 1) of the perfect maze's interior walls removed (default {})", args->loops));
+  cmd->add_option("--algorithm", args->algorithm, fmt::format("dfs, kruskal or prim (default {})", args->algorithm));
+  cmd->add_option("-o,--out", args->out, "FILE: write there (format by extension) instead of standard output");
+  add_old_spelling(*cmd, "--output", "-o/--out", [args](const std::string &file) { args->out = file; });
+  cmd->callback([args, &context] {
+    const maze::Cell size = maze::parse_size(args->size);
+    maze::GeneratorOptions options{size.x, size.y, args->seed, args->loops, maze::parse_algorithm(args->algorithm)};
+    options.validate();
+    if (!args->out.empty()) maze::format_for_output(args->out);
+    const maze::Maze m = maze::generate_maze(options);
+    if (args->out.empty()) {
+      std::cout << maze::write_text_map(m);
+    } else {
+      maze::save_world(m, args->out);
+      // As convert says it: a .num holds no goal, and the maze has one.
+      if (const auto dropped = maze::dropped_by(m, maze::format_for_output(args->out))) {
+        fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+      }
+    }
+    context.status = 0;
+  });
+}
+
+}  // namespace app

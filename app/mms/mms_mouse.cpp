@@ -1,0 +1,188 @@
+#include "app/mms/mms_mouse.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace app {
+namespace {
+
+using mapping::Cell;
+using mapping::Heading;
+using mapping::SideState;
+
+maze::Side to_side(Heading h) {
+  switch (h) {
+    case Heading::north: return maze::Side::north;
+    case Heading::east: return maze::Side::east;
+    case Heading::south: return maze::Side::south;
+    case Heading::west: return maze::Side::west;
+  }
+  return maze::Side::north;
+}
+
+MmsOutcome answer(std::string text) { return MmsOutcome{std::move(text), std::nullopt, {}}; }
+
+}  // namespace
+
+MmsMouse::MmsMouse(const maze::Maze &truth, const MmsOptions &options, robot::CommandController &controller,
+                   const robot::ControllerOptions &controller_options, MmsReport &report)
+    : truth_(truth),
+      options_(options),
+      controller_(controller),
+      start_(controller_options.start),
+      start_heading_(controller_options.start_heading),
+      heading_(controller_options.start_heading),
+      report_(report) {}
+
+MmsOutcome MmsMouse::execute(const MmsCommand &c) {
+  switch (c.verb) {
+    case MmsVerb::maze_width: return answer(std::to_string(truth_.width()));
+    case MmsVerb::maze_height: return answer(std::to_string(truth_.height()));
+    case MmsVerb::wall_front: return wall_query(heading_, c.count);
+    case MmsVerb::wall_right: return wall_query(mapping::turned_right(heading_), c.count);
+    case MmsVerb::wall_left: return wall_query(mapping::turned_left(heading_), c.count);
+    case MmsVerb::wall_back: return wall_query(mapping::opposite(heading_), c.count);
+    case MmsVerb::wall_front_left:
+    case MmsVerb::wall_front_right:
+    case MmsVerb::wall_back_left:
+    case MmsVerb::wall_back_right: return answer("true");
+    case MmsVerb::move_forward: return move_forward(c.count);
+    case MmsVerb::turn_left: return turn(mapping::turned_left(heading_));
+    case MmsVerb::turn_right: return turn(mapping::turned_right(heading_));
+    case MmsVerb::move_forward_half:
+    case MmsVerb::turn_left_45:
+    case MmsVerb::turn_right_45:
+      return MmsOutcome{std::nullopt, MmsEnd::protocol_error,
+                        "half steps and 45-degree turns are not simulated (the robot moves cell by cell)"};
+    case MmsVerb::was_reset: return answer("false");  // no reset button here
+    case MmsVerb::ack_reset: return ack_reset();
+    case MmsVerb::get_stat: {
+      std::optional<std::string> value = report_.stats.stat(c.stat);
+      if (!value) return MmsOutcome{std::nullopt, MmsEnd::protocol_error, fmt::format("getStat: no stat '{}'", c.stat)};
+      return answer(*value);
+    }
+    default: return mark(c);
+  }
+}
+
+MmsOutcome MmsMouse::mark(const MmsCommand &c) {
+  MmsMarks &m = report_.marks;
+  const auto i = static_cast<std::size_t>(c.y * m.width + c.x);
+  const bool inside = m.inside(c.x, c.y);
+  switch (c.verb) {
+    case MmsVerb::set_wall:
+    case MmsVerb::clear_wall:
+      if (inside) m.set_wall(c.x, c.y, c.side, c.verb == MmsVerb::set_wall);
+      break;
+    case MmsVerb::set_color:
+      if (inside) m.colors[i] = c.color;
+      break;
+    case MmsVerb::clear_color:
+      if (inside) m.colors[i] = 0;
+      break;
+    case MmsVerb::set_text:
+      if (inside) m.texts[i] = c.text;
+      break;
+    case MmsVerb::clear_text:
+      if (inside) m.texts[i].clear();
+      break;
+    case MmsVerb::clear_all_color: std::fill(m.colors.begin(), m.colors.end(), 0); break;
+    case MmsVerb::clear_all_text:
+      for (std::string &t : m.texts) t.clear();
+      break;
+    default: break;
+  }
+  return {};
+}
+
+bool MmsMouse::until_reached() const {
+  const Cell at = controller_.cell();
+  switch (options_.until) {
+    case MmsUntil::exit: return false;
+    case MmsUntil::goal: return in_goal(at);
+    case MmsUntil::start: return report_.stats.solved() && at == start_;
+  }
+  return false;
+}
+
+bool MmsMouse::in_goal(Cell c) const { return truth_.is_goal(maze::Cell{c.x, c.y}); }
+
+MmsOutcome MmsMouse::motion_failed(robot::Motion m) {
+  robot_motion_ = m;
+  return MmsOutcome{std::nullopt, MmsEnd::robot, {}};
+}
+
+std::optional<bool> MmsMouse::wall(Cell c, Heading h, bool own_cell) {
+  if (options_.walls == MmsWalls::truth) return truth_.has_wall(maze::Cell{c.x, c.y}, to_side(h));
+  if (!own_cell) return controller_.side(c, h) == SideState::wall;
+  SideState state = SideState::unknown;
+  if (const robot::Motion m = controller_.look(h, state); m != robot::Motion::ok) {
+    robot_motion_ = m;
+    return std::nullopt;
+  }
+  return state != SideState::open;
+}
+
+// N half steps away: the sides of ceil(N / 2) cells on (mms counts from the cell's centre,
+// and a half step reaches the next side).
+MmsOutcome MmsMouse::wall_query(Heading h, int half_steps) {
+  const int cells = std::max(1, (half_steps + 1) / 2);
+  Cell c = controller_.cell();
+  for (int i = 0; i < cells; ++i) {
+    const std::optional<bool> is_wall = wall(c, h, i == 0);
+    if (!is_wall) return motion_failed(robot_motion_);
+    if (*is_wall) return answer("true");
+    c = mapping::neighbour(c, h);
+  }
+  return answer("false");
+}
+
+MmsOutcome MmsMouse::turn(Heading h) {
+  report_.stats.add_turn();
+  heading_ = h;
+  if (const robot::Motion m = controller_.turn_to(h); m != robot::Motion::ok) return motion_failed(m);
+  return answer("ack");
+}
+
+MmsOutcome MmsMouse::move_forward(int cells) {
+  if (cells < 1) return crash();
+  const std::optional<bool> ahead = wall(controller_.cell(), heading_, true);
+  if (!ahead) return motion_failed(robot_motion_);
+  if (*ahead) return crash();
+  if (controller_.cell() == start_) report_.stats.start_run();
+  report_.stats.add_distance(cells);
+  bool crashed = false;
+  for (int i = 0; i < cells && !crashed; ++i) {
+    if (i > 0) {
+      const std::optional<bool> next = wall(controller_.cell(), heading_, true);
+      if (!next) return motion_failed(robot_motion_);
+      crashed = *next;
+      if (crashed) break;
+    }
+    if (const robot::Motion m = controller_.move(heading_); m != robot::Motion::ok) return motion_failed(m);
+  }
+  if (in_goal(controller_.cell())) {
+    report_.stats.finish_run();
+  } else if (controller_.cell() == start_) {
+    report_.stats.end_unfinished_run();
+  }
+  return crashed ? crash() : answer("ack");
+}
+
+MmsOutcome MmsMouse::crash() {
+  ++report_.crashes;
+  return answer("crash");
+}
+
+MmsOutcome MmsMouse::ack_reset() {
+  bool found = false;
+  if (const robot::Motion m = controller_.return_to_start(found); m != robot::Motion::ok) return motion_failed(m);
+  if (!found) return MmsOutcome{std::nullopt, MmsEnd::robot, "ackReset: no way back to the start through sides known open"};
+  heading_ = start_heading_;
+  report_.stats.penalize_for_reset();
+  report_.stats.end_unfinished_run();
+  return answer("ack");
+}
+
+}  // namespace app

@@ -1,0 +1,343 @@
+#include "app/mms/mms_session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "app/run/evaluation.hpp"
+#include "app/mms/mms_mouse.hpp"
+#include "app/mms/mms_outputs.hpp"
+#include "app/report/outputs.hpp"
+#include "app/report/truth_picture.hpp"
+#include "app/run/profile_json.hpp"
+#include "app/run/terminal.hpp"
+#include "common/error.hpp"
+#include "mapping/walls.hpp"
+#include "maze/sim/profile.hpp"
+#include "maze/sim/simulation.hpp"
+#include "maze/world.hpp"
+#include "render/ascii_map.hpp"
+#include "robot/command_controller.hpp"
+#include "robot/progress_printer.hpp"
+
+namespace app {
+namespace {
+
+using mapping::Cell;
+using mapping::Heading;
+using mapping::SideState;
+using Clock = std::chrono::steady_clock;
+
+// The maze mms runs in: a maze without goals gets its centre cells, mms's goal.
+maze::Maze with_goals(const maze::Maze &truth) {
+  maze::Maze m = truth;
+  if (!m.goals().empty()) return m;
+  for (int y = (m.height() - 1) / 2; y <= m.height() / 2; ++y) {
+    for (int x = (m.width() - 1) / 2; x <= m.width() / 2; ++x) m.add_goal({x, y});
+  }
+  return m;
+}
+
+std::string quoted_line(std::string_view line) {
+  constexpr std::size_t kShown = 60;
+  std::string shown;
+  for (const char c : line.substr(0, kShown)) shown += (c >= 32 && c < 127) ? c : '?';
+  return fmt::format("\"{}{}\"", shown, line.size() > kShown ? "..." : "");
+}
+
+// The conversation itself, until something ends it.
+void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child, const RunControls &controls,
+              MmsReport &report) {
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(options.time_limit_s));
+  std::string line;
+  for (;;) {
+    const ChildProcess::Read r = child.read_line(line, deadline, options.max_line_bytes, controls.interrupted);
+    if (r == ChildProcess::Read::closed) {
+      report.exit = child.finish(Clock::now() + std::chrono::seconds(2));
+      report.end = report.exit->ok() ? MmsEnd::exited : MmsEnd::failed;
+      report.message = fmt::format("the algorithm ended ({}) after {} lines", describe(*report.exit), report.lines);
+      return;
+    }
+    if (r == ChildProcess::Read::timeout) {
+      report.end = MmsEnd::time_limit;
+      report.message = fmt::format("no end after {:g} s (--time-limit), {} lines", options.time_limit_s, report.lines);
+      return;
+    }
+    if (r == ChildProcess::Read::interrupted) {
+      report.end = MmsEnd::interrupted;
+      report.message = "interrupted";
+      return;
+    }
+    ++report.lines;
+    if (r == ChildProcess::Read::too_long) {
+      report.end = MmsEnd::protocol_error;
+      report.message = fmt::format("line {}: longer than {} bytes (--max-line)", report.lines, options.max_line_bytes);
+      return;
+    }
+    if (options.transcript) fmt::print(stderr, "mms {}> {}\n", report.lines, line);
+    const ParsedLine parsed = parse_mms_line(line);
+    if (!parsed.command) {
+      if (options.ignore_invalid) {
+        fmt::print(stderr, "warning: line {} {}: {}; ignored (--ignore-invalid)\n", report.lines, quoted_line(line),
+                   parsed.error);
+        continue;
+      }
+      report.end = MmsEnd::protocol_error;
+      report.message = fmt::format("line {} {}: {}", report.lines, quoted_line(line), parsed.error);
+      return;
+    }
+    const MmsOutcome outcome = session.execute(*parsed.command);
+    if (outcome.end) {
+      report.end = *outcome.end;
+      report.message = outcome.message.empty() ? std::string() : fmt::format("line {} {}: {}", report.lines,
+                                                                             quoted_line(line), outcome.message);
+      return;
+    }
+    if (outcome.answer) {
+      if (options.transcript) fmt::print(stderr, "mms {}< {}\n", report.lines, *outcome.answer);
+      child.write(*outcome.answer + "\n");
+    }
+    if (session.until_reached()) {
+      report.end = MmsEnd::reached;
+      report.message = fmt::format("the {} was reached (--until) after {} lines",
+                                   options.until == MmsUntil::goal ? "goal" : "start, after the goal", report.lines);
+      return;
+    }
+  }
+}
+
+robot::EndReason reason_of(const MmsReport &report, robot::Motion motion) {
+  if (report.end == MmsEnd::interrupted) return robot::EndReason::stopped;
+  if (report.end == MmsEnd::robot) {
+    switch (motion) {
+      case robot::Motion::max_steps: return robot::EndReason::max_steps;
+      case robot::Motion::no_progress: return robot::EndReason::no_progress;
+      case robot::Motion::ended: return robot::EndReason::simulation_ended;
+      case robot::Motion::stopped: return robot::EndReason::stopped;
+      case robot::Motion::ok: break;
+    }
+  }
+  return robot::EndReason::done;
+}
+
+LearnedSide to_learned(SideState s) {
+  switch (s) {
+    case SideState::open: return LearnedSide::open;
+    case SideState::wall: return LearnedSide::wall;
+    case SideState::unknown: return LearnedSide::unknown;
+  }
+  return LearnedSide::unknown;
+}
+
+// The grid's belief about each side of the maze.
+std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result,
+                                                                 const render::MapStyle &style) {
+  return [&result, initial = style.initial_log_odds, threshold = style.threshold](maze::Cell c, maze::Side s) {
+    // maze::Side and mapping::Heading list the sides in the same order: N, E, S, W.
+    return to_learned(mapping::side_state(result.grid, initial, Cell{c.x, c.y},
+                                          static_cast<Heading>(static_cast<int>(s)), threshold));
+  };
+}
+
+}  // namespace
+
+void validate(const MmsOptions &options) {
+  if (options.command.empty()) throw common::InputError("mms needs the algorithm's command after --: mms WORLD -- python3 algo.py");
+  if (!(options.time_limit_s > 0.0)) {
+    throw common::InputError(fmt::format("--time-limit must be more than 0 seconds (got {:g})", options.time_limit_s));
+  }
+  if (options.max_line_bytes < 64) {
+    throw common::InputError(fmt::format("--max-line must be at least 64 bytes (got {})", options.max_line_bytes));
+  }
+}
+
+std::string_view to_string(MmsEnd end) {
+  switch (end) {
+    case MmsEnd::exited: return "exited";
+    case MmsEnd::reached: return "reached";
+    case MmsEnd::failed: return "failed";
+    case MmsEnd::time_limit: return "time limit";
+    case MmsEnd::protocol_error: return "protocol error";
+    case MmsEnd::robot: return "robot stopped";
+    case MmsEnd::interrupted: return "interrupted";
+  }
+  return "?";
+}
+
+namespace {
+
+render::MapStyle map_style(const RunOptions &options, const mapping::SensorModel &model,
+                           const robot::ControllerOptions &controller, int terminal_fd) {
+  render::MapStyle style;
+  style.subcell_columns = subcell_columns(options.output.subcell_columns, terminal_fd, controller.geometry.width_subcells());
+  style.ascii = options.output.ascii;
+  style.unknown = options.output.unknown;
+  style.initial_log_odds = static_cast<float>(model.prior_log_odds());
+  style.color = options.output.color;
+  style.threshold = controller.occupied_threshold;
+  return style;
+}
+
+// The robot's side of the summary: its counts, and its map scored against the truth.
+void summarize(const maze::Maze &truth, const robot::RunResult &result, const render::MapStyle &style,
+               RunSummary &summary) {
+  summary.reason = result.reason;
+  summary.message = result.message;
+  summary.width = truth.width();
+  summary.height = truth.height();
+  summary.steps = result.steps;
+  summary.moves = result.moves;
+  summary.visited = result.visited;
+  summary.reached_goal = std::any_of(result.path.begin(), result.path.end(),
+                                     [&](Cell c) { return truth.is_goal(maze::Cell{c.x, c.y}); });
+  summary.score = score_map(truth, visited_cells(result.visits), learned_sides(result, style));
+  summary.sim_time_s = result.sim_time_s;
+  summary.explore_time_s = result.sim_time_s;
+}
+
+// The conversation on a started robot; the robot's ending, if it had one.
+robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandController &controller, ChildProcess &child,
+                      const RunControls &controls, robot::Motion started, MmsReport &report) {
+  robot::Motion motion = started;
+  if (motion == robot::Motion::ok) {
+    converse(mms, mouse, child, controls, report);
+    motion = mouse.robot_motion();
+  } else {
+    report.end = MmsEnd::robot;
+  }
+  if (!report.exit) report.exit = child.kill();
+  if (motion == robot::Motion::stopped) report.end = MmsEnd::interrupted;
+  robot::EndReason reason = reason_of(report, motion);
+  if (report.end == MmsEnd::robot && motion != robot::Motion::ok) {
+    std::string why;
+    reason = controller.ended(motion, why);
+    if (report.message.empty()) {
+      report.message = fmt::format("the robot stopped: {}{}", robot::to_string(reason), why.empty() ? "" : fmt::format(" ({})", why));
+    }
+  }
+  return reason;
+}
+
+}  // namespace
+
+MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maze &given, std::ostream &out,
+               const RunControls &controls) {
+  validate(mms);
+  const auto started = Clock::now();
+  const maze::Maze truth = with_goals(given);
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
+  require_sensors(options, profile);
+  mapping::validate(controller_opts.geometry, mapping::kDefaultMaxGridBytes);
+  robot::validate(controller_opts);
+  webots::embedded::Simulation simulation(truth, profile, options.simulation);
+  const mapping::SensorModel model(options.sensor);
+  const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
+
+  const std::string &out_dir = options.output.out_dir;
+  if (!out_dir.empty()) prepare_output_dir(out_dir);
+  robot::CommandController controller(simulation.robot(), controller_opts);
+  MmsRun run;
+  MmsReport &report = run.mms;
+  report.marks = MmsMarks(truth.width(), truth.height());
+  std::optional<robot::ProgressPrinter> printer;
+  if (!options.output.quiet) printer.emplace(out, style, truth.width() * truth.height());
+  robot::RunHooks hooks;
+  if (printer) hooks.on_move = [&printer](const robot::MoveReport &r) { (*printer)(r); };
+  if (controls.interrupted != nullptr) hooks.on_step = [&controls](const robot::StepReport &) { return !controls.interrupted(); };
+
+  MmsMouse mouse(truth, mms, controller, controller_opts, report);
+  ChildProcess child(mms.command);  // before the robot moves: a command that cannot start prints nothing
+  const robot::Motion motion = controller.start(hooks);
+  const robot::EndReason reason = talk(mms, mouse, controller, child, controls, motion, report);
+  const robot::RunResult result = controller.finish(reason, report.message);
+  summarize(truth, result, style, run.summary);
+  run.summary.interrupted = report.end == MmsEnd::interrupted;
+  run.summary.max_steps = controller_opts.motion.max_steps;
+  run.summary.max_steps_asked = options.max_steps.has_value();
+  run.summary.wall_time_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
+
+  if (!out_dir.empty()) {
+    RunFiles files{&result.grid, &model, &result.path, nullptr, {}, &truth, &result.visits,
+                   learned_sides(result, style), nullptr, landmark_marks(truth)};
+    for (const maze::Cell goal : truth.goals()) files.goals.push_back(Cell{goal.x, goal.y});
+    write_mms_outputs(out_dir, options, mms, run, files);
+  }
+  if (report.end == MmsEnd::interrupted) {
+    out << "(interrupted: the final map is not printed)\n\n";
+  } else {
+    out << render::render_map(result.grid, result.visits, style) << '\n';
+    out << "the algorithm's marks (setWall, setColor, setText):\n" << render_marks(report.marks, style.color) << '\n';
+  }
+  out << format_mms_summary(options, mms, run);
+  return run;
+}
+
+MmsRun run_mms_world(const RunOptions &options, const MmsOptions &mms, std::ostream &out, const RunControls &controls) {
+  // mms's maze: the algorithm starts in (0,0) facing north and seeks the centre (it counts
+  // its own position from there), unless --start or --goal say otherwise.
+  maze::WorldOverrides overrides = options.world_overrides;
+  if (!overrides.start) overrides.start = maze::Cell{0, 0};
+  if (!overrides.goals) overrides.centre_goals = true;
+  const maze::World world = maze::load_world(options.world, overrides);
+  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  return run_mms(options, mms, world.maze, out, controls);
+}
+
+std::string command_line(const std::vector<std::string> &command) {
+  std::string text;
+  for (const std::string &a : command) {
+    if (!text.empty()) text += ' ';
+    text += a.find_first_of(" \t'\"") == std::string::npos && !a.empty() ? a : fmt::format("'{}'", a);
+  }
+  return text;
+}
+
+std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
+  const RunSummary &s = run.summary;
+  const MmsReport &r = run.mms;
+  std::string text;
+  const auto line = [&text](std::string_view key, const std::string &value) { text += fmt::format("{}: {}\n", key, value); };
+  const auto optional = [](auto v) { return v ? mms_number(static_cast<double>(*v)) : std::string("-"); };
+  line("world", options.world);
+  line("size", fmt::format("{}x{}", s.width, s.height));
+  line("subcells", std::to_string(options.subcells));
+  line("model", std::string(sensing::to_string(options.model.kind)));
+  line("robot", options.robot);
+  line("seed", std::to_string(options.simulation.seed));
+  line("algorithm", command_line(mms.command));
+  line("walls", mms.walls == MmsWalls::truth ? "truth" : "sensed");
+  line("end", r.message.empty() ? std::string(to_string(r.end)) : fmt::format("{} ({})", to_string(r.end), r.message));
+  line("lines", std::to_string(r.lines));
+  line("steps", std::to_string(s.steps));
+  line("moves", std::to_string(s.moves));
+  line("crashes", std::to_string(r.crashes));
+  line("visited", std::to_string(s.visited));
+  line("goal", s.reached_goal ? "reached" : "not reached");
+  line("reachable", std::to_string(s.score.reachable_cells));
+  line("coverage", fmt::format("{:.2f}%", s.score.coverage_percent()));
+  line("wall_accuracy", fmt::format("{:.2f}%", s.score.wall_accuracy_percent()));
+  line("total_distance", std::to_string(r.stats.total_distance()));
+  line("total_turns", std::to_string(r.stats.total_turns()));
+  line("total_effective_distance", mms_number(r.stats.total_effective_distance()));
+  line("best_run_distance", optional(r.stats.best_run_distance()));
+  line("best_run_turns", optional(r.stats.best_run_turns()));
+  line("best_run_effective_distance", optional(r.stats.best_run_effective_distance()));
+  line("score", mms_number(r.stats.score()));
+  line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
+  line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
+  return text;
+}
+
+int exit_status(const MmsRun &run) {
+  if (run.mms.end == MmsEnd::interrupted) return 130;
+  const bool ended_as_asked = run.mms.end == MmsEnd::exited || run.mms.end == MmsEnd::reached;
+  return ended_as_asked && run.summary.reached_goal ? 0 : 1;
+}
+
+}  // namespace app

@@ -1,0 +1,125 @@
+// The directory of `run --out DIR` (app/report/output_dir.hpp).
+
+#include "app/report/output_dir.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace app {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail_out(const std::string &dir, const std::string &reason) {
+  throw common::InputError(fmt::format("--out {}: {}", dir, reason));
+}
+
+// The first missing ancestor of dir (dir itself when only it is missing), to remove on failure.
+fs::path first_missing(const fs::path &dir) {
+  fs::path missing;
+  for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    if (fs::exists(p, ec) || ec) break;
+    missing = p;
+    if (p == p.parent_path()) break;
+  }
+  return missing;
+}
+
+void probe_writable(const std::string &dir) {
+  const fs::path probe = fs::path(dir) / fmt::format(".maze_mapper.probe.{}", ::getpid());
+  const std::string name = probe.string();
+  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) fail_out(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
+  ::close(fd);
+  ::unlink(name.c_str());
+}
+
+
+
+// The names write_outputs() may write in DIR (snapshots/ apart).
+constexpr std::array<const char *, 9> kOutputNames{"map.pgm",    "map.yaml",    "map.png",  "truth.png", "summary.json",
+                                                   "trace.csv", "replay.html", "plan.png", "plan.csv"};
+
+// "NN.png", two digits or more: a snapshot's name.
+bool is_snapshot_name(const std::string &name) {
+  if (name.size() < 6 || !name.ends_with(".png")) return false;
+  return std::all_of(name.begin(), name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Removes a file an earlier run left (a regular file or a link; never anything else).
+void remove_stale(const fs::path &path) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (ec || !(fs::is_regular_file(status) || fs::is_symlink(status))) return;
+  fs::remove(path, ec);
+}
+
+// The files of an earlier run that this one did not write: those of the program's names in
+// `dir`, and snapshots/NN.png (snapshots/ itself when that empties it).
+void remove_stale_files(const fs::path &dir, const std::vector<std::string> &written) {
+  for (const char *name : kOutputNames) {
+    if (std::find(written.begin(), written.end(), name) == written.end()) remove_stale(dir / name);
+  }
+  const fs::path snapshots = dir / "snapshots";
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(snapshots, ec))) return;
+  for (const fs::directory_entry &entry : fs::directory_iterator(snapshots, ec)) {
+    const std::string name = "snapshots/" + entry.path().filename().string();
+    if (is_snapshot_name(entry.path().filename().string()) &&
+        std::find(written.begin(), written.end(), name) == written.end()) {
+      remove_stale(entry.path());
+    }
+  }
+  if (fs::is_empty(snapshots, ec) && !ec) fs::remove(snapshots, ec);
+}
+
+}  // namespace
+
+void prepare_output_dir(const std::string &dir) {
+  if (dir.empty()) fail_out(dir, "an empty path");
+  const fs::path path(dir);
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status)) {
+    if (!fs::is_directory(status)) fail_out(dir, "exists and is not a directory");
+    probe_writable(dir);
+    return;
+  }
+  const fs::path created = first_missing(path);
+  errno = 0;
+  fs::create_directories(path, ec);
+  if (ec || !fs::is_directory(path)) {
+    const std::string reason = ec ? ec.message() : std::string(std::strerror(errno != 0 ? errno : EACCES));
+    if (!created.empty()) fs::remove_all(created, ec);
+    fail_out(dir, fmt::format("cannot create the directory: {}", reason));
+  }
+  try {
+    probe_writable(dir);
+  } catch (const common::InputError &) {
+    if (!created.empty()) fs::remove_all(created, ec);
+    throw;
+  }
+}
+
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &inputs) {
+  for (const char *name : kOutputNames) common::refuse_output_over_input("--out", (fs::path(dir) / name).string(), inputs);
+}
+
+void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written) {
+  remove_stale_files(fs::path(dir), written);
+}
+
+}  // namespace app

@@ -1,0 +1,414 @@
+#include "app/run/run.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <exception>
+#include <cstdio>
+#include <functional>
+#include <istream>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "common/interrupt.hpp"
+#include "maze/maze.hpp"
+#include "maze/sim/profile.hpp"
+#include "maze/sim/simulation.hpp"
+#include "maze/world.hpp"
+#include "mapping/occupancy_grid.hpp"
+#include "mapping/walls.hpp"
+#include "render/ascii_map.hpp"
+#include "robot/progress_printer.hpp"
+#include "app/run/plan_path.hpp"
+#include "app/run/profile_json.hpp"
+#include "app/run/terminal.hpp"
+
+namespace app {
+namespace {
+
+mapping::Cell to_mapping(maze::Cell c) { return {c.x, c.y}; }
+
+// The robot's description as the controller gets it (like a URDF): where each bumper and
+// range sensor sits and what it sees. Range sensors sit on the body's rim; their value is
+// metres, the far end of the lookup table is their max range and its noise their error.
+robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
+  robot::SensingOptions s;
+  for (const maze::sim::BumperSpec &b : profile.bumpers) {
+    s.bumpers.push_back({b.name, b.angle_rad, profile.body_radius_m});
+  }
+  for (const maze::sim::DistanceSensorSpec &d : profile.distance_sensors) {
+    const maze::sim::LookupRow &far = d.lookup_table.back();
+    s.ranges.push_back({d.name, d.angle_rad, profile.body_radius_m, far.value, d.aperture_rad,
+                        far.noise_fraction});
+  }
+  return s;
+}
+
+// The robot names that have the devices a set-up reads, for the error message.
+std::string robots_with(const sensing::SetUp &setup) {
+  std::string names;
+  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) {
+    if (!has_devices(p, setup)) continue;
+    if (!names.empty()) names += ", ";
+    names += p.name;
+  }
+  return names;
+}
+
+robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
+  robot::DeviceNames d;
+  d.left_motor = profile.left_motor;
+  d.right_motor = profile.right_motor;
+  d.left_encoder = profile.left_encoder;
+  d.right_encoder = profile.right_encoder;
+  d.imu = profile.imu;
+  d.gps = profile.gps;
+  if (!profile.lidars.empty()) d.lidar = profile.lidars.front().name;
+  return d;
+}
+// The controller's belief about each side of the maze, read from its grid.
+std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result, float initial_log_odds,
+                                                                 std::optional<float> threshold) {
+  return [&result, initial_log_odds, threshold](maze::Cell c, maze::Side s) {
+    return mapping::side_state(result.grid, initial_log_odds, to_mapping(c), s, threshold);
+  };
+}
+
+MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds,
+               std::optional<float> threshold) {
+  return score_map(truth, visited_cells(result.visits), learned_sides(result, initial_log_odds, threshold));
+}
+
+struct RunState {
+  bool quit = false;          // q at a --step prompt
+  bool stepping = true;       // false once --step's input has ended
+  bool interrupted = false;   // Ctrl-C
+};
+
+// --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
+// of the input the run goes on to its end without stopping.
+void wait_for_step(const RunControls &controls, const robot::MoveReport &report, RunState &state) {
+  if (!state.stepping || controls.in == nullptr) return;
+  if (controls.prompt != nullptr) {
+    *controls.prompt << fmt::format("-- cell ({},{}), step {}: Enter goes on, q quits -- ",
+                                    report.cell.x, report.cell.y, report.step)
+                     << std::flush;
+  }
+  std::string line;
+  if (!std::getline(*controls.in, line)) {
+    state.stepping = false;
+    return;
+  }
+  if (line == "q" || line == "quit" || line == "Q") state.quit = true;
+}
+
+void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option) {
+  if (c.x < 0 || c.y < 0 || c.x >= maze.width() || c.y >= maze.height()) {
+    throw common::InputError(fmt::format("{} {},{} is outside the {}x{} maze", option, c.x, c.y,
+                                         maze.width(), maze.height()));
+  }
+}
+
+// "2 sides of visited cells learned wrong: N of (0,4) a wall that is not there, ..."
+std::string describe_wrong_sides(const WrongSides &wrong) {
+  std::string named;
+  for (const WrongSide &w : wrong.first) {
+    const char *what = w.verdict == SideVerdict::phantom   ? "a wall that is not there"
+                       : w.verdict == SideVerdict::missed ? "a wall missed"
+                                                          : "an opening never seen";
+    named += fmt::format("{}{} of ({},{}) {}", named.empty() ? "" : ", ", common::to_char(w.side), w.cell.x,
+                         w.cell.y, what);
+  }
+  const std::size_t n = wrong.count;
+  return fmt::format("{} side{} of visited cells learned wrong: {}{}", n, n == 1 ? "" : "s", named,
+                     n > wrong.first.size() ? ", ..." : "");
+}
+
+// The truth's verdict on a run that believed it was done (the controller never sees the
+// maze, so only the composition root can say it got the maze wrong, and must):
+//   wrong map   a side of a cell the search visited (and so scanned in) is learned wrong or
+//               never learned; whatever the strategy, where the robot looked it must have
+//               mapped right (a speed run's cells, driven through unscanned, are not judged);
+//   incomplete  dfs and frontier mean to visit every reachable cell (wall followers and
+//               floodfill may leave cells by design): reachable cells never visited.
+void judge_ending(const RunOptions &options, RunSummary &summary) {
+  if (summary.reason == robot::EndReason::max_steps && !summary.max_steps_asked) {
+    // The default limit is a safety net far above what any set-up needs; reaching it is a failure.
+    summary.message = fmt::format("the default limit of {} steps ran out; --max-steps N allows more", summary.max_steps);
+  }
+  if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
+  const MapScore &score = summary.score;
+  const auto add = [&](const std::string &finding) {
+    summary.message = summary.message.empty() ? finding : fmt::format("{}; {}", finding, summary.message);
+  };
+  const bool means_to_cover = options.strategy == explore::StrategyKind::dfs ||
+                              options.strategy == explore::StrategyKind::frontier;
+  // Floodfill means to reach a goal: done without one (walled off from the start) is not done.
+  if (options.strategy == explore::StrategyKind::floodfill && !summary.reached_goal) {
+    add("no goal reached");
+    summary.reason = robot::EndReason::incomplete;
+  }
+  if (means_to_cover && score.visited_reachable_cells < score.reachable_cells) {
+    const std::size_t missed = score.reachable_cells - score.visited_reachable_cells;
+    add(fmt::format("{} of {} reachable cells never visited", missed, score.reachable_cells));
+    summary.reason = robot::EndReason::incomplete;
+  }
+  if (summary.wrong_sides.count > 0) {
+    add(describe_wrong_sides(summary.wrong_sides));
+    summary.reason = robot::EndReason::wrong_map;
+  }
+}
+
+}  // namespace
+
+robot::ControllerOptions controller_options(const RunOptions &options, const maze::Maze &maze,
+                                            const maze::sim::RobotProfile &profile) {
+  robot::ControllerOptions c;
+  c.geometry.width_cells = maze.width();
+  c.geometry.height_cells = maze.height();
+  c.geometry.subcells = options.subcells;
+  c.geometry.cell_size_m = maze.cell_size_m();
+  c.geometry.origin = {maze.origin_x_m(), maze.origin_y_m()};
+  c.start = to_mapping(maze.start());
+  c.start_heading = maze.start_heading();
+  for (const maze::Cell goal : maze.goals()) c.goals.push_back(to_mapping(goal));
+  c.sensor = options.sensor;
+  c.model = options.model;
+  c.strategy = options.strategy;
+  c.motion.wheel_radius_m = profile.wheel_radius_m;
+  c.motion.axle_m = profile.axle_m;
+  c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
+  c.devices = devices_of(profile);
+  if (!profile.lidars.empty()) {
+    const maze::sim::LidarSpec &lidar = profile.lidars.front();
+    // The lidar's data sheet: its noise, so that the scan filter never takes noise for a spike.
+    c.scan_filter.range_noise_m = options.simulation.noise.value_or(lidar.noise) * lidar.max_range_m;
+  }
+  c.speed_run = options.plan.speed_run;
+  if (profile.speed_run) {
+    c.motion.ramp_acceleration_m_s2 = profile.speed_run->acceleration_m_s2;
+    c.motion.ramp_top_speed_m_s = profile.speed_run->top_speed_m_s;
+  }
+  c.sensing = sensing_of(profile);
+  c.sensing.range_model = options.range_model;
+  if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
+  return c;
+}
+
+bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &setup) {
+  if (setup.reads_lidar()) return !profile.lidars.empty();
+  return setup.reads_bumpers() ? !profile.bumpers.empty() : !profile.distance_sensors.empty();
+}
+
+void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile) {
+  const sensing::SetUp &setup = sensing::setup(options.model.kind);
+  if (!has_devices(profile, setup)) {
+    throw common::InputError(fmt::format("robot '{}' has no {}, which the '{}' model needs (robots with {}: {})",
+                                         profile.name, setup.devices(), setup.name, setup.devices(),
+                                         robots_with(setup)));
+  }
+}
+
+RunSummary run_world(const RunOptions &options, std::ostream &out) {
+  return run_world(options, out, RunControls{});
+}
+
+RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls) {
+  const maze::World world = maze::load_world(options.world, options.world_overrides);
+  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  return run_maze(options, world.maze, out, controls);
+}
+
+namespace {
+
+// What valid options must still fit: the robot reads what the model needs, the grid of this
+// maze fits in memory, the plan's cells lie in the maze.
+void check_fit(const RunOptions &options, const maze::Maze &truth, const maze::sim::RobotProfile &profile,
+               const robot::ControllerOptions &controller) {
+  require_sensors(options, profile);
+  mapping::validate(controller.geometry, mapping::kDefaultMaxGridBytes);
+  if (options.plan.from) require_inside(truth, *options.plan.from, "--from");
+  if (options.plan.to) require_inside(truth, *options.plan.to, options.plan.only ? "--to" : "--plan-to");
+  robot::validate(controller);
+}
+
+render::MapStyle map_style(const OutputOptions &output, const mapping::SensorModel &model,
+                           const robot::ControllerOptions &controller, int terminal_fd) {
+  render::MapStyle style;
+  style.subcell_columns = subcell_columns(output.subcell_columns, terminal_fd, controller.geometry.width_subcells());
+  // A run that prints as it goes shows the part around the robot instead (view_for_terminal).
+  if (output.quiet && !output.animate) {
+    note_if_too_wide(terminal_fd, controller.geometry.width_subcells(), style.subcell_columns);
+  }
+  style.ascii = output.ascii;
+  style.unknown = output.unknown;
+  style.initial_log_odds = static_cast<float>(model.prior_log_odds());
+  style.color = output.color;
+  style.threshold = controller.occupied_threshold;
+  return style;
+}
+
+// The run itself, watched as the options ask: progress or animation on out, --step's
+// prompt, the recorder, Ctrl-C.
+robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webots::embedded::Simulation &simulation,
+                       robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
+                       const RunControls &controls, RunState &state) {
+  const OutputOptions &o = options.output;
+  std::optional<ScreenGuard> screen;
+  std::optional<Animator> animator;
+  if (o.animate) {
+    screen.emplace(out);
+    animator.emplace(out, style, AnimationOptions{o.fps, o.speed, terminal_size(controls.terminal_fd)});
+  }
+  robot::RunHooks hooks;
+  std::optional<robot::ProgressPrinter> printer;
+  if (!o.quiet && !o.animate) {
+    const int k = options.subcells;
+    printer.emplace(out, style, truth.width() * truth.height(),
+                    view_for_terminal(controls.terminal_fd, k, truth.height() * k, truth.width() * k,
+                                      style.subcell_columns));
+  }
+  std::optional<ProgressLine> progress;
+  if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, truth.width() * truth.height());
+  RunRecorder *const recorder = controls.recorder;
+  if (printer || animator || o.step || recorder || progress) {
+    hooks.on_move = [&](const robot::MoveReport &report) {
+      if (recorder) recorder->on_move(report);
+      if (printer) (*printer)(report);
+      if (progress) progress->update(report.moves, report.visits->count(), report.sim_time_s);
+      if (animator) {
+        const maze::sim::Pose &pose = simulation.pose();
+        animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,
+                                            robot::Action::rest, 0, report.grid, report.visits},
+                          pose.x_m, pose.y_m, true);
+      }
+      if (o.step && !state.quit) wait_for_step(controls, report, state);
+    };
+  }
+  if (recorder || animator || o.step || controls.interrupted) {
+    // The step is counted in the run's steps whatever this returns: the recorder has it
+    // before a stop is answered, so that the trace holds every step.
+    hooks.on_step = [&](const robot::StepReport &step) {
+      const maze::sim::Pose &pose = simulation.pose();
+      if (recorder) recorder->on_step(step, pose);
+      if (controls.interrupted && controls.interrupted()) {
+        state.interrupted = true;
+        return false;
+      }
+      if (state.quit) return false;
+      if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
+      return true;
+    };
+  }
+  if (recorder) hooks.grid_changes = recorder->grid_changes();
+  return controller.run(hooks);
+}
+
+RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const robot::RunResult &result,
+                     const RunState &state, const render::MapStyle &style) {
+  RunSummary summary;
+  summary.reason = result.reason;
+  summary.message = result.message;
+  if (result.reason == robot::EndReason::stopped) {
+    summary.interrupted = state.interrupted;
+    summary.message = state.interrupted ? "interrupted by " + common::interrupt_name() : "quit with q";
+  }
+  summary.width = truth.width();
+  summary.height = truth.height();
+  summary.max_steps = options.max_steps.value_or(max_steps_for(truth));
+  summary.max_steps_asked = options.max_steps.has_value();
+  summary.steps = result.steps;
+  summary.moves = result.moves;
+  summary.visited = result.visited;
+  summary.reached_goal = std::any_of(result.path.begin(), result.path.end(), [&](mapping::Cell c) {
+    return truth.is_goal(maze::Cell{c.x, c.y});
+  });
+  summary.score = score(truth, result, style.initial_log_odds, style.threshold);
+  // Where the robot looked: the search's cells (a speed run drives through cells unscanned).
+  summary.wrong_sides = wrong_sides_where_looked(truth, visited_cells(result.search_visits.value_or(result.visits)),
+                                                 learned_sides(result, style.initial_log_odds, style.threshold));
+  judge_ending(options, summary);
+  summary.sim_time_s = result.sim_time_s;
+  summary.explore_time_s = result.explore_time_s;
+  summary.shortest = result.shortest;
+  summary.speed_run = result.speed_run;
+  summary.speed_run_asked = options.plan.speed_run;
+  return summary;
+}
+
+// The robot drawn where it ended, in colour.
+render::RobotMark robot_mark(const robot::RunResult &result, const RunOptions &options) {
+  const mapping::Cell last = result.path.back();
+  const int mid = options.subcells / 2;
+  return render::RobotMark{
+      mapping::to_global(last, {mid, mid}, options.subcells),
+      render::arrow(result.visits.heading(last).value_or(mapping::Heading::north), options.output.ascii)};
+}
+
+}  // namespace
+
+RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
+                    const RunControls &controls) {
+  const auto started = std::chrono::steady_clock::now();
+  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
+  check_fit(options, truth, profile, controller_opts);
+  webots::embedded::Simulation simulation(truth, profile, options.simulation);
+  const mapping::SensorModel model(options.sensor);
+  render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
+  assert(options.output.out_dir.empty() || controls.recorder != nullptr);
+  if (controls.recorder != nullptr) {
+    controls.recorder->start(RunStart{options, truth, simulation.robot(), controller_opts, style.initial_log_odds});
+  }
+
+  robot::CellController controller(simulation.robot(), controller_opts);
+  RunState state;
+  const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
+  RunSummary summary = summarize(options, truth, result, state, style);
+  if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
+  // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
+  // by Ctrl-C writes its files and its summary, without the maps.
+  std::ostringstream planned;
+  if (options.plan.to) summary.plan = plan_path(options, result, model, style, planned);
+  summary.wall_time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  // A full disk is said after the summary, which the user still gets.
+  std::exception_ptr no_space;
+  if (controls.recorder != nullptr) {
+    try {
+      controls.recorder->finish(RunEnd{options, truth, summary, result, model,
+                                       learned_sides(result, style.initial_log_odds, style.threshold)});
+    } catch (const common::NoSpaceError &) {
+      no_space = std::current_exception();
+    }
+  }
+  if (summary.interrupted) {
+    out << "(interrupted: the final map is not printed)\n\n";
+  } else {
+    if (!options.plan.only) out << render::render_map(result.grid, result.visits, style) << '\n';
+    out << planned.str();
+  }
+  out << format_summary(options, summary);
+  if (no_space) {
+    out << std::flush;
+    std::rethrow_exception(no_space);
+  }
+  return summary;
+}
+
+std::int64_t max_steps_for(const maze::Maze &maze) { return max_steps_for(maze.width(), maze.height()); }
+
+std::int64_t max_steps_for(int width_cells, int height_cells) {
+  constexpr std::int64_t kStepsPerCell = 1000;
+  constexpr std::int64_t kMinimum = 100'000;
+  return std::max(kMinimum, kStepsPerCell * width_cells * height_cells);
+}
+
+}  // namespace app

@@ -1,0 +1,113 @@
+#pragma once
+// The options of a run, one struct per concern. The command line fills them in
+// (app/cli/run_cli.hpp), validate() checks them once, and from there they travel by const
+// reference: controller_options() and run_maze() hand each concern on whole (the sensor
+// model, the mapping options, the range models, the simulation and its faults), and
+// summary.json echoes them whole (app/report/outputs.hpp).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "explore/strategies.hpp"
+#include "mapping/grid_types.hpp"
+#include "sensing/setups.hpp"
+#include "sensing/range_models.hpp"
+#include "mapping/sensor_model.hpp"
+#include "maze/sim/simulation.hpp"
+#include "maze/world.hpp"
+#include "plan/wavefront.hpp"
+
+namespace app {
+
+// What the run shows and writes: the terminal (map style, progress, animation, --step) and
+// --out DIR.
+struct OutputOptions {
+  bool ascii = false;                   // --ascii: heading arrows ^ > v <
+  std::optional<char> unknown;          // --unknown CHAR for never-observed sub-cells
+  bool quiet = false;                   // --quiet: final map and summary only
+  bool color = false;                   // ANSI colours (a terminal, no --no-color)
+  bool animate = false;                 // --animate: the map redrawn in place
+  double fps = 30.0;                    // --fps, --animate's frames per second at most
+  double speed = 10.0;                  // --speed: simulated seconds per wall-clock second
+  bool step = false;                    // --step: wait for Enter (or q) after each cell
+  std::string out_dir;                  // --out DIR: map.pgm, map.yaml, map.png, truth.png, summary.json, trace.csv, replay.html
+  bool trace = true;                    // trace.csv with --out (--no-trace: not written)
+  bool trace_steps = false;             // --trace-steps: a row every control step (see trace_every_step)
+  int snapshots = 0;                    // --snapshots N: N pictures through the run in DIR/snapshots/
+  bool replay = true;                   // replay.html with --out (--no-replay: not written)
+  // --narrow (1) or --wide (2): terminal columns a sub-cell; none: 2 when standard output is
+  // a terminal wide enough for the map so drawn, else 1 (pipes and files: the classroom look).
+  std::optional<int> subcell_columns;
+};
+
+// Planning on the learned grid after exploring.
+struct PlanOptions {
+  // A wavefront path from `from` (default: where the robot ended) to `to` (run --plan-to;
+  // `plan` sets both ends, --from and --to).
+  std::optional<mapping::Cell> from;
+  std::optional<mapping::Cell> to;
+  plan::WavefrontOptions wavefront;     // --dilate N sub-cells
+  bool only = false;                    // `plan`: print only the planned map and the summary
+  bool speed_run = false;               // --speed-run: the micromouse speed run, start to goal (robot/options.hpp)
+};
+
+struct RunOptions {
+  std::string world;                    // the path as the user gave it
+  maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
+  int subcells = 3;                     // --subcells K
+  sensing::ModelOptions model;        // --model, --hit-depth, --ignore-no-return
+  mapping::SensorModelOptions sensor;   // --p-free, --p-occ, --prior, --log-base, --clamp
+  sensing::RangeModelOptions range_model;  // --pie-beta, --pie-alpha
+  std::optional<double> threshold;      // --threshold L: occupied when log-odds >= L
+  explore::StrategyKind strategy = explore::StrategyKind::dfs;
+  std::string robot = "hambot";         // --robot: a built-in profile's name or a FILE.json
+  // --max-steps: control steps before the run stops; none: max_steps_for(maze), which no
+  // complete exploration reaches (dfs and frontier take about 200 steps a cell).
+  std::optional<std::int64_t> max_steps;
+  // --seed, --noise (lidar noise as a fraction of max range; none: the robot's) and the
+  // faults --dropout, --spikes, --stuck-bumper, --wheel-slip.
+  maze::sim::SimulationOptions simulation;
+  PlanOptions plan;
+  OutputOptions output;
+};
+
+// Throws common::InputError naming the first unusable option; each concern's own validate
+// (sensor model, mapping, range models, wavefront, simulation), then the run's: --subcells,
+// --threshold finite, --noise from 0 to 1, --max-steps >= 1, --unknown one printable
+// character but W, --fps and --speed above 0, --snapshots from 0 to 100, and the robot (a profile file is read and
+// checked). What needs the world (cells inside it, the grid's size, the robot's sensors)
+// is checked when the run starts.
+void validate(const RunOptions &options);
+
+// --subcells K alone: odd, 3 to 9 (common::InputError otherwise). validate() checks it too.
+void validate_subcells(int subcells);
+
+// --snapshots N typed: throws common::InputError unless 1 <= N <= 100 (0, none, is the default).
+void validate_snapshots(int snapshots);
+
+// --unknown CHAR: throws common::InputError unless text is one printable ASCII character
+// other than W.
+void validate_unknown(std::string_view text);
+
+// The robot a model runs on when --robot is not given: its set-up's (sensing/setups.hpp).
+std::string_view default_robot(sensing::ModelKind model);
+
+// Which command the options were given to ("run", "plan", "compare", "batch") and whether
+// the user typed an option (by its long name, e.g. "--fps").
+struct GivenOptions {
+  std::string_view command;
+  std::function<bool(std::string_view option)> given;
+};
+
+// The one place that tells options given that do nothing for what was asked: one
+// "warning: --fps has no effect without --animate" line each, the run's own rules (the
+// table in run_options.cpp) first, then the model's (app/run/model_rules.hpp: "--hit-depth has
+// no effect with the cell model"). The run goes on, but for --p-free/--p-occ with a set-up
+// that marks with the course's fixed numbers: common::InputError.
+std::vector<std::string> check_options_apply(const GivenOptions &given, const RunOptions &options);
+
+}  // namespace app

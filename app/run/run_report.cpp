@@ -1,0 +1,172 @@
+#include "app/run/run_report.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace app {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string percent(double value) { return fmt::format("{:.2f}%", value); }
+double two_decimals(double percent) { return std::round(percent * 100.0) / 100.0; }
+
+template <typename T>
+Json or_null(const std::optional<T> &value) {
+  return value ? Json(*value) : Json(nullptr);
+}
+
+Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
+
+// Appends the report's entries in order; a key is added once.
+class Entries {
+ public:
+  explicit Entries(std::vector<ReportEntry> &entries) : entries_(entries) {}
+  // Printed as `text`, in summary.json as `json`.
+  void both(std::string key, std::string text, Json json) {
+    entries_.push_back({std::move(key), std::move(text), std::move(json)});
+  }
+  // Printed and in summary.json as the same string.
+  void both(std::string key, const std::string &text) { both(std::move(key), text, Json(text)); }
+  // In summary.json only.
+  void json_only(std::string key, Json json) { entries_.push_back({std::move(key), std::nullopt, std::move(json)}); }
+
+ private:
+  std::vector<ReportEntry> &entries_;
+};
+
+void add_goal_entries(Entries &e, const RunOptions &o, const RunSummary &s) {
+  const bool goal = reports_goal(o);
+  if (goal) e.both("goal", s.reached_goal ? "reached" : "not reached");
+  else e.json_only("goal", nullptr);
+  if (goal && s.shortest) {
+    e.both("shortest_path", describe_shortest(*s.shortest),
+           Json{{"known_cells", or_null(s.shortest->known_moves)},
+                {"optimistic_cells", or_null(s.shortest->optimistic_moves)},
+                {"proven", s.shortest->proven()}});
+  } else {
+    e.json_only("shortest_path", nullptr);
+  }
+}
+
+void add_plan_entries(Entries &e, const RunSummary &s) {
+  if (!s.plan) {
+    e.json_only("plan", nullptr);
+    e.json_only("plan_length", nullptr);
+    return;
+  }
+  const PlanSummary &p = *s.plan;
+  e.both("plan", fmt::format("({},{}) -> ({},{}) dilate {}", p.from.x, p.from.y, p.to.x, p.to.y, p.dilate),
+         Json{{"from", cell_json(p.from)}, {"to", cell_json(p.to)}, {"dilate", p.dilate}});
+  if (p.found) {
+    e.both("plan_length", fmt::format("{} sub-cells, {} cells", p.length_subcells, p.length_cells),
+           Json{{"subcells", p.length_subcells}, {"cells", p.length_cells}});
+  } else {
+    e.both("plan_length", "no path");
+  }
+}
+
+void add_speed_run_entries(Entries &e, const RunOptions &o, const RunSummary &s) {
+  if (!o.plan.speed_run) {
+    e.json_only("search", nullptr);
+    e.json_only("speed_run", nullptr);
+    e.json_only("speed_run_turns", nullptr);
+    return;
+  }
+  e.both("search", fmt::format("{} moves, {} cells visited, {:.3f} s", s.moves, s.visited, s.explore_time_s),
+         Json{{"moves", s.moves}, {"visited", s.visited}, {"time_s", s.explore_time_s}});
+  const robot::SpeedRun &run = s.speed_run;
+  if (!run.time_s) {
+    e.both("speed_run", "none (the search did not finish, or no known path to the goal)", Json("none"));
+    e.json_only("speed_run_turns", nullptr);
+    return;
+  }
+  e.both("speed_run", fmt::format("{} cells start to goal in {:.3f} s", run.cells, *run.time_s),
+         Json{{"cells", run.cells}, {"time_s", *run.time_s}, {"return_cells", run.return_cells}});
+  e.both("speed_run_turns", std::to_string(run.turns), Json(run.turns));
+}
+
+}  // namespace
+
+bool reports_goal(const RunOptions &options) {
+  return options.strategy == explore::StrategyKind::floodfill || options.plan.speed_run;
+}
+
+std::string describe_shortest(const explore::ShortestPathProof &proof) {
+  const std::string may = proof.optimistic_moves
+                              ? fmt::format("the unknown sides may allow {}", *proof.optimistic_moves)
+                              : std::string("no path even through the unknown sides");
+  if (!proof.known_moves) return fmt::format("none known ({})", may);
+  if (proof.proven()) return fmt::format("{} cells start to goal, proven", *proof.known_moves);
+  return fmt::format("{} cells start to goal, not proven ({})", *proof.known_moves, may);
+}
+
+RunReport::RunReport(const RunOptions &o, const RunSummary &s) {
+  Entries e(entries_);
+  e.both("world", o.world);
+  e.both("size", fmt::format("{}x{}", s.width, s.height));
+  e.json_only("width", s.width);
+  e.json_only("height", s.height);
+  e.both("subcells", std::to_string(o.subcells), Json(o.subcells));
+  e.both("model", std::string(sensing::to_string(o.model.kind)));
+  if (o.threshold) e.both("threshold", fmt::format("{:.3f}", *o.threshold), Json(*o.threshold));
+  else e.json_only("threshold", nullptr);
+  e.both("strategy", std::string(explore::to_string(o.strategy)));
+  e.both("robot", o.robot);
+  e.both("seed", std::to_string(o.simulation.seed), Json(o.simulation.seed));
+  const std::string reason(robot::to_string(s.reason));
+  e.both("end", s.message.empty() ? reason : fmt::format("{} ({})", reason, s.message), Json(reason));
+  e.json_only("end_message", s.message);
+  e.both("steps", std::to_string(s.steps), Json(s.steps));
+  e.both("moves", std::to_string(s.moves), Json(s.moves));
+  e.both("visited", std::to_string(s.visited), Json(s.visited));
+  add_goal_entries(e, o, s);
+  e.both("reachable", std::to_string(s.score.reachable_cells), Json(s.score.reachable_cells));
+  e.both("coverage", percent(s.score.coverage_percent()), Json(two_decimals(s.score.coverage_percent())));
+  e.both("wall_accuracy", percent(s.score.wall_accuracy_percent()),
+         Json(two_decimals(s.score.wall_accuracy_percent())));
+  add_plan_entries(e, s);
+  add_speed_run_entries(e, o, s);
+  e.both("sim_time_s", fmt::format("{:.3f}", s.sim_time_s), Json(s.sim_time_s));
+  e.both("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms), Json(s.wall_time_ms));
+}
+
+const ReportEntry *RunReport::find(std::string_view key) const {
+  for (const ReportEntry &entry : entries_) {
+    if (entry.key == key) return &entry;
+  }
+  return nullptr;
+}
+
+std::string RunReport::text(std::string_view key) const {
+  const ReportEntry *entry = find(key);
+  return entry != nullptr && entry->text ? *entry->text : std::string();
+}
+
+std::string format_summary(const RunReport &report) {
+  std::string out;
+  for (const auto &[key, value] : summary_pairs(report)) out += fmt::format("{}: {}\n", key, value);
+  return out;
+}
+
+std::string format_summary(const RunOptions &options, const RunSummary &summary) {
+  return format_summary(RunReport(options, summary));
+}
+
+std::vector<std::pair<std::string, std::string>> summary_pairs(const RunReport &report) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const ReportEntry &entry : report.entries()) {
+    if (entry.text) pairs.emplace_back(entry.key, *entry.text);
+  }
+  return pairs;
+}
+
+nlohmann::ordered_json report_json(const RunReport &report) {
+  Json j = Json::object();
+  for (const ReportEntry &entry : report.entries()) j[entry.key] = entry.json;
+  return j;
+}
+
+}  // namespace app

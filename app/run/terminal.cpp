@@ -1,0 +1,165 @@
+#include "app/run/terminal.hpp"
+
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cstdio>
+#include <cstdlib>
+#include <ostream>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+
+namespace app {
+namespace {
+
+// Writes all of text to fd; a terminal that refuses is left alone (progress is a courtesy).
+void write_all(int fd, const std::string &text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+bool is_terminal(int fd) { return ::isatty(fd) == 1; }
+
+ProgressLine::ProgressLine(int fd, int maze_cells)
+    : fd_(fd), maze_cells_(maze_cells), started_(std::chrono::steady_clock::now()), next_draw_(started_) {}
+
+ProgressLine::~ProgressLine() {
+  if (drawn_) write_all(fd_, "\r\x1b[K");
+}
+
+void ProgressLine::update(int moves, int visited, double sim_time_s) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_draw_) return;
+  next_draw_ = now + std::chrono::milliseconds(100);
+  const double elapsed_s = std::chrono::duration<double>(now - started_).count();
+  write_all(fd_, fmt::format("\r\x1b[Kmoves {}  visited {}/{} cells  sim {:.1f} s  elapsed {:.1f} s", moves, visited,
+                             maze_cells_, sim_time_s, elapsed_s));
+  drawn_ = true;
+}
+
+int progress_fd(bool quiet, bool animate) {
+  if (animate || !is_terminal(STDERR_FILENO)) return -1;
+  return quiet || !is_terminal(STDOUT_FILENO) ? STDERR_FILENO : -1;
+}
+
+ColorChoice parse_color_choice(const std::string &text) {
+  if (text == "auto") return ColorChoice::automatic;
+  if (text == "always") return ColorChoice::always;
+  if (text == "never") return ColorChoice::never;
+  throw common::InputError(fmt::format("--color must be auto, always or never (got '{}')", text));
+}
+
+bool use_color(ColorChoice choice, int fd) {
+  if (choice != ColorChoice::automatic) return choice == ColorChoice::always;
+  const char *no_color = std::getenv("NO_COLOR");
+  return (no_color == nullptr || *no_color == '\0') && is_terminal(fd);
+}
+
+TerminalSize terminal_size(int fd) {
+  winsize ws{};
+  if (::ioctl(fd, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 && ws.ws_row > 0) {
+    return {ws.ws_col, ws.ws_row};
+  }
+  return {};
+}
+
+int subcell_columns(std::optional<int> asked, int fd, int map_subcells_wide) {
+  if (asked) return *asked;
+  if (fd < 0 || !is_terminal(fd)) return 1;
+  return 2 * map_subcells_wide <= terminal_size(fd).columns ? 2 : 1;
+}
+
+void note_if_too_wide(int fd, int map_subcells_wide, int columns) {
+  if (fd < 0 || !is_terminal(fd)) return;
+  const int width = map_subcells_wide * columns;
+  const int terminal = terminal_size(fd).columns;
+  if (width <= terminal) return;
+  fmt::print(stderr,
+             "note: the map is {} columns wide and this terminal {}: its lines wrap; see it whole in a file "
+             "(run ... > run.txt), follow the robot with --animate, or open --out's map.png and replay.html\n",
+             width, terminal);
+}
+
+std::optional<robot::ProgressPrinter::View> view_for_terminal(int fd, int k, int map_rows, int map_cols,
+                                                              int subcell_columns) {
+  if (fd < 0 || !is_terminal(fd)) return std::nullopt;
+  const TerminalSize screen = terminal_size(fd);
+  // 20 blocks a second at most: what a reader can follow, and far less than the run costs.
+  const robot::ProgressPrinter::View view{std::max(3, screen.rows - (k + 3)),
+                                          std::max(3, screen.columns / std::max(1, subcell_columns)),
+                                          std::chrono::milliseconds(50)};
+  if (view.rows >= map_rows && view.cols >= map_cols) return std::nullopt;
+  fmt::print(stderr,
+             "note: the map is {}x{} sub-cells, the terminal shows {}x{}: up to 20 moves a second print the part around "
+             "the robot; the final map is printed whole\n",
+             map_cols, map_rows, view.cols, view.rows);
+  return view;
+}
+
+ScreenGuard::ScreenGuard(std::ostream &out) : out_(out) {
+  out_ << "\x1b[?1049h\x1b[?25l\x1b[H\x1b[2J" << std::flush;
+}
+
+ScreenGuard::~ScreenGuard() { out_ << "\x1b[0m\x1b[?25h\x1b[?1049l" << std::flush; }
+
+Animator::Animator(std::ostream &out, const render::MapStyle &style, const AnimationOptions &options)
+    : out_(out), style_(style), options_(options), next_frame_(std::chrono::steady_clock::now()) {}
+
+void Animator::on_step(const robot::StepReport &step, double x_m, double y_m, bool force) {
+  const double frame_sim_s = options_.speed / options_.fps;
+  if (!force && last_sim_s_ >= 0.0 && step.sim_time_s - last_sim_s_ < frame_sim_s) return;
+  std::this_thread::sleep_until(next_frame_);
+  last_sim_s_ = step.sim_time_s;
+  next_frame_ = std::chrono::steady_clock::now() +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(1.0 / options_.fps));
+  draw(step, x_m, y_m);
+}
+
+void Animator::draw(const robot::StepReport &step, double x_m, double y_m) {
+  const mapping::OccupancyGrid &grid = *step.grid;
+  const int map_rows = grid.height() * grid.k();
+  const int map_cols = grid.width() * grid.k();
+  const int rows = std::min(map_rows, std::max(1, options_.screen.rows - 2));
+  const int cols = std::min(map_cols, std::max(1, options_.screen.columns / style_.subcell_columns));
+  render::MapStyle style = style_;
+  mapping::SubCell at{map_cols / 2, map_rows / 2};
+  if (const auto s = grid.subcell_at(mapping::Point{x_m, y_m})) {
+    style.robot = render::RobotMark{*s, "@"};
+    at = *s;
+  }
+  const render::MapWindow window = render::window_around(grid, at, rows, cols);
+  std::string frame = "\x1b[H";
+  frame += render::format_status(static_cast<long>(step.step), step.cell, step.heading,
+                                 step.visits->count(), grid.width() * grid.height());
+  frame += fmt::format("  t {:.1f} s", step.sim_time_s);
+  if (rows < map_rows || cols < map_cols) {
+    frame += fmt::format("  view {},{} of {}x{}", window.first_col, window.first_row, map_cols, map_rows);
+  }
+  if (frame.size() > static_cast<std::size_t>(options_.screen.columns) + 3) {
+    frame.resize(static_cast<std::size_t>(options_.screen.columns) + 3);
+  }
+  frame += "\x1b[K\n";
+  std::string map;
+  render::render_window(map, grid, *step.visits, style, window);
+  for (const char ch : map) {
+    if (ch == '\n') frame += "\x1b[K";
+    frame += ch;
+  }
+  frame += "\x1b[J";
+  out_ << frame << std::flush;
+}
+
+}  // namespace app

@@ -1,0 +1,73 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/csv.hpp"
+#include "common/parse_number.hpp"
+
+namespace {
+
+std::vector<std::string> texts(std::string_view line) {
+  const std::optional<std::vector<common::CsvField>> fields = common::csv_fields(line);
+  std::vector<std::string> out;
+  if (!fields) return out;
+  for (std::size_t i = 0; i < fields->size(); ++i) out.push_back((*fields)[i].text);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("parse_number: the whole text is the number, in the type's range, finite") {
+  CHECK(common::parse_number<int>("42") == 42);
+  CHECK(common::parse_number<int>("-7") == -7);
+  CHECK(common::parse_number<double>("0.25") == 0.25);
+  CHECK(common::parse_number<double>("1e-3") == 0.001);
+  CHECK_FALSE(common::parse_number<int>(""));
+  CHECK_FALSE(common::parse_number<int>("+3"));     // no '+'
+  CHECK_FALSE(common::parse_number<int>(" 3"));     // no blanks
+  CHECK_FALSE(common::parse_number<int>("3 "));
+  CHECK_FALSE(common::parse_number<int>("3x"));
+  CHECK_FALSE(common::parse_number<int>("2.5"));    // not whole
+  CHECK_FALSE(common::parse_number<int>("4294967299"));  // past int: refused, not wrapped
+  CHECK_FALSE(common::parse_number<std::uint64_t>("-1"));
+  CHECK(common::parse_number<std::uint64_t>("18446744073709551615") == UINT64_MAX);
+  CHECK_FALSE(common::parse_number<double>("inf"));
+  CHECK_FALSE(common::parse_number<double>("nan"));
+  CHECK_FALSE(common::parse_number<double>("1e400"));
+  CHECK(common::parse_number_trimmed<int>(" 3\t") == 3);
+  CHECK(std::isinf(common::parse_real("-inf").value()));
+  CHECK(std::isnan(common::parse_real("nan").value()));
+  CHECK_FALSE(common::parse_real("two"));
+}
+
+TEST_CASE("csv_field quotes only what must be quoted, as RFC 4180 has it") {
+  CHECK(common::csv_field("worlds/a.txt") == "worlds/a.txt");
+  CHECK(common::csv_field("") == "");
+  CHECK(common::csv_field("a,b") == "\"a,b\"");
+  CHECK(common::csv_field("say \"hi\"") == "\"say \"\"hi\"\"\"");
+  CHECK(common::csv_field("two\nlines") == "\"two\nlines\"");
+  CHECK(common::csv_field("cr\r") == "\"cr\r\"");
+}
+
+TEST_CASE("csv_fields reads back what csv_field writes, with each field's column") {
+  const std::vector<std::string> fields{"a,b", "", "say \"hi\"", "plain", "x\ny"};
+  std::string line;
+  for (const std::string &f : fields) {
+    if (!line.empty()) line += ',';
+    line += common::csv_field(f);
+  }
+  CHECK(texts(line) == fields);
+  CHECK(texts("1,2,3\r") == std::vector<std::string>{"1", "2", "3"});  // CRLF
+  CHECK(texts("") == std::vector<std::string>{""});
+  CHECK(texts("a,") == std::vector<std::string>{"a", ""});
+  const std::vector<common::CsvField> located = common::csv_fields("t, x,\"y,z\",w").value();
+  REQUIRE(located.size() == 4);
+  CHECK(located[1].column == 3);
+  CHECK(located[2].column == 6);
+  CHECK(located[3].column == 12);
+  CHECK_FALSE(common::csv_fields("\"open,quote"));
+}
