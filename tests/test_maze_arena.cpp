@@ -133,6 +133,7 @@ TEST_CASE("room format: errors name the line and the column of the token at faul
         "f.room:1:18: error: boundary takes 4 numbers XS XE YS YE: got 5 numbers");
   CHECK(room_error("# c\nrect 1 1 x 2\n") == "f.room:2:10: error: 'x' is not a number");
   CHECK(room_error("start 1 inf\n") == "f.room:1:9: error: 'inf' is not a finite number of metres");
+  CHECK(room_error("start +1 1\n") == "f.room:1:7: error: '+1' is not a number");
   CHECK(room_error("wall 0 0 1 1 0\n") == "f.room:1:14: error: the width must be positive, got 0");
   CHECK(room_error("wall 1 1 1 1\n") == "f.room:1:1: error: the wall from (1, 1) to (1, 1) has zero length");
   CHECK(room_error("  rect 0 0 0 1\n") == "f.room:1:3: error: the rectangle (0, 0)-(0, 1) has no area");
@@ -350,7 +351,7 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
     std::size_t obstacles;
   };
   // ir-ring's and the homework's bumper robot's bodies (0.09 m; the Create's bump radius 0.16 m).
-  for (const Shipped s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 6},
+  for (const Shipped &s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 6},
                           Shipped{"thick_arena.xml", 0.09, 5}}) {
     CAPTURE(s.file);
     maze::ArenaOverrides robot;

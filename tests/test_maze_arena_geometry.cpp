@@ -174,7 +174,7 @@ TEST_CASE("arena geometry: the bucket walk gives the brute force's answers on ra
     for (int i = 0; i < 200; ++i) {
       const double x = rng.uniform(0, 12);
       const double y = rng.uniform(0, 9);
-      for (const std::pair<double, double> d : {std::pair{1.0, 0.0}, std::pair{-1.0, 0.0}, std::pair{0.0, 1.0},
+      for (const std::pair<double, double> &d : {std::pair{1.0, 0.0}, std::pair{-1.0, 0.0}, std::pair{0.0, 1.0},
                                                 std::pair{0.0, -1.0}}) {
         CHECK(g.cast_direction(x, y, d.first, d.second, 30) == g.cast_brute_force(x, y, d.first, d.second, 30));
       }

@@ -1,6 +1,5 @@
 #include "maze/room_format.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "common/parse_number.hpp"
 #include "maze/maze.hpp"
 
 namespace maze {
@@ -67,18 +67,14 @@ struct Parser {
     return common::InputError(at(column), std::move(message));
   }
 
+  // The project's one number rule (common/parse_number.hpp), and within 1e9 m.
   double number(const Token &t) const {
-    double v = 0.0;
-    const char *begin = t.text.data();
-    const char *end = begin + t.text.size();
-    if (!t.text.empty() && *begin == '+') ++begin;
-    const auto [stop, ec] = std::from_chars(begin, end, v);
-    if (ec == std::errc::result_out_of_range || (ec == std::errc() && stop == end && !std::isfinite(v))) {
+    const std::optional<double> v = common::parse_real(t.text);
+    if (!v) throw error(t.column, fmt::format("'{}' is not a number", shown(t.text)));
+    if (!std::isfinite(*v) || std::abs(*v) > 1e9) {
       throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown(t.text)));
     }
-    if (ec != std::errc() || stop != end) throw error(t.column, fmt::format("'{}' is not a number", shown(t.text)));
-    if (std::abs(v) > 1e9) throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown(t.text)));
-    return v;
+    return *v;
   }
 
   // The numbers after the keyword: at least `least`, at most `most`.
@@ -101,8 +97,7 @@ std::string degrees_of(double yaw_rad) {
   const double deg = yaw_rad * 180.0 / std::numbers::pi;
   for (int digits = 6; digits < 17; ++digits) {
     const std::string text = fmt::format("{:.{}g}", deg, digits);
-    double back = 0.0;
-    std::from_chars(text.data(), text.data() + text.size(), back);
+    const double back = common::parse_real(text).value_or(0.0);
     if (back * std::numbers::pi / 180.0 == yaw_rad) return text;
   }
   return fmt::format("{}", deg);
