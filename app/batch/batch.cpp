@@ -56,7 +56,7 @@ BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()
   std::ostream sink(&buffer);
   RunControls controls;
   controls.interrupted = interrupted;
-  try {
+  run_row(item, [&] {
     item.summary = run_and_write(options, sink, controls);
     item.report.emplace(options, item.summary);
     item.ran = true;
@@ -67,12 +67,7 @@ BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()
                        ? fmt::format("ended: {}", robot::to_string(item.summary.reason))
                        : fmt::format("ended: {} ({})", robot::to_string(item.summary.reason), item.summary.message);
     }
-  } catch (const common::InputError &e) {
-    item.bad_input = true;
-    item.error = e.diagnostic();
-  } catch (const std::exception &e) {
-    item.error = fmt::format("error: {}", e.what());
-  }
+  });
   return item;
 }
 

@@ -287,7 +287,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
         const maze::sim::Pose &pose = simulation.pose();
         animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,
                                             robot::Action::rest, 0, report.grid, report.visits},
-                          pose.x_m, pose.y_m, true);
+                          pose.x_m, pose.y_m);
       }
       if (o.step && !state.quit) wait_for_step(controls, report, state);
     };
@@ -303,7 +303,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
         return false;
       }
       if (state.quit) return false;
-      if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
+      if (animator) animator->on_step(step, pose.x_m, pose.y_m);
       return true;
     };
   }
