@@ -34,7 +34,7 @@ TEST_CASE("validation: every fault is named, with its place, to the letter") {
       {"empty.txt", ": error: the file is empty; expected a maze"},
       {"garbage.txt",
        ":1:1: error: cannot tell the format: expected a text map (first line 'o---o...'), num lines 'X Y N E S W', "
-       "XML '<world>' or a 256-byte binary .maz"},
+       "XML '<world>', a room file ('boundary XS XE YS YE', 'rect ...') or a 256-byte binary .maz"},
       // text map: known characters only
       {"bad_char.txt", ":8:7: error: unexpected 'x' in cell (1,0); expected a blank, 'S' or 'G'"},
       {"tab.txt", ":4:3: error: unexpected tab in cell (0,2); expected a blank, 'S' or 'G'"},

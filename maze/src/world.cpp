@@ -18,9 +18,11 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "maze/arena_world.hpp"
 #include "maze/maz_format.hpp"
 #include "common/random.hpp"
 #include "maze/num_format.hpp"
+#include "maze/room_format.hpp"
 #include "maze/text_map.hpp"
 #include "maze/validate.hpp"
 #include "maze/wbt_format.hpp"
@@ -141,6 +143,7 @@ Format detect_format(std::string_view text, const std::string &file) {
   std::string_view body = text;
   if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
   if (!body.empty() && (body[0] == 'o' || body[0] == '+')) return Format::text_map;
+  if (looks_like_room(body)) return Format::room;
   const std::size_t first = body.find_first_not_of(" \t\r\n");
   if (first != std::string_view::npos) {
     if (body[first] == '<') return Format::xml;
@@ -153,7 +156,8 @@ Format detect_format(std::string_view text, const std::string &file) {
   }
   throw common::InputError(common::SourceLocation{file, 1, 1},
                            "cannot tell the format: expected a text map (first line 'o---o...'), num lines "
-                           "'X Y N E S W', XML '<world>' or a 256-byte binary .maz");
+                           "'X Y N E S W', XML '<world>', a room file ('boundary XS XE YS YE', 'rect ...') or a 256-byte "
+                           "binary .maz");
 }
 
 Maze read_world(std::string_view text, const std::string &file) {
@@ -162,6 +166,9 @@ Maze read_world(std::string_view text, const std::string &file) {
     case Format::num: return read_num(text, file);
     case Format::xml: return read_xml(text, file);
     case Format::maz: return read_maz(text, file);
+    case Format::room:
+      throw common::InputError(common::SourceLocation{file, 0, 0},
+                               "a room file holds an arena (obstacles in metres), not a grid maze");
     case Format::wbt: break;
   }
   throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read Webots worlds");
@@ -180,9 +187,8 @@ common::SourceLocation location_of(std::string_view text, std::size_t offset, co
   return common::SourceLocation{file, line, static_cast<int>(column)};
 }
 
-// A world file, read in proportion: its format is told from the first bytes that are not
-// blank (so `show /dev/zero` or an image fails at once, not after 1 GiB); reading stops at the
-// first NUL byte, which no text format holds, and a binary .maz one byte past its 256.
+}  // namespace
+
 std::string read_world_text(const std::string &path) {
   const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (file.fd < 0) throw cannot("read", path, errno);
@@ -210,10 +216,11 @@ std::string read_world_text(const std::string &path) {
   }
 }
 
-}  // namespace
-
 World load_world(const std::string &path, const WorldOverrides &overrides) {
-  const std::string text = read_world_text(path);
+  return load_world_text(read_world_text(path), path, overrides);
+}
+
+World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides) {
   const Format format = detect_format(text, path);
   std::vector<std::string> warnings;
   const auto read = [&]() -> Maze {
@@ -238,8 +245,9 @@ Format format_for_output(const std::string &path) {
   if (ext == ".xml") return Format::xml;
   if (ext == ".wbt") return Format::wbt;
   if (ext == ".maz") return Format::maz;
-  throw common::InputError(
-      fmt::format("cannot tell the output format of '{}' from its extension: use .txt, .num, .xml, .wbt or .maz", path));
+  if (ext == ".room") return Format::room;
+  throw common::InputError(fmt::format(
+      "cannot tell the output format of '{}' from its extension: use .txt, .num, .xml, .wbt, .maz or .room", path));
 }
 
 std::optional<std::string> dropped_by(const Maze &maze, Format format) {
@@ -260,6 +268,8 @@ std::optional<std::string> dropped_by(const Maze &maze, Format format) {
     std::sort(goals.begin(), goals.end());
     const bool kept = format == Format::maz && goals == centre;
     if (!maze.goals().empty() && !kept) parts.push_back(goals_of(maze));
+  } else if (format == Format::room) {
+    holds = "a room file holds the walls as rectangles, the start and the goals";
   } else if (format == Format::text_map) {
     holds = "a text map holds walls, start cell and goals; its start faces north";
     if (maze.start_heading() != Side::north) {
@@ -268,7 +278,7 @@ std::optional<std::string> dropped_by(const Maze &maze, Format format) {
   } else {
     return std::nullopt;
   }
-  if (!default_physical(maze)) parts.push_back(physical_of(maze));
+  if (!default_physical(maze) && format != Format::room) parts.push_back(physical_of(maze));
   if (const std::size_t n = maze.start_positions().size(); n > 1) {
     parts.push_back(fmt::format("the other {} start position{}", n - 1, n == 2 ? "" : "s"));
   }
@@ -286,6 +296,7 @@ std::string format_world(const Maze &maze, Format format, std::string_view title
     case Format::xml: return write_xml(maze);
     case Format::wbt: return write_wbt(maze, title);
     case Format::maz: return write_maz(maze);
+    case Format::room: return write_room(arena_from_maze(maze));
   }
   return {};
 }

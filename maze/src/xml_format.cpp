@@ -26,6 +26,7 @@ constexpr double kGridTolerance = 1e-3;
 constexpr double kHeadingTolerance_rad = 0.01;
 
 using xml::number;
+using xml::parse;
 using xml::Source;
 
 struct Segment {
@@ -388,27 +389,6 @@ void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, cons
     raw.goals.push_back(cell_at(*e, g, src, "goal"));
     raw.goal_where.push_back(src.at(*e, "x", &cursor));
   }
-}
-
-// tinyxml2's XML_ERROR_MISMATCHED_ELEMENT as "mismatched element".
-std::string error_name(tinyxml2::XMLError id) {
-  std::string name = tinyxml2::XMLDocument::ErrorIDToName(id);
-  if (name.starts_with("XML_ERROR_")) name.erase(0, 10);
-  for (char &c : name) c = c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return name;
-}
-
-const tinyxml2::XMLElement &parse(tinyxml2::XMLDocument &doc, const Source &src) {
-  if (doc.Parse(src.text.data(), src.text.size()) != tinyxml2::XML_SUCCESS) {
-    throw common::InputError(common::SourceLocation{src.file, doc.ErrorLineNum(), 0},
-                             fmt::format("not well-formed XML: {}", error_name(doc.ErrorID())));
-  }
-  const tinyxml2::XMLElement *root = doc.RootElement();
-  if (root == nullptr) throw common::InputError(common::SourceLocation{src.file, 0, 0}, "no XML element: expected <world>");
-  if (std::string_view(root->Name()) != "world") {
-    throw src.error(*root, nullptr, fmt::format("the root element is <{}>; expected <world>", root->Name()));
-  }
-  return *root;
 }
 
 }  // namespace

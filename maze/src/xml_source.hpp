@@ -3,6 +3,7 @@
 // read with their place (xml_format.cpp).
 
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -106,6 +107,27 @@ inline std::optional<double> number(const tinyxml2::XMLElement &e, const char *n
     throw src.error(e, name, fmt::format("{} is not a finite number of {}: '{}'", name, unit, shown));
   }
   return result;
+}
+
+// tinyxml2's XML_ERROR_MISMATCHED_ELEMENT as "mismatched element".
+inline std::string error_name(tinyxml2::XMLError id) {
+  std::string name = tinyxml2::XMLDocument::ErrorIDToName(id);
+  if (name.starts_with("XML_ERROR_")) name.erase(0, 10);
+  for (char &c : name) c = c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
+inline const tinyxml2::XMLElement &parse(tinyxml2::XMLDocument &doc, const Source &src) {
+  if (doc.Parse(src.text.data(), src.text.size()) != tinyxml2::XML_SUCCESS) {
+    throw common::InputError(common::SourceLocation{src.file, doc.ErrorLineNum(), 0},
+                             fmt::format("not well-formed XML: {}", error_name(doc.ErrorID())));
+  }
+  const tinyxml2::XMLElement *root = doc.RootElement();
+  if (root == nullptr) throw common::InputError(common::SourceLocation{src.file, 0, 0}, "no XML element: expected <world>");
+  if (std::string_view(root->Name()) != "world") {
+    throw src.error(*root, nullptr, fmt::format("the root element is <{}>; expected <world>", root->Name()));
+  }
+  return *root;
 }
 
 }  // namespace maze::xml

@@ -13,7 +13,8 @@
 
 namespace maze {
 
-enum class Format { text_map, num, xml, wbt, maz };
+// room: an arena's plain format (room_format.hpp; arena_world.hpp reads arenas).
+enum class Format { text_map, num, xml, wbt, maz, room };
 
 // A maze read from a file, with what the user should hear about it.
 struct World {
@@ -52,7 +53,8 @@ inline constexpr double kMinCellSize_m = 4 * kDefaultWallThickness_m;
 inline constexpr double kMaxCellSize_m = 1000.0;
 
 // The input format by content: '<' first (after blanks) is XML, 'o' or '+' first a text map,
-// a digit first a num file. Throws common::InputError when it is none of these.
+// a digit first a num file, a room statement first (after blank and '#' comment lines) a room
+// file. Throws common::InputError when it is none of these.
 Format detect_format(std::string_view text, const std::string &file);
 
 // Reads a world from text in any input format, validated. Throws common::InputError.
@@ -64,17 +66,24 @@ World load_world(const std::string &path);
 // Likewise, then applies the overrides (before the unreachable-cells warning, which follows
 // the start). Throws common::InputError "--start 9,9 is outside the 4x4 maze" and the like.
 World load_world(const std::string &path, const WorldOverrides &overrides);
+// load_world on a file's text already read (read_world_text).
+World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides);
+// A world file's text, read in proportion: the format is told from the first bytes that are
+// not blank (so an image or /dev/zero fails at once), reading stops at a NUL byte (an
+// error: no text format holds one) and past a .maz's 256 bytes. Throws common::InputError.
+std::string read_world_text(const std::string &path);
 
 // What writing the world in `format` would drop, as one line "FORMAT holds no ...: dropped
 // ...", or nothing when the format holds all of it (the text map keeps walls, start cell and
 // goals, not the heading of a start or the physical set-up; num keeps only the walls).
 std::optional<std::string> dropped_by(const Maze &maze, Format format);
 
-// The output format by extension, in any case (.txt, .TXT): .txt, .num, .xml, .wbt; throws
-// common::InputError otherwise.
+// The output format by extension, in any case (.txt, .TXT): .txt, .num, .xml, .wbt, .maz,
+// .room; throws common::InputError otherwise.
 Format format_for_output(const std::string &path);
 
-// The maze in `format` (any, wbt included); `title` names the world inside a .wbt.
+// The maze in `format` (any, wbt included; room: arena_from_maze's arena); `title` names the
+// world inside a .wbt.
 std::string format_world(const Maze &maze, Format format, std::string_view title);
 
 // Writes the maze to `path` in the format its extension names.

@@ -46,6 +46,18 @@ void check_pose_free(const WallGrid &walls, const Pose &pose) {
   }
 }
 
+void check_pose_free(const ArenaGeometry &solids, const Pose &pose) {
+  if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.yaw_rad)) {
+    throw common::InputError("the pose must be finite numbers");
+  }
+  if (!solids.inside_bounds(pose.x_m, pose.y_m)) {
+    throw common::InputError(fmt::format("pose ({}, {}) is outside the arena", pose.x_m, pose.y_m));
+  }
+  if (solids.inside_solid(pose.x_m, pose.y_m)) {
+    throw common::InputError(fmt::format("pose ({}, {}) is inside an obstacle", pose.x_m, pose.y_m));
+  }
+}
+
 double beam_offset(const LidarSpec &lidar) { return lidar.frequency_hz > 0.0 ? 0.0 : 0.5; }
 
 double beam_angle_rad(const LidarSpec &lidar, int i) {
@@ -93,7 +105,8 @@ float LidarModel::reading(int i, double range_m, double noise_m) const {
   return fixed_lidar_reading(spec_, range_m, face_cos_[static_cast<std::size_t>(i)], noise_m);
 }
 
-void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &pose,
+template <typename Solids>
+void LidarModel::range_image(const Solids &walls, double noise, const Pose &pose,
                              common::Rng &rng, std::span<float> out) const {
   assert(out.size() == cos_.size());
   const double sigma_m = noise * spec_.max_range_m;
@@ -102,7 +115,7 @@ void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &po
   const double reach_m = spec_.max_range_m + 6.0 * sigma_m + spec_.resolution_m;
   const double c = std::cos(pose.yaw_rad);
   const double s = std::sin(pose.yaw_rad);
-  const WallGrid::CastOrigin origin = walls.cast_origin(pose.x_m, pose.y_m);
+  const typename Solids::CastOrigin origin = walls.cast_origin(pose.x_m, pose.y_m);
   for (std::size_t i = 0; i < cos_.size(); ++i) {
     const double dx = c * cos_[i] - s * sin_[i];
     const double dy = s * cos_[i] + c * sin_[i];
@@ -112,11 +125,13 @@ void LidarModel::range_image(const WallGrid &walls, double noise, const Pose &po
   }
 }
 
-LidarModel::Viewpoint LidarModel::viewpoint(const WallGrid &walls, const Pose &pose) {
+template <typename Solids>
+ViewpointIn<Solids> LidarModel::viewpoint(const Solids &walls, const Pose &pose) {
   return {walls.cast_origin(pose.x_m, pose.y_m), std::cos(pose.yaw_rad), std::sin(pose.yaw_rad)};
 }
 
-float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
+template <typename Solids>
+float LidarModel::beam_range(const Solids &walls, double noise, const ViewpointIn<Solids> &from, int i,
                              std::uint64_t noise_seed) const {
   const auto b = static_cast<std::size_t>(i);
   assert(b < cos_.size());
@@ -127,6 +142,25 @@ float LidarModel::beam_range(const WallGrid &walls, double noise, const Viewpoin
   const double range = walls.cast_from(from.origin, dx, dy, reach_m);
   const double noise_m = sigma_m > 0.0 ? sigma_m * common::Rng::first_normal(noise_seed) : 0.0;
   return reading(i, range, noise_m);
+}
+
+// The lidar for both kinds of solids.
+template void LidarModel::range_image<WallGrid>(const WallGrid &, double, const Pose &, common::Rng &,
+                                                std::span<float>) const;
+template void LidarModel::range_image<ArenaGeometry>(const ArenaGeometry &, double, const Pose &, common::Rng &,
+                                                     std::span<float>) const;
+template ViewpointIn<WallGrid> LidarModel::viewpoint<WallGrid>(const WallGrid &, const Pose &);
+template ViewpointIn<ArenaGeometry> LidarModel::viewpoint<ArenaGeometry>(const ArenaGeometry &, const Pose &);
+template float LidarModel::beam_range<WallGrid>(const WallGrid &, double, const ViewpointIn<WallGrid> &, int,
+                                                std::uint64_t) const;
+template float LidarModel::beam_range<ArenaGeometry>(const ArenaGeometry &, double,
+                                                     const ViewpointIn<ArenaGeometry> &, int, std::uint64_t) const;
+
+RayHit cast_hit(const ArenaGeometry &solids, double x_m, double y_m, double angle_rad, double max_range_m) {
+  RayHit hit{0.0, 0.0, 0.0};
+  hit.distance_m = solids.cast_from(solids.cast_origin(x_m, y_m), std::cos(angle_rad), std::sin(angle_rad),
+                                    max_range_m, &hit.normal_x, &hit.normal_y);
+  return hit;
 }
 
 RayHit cast_hit(const WallGrid &walls, double x_m, double y_m, double angle_rad, double max_range_m) {
@@ -172,8 +206,11 @@ std::vector<double> ray_weights(const DistanceSensorSpec &sensor) {
   return w;
 }
 
-double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor, double body_radius_m,
-                         const Pose &pose) {
+namespace {
+
+template <typename Solids>
+double sensor_distance_in(const Solids &walls, const DistanceSensorSpec &sensor, double body_radius_m,
+                          const Pose &pose) {
   assert(sensor.rays >= 1 && !sensor.lookup_table.empty());
   const double direction = pose.yaw_rad + sensor.angle_rad;
   const double ox = pose.x_m + body_radius_m * std::cos(direction);
@@ -199,6 +236,29 @@ double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor
   return distance;
 }
 
+template <typename Solids>
+bool bumper_pressed_in(const Solids &walls, const BumperSpec &bumper, double body_radius_m, const Pose &pose) {
+  for (const Contact &c : walls.contacts(pose.x_m, pose.y_m, body_radius_m + kContactTolerance_m)) {
+    const double bearing = std::atan2(c.y_m - pose.y_m, c.x_m - pose.x_m) - pose.yaw_rad;
+    if (std::abs(common::wrap_angle_rad(bearing - bumper.angle_rad)) <= bumper.half_arc_rad + 1e-12) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor, double body_radius_m,
+                         const Pose &pose) {
+  return sensor_distance_in(walls, sensor, body_radius_m, pose);
+}
+
+double sensor_distance_m(const ArenaGeometry &solids, const DistanceSensorSpec &sensor, double body_radius_m,
+                         const Pose &pose) {
+  return sensor_distance_in(solids, sensor, body_radius_m, pose);
+}
+
 double lookup_reading(const std::vector<LookupRow> &table, double distance_m, bool noisy, common::Rng &rng) {
   const double value = lookup_value(table, distance_m);
   const double fraction = lookup_noise_fraction(table, distance_m);
@@ -211,15 +271,19 @@ double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &se
   return lookup_reading(sensor.lookup_table, sensor_distance_m(walls, sensor, body_radius_m, pose), noisy, rng);
 }
 
+double distance_sensor_value(const ArenaGeometry &solids, const DistanceSensorSpec &sensor,
+                             double body_radius_m, const Pose &pose, bool noisy, common::Rng &rng) {
+  return lookup_reading(sensor.lookup_table, sensor_distance_m(solids, sensor, body_radius_m, pose), noisy, rng);
+}
+
 bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body_radius_m,
                     const Pose &pose) {
-  for (const Contact &c : walls.contacts(pose.x_m, pose.y_m, body_radius_m + kContactTolerance_m)) {
-    const double bearing = std::atan2(c.y_m - pose.y_m, c.x_m - pose.x_m) - pose.yaw_rad;
-    if (std::abs(common::wrap_angle_rad(bearing - bumper.angle_rad)) <= bumper.half_arc_rad + 1e-12) {
-      return true;
-    }
-  }
-  return false;
+  return bumper_pressed_in(walls, bumper, body_radius_m, pose);
+}
+
+bool bumper_pressed(const ArenaGeometry &solids, const BumperSpec &bumper, double body_radius_m,
+                    const Pose &pose) {
+  return bumper_pressed_in(solids, bumper, body_radius_m, pose);
 }
 
 }  // namespace maze::sim

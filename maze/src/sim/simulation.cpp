@@ -89,6 +89,11 @@ maze::sim::Pose start_pose(const maze::Maze &maze) {
           maze.origin_y_m() + (maze.start().y + 0.5) * s, common::compass_yaw_rad(static_cast<int>(maze.start_heading()))};
 }
 
+maze::sim::Pose start_pose(const maze::Arena &arena) {
+  const maze::ArenaPose p = arena.start();
+  return {p.x_m, p.y_m, p.yaw_rad};
+}
+
 thread_local Simulation *g_current = nullptr;
 
 }  // namespace
@@ -112,15 +117,29 @@ void Simulation::add_device(const std::string &name, Kind kind, int spec) {
 Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
                        const maze::sim::SimulationOptions &options)
     : profile_(profile), options_(options), walls_(maze), pose_(options.start.value_or(start_pose(maze))) {
+  set_up();
+}
+
+Simulation::Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &profile,
+                       const maze::sim::SimulationOptions &options)
+    : profile_(profile), options_(options), arena_(arena), pose_(options.start.value_or(start_pose(arena))) {
+  set_up();
+}
+
+void Simulation::set_up() {
   options_.validate();
   check_stuck_bumper(profile_, options_.stuck_bumper);
-  maze::sim::check_pose_free(walls_, pose_);
-  for (const maze::sim::Contact &c : walls_.contacts(pose_.x_m, pose_.y_m, profile_.body_radius_m)) {
-    if (c.distance_m < profile_.body_radius_m - 1e-9) {
-      throw common::InputError(fmt::format(
-          "the robot's body (radius {} m) overlaps a wall at ({}, {})", profile_.body_radius_m,
-          pose_.x_m, pose_.y_m));
+  const bool overlaps = with_solids([&](const auto &solids) {
+    maze::sim::check_pose_free(solids, pose_);
+    for (const maze::sim::Contact &c : solids.contacts(pose_.x_m, pose_.y_m, profile_.body_radius_m)) {
+      if (c.distance_m < profile_.body_radius_m - 1e-9) return true;
     }
+    return false;
+  });
+  if (overlaps) {
+    throw common::InputError(fmt::format("the robot's body (radius {} m) overlaps {} at ({}, {})",
+                                         profile_.body_radius_m, arena_ ? "an obstacle" : "a wall", pose_.x_m,
+                                         pose_.y_m));
   }
   for (const maze::sim::LidarSpec &spec : profile_.lidars) {
     lidar_models_.emplace_back(spec);
@@ -231,8 +250,8 @@ const float *Simulation::lidar_range_image(int device) {
   if (!fresh(state)) {
     state.ranges.resize(static_cast<std::size_t>(spec.horizontal_resolution));
     common::Rng rng = rng_for(device);
-    lidar_models_[static_cast<std::size_t>(state.spec)].range_image(walls_, lidar_noise(spec),
-                                                                     pose_, rng, state.ranges);
+    const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
+    with_solids([&](const auto &solids) { model.range_image(solids, lidar_noise(spec), pose_, rng, state.ranges); });
     apply_lidar_faults(device, spec, state.ranges);
   }
   return state.ranges.data();
@@ -247,6 +266,12 @@ const maze::sim::Pose &Simulation::pose_at_step(std::int64_t step) const {
 }
 
 void Simulation::rotating_range_image(int device, DeviceState &state, const maze::sim::LidarSpec &spec) {
+  with_solids([&](const auto &solids) { rotating_range_image_in(solids, device, state, spec); });
+}
+
+template <typename Solids>
+void Simulation::rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
+                                         const maze::sim::LidarSpec &spec) {
   const auto n = static_cast<std::size_t>(spec.horizontal_resolution);
   if (state.beam_steps.size() != n) {
     state.beam_steps.assign(n, -1);
@@ -258,12 +283,12 @@ void Simulation::rotating_range_image(int device, DeviceState &state, const maze
   const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
   const double noise = lidar_noise(spec);
   // The viewpoints of the few steps the new beams hold, each computed once.
-  std::vector<std::pair<std::int64_t, maze::sim::LidarModel::Viewpoint>> viewpoints;
-  const auto viewpoint_at = [&](std::int64_t step) -> const maze::sim::LidarModel::Viewpoint & {
+  std::vector<std::pair<std::int64_t, maze::sim::ViewpointIn<Solids>>> viewpoints;
+  const auto viewpoint_at = [&](std::int64_t step) -> const maze::sim::ViewpointIn<Solids> & {
     for (const auto &v : viewpoints) {
       if (v.first == step) return v.second;
     }
-    viewpoints.emplace_back(step, maze::sim::LidarModel::viewpoint(walls_, pose_at_step(step)));
+    viewpoints.emplace_back(step, maze::sim::LidarModel::viewpoint(solids, pose_at_step(step)));
     return viewpoints.back().second;
   };
   for (std::size_t b = 0; b < n; ++b) {
@@ -277,7 +302,7 @@ void Simulation::rotating_range_image(int device, DeviceState &state, const maze
       continue;
     }
     const std::uint64_t seed = maze::sim::beam_seed(options_.seed, device, step, i);
-    const float range = model.beam_range(walls_, noise, viewpoint_at(step), i, seed);
+    const float range = model.beam_range(solids, noise, viewpoint_at(step), i, seed);
     state.ranges[b] = faulty_beam(device, spec, step, i, range);
   }
 }
@@ -374,7 +399,9 @@ double Simulation::touch_value(int device) {
   if (state.sampling_period_ms == 0) return kNaN;
   const maze::sim::BumperSpec &bumper = profile_.bumpers[static_cast<std::size_t>(state.spec)];
   if (bumper.name == options_.stuck_bumper) return 1.0;
-  return maze::sim::bumper_pressed(walls_, bumper, profile_.body_radius_m, pose_) ? 1.0 : 0.0;
+  const bool pressed = with_solids(
+      [&](const auto &solids) { return maze::sim::bumper_pressed(solids, bumper, profile_.body_radius_m, pose_); });
+  return pressed ? 1.0 : 0.0;
 }
 
 const maze::sim::DistanceSensorSpec &Simulation::distance_spec(int device) const {
@@ -388,8 +415,10 @@ double Simulation::distance_value(int device) {
   if (!fresh(state)) {
     common::Rng rng = rng_for(device);
     const bool noisy = !(options_.noise && *options_.noise == 0.0);
-    state.cache[0] = maze::sim::distance_sensor_value(walls_, distance_spec(device),
-                                                      profile_.body_radius_m, pose_, noisy, rng);
+    const maze::sim::DistanceSensorSpec &sensor = distance_spec(device);
+    state.cache[0] = with_solids([&](const auto &solids) {
+      return maze::sim::distance_sensor_value(solids, sensor, profile_.body_radius_m, pose_, noisy, rng);
+    });
   }
   return state.cache[0];
 }

@@ -93,7 +93,7 @@ int Simulation::substeps_for(const maze::sim::Pose &end, double v_m_s, double w_
   // ends with the arc's sagitta (at most length |turn| / 8) to spare, so it holds the arc.
   const double x = pose_.x_m, y = pose_.y_m;
   if (!free_centres_ || !free_centres_->strictly_contains(x, y)) {
-    free_centres_ = walls_.free_centres(x, y, profile_.body_radius_m);
+    free_centres_ = with_solids([&](const auto &solids) { return solids.free_centres(x, y, profile_.body_radius_m); });
   }
   const double sagitta_m = length_m * std::abs(w_rad_s * h_s) / 8.0;
   if (free_centres_ && free_centres_->contains_with_margin(x, y, sagitta_m) &&
@@ -106,9 +106,9 @@ int Simulation::substeps_for(const maze::sim::Pose &end, double v_m_s, double w_
 void Simulation::keep_body_out_of_walls() {
   const double radius = profile_.body_radius_m;
   if (free_centres_ && free_centres_->strictly_contains(pose_.x_m, pose_.y_m)) return;
-  free_centres_ = walls_.free_centres(pose_.x_m, pose_.y_m, radius);
+  free_centres_ = with_solids([&](const auto &solids) { return solids.free_centres(pose_.x_m, pose_.y_m, radius); });
   if (free_centres_ && free_centres_->strictly_contains(pose_.x_m, pose_.y_m)) return;
-  walls_.push_out(pose_.x_m, pose_.y_m, radius);
+  with_solids([&](const auto &solids) { return solids.push_out(pose_.x_m, pose_.y_m, radius); });
 }
 
 }  // namespace webots::embedded

@@ -9,6 +9,7 @@
 
 #include "common/random.hpp"
 #include "maze/sim/profile.hpp"
+#include "maze/sim/arena_geometry.hpp"
 #include "maze/sim/wall_grid.hpp"
 
 namespace maze::sim {
@@ -31,6 +32,12 @@ std::uint64_t beam_seed(std::uint64_t seed, int device, std::int64_t step, int b
 
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
+// Likewise in an arena: outside the boundary or inside an obstacle.
+void check_pose_free(const ArenaGeometry &solids, const Pose &pose);
+
+// Every function below that takes the solids takes a WallGrid (a maze) or an ArenaGeometry
+// (an arena): the same code, compiled for each (sensors.cpp instantiates both), so a maze's
+// ray never pays for a choice between them.
 
 // The direction of lidar beam i relative to the heading, as Webots points it: a rotating
 // lidar's at fov/2 - i fov/N, a fixed lidar's half a beam in, fov/2 - (i + 1/2) fov/N (the
@@ -57,6 +64,14 @@ float fixed_lidar_reading(const LidarSpec &lidar, double range_m, double cos_fac
 // A rotating lidar's: range_m plus noise_m, quantised, +infinity outside [min, max].
 float rotating_lidar_reading(const LidarSpec &lidar, double range_m, double noise_m);
 
+// Where beams are cast from: a pose's cast origin and heading, computed once per pose.
+template <typename Solids>
+struct ViewpointIn {
+  typename Solids::CastOrigin origin;
+  double cos_yaw;
+  double sin_yaw;
+};
+
 // A lidar with its beam directions computed once.
 class LidarModel {
  public:
@@ -67,18 +82,16 @@ class LidarModel {
   // distance to the first wall with Gaussian noise of sigma noise x max range, as
   // fixed_lidar_reading or rotating_lidar_reading make it a reading. One normal variate is
   // drawn per beam, in index order, whether or not the beam returns; noise 0 draws none.
-  void range_image(const WallGrid &walls, double noise, const Pose &pose, common::Rng &rng,
+  template <typename Solids>
+  void range_image(const Solids &walls, double noise, const Pose &pose, common::Rng &rng,
                    std::span<float> out) const;
-  // Where beams are cast from: a pose's cast origin and heading, computed once per pose.
-  struct Viewpoint {
-    WallGrid::CastOrigin origin;
-    double cos_yaw;
-    double sin_yaw;
-  };
-  static Viewpoint viewpoint(const WallGrid &walls, const Pose &pose);
+  using Viewpoint = ViewpointIn<WallGrid>;
+  template <typename Solids>
+  static ViewpointIn<Solids> viewpoint(const Solids &walls, const Pose &pose);
   // Beam i alone from a viewpoint, as range_image measures it, its noise the first normal
   // variate of Rng(noise_seed) (beam_seed).
-  float beam_range(const WallGrid &walls, double noise, const Viewpoint &from, int i,
+  template <typename Solids>
+  float beam_range(const Solids &walls, double noise, const ViewpointIn<Solids> &from, int i,
                    std::uint64_t noise_seed) const;
   // Where a rotating head passes beam i: revolutions clockwise from ahead, in [0, 1).
   double sweep_phase(int i) const { return sweep_phase_[static_cast<std::size_t>(i)]; }
@@ -102,6 +115,9 @@ struct RayHit {
   double normal_x, normal_y;
 };
 RayHit cast_hit(const WallGrid &walls, double x_m, double y_m, double angle_rad, double max_range_m);
+// In an arena: the normal of the face met (any direction: obstacles may be rotated; the
+// boundary's inward normal).
+RayHit cast_hit(const ArenaGeometry &solids, double x_m, double y_m, double angle_rad, double max_range_m);
 
 // A sonar ray whose angle of incidence on the surface is pi / 8 or more never returns
 // (Webots: "outside the reflexion cone of aperture 45 degrees").
@@ -124,6 +140,8 @@ std::vector<double> ray_weights(const DistanceSensorSpec &sensor);
 // those whose incidence is below kSonarMaxIncidence_rad; the range when every ray is lost.
 double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor, double body_radius_m,
                          const Pose &pose);
+double sensor_distance_m(const ArenaGeometry &solids, const DistanceSensorSpec &sensor, double body_radius_m,
+                         const Pose &pose);
 // The lookup table's response at distance_m (lookup_value) and, when noisy, plus Gaussian
 // noise of standard deviation noise fraction x value (Webots: v (1 + noise N(0, 1))); one
 // normal variate drawn from rng only when noisy and the noise fraction there is not 0.
@@ -132,11 +150,15 @@ double lookup_reading(const std::vector<LookupRow> &table, double distance_m, bo
 double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &sensor,
                              double body_radius_m, const Pose &pose, bool noisy,
                              common::Rng &rng);
+double distance_sensor_value(const ArenaGeometry &solids, const DistanceSensorSpec &sensor,
+                             double body_radius_m, const Pose &pose, bool noisy, common::Rng &rng);
 
 // Whether a bumper of a round body of body_radius_m touches a wall (a wall surface within
 // contact_tolerance_m of the rim, in the bumper's arc).
 inline constexpr double kContactTolerance_m = 1e-4;
 bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body_radius_m,
+                    const Pose &pose);
+bool bumper_pressed(const ArenaGeometry &solids, const BumperSpec &bumper, double body_radius_m,
                     const Pose &pose);
 
 }  // namespace maze::sim

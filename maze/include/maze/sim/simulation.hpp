@@ -34,7 +34,9 @@
 #include <vector>
 
 #include "common/random.hpp"
+#include "maze/arena.hpp"
 #include "maze/maze.hpp"
+#include "maze/sim/arena_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/lidar_sweep.hpp"
 #include "maze/sim/sensors.hpp"
@@ -58,7 +60,7 @@ struct SimulationOptions {
   double imu_noise_rad = 0.0;      // Gaussian sigma on yaw
   double encoder_noise_rad = 0.0;  // Gaussian sigma on each wheel angle
   // Where the robot starts; default: the centre of the maze's start cell, facing its start
-  // heading.
+  // heading (an arena: its start pose).
   std::optional<Pose> start;
 
   // Faults (all off by default). Drawn from a Rng seeded by (seed, device, step) apart from
@@ -83,13 +85,21 @@ class Simulation {
   // throws common::InputError otherwise.
   Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
              const maze::sim::SimulationOptions &options);
+  // The same robot and devices in an arena (validated, with a boundary): its obstacles and
+  // walled boundary are the solids (ArenaGeometry); the start is options.start, else the
+  // arena's start(). Throws common::InputError as above (outside the arena, in an obstacle).
+  Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &profile,
+             const maze::sim::SimulationOptions &options);
   ~Simulation();
   Simulation(const Simulation &) = delete;
   Simulation &operator=(const Simulation &) = delete;
 
   Robot &robot() { return *robot_; }
   const maze::sim::RobotProfile &profile() const { return profile_; }
-  const maze::sim::WallGrid &walls() const { return walls_; }
+  // A maze's walls (only for a simulation built from a maze), an arena's solids (only from an arena).
+  bool in_arena() const { return arena_.has_value(); }
+  const maze::sim::WallGrid &walls() const { return *walls_; }
+  const maze::sim::ArenaGeometry &arena_solids() const { return *arena_; }
 
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
@@ -146,6 +156,16 @@ class Simulation {
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
+  // The constructors' shared part, once the solids are set.
+  void set_up();
+  // f(the solids): the one choice between a maze and an arena, made once per query.
+  template <typename F>
+  decltype(auto) with_solids(F &&f) const {
+    return walls_ ? f(*walls_) : f(*arena_);
+  }
+  template <typename Solids>
+  void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
+                               const maze::sim::LidarSpec &spec);
   // One basic step of the differential drive: exact arcs at the wheels' constant rates.
   void advance(double dt_s);
   void turn_wheel(Wheel &wheel, double rate_rad_s, double h_s, bool arrives);
@@ -174,7 +194,8 @@ class Simulation {
 
   maze::sim::RobotProfile profile_;
   maze::sim::SimulationOptions options_;
-  maze::sim::WallGrid walls_;
+  std::optional<maze::sim::WallGrid> walls_;        // a maze's
+  std::optional<maze::sim::ArenaGeometry> arena_;   // or an arena's
   maze::sim::Pose pose_;
   // Where the body's centre touches no wall (WallGrid::free_centres), computed when the
   // body last left the previous box: inside it, a physics substep needs no push_out. The
