@@ -122,6 +122,66 @@ bool looks_like_room(std::string_view text) {
   return false;
 }
 
+// One statement of a room file (its tokens, its line) into the arena; boundary_line is the
+// line of the boundary read so far (0: none yet).
+void read_statement(Parser &p, const std::vector<Token> &tokens, std::string_view line, Arena &arena,
+                    int &boundary_line) {
+  const Token &key = tokens.front();
+  if (key.text == "name") {
+    const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
+    if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
+    arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t") + 1));
+  } else if (key.text == "boundary") {
+    if (boundary_line != 0) {
+      throw p.error(key.column, fmt::format("a second boundary (the first is at line {})", boundary_line));
+    }
+    const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers XS XE YS YE");
+    boundary_line = p.line;
+    arena.x_min_m = v[0];
+    arena.x_max_m = v[1];
+    arena.y_min_m = v[2];
+    arena.y_max_m = v[3];
+    arena.boundary_where = p.at(key.column);
+    if (!(v[0] < v[1]) || !(v[2] < v[3])) {
+      throw p.error(key.column, fmt::format("the boundary x {} to {} m, y {} to {} m is empty: it needs XS < XE "
+                                            "and YS < YE",
+                                            v[0], v[1], v[2], v[3]));
+    }
+  } else if (key.text == "rect") {
+    const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
+    if (v[0] == v[2] || v[1] == v[3]) {
+      throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
+    }
+    Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
+    o.where = p.at(key.column);
+    arena.obstacles.push_back(o);
+  } else if (key.text == "wall") {
+    const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
+    const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
+    if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
+    if (v[0] == v[2] && v[1] == v[3]) {
+      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
+                                            v[3]));
+    }
+    Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
+    o.where = p.at(key.column);
+    arena.obstacles.push_back(o);
+  } else if (key.text == "start") {
+    const std::vector<double> v = p.numbers(tokens, 2, 3, "2 or 3 numbers X Y [YAW_DEG]");
+    const double yaw_deg = v.size() == 3 ? v[2] : 90.0;
+    arena.starts.push_back({v[0], v[1], yaw_deg * std::numbers::pi / 180.0});
+    arena.start_where.push_back(p.at(key.column));
+  } else if (key.text == "goal") {
+    const std::vector<double> v = p.numbers(tokens, 2, 2, "2 numbers X Y");
+    arena.goals.push_back({v[0], v[1]});
+    arena.goal_where.push_back(p.at(key.column));
+  } else {
+    throw p.error(key.column, fmt::format("unknown statement '{}': expected name, boundary, rect, wall, start or "
+                                          "goal",
+                                          shown(key.text)));
+  }
+}
+
 Arena read_room(std::string_view text, const std::string &file) {
   Arena arena;
   arena.source = file;
@@ -136,60 +196,8 @@ Arena read_room(std::string_view text, const std::string &file) {
     offset = end + 1;
     const std::vector<Token> tokens = tokens_of(statement_of(line));
     if (tokens.empty()) continue;
+    read_statement(p, tokens, line, arena, boundary_line);
     const Token &key = tokens.front();
-    if (key.text == "name") {
-      const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
-      if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
-      arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t") + 1));
-    } else if (key.text == "boundary") {
-      if (boundary_line != 0) {
-        throw p.error(key.column, fmt::format("a second boundary (the first is at line {})", boundary_line));
-      }
-      const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers XS XE YS YE");
-      boundary_line = p.line;
-      arena.x_min_m = v[0];
-      arena.x_max_m = v[1];
-      arena.y_min_m = v[2];
-      arena.y_max_m = v[3];
-      arena.boundary_where = p.at(key.column);
-      if (!(v[0] < v[1]) || !(v[2] < v[3])) {
-        throw p.error(key.column, fmt::format("the boundary x {} to {} m, y {} to {} m is empty: it needs XS < XE "
-                                              "and YS < YE",
-                                              v[0], v[1], v[2], v[3]));
-      }
-    } else if (key.text == "rect") {
-      const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
-      if (v[0] == v[2] || v[1] == v[3]) {
-        throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
-      }
-      Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
-      o.where = p.at(key.column);
-      arena.obstacles.push_back(o);
-    } else if (key.text == "wall") {
-      const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
-      const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
-      if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
-      if (v[0] == v[2] && v[1] == v[3]) {
-        throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
-                                              v[3]));
-      }
-      Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
-      o.where = p.at(key.column);
-      arena.obstacles.push_back(o);
-    } else if (key.text == "start") {
-      const std::vector<double> v = p.numbers(tokens, 2, 3, "2 or 3 numbers X Y [YAW_DEG]");
-      const double yaw_deg = v.size() == 3 ? v[2] : 90.0;
-      arena.starts.push_back({v[0], v[1], yaw_deg * std::numbers::pi / 180.0});
-      arena.start_where.push_back(p.at(key.column));
-    } else if (key.text == "goal") {
-      const std::vector<double> v = p.numbers(tokens, 2, 2, "2 numbers X Y");
-      arena.goals.push_back({v[0], v[1]});
-      arena.goal_where.push_back(p.at(key.column));
-    } else {
-      throw p.error(key.column, fmt::format("unknown statement '{}': expected name, boundary, rect, wall, start or "
-                                            "goal",
-                                            shown(key.text)));
-    }
     if (arena.obstacles.size() > kMaxObstacles) {
       throw p.error(key.column, fmt::format("more than {} obstacles", kMaxObstacles));
     }
