@@ -28,6 +28,11 @@ echo "## Lidar scan, 360 beams (bench_lidar; Google Benchmark, CPU time)"
     awk -F, 'NR > 1 { gsub(/"/, "", $1); printf "%-40s %10.2f us cpu %10.2f us real\n", $1, $4, $3 }'
 echo
 
+echo "## Lidar scan in a 20 x 20 m arena, 360 beams (bench_arena; Google Benchmark, CPU time)"
+"$bin/bench_arena" --benchmark_min_time=0.2 --benchmark_format=csv 2>/dev/null |
+    awk -F, 'NR > 1 { gsub(/"/, "", $1); printf "%-52s %10.2f us cpu %10.2f us real\n", $1, $4, $3 }'
+echo
+
 echo "## Ray integration and scan update (bench_ray_integration; thread CPU time)"
 "$bin/bench_ray_integration" --repeat 5
 echo

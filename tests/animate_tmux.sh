@@ -69,4 +69,18 @@ tm kill-session -t mm
 tm new-session -d -s mm -x 30 -y 100 "$program run $world --subcells 9 --max-steps 1 --quiet; echo EXIT=\$?; sleep 60"
 wait_for "EXIT=" 60
 grep -q "^note: the map is 36 columns" "$pane" || fail "no note on a map wider than the terminal"
+tm kill-session -t mm
+# A --speed faster than the terminal can draw: frames are skipped, the run keeps its speed (a
+# 128 x 128 maze, about 33,000 moves, took over ten minutes when every move was a frame).
+big=$(mktemp --suffix=.txt)
+"$program" generate 128x128 -o "$big"
+start=$(date +%s)
+tm new-session -d -s mm -x 100 -y 40 "$program run $big --animate --speed 1000000 --fps 30; echo EXIT=\$?; sleep 60"
+wait_for "EXIT=" 60
+grep -q "EXIT=0" "$pane" || fail "--speed 1000000 on 128x128: exit status is not 0"
+grep -q "^end: done" "$pane" || fail "--speed 1000000 on 128x128: the run did not end as done"
+echo "--animate --speed 1000000 --fps 30 on 128x128: $(($(date +%s) - start)) s"
+rm -f "$big"
+tm kill-session -t mm
+
 echo "animation and map widths in tmux: ok"

@@ -29,7 +29,11 @@ rm -f "$build"/maze_mapper_*.deb
 (cd "$build" && cpack -G DEB > "$work/cpack.log") || { cat "$work/cpack.log" >&2; fail "cpack"; }
 deb=$(ls "$build"/maze_mapper_*.deb)
 echo "package: $deb"
-echo "depends: $(dpkg-deb -f "$deb" Depends)"
+depends=$(dpkg-deb -f "$deb" Depends)
+echo "depends: $depends"
+for needed in libcairo2 fonts-dejavu-core; do
+    grep -q "$needed" <<< "$depends" || fail "the package does not depend on $needed (the pictures)"
+done
 
 find /usr -xdev | sort > "$work/before"
 export DEBIAN_FRONTEND=noninteractive

@@ -51,4 +51,32 @@ inline Png read_png(const std::string &bytes) {
   return png;
 }
 
+// The map area of a picture whose map has no white pixel on its north row and west column
+// (demo pie and demo cone: a margin of never-updated cells): its top-left corner is the
+// first pixel, row by row, that starts a run of at least 40 non-white pixels (the axes'
+// labels are shorter), its width that run and its height the non-white pixels down from it.
+struct Box {
+  int x = 0;
+  int y = 0;
+  int w = 0;
+  int h = 0;
+};
+inline Box map_box(const Png &png) {
+  const std::vector<int> white{255, 255, 255};
+  for (int y = 0; y < png.height; ++y) {
+    for (int x = 0; x < png.width; ++x) {
+      int run = 0;
+      while (x + run < png.width && png.at(x + run, y) != white) ++run;
+      if (run >= 40) {
+        int h = 0;
+        while (y + h < png.height && png.at(x, y + h) != white) ++h;
+        return {x, y, run, h};
+      }
+      x += run;
+    }
+  }
+  FAIL("no map area in the picture");
+  return {};
+}
+
 }  // namespace test_png

@@ -66,4 +66,23 @@ browser --window-size=1100,800 --hide-scrollbars --screenshot="$dir/shot.png" "f
   fail "chromium --screenshot failed"
 "$png_spread" "$dir/shot.png" || fail "blank screenshot"
 [ -n "$copy" ] && cp "$dir/shot.png" "$copy"
+# A 64 x 64 run in a 1280 x 900 window: the map fills the stage, the controls step and zoom
+# (clicked through #do=, pressed through #key=), and the panel shows the run at that move.
+"$program" generate 64x64 -o "$dir/m64.txt"
+"$program" run "$dir/m64.txt" --quiet --no-trace --out "$dir/big" > "$dir/big.out" 2> /dev/null || fail "the 64x64 run failed"
+big_moves=$(sed -n 's/^moves: //p' "$dir/big.out")
+browser --window-size=1280,900 --dump-dom "file://$dir/big/replay.html#frame=680&do=next,next,prev,zoom-in,zoom-in&key=ArrowRight,+" \
+  > "$dir/dom.html" || fail "chromium --dump-dom of the 64x64 replay failed"
+grep -q 'data-js-error' "$dir/dom.html" && fail "a JavaScript error in the 64x64 replay"
+body=$(grep -o '<body[^>]*>' "$dir/dom.html")
+view_w=$(echo "$body" | sed -n 's/.*data-view-width="\([0-9]*\)".*/\1/p')
+view_h=$(echo "$body" | sed -n 's/.*data-view-height="\([0-9]*\)".*/\1/p')
+[ "${view_w:-0}" -ge 800 ] && [ "${view_h:-0}" -ge 600 ] || fail "the map's stage is ${view_w}x${view_h} in a 1280x900 window"
+echo "$body" | grep -q 'data-frame="682"' || fail "680, next, next, prev, right arrow is not frame 682: $body"
+echo "$body" | grep -q 'data-zoom="3.375"' || fail "three zooms in (1.5 each) are not 3.375 x the whole map: $body"
+grep -q "<dd id=\"now-move\">682 of $big_moves</dd>" "$dir/dom.html" || fail "the panel does not show move 682 of $big_moves"
+now_coverage=$(sed -n 's/.*<dd id="now-coverage">\([0-9.]*\)%.*/\1/p' "$dir/dom.html")
+awk -v c="$now_coverage" 'BEGIN { exit !(c > 0 && c < 100) }' || fail "coverage at move 682 is '$now_coverage', not part of the run's"
+grep -q '<dd id="now-visited">[1-9][0-9]* of 4096 cells</dd>' "$dir/dom.html" || fail "no cells visited at move 682"
+echo "64x64 replay at 1280x900: stage ${view_w}x${view_h}, move 682 of $big_moves, coverage $now_coverage%, zoom 3.375"
 echo "replay.html in chromium: ok"

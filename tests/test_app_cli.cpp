@@ -26,13 +26,14 @@ std::string usage_error(std::vector<std::string> args) {
   CLI::App cli{"maze_mapper", "maze_mapper"};
   app::CommandContext context;
   app::add_commands(cli, context);
+  const std::vector<std::string> words = args;
   args.insert(args.begin(), "maze_mapper");
   std::vector<const char *> argv;
   for (const std::string &a : args) argv.push_back(a.c_str());
   try {
     cli.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::ParseError &e) {
-    return "error: " + app::describe_usage_error(cli, e);
+    return "error: " + app::describe_usage_error(cli, e, words);
   } catch (const common::InputError &e) {
     return e.diagnostic();
   }

@@ -10,7 +10,9 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_runner.hpp"
+#include "common/error.hpp"
 #include "png_reader.hpp"
+#include "app/picture/map_picture.hpp"
 
 namespace {
 
@@ -98,6 +100,9 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
   const test_png::Png png = test_png::read_png(test_png::read_all(dir.path / "plan.png"));
   const int scale = 34;  // ceil(100 / K) px a sub-cell at K 3
   const int height_subcells = 12;
+  mapping::GridGeometry lab;  // the map's corner in the picture, right of the y axis's labels
+  lab.width_cells = lab.height_cells = 4;
+  const int left = static_cast<int>(app::map_origin_px(lab).x), top = static_cast<int>(app::map_origin_px(lab).y);
   int previous_x = -1, previous_y = -1;
   for (std::size_t n = 1; n < csv.size(); ++n) {
     const auto f = fields_of(csv[n]);
@@ -108,7 +113,9 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
     CHECK(std::stod(f[4]) == doctest::Approx((y + 0.5) / 3.0).epsilon(1e-4));
     if (previous_x >= 0) CHECK(std::abs(x - previous_x) + std::abs(y - previous_y) >= 1);
     if (previous_x >= 0) CHECK(std::max(std::abs(x - previous_x), std::abs(y - previous_y)) == 1);
-    CHECK(png.at(x * scale + scale / 2, (height_subcells - 1 - y) * scale + scale / 2) == std::vector<int>{200, 0, 200});
+    // The path's sub-cells in magenta; the last one the plan's end, a white disc ringed in it.
+    const std::vector<int> want = n + 1 < csv.size() ? std::vector<int>{200, 0, 200} : std::vector<int>{255, 255, 255};
+    CHECK(png.at(left + x * scale + scale / 2, top + (height_subcells - 1 - y) * scale + scale / 2) == want);
     previous_x = x, previous_y = y;
   }
   const auto first = fields_of(csv[1]);
@@ -119,12 +126,13 @@ TEST_CASE("plan --out DIR: plan.csv from the start's centre to the goal's, plan.
 
 // Regression (the trust sweep): `compare --subcells ""` compared nothing and exited 0,
 // `run --out ""` wrote no file and `run ""` ran the default world, silently. A value typed
-// empty is refused for every option and positional (app/cli/cli_app.cpp).
+// empty is refused for every option and positional (app/cli/cli_errors.hpp).
 TEST_CASE("an option's value typed empty is an error, not the option left out") {
-  CHECK_THROWS_WITH_AS(test_cli::run({"compare", kWorld, "--subcells", ""}), "--subcells: must not be empty",
-                       CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"run", kWorld, "--out", ""}), CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"run", ""}), CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"batch", kWorld, "--csv", ""}), CLI::ValidationError);
-  CHECK_THROWS_AS(test_cli::run({"demo", "1d", "--measurements", ""}), CLI::ValidationError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"compare", kWorld, "--subcells", ""}), "--subcells must not be empty",
+                       common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"run", kWorld, "--out", ""}), "--out must not be empty", common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"run", ""}), "WORLD must not be empty", common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"batch", kWorld, "--csv", ""}), "--csv must not be empty", common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"demo", "1d", "--measurements", ""}), "--measurements must not be empty",
+                       common::InputError);
 }

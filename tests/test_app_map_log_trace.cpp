@@ -13,6 +13,7 @@
 
 #include "cli_runner.hpp"
 #include "png_reader.hpp"
+#include "app/picture/plain_grid_picture.hpp"
 #include "app/run/run.hpp"
 #include "maze/world.hpp"
 
@@ -139,13 +140,19 @@ TEST_CASE("map-log --out: a log-odds picture per snapshot and the thresholded ma
   REQUIRE(rows.size() == 25);
   const test_png::Png picture = test_png::read_png(test_png::read_all(dir.path / "logodds.png"));
   const test_png::Png thresholded = test_png::read_png(test_png::read_all(dir.path / "thresholded.png"));
-  // 6 m over 600 px: 24 px a cell, the map at the top-left, north row first.
+  // 6 m over 600 px: 24 px a cell, north row first, where the picture's layout puts the map.
   const int cell_px = 24;
+  app::PlainGrid grid;
+  grid.cells_x = grid.cells_y = 25;
+  grid.cell_w_m = grid.cell_h_m = 0.24;
+  const app::PlainGridFrame frame = app::plain_grid_frame(grid, app::Figure{});
+  CHECK(frame.cell_w_px == cell_px);
+  const int left = static_cast<int>(frame.origin.x), top = static_cast<int>(frame.origin.y);
   int seen[3] = {0, 0, 0};  // occupied, free, never updated
   for (int r = 0; r < 25; ++r) {
     for (int i = 0; i < 25; ++i) {
       const double l = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)];
-      const std::vector<int> p = picture.at(i * cell_px + cell_px / 2, r * cell_px + cell_px / 2);
+      const std::vector<int> p = picture.at(left + i * cell_px + cell_px / 2, top + r * cell_px + cell_px / 2);
       if (l > 0.0) {
         CHECK(p[0] <= 70);
         CHECK(p[0] == p[2]);
@@ -159,7 +166,8 @@ TEST_CASE("map-log --out: a log-odds picture per snapshot and the thresholded ma
         ++seen[2];
       }
       const int want = l >= -0.5 ? 0 : 255;
-      CHECK(thresholded.at(i * cell_px + cell_px / 2, r * cell_px + cell_px / 2) == std::vector<int>{want, want, want});
+      CHECK(thresholded.at(left + i * cell_px + cell_px / 2, top + r * cell_px + cell_px / 2) ==
+            std::vector<int>{want, want, want});
     }
   }
   CHECK(seen[0] > 0);
@@ -188,14 +196,10 @@ TEST_CASE("demo pie --png: the updated cells in map.png's tones, as many as the 
   int occupied = 0, clear = 0;
   while (std::getline(in, line)) (std::stod(line.substr(line.rfind(',') + 1)) > 0.0 ? occupied : clear) += 1;
   const test_png::Png picture = test_png::read_png(test_png::read_all(png));
-  // The map above the legend: the legend strip starts at the first white row (the map's
-  // west margin is never white).
-  int map_rows = 0;
-  while (map_rows < picture.height && picture.at(0, map_rows) != std::vector<int>{255, 255, 255}) ++map_rows;
-  REQUIRE(map_rows < picture.height);
+  const test_png::Box map = test_png::map_box(picture);
   int dark = 0, light = 0, robot = 0;
-  for (int y = 0; y < map_rows; ++y) {
-    for (int x = 0; x < picture.width; ++x) {
+  for (int y = map.y; y < map.y + map.h; ++y) {
+    for (int x = map.x; x < map.x + map.w; ++x) {
       const std::vector<int> p = picture.at(x, y);
       const bool grey = p[0] == p[1] && p[1] == p[2];
       dark += grey && p[0] <= 70 ? 1 : 0;
@@ -230,14 +234,14 @@ TEST_CASE("demo cone --png: the CSV's marked cells dark, no other cell so") {
   for (const auto &[i, j] : marked) i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
   i0 -= 2, j0 -= 2, i1 += 3, j1 += 3;
   const test_png::Png picture = test_png::read_png(test_png::read_all(png));
-  int map_rows = 0;
-  while (map_rows < picture.height && picture.at(0, map_rows) != std::vector<int>{255, 255, 255}) ++map_rows;
-  const int cell_px = map_rows / (j1 - j0);  // the legend's top rule may add a row
-  REQUIRE(map_rows - cell_px * (j1 - j0) <= 1);
+  const test_png::Box map = test_png::map_box(picture);
+  const int cell_px = map.h / (j1 - j0);
+  REQUIRE(map.h == cell_px * (j1 - j0));
+  REQUIRE(map.w == cell_px * (i1 - i0));
   int marked_dark = 0, other_dark = 0;
   for (int j = j0; j < j1; ++j) {
     for (int i = i0; i < i1; ++i) {
-      const bool dark = picture.at((i - i0) * cell_px + cell_px / 2, (j1 - 1 - j) * cell_px + cell_px / 2) ==
+      const bool dark = picture.at(map.x + (i - i0) * cell_px + cell_px / 2, map.y + (j1 - 1 - j) * cell_px + cell_px / 2) ==
                         std::vector<int>{35, 35, 35};
       const bool is_marked = std::find(marked.begin(), marked.end(), std::pair{i, j}) != marked.end();
       (is_marked ? marked_dark : other_dark) += dark ? 1 : 0;

@@ -1,6 +1,7 @@
 // map.png read back by libpng: the tones at every sub-cell agree with map.pgm's independent
 // occupied / free / unknown rule for each model, one update already reads as a wall, the
-// markers sit where the run went, the legend has its scale bar; the 5 x 7 font.
+// markers sit where the run went, the legend has its scale bar and its colour bar; text is
+// drawn; the formats.
 #include <doctest/doctest.h>
 
 #include <unistd.h>
@@ -13,7 +14,8 @@
 #include "app/report/files_recorder.hpp"
 #include "app/picture/map_picture.hpp"
 #include "app/report/outputs.hpp"
-#include "app/picture/picture.hpp"
+#include "app/picture/drawing.hpp"
+#include "app/picture/figure.hpp"
 #include "app/run/run.hpp"
 #include "png_reader.hpp"
 
@@ -30,16 +32,11 @@ struct OutDir {
 
 std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
 
-// The rows of a canvas as '#' (ink) and '.' (background).
-std::vector<std::string> ink_rows(const app::Canvas &canvas) {
-  std::vector<std::string> rows;
-  for (int y = 0; y < canvas.height(); ++y) {
-    std::string row;
-    for (int x = 0; x < canvas.width(); ++x) row += canvas.at(x, y) == app::Rgb{255, 255, 255} ? '.' : '#';
-    rows.push_back(row);
-  }
-  return rows;
+// Whether two colours are within `tolerance` in every channel (anti-aliased edges, blocks).
+bool near(const std::vector<int> &a, app::Rgb b, int tolerance = 8) {
+  return std::abs(a[0] - b.r) <= tolerance && std::abs(a[1] - b.g) <= tolerance && std::abs(a[2] - b.b) <= tolerance;
 }
+bool near(app::Rgb a, app::Rgb b, int tolerance = 8) { return near(std::vector<int>{a.r, a.g, a.b}, b, tolerance); }
 
 struct Setup {
   const char *name;
@@ -88,14 +85,19 @@ TEST_CASE("map.png, every model: each sub-cell's tone is map.pgm's class; start,
     const std::string pgm = test_png::read_all(dir.path / "map.pgm");
     const std::string pixels = pgm.substr(pgm.size() - 144);  // 12 x 12 sub-cells, north row first
     const Png png = test_png::read_png(test_png::read_all(dir.path / "map.png"));
-    REQUIRE(png.width == app::kMinPictureWidth);  // the map is 12 * 34 = 408 px wide
-    REQUIRE(png.height > 408);
+    mapping::GridGeometry g;
+    g.width_cells = g.height_cells = 4;
+    const app::PointPx origin = app::map_origin_px(g);
+    const int left = static_cast<int>(origin.x);
+    const int top = static_cast<int>(origin.y);
+    REQUIRE(png.width > left + 408);  // the map is 12 * 34 = 408 px wide, the axes at its left
+    REQUIRE(png.height > top + 408);
     int walls = 0;
     for (int row = 0; row < 12; ++row) {
       for (int x = 0; x < 12; ++x) {
         if (row == 10 && x == 1) continue;  // the start cell's centre, under the start mark
         // Two pixels in from the sub-cell's top-left corner: clear of the path and marks.
-        const std::vector<int> p = png.at(x * 34 + 2, row * 34 + 2);
+        const std::vector<int> p = png.at(left + x * 34 + 2, top + row * 34 + 2);
         const auto pgm_class = static_cast<unsigned char>(pixels[static_cast<std::size_t>(row * 12 + x)]);
         CAPTURE(x);
         CAPTURE(row);
@@ -110,53 +112,118 @@ TEST_CASE("map.png, every model: each sub-cell's tone is map.pgm's class; start,
       }
     }
     CHECK(walls > 20);
-    CHECK(png.at(51, 10 * 34 + 17) == rgb(app::kStartColour));  // cell (0,0)
-    CHECK(png.at(3 * 102 + 14, 30) == rgb(app::kGoalColour));   // the left of the frame in goal (3,3)
-    // The scale bar: 1 m = one cell = 102 px, from x = 6 in the legend strip.
+    CHECK(png.at(left + 51, top + 10 * 34 + 17) == rgb(app::kStartColour));  // cell (0,0)
+    CHECK(near(png.at(left + 3 * 102 + 15, top + 30), app::kGoalColour));    // the left of the frame in goal (3,3)
+    // The scale bar: 1 m = one cell = 102 px, from the legend's left padding (the font size).
+    const int x0 = 14;
     bool bar = false;
-    for (int y = 408; y < png.height && !bar; ++y) {
-      bar = png.at(6, y)[0] < 50 && png.at(6 + 101, y)[0] < 50 && png.at(6 + 102, y)[0] > 200 &&
-            png.at(6 + 50, y)[0] < 50;
+    for (int y = top + 408; y < png.height && !bar; ++y) {
+      bar = png.at(x0 + 1, y)[0] < 50 && png.at(x0 + 100, y)[0] < 50 && png.at(x0 + 104, y)[0] > 200 &&
+            png.at(x0 + 50, y)[0] < 50;
     }
     CHECK(bar);
+    // The colour bar: somewhere under the map, a row going from white (4 free updates) to
+    // black (4 occupied) through the two tones one update gives.
+    bool colour_bar = false;
+    for (int y = top + 408; y < png.height && !colour_bar; ++y) {
+      bool white = false, light = false, dark = false, black = false;
+      for (int x = 0; x < png.width; ++x) {
+        const std::vector<int> p = png.at(x, y);
+        if (p == std::vector<int>{255, 255, 255}) continue;
+        white = white || near(p, app::Rgb{250, 250, 250}, 5);
+        light = light || (white && p == std::vector<int>{215, 215, 215});
+        dark = dark || (light && p == std::vector<int>{70, 70, 70});
+        black = black || (dark && p[0] < 5);
+      }
+      colour_bar = black;
+    }
+    CHECK(colour_bar);
   }
 }
 
-TEST_CASE("map.png marks the end of the path with a blue disc") {
+TEST_CASE("map.png marks the robot with a blue disc at the path's last cell, the axes and legend around the map") {
   mapping::GridGeometry g;
   g.width_cells = 3;
   g.height_cells = 2;
   const mapping::OccupancyGrid grid(g, 0.0f);
   const app::MapMarks marks{{{0, 0}, {1, 0}, {1, 1}}, {{2, 1}}, {}, {}};
-  const app::Canvas canvas = app::map_picture(grid, app::MapTones{}, marks, "model cell, K 3");
-  const app::PixelPoint end = app::cell_centre_px(g, {1, 1});
-  CHECK(end.x == 153);
-  CHECK(end.y == 51);
-  CHECK(canvas.at(end.x, end.y) == app::kEndColour);
-  CHECK(canvas.at(end.x + 7, end.y + 7) == app::kEndColour);
-  CHECK(canvas.at(153, 80) == app::kPathColour);             // from (1,0) up to (1,1)
-  CHECK(canvas.at(2, 2) == app::kUnknownTone);               // nothing observed
-  CHECK(canvas.at(2 * 102 + 14, 30) == app::kGoalColour);
+  app::Drawing page = app::map_picture(grid, app::MapTones{}, marks, "model cell, K 3");
+  const app::PointPx origin = app::map_origin_px(g);
+  const app::PointPx end = app::cell_centre_px(g, {1, 1});
+  CHECK(end.x == origin.x + 153);
+  CHECK(end.y == origin.y + 51);
+  const int x = static_cast<int>(end.x), y = static_cast<int>(end.y);
+  CHECK(page.at(x, y) == app::kEndColour);
+  CHECK(page.at(x + 6, y + 6) == app::kEndColour);
+  CHECK(near(page.at(x, y + 29), app::kPathColour));  // from (1,0) up to (1,1)
+  const int left = static_cast<int>(origin.x), top = static_cast<int>(origin.y);
+  CHECK(page.at(left + 2, top + 2) == app::kUnknownTone);  // nothing observed
+  CHECK(near(page.at(left + 2 * 102 + 15, top + 30), app::kGoalColour));
+  // The axes' labels left of and under the map: ink there, white elsewhere in the margin.
+  int ink_left = 0, ink_under = 0;
+  for (int yy = top; yy < top + 204; ++yy) {
+    for (int xx = 0; xx < left - 2; ++xx) ink_left += page.at(xx, yy).r < 128 ? 1 : 0;
+  }
+  for (int yy = top + 206; yy < top + 204 + 24; ++yy) {
+    for (int xx = left; xx < left + 306; ++xx) ink_under += page.at(xx, yy).r < 128 ? 1 : 0;
+  }
+  CHECK(ink_left > 20);
+  CHECK(ink_under > 20);
 }
 
-TEST_CASE("the 5 x 7 font draws its glyphs; a character it lacks is '?'") {
-  app::Canvas canvas(12, 7, app::Rgb{255, 255, 255});
-  canvas.text(0, 0, "K3", 1, app::Rgb{0, 0, 0});
-  CHECK(ink_rows(canvas) == std::vector<std::string>{
-                                "#...#.#####.",
-                                "#..#.....#..",
-                                "#.#.....#...",
-                                "##.......#..",
-                                "#.#.......#.",
-                                "#..#..#...#.",
-                                "#...#..###..",
-                            });
-  app::Canvas unknown(6, 7, app::Rgb{255, 255, 255});
-  app::Canvas question(6, 7, app::Rgb{255, 255, 255});
-  unknown.text(0, 0, "~", 1, app::Rgb{0, 0, 0});
-  question.text(0, 0, "?", 1, app::Rgb{0, 0, 0});
-  CHECK(ink_rows(unknown) == ink_rows(question));
-  CHECK(app::text_width("1 m", 2) == 36);
+TEST_CASE("text is drawn in a real font: letters with descenders reach below the baseline") {
+  app::Drawing page(120, 40);
+  page.text({4, 24}, "gy", 20, app::Rgb{0, 0, 0});
+  int below = 0, above = 0;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 120; ++x) {
+      if (page.at(x, y).r < 128) (y > 24 ? below : above) += 1;
+    }
+  }
+  CHECK(above > 20);
+  CHECK(below > 10);  // g and y go down; the old 5 x 7 font had no descenders
+  CHECK(app::text_width("goal", 20) > app::text_width("go", 20));
+  CHECK(app::text_descent(20) > 2.0);
+}
+
+TEST_CASE("pictures: PNG bytes are the same on every drawing; SVG and PDF by name or extension") {
+  mapping::GridGeometry g;
+  g.width_cells = 2;
+  g.height_cells = 2;
+  const mapping::OccupancyGrid grid(g, 0.0f);
+  const app::MapMarks marks{{{0, 0}, {1, 0}}, {{1, 1}}, {}, {}};
+  const std::string a = app::map_picture(grid, app::MapTones{}, marks, "caption").encode();
+  const std::string b = app::map_picture(grid, app::MapTones{}, marks, "caption").encode();
+  CHECK(a == b);
+  CHECK(a.rfind("\x89PNG", 0) == 0);
+  const std::string svg = app::map_picture(grid, app::MapTones{}, marks, "caption", app::PictureFormat::svg).encode();
+  CHECK(svg.find("<svg") != std::string::npos);
+  const std::string pdf = app::map_picture(grid, app::MapTones{}, marks, "caption", app::PictureFormat::pdf).encode();
+  CHECK(pdf.rfind("%PDF", 0) == 0);
+  CHECK(app::picture_format_of_file("out/map.SVG") == app::PictureFormat::svg);
+  CHECK(app::picture_format_of_file("a.pdf") == app::PictureFormat::pdf);
+  CHECK(app::picture_format_of_file("a.png") == app::PictureFormat::png);
+  CHECK(!app::picture_format_of_file("a.svg/x").has_value());
+  CHECK(!app::picture_format_of_file("a.jpg").has_value());
+  CHECK(app::picture_format_named("svg") == app::PictureFormat::svg);
+}
+
+TEST_CASE("the colour bar of map.png's tones: a tick at each knot, white to black") {
+  const app::ColourBar bar = app::map_tone_bar(app::MapTones{}, "never observed");
+  REQUIRE(bar.ticks.size() == 5);
+  CHECK(bar.ticks.front().label == "-3.39");
+  CHECK(bar.ticks[2].label == "0");
+  CHECK(bar.ticks.back().label == "+1.62");
+  CHECK(bar.tones.front().r > 245);
+  CHECK(bar.tones.back().r < 10);
+  CHECK(bar.extra->colour == app::kUnknownTone);
+}
+
+TEST_CASE("axis labels: every 1, 2, 5, 10, ... cells, as far apart as a label needs") {
+  CHECK(app::axis_step(102.0, 20.0) == 1);
+  CHECK(app::axis_step(15.0, 20.0) == 2);
+  CHECK(app::axis_step(5.0, 24.0) == 5);
+  CHECK(app::axis_step(1.0, 30.0) == 50);
 }
 
 TEST_CASE("scale bars are 1, 2 or 5 times a power of ten metres") {

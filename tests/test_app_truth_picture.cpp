@@ -38,10 +38,10 @@ struct Tally {
 
 // lab4x4's 16 cells are all reachable: the scored sides are every cell's north and east
 // side and the south and west edge of the maze.
-Tally tally_sides(const Png &png, int cell_px, int margin) {
+Tally tally_sides(const Png &png, int cell_px, int margin, app::PointPx origin) {
   Tally t;
   const auto count = [&](int x, int y) {
-    const std::vector<int> p = png.at(x, y);
+    const std::vector<int> p = png.at(static_cast<int>(origin.x) - margin + x, static_cast<int>(origin.y) - margin + y);
     if (p == rgb(app::kRightWallColour)) ++t.right;
     else if (p == rgb(app::kMissedColour)) ++t.missed;
     else if (p == rgb(app::kPhantomColour)) ++t.phantom;
@@ -61,11 +61,13 @@ Tally tally_sides(const Png &png, int cell_px, int margin) {
   return t;
 }
 
-int visited_cells(const Png &png, int cell_px, int margin) {
+int visited_cells(const Png &png, int cell_px, app::PointPx origin) {
   int visited = 0;
   for (int y = 0; y < 4; ++y) {
     for (int x = 0; x < 4; ++x) {
-      const std::vector<int> p = png.at(margin + x * cell_px + 2 * margin, margin + (3 - y) * cell_px + 2 * margin);
+      // 7 px in from the cell's corner: clear of the sides (5 px each way) and a goal's frame.
+      const std::vector<int> p = png.at(static_cast<int>(origin.x) + x * cell_px + 7,
+                                        static_cast<int>(origin.y) + (3 - y) * cell_px + 7);
       if (p == std::vector<int>{255, 255, 255}) ++visited;
       else CHECK(p == rgb(app::kUnvisitedTone));
     }
@@ -114,11 +116,13 @@ TEST_CASE("truth.png: the sides' colours count to the summary's wall_accuracy, t
     const int cell_px = 102;
     const int margin = app::truth_side_px(cell_px);
     CHECK(margin == 10);
-    const Tally t = tally_sides(png, cell_px, margin);
+    const maze::Maze lab = maze::load_world(o.world).maze;
+    const app::PointPx origin = app::truth_origin_px(lab, 3);
+    const Tally t = tally_sides(png, cell_px, margin, origin);
     CHECK(t.sides() == 40);
     CHECK(static_cast<std::size_t>(t.right) == summary.score.sides_correct);
     CHECK(json.at("wall_accuracy") == std::round(10000.0 * t.right / t.sides()) / 100.0);
-    CHECK(json.at("coverage") == std::round(10000.0 * visited_cells(png, cell_px, margin) / 16.0) / 100.0);
+    CHECK(json.at("coverage") == std::round(10000.0 * visited_cells(png, cell_px, origin) / 16.0) / 100.0);
     if (c.max_steps == 500) {
       CHECK(t.unseen > 0);
       CHECK(t.missed > 0);

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <variant>
@@ -132,6 +133,7 @@ TEST_CASE("room format: errors name the line and the column of the token at faul
         "f.room:1:18: error: boundary takes 4 numbers XS XE YS YE: got 5 numbers");
   CHECK(room_error("# c\nrect 1 1 x 2\n") == "f.room:2:10: error: 'x' is not a number");
   CHECK(room_error("start 1 inf\n") == "f.room:1:9: error: 'inf' is not a finite number of metres");
+  CHECK(room_error("start +1 1\n") == "f.room:1:7: error: '+1' is not a number");
   CHECK(room_error("wall 0 0 1 1 0\n") == "f.room:1:14: error: the width must be positive, got 0");
   CHECK(room_error("wall 1 1 1 1\n") == "f.room:1:1: error: the wall from (1, 1) to (1, 1) has zero length");
   CHECK(room_error("  rect 0 0 0 1\n") == "f.room:1:3: error: the rectangle (0, 0)-(0, 1) has no area");
@@ -228,7 +230,7 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
   const std::string xml = maze::write_xml_arena(a);
   CHECK(xml ==
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        "<!-- maze_mapper arena: 2 obstacles, boundary 5 x 3 m -->\n<world>\n"
+        "<!-- maze_mapper arena: 2 obstacles, boundary 5 x 3 m -->\n<world name=\"test room\">\n"
         "  <boundary xs=\"0\" xe=\"5\" ys=\"0\" ye=\"3\"/>\n"
         "  <wall x1=\"1\" y1=\"1.5\" x2=\"2\" y2=\"1.5\" width=\"1\"/>\n"
         "  <wall x1=\"3\" y1=\"0\" x2=\"3\" y2=\"1.2\" width=\"0.1\"/>\n"
@@ -241,6 +243,11 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
   CHECK(back.arena.obstacles[1].bounds() == a.obstacles[1].bounds());
   CHECK(maze::write_room(back.arena) == maze::write_room(maze::read_room(maze::write_room(back.arena), "c")));
   CHECK(back.arena.x_max_m == 5);
+  CHECK(back.arena.name == "test room");
+  // A yaw at any angle goes through degrees and back exactly.
+  maze::Arena turned = a;
+  turned.starts[0].yaw_rad = 0.785398;
+  CHECK(maze::read_room(maze::write_room(turned), "t").starts[0].yaw_rad == 0.785398);
   CHECK_THROWS_WITH_AS(maze::format_arena(a, maze::Format::num),
                        "a num file holds a grid maze; an arena is written as .room or .xml", common::InputError);
 
@@ -310,10 +317,7 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
 TEST_CASE("truth: a rotated obstacle marks exactly the cells its area meets") {
   // A square of side sqrt(2) m turned 45 degrees about (2, 2): a diamond reaching 1 m each way.
   maze::Arena a = maze::read_room("boundary 0 4 0 4\nstart 0.5 0.5\n", "f");
-  maze::Obstacle o = maze::Obstacle::from_box(2 - std::sqrt(0.5), 2 - std::sqrt(0.5), 2 + std::sqrt(0.5),
-                                              2 + std::sqrt(0.5));
-  o.angle_rad = kPi / 4;
-  a.obstacles.push_back(o);
+  a.obstacles.push_back(maze::Obstacle::oriented(2, 2, std::sqrt(0.5), std::sqrt(0.5), kPi / 4));
   const maze::ArenaTruth t = maze::rasterise_arena(a, 4, 4, 0.0);
   // The diamond's corners touch (1, 2), (3, 2), (2, 1), (2, 3): the four central cells only.
   CHECK(t.occupied == std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0});
@@ -347,7 +351,7 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
     std::size_t obstacles;
   };
   // ir-ring's and the homework's bumper robot's bodies (0.09 m; the Create's bump radius 0.16 m).
-  for (const Shipped s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 6},
+  for (const Shipped &s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 6},
                           Shipped{"thick_arena.xml", 0.09, 5}}) {
     CAPTURE(s.file);
     maze::ArenaOverrides robot;
@@ -378,4 +382,17 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
       maze::load_any_world(std::string(WORLDS_DIR) + "/thick_arena.xml", {}, {})).arena;
   CHECK(thick.x_min_m == -8.5);
   CHECK(thick.y_max_m == 8.5);
+}
+
+TEST_CASE("every file in worlds/ loads as a maze or an arena") {
+  int arenas = 0;
+  int mazes = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(WORLDS_DIR)) {
+    if (entry.path().filename() == "README.md") continue;
+    CAPTURE(entry.path().string());
+    const maze::AnyWorld world = maze::load_any_world(entry.path().string(), {}, {});
+    (maze::is_arena(world) ? arenas : mazes) += 1;
+  }
+  CHECK(arenas == 3);
+  CHECK(mazes >= 8);
 }

@@ -37,9 +37,7 @@ const double kRoot2 = std::sqrt(2.0);
 // kept apart: the diamond's corners are at (5 +- sqrt 2, 8.5) and (5, 8.5 +- sqrt 2).
 maze::Arena two_obstacles() {
   maze::Arena a = maze::read_room("boundary 0 10 0 10\nrect 4 4 6 6\nstart 1 1 0\n", "f");
-  maze::Obstacle diamond = maze::Obstacle::from_box(4, 7.5, 6, 9.5);
-  diamond.angle_rad = kPi / 4;
-  a.obstacles.push_back(diamond);
+  a.obstacles.push_back(maze::Obstacle::oriented(5, 8.5, 1, 1, kPi / 4));
   maze::validate_arena(a, 0.1);
   return a;
 }
@@ -176,8 +174,9 @@ TEST_CASE("arena geometry: the bucket walk gives the brute force's answers on ra
     for (int i = 0; i < 200; ++i) {
       const double x = rng.uniform(0, 12);
       const double y = rng.uniform(0, 9);
-      for (const auto &[dx, dy] : {std::pair{1.0, 0.0}, std::pair{-1.0, 0.0}, std::pair{0.0, 1.0}, std::pair{0.0, -1.0}}) {
-        CHECK(g.cast_direction(x, y, dx, dy, 30) == g.cast_brute_force(x, y, dx, dy, 30));
+      for (const std::pair<double, double> &d : {std::pair{1.0, 0.0}, std::pair{-1.0, 0.0}, std::pair{0.0, 1.0},
+                                                std::pair{0.0, -1.0}}) {
+        CHECK(g.cast_direction(x, y, d.first, d.second, 30) == g.cast_brute_force(x, y, d.first, d.second, 30));
       }
     }
   }
@@ -254,4 +253,21 @@ TEST_CASE("Simulation in an arena: distance sensors read what sensor_distance_m 
     const double value = sim.robot().getDistanceSensor(ahead.name)->getValue();
     CHECK(value == doctest::Approx(maze::sim::lookup_value(ahead.lookup_table, distance)).epsilon(0.3));
   }
+}
+
+TEST_CASE("Simulation in an arena: a rotating lidar sweeps the arena's solids") {
+  // hambot-2025's rotating 3 m lidar at 12 Hz: after a revolution at rest every beam is swept.
+  const maze::sim::RobotProfile &profile = maze::sim::find_profile("hambot-2025");
+  webots::embedded::Simulation sim(two_obstacles(), profile, at(3, 5, 0));
+  webots::Lidar *lidar = sim.robot().getLidar(profile.lidars.front().name);
+  REQUIRE(lidar != nullptr);
+  lidar->enable(32);
+  for (int i = 0; i < 4; ++i) sim.robot().step(32);
+  const float *image = lidar->getRangeImage();
+  REQUIRE(image != nullptr);
+  // A rotating lidar's beam 180 of 360 looks straight ahead: the box's face 1 m away.
+  const int n = profile.lidars.front().horizontal_resolution;
+  CHECK(image[n / 2] == doctest::Approx(1.0).epsilon(0.02));
+  // Beam 0 looks back: the boundary 3 m behind, out of its 3 m range or at it.
+  CHECK((std::isinf(image[0]) || image[0] == doctest::Approx(3.0).epsilon(0.02)));
 }

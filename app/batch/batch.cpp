@@ -16,6 +16,7 @@
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "maze/world.hpp"
+#include "maze/xml_arena.hpp"
 
 namespace app {
 namespace {
@@ -29,17 +30,31 @@ class NullBuffer : public std::streambuf {
   std::streamsize xsputn(const char *, std::streamsize n) override { return n; }
 };
 
-// Whether a file's content is one of the maze formats (its first bytes decide).
+// Whether the first bytes are a format at all (a broken maze file is still run, to say why).
+bool format_only(const std::string &head, const fs::path &path) {
+  try {
+    (void)maze::detect_format(head, path.string());
+    return true;
+  } catch (const common::InputError &) {
+    return false;
+  }
+}
+
+// Whether a file's content is one of the maze formats (its first bytes decide; an XML file,
+// its walls: the course's arenas are not mazes).
 bool looks_like_maze(const fs::path &path) {
   std::ifstream file(path, std::ios::binary);
   std::string head(4096, '\0');
   file.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(file.gcount()));
   try {
-    (void)maze::detect_format(head, path.string());
+    // An arena (a room file, the course's XML of obstacles) is not a maze to run.
+    const maze::Format format = maze::detect_format(head, path.string());
+    if (format == maze::Format::room) return false;
+    if (format == maze::Format::xml) return !maze::xml_world_is_arena(maze::read_file(path.string()), path.string(), {});
     return true;
   } catch (const common::InputError &) {
-    return false;
+    return format_only(head, path);
   }
 }
 
@@ -56,7 +71,7 @@ BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()
   std::ostream sink(&buffer);
   RunControls controls;
   controls.interrupted = interrupted;
-  try {
+  run_row(item, [&] {
     item.summary = run_and_write(options, sink, controls);
     item.report.emplace(options, item.summary);
     item.ran = true;
@@ -67,12 +82,7 @@ BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()
                        ? fmt::format("ended: {}", robot::to_string(item.summary.reason))
                        : fmt::format("ended: {} ({})", robot::to_string(item.summary.reason), item.summary.message);
     }
-  } catch (const common::InputError &e) {
-    item.bad_input = true;
-    item.error = e.diagnostic();
-  } catch (const std::exception &e) {
-    item.error = fmt::format("error: {}", e.what());
-  }
+  });
   return item;
 }
 

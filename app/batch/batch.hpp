@@ -3,13 +3,17 @@
 // on a pool of threads, reported in input order whatever the number of jobs.
 
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "app/run/run.hpp"
+#include "common/error.hpp"
 #include "app/run/run_report.hpp"
 
 namespace app {
@@ -141,5 +145,19 @@ std::vector<BatchRow> read_batch_csvs(const std::vector<std::string> &files);
 
 // 130 when interrupted, 0 when every run succeeded, 2 when every world was bad input, else 1.
 int batch_exit_status(const std::vector<BatchItem> &items);
+
+// Runs one world's run() for a batch row: a bad input (common::InputError) marks the row
+// bad_input with its diagnostic, any other failure is the row's error; the batch goes on.
+template <typename Row, typename Run>
+void run_row(Row &row, Run &&run) {
+  try {
+    run();
+  } catch (const common::InputError &e) {
+    row.bad_input = true;
+    row.error = e.diagnostic();
+  } catch (const std::exception &e) {
+    row.error = fmt::format("error: {}", e.what());
+  }
+}
 
 }  // namespace app

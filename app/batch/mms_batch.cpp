@@ -22,7 +22,7 @@ MmsBatchItem run_one(RunOptions options, const MmsOptions &mms, const std::strin
   RunControls controls;
   controls.interrupted = interrupted;
   std::ostringstream sink;
-  try {
+  run_row(item, [&] {
     item.run = run_mms_world(options, mms, sink, controls);
     item.ran = true;
     item.interrupted = item.run.mms.end == MmsEnd::interrupted;
@@ -33,12 +33,7 @@ MmsBatchItem run_one(RunOptions options, const MmsOptions &mms, const std::strin
       item.error = as_asked ? fmt::format("{}, but the goal was not reached", r.message)
                             : fmt::format("{}: {}", to_string(r.end), r.message);
     }
-  } catch (const common::InputError &e) {
-    item.bad_input = true;
-    item.error = e.diagnostic();
-  } catch (const std::exception &e) {
-    item.error = fmt::format("error: {}", e.what());
-  }
+  });
   return item;
 }
 

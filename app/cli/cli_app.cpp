@@ -4,26 +4,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli/cli_errors.hpp"
 #include "app/cli/cli_reference.hpp"
 #include "app/cli/help_format.hpp"
 #include "app/cli/commands.hpp"
 
 namespace app {
-namespace {
-
-// An option's value typed empty (--out "", WORLD "") is refused rather than taken for the
-// option left out: each command reads "" as "not given" (no files, the default world).
-void refuse_empty_values(CLI::App &command) {
-  const CLI::Validator non_empty([](std::string &value) { return value.empty() ? std::string("must not be empty") : std::string(); },
-                                 "", "non-empty");
-  for (CLI::Option *option : command.get_options()) {
-    if (option->get_type_size_max() > 0) option->check(non_empty);
-  }
-  for (CLI::App *sub : command.get_subcommands([](CLI::App *) { return true; })) refuse_empty_values(*sub);
-}
-
-}  // namespace
-
 void add_commands(CLI::App &cli, CommandContext &context) {
   // Before the subcommands: each copies its parent's help flag as it is added.
   cli.set_help_flag("-h,--help", "print this help and exit");
@@ -44,7 +30,7 @@ void add_commands(CLI::App &cli, CommandContext &context) {
   add_scan_command(cli, context);
   add_robot_command(cli, context);
   add_reference_command(cli);
-  refuse_empty_values(cli);
+  check_values_ourselves(cli);
   use_readable_help(cli);
 }
 

@@ -2,30 +2,16 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
-#include <sstream>
+#include <functional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "common/error.hpp"
+#include "common/parse_number.hpp"
+
 namespace app {
 namespace {
-
-// The option called `name` in the command line's subcommand or the top level, or nullptr.
-const CLI::Option *find_option(const CLI::App &cli, const std::string &name) {
-  for (const CLI::App *sub : cli.get_subcommands()) {
-    if (const CLI::Option *o = sub->get_option_no_throw(name)) return o;
-  }
-  return cli.get_option_no_throw(name);
-}
-
-// What CLI11's type name asks for, in words.
-std::string wanted(std::string_view type_name) {
-  if (type_name == "INT") return "a whole number";
-  if (type_name == "UINT") return "a whole number from 0";
-  if (type_name == "FLOAT") return "a number";
-  return "a value of type " + std::string(type_name);
-}
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
 // neighbours cost one each.
@@ -94,13 +80,11 @@ std::vector<std::string> close_option_names(const std::string &typed, const std:
   return close_names(typed, names);
 }
 
-// The first word CLI11 did not expect, told with the names it may have meant.
-std::string unexpected(const CLI::App &cli, const std::string &words) {
-  // An unknown option first: the words after it may be its value (CLI11 lists them in no
-  // set order).
-  std::istringstream in(words);
+// The first word the command line did not expect, told with the names it may have meant.
+std::string unexpected(const CLI::App &cli, const std::vector<std::string> &extras) {
+  // An unknown option first: the words after it may be its value.
   std::string first;
-  for (std::string word; in >> word;) {
+  for (const std::string &word : extras) {
     if (first.empty() || (word.starts_with("-") && !first.starts_with("-"))) first = word;
   }
   if (first.starts_with("--")) first = first.substr(0, first.find('='));
@@ -117,6 +101,45 @@ std::string unexpected(const CLI::App &cli, const std::string &words) {
   const std::string kind = &app == &cli ? "command" : fmt::format("{} command", where);
   return close.empty() ? fmt::format("unknown {} '{}' (choose {})", kind, first, fmt::join(commands, ", "))
                        : fmt::format("unknown {} '{}'; did you mean {}?", kind, first, either(close));
+}
+
+// Whether `word` names `option` ("--clamp", "--clamp=1", "-o").
+bool names(const std::string &word, const CLI::Option &option) {
+  if (word.starts_with("--")) return option.check_lname(word.substr(2, word.find('=') - 2));
+  return word.size() == 2 && word[0] == '-' && option.check_sname(word.substr(1));
+}
+
+// The option of the chosen command that got fewer values than it takes: one holding some
+// values but too few, else the last one named on the command line (CLI11 stops at the end
+// of the words, so the option short of values is the last one given).
+const CLI::Option *short_of_values(const CLI::App &cli, const std::vector<std::string> &words) {
+  const CLI::App &app = chosen(cli);
+  for (const CLI::Option *o : app.get_options()) {
+    const std::size_t got = o->results().size();
+    if (got > 0 && got < static_cast<std::size_t>(o->get_items_expected_min())) return o;
+  }
+  for (auto word = words.rbegin(); word != words.rend(); ++word) {
+    for (const CLI::Option *o : app.get_options()) {
+      if (o->get_items_expected_max() > 0 && names(*word, *o)) return o;
+    }
+  }
+  return nullptr;
+}
+
+// The value a numeric option's type asks for, in words; "" for another type.
+std::string wanted_number(const std::string &type_name) {
+  if (type_name == "INT") return "a whole number";
+  if (type_name == "UINT") return "a whole number from 0";
+  if (type_name == "FLOAT") return "a number";
+  return "";
+}
+
+// Whether `text` reads as the type asks (common/parse_number.hpp); a FLOAT may be inf or nan,
+// which the option's own check refuses in its own words ("must be finite").
+bool reads_as(const std::string &type_name, const std::string &text) {
+  if (type_name == "INT") return common::parse_number<long long>(text).has_value();
+  if (type_name == "UINT") return common::parse_number<unsigned long long>(text).has_value();
+  return common::parse_real(text).has_value();
 }
 
 }  // namespace
@@ -144,33 +167,65 @@ std::vector<std::string> close_names(std::string_view typed, const std::vector<s
   return close;
 }
 
-std::string describe_usage_error(const CLI::App &cli, const CLI::ParseError &error) {
-  const std::string text = error.what();
-  static const std::regex conversion("Could not convert: (\\S+) = (.*)");
-  static const std::regex missing("(\\S+): ([0-9]+) required \\S+ missing");
-  static const std::regex too_few("(\\S+): At least ([0-9]+) required but received ([0-9]+)");
-  static const std::regex invalid("(\\S+): (must .*)");
-  static const std::regex extras("The following arguments? (?:was|were) not expected: (.*)");
-  std::smatch m;
-  if (std::regex_match(text, m, conversion)) {
-    const CLI::Option *o = find_option(cli, m[1].str());
-    const std::string type = o != nullptr ? o->get_type_name() : std::string("FLOAT");
-    return fmt::format("{} needs {} (got '{}')", m[1].str(), wanted(type), m[2].str());
+CLI::Validator usage_check(const std::string &option, std::function<std::string(const std::string &)> check) {
+  return CLI::Validator(
+      [option, check = std::move(check)](std::string &value) {
+        const std::string wrong = check(value);
+        if (!wrong.empty()) throw common::InputError(fmt::format("{} {}", option, wrong));
+        return std::string();
+      },
+      "");
+}
+
+void check_values_ourselves(CLI::App &command) {
+  for (CLI::Option *option : command.get_options()) {
+    if (option->get_type_size_max() == 0) continue;  // a flag
+    const std::string name = option->get_name();
+    const std::string type = option->get_type_name();
+    const std::string number = wanted_number(type);
+    option->check(usage_check(name, [type, number](const std::string &value) {
+      if (value.empty()) return std::string("must not be empty");
+      if (!number.empty() && !reads_as(type, value)) return fmt::format("needs {} (got '{}')", number, value);
+      return std::string();
+    }));
   }
-  if (std::regex_match(text, m, missing)) {
-    return m[2].str() == "1" ? fmt::format("{} needs a value", m[1].str())
-                             : fmt::format("{} needs {} values", m[1].str(), m[2].str());
+  for (CLI::App *sub : command.get_subcommands([](CLI::App *) { return true; })) check_values_ourselves(*sub);
+}
+
+std::string describe_usage_error(const CLI::App &cli, const CLI::ParseError &error,
+                                 const std::vector<std::string> &words) {
+  if (dynamic_cast<const CLI::ExtrasError *>(&error) != nullptr) {
+    const std::vector<std::string> extras = cli.remaining(true);
+    if (!extras.empty()) return unexpected(cli, extras);
   }
-  if (std::regex_match(text, m, too_few)) {
-    return fmt::format("{} needs {} values (got {})", m[1].str(), m[2].str(), m[3].str());
+  if (dynamic_cast<const CLI::ArgumentMismatch *>(&error) != nullptr) {
+    if (const CLI::Option *o = short_of_values(cli, words)) {
+      const int needed = o->get_items_expected_min();
+      const std::size_t got = o->results().size();
+      return needed <= 1 ? fmt::format("{} needs a value", o->get_name())
+                         : fmt::format("{} needs {} values (got {})", o->get_name(), needed, got);
+    }
   }
-  if (dynamic_cast<const CLI::ValidationError *>(&error) != nullptr && std::regex_match(text, m, invalid)) {
-    return fmt::format("{} {}", m[1].str(), m[2].str());
+  if (dynamic_cast<const CLI::ConversionError *>(&error) != nullptr) {
+    // Values are checked by check_values_ourselves; what is left is a flag given a value.
+    for (auto word = words.rbegin(); word != words.rend(); ++word) {
+      const std::size_t equals = word->find('=');
+      if (!word->starts_with("--") || equals == std::string::npos) continue;
+      for (const CLI::Option *o : chosen(cli).get_options()) {
+        if (o->get_items_expected_max() == 0 && names(*word, *o)) {
+          return fmt::format("{} is a flag: it takes no value, or true or false (got '{}')", o->get_name(),
+                             word->substr(equals + 1));
+        }
+      }
+    }
   }
-  if (dynamic_cast<const CLI::ExtrasError *>(&error) != nullptr && std::regex_match(text, m, extras)) {
-    return unexpected(cli, m[1].str());
+  if (dynamic_cast<const CLI::RequiredError *>(&error) != nullptr) {
+    const CLI::App &app = chosen(cli);
+    for (const CLI::Option *o : app.get_options()) {
+      if (o->get_required() && o->count() == 0) return fmt::format("{} needs {}", app.get_name(), o->get_name());
+    }
   }
-  return text;
+  return error.what();  // a case the program does not word itself (none known)
 }
 
 }  // namespace app

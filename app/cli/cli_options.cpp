@@ -1,4 +1,5 @@
 #include "common/parse_number.hpp"
+#include "app/cli/cli_errors.hpp"
 #include "app/cli/cli_options.hpp"
 
 #include <cctype>
@@ -103,13 +104,11 @@ double checked_cell_size(double m) {
 }  // namespace
 
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
-  const CLI::Validator whole_from_zero(
-      [](std::string &text) {
-        return common::parse_number<std::uint64_t>(text) ? std::string()
-                     : fmt::format("must be a whole number from 0 to {} (got '{}')",
-                                   std::numeric_limits<std::uint64_t>::max(), text);
-      },
-      "");
+  const CLI::Validator whole_from_zero = usage_check("--seed", [](const std::string &text) {
+    return common::parse_number<std::uint64_t>(text) ? std::string()
+                                                       : fmt::format("must be a whole number from 0 to {} (got '{}')",
+                                                                     std::numeric_limits<std::uint64_t>::max(), text);
+  });
   return command.add_option("--seed", seed, fmt::format("N: seed of {} (default {})", what, seed))
       ->check(whole_from_zero);
 }

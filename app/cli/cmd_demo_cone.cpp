@@ -90,28 +90,29 @@ std::string csv_file(const sensing::ConeSweep &sweep) {
 }
 
 // The marked cells dark on the never-observed tone, the beam's edges (phi +- sigma/2, out to
-// d(1+eps)) in red, the sensor a blue disc; one pixel square a cell of `resolution_m`.
-std::string png_file(const sensing::ConeSweep &sweep, const sensing::ConeSweepInput &in, double resolution_m,
-                     const std::string &sensor) {
+// d(1+eps)) in red, the sensor a blue disc; the format by the file's extension.
+std::string picture_file(const sensing::ConeSweep &sweep, const sensing::ConeSweepInput &in, double resolution_m,
+                         const std::string &sensor, PictureFormat format) {
   int i0 = static_cast<int>(std::floor(in.x_cells)), i1 = i0, j0 = static_cast<int>(std::floor(in.y_cells)), j1 = j0;
   for (const auto &[i, j] : sweep.cells) i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+  const double reach = in.d_cells * (1.0 + in.eps);
   PlainGrid g = plain_grid_around(i0, i1, j0, j1, resolution_m, kUnknownTone);
   for (const auto &[i, j] : sweep.cells) set_tone(g, (i + 0.5) * resolution_m, (j + 0.5) * resolution_m, kConeMarked);
-  Legend legend;
+  Figure legend;
   legend.lines = {fmt::format("demo cone {}: d {:g} cells, sigma {:g} rad", sensor, in.d_cells, in.sigma_rad)};
-  legend.items = {{Swatch::box, kConeMarked, "marked"}, {Swatch::line, kPathColour, "beam edges"},
-                  {Swatch::disc, kEndColour, "sensor"}};
-  Canvas canvas = plain_grid_picture(g, legend);
-  const auto at = [&](double x_cells, double y_cells) { return plain_grid_px(g, x_cells * resolution_m, y_cells * resolution_m); };
-  const PixelPoint from = at(in.x_cells, in.y_cells);
-  const double reach = in.d_cells * (1.0 + in.eps);
-  for (const double side : {-0.5, 0.5}) {
-    const double a = in.phi_rad + side * in.sigma_rad;
-    const PixelPoint to = at(in.x_cells + reach * std::cos(a), in.y_cells + reach * std::sin(a));
-    canvas.line(from.x, from.y, to.x, to.y, std::max(1, plain_grid_cell_px(g).w / 10), kPathColour);
-  }
-  canvas.disc(from.x, from.y, std::max(2, plain_grid_cell_px(g).w / 2), kEndColour);
-  return encode_png(canvas);
+  legend.items = {{Swatch::box, kConeMarked, "marked"}, {Swatch::box, kUnknownTone, "not marked"},
+                  {Swatch::line, kPathColour, "beam edges"}, {Swatch::disc, kEndColour, "sensor"}};
+  const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    const auto at = [&](double x_cells, double y_cells) { return frame.at(x_cells * resolution_m, y_cells * resolution_m); };
+    const PointPx from = at(in.x_cells, in.y_cells);
+    for (const double side : {-0.5, 0.5}) {
+      const double a = in.phi_rad + side * in.sigma_rad;
+      page.polyline({from, at(in.x_cells + reach * std::cos(a), in.y_cells + reach * std::sin(a))},
+                    std::max(1.5, frame.cell_w_px / 10), kPathColour);
+    }
+    page.ringed_disc(from, std::max(3.0, frame.cell_w_px / 2), kEndColour, 1.5, kWhite);
+  };
+  return plain_grid_picture(g, legend, overlay, format).encode();
 }
 
 const std::string kDifference =
@@ -155,7 +156,10 @@ int run_demo_cone(const DemoConeInput &input) {
                                    range_m / resolution_m, kind.aperture_rad, kind.distance_error};
   const sensing::ConeSweep sweep = sensing::cone_sweep(in);
   if (!input.csv_path.empty()) common::write_file_atomically(input.csv_path, csv_file(sweep));
-  if (!input.png_path.empty()) common::write_file_atomically(input.png_path, png_file(sweep, in, resolution_m, input.sensor));
+  if (!input.png_path.empty()) {
+    const PictureFormat format = picture_format_of_file(input.png_path).value_or(PictureFormat::png);
+    common::write_file_atomically(input.png_path, picture_file(sweep, in, resolution_m, input.sensor, format));
+  }
   std::string out = "cone sweep (the sensor-model lecture's second loop), sensor " + input.sensor + "\n\n";
   out += sensor_table() + "\n";
   out += fmt::format("sigma {:g} rad, eps {:g} ({})\n", in.sigma_rad, in.eps, percent(in.eps));
@@ -182,7 +186,7 @@ void add_demo_cone(CLI::App &demo, CommandContext &context) {
   cone->add_option("--pose", input->pose, "X,Y,YAW: the sensor, m and degrees (1.5708rad: radians) (default 0,0,90)");
   CLI::Option *resolution = cone->add_option("--resolution", input->resolution_m, "a grid cell, m (default 0.01 for ir, 0.05 for sonar)");
   cone->add_option("--csv", input->csv_path, "FILE: i,j of the marked cells");
-  cone->add_option("--png", input->png_path, "FILE: the marked cells and the beam's edges as a PNG picture");
+  cone->add_option("--png", input->png_path, "FILE: the marked cells and the beam's edges as a PNG picture (SVG or PDF when FILE ends in .svg or .pdf)");
   cone->callback([&context, input, range, resolution] {
     input->range_given = range->count() > 0;
     input->resolution_given = resolution->count() > 0;

@@ -80,28 +80,6 @@ std::string csv_file(const sensing::PieDemoOptions &o, const std::vector<sensing
   return out;
 }
 
-// The updated cells in grey (white clear, black occupied), the sensors' axes in red.
-std::string svg_file(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
-  const double px = 400.0 / (2.0 * (o.max_range_m + o.contact_m));  // pixels per metre
-  const double r = o.resolution_m;
-  const double left = o.x_m - o.max_range_m - o.contact_m;
-  const double top = o.y_m + o.max_range_m + o.contact_m;
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"400\" height=\"400\">\n"
-                    "<rect width=\"400\" height=\"400\" fill=\"#c0c0c0\"/>\n";
-  for (const auto &c : cells) {
-    const int grey = static_cast<int>(std::lround(255.0 * (1.0 - mapping::probability(c.log_odds))));
-    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"rgb({},{},{})\"/>\n",
-                       (c.i * r - left) * px, (top - (c.j + 1) * r) * px, r * px, r * px, grey, grey, grey);
-  }
-  for (const auto &s : sensing::pie_demo_slices(o)) {
-    const double a = s.heading_deg * std::numbers::pi / 180.0;
-    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"red\"/>\n",
-                       (s.x_m - left) * px, (top - s.y_m) * px, (s.x_m + s.clear_m * std::cos(a) - left) * px,
-                       (top - s.y_m - s.clear_m * std::sin(a)) * px);
-  }
-  return out + "</svg>\n";
-}
-
 // The grid around the updated cells and the robot, two cells of margin: every updated cell
 // in map.png's tones, the cells no sensor updated in the never-observed tone.
 PlainGrid pie_grid(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
@@ -120,29 +98,32 @@ PlainGrid pie_grid(const sensing::PieDemoOptions &o, const std::vector<sensing::
 }
 
 // The updated cells, each slice's edges (at +-beta, to where it ends) in red, the robot a
-// blue disc.
-std::string png_file(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
+// blue disc; the format by the file's extension (PNG unless .svg or .pdf).
+std::string picture_file(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells,
+                         PictureFormat format) {
   const PlainGrid g = pie_grid(o, cells);
-  Legend legend;
+  const double occupied = mapping::log_odds(sensing::kPieDemoOccupiedP);
+  const double clear = mapping::log_odds(sensing::kPieDemoClearP);
+  Figure legend;
   legend.lines = {fmt::format("demo pie: beta {:g} deg, alpha {:g} m, cells {:g} m", o.half_angle_deg,
                               o.contact_m, o.resolution_m)};
-  legend.items = {{Swatch::box, Rgb{35, 35, 35}, "occupied"},   {Swatch::box, Rgb{235, 235, 235}, "clear"},
-                  {Swatch::box, kUnknownTone, "not updated"}, {Swatch::line, kPathColour, "slices"},
-                  {Swatch::disc, kEndColour, "robot"}};
-  Canvas canvas = plain_grid_picture(g, legend);
-  const int thickness = std::max(1, plain_grid_cell_px(g).w / 8);
-  for (const auto &s : sensing::pie_demo_slices(o)) {
-    const double end_m = s.contact ? s.contact_m : s.clear_m;
-    const PixelPoint from = plain_grid_px(g, s.x_m, s.y_m);
-    for (const double side : {-1.0, 1.0}) {
-      const double a = (s.heading_deg + side * o.half_angle_deg) * std::numbers::pi / 180.0;
-      const PixelPoint to = plain_grid_px(g, s.x_m + end_m * std::cos(a), s.y_m + end_m * std::sin(a));
-      canvas.line(from.x, from.y, to.x, to.y, thickness, kPathColour);
+  legend.items = {{Swatch::line, kPathColour, "slice edges"}, {Swatch::disc, kEndColour, "robot"}};
+  legend.bar = map_tone_bar(log_odds_tones(0.0, occupied, clear), "not updated");
+  legend.bar->right_word = "occupied";
+  legend.bar->left_word = "clear";
+  const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    const double thickness = std::max(1.5, frame.cell_w_px / 8);
+    for (const auto &s : sensing::pie_demo_slices(o)) {
+      const double end_m = s.contact ? s.contact_m : s.clear_m;
+      for (const double side : {-1.0, 1.0}) {
+        const double a = (s.heading_deg + side * o.half_angle_deg) * std::numbers::pi / 180.0;
+        page.polyline({frame.at(s.x_m, s.y_m), frame.at(s.x_m + end_m * std::cos(a), s.y_m + end_m * std::sin(a))},
+                      thickness, kPathColour);
+      }
     }
-  }
-  const PixelPoint robot = plain_grid_px(g, o.x_m, o.y_m);
-  canvas.disc(robot.x, robot.y, std::max(2, plain_grid_cell_px(g).w), kEndColour);
-  return encode_png(canvas);
+    page.ringed_disc(frame.at(o.x_m, o.y_m), std::max(3.0, frame.cell_w_px), kEndColour, 1.5, kWhite);
+  };
+  return plain_grid_picture(g, legend, overlay, format).encode();
 }
 
 sensing::PieDemoOptions to_options(const DemoPieInput &input) {
@@ -163,8 +144,11 @@ void run_demo_pie(const DemoPieInput &input) {
   const sensing::PieDemoOptions o = to_options(input);
   const auto cells = sensing::pie_demo_update(o);
   if (!input.csv_path.empty()) common::write_file_atomically(input.csv_path, csv_file(o, cells));
-  if (!input.svg_path.empty()) common::write_file_atomically(input.svg_path, svg_file(o, cells));
-  if (!input.png_path.empty()) common::write_file_atomically(input.png_path, png_file(o, cells));
+  if (!input.svg_path.empty()) common::write_file_atomically(input.svg_path, picture_file(o, cells, PictureFormat::svg));
+  if (!input.png_path.empty()) {
+    const PictureFormat format = picture_format_of_file(input.png_path).value_or(PictureFormat::png);
+    common::write_file_atomically(input.png_path, picture_file(o, cells, format));
+  }
   std::string out = "IR pie-slice update (Waterloo assignment, Figure 1)\n";
   out += fmt::format("half-angle {:g} deg\nresolution {:g} m\n", o.half_angle_deg, o.resolution_m);
   out += fmt::format("robot at ({:g}, {:g}) m heading {:g} deg; IR max range {:g} m; contact depth alpha {:g} m\n",
@@ -216,8 +200,8 @@ void add_demo_pie(CLI::App &demo, CommandContext &context) {
   pie->add_option("--resolution", o.resolution_m, fmt::format("cell side, m (default {:g})", o.resolution_m));
   pie->add_option("--max-range", o.max_range_m, fmt::format("IR max range, m (default {:g})", o.max_range_m));
   pie->add_option("--csv", input->csv_path, "FILE: x_m,y_m,logodds of every updated cell, by its centre");
-  pie->add_option("--svg", input->svg_path, "FILE: the updated cells and the sensors' axes as an SVG picture");
-  pie->add_option("--png", input->png_path, "FILE: the updated cells in map.png's tones and each slice's edges as a PNG picture");
+  pie->add_option("--svg", input->svg_path, "FILE: --png's picture as SVG");
+  pie->add_option("--png", input->png_path, "FILE: the updated cells in map.png's tones and each slice's edges as a PNG picture (SVG or PDF when FILE ends in .svg or .pdf)");
   pie->callback([&context, input] {
     run_demo_pie(*input);
     context.status = 0;

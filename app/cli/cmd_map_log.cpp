@@ -260,12 +260,10 @@ std::string log_odds_png(const sensing::LogMapOptions &o, const sensing::LogGrid
   for (int j = 0; j < g.cells_y; ++j) {
     for (int i = 0; i < g.cells_x; ++i) p.tones.push_back(log_odds_tone(g.at(i, j), l0, occupied, ray));
   }
-  Legend legend;
+  Figure legend;
   legend.lines = {caption};
-  legend.items = {{Swatch::box, Rgb{35, 35, 35}, "occupied"},
-                  {Swatch::box, Rgb{235, 235, 235}, "free"},
-                  {Swatch::box, kUnknownTone, "never updated"}};
-  return encode_png(plain_grid_picture(p, legend));
+  legend.bar = map_tone_bar(log_odds_tones(l0, occupied, ray), "never updated");
+  return plain_grid_picture(p, legend).encode();
 }
 
 // The thresholded map: black where log-odds >= the threshold (the printed W), else white.
@@ -275,11 +273,11 @@ std::string thresholded_png(const sensing::LogMapOptions &o, const sensing::LogG
   for (int j = 0; j < g.cells_y; ++j) {
     for (int i = 0; i < g.cells_x; ++i) p.tones.push_back(g.at(i, j) >= threshold ? kThresholdWall : kThresholdOpen);
   }
-  Legend legend;
+  Figure legend;
   legend.lines = {caption};
   legend.items = {{Swatch::box, kThresholdWall, fmt::format("W: log-odds at least {:g}", threshold)},
                   {Swatch::box, kThresholdOpen, "below"}};
-  return encode_png(plain_grid_picture(p, legend));
+  return plain_grid_picture(p, legend).encode();
 }
 
 std::string caption(const MapLogInput &input, const sensing::LogMapOptions &o, std::size_t step, std::size_t steps) {

@@ -104,7 +104,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("WORLD", o.world, "the world file")->required();
   cmd->add_option("--strategy", in->strategy, "waypoints, wavefront, frontier or wander (default frontier)");
   cmd->add_option("--model", in->model, "ray (lidar), pie or cone (IR/sonar ring), bump or depth (default ray)");
-  cmd->add_option("--robot", o.robot, "a robot profile or JSON file (default: the set-up's robot)");
+  cmd->add_option("--robot", o.robot, "a robot profile or JSON file (default the set-up's robot)");
   cmd->add_option("--cells", in->cells, "X,Y: numCells over the boundary (square cells)");
   cmd->add_option("--resolution", in->resolution, "M: cell size, m (default 0.1)");
   cmd->add_option("--boundary", in->boundary, "XS,XE,YS,YE: the map's extent, m (default the world's)");
@@ -112,7 +112,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
   cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
   cmd->add_option("--dilate", o.room.dilate, "N: obstacles grown by N cells for planning (default 1)");
-  cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most (wander needs it; default none)");
+  cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most, wander needs it (default none)");
   cmd->add_option("--snapshots-at", in->snapshots_at, "T1,T2,...: print the map at these simulated seconds");
   cmd->add_option("--snapshot-steps", in->snapshot_steps, "N1,N2,...: print the map at these control steps");
   cmd->add_option("--threshold", o.threshold, "log-odds drawn W at or above (default 0; bump and depth -0.5)");

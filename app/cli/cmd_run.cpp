@@ -53,6 +53,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
       },
       "N: with --out, N pictures of the map at equal fractions of the run's steps in "
       "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
+  add_picture_format_option(run, o);
   run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv");
   run.add_flag("--trace-steps", o.output.trace_steps,
                "with --out, trace.csv a row every control step (default for cell and ray: a row when the "
@@ -134,6 +135,7 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
       "X,Y: goal cell of the path (default the maze's first goal)");
   plan->add_option("-o,--out", parsed->output.out_dir,
                    "DIR: run --out's files, and plan.png (the learned map with the planned path) and plan.csv (its sub-cells)");
+  add_picture_format_option(*plan, *parsed);
   plan->callback([plan, parsed, &context] {
     RunOptions options = checked_run_options(*plan, *parsed, true);
     options.output.quiet = true;

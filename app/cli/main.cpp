@@ -31,15 +31,18 @@ int main(int argc, char **argv) {
   app::add_commands(cli, context);
   common::install_signal_handlers();
 
+  std::vector<std::string> words;  // the command line as parsed, for a usage error
   try {
     if (argc <= 1) {
       // No arguments: the main job, mapping the default world.
       const std::vector<std::string> as_if{argc == 1 ? argv[0] : "maze_mapper", "run"};
+      words.assign(as_if.begin() + 1, as_if.end());
       std::vector<const char *> as_if_argv;
       for (const std::string &word : as_if) as_if_argv.push_back(word.c_str());
       cli.parse(static_cast<int>(as_if_argv.size()), as_if_argv.data());
     } else {
       const std::vector<std::string> args = app::split_child_command(std::vector<std::string>(argv, argv + argc), context);
+      words.assign(args.begin() + 1, args.end());
       std::vector<const char *> parsed;
       for (const std::string &word : args) parsed.push_back(word.c_str());
       cli.parse(static_cast<int>(parsed.size()), parsed.data());
@@ -57,7 +60,7 @@ int main(int argc, char **argv) {
   } catch (const CLI::CallForVersion &e) {
     return cli.exit(e);
   } catch (const CLI::ParseError &e) {
-    fmt::print(stderr, "error: {}\n", common::printable(app::describe_usage_error(cli, e)));
+    fmt::print(stderr, "error: {}\n", common::printable(app::describe_usage_error(cli, e, words)));
     return kExitUsage;
   } catch (const common::InputError &e) {
     std::cout.flush();

@@ -1,4 +1,5 @@
 #include "common/parse_number.hpp"
+#include "app/cli/cli_errors.hpp"
 #include "app/cli/run_cli.hpp"
 
 #include <algorithm>
@@ -113,13 +114,11 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   add_model_options(command, o.sensor);
   add_clamp_option(command, o.sensor);
   // CLI11 alone clamps a number past the type's range to its maximum, silently.
-  const CLI::Validator whole_steps(
-      [](std::string &text) {
-        return common::parse_number<std::int64_t>(text) ? std::string()
-                     : fmt::format("must be a whole number from 1 to {} (got '{}')",
-                                   std::numeric_limits<std::int64_t>::max(), text);
-      },
-      "");
+  const CLI::Validator whole_steps = usage_check("--max-steps", [](const std::string &text) {
+    return common::parse_number<std::int64_t>(text) ? std::string()
+                                                      : fmt::format("must be a whole number from 1 to {} (got '{}')",
+                                                                    std::numeric_limits<std::int64_t>::max(), text);
+  });
   command
       .add_option("--max-steps", o.max_steps, "N: stop after this many control steps (default 1000 a cell, at least 100000)")
       ->check(whole_steps);
@@ -132,6 +131,30 @@ void add_speed_run_option(CLI::App &command, RunOptions &o) {
   command.add_flag("--speed-run", o.plan.speed_run,
                    "after the search, drive the known shortest path from the start to the goal, returning to "
                    "the start first (a micromouse speed run; with floodfill the path is searched until proven)");
+}
+
+std::vector<PictureFormat> parse_picture_formats(const std::string &text) {
+  std::vector<PictureFormat> formats;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string name = text.substr(begin, comma - begin);
+    const std::optional<PictureFormat> format = picture_format_named(name);
+    if (!format) throw common::InputError(fmt::format("--picture-format takes png, svg and pdf (got '{}')", name));
+    if (std::find(formats.begin(), formats.end(), *format) != formats.end()) {
+      throw common::InputError(fmt::format("--picture-format names {} twice", name));
+    }
+    formats.push_back(*format);
+    begin = comma + 1;
+  }
+  return formats;
+}
+
+void add_picture_format_option(CLI::App &command, RunOptions &o) {
+  command.add_option_function<std::string>(
+      "--picture-format", [&o](const std::string &text) { o.output.picture_formats = parse_picture_formats(text); },
+      "LIST: with --out, map, truth, plan and the snapshots as png, svg and/or pdf, comma-separated "
+      "(default png; svg and pdf print at any size)");
 }
 
 void add_exploration_options(CLI::App &command, RunOptions &o) {

@@ -5,14 +5,18 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <variant>
 
 #include <fmt/format.h>
 
+#include "app/cli/arena_options.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/report/webots_export.hpp"
 #include "common/atomic_file.hpp"
+#include "maze/arena_text.hpp"
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
 #include "maze/world.hpp"
@@ -27,11 +31,27 @@ maze::World load_world_reporting(const std::string &path, const maze::WorldOverr
 }
 
 void add_show_command(CLI::App &cli, CommandContext &context) {
-  auto *cmd = cli.add_subcommand("show", "print a world as a canonical micromouse text map");
-  auto world = std::make_shared<std::string>();
-  cmd->add_option("WORLD", *world, "maze file: text map, num, XML or .maz (detected by content)")->required();
-  cmd->callback([world, &context] {
-    std::cout << maze::write_text_map(load_world_reporting(*world).maze);
+  auto *cmd = cli.add_subcommand("show", "print a world: a maze as a canonical micromouse text map, an arena drawn on a grid");
+  struct Args {
+    std::string world, boundary;
+    std::optional<double> resolution_m;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WORLD", args->world, "maze or arena file: text map, num, XML, .maz or room (detected by content)")
+      ->required();
+  cmd->add_option("--resolution", args->resolution_m,
+                  "M: an arena's drawing, metres a cell (default the finest of 0.05, 0.1, 0.2, 0.25, 0.5, 1 ... m "
+                  "that draws it in at most 60 cells a side)");
+  add_boundary_option(*cmd, args->boundary);
+  cmd->callback([args, &context] {
+    const maze::AnyWorld world = load_any_world_reporting(args->world, {}, arena_overrides(args->boundary));
+    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
+      const maze::Arena &a = arena->arena;
+      std::cout << maze::draw_arena(a, args->resolution_m.value_or(maze::default_arena_resolution_m(a)));
+    } else {
+      if (args->resolution_m) fmt::print(stderr, "warning: --resolution has no effect: {} is a grid maze\n", args->world);
+      std::cout << maze::write_text_map(std::get<maze::World>(world).maze);
+    }
     context.status = 0;
   });
 }
@@ -39,15 +59,20 @@ void add_show_command(CLI::App &cli, CommandContext &context) {
 void add_convert_command(CLI::App &cli, CommandContext &context) {
   auto *cmd = cli.add_subcommand("convert", "write a world in the format OUT's extension names");
   struct Args {
-    std::string world, out;
+    std::string world, out, boundary;
     maze::WorldOverrides overrides;
     WebotsExport wbt;
     bool keep_origin = false;
   };
   auto args = std::make_shared<Args>();
-  cmd->add_option("WORLD", args->world, "maze file: text map, num, XML or .maz (detected by content)")->required();
-  cmd->add_option("OUT", args->out, "output file: .txt (text map), .num, .xml, .maz (16 x 16, binary) or .wbt (Webots R2023b)")->required();
+  cmd->add_option("WORLD", args->world, "maze or arena file: text map, num, XML, .maz or room (detected by content)")
+      ->required();
+  cmd->add_option("OUT", args->out,
+                  "output file: .txt (text map), .num, .xml, .maz (16 x 16, binary), .wbt (Webots R2023b) or .room "
+                  "(an arena; a maze's walls as rectangles)")
+      ->required();
   add_cell_size_option(*cmd, args->overrides);
+  add_boundary_option(*cmd, args->boundary);
   cmd->add_flag("--keep-origin", args->keep_origin,
                ".xml: keep the world's own origin (default centred on (0, 0), as the course's files are)");
   cmd->add_option("--robot", args->wbt.robot,
@@ -71,7 +96,14 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     if (format != maze::Format::xml && args->keep_origin) {
       fmt::print(stderr, "warning: --keep-origin has no effect: only an .xml world is centred\n");
     }
-    const maze::Maze maze = load_world_reporting(args->world, args->overrides).maze;
+    const maze::AnyWorld world = load_any_world_reporting(args->world, args->overrides, arena_overrides(args->boundary));
+    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
+      maze::save_arena(arena->arena, args->out);  // .room or .xml; any other format is refused
+      if (args->keep_origin) fmt::print(stderr, "warning: --keep-origin has no effect: an arena keeps its coordinates\n");
+      context.status = 0;
+      return;
+    }
+    const maze::Maze &maze = std::get<maze::World>(world).maze;
     if (format == maze::Format::wbt) {
       maze::write_file_atomically(
           args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));

@@ -3,7 +3,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
@@ -58,6 +60,9 @@ void write_mms_outputs(const std::string &dir, const RunOptions &options, const 
   const std::filesystem::path d(dir);
   common::write_file_atomically((d / "summary.json").string(), mms_summary_json(options, mms, run));
   common::write_file_atomically((d / "marks.txt").string(), render_marks(run.mms.marks, false));
+  // summary.json was named with the run's files; it now holds mms's stats too.
+  const std::vector<std::string> mms_files{"marks.txt"};
+  fmt::print(stderr, "{}\n", wrote_line(dir, mms_files, mms_files.size(), 0));
 }
 
 }  // namespace app

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "mapping/walls.hpp"
 
 namespace app {
@@ -12,74 +14,120 @@ unsigned char level(double v) { return static_cast<unsigned char>(std::lround(st
 
 Rgb grey(double v) { return Rgb{level(v), level(v), level(v)}; }
 
-bool occupied(float l, const MapTones &tones) { return tones.threshold ? l >= *tones.threshold : l > 0.0f; }
+bool occupied(double l, const MapTones &tones) { return tones.threshold ? l >= *tones.threshold : l > 0.0; }
 
 // The evidence in updates beyond the first, 0 to 1 at three more.
 double strength(double l, double one_update) { return std::clamp((l / one_update - 1.0) / 3.0, 0.0, 1.0); }
 
-void draw_marks(Canvas &canvas, const mapping::GridGeometry &g, const MapMarks &marks) {
+// The frame of the map area: its axes in cells, no legend yet.
+Figure map_figure(const mapping::GridGeometry &g) {
   const int scale = map_scale(g);
-  const int cell_px = g.subcells * scale;
+  Figure fig;
+  fig.map_w_px = g.width_subcells() * scale;
+  fig.map_h_px = g.height_subcells() * scale;
+  fig.axes = Axes{g.width_cells, g.height_cells, static_cast<double>(g.subcells * scale), 0, 0};
+  return fig;
+}
+
+PointPx subcell_centre_px(const mapping::GridGeometry &g, PointPx origin, mapping::SubCell s) {
+  const double scale = map_scale(g);
+  return {origin.x + (s.x + 0.5) * scale, origin.y + (g.height_subcells() - 1 - s.y + 0.5) * scale};
+}
+
+// The marks at least `min_mark_px` (a fraction of the font) across, so that a big map's
+// robot and start stay visible when the picture is scaled to a screen.
+void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, const MapMarks &marks,
+                double min_mark_px) {
+  const int scale = map_scale(g);
+  const double cell_px = g.subcells * scale;
   // Landmarks first: the other marks are drawn over them.
   const double px_per_m = scale / g.subcell_size_m();
   for (const LandmarkMark &l : marks.landmarks) {
-    const int x = static_cast<int>(std::lround((l.at.x_m - g.origin.x_m) * px_per_m));
-    const int y = static_cast<int>(std::lround((g.height_cells * g.cell_size_m - (l.at.y_m - g.origin.y_m)) * px_per_m));
-    const int r = std::max(2, static_cast<int>(std::lround(l.radius_m * px_per_m)));
-    canvas.disc(x, y, r + 1, Rgb{0, 0, 0});
-    canvas.disc(x, y, r, l.colour);
+    const PointPx at{origin.x + (l.at.x_m - g.origin.x_m) * px_per_m,
+                     origin.y + (g.height_cells * g.cell_size_m - (l.at.y_m - g.origin.y_m)) * px_per_m};
+    page.ringed_disc(at, std::max(2.0, l.radius_m * px_per_m), l.colour, 1.0, Rgb{0, 0, 0});
   }
+  const double goal_line = std::max(1.0, cell_px / 14);
   for (const mapping::Cell goal : marks.goals) {
-    const PixelPoint c = cell_centre_px(g, goal);
-    const int inset = cell_px / 8;
-    canvas.frame(c.x - cell_px / 2 + inset, c.y - cell_px / 2 + inset, cell_px - 2 * inset, cell_px - 2 * inset,
-                 std::max(1, cell_px / 14), kGoalColour);
+    const PointPx c = cell_centre_px(g, goal);
+    const double inset = cell_px / 8 + goal_line / 2;
+    page.stroke_rect({c.x - cell_px / 2 + inset, c.y - cell_px / 2 + inset, cell_px - 2 * inset, cell_px - 2 * inset},
+                     goal_line, kGoalColour);
   }
-  const int thickness = std::max(1, scale / 3);
-  const auto subcell_px = [&](mapping::SubCell s) {
-    return PixelPoint{s.x * scale + scale / 2, (g.height_subcells() - 1 - s.y) * scale + scale / 2};
-  };
-  for (std::size_t i = 1; i < marks.planned.size(); ++i) {
-    const PixelPoint a = subcell_px(marks.planned[i - 1]);
-    const PixelPoint b = subcell_px(marks.planned[i]);
-    canvas.line(a.x, a.y, b.x, b.y, std::max(1, scale / 2), kPlannedColour);
-  }
-  for (std::size_t i = 1; i < marks.path.size(); ++i) {
-    const PixelPoint a = cell_centre_px(g, marks.path[i - 1]);
-    const PixelPoint b = cell_centre_px(g, marks.path[i]);
-    canvas.line(a.x, a.y, b.x, b.y, thickness, kPathColour);
+  if (!marks.planned.empty()) {
+    std::vector<PointPx> points;
+    for (const mapping::SubCell s : marks.planned) points.push_back(subcell_centre_px(g, origin, s));
+    page.polyline(points, std::max(1.5, scale / 2.0), kPlannedColour);
+    const double r = std::max({3.0, cell_px / 7, min_mark_px / 2});
+    page.ringed_disc(points.back(), r, kWhite, std::max(1.5, r / 3), kPlannedColour);
+    page.ringed_disc(points.front(), r, kPlannedColour, std::max(1.0, r / 5), kWhite);
   }
   if (marks.path.empty()) return;
-  const PixelPoint start = cell_centre_px(g, marks.path.front());
-  const int side = std::max(1, cell_px / 3);
-  canvas.fill(start.x - side / 2, start.y - side / 2, side, side, kStartColour);
-  const PixelPoint end = cell_centre_px(g, marks.path.back());
-  canvas.disc(end.x, end.y, std::max(1, cell_px / 7), kEndColour);
+  std::vector<PointPx> points;
+  for (const mapping::Cell c : marks.path) points.push_back(cell_centre_px(g, c));
+  page.polyline(points, std::max(1.5, cell_px / 9), kPathColour);
+  const PointPx start = points.front();
+  const double side = std::max({2.0, cell_px / 3, min_mark_px});
+  page.fill_rect({start.x - side / 2, start.y - side / 2, side, side}, kStartColour);
+  const double r = std::max({2.0, cell_px / 7, min_mark_px / 2});
+  page.ringed_disc(points.back(), r, kEndColour, std::max(1.0, r / 5), kWhite);
 }
 
-Legend map_legend(const std::string &caption, const mapping::GridGeometry &g, const MapMarks &marks) {
-  Legend legend;
-  legend.lines.push_back(caption);
-  legend.items = {{Swatch::box, grey(35), "occupied"}, {Swatch::box, grey(235), "free"},
-                  {Swatch::box, kUnknownTone, "never observed"}};
+std::vector<LegendItem> map_items(const MapMarks &marks) {
+  std::vector<LegendItem> items;
+  const auto add = [&items](Swatch swatch, Rgb colour, const char *label) { items.push_back({swatch, colour, label}); };
   if (!marks.path.empty()) {
-    legend.items.insert(legend.items.end(), {{Swatch::line, kPathColour, "path"},
-                                             {Swatch::square, kStartColour, "start"},
-                                             {Swatch::disc, kEndColour, "end"}});
+    add(Swatch::line, kPathColour, "path");
+    add(Swatch::square, kStartColour, "start");
+    add(Swatch::disc, kEndColour, "robot");
   }
-  legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
-  if (!marks.planned.empty()) legend.items.push_back({Swatch::line, kPlannedColour, "planned path"});
-  if (!marks.landmarks.empty()) legend.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
-  legend.px_per_m = map_scale(g) / g.subcell_size_m();
-  return legend;
+  add(Swatch::frame, kGoalColour, "goal");
+  if (!marks.planned.empty()) {
+    add(Swatch::line, kPlannedColour, "planned path");
+    add(Swatch::disc, kPlannedColour, "plan start");
+    add(Swatch::ring, kPlannedColour, "plan end");
+  }
+  if (!marks.landmarks.empty()) add(Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)");
+  return items;
 }
+
+std::string signed_2(double v) { return std::abs(v) < 0.005 ? "0" : fmt::format("{:+.2f}", v); }
 
 }  // namespace
 
-Rgb tone(float log_odds, const MapTones &tones) {
-  if (!mapping::observed(log_odds, tones.initial_log_odds)) return kUnknownTone;
+Rgb observed_tone(double log_odds, const MapTones &tones) {
   if (occupied(log_odds, tones)) return grey(70.0 - 70.0 * strength(log_odds, tones.occupied_increment));
   return grey(215.0 + 40.0 * strength(log_odds, tones.free_increment));
+}
+
+Rgb tone(float log_odds, const MapTones &tones) {
+  if (!mapping::observed(log_odds, tones.initial_log_odds)) return kUnknownTone;
+  return observed_tone(log_odds, tones);
+}
+
+ColourBar map_tone_bar(const MapTones &tones, const std::string &unknown_label) {
+  const double threshold = tones.threshold ? *tones.threshold : 0.0;
+  std::vector<double> knots{4 * tones.free_increment, tones.free_increment, threshold, tones.occupied_increment,
+                            4 * tones.occupied_increment};
+  std::sort(knots.begin(), knots.end());
+  knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
+  ColourBar bar;
+  bar.name = "log-odds";
+  const auto segments = static_cast<int>(knots.size()) - 1;
+  const int per_segment = 60;
+  // Each segment of the bar spans two knots linearly; a sample at the middle of its column.
+  for (int s = 0; s < segments; ++s) {
+    const double a = knots[static_cast<std::size_t>(s)];
+    const double b = knots[static_cast<std::size_t>(s) + 1];
+    for (int i = 0; i < per_segment; ++i) bar.tones.push_back(observed_tone(a + (b - a) * (i + 0.5) / per_segment, tones));
+  }
+  for (std::size_t k = 0; k < knots.size(); ++k) {
+    bar.ticks.push_back({segments == 0 ? 0.5 : static_cast<double>(k) / segments, signed_2(knots[k])});
+  }
+  bar.left_word = "free";
+  bar.right_word = "occupied";
+  bar.extra = LegendItem{Swatch::box, kUnknownTone, unknown_label};
+  return bar;
 }
 
 int map_scale(const mapping::GridGeometry &geometry) {
@@ -89,29 +137,36 @@ int map_scale(const mapping::GridGeometry &geometry) {
   return std::clamp(4096 / side, 1, wanted);
 }
 
-PixelPoint cell_centre_px(const mapping::GridGeometry &g, mapping::Cell c) {
-  const int cell_px = g.subcells * map_scale(g);
-  return {c.x * cell_px + cell_px / 2, (g.height_cells - 1 - c.y) * cell_px + cell_px / 2};
+PointPx map_origin_px(const mapping::GridGeometry &geometry) { return layout_figure(map_figure(geometry)).map_origin; }
+
+PointPx cell_centre_px(const mapping::GridGeometry &g, mapping::Cell c) {
+  const PointPx origin = map_origin_px(g);
+  const double cell_px = g.subcells * map_scale(g);
+  return {origin.x + (c.x + 0.5) * cell_px, origin.y + (g.height_cells - 1 - c.y + 0.5) * cell_px};
 }
 
-Canvas map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                   const std::string &caption) {
+Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                    const std::string &caption, PictureFormat format) {
   const mapping::GridGeometry &g = grid.geometry();
+  Figure fig = map_figure(g);
+  fig.lines = {caption};
+  fig.items = map_items(marks);
+  fig.bar = map_tone_bar(tones, "never observed");
   const int scale = map_scale(g);
+  fig.px_per_m = scale / g.subcell_size_m();
+  const FigureLayout layout = layout_figure(fig);
+  Drawing page(layout.width, layout.height, format);
   const int w = g.width_subcells();
   const int h = g.height_subcells();
-  const int width = std::max(w * scale, kMinPictureWidth);
-  const int font = legend_font(width);
-  const Legend legend = map_legend(caption, g, marks);
-  Canvas canvas(width, h * scale + legend_height(legend, width, font), Rgb{255, 255, 255});
+  std::vector<Rgb> cells;
+  cells.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   for (int row = 0; row < h; ++row) {
-    for (int x = 0; x < w; ++x) {
-      canvas.fill(x * scale, row * scale, scale, scale, tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones));
-    }
+    for (int x = 0; x < w; ++x) cells.push_back(tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones));
   }
-  draw_marks(canvas, g, marks);
-  draw_legend(canvas, h * scale, legend, font);
-  return canvas;
+  page.blocks(cells, w, h, layout.map_origin, scale, scale);
+  draw_marks(page, g, layout.map_origin, marks, 0.6 * layout.font_px);
+  draw_figure(page, fig, layout);
+  return page;
 }
 
 }  // namespace app

@@ -10,18 +10,22 @@
 //            So one p_occ update already reads as a wall, and the three tones stay apart
 //            for every model (the increments are the set-up's own, see MapTones).
 //   marks    the path (cell centres in order of arrival) in red, the start a green square,
-//            the end (where the robot stopped) a blue disc, each goal cell a gold frame; a
-//            planned path (plan.png) through its sub-cells' centres in magenta; each landmark
-//            a disc of its colour ringed in black
+//            the robot (where it stands at the picture's step) a blue disc, each goal cell a
+//            gold frame; a planned path (plan.png) through its sub-cells' centres in
+//            magenta, its start a magenta disc and its end a magenta ring; each landmark a
+//            disc of its colour ringed in black
+//   axes     cell indices (x, y), as the messages name cells
 //   legend   the caption ("model cell, K 3", and a note such as a snapshot's step), what
-//            each tone and mark means, and a scale bar in metres
-// Written with libpng (app/picture/picture.hpp).
+//            each mark means, a colour bar of the tones by log-odds (map_tone_bar) with the
+//            never-observed swatch, and a scale bar in metres
+// Drawn by app/picture/drawing.hpp in the layout of app/picture/figure.hpp.
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "app/picture/picture.hpp"
+#include "app/picture/drawing.hpp"
+#include "app/picture/figure.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
 
@@ -43,6 +47,13 @@ struct MapTones {
 };
 
 Rgb tone(float log_odds, const MapTones &tones);
+// The tone of an observed sub-cell (occupied or free by the rule above).
+Rgb observed_tone(double log_odds, const MapTones &tones);
+// The colour bar of these tones: log-odds from four free updates (left, "free") to four
+// occupied updates (right, "occupied"), each of the knots (four and one free update, the
+// occupied threshold, one and four occupied updates) a tick an equal part of the bar apart,
+// and `unknown_label` (e.g. "never observed") in kUnknownTone after it.
+ColourBar map_tone_bar(const MapTones &tones, const std::string &unknown_label);
 
 // A landmark of the world (maze::Landmark), where it stands in the world frame (m), its
 // colour and radius.
@@ -63,16 +74,14 @@ struct MapMarks {
 // that the map stays within 4096 px a side where it can (never below 1).
 int map_scale(const mapping::GridGeometry &geometry);
 
-// The picture: the map at the top-left, at least kMinPictureWidth wide, the legend under it.
-// `caption` is the legend's first line.
-Canvas map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                   const std::string &caption);
+// The picture (app/figure.hpp's layout); `caption` is the legend's first line. The robot's
+// mark is at marks.path's last cell.
+Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                    const std::string &caption, PictureFormat format = PictureFormat::png);
 
-// The pixel centre of a cell in a picture drawn at map_scale(geometry).
-struct PixelPoint {
-  int x = 0;
-  int y = 0;
-};
-PixelPoint cell_centre_px(const mapping::GridGeometry &geometry, mapping::Cell c);
+// Where the map's top-left corner is in the picture of a grid of this geometry.
+PointPx map_origin_px(const mapping::GridGeometry &geometry);
+// The pixel centre of a cell in that picture.
+PointPx cell_centre_px(const mapping::GridGeometry &geometry, mapping::Cell c);
 
 }  // namespace app

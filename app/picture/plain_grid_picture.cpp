@@ -13,7 +13,27 @@ double px_per_m(const PlainGrid &g) {
   return std::max(600.0 / side_m, 1.0 / smaller_cell_m);
 }
 
+// Whole pixels a cell, so that the blocks have crisp edges.
+double cell_w_px(const PlainGrid &g) { return std::max(1.0, std::round(g.cell_w_m * px_per_m(g))); }
+double cell_h_px(const PlainGrid &g) { return std::max(1.0, std::round(g.cell_h_m * px_per_m(g))); }
+
+Figure with_grid(const PlainGrid &g, Figure fig) {
+  fig.map_w_px = static_cast<int>(g.cells_x * cell_w_px(g));
+  fig.map_h_px = static_cast<int>(g.cells_y * cell_h_px(g));
+  if (cell_w_px(g) == cell_h_px(g)) {
+    fig.axes = Axes{g.cells_x, g.cells_y, cell_w_px(g), g.first_i, g.first_j, 0.0};
+  }
+  fig.px_per_m = cell_w_px(g) / g.cell_w_m;
+  return fig;
+}
+
 }  // namespace
+
+PointPx PlainGridFrame::at(double x_m, double y_m) const {
+  const double col = (x_m - x0_m) / cell_w_m;
+  const double row = cells_y - (y_m - y0_m) / cell_h_m;
+  return {origin.x + col * cell_w_px, origin.y + row * cell_h_px};
+}
 
 PlainGrid plain_grid_around(int i_min, int i_max, int j_min, int j_max, double cell_m, Rgb fill) {
   PlainGrid g;
@@ -21,6 +41,8 @@ PlainGrid plain_grid_around(int i_min, int i_max, int j_min, int j_max, double c
   g.cells_y = j_max - j_min + 5;
   g.x0_m = (i_min - 2) * cell_m;
   g.y0_m = (j_min - 2) * cell_m;
+  g.first_i = i_min - 2;
+  g.first_j = j_min - 2;
   g.cell_w_m = g.cell_h_m = cell_m;
   g.tones.assign(static_cast<std::size_t>(g.cells_x * g.cells_y), fill);
   return g;
@@ -33,42 +55,45 @@ void set_tone(PlainGrid &g, double x_m, double y_m, Rgb tone) {
   g.tones[static_cast<std::size_t>(j * g.cells_x + i)] = tone;
 }
 
-CellPixels plain_grid_cell_px(const PlainGrid &g) {
-  const double ppm = px_per_m(g);
-  return {std::max(1, static_cast<int>(std::lround(g.cell_w_m * ppm))),
-          std::max(1, static_cast<int>(std::lround(g.cell_h_m * ppm)))};
+PlainGridFrame plain_grid_frame(const PlainGrid &g, const Figure &legend) {
+  PlainGridFrame frame;
+  frame.origin = layout_figure(with_grid(g, legend)).map_origin;
+  frame.cell_w_px = cell_w_px(g);
+  frame.cell_h_px = cell_h_px(g);
+  frame.x0_m = g.x0_m;
+  frame.y0_m = g.y0_m;
+  frame.cell_w_m = g.cell_w_m;
+  frame.cell_h_m = g.cell_h_m;
+  frame.cells_y = g.cells_y;
+  return frame;
 }
 
-PixelPoint plain_grid_px(const PlainGrid &g, double x_m, double y_m) {
-  const CellPixels c = plain_grid_cell_px(g);
-  const double col = (x_m - g.x0_m) / g.cell_w_m;
-  const double row = g.cells_y - (y_m - g.y0_m) / g.cell_h_m;
-  return {static_cast<int>(std::lround(col * c.w)), static_cast<int>(std::lround(row * c.h))};
-}
-
-Canvas plain_grid_picture(const PlainGrid &g, Legend legend) {
-  const CellPixels c = plain_grid_cell_px(g);
-  const int map_w = g.cells_x * c.w;
-  const int map_h = g.cells_y * c.h;
-  const int width = std::max(map_w, kMinPictureWidth);
-  const int font = legend_font(width);
-  legend.px_per_m = c.w / g.cell_w_m;
-  Canvas canvas(width, map_h + legend_height(legend, width, font), Rgb{255, 255, 255});
-  for (int j = 0; j < g.cells_y; ++j) {
-    for (int i = 0; i < g.cells_x; ++i) {
-      canvas.fill(i * c.w, (g.cells_y - 1 - j) * c.h, c.w, c.h, g.tones[static_cast<std::size_t>(j * g.cells_x + i)]);
-    }
+Drawing plain_grid_picture(const PlainGrid &g, Figure legend, const PlainGridOverlay &overlay, PictureFormat format) {
+  const Figure fig = with_grid(g, std::move(legend));
+  const FigureLayout layout = layout_figure(fig);
+  const PlainGridFrame frame = plain_grid_frame(g, fig);
+  Drawing page(layout.width, layout.height, format);
+  std::vector<Rgb> top_first;
+  top_first.reserve(g.tones.size());
+  for (int j = g.cells_y - 1; j >= 0; --j) {
+    for (int i = 0; i < g.cells_x; ++i) top_first.push_back(g.tones[static_cast<std::size_t>(j * g.cells_x + i)]);
   }
-  draw_legend(canvas, map_h, legend, font);
-  return canvas;
+  page.blocks(top_first, g.cells_x, g.cells_y, layout.map_origin, frame.cell_w_px, frame.cell_h_px);
+  if (overlay) overlay(page, frame);
+  draw_figure(page, fig, layout);
+  return page;
 }
 
-Rgb log_odds_tone(double log_odds, double l0, double occupied_increment, double free_increment) {
+MapTones log_odds_tones(double l0, double occupied_increment, double free_increment) {
   MapTones tones;
   tones.initial_log_odds = static_cast<float>(l0);
   tones.occupied_increment = occupied_increment;
   tones.free_increment = free_increment;
-  return tone(static_cast<float>(log_odds), tones);
+  return tones;
+}
+
+Rgb log_odds_tone(double log_odds, double l0, double occupied_increment, double free_increment) {
+  return tone(static_cast<float>(log_odds), log_odds_tones(l0, occupied_increment, free_increment));
 }
 
 }  // namespace app

@@ -1,15 +1,18 @@
 #pragma once
-// A picture of a plain grid of cells in metres, north up, a legend strip under it: the
-// pictures of `map-log --out` (a log-odds picture per snapshot, the thresholded map) and of
-// `demo pie --png`, which are not the maze's 4D grid. Each cell is a rectangle of whole
-// pixels in its own tone; overlays (a pie's slices) are drawn through plain_grid_px.
+// A picture of a plain grid of cells in metres, north up, with app/figure.hpp's axes and
+// legend: the pictures of `map-log --out` (a log-odds picture per snapshot, the thresholded
+// map), of `demo pie --png` and of `demo cone --png`, which are not the maze's 4D grid. Each
+// cell is a block in its own tone; overlays (a pie's slices, a cone's edges) are drawn by the
+// caller through the frame's metres-to-pixels mapping.
 //
 //   pixels a metre   about 600 / the longer side in metres, so that each cell is at least
-//                    plain_grid_min_cell_px wide: a 25 x 25 grid is 24 px a cell, 50 x 50 12
+//                    one pixel: a 25 x 25 grid is 24 px a cell, 50 x 50 12
 
+#include <functional>
 #include <vector>
 
-#include "app/picture/picture.hpp"
+#include "app/picture/drawing.hpp"
+#include "app/picture/figure.hpp"
 #include "app/picture/map_picture.hpp"
 
 namespace app {
@@ -21,32 +24,47 @@ struct PlainGrid {
   double y0_m = 0.0;
   double cell_w_m = 1.0;
   double cell_h_m = 1.0;
+  int first_i = 0;  // the index the axes give the west column and the south row
+  int first_j = 0;
   std::vector<Rgb> tones;  // cell (i, j), column i from the west, row j from the south: j * cells_x + i
 };
 
 // Square cells of side cell_m on a lattice from the origin: cell (i, j) covers
 // [i cell_m, (i + 1) cell_m] x [j cell_m, (j + 1) cell_m]; the grid holds i from i_min - 2 to
-// i_max + 2 and j likewise (the cells to show and two of margin), every cell in `fill`.
+// i_max + 2 and j likewise (the cells to show and two of margin), every cell in `fill`, its
+// axes labelled with these i and j.
 PlainGrid plain_grid_around(int i_min, int i_max, int j_min, int j_max, double cell_m, Rgb fill);
 // Sets the tone of the cell holding the point (x_m, y_m), which must lie on the grid.
 void set_tone(PlainGrid &grid, double x_m, double y_m, Rgb tone);
 
-// Whole pixels of one cell, across and down.
-struct CellPixels {
-  int w = 1;
-  int h = 1;
+// Where the grid is in the picture: the pixel of a point in metres, and a cell's size.
+struct PlainGridFrame {
+  PointPx origin;  // the grid's north-west corner
+  double cell_w_px = 1.0;
+  double cell_h_px = 1.0;
+  double x0_m = 0.0;
+  double y0_m = 0.0;
+  double cell_w_m = 1.0;
+  double cell_h_m = 1.0;
+  int cells_y = 0;
+  PointPx at(double x_m, double y_m) const;
 };
-CellPixels plain_grid_cell_px(const PlainGrid &grid);
 
-// The pixel of the point (x_m, y_m) in the picture.
-PixelPoint plain_grid_px(const PlainGrid &grid, double x_m, double y_m);
+// Draws over the grid (after the tones, before the legend).
+using PlainGridOverlay = std::function<void(Drawing &page, const PlainGridFrame &frame)>;
 
-// The grid at the top-left, at least kMinPictureWidth wide, the legend under it (its
-// px_per_m set here, for the scale bar).
-Canvas plain_grid_picture(const PlainGrid &grid, Legend legend);
+// The picture: the grid with cell indices on its axes, the figure's legend under it
+// (`legend`'s lines, items and bar; its map size, axes and scale are set here).
+Drawing plain_grid_picture(const PlainGrid &grid, Figure legend, const PlainGridOverlay &overlay = {},
+                           PictureFormat format = PictureFormat::png);
+
+// The frame plain_grid_picture draws `grid` in with this legend.
+PlainGridFrame plain_grid_frame(const PlainGrid &grid, const Figure &legend);
 
 // The tone of a log-odds value in the map pictures' scale (app/picture/map_picture.hpp): never
 // updated (== l0) blue-grey, occupied (> 0) dark, else light, graded by the increments.
 Rgb log_odds_tone(double log_odds, double l0, double occupied_increment, double free_increment);
+// The MapTones of that scale, for its colour bar (map_tone_bar).
+MapTones log_odds_tones(double l0, double occupied_increment, double free_increment);
 
 }  // namespace app

@@ -50,12 +50,13 @@ void probe_writable(const std::string &dir) {
 
 
 // The names write_outputs() may write in DIR (snapshots/ apart).
-constexpr std::array<const char *, 9> kOutputNames{"map.pgm",    "map.yaml",    "map.png",  "truth.png", "summary.json",
-                                                   "trace.csv", "replay.html", "plan.png", "plan.csv"};
+constexpr std::array<const char *, 15> kOutputNames{
+    "map.pgm",   "map.yaml",  "map.png",   "map.svg",   "map.pdf",     "truth.png", "truth.svg", "truth.pdf",
+    "summary.json", "trace.csv", "replay.html", "plan.png", "plan.svg", "plan.pdf", "plan.csv"};
 
-// "NN.png", two digits or more: a snapshot's name.
+// "NN.png" (or .svg, .pdf), two digits or more: a snapshot's name.
 bool is_snapshot_name(const std::string &name) {
-  if (name.size() < 6 || !name.ends_with(".png")) return false;
+  if (name.size() < 6 || !(name.ends_with(".png") || name.ends_with(".svg") || name.ends_with(".pdf"))) return false;
   return std::all_of(name.begin(), name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
 }
 

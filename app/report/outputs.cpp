@@ -83,15 +83,15 @@ std::string map_caption(const RunOptions &options) {
 }
 
 std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                     const std::string &caption) {
-  return encode_png(map_picture(grid, tones, marks, caption));
+                     const std::string &caption, PictureFormat format) {
+  return map_picture(grid, tones, marks, caption, format).encode();
 }
 
-std::string truth_png_file(const RunOptions &options, const RunFiles &files) {
+std::string truth_png_file(const RunOptions &options, const RunFiles &files, PictureFormat format) {
   const std::vector<bool> visited = visited_cells(*files.visits);
   const TruthInput input{files.truth, &visited, files.learned, options.subcells,
                          fmt::format("truth: {}", map_caption(options))};
-  return encode_png(truth_picture(input));
+  return truth_picture(input, format).encode();
 }
 
 namespace {
@@ -253,9 +253,11 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
     const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
     const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}, files.landmarks};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
-    const std::string name = fmt::format("{:0{}}.png", i + 1, digits);
-    common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption));
-    written.push_back("snapshots/" + name);
+    for (const PictureFormat format : options.output.picture_formats) {
+      const std::string name = fmt::format("{:0{}}.{}", i + 1, digits, to_string(format));
+      common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption, format));
+      written.push_back("snapshots/" + name);
+    }
   }
 }
 
@@ -280,7 +282,8 @@ void write_replay(const fs::path &dir, const RunOptions &options, const RunSumma
 
 // --plan-to / plan: plan.png (the learned map with the planned path) and plan.csv (its
 // sub-cells in order, with their centres in metres).
-void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummary &plan, const RunFiles &files) {
+void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummary &plan, const RunFiles &files,
+                std::vector<std::string> &written) {
   std::string csv = "index,subcell_x,subcell_y,x_m,y_m\n";
   for (std::size_t i = 0; i < plan.path.size(); ++i) {
     const mapping::Point p = files.grid->centre_of(plan.path[i]);
@@ -288,12 +291,30 @@ void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummar
   }
   MapMarks marks{{}, files.goals, plan.path, files.landmarks};
   const std::string caption = fmt::format("{}, plan to ({},{})", map_caption(options), plan.to.x, plan.to.y);
-  common::write_file_atomically((dir / "plan.png").string(),
-                                png_file(*files.grid, map_tones(options, *files.model), marks, caption));
+  for (const PictureFormat format : options.output.picture_formats) {
+    const std::string name = fmt::format("plan.{}", to_string(format));
+    common::write_file_atomically((dir / name).string(),
+                                  png_file(*files.grid, map_tones(options, *files.model), marks, caption, format));
+    written.push_back(name);
+  }
   common::write_file_atomically((dir / "plan.csv").string(), csv);
+  written.emplace_back("plan.csv");
 }
 
 }  // namespace
+
+std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
+                       std::size_t snapshot_files) {
+  std::vector<std::string> names(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot));
+  if (snapshot_files > 0) {
+    names.push_back(fmt::format("snapshots/ ({} files, {} to {})", snapshot_files,
+                                written[first_snapshot].substr(10), written[first_snapshot + snapshot_files - 1].substr(10)));
+  }
+  names.insert(names.end(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot + snapshot_files), written.end());
+  std::string line = "wrote " + (fs::path(dir) / "").string() + ":";
+  for (std::size_t i = 0; i < names.size(); ++i) line += (i == 0 ? " " : ", ") + names[i];
+  return line;
+}
 
 bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geometry) {
   if (options.output.replay && !replay_fits(geometry)) {
@@ -312,6 +333,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.title = options.world;
   input.caption = map_caption(options);
   input.steps = summary.steps;
+  input.reachable_cells = summary.score.reachable_cells;
   input.summary = summary_pairs(RunReport(options, summary));
   return replay_html(input);
 }
@@ -319,29 +341,36 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files) {
   const fs::path d(dir);
-  std::vector<std::string> written{"map.pgm", "map.yaml", "map.png", "truth.png", "summary.json"};
+  std::vector<std::string> written{"map.pgm", "map.yaml"};
   const auto initial = static_cast<float>(files.model->prior_log_odds());
   common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
   const MapTones tones = map_tones(options, *files.model);
-  common::write_file_atomically((d / "map.png").string(),
-                                png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options)));
-  common::write_file_atomically((d / "truth.png").string(), truth_png_file(options, files));
+  for (const PictureFormat format : options.output.picture_formats) {
+    const std::string map = fmt::format("map.{}", to_string(format));
+    const std::string truth = fmt::format("truth.{}", to_string(format));
+    common::write_file_atomically(
+        (d / map).string(),
+        png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options), format));
+    common::write_file_atomically((d / truth).string(), truth_png_file(options, files, format));
+    written.push_back(map);
+    written.push_back(truth);
+  }
   common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
+  written.emplace_back("summary.json");
   if (files.trace != nullptr) {
     files.trace->commit();
     written.emplace_back("trace.csv");
   }
+  const std::size_t before_snapshots = written.size();
   if (options.output.snapshots > 0 && files.history != nullptr) {
     write_snapshots(d / "snapshots", options, summary, files, written);
   }
+  const std::size_t snapshot_files = written.size() - before_snapshots;
   write_replay(d, options, summary, files, written);
-  if (summary.plan && summary.plan->found) {
-    write_plan(d, options, *summary.plan, files);
-    written.emplace_back("plan.png");
-    written.emplace_back("plan.csv");
-  }
+  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files, written);
   remove_stale_outputs(dir, written);
+  fmt::print(stderr, "{}\n", wrote_line(dir, written, before_snapshots, snapshot_files));
 }
 
 }  // namespace app

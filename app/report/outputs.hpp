@@ -27,6 +27,7 @@
 //   replay.html         the run in a browser, unless --no-replay: app/report/replay.hpp. Not written
 //                       (a warning on stderr) for a grid over kReplayMaxSubcells sub-cells or a
 //                       page over kReplayMaxBytes even with the whole run in one frame.
+//   map.svg, map.pdf, truth.svg, ... the same pictures with --picture-format svg or pdf.
 //   plan.png, plan.csv  --plan-to (or `plan --out`) when a path was found: map.png's picture
 //                       with the planned path in magenta instead of the exploration's; the
 //                       path's sub-cells in order, `index,subcell_x,subcell_y,x_m,y_m`.
@@ -61,9 +62,9 @@ std::string map_yaml(const mapping::GridGeometry &geometry, const std::string &i
 MapTones map_tones(const RunOptions &options, const mapping::SensorModel &model);
 // "model cell, K 3": the legend's first line.
 std::string map_caption(const RunOptions &options);
-// map.png's bytes (app/picture/map_picture.hpp).
+// map.png's bytes (app/picture/map_picture.hpp), or map.svg's or map.pdf's.
 std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                     const std::string &caption);
+                     const std::string &caption, PictureFormat format = PictureFormat::png);
 
 std::string summary_json(const RunOptions &options, const RunSummary &summary);
 
@@ -104,13 +105,20 @@ bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geome
 // replay.html's bytes for this run, or nothing when it is too large (app/report/replay.hpp).
 std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &summary, const RunFiles &files);
 
-// truth.png's bytes (app/report/truth_picture.hpp) for this run.
-std::string truth_png_file(const RunOptions &options, const RunFiles &files);
+// truth.png's bytes (app/report/truth_picture.hpp) for this run, or truth.svg's or truth.pdf's.
+std::string truth_png_file(const RunOptions &options, const RunFiles &files, PictureFormat format = PictureFormat::png);
+
+// "wrote DIR/: map.pgm, map.yaml, ..., snapshots/ (3 files, 01.png to 03.png), ...": the
+// names in `written` (relative to dir), the snapshot_files from first_snapshot on as one.
+std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
+                       std::size_t snapshot_files);
 
 // Writes the files into dir (prepared by prepare_output_dir); then removes the files an
 // earlier run left there that this one did not write (of the names above only: trace.csv
 // after --no-trace, replay.html, plan.*, snapshots/NN.png beyond this run's N; nothing
-// else in DIR is touched), so that DIR holds one run's outputs.
+// else in DIR is touched), so that DIR holds one run's outputs. The pictures (map, truth,
+// snapshots, plan) are written in each of options.output.picture_formats. Names the files
+// written on stderr, one line ("wrote DIR/: map.pgm, map.yaml, ...").
 void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
                    const RunFiles &files);
 

@@ -134,9 +134,11 @@ std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
   const MapTones &t = input.tones;
   std::string out = fmt::format(
       "{{\"version\":1,\"title\":{},\"caption\":{},\"width\":{},\"height\":{},\"k\":{},\"cell_size_m\":{},"
-      "\"initial\":{},\"occupied_increment\":{:.4f},\"free_increment\":{:.4f},\"steps\":{},\"moves_per_frame\":{},",
+      "\"initial\":{},\"occupied_increment\":{:.4f},\"free_increment\":{:.4f},\"steps\":{},\"moves_per_frame\":{},"
+      "\"reachable\":{},",
       quoted(input.title), quoted(input.caption), g.width_cells, g.height_cells, g.subcells, g.cell_size_m,
-      encoded(h.initial_log_odds(), t), t.occupied_increment, t.free_increment, input.steps, moves_per_frame);
+      encoded(h.initial_log_odds(), t), t.occupied_increment, t.free_increment, input.steps, moves_per_frame,
+      input.reachable_cells);
   std::vector<long> goals;
   for (const mapping::Cell c : input.goals) {
     goals.push_back(c.x);

@@ -14,98 +14,117 @@ std::size_t flat(const maze::Maze &m, maze::Cell c) {
   return static_cast<std::size_t>(c.y) * static_cast<std::size_t>(m.width()) + static_cast<std::size_t>(c.x);
 }
 
-// Where the maze is drawn: cell (x, y)'s top-left corner is origin + (x, H - 1 - y) * cell_px.
+// Where the maze is drawn: cell (x, y)'s top-left corner is origin + side_px + (x, H - 1 - y)
+// * cell_px, origin the map area's top-left corner.
 struct TruthLayout {
-  int cell_px = 0;
-  int side_px = 0;
+  PointPx origin;
+  double cell_px = 0;
+  double side_px = 0;
   int height_cells = 0;
-  int left(maze::Cell c) const { return side_px + c.x * cell_px; }
-  int top(maze::Cell c) const { return side_px + (height_cells - 1 - c.y) * cell_px; }
+  double left(maze::Cell c) const { return origin.x + side_px + c.x * cell_px; }
+  double top(maze::Cell c) const { return origin.y + side_px + (height_cells - 1 - c.y) * cell_px; }
 };
 
 // Each landmark a disc of its colour and the course's radius, ringed in black.
-void draw_landmarks(Canvas &canvas, const TruthLayout &l, const maze::Maze &m) {
+void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m) {
   const double px_per_m = l.cell_px / m.cell_size_m();
   for (const LandmarkMark &mark : landmark_marks(m)) {
-    const int r = std::max(2, static_cast<int>(std::lround(mark.radius_m * px_per_m)));
-    const int x = l.side_px + static_cast<int>(std::lround((mark.at.x_m - m.origin_x_m()) * px_per_m));
-    const int y = l.side_px +
-                  static_cast<int>(std::lround((m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m));
-    canvas.disc(x, y, r + 1, Rgb{0, 0, 0});
-    canvas.disc(x, y, r, mark.colour);
+    const PointPx at{l.origin.x + l.side_px + (mark.at.x_m - m.origin_x_m()) * px_per_m,
+                     l.origin.y + l.side_px + (m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m};
+    page.ringed_disc(at, std::max(2.0, mark.radius_m * px_per_m), mark.colour, 1.0, Rgb{0, 0, 0});
   }
 }
 
-TruthLayout layout_of(const TruthInput &in) {
+Figure truth_figure(const TruthInput &in) {
   mapping::GridGeometry g;
   g.width_cells = in.truth->width();
   g.height_cells = in.truth->height();
   g.subcells = in.subcells;
+  const int cell_px = in.subcells * map_scale(g);
+  const int side_px = truth_side_px(cell_px);
+  Figure fig;
+  fig.map_w_px = in.truth->width() * cell_px + 2 * side_px;
+  fig.map_h_px = in.truth->height() * cell_px + 2 * side_px;
+  fig.axes = Axes{in.truth->width(), in.truth->height(), static_cast<double>(cell_px), 0, 0, static_cast<double>(side_px)};
+  return fig;
+}
+
+TruthLayout layout_of(const TruthInput &in, PointPx origin) {
+  const Figure fig = truth_figure(in);
   TruthLayout l;
-  l.cell_px = in.subcells * map_scale(g);
-  l.side_px = truth_side_px(l.cell_px);
+  l.origin = origin;
+  l.cell_px = fig.axes->cell_px;
+  l.side_px = fig.axes->offset_px;
   l.height_cells = in.truth->height();
   return l;
 }
 
-// The side drawn as a bar centred on the cell's edge; `fraction` of its length, centred.
-void draw_side(Canvas &canvas, const TruthLayout &l, maze::Cell c, maze::Side s, Rgb colour, double fraction) {
-  const int t = l.side_px;
-  const int length = static_cast<int>(l.cell_px * fraction) + (fraction < 1.0 ? 0 : t);
-  const int inset = (l.cell_px + t - length) / 2;
-  const int x0 = l.left(c) - t / 2;
-  const int y0 = l.top(c) - t / 2;
+// The side as a bar centred on the cell's edge; `fraction` of its length, centred.
+RectPx side_rect(const TruthLayout &l, maze::Cell c, maze::Side s, double fraction) {
+  const double t = l.side_px;
+  const double length = l.cell_px * fraction + (fraction < 1.0 ? 0 : t);
+  const double inset = (l.cell_px + t - length) / 2;
+  const double x0 = l.left(c) - t / 2;
+  const double y0 = l.top(c) - t / 2;
   switch (s) {
-    case maze::Side::north: canvas.fill(x0 + inset, y0, length, t, colour); break;
-    case maze::Side::south: canvas.fill(x0 + inset, y0 + l.cell_px, length, t, colour); break;
-    case maze::Side::west: canvas.fill(x0, y0 + inset, t, length, colour); break;
-    case maze::Side::east: canvas.fill(x0 + l.cell_px, y0 + inset, t, length, colour); break;
+    case maze::Side::north: return {x0 + inset, y0, length, t};
+    case maze::Side::south: return {x0 + inset, y0 + l.cell_px, length, t};
+    case maze::Side::west: return {x0, y0 + inset, t, length};
+    case maze::Side::east: return {x0 + l.cell_px, y0 + inset, t, length};
   }
+  return {};
 }
 
-void draw_cells(Canvas &canvas, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable) {
+void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable,
+                double min_mark_px) {
   const maze::Maze &m = *in.truth;
-  for (int y = 0; y < m.height(); ++y) {
+  std::vector<Rgb> tones;
+  std::vector<RectPx> unscored;
+  for (int row = 0; row < m.height(); ++row) {
     for (int x = 0; x < m.width(); ++x) {
-      const maze::Cell c{x, y};
-      const Rgb tone = !reachable[flat(m, c)] ? kUnreachableTone
-                       : (*in.visited)[flat(m, c)] ? Rgb{255, 255, 255} : kUnvisitedTone;
-      canvas.fill(l.left(c), l.top(c), l.cell_px, l.cell_px, tone);
+      const maze::Cell c{x, m.height() - 1 - row};
+      tones.push_back(!reachable[flat(m, c)] ? kUnreachableTone
+                      : (*in.visited)[flat(m, c)] ? kWhite : kUnvisitedTone);
       if (!reachable[flat(m, c)]) {
         for (const maze::Side s : maze::kSides) {
-          if (m.has_wall(c, s)) draw_side(canvas, l, c, s, kUnscoredWallColour, 1.0);
+          if (m.has_wall(c, s)) unscored.push_back(side_rect(l, c, s, 1.0));
         }
       }
     }
   }
-  draw_landmarks(canvas, l, m);  // first: the goals and the start are drawn over them
+  page.blocks(tones, m.width(), m.height(), {l.origin.x + l.side_px, l.origin.y + l.side_px}, l.cell_px, l.cell_px);
+  page.fill_rects(unscored, kUnscoredWallColour);
+  draw_landmarks(page, l, m);  // first: the goals and the start are drawn over them
+  const double line = std::max(1.0, l.cell_px / 14);
   for (const maze::Cell goal : m.goals()) {
-    const int inset = l.cell_px / 8;
-    canvas.frame(l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset,
-                 std::max(1, l.cell_px / 14), kGoalColour);
+    const double inset = l.cell_px / 8 + line / 2;
+    page.stroke_rect({l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset}, line,
+                     kGoalColour);
   }
-  const int side = std::max(1, l.cell_px / 3);
+  const double side = std::max({2.0, l.cell_px / 3, min_mark_px});
   const maze::Cell start = m.start();
-  canvas.fill(l.left(start) + (l.cell_px - side) / 2, l.top(start) + (l.cell_px - side) / 2, side, side, kStartColour);
+  page.fill_rect({l.left(start) + (l.cell_px - side) / 2, l.top(start) + (l.cell_px - side) / 2, side, side}, kStartColour);
 }
 
-Legend truth_legend(const TruthInput &in, const TruthCounts &counts, const TruthLayout &l) {
+void truth_legend(Figure &fig, const TruthInput &in, const TruthCounts &counts, const TruthLayout &l) {
   const MapScore score = counts.score();
-  Legend legend;
-  legend.lines.push_back(in.caption);
-  legend.lines.push_back(fmt::format("wall_accuracy {:.2f}% ({}/{} sides)", score.wall_accuracy_percent(),
-                                     score.sides_correct, score.sides));
-  legend.lines.push_back(fmt::format("coverage {:.2f}% ({}/{} cells)", score.coverage_percent(),
-                                     score.visited_reachable_cells, score.reachable_cells));
-  legend.items = {{Swatch::line, kRightWallColour, "wall right"},
-                  {Swatch::line, kMissedColour, fmt::format("missed ({})", counts.missed)},
-                  {Swatch::line, kPhantomColour, fmt::format("phantom ({})", counts.phantom)},
-                  {Swatch::line, kUnseenColour, fmt::format("unseen opening ({})", counts.unseen_opening)},
-                  {Swatch::box, kUnvisitedTone, "not visited"},
-                  {Swatch::box, kUnreachableTone, "unreachable"}};
-  if (!in.truth->landmarks().empty()) legend.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
-  legend.px_per_m = l.cell_px / in.truth->cell_size_m();
-  return legend;
+  fig.lines.push_back(in.caption);
+  fig.lines.push_back(fmt::format("wall_accuracy {:.2f}% ({}/{} sides)", score.wall_accuracy_percent(),
+                                  score.sides_correct, score.sides));
+  fig.lines.push_back(fmt::format("coverage {:.2f}% ({}/{} cells)", score.coverage_percent(),
+                                  score.visited_reachable_cells, score.reachable_cells));
+  fig.items = {{Swatch::line, kRightWallColour, "wall right"},
+               {Swatch::line, kMissedColour, fmt::format("missed ({})", counts.missed)},
+               {Swatch::line, kPhantomColour, fmt::format("phantom ({})", counts.phantom)},
+               {Swatch::line, kUnseenColour, fmt::format("unseen opening ({})", counts.unseen_opening)},
+               {Swatch::box, kWhite, "visited"},
+               {Swatch::box, kUnvisitedTone, "not visited"},
+               {Swatch::box, kUnreachableTone, "unreachable"},
+               {Swatch::line, kUnscoredWallColour, "wall, not scored"},
+               {Swatch::square, kStartColour, "start"},
+               {Swatch::frame, kGoalColour, "goal"}};
+  if (!in.truth->landmarks().empty()) fig.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
+  fig.px_per_m = l.cell_px / in.truth->cell_size_m();
 }
 
 }  // namespace
@@ -150,30 +169,42 @@ TruthCounts count_verdicts(const TruthInput &in) {
   return counts;
 }
 
-Canvas truth_picture(const TruthInput &in) {
+PointPx truth_origin_px(const maze::Maze &truth, int subcells) {
+  TruthInput in;
+  in.truth = &truth;
+  in.subcells = subcells;
+  const TruthLayout l = layout_of(in, layout_figure(truth_figure(in)).map_origin);
+  return {l.origin.x + l.side_px, l.origin.y + l.side_px};
+}
+
+Drawing truth_picture(const TruthInput &in, PictureFormat format) {
   const maze::Maze &m = *in.truth;
-  const TruthLayout l = layout_of(in);
   const std::vector<bool> reachable = m.reachable_from_start();
   const TruthCounts counts = count_verdicts(in);
-  const int width = std::max(m.width() * l.cell_px + 2 * l.side_px, kMinPictureWidth);
-  const int font = legend_font(width);
-  const Legend legend = truth_legend(in, counts, l);
-  const int map_height = m.height() * l.cell_px + 2 * l.side_px;
-  Canvas canvas(width, map_height + legend_height(legend, width, font), Rgb{255, 255, 255});
-  draw_cells(canvas, l, in, reachable);
+  Figure fig = truth_figure(in);
+  truth_legend(fig, in, counts, layout_of(in, {}));
+  const FigureLayout layout = layout_figure(fig);
+  const TruthLayout l = layout_of(in, layout.map_origin);
+  Drawing page(layout.width, layout.height, format);
+  draw_cells(page, l, in, reachable, 0.6 * layout.font_px);
+  std::vector<RectPx> right, missed, phantom, unseen;
   for_each_scored_side(m, reachable, [&](maze::Cell c, maze::Side s) {
     const bool wall = m.has_wall(c, s);
     switch (judge_side(wall, in.learned(c, s))) {
       case SideVerdict::right:
-        if (wall) draw_side(canvas, l, c, s, kRightWallColour, 1.0);
+        if (wall) right.push_back(side_rect(l, c, s, 1.0));
         break;
-      case SideVerdict::missed: draw_side(canvas, l, c, s, kMissedColour, 1.0); break;
-      case SideVerdict::phantom: draw_side(canvas, l, c, s, kPhantomColour, 1.0); break;
-      case SideVerdict::unseen_opening: draw_side(canvas, l, c, s, kUnseenColour, 0.5); break;
+      case SideVerdict::missed: missed.push_back(side_rect(l, c, s, 1.0)); break;
+      case SideVerdict::phantom: phantom.push_back(side_rect(l, c, s, 1.0)); break;
+      case SideVerdict::unseen_opening: unseen.push_back(side_rect(l, c, s, 0.5)); break;
     }
   });
-  draw_legend(canvas, map_height, legend, font);
-  return canvas;
+  page.fill_rects(right, kRightWallColour);
+  page.fill_rects(missed, kMissedColour);
+  page.fill_rects(phantom, kPhantomColour);
+  page.fill_rects(unseen, kUnseenColour);
+  draw_figure(page, fig, layout);
+  return page;
 }
 
 }  // namespace app

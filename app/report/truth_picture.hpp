@@ -14,6 +14,7 @@
 //            the walls of unreachable cells, not scored, in kUnscoredWallColour
 //   marks    the start a green square, the goals gold frames (app/picture/map_picture.hpp), each
 //            landmark a disc of its colour ringed in black, as wide as the course's cylinder
+//   axes     cell indices (x, y)
 //   legend   the caption, "wall_accuracy 97.50% (156/160 sides)" and "coverage 93.75%
 //            (15/16 cells)", the numbers of the summary, then the colours with the counts
 //            ("missed (2)", ...) and a scale bar in metres.
@@ -24,7 +25,7 @@
 
 #include "app/run/evaluation.hpp"
 #include "app/picture/map_picture.hpp"
-#include "app/picture/picture.hpp"
+#include "app/picture/drawing.hpp"
 #include "maze/maze.hpp"
 
 namespace app {
@@ -62,7 +63,9 @@ TruthCounts count_verdicts(const TruthInput &input);
 // The side's thickness and the margin, in pixels, for a cell `cell_px` wide.
 int truth_side_px(int cell_px);
 
-Canvas truth_picture(const TruthInput &input);
+Drawing truth_picture(const TruthInput &input, PictureFormat format = PictureFormat::png);
+// Where cell (0, H - 1)'s top-left corner is in the picture of `truth` at K `subcells`.
+PointPx truth_origin_px(const maze::Maze &truth, int subcells);
 
 // The maze's landmarks as the pictures mark them.
 std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth);

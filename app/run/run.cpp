@@ -18,6 +18,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "maze/arena_world.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
@@ -226,8 +227,31 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   return run_world(options, out, RunControls{});
 }
 
+namespace {
+
+// The maze of options.world. A file that does not read as a maze but as an arena (a room of
+// obstacles) says so and names the command that maps it.
+maze::World load_maze(const RunOptions &options) {
+  try {
+    return maze::load_world(options.world, options.world_overrides);
+  } catch (const common::InputError &e) {
+    bool arena = false;
+    try {
+      arena = maze::is_arena(maze::load_any_world(options.world, {}, {}));
+    } catch (const common::InputError &) {
+      // Neither a maze nor an arena: the maze's error stands.
+    }
+    if (!arena) throw;
+    throw common::InputError(e.where(), fmt::format("{}; it reads as an arena (a room of obstacles): map "
+                                                    "it with `maze_mapper room {}`",
+                                                    e.message(), options.world));
+  }
+}
+
+}  // namespace
+
 RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls) {
-  const maze::World world = maze::load_world(options.world, options.world_overrides);
+  const maze::World world = load_maze(options);
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
   return run_maze(options, world.maze, out, controls);
 }
@@ -293,7 +317,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
         const maze::sim::Pose &pose = simulation.pose();
         animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,
                                             robot::Action::rest, 0, report.grid, report.visits},
-                          pose.x_m, pose.y_m, true);
+                          pose.x_m, pose.y_m);
       }
       if (o.step && !state.quit) wait_for_step(controls, report, state);
     };
@@ -309,7 +333,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
         return false;
       }
       if (state.quit) return false;
-      if (animator) animator->on_step(step, pose.x_m, pose.y_m, false);
+      if (animator) animator->on_step(step, pose.x_m, pose.y_m);
       return true;
     };
   }

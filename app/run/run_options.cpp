@@ -72,6 +72,7 @@ constexpr OptionUse kOptionUses[] = {
     {"--no-trace", "without --out", writing_files},
     {"--trace-steps", "without --out", writing_files},
     {"--no-replay", "without --out", writing_files},
+    {"--picture-format", "without --out", writing_files},
 };
 
 // The sensing::ModelOption bits of the options given: option_name() is "--p-free/--p-occ"

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/picture/drawing.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/grid_types.hpp"
 #include "sensing/setups.hpp"
@@ -39,6 +40,8 @@ struct OutputOptions {
   bool trace_steps = false;             // --trace-steps: a row every control step (see trace_every_step)
   int snapshots = 0;                    // --snapshots N: N pictures through the run in DIR/snapshots/
   bool replay = true;                   // replay.html with --out (--no-replay: not written)
+  // --picture-format: map, truth, plan and the snapshots in each of these (default PNG)
+  std::vector<PictureFormat> picture_formats{PictureFormat::png};
   // --narrow (1) or --wide (2): terminal columns a sub-cell; none: 2 when standard output is
   // a terminal wide enough for the map so drawn, else 1 (pipes and files: the classroom look).
   std::optional<int> subcell_columns;

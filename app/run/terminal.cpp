@@ -117,14 +117,20 @@ ScreenGuard::~ScreenGuard() { out_ << "\x1b[0m\x1b[?25h\x1b[?1049l" << std::flus
 Animator::Animator(std::ostream &out, const render::MapStyle &style, const AnimationOptions &options)
     : out_(out), style_(style), options_(options), next_frame_(std::chrono::steady_clock::now()) {}
 
-void Animator::on_step(const robot::StepReport &step, double x_m, double y_m, bool force) {
-  const double frame_sim_s = options_.speed / options_.fps;
-  if (!force && last_sim_s_ >= 0.0 && step.sim_time_s - last_sim_s_ < frame_sim_s) return;
-  std::this_thread::sleep_until(next_frame_);
-  last_sim_s_ = step.sim_time_s;
-  next_frame_ = std::chrono::steady_clock::now() +
-                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                    std::chrono::duration<double>(1.0 / options_.fps));
+void Animator::on_step(const robot::StepReport &step, double x_m, double y_m) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); };
+  if (!started_) {
+    started_ = true;
+    start_sim_s_ = step.sim_time_s;
+    start_wall_ = Clock::now();
+    next_frame_ = start_wall_;
+  }
+  const Clock::time_point due = start_wall_ + seconds((step.sim_time_s - start_sim_s_) / options_.speed);
+  if (due > Clock::now()) std::this_thread::sleep_until(due);
+  const Clock::time_point now = Clock::now();
+  if (now < next_frame_) return;
+  next_frame_ = now + seconds(1.0 / options_.fps);
   draw(step, x_m, y_m);
 }
 

@@ -99,9 +99,11 @@ class Animator {
  public:
   Animator(std::ostream &out, const render::MapStyle &style, const AnimationOptions &options);
 
-  // Draws a frame when the simulated time since the last frame reached speed / fps, after
-  // waiting out the rest of the frame period; always when forced.
-  void on_step(const robot::StepReport &step, double x_m, double y_m, bool force);
+  // Keeps the run at --speed (waits while the simulated time is ahead of speed x the wall
+  // time since the first step) and draws a frame when 1 / fps wall seconds have passed since
+  // the last one: frames are skipped, never waited for, so a --speed the terminal cannot
+  // draw at still runs at that speed. The first step always draws.
+  void on_step(const robot::StepReport &step, double x_m, double y_m);
 
  private:
   void draw(const robot::StepReport &step, double x_m, double y_m);
@@ -109,7 +111,9 @@ class Animator {
   std::ostream &out_;
   render::MapStyle style_;
   AnimationOptions options_;
-  double last_sim_s_ = -1.0;
+  bool started_ = false;
+  double start_sim_s_ = 0.0;
+  std::chrono::steady_clock::time_point start_wall_;
   std::chrono::steady_clock::time_point next_frame_;
 };
 

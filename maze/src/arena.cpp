@@ -72,20 +72,46 @@ Obstacle Obstacle::from_box(double x0_m, double y0_m, double x1_m, double y1_m) 
   o.half_length_m = std::abs(x1_m - x0_m) / 2.0;
   o.half_width_m = std::abs(y1_m - y0_m) / 2.0;
   o.angle_rad = 0.0;
+  o.box = std::array<double, 4>{std::min(x0_m, x1_m), std::min(y0_m, y1_m), std::max(x0_m, x1_m), std::max(y0_m, y1_m)};
+  return o;
+}
+
+Obstacle Obstacle::oriented(double centre_x_m, double centre_y_m, double half_length_m, double half_width_m,
+                            double angle_rad) {
+  Obstacle o;
+  o.centre_x_m = centre_x_m;
+  o.centre_y_m = centre_y_m;
+  o.half_length_m = half_length_m;
+  o.half_width_m = half_width_m;
+  o.angle_rad = angle_rad;
   return o;
 }
 
 Obstacle Obstacle::from_segment(double x1_m, double y1_m, double x2_m, double y2_m, double width_m, WallEnds ends) {
+  const double cap = ends == WallEnds::capped ? width_m / 2.0 : 0.0;
+  const double half = width_m / 2.0;
+  // Along an axis: the box itself, its extent exact.
+  if (y1_m == y2_m) {
+    Obstacle o = from_box(std::min(x1_m, x2_m) - cap, y1_m - half, std::max(x1_m, x2_m) + cap, y1_m + half);
+    o.half_length_m = std::abs(x2_m - x1_m) / 2.0 + cap;
+    o.half_width_m = half;
+    return o;
+  }
+  if (x1_m == x2_m) {
+    Obstacle o = from_box(x1_m - half, std::min(y1_m, y2_m) - cap, x1_m + half, std::max(y1_m, y2_m) + cap);
+    o.half_length_m = half;  // from_box's axis runs east: the wall's length is across it
+    o.half_width_m = std::abs(y2_m - y1_m) / 2.0 + cap;
+    return o;
+  }
   Obstacle o;
   const double dx = x2_m - x1_m;
   const double dy = y2_m - y1_m;
   o.centre_x_m = (x1_m + x2_m) / 2.0;
   o.centre_y_m = (y1_m + y2_m) / 2.0;
   // A horizontal or vertical wall keeps an exact angle (0 or pi/2), so its extent is exact.
-  const double length = dx == 0.0 ? std::abs(dy) : dy == 0.0 ? std::abs(dx) : std::hypot(dx, dy);
-  o.half_length_m = length / 2.0 + (ends == WallEnds::capped ? width_m / 2.0 : 0.0);
-  o.half_width_m = width_m / 2.0;
-  o.angle_rad = dy == 0.0 ? 0.0 : dx == 0.0 ? std::numbers::pi / 2.0 : std::atan2(dy, dx);
+  o.half_length_m = std::hypot(dx, dy) / 2.0 + cap;
+  o.half_width_m = half;
+  o.angle_rad = std::atan2(dy, dx);
   return o;
 }
 
@@ -95,6 +121,7 @@ bool Obstacle::axis_aligned() const {
 }
 
 std::array<double, 4> Obstacle::bounds() const {
+  if (box && angle_rad == 0.0) return *box;
   if (axis_aligned()) {
     const bool across = static_cast<long long>(std::round(angle_rad / (std::numbers::pi / 2.0))) % 2 != 0;
     const double hx = across ? half_width_m : half_length_m;

@@ -40,8 +40,9 @@ Arena generate_arena(const ArenaGeneration &g) {
       const double length = rng.uniform(g.min_side_m, g.max_side_m);
       const double width = rng.uniform(g.min_side_m, g.max_side_m);
       const double angle = g.rotated ? rng.uniform(0.0, std::numbers::pi) : 0.0;
-      Obstacle o = Obstacle::from_box(cx - length / 2.0, cy - width / 2.0, cx + length / 2.0, cy + width / 2.0);
-      o.angle_rad = angle;
+      const Obstacle o = g.rotated ? Obstacle::oriented(cx, cy, length / 2.0, width / 2.0, angle)
+                                   : Obstacle::from_box(cx - length / 2.0, cy - width / 2.0, cx + length / 2.0,
+                                                        cy + width / 2.0);
       const bool clear = o.distance_m(a.starts[0].x_m, a.starts[0].y_m) > g.clearance_m &&
                          o.distance_m(a.goals[0].x_m, a.goals[0].y_m) > g.clearance_m;
       if (clear) {

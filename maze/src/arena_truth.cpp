@@ -54,7 +54,11 @@ int cells_along(double side_m, double cell_m) {
   return std::max(1, static_cast<int>(std::lround(side_m / cell_m)));
 }
 
-ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m) {
+namespace {
+
+// The grid over the arena's boundary, nothing marked yet. Throws common::InputError for a
+// grid of no cells or over kMaxTruthCells.
+ArenaTruth empty_truth(const Arena &arena, int cells_x, int cells_y) {
   if (cells_x < 1 || cells_y < 1 ||
       static_cast<double>(cells_x) * static_cast<double>(cells_y) > static_cast<double>(kMaxTruthCells)) {
     throw common::InputError(fmt::format("a grid of {} x {} cells is too fine: at most {} cells", cells_x, cells_y,
@@ -70,6 +74,16 @@ ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double 
   const std::size_t n = static_cast<std::size_t>(cells_x) * static_cast<std::size_t>(cells_y);
   t.occupied.assign(n, 0);
   t.reachable.assign(n, 0);
+  return t;
+}
+
+// Marks the occupied cells (and counts them and the free ones); returns the cells the
+// robot's centre cannot stand in (occupied, or within its radius of an obstacle or of the
+// boundary).
+std::vector<std::uint8_t> mark_obstacles(const Arena &arena, ArenaTruth &t, double robot_radius_m) {
+  const int cells_x = t.cells_x;
+  const int cells_y = t.cells_y;
+  const std::size_t n = t.occupied.size();
   std::vector<std::uint8_t> blocked(n, 0);  // not traversable by the robot's centre
   const auto range_of = [&](double x0, double y0, double x1, double y1) {
     const auto clamp_x = [&](double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, cells_x - 1); };
@@ -113,6 +127,15 @@ ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double 
       (t.occupied[i] != 0 ? t.occupied_count : t.free_count) += 1;
     }
   }
+  return blocked;
+}
+
+// The cells the robot's centre reaches from the start's cell, 4-connected over unblocked cells.
+std::vector<std::uint8_t> reachable_centres(const Arena &arena, const ArenaTruth &t,
+                                            const std::vector<std::uint8_t> &blocked) {
+  const int cells_x = t.cells_x;
+  const int cells_y = t.cells_y;
+  const std::size_t n = t.occupied.size();
   // The robot's centre: a flood over traversable cells from the start's cell.
   const ArenaPose start = arena.start();
   const int sx = std::clamp(static_cast<int>(std::floor((start.x_m - t.x_min_m) / t.cell_x_m)), 0, cells_x - 1);
@@ -135,6 +158,14 @@ ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double 
       queue.emplace_back(nx, ny);
     }
   }
+  return centres;
+}
+
+// Marks reachable the free cells the robot's body covers from the centres it reaches.
+void mark_reachable_body(ArenaTruth &t, const std::vector<std::uint8_t> &centres, double robot_radius_m) {
+  const int cells_x = t.cells_x;
+  const int cells_y = t.cells_y;
+  const std::size_t n = t.occupied.size();
   // The body: from each centre the robot reaches, the free cells within the reach (the
   // radius and half a cell's diagonal) found by a walk over free cells (so not through a wall).
   const double reach = robot_radius_m + 0.5 * std::hypot(t.cell_x_m, t.cell_y_m);
@@ -180,6 +211,14 @@ ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double 
       }
     }
   }
+}
+
+}  // namespace
+
+ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m) {
+  ArenaTruth t = empty_truth(arena, cells_x, cells_y);
+  const std::vector<std::uint8_t> blocked = mark_obstacles(arena, t, robot_radius_m);
+  mark_reachable_body(t, reachable_centres(arena, t, blocked), robot_radius_m);
   return t;
 }
 

@@ -113,7 +113,7 @@ ArenaWorld read_arena_world(std::string_view text, const std::string &file, cons
 
 AnyWorld load_any_world(const std::string &path, const WorldOverrides &maze_overrides,
                         const ArenaOverrides &arena_overrides) {
-  const std::string text = read_file(path);
+  const std::string text = read_world_text(path);
   const Format format = detect_format(text, path);
   const bool arena = format == Format::room ||
                      (format == Format::xml && xml_world_is_arena(text, path, {maze_overrides.cell_size_m}));
@@ -121,7 +121,7 @@ AnyWorld load_any_world(const std::string &path, const WorldOverrides &maze_over
     if (arena_overrides.boundary_m) {
       throw common::InputError(fmt::format("--boundary applies to arenas; {} is a grid maze", path));
     }
-    return load_world(path, maze_overrides);
+    return load_world_text(text, path, maze_overrides);
   }
   refuse_maze_overrides(maze_overrides, path);
   return read_arena_world(text, path, arena_overrides);

@@ -1,6 +1,5 @@
 #include "maze/room_format.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "common/parse_number.hpp"
 #include "maze/maze.hpp"
 
 namespace maze {
@@ -67,18 +67,14 @@ struct Parser {
     return common::InputError(at(column), std::move(message));
   }
 
+  // The project's one number rule (common/parse_number.hpp), and within 1e9 m.
   double number(const Token &t) const {
-    double v = 0.0;
-    const char *begin = t.text.data();
-    const char *end = begin + t.text.size();
-    if (!t.text.empty() && *begin == '+') ++begin;
-    const auto [stop, ec] = std::from_chars(begin, end, v);
-    if (ec == std::errc::result_out_of_range || (ec == std::errc() && stop == end && !std::isfinite(v))) {
+    const std::optional<double> v = common::parse_real(t.text);
+    if (!v) throw error(t.column, fmt::format("'{}' is not a number", shown(t.text)));
+    if (!std::isfinite(*v) || std::abs(*v) > 1e9) {
       throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown(t.text)));
     }
-    if (ec != std::errc() || stop != end) throw error(t.column, fmt::format("'{}' is not a number", shown(t.text)));
-    if (std::abs(v) > 1e9) throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown(t.text)));
-    return v;
+    return *v;
   }
 
   // The numbers after the keyword: at least `least`, at most `most`.
@@ -96,6 +92,21 @@ struct Parser {
   }
 };
 
+// The yaw in degrees, in the fewest digits that read back (times pi / 180) as the very yaw.
+std::string degrees_of(double yaw_rad) {
+  const double deg = yaw_rad * 180.0 / std::numbers::pi;
+  for (int digits = 6; digits < 17; ++digits) {
+    const std::string text = fmt::format("{:.{}g}", deg, digits);
+    const double back = common::parse_real(text).value_or(0.0);
+    if (back * std::numbers::pi / 180.0 == yaw_rad) return text;
+  }
+  return fmt::format("{}", deg);
+}
+
+// A length or coordinate as written: 12 significant digits (a picometre on a metre; the
+// rounding of sums and halves in doubles left out), -0 as 0.
+std::string metres(double v) { return fmt::format("{:.12g}", v + 0.0); }
+
 }  // namespace
 
 bool looks_like_room(std::string_view text) {
@@ -109,6 +120,66 @@ bool looks_like_room(std::string_view text) {
     text.remove_prefix(end + 1);
   }
   return false;
+}
+
+// One statement of a room file (its tokens, its line) into the arena; boundary_line is the
+// line of the boundary read so far (0: none yet).
+void read_statement(Parser &p, const std::vector<Token> &tokens, std::string_view line, Arena &arena,
+                    int &boundary_line) {
+  const Token &key = tokens.front();
+  if (key.text == "name") {
+    const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
+    if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
+    arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t") + 1));
+  } else if (key.text == "boundary") {
+    if (boundary_line != 0) {
+      throw p.error(key.column, fmt::format("a second boundary (the first is at line {})", boundary_line));
+    }
+    const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers XS XE YS YE");
+    boundary_line = p.line;
+    arena.x_min_m = v[0];
+    arena.x_max_m = v[1];
+    arena.y_min_m = v[2];
+    arena.y_max_m = v[3];
+    arena.boundary_where = p.at(key.column);
+    if (!(v[0] < v[1]) || !(v[2] < v[3])) {
+      throw p.error(key.column, fmt::format("the boundary x {} to {} m, y {} to {} m is empty: it needs XS < XE "
+                                            "and YS < YE",
+                                            v[0], v[1], v[2], v[3]));
+    }
+  } else if (key.text == "rect") {
+    const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
+    if (v[0] == v[2] || v[1] == v[3]) {
+      throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
+    }
+    Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
+    o.where = p.at(key.column);
+    arena.obstacles.push_back(o);
+  } else if (key.text == "wall") {
+    const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
+    const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
+    if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
+    if (v[0] == v[2] && v[1] == v[3]) {
+      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
+                                            v[3]));
+    }
+    Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
+    o.where = p.at(key.column);
+    arena.obstacles.push_back(o);
+  } else if (key.text == "start") {
+    const std::vector<double> v = p.numbers(tokens, 2, 3, "2 or 3 numbers X Y [YAW_DEG]");
+    const double yaw_deg = v.size() == 3 ? v[2] : 90.0;
+    arena.starts.push_back({v[0], v[1], yaw_deg * std::numbers::pi / 180.0});
+    arena.start_where.push_back(p.at(key.column));
+  } else if (key.text == "goal") {
+    const std::vector<double> v = p.numbers(tokens, 2, 2, "2 numbers X Y");
+    arena.goals.push_back({v[0], v[1]});
+    arena.goal_where.push_back(p.at(key.column));
+  } else {
+    throw p.error(key.column, fmt::format("unknown statement '{}': expected name, boundary, rect, wall, start or "
+                                          "goal",
+                                          shown(key.text)));
+  }
 }
 
 Arena read_room(std::string_view text, const std::string &file) {
@@ -125,60 +196,8 @@ Arena read_room(std::string_view text, const std::string &file) {
     offset = end + 1;
     const std::vector<Token> tokens = tokens_of(statement_of(line));
     if (tokens.empty()) continue;
+    read_statement(p, tokens, line, arena, boundary_line);
     const Token &key = tokens.front();
-    if (key.text == "name") {
-      const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
-      if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
-      arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t") + 1));
-    } else if (key.text == "boundary") {
-      if (boundary_line != 0) {
-        throw p.error(key.column, fmt::format("a second boundary (the first is at line {})", boundary_line));
-      }
-      const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers XS XE YS YE");
-      boundary_line = p.line;
-      arena.x_min_m = v[0];
-      arena.x_max_m = v[1];
-      arena.y_min_m = v[2];
-      arena.y_max_m = v[3];
-      arena.boundary_where = p.at(key.column);
-      if (!(v[0] < v[1]) || !(v[2] < v[3])) {
-        throw p.error(key.column, fmt::format("the boundary x {} to {} m, y {} to {} m is empty: it needs XS < XE "
-                                              "and YS < YE",
-                                              v[0], v[1], v[2], v[3]));
-      }
-    } else if (key.text == "rect") {
-      const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
-      if (v[0] == v[2] || v[1] == v[3]) {
-        throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
-      }
-      Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
-      o.where = p.at(key.column);
-      arena.obstacles.push_back(o);
-    } else if (key.text == "wall") {
-      const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
-      const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
-      if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
-      if (v[0] == v[2] && v[1] == v[3]) {
-        throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
-                                              v[3]));
-      }
-      Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
-      o.where = p.at(key.column);
-      arena.obstacles.push_back(o);
-    } else if (key.text == "start") {
-      const std::vector<double> v = p.numbers(tokens, 2, 3, "2 or 3 numbers X Y [YAW_DEG]");
-      const double yaw_deg = v.size() == 3 ? v[2] : 90.0;
-      arena.starts.push_back({v[0], v[1], yaw_deg * std::numbers::pi / 180.0});
-      arena.start_where.push_back(p.at(key.column));
-    } else if (key.text == "goal") {
-      const std::vector<double> v = p.numbers(tokens, 2, 2, "2 numbers X Y");
-      arena.goals.push_back({v[0], v[1]});
-      arena.goal_where.push_back(p.at(key.column));
-    } else {
-      throw p.error(key.column, fmt::format("unknown statement '{}': expected name, boundary, rect, wall, start or "
-                                            "goal",
-                                            shown(key.text)));
-    }
     if (arena.obstacles.size() > kMaxObstacles) {
       throw p.error(key.column, fmt::format("more than {} obstacles", kMaxObstacles));
     }
@@ -188,23 +207,28 @@ Arena read_room(std::string_view text, const std::string &file) {
 
 std::string write_room(const Arena &arena) {
   std::string text = fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
-                                 arena.obstacles.size() == 1 ? "" : "s", arena.width_m(), arena.height_m());
+                                 arena.obstacles.size() == 1 ? "" : "s", metres(arena.width_m()),
+                                 metres(arena.height_m()));
   if (!arena.name.empty()) fmt::format_to(std::back_inserter(text), "name {}\n", arena.name);
-  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", arena.x_min_m, arena.x_max_m, arena.y_min_m,
-                 arena.y_max_m);
+  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres(arena.x_min_m), metres(arena.x_max_m),
+                 metres(arena.y_min_m), metres(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
     if (o.axis_aligned()) {
       const auto b = o.bounds();
-      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", b[0], b[1], b[2], b[3]);
+      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres(b[0]), metres(b[1]), metres(b[2]),
+                     metres(b[3]));
     } else {
       const auto l = o.centre_line();
-      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", l[0], l[1], l[2], l[3], l[4]);
+      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", metres(l[0]), metres(l[1]), metres(l[2]),
+                     metres(l[3]), metres(l[4]));
     }
   }
   for (const ArenaPose &s : arena.starts) {
-    fmt::format_to(std::back_inserter(text), "start {} {} {:.10g}\n", s.x_m, s.y_m, s.yaw_rad * 180.0 / std::numbers::pi);
+    fmt::format_to(std::back_inserter(text), "start {} {} {}\n", metres(s.x_m), metres(s.y_m), degrees_of(s.yaw_rad));
   }
-  for (const ArenaPoint &g : arena.goals) fmt::format_to(std::back_inserter(text), "goal {} {}\n", g.x_m, g.y_m);
+  for (const ArenaPoint &g : arena.goals) {
+    fmt::format_to(std::back_inserter(text), "goal {} {}\n", metres(g.x_m), metres(g.y_m));
+  }
   return text;
 }
 

@@ -268,6 +268,8 @@ std::optional<std::string> dropped_by(const Maze &maze, Format format) {
     std::sort(goals.begin(), goals.end());
     const bool kept = format == Format::maz && goals == centre;
     if (!maze.goals().empty() && !kept) parts.push_back(goals_of(maze));
+  } else if (format == Format::room) {
+    holds = "a room file holds the walls as rectangles, the start and the goals";
   } else if (format == Format::text_map) {
     holds = "a text map holds walls, start cell and goals; its start faces north";
     if (maze.start_heading() != Side::north) {
@@ -276,7 +278,7 @@ std::optional<std::string> dropped_by(const Maze &maze, Format format) {
   } else {
     return std::nullopt;
   }
-  if (!default_physical(maze)) parts.push_back(physical_of(maze));
+  if (!default_physical(maze) && format != Format::room) parts.push_back(physical_of(maze));
   if (const std::size_t n = maze.start_positions().size(); n > 1) {
     parts.push_back(fmt::format("the other {} start position{}", n - 1, n == 2 ? "" : "s"));
   }

@@ -41,6 +41,25 @@ std::vector<XmlWall> read_walls(const tinyxml2::XMLElement &world, const Source 
   return walls;
 }
 
+// The text as an XML attribute value.
+std::string xml_escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// A length or coordinate as written: 12 significant digits (a picometre on a metre; the
+// rounding of sums and halves in doubles left out), -0 as 0.
+std::string metres(double v) { return fmt::format("{:.12g}", v + 0.0); }
+
 }  // namespace
 
 bool xml_world_is_arena(std::string_view text, const std::string &file, const XmlReadOptions &options) {
@@ -70,6 +89,7 @@ XmlArenaRead read_xml_arena(std::string_view text, const std::string &file) {
   XmlArenaRead read;
   Arena &arena = read.arena;
   arena.source = file;
+  if (const char *name = world.Attribute("name")) arena.name = name;
   for (const XmlWall &w : read_walls(world, src)) {
     if (w.x1 == w.x2 && w.y1 == w.y2) throw src.error(*w.element, nullptr, "wall has zero length");
     Obstacle o = Obstacle::from_segment(w.x1, w.y1, w.x2, w.y2, w.width, WallEnds::flush);
@@ -114,25 +134,29 @@ XmlArenaRead read_xml_arena(std::string_view text, const std::string &file) {
 std::string write_xml_arena(const Arena &arena) {
   std::string text = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<!-- maze_mapper arena: {} obstacle{}, boundary {} x {} m -->\n<world>\n"
+      "<!-- maze_mapper arena: {} obstacle{}, boundary {} x {} m -->\n<world{}>\n"
       "  <boundary xs=\"{}\" xe=\"{}\" ys=\"{}\" ye=\"{}\"/>\n",
-      arena.obstacles.size(), arena.obstacles.size() == 1 ? "" : "s", arena.width_m(), arena.height_m(),
-      arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m);
+      arena.obstacles.size(), arena.obstacles.size() == 1 ? "" : "s", metres(arena.width_m()),
+      metres(arena.height_m()),
+      arena.name.empty() ? std::string() : fmt::format(" name=\"{}\"", xml_escaped(arena.name)),
+      metres(arena.x_min_m), metres(arena.x_max_m), metres(arena.y_min_m), metres(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
     const auto l = o.centre_line();
-    fmt::format_to(std::back_inserter(text), "  <wall x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" width=\"{}\"/>\n", l[0],
-                   l[1], l[2], l[3], l[4]);
+    fmt::format_to(std::back_inserter(text), "  <wall x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" width=\"{}\"/>\n",
+                   metres(l[0]), metres(l[1]), metres(l[2]), metres(l[3]), metres(l[4]));
   }
   if (!arena.starts.empty()) {
     text += "  <startPositions>\n";
     for (const ArenaPose &s : arena.starts) {
-      fmt::format_to(std::back_inserter(text), "    <pos x=\"{}\" y=\"{}\" theta=\"{}\"/>\n", s.x_m, s.y_m, s.yaw_rad);
+      fmt::format_to(std::back_inserter(text), "    <pos x=\"{}\" y=\"{}\" theta=\"{}\"/>\n", metres(s.x_m),
+                     metres(s.y_m), s.yaw_rad);
     }
     text += "  </startPositions>\n";
   }
   int id = 0;
   for (const ArenaPoint &g : arena.goals) {
-    fmt::format_to(std::back_inserter(text), "  <goal id=\"{}\" x=\"{}\" y=\"{}\"/>\n", id++, g.x_m, g.y_m);
+    fmt::format_to(std::back_inserter(text), "  <goal id=\"{}\" x=\"{}\" y=\"{}\"/>\n", id++, metres(g.x_m),
+                   metres(g.y_m));
   }
   text += "</world>\n";
   return text;

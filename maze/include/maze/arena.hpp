@@ -49,9 +49,16 @@ struct Obstacle {
   double half_width_m = 0.0;   // across it
   double angle_rad = 0.0;
   common::SourceLocation where;  // where the file states it (line 0: it does not)
+  // from_box's extent {x_min, y_min, x_max, y_max}, which bounds() returns while angle_rad is 0
+  // (the centre and half sizes, halved, would round it).
+  std::optional<std::array<double, 4>> box;
 
-  // The axis-aligned rectangle [x0, x1] x [y0, y1] (corners in any order).
+  // The axis-aligned rectangle [x0, x1] x [y0, y1] (corners in any order), its extent kept
+  // exactly as given.
   static Obstacle from_box(double x0_m, double y0_m, double x1_m, double y1_m);
+  // The rectangle centred on (cx, cy), its long axis at angle_rad from east.
+  static Obstacle oriented(double centre_x_m, double centre_y_m, double half_length_m, double half_width_m,
+                           double angle_rad);
   // The wall from (x1, y1) to (x2, y2), width_m thick; see the drawing above for `ends`. A
   // zero-length segment makes a width x width square (capped) or an empty one (flush).
   static Obstacle from_segment(double x1_m, double y1_m, double x2_m, double y2_m, double width_m, WallEnds ends);

@@ -41,7 +41,9 @@ bool looks_like_room(std::string_view text);
 Arena read_room(std::string_view text, const std::string &file);
 
 // The canonical room file: name, boundary, each obstacle (`rect` when axis-aligned, else
-// `wall` along its long axis with its width), starts, goals. Read back: the same arena.
+// `wall` along its long axis with its width), starts, goals; lengths to 12 significant digits
+// (the last bits of sums and halves left out), yaws in the fewest degrees' digits that read
+// back exactly. Read back: the same arena.
 std::string write_room(const Arena &arena);
 
 }  // namespace maze

@@ -20,6 +20,7 @@
 //     the loader gives the obstacles' bounding box when they enclose the start, else the
 //     course's 17 x 17 m floor centred on the origin, unless the user gives one
 //     (arena_world.hpp).
+//   - <world name="...">: the arena's name (maze_mapper's own attribute; else the file's name).
 //   - <pos x y theta>: start poses (theta in radians, default pi/2, any angle); <goal x y>:
 //     goal points; <landmark>s are not simulated (a warning says how many were left out);
 //     other elements are ignored.
@@ -45,7 +46,8 @@ struct XmlArenaRead {
 XmlArenaRead read_xml_arena(std::string_view text, const std::string &file);
 
 // The arena in the course's XML: the <boundary>, each obstacle one <wall> along its long axis
-// with its width, the start poses, the goals. Read back: the same arena.
+// with its width, the start poses, the goals; lengths to 12 significant digits, theta exact.
+// Read back: the same arena.
 std::string write_xml_arena(const Arena &arena);
 
 }  // namespace maze

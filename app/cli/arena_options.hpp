@@ -1,0 +1,24 @@
+#pragma once
+// What a command line says about arenas: --boundary XS,XE,YS,YE and --resolution M, and the
+// loader that takes a maze or an arena (maze/arena_world.hpp), its warnings printed.
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "maze/arena_world.hpp"
+
+namespace app {
+
+// --boundary XS,XE,YS,YE (m): an arena's floor, over the file's or the default one.
+void add_boundary_option(CLI::App &cmd, std::string &boundary);
+// The arena overrides of a --boundary text ("" for none) and the robot's body radius.
+// Throws common::InputError naming --boundary for a text that is not four numbers.
+maze::ArenaOverrides arena_overrides(const std::string &boundary, double robot_radius_m = 0.0);
+
+// maze::load_any_world, then its warnings on stderr.
+maze::AnyWorld load_any_world_reporting(const std::string &path, const maze::WorldOverrides &maze_overrides,
+                                        const maze::ArenaOverrides &arena_overrides);
+
+}  // namespace app

@@ -1,0 +1,97 @@
+#pragma once
+// The page layout every picture shares (map, truth, snapshots, plan, demo pie / cone,
+// map-log): a map area with cell indices on its axes, and under it the legend: the caption
+// lines, a swatch and a name for each mark, a colour bar that explains every tone, and a
+// scale bar in metres. The page is as wide as the widest of these and no wider.
+//
+//   +-------------------------------------------+
+//   |  y                                        |
+//   |  3 -+--------------------+                |
+//   |  2 -|      map area      |                |
+//   |  1 -|                    |                |
+//   |  0 -+--------------------+ x              |
+//   |       0    1    2    3                    |
+//   |  caption lines                            |
+//   |  [#] occupied  [ ] free  -- path  o robot |
+//   |  log-odds [colour bar] never observed [ ] |
+//   |  |----| 1 m                               |
+//   +-------------------------------------------+
+//
+// The font size follows the map's size (about a 45th of its longer side, 14 px at least), so
+// a picture scaled to a screen or a projector keeps its text readable.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/picture/drawing.hpp"
+
+namespace app {
+
+// The cell indices on the axes: column i's centre at offset_px + cell_px (i + 0.5) from the
+// map area's left edge, labelled first_x + i; row j (from the south) at offset_px + cell_px
+// (rows - j - 0.5) from its top, labelled first_y + j.
+struct Axes {
+  int columns = 0;
+  int rows = 0;
+  double cell_px = 1.0;
+  int first_x = 0;
+  int first_y = 0;
+  double offset_px = 0.0;
+};
+
+enum class Swatch { box, line, square, disc, frame, ring };
+struct LegendItem {
+  Swatch swatch = Swatch::box;
+  Rgb colour;
+  std::string label;
+};
+
+// A horizontal bar of tones from left to right, ticks under it at fractions (0 to 1) of its
+// length with their labels, a name before it and words under its ends (e.g. "free",
+// "occupied"); `extra` (e.g. never observed) a swatch after it.
+struct ColourBar {
+  std::string name;
+  std::vector<Rgb> tones;
+  struct Tick {
+    double at = 0.0;
+    std::string label;
+  };
+  std::vector<Tick> ticks;
+  std::string left_word;
+  std::string right_word;
+  std::optional<LegendItem> extra;
+};
+
+struct Figure {
+  int map_w_px = 0;  // the map area, drawn by the caller at map_origin()
+  int map_h_px = 0;
+  std::optional<Axes> axes;
+  std::vector<std::string> lines;  // the caption, then any numbers
+  std::vector<LegendItem> items;
+  std::optional<ColourBar> bar;
+  double px_per_m = 0.0;  // the scale bar's unit; none when 0
+};
+
+// The font size, the map area's top-left corner and the page's size.
+struct FigureLayout {
+  double font_px = 14.0;
+  PointPx map_origin;
+  int width = 0;
+  int height = 0;
+};
+
+FigureLayout layout_figure(const Figure &figure);
+
+// Draws all but the map area's content (axes, legend) on a page of layout's size.
+void draw_figure(Drawing &page, const Figure &figure, const FigureLayout &layout);
+
+// A scale bar's length: the largest of 1, 2, 5 x 10^n metres that is at most max_px long at
+// px_per_m pixels a metre (and at least 0.001 m).
+double scale_bar_length_m(double px_per_m, double max_px);
+
+// The step between labelled indices on an axis whose cells are cell_px apart and whose
+// labels need label_px each: 1, 2, 5, 10, 20, 50, ...
+int axis_step(double cell_px, double label_px);
+
+}  // namespace app
