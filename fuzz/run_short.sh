@@ -14,6 +14,8 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target fuzz_text_map fuzz_num fuzz_xml fuzz_run_cli
 artifacts="$root/build/fuzz/artifacts"
 mkdir -p "$artifacts"
+# fontconfig's process-lifetime caches are no leak of ours (tests/lsan.supp, as the presets).
+export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
 
 # Runs one target; its exit status is libFuzzer's (0: no report in the time given).
 run_one() {
