@@ -6,7 +6,7 @@
 set -eu
 
 PACKAGES="cmake ninja-build g++ \
-libeigen3-dev libfmt-dev libcli11-dev libtinyxml2-dev libpng-dev nlohmann-json3-dev \
+libeigen3-dev libfmt-dev libcli11-dev libexpat1-dev libpng-dev nlohmann-json3-dev \
 pkg-config libcairo2-dev fonts-dejavu-core $*"
 
 missing=""

@@ -73,7 +73,7 @@ TEST_CASE("validation: every fault is named, with its place, to the letter") {
       {"theta.xml",
        ":30:26: error: theta 0.3 rad is not a multiple of pi/2; the start faces north, east, south or west"},
       {"open_edge.xml", ":3:1: error: cell (3,2): east wall missing on the maze's edge"},
-      {"broken.xml", ":29: error: not well-formed XML: mismatched element"},
+      {"broken.xml", ":33:3: error: not well-formed XML: mismatched tag: </world> where <startPositions> of line 29 is open"},
       {"root.xml", ":2:1: error: the root element is <maze>; expected <world>"},
       {"no_walls.xml", ":1:1: error: no <wall> elements: an open arena, not a grid maze; a maze needs walls"},
   };

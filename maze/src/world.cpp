@@ -193,6 +193,10 @@ std::string read_world_text(const std::string &path) {
   const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (file.fd < 0) throw cannot("read", path, errno);
   std::string text;
+  struct stat status {};
+  if (::fstat(file.fd, &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0) {
+    text.reserve(std::min(static_cast<std::size_t>(status.st_size), kMaxFileBytes) + 1);  // no doubling
+  }
   std::optional<Format> format;
   char buffer[1 << 16];
   for (;;) {

@@ -8,7 +8,6 @@
 #include <optional>
 
 #include <fmt/format.h>
-#include <tinyxml2.h>
 
 #include "common/error.hpp"
 #include "maze/maze.hpp"
@@ -25,17 +24,19 @@ using xml::Source;
 constexpr double kMaxThicknessPerLength = 0.25;
 
 struct XmlWall {
-  const tinyxml2::XMLElement *element;
+  xml::Element element;
   double x1, y1, x2, y2, width;
 };
 
 // Every <wall>, its numbers read in the maze reader's order and words.
-std::vector<XmlWall> read_walls(const tinyxml2::XMLElement &world, const Source &src) {
+std::vector<XmlWall> read_walls(const xml::Element &world, const Source &src) {
   std::vector<XmlWall> walls;
-  for (auto *e = world.FirstChildElement("wall"); e != nullptr; e = e->NextSiblingElement("wall")) {
-    XmlWall w{e, *number(*e, "x1", src, true), *number(*e, "y1", src, true), *number(*e, "x2", src, true),
-              *number(*e, "y2", src, true), number(*e, "width", src, false).value_or(kDefaultWallThickness_m)};
-    if (w.width <= 0.0) throw src.error(*e, "width", fmt::format("width must be positive, got {}", w.width));
+  const std::vector<xml::Element> elements = world.children("wall");
+  walls.reserve(elements.size());
+  for (const xml::Element &e : elements) {
+    XmlWall w{e, *number(e, "x1", src, true), *number(e, "y1", src, true), *number(e, "x2", src, true),
+              *number(e, "y2", src, true), number(e, "width", src, false).value_or(kDefaultWallThickness_m)};
+    if (w.width <= 0.0) throw src.error(e, "width", fmt::format("width must be positive, got {}", w.width));
     walls.push_back(w);
   }
   return walls;
@@ -64,9 +65,9 @@ std::string metres(double v) { return fmt::format("{:.12g}", v + 0.0); }
 
 bool xml_world_is_arena(std::string_view text, const std::string &file, const XmlReadOptions &options) {
   const Source src(text, file);
-  tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
-  const tinyxml2::XMLElement &world = xml::parse(doc, src);
-  if (options.cell_size_m || world.Attribute("cellSize") != nullptr) return false;
+  const xml::Document doc = xml::Document::parse(text, file);
+  const xml::Element world = xml::world_of(doc, src);
+  if (options.cell_size_m || world.attribute("cellSize")) return false;
   const std::vector<XmlWall> walls = read_walls(world, src);
   if (walls.empty()) return true;
   double shortest = std::numeric_limits<double>::infinity();
@@ -84,46 +85,43 @@ bool xml_world_is_arena(std::string_view text, const std::string &file, const Xm
 
 XmlArenaRead read_xml_arena(std::string_view text, const std::string &file) {
   const Source src(text, file);
-  tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
-  const tinyxml2::XMLElement &world = xml::parse(doc, src);
+  const xml::Document doc = xml::Document::parse(text, file);
+  const xml::Element world = xml::world_of(doc, src);
   XmlArenaRead read;
   Arena &arena = read.arena;
   arena.source = file;
-  if (const char *name = world.Attribute("name")) arena.name = name;
+  if (const auto name = world.attribute("name")) arena.name = *name;
   for (const XmlWall &w : read_walls(world, src)) {
-    if (w.x1 == w.x2 && w.y1 == w.y2) throw src.error(*w.element, nullptr, "wall has zero length");
+    if (w.x1 == w.x2 && w.y1 == w.y2) throw src.error(w.element, nullptr, "wall has zero length");
     Obstacle o = Obstacle::from_segment(w.x1, w.y1, w.x2, w.y2, w.width, WallEnds::flush);
-    o.where = src.at(*w.element);
+    o.where = src.at(w.element);
     arena.obstacles.push_back(o);
     if (arena.obstacles.size() > kMaxObstacles) {
-      throw src.error(*w.element, nullptr, fmt::format("more than {} walls: an arena holds at most {}", kMaxObstacles,
+      throw src.error(w.element, nullptr, fmt::format("more than {} walls: an arena holds at most {}", kMaxObstacles,
                                                        kMaxObstacles));
     }
   }
-  if (const tinyxml2::XMLElement *b = world.FirstChildElement("boundary")) {
+  if (const std::optional<xml::Element> b = world.first_child("boundary")) {
     arena.x_min_m = *number(*b, "xs", src, true);
     arena.x_max_m = *number(*b, "xe", src, true);
     arena.y_min_m = *number(*b, "ys", src, true);
     arena.y_max_m = *number(*b, "ye", src, true);
     arena.boundary_where = src.at(*b);
   }
-  for (auto *starts = world.FirstChildElement("startPositions"); starts != nullptr;
-       starts = starts->NextSiblingElement("startPositions")) {
-    for (auto *pos = starts->FirstChildElement("pos"); pos != nullptr; pos = pos->NextSiblingElement("pos")) {
-      const double x = *number(*pos, "x", src, true);
-      const double y = *number(*pos, "y", src, true);
-      const double theta = number(*pos, "theta", src, false).value_or(std::numbers::pi / 2.0);
+  for (const xml::Element &starts : world.children("startPositions")) {
+    for (const xml::Element &pos : starts.children("pos")) {
+      const double x = *number(pos, "x", src, true);
+      const double y = *number(pos, "y", src, true);
+      const double theta = number(pos, "theta", src, false).value_or(std::numbers::pi / 2.0);
       arena.starts.push_back({x, y, theta});
-      arena.start_where.push_back(src.at(*pos, "x"));
+      arena.start_where.push_back(src.at(pos, "x"));
     }
   }
-  Source::Cursor cursor;
-  for (auto *e = world.FirstChildElement("goal"); e != nullptr; e = e->NextSiblingElement("goal")) {
-    arena.goals.push_back({*number(*e, "x", src, true), *number(*e, "y", src, true)});
-    arena.goal_where.push_back(src.at(*e, "x", &cursor));
+  for (const xml::Element &e : world.children("goal")) {
+    arena.goals.push_back({*number(e, "x", src, true), *number(e, "y", src, true)});
+    arena.goal_where.push_back(src.at(e, "x"));
   }
-  int landmarks = 0;
-  for (auto *e = world.FirstChildElement("landmark"); e != nullptr; e = e->NextSiblingElement("landmark")) ++landmarks;
+  const std::size_t landmarks = world.children("landmark").size();
   if (landmarks > 0) {
     read.warnings.push_back(fmt::format("{}: warning: {} landmark{} left out: an arena's simulation has its walls only",
                                         file, landmarks, landmarks == 1 ? "" : "s"));

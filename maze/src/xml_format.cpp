@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <tinyxml2.h>
 
 #include "common/error.hpp"
 #include "maze/validate.hpp"
@@ -26,37 +25,38 @@ constexpr double kGridTolerance = 1e-3;
 constexpr double kHeadingTolerance_rad = 0.01;
 
 using xml::number;
-using xml::parse;
 using xml::Source;
 
 struct Segment {
-  const tinyxml2::XMLElement *element;
+  xml::Element element;
   double x1, y1, x2, y2;
   bool horizontal;
 };
 
-std::vector<Segment> read_segments(const tinyxml2::XMLElement &world, const Source &src, double &thickness_m) {
+std::vector<Segment> read_segments(const xml::Element &world, const Source &src, double &thickness_m) {
   std::vector<Segment> segments;
-  const tinyxml2::XMLElement *first = nullptr;
-  for (auto *e = world.FirstChildElement("wall"); e != nullptr; e = e->NextSiblingElement("wall")) {
-    Segment s{e, *number(*e, "x1", src, true), *number(*e, "y1", src, true), *number(*e, "x2", src, true),
-              *number(*e, "y2", src, true), false};
-    const double width = number(*e, "width", src, false).value_or(kDefaultWallThickness_m);
-    if (width <= 0.0) throw src.error(*e, "width", fmt::format("width must be positive, got {}", width));
-    if (first == nullptr) {
+  std::optional<xml::Element> first;
+  const std::vector<xml::Element> elements = world.children("wall");
+  segments.reserve(elements.size());
+  for (const xml::Element &e : elements) {
+    Segment s{e, *number(e, "x1", src, true), *number(e, "y1", src, true), *number(e, "x2", src, true),
+              *number(e, "y2", src, true), false};
+    const double width = number(e, "width", src, false).value_or(kDefaultWallThickness_m);
+    if (width <= 0.0) throw src.error(e, "width", fmt::format("width must be positive, got {}", width));
+    if (!first) {
       first = e;
       thickness_m = width;
     } else if (width != thickness_m) {
-      throw src.error(*e, "width",
+      throw src.error(e, "width",
                       fmt::format("wall width {} m differs from the {} m of the first wall (line {}); a maze has one "
                                   "wall thickness",
-                                  width, thickness_m, first->GetLineNum()));
+                                  width, thickness_m, first->line()));
     }
     const bool flat = s.y1 == s.y2;
     const bool upright = s.x1 == s.x2;
-    if (flat && upright) throw src.error(*e, nullptr, "wall has zero length");
+    if (flat && upright) throw src.error(e, nullptr, "wall has zero length");
     if (!flat && !upright) {
-      throw src.error(*e, nullptr,
+      throw src.error(e, nullptr,
                       fmt::format("wall from ({}, {}) to ({}, {}) is neither horizontal nor vertical", s.x1, s.y1,
                                   s.x2, s.y2));
     }
@@ -107,7 +107,7 @@ void check_thin_walls(const std::vector<Segment> &segments, double thickness_m, 
   const Segment &shortest = *std::min_element(
       segments.begin(), segments.end(), [](const Segment &a, const Segment &b) { return length_of(a) < length_of(b); });
   if (thickness_m >= kMaxThicknessPerCell * length_of(shortest)) {
-    throw src.error(*shortest.element, "width",
+    throw src.error(shortest.element, "width",
                     fmt::format("walls {} m thick, the shortest {} m long, are obstacles in an arena, not a grid "
                                 "maze (its walls are thinner than a quarter of a cell)",
                                 thickness_m, length_of(shortest)));
@@ -134,12 +134,12 @@ double infer_cell_size(const std::vector<Segment> &segments, const Extent &e, do
         continue;
       }
       if (cell == 0.0) {
-        throw src.error(*s.element, name,
+        throw src.error(s.element, name,
                         fmt::format("wall end {}={} is {} m from the origin ({}, {}): cells that small are no "
                                     "wider than four walls of {} m",
                                     name, v, offset, e.min_x, e.min_y, thickness_m));
       }
-      throw src.error(*s.element, name,
+      throw src.error(s.element, name,
                       fmt::format("wall end {}={} is off the grid (cells of {} m from ({}, {}))", name, v, cell,
                                   e.min_x, e.min_y));
     }
@@ -149,7 +149,7 @@ double infer_cell_size(const std::vector<Segment> &segments, const Extent &e, do
   return span / std::round(span / cell);
 }
 
-double stated_cell_size(const tinyxml2::XMLElement &world, double thickness_m, const Source &src, double stated) {
+double stated_cell_size(const xml::Element &world, double thickness_m, const Source &src, double stated) {
   if (!(stated > 0.0)) throw src.error(world, "cellSize", fmt::format("cellSize must be positive, got {}", stated));
   if (thickness_m >= kMaxThicknessPerCell * stated) {
     throw src.error(world, "cellSize",
@@ -160,16 +160,15 @@ double stated_cell_size(const tinyxml2::XMLElement &world, double thickness_m, c
 }
 
 struct StartPoint {
-  const tinyxml2::XMLElement *element;
+  xml::Element element;
   double x, y;
 };
 
-std::vector<StartPoint> read_start_points(const tinyxml2::XMLElement &world, const Source &src) {
+std::vector<StartPoint> read_start_points(const xml::Element &world, const Source &src) {
   std::vector<StartPoint> points;
-  for (auto *starts = world.FirstChildElement("startPositions"); starts != nullptr;
-       starts = starts->NextSiblingElement("startPositions")) {
-    for (auto *pos = starts->FirstChildElement("pos"); pos != nullptr; pos = pos->NextSiblingElement("pos")) {
-      points.push_back({pos, *number(*pos, "x", src, true), *number(*pos, "y", src, true)});
+  for (const xml::Element &starts : world.children("startPositions")) {
+    for (const xml::Element &pos : starts.children("pos")) {
+      points.push_back({pos, *number(pos, "x", src, true), *number(pos, "y", src, true)});
     }
   }
   return points;
@@ -210,7 +209,7 @@ std::string named_walls(const std::vector<const Segment *> &walls) {
     const Segment &w = *walls[i];
     const bool last = i + 1 == walls.size();
     text += fmt::format("{}({}, {})-({}, {}) at line {}", i == 0 ? "" : last ? " and " : ", ", w.x1, w.y1, w.x2,
-                        w.y2, w.element->GetLineNum());
+                        w.y2, w.element.line());
   }
   if (walls.size() > kNamed) text += fmt::format(" and {} more", walls.size() - kNamed);
   return text;
@@ -221,7 +220,7 @@ std::string named_walls(const std::vector<const Segment *> &walls) {
 // positions when every wall lies on it, else the lattice of the wall ends; in that last case,
 // when the start positions have a lattice of their own, a warning names the walls off it.
 Grid infer_grid(const std::vector<Segment> &segments, const std::vector<StartPoint> &starts, double thickness_m,
-                const Source &src, const tinyxml2::XMLElement &world, const XmlReadOptions &options,
+                const Source &src, const xml::Element &world, const XmlReadOptions &options,
                 std::vector<std::string> &warnings) {
   const Extent e = extent_of(segments);
   check_thin_walls(segments, thickness_m, src);
@@ -278,7 +277,7 @@ Grid infer_grid(const std::vector<Segment> &segments, const std::vector<StartPoi
 int grid_index(double v, double origin, const Grid &g, const Segment &s, const char *name, const Source &src) {
   const double k = (v - origin) / g.cell;
   if (std::abs(k - std::round(k)) > kGridTolerance) {
-    throw src.error(*s.element, name,
+    throw src.error(s.element, name,
                     fmt::format("wall end {}={} is off the grid (cells of {} m from ({}, {}))", name, v, g.cell,
                                 g.origin_x, g.origin_y));
   }
@@ -316,7 +315,7 @@ double index_along(double v, double origin, double cell, int ahead) {
 
 // The cell holding the point, or an error when the point is outside the maze. A point on a
 // grid line goes to the cell east or north of it unless `heading` points west or south.
-Cell cell_at(const tinyxml2::XMLElement &e, const Grid &g, const Source &src, const char *what,
+Cell cell_at(const xml::Element &e, const Grid &g, const Source &src, const char *what,
              Side heading = Side::north) {
   const double x = *number(e, "x", src, true);
   const double y = *number(e, "y", src, true);
@@ -331,7 +330,7 @@ Cell cell_at(const tinyxml2::XMLElement &e, const Grid &g, const Source &src, co
   return {static_cast<int>(i), static_cast<int>(j)};
 }
 
-Side heading_of(const tinyxml2::XMLElement &pos, const Source &src) {
+Side heading_of(const xml::Element &pos, const Source &src) {
   const double theta = number(pos, "theta", src, false).value_or(std::numbers::pi / 2);
   const double quarters = std::round(theta / (std::numbers::pi / 2));
   if (std::abs(theta - quarters * std::numbers::pi / 2) > kHeadingTolerance_rad) {
@@ -345,7 +344,7 @@ Side heading_of(const tinyxml2::XMLElement &pos, const Source &src) {
 }
 
 // A colour component of a <landmark>: a number in [0, 1], 1 when left out.
-double colour(const tinyxml2::XMLElement &e, const char *name, const Source &src) {
+double colour(const xml::Element &e, const char *name, const Source &src) {
   const double v = number(e, name, src, false).value_or(1.0);
   if (v < 0.0 || v > 1.0) throw src.error(e, name, fmt::format("{} must be 0 to 1, got {}", name, v));
   return v;
@@ -353,7 +352,7 @@ double colour(const tinyxml2::XMLElement &e, const char *name, const Source &src
 
 // <landmark x y [height] [red green blue]/>: x and y required, inside the maze; height
 // positive (the course's 1.5 m when left out).
-Landmark read_landmark(const tinyxml2::XMLElement &e, const Grid &g, const Source &src) {
+Landmark read_landmark(const xml::Element &e, const Grid &g, const Source &src) {
   Landmark l;
   l.x_m = *number(e, "x", src, true);
   l.y_m = *number(e, "y", src, true);
@@ -366,14 +365,13 @@ Landmark read_landmark(const tinyxml2::XMLElement &e, const Grid &g, const Sourc
   return l;
 }
 
-void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, const Source &src, RawMaze &raw) {
+void read_start_and_goals(const xml::Element &world, const Grid &g, const Source &src, RawMaze &raw) {
   raw.start_where = src.at(world);
-  for (auto *starts = world.FirstChildElement("startPositions"); starts != nullptr;
-       starts = starts->NextSiblingElement("startPositions")) {
-    for (auto *pos = starts->FirstChildElement("pos"); pos != nullptr; pos = pos->NextSiblingElement("pos")) {
-      const Side heading = heading_of(*pos, src);
-      raw.start_positions.push_back({cell_at(*pos, g, src, "start", heading), heading});
-      raw.start_positions_where.push_back(src.at(*pos, "x"));
+  for (const xml::Element &starts : world.children("startPositions")) {
+    for (const xml::Element &pos : starts.children("pos")) {
+      const Side heading = heading_of(pos, src);
+      raw.start_positions.push_back({cell_at(pos, g, src, "start", heading), heading});
+      raw.start_positions_where.push_back(src.at(pos, "x"));
     }
   }
   if (!raw.start_positions.empty()) {
@@ -381,13 +379,12 @@ void read_start_and_goals(const tinyxml2::XMLElement &world, const Grid &g, cons
     raw.start_heading = raw.start_positions.front().heading;
     raw.start_where = raw.start_positions_where.front();
   }
-  for (auto *e = world.FirstChildElement("landmark"); e != nullptr; e = e->NextSiblingElement("landmark")) {
-    raw.landmarks.push_back(read_landmark(*e, g, src));
+  for (const xml::Element &e : world.children("landmark")) {
+    raw.landmarks.push_back(read_landmark(e, g, src));
   }
-  Source::Cursor cursor;
-  for (auto *e = world.FirstChildElement("goal"); e != nullptr; e = e->NextSiblingElement("goal")) {
-    raw.goals.push_back(cell_at(*e, g, src, "goal"));
-    raw.goal_where.push_back(src.at(*e, "x", &cursor));
+  for (const xml::Element &e : world.children("goal")) {
+    raw.goals.push_back(cell_at(e, g, src, "goal"));
+    raw.goal_where.push_back(src.at(e, "x"));
   }
 }
 
@@ -397,8 +394,8 @@ Maze read_xml(std::string_view text, const std::string &file) { return read_xml(
 
 XmlRead read_xml(std::string_view text, const std::string &file, const XmlReadOptions &options) {
   const Source src(text, file);
-  tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
-  const tinyxml2::XMLElement &world = parse(doc, src);
+  const xml::Document doc = xml::Document::parse(text, file);
+  const xml::Element world = xml::world_of(doc, src);
 
   double thickness_m = kDefaultWallThickness_m;
   const auto segments = read_segments(world, src, thickness_m);

@@ -1,7 +1,8 @@
 #pragma once
-// Where in an XML world file an element is, for located errors, and its numeric attributes
-// read with their place (xml_format.cpp).
+// Where in an XML world file an element and its attributes are, for located errors, and its
+// numeric attributes read with their place (xml_format.cpp, xml_arena.cpp).
 
+#include <algorithm>
 #include <charconv>
 #include <cctype>
 #include <cmath>
@@ -12,93 +13,75 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <tinyxml2.h>
 
 #include "common/error.hpp"
+#include "xml_document.hpp"
 
 namespace maze::xml {
 
 struct Source {
   std::string_view text;
   const std::string &file;
-  std::vector<std::size_t> line_starts;
 
-  Source(std::string_view t, const std::string &f) : text(t), file(f) {
-    line_starts.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      if (text[i] == '\n') line_starts.push_back(i + 1);
-    }
+  Source(std::string_view t, const std::string &f) : text(t), file(f) {}
+
+  // The element's place, or the place of its attribute `attribute=` when the start tag holds
+  // it (on the tag's line or a later one).
+  common::SourceLocation at(const Element &e, const char *attribute = nullptr) const {
+    const std::size_t found = attribute == nullptr ? std::string_view::npos : attribute_offset(e, attribute);
+    if (found == std::string_view::npos) return {file, e.line(), e.column()};
+    const std::string_view before = text.substr(e.offset(), found - e.offset());
+    const std::size_t newline = before.rfind('\n');
+    if (newline == std::string_view::npos) return {file, e.line(), e.column() + characters(before)};
+    const int lines = static_cast<int>(std::count(before.begin(), before.end(), '\n'));
+    return {file, e.line() + lines, 1 + characters(before.substr(newline + 1))};
   }
 
-  // The element's line, and the column of `attribute=` on that line if it is there. Several
-  // elements on one line are told apart by counting the earlier siblings of the same name.
-  // With a cursor (elements of one name visited in document order), the tag is searched from
-  // the one before on its line: N elements on one line cost O(line), not O(N * line).
-  struct Cursor {
-    int line = 0;
-    std::size_t from = 0;
-  };
-  common::SourceLocation at(const tinyxml2::XMLElement &e, const char *attribute = nullptr,
-                            Cursor *cursor = nullptr) const {
-    const int line = e.GetLineNum();
-    if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {file, 0, 0};
-    const std::size_t begin = line_starts[static_cast<std::size_t>(line - 1)];
-    const std::size_t end = static_cast<std::size_t>(line) < line_starts.size()
-                                ? line_starts[static_cast<std::size_t>(line)]
-                                : text.size();
-    const std::string_view text_of_line = text.substr(begin, end - begin);
-    if (cursor != nullptr && cursor->line != line) *cursor = Cursor{line, 0};
-    std::size_t column = cursor == nullptr ? find_tag(text_of_line, e.Name(), earlier_on_same_line(e))
-                                           : find_tag(text_of_line.substr(cursor->from), e.Name(), 0);
-    if (cursor != nullptr && column != std::string_view::npos) cursor->from = (column += cursor->from) + 1;
-    if (attribute != nullptr && column != std::string_view::npos) {
-      column = text_of_line.find(fmt::format(" {}=", attribute), column);
-      if (column != std::string_view::npos) ++column;
-    }
-    if (column == std::string_view::npos) return {file, line, 0};
-    return {file, line, static_cast<int>(column + 1)};
-  }
-
-  static std::size_t earlier_on_same_line(const tinyxml2::XMLElement &e) {
-    std::size_t n = 0;
-    for (auto *p = e.PreviousSiblingElement(e.Name()); p != nullptr && p->GetLineNum() == e.GetLineNum();
-         p = p->PreviousSiblingElement(e.Name())) {
-      ++n;
-    }
-    return n;
-  }
-
-  // Where the (skip + 1)-th tag `<name` starts in the line.
-  static std::size_t find_tag(std::string_view line, std::string_view name, std::size_t skip) {
-    const std::string tag = fmt::format("<{}", name);
-    for (std::size_t at = line.find(tag); at != std::string_view::npos; at = line.find(tag, at + 1)) {
-      const std::size_t after = at + tag.size();
-      const bool whole = after == line.size() || std::string_view(" \t\r\n/>").find(line[after]) != std::string_view::npos;
-      if (!whole) continue;
-      if (skip == 0) return at;
-      --skip;
+  // The byte offset of the attribute's name in the element's start tag, or npos.
+  std::size_t attribute_offset(const Element &e, std::string_view attribute) const {
+    constexpr std::string_view kBlank = " \t\r\n";
+    std::size_t i = e.offset();
+    if (i >= text.size() || text[i] != '<') return std::string_view::npos;
+    i = text.find_first_of(" \t\r\n/>", i);
+    while (i < text.size()) {
+      i = text.find_first_not_of(kBlank, i);
+      if (i == std::string_view::npos || text[i] == '/' || text[i] == '>') return std::string_view::npos;
+      const std::size_t name_end = text.find_first_of(" \t\r\n=", i);
+      if (name_end == std::string_view::npos) return std::string_view::npos;
+      if (text.substr(i, name_end - i) == attribute) return i;
+      const std::size_t quote = text.find_first_of("\"'", name_end);
+      if (quote == std::string_view::npos) return std::string_view::npos;
+      const std::size_t close = text.find(text[quote], quote + 1);
+      if (close == std::string_view::npos) return std::string_view::npos;
+      i = close + 1;
     }
     return std::string_view::npos;
   }
 
-  common::InputError error(const tinyxml2::XMLElement &e, const char *attribute, std::string message) const {
+  // UTF-8 characters in the bytes (the parser counts columns in characters).
+  static int characters(std::string_view bytes) {
+    return static_cast<int>(std::count_if(bytes.begin(), bytes.end(), [](char c) {
+      return (static_cast<unsigned char>(c) & 0xC0u) != 0x80u;
+    }));
+  }
+
+  common::InputError error(const Element &e, const char *attribute, std::string message) const {
     return common::InputError(at(e, attribute), std::move(message));
   }
 };
 
-inline std::optional<double> number(const tinyxml2::XMLElement &e, const char *name, const Source &src,
-                                    bool required) {
-  const char *value = e.Attribute(name);
-  if (value == nullptr) {
-    if (required) throw src.error(e, nullptr, fmt::format("<{}> needs the attribute {}", e.Name(), name));
+inline std::optional<double> number(const Element &e, const char *name, const Source &src, bool required) {
+  const std::optional<std::string_view> value = e.attribute(name);
+  if (!value) {
+    if (required) throw src.error(e, nullptr, fmt::format("<{}> needs the attribute {}", e.name(), name));
     return std::nullopt;
   }
-  std::string_view text(value);
+  std::string_view text = *value;
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
   double result = 0.0;
   const auto [stop, ec] = std::from_chars(text.data(), text.data() + text.size(), result);
-  const std::string shown(std::string_view(value).substr(0, 20));
+  const std::string shown(value->substr(0, 20));
   if (ec != std::errc() || stop != text.data() + text.size() || text.empty()) {
     throw src.error(e, name, fmt::format("{} is not a number: '{}'", name, shown));
   }
@@ -109,25 +92,13 @@ inline std::optional<double> number(const tinyxml2::XMLElement &e, const char *n
   return result;
 }
 
-// tinyxml2's XML_ERROR_MISMATCHED_ELEMENT as "mismatched element".
-inline std::string error_name(tinyxml2::XMLError id) {
-  std::string name = tinyxml2::XMLDocument::ErrorIDToName(id);
-  if (name.starts_with("XML_ERROR_")) name.erase(0, 10);
-  for (char &c : name) c = c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return name;
-}
-
-inline const tinyxml2::XMLElement &parse(tinyxml2::XMLDocument &doc, const Source &src) {
-  if (doc.Parse(src.text.data(), src.text.size()) != tinyxml2::XML_SUCCESS) {
-    throw common::InputError(common::SourceLocation{src.file, doc.ErrorLineNum(), 0},
-                             fmt::format("not well-formed XML: {}", error_name(doc.ErrorID())));
+// The document's root, which must be <world>.
+inline Element world_of(const Document &doc, const Source &src) {
+  const Element root = doc.root();
+  if (root.name() != "world") {
+    throw src.error(root, nullptr, fmt::format("the root element is <{}>; expected <world>", root.name()));
   }
-  const tinyxml2::XMLElement *root = doc.RootElement();
-  if (root == nullptr) throw common::InputError(common::SourceLocation{src.file, 0, 0}, "no XML element: expected <world>");
-  if (std::string_view(root->Name()) != "world") {
-    throw src.error(*root, nullptr, fmt::format("the root element is <{}>; expected <world>", root->Name()));
-  }
-  return *root;
+  return root;
 }
 
 }  // namespace maze::xml

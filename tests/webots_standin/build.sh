@@ -12,7 +12,7 @@
 #   lib/controller/libCppController.so    CppController.cpp: a robot with no devices whose
 #   lib/controller/libController.so       simulation has ended; an empty C library
 # The configure needs only what the controller links (Eigen, fmt): no CLI11, libpng,
-# tinyxml2 or nlohmann-json.
+# expat or nlohmann-json.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out=$(realpath -m "${1:-build/webots-standin}")
