@@ -2,7 +2,6 @@
 #include "robot/controller_args.hpp"
 
 #include <cmath>
-#include <functional>
 #include <optional>
 
 #include <fmt/format.h>
@@ -120,6 +119,12 @@ void clamp(const Arg &a, ControllerOptions &o) {
   o.sensor.clamp = mapping::Clamp{(*v)[0], (*v)[1]};
 }
 
+void max_steps(const Arg &a, ControllerOptions &o) {
+  const auto v = number<std::int64_t>(a.value);
+  if (!v) bad(a.text, "an integer");
+  o.motion.max_steps = *v;
+}
+
 void bumper(const Arg &a, ControllerOptions &o) {
   const auto f = split(a.value, ',', 3);
   const auto angle = f ? number<double>((*f)[0]) : std::nullopt;
@@ -138,55 +143,132 @@ void range(const Arg &a, ControllerOptions &o) {
   o.sensing.ranges.push_back({std::string((*f)[5]), v[0], v[1], v[2], v[3], v[4]});
 }
 
-using Setter = std::function<void(const Arg &, ControllerOptions &)>;
+std::string num(double v) { return fmt::format("{}", v); }
 
+// What a key writes: one value, several (a repeated key) or none (an option at its default).
+using Values = std::vector<std::string>;
+using Setter = void (*)(const Arg &, ControllerOptions &);
+using Writer = void (*)(const ControllerOptions &o, const ControllerOptions &defaults, Values &out);
+
+// A key's reading and its writing side by side: each key is described here once.
 struct Key {
   std::string_view key;
   Setter set;
+  Writer write;
 };
+
+using O = const ControllerOptions &;
+
+// The grid, the start and goals, and the mapping options.
+std::vector<Key> map_keys() {
+  return {
+      {"size", size,
+       [](O o, O, Values &v) { v.push_back(fmt::format("{}x{}", o.geometry.width_cells, o.geometry.height_cells)); }},
+      {"cell-size", [](const Arg &a, ControllerOptions &o) { o.geometry.cell_size_m = real(a); },
+       [](O o, O, Values &v) { v.push_back(num(o.geometry.cell_size_m)); }},
+      {"origin", origin,
+       [](O o, O, Values &v) {
+         v.push_back(fmt::format("{},{}", num(o.geometry.origin.x_m), num(o.geometry.origin.y_m)));
+       }},
+      {"subcells", [](const Arg &a, ControllerOptions &o) { o.geometry.subcells = integer(a); },
+       [](O o, O, Values &v) { v.push_back(std::to_string(o.geometry.subcells)); }},
+      {"start", [](const Arg &a, ControllerOptions &o) { o.start = cell(a); },
+       [](O o, O, Values &v) { v.push_back(fmt::format("{},{}", o.start.x, o.start.y)); }},
+      {"heading", [](const Arg &a, ControllerOptions &o) { o.start_heading = heading(a); },
+       [](O o, O, Values &v) { v.emplace_back(1, mapping::to_char(o.start_heading)); }},
+      {"goal", [](const Arg &a, ControllerOptions &o) { o.goals.push_back(cell(a)); },
+       [](O o, O, Values &v) { for (const mapping::Cell g : o.goals) v.push_back(fmt::format("{},{}", g.x, g.y)); }},
+      {"model", [](const Arg &a, ControllerOptions &o) { o.model.kind = sensing::parse_model(a.value); },
+       [](O o, O, Values &v) { v.emplace_back(sensing::to_string(o.model.kind)); }},
+      {"strategy", [](const Arg &a, ControllerOptions &o) { o.strategy = explore::parse_strategy(a.value); },
+       [](O o, O, Values &v) { v.emplace_back(explore::to_string(o.strategy)); }},
+      {"hit-depth", [](const Arg &a, ControllerOptions &o) { o.model.hit_depth = integer(a); },
+       [](O o, O d, Values &v) {
+         if (o.model.hit_depth != d.model.hit_depth) v.push_back(std::to_string(o.model.hit_depth));
+       }},
+      {"ignore-no-return", [](const Arg &a, ControllerOptions &o) { o.model.ignore_no_return = flag(a); },
+       [](O o, O, Values &v) { if (o.model.ignore_no_return) v.emplace_back("true"); }},
+      {"threshold", [](const Arg &a, ControllerOptions &o) { o.occupied_threshold = static_cast<float>(real(a)); },
+       [](O o, O, Values &v) { if (o.occupied_threshold) v.push_back(num(*o.occupied_threshold)); }},
+      {"p-free", [](const Arg &a, ControllerOptions &o) { o.sensor.p_free = real(a); },
+       [](O o, O d, Values &v) { if (o.sensor.p_free != d.sensor.p_free) v.push_back(num(o.sensor.p_free)); }},
+      {"p-occ", [](const Arg &a, ControllerOptions &o) { o.sensor.p_occ = real(a); },
+       [](O o, O d, Values &v) { if (o.sensor.p_occ != d.sensor.p_occ) v.push_back(num(o.sensor.p_occ)); }},
+      {"prior", [](const Arg &a, ControllerOptions &o) { o.sensor.prior = real(a); },
+       [](O o, O d, Values &v) { if (o.sensor.prior != d.sensor.prior) v.push_back(num(o.sensor.prior)); }},
+      {"log-base", log_base,
+       [](O o, O, Values &v) { if (o.sensor.base == mapping::LogBase::ten) v.emplace_back("10"); }},
+      {"clamp", clamp,
+       [](O o, O, Values &v) {
+         if (o.sensor.clamp) v.push_back(fmt::format("{},{}", num(o.sensor.clamp->min), num(o.sensor.clamp->max)));
+       }},
+      {"pie-beta-rad", [](const Arg &a, ControllerOptions &o) { o.sensing.range_model.pie_half_angle_rad = real(a); },
+       [](O o, O d, Values &v) {
+         const double x = o.sensing.range_model.pie_half_angle_rad;
+         if (x != d.sensing.range_model.pie_half_angle_rad) v.push_back(num(x));
+       }},
+      {"pie-alpha", [](const Arg &a, ControllerOptions &o) { o.sensing.range_model.pie_contact_m = real(a); },
+       [](O o, O d, Values &v) {
+         const double x = o.sensing.range_model.pie_contact_m;
+         if (x != d.sensing.range_model.pie_contact_m) v.push_back(num(x));
+       }},
+      {"pie-usable", [](const Arg &a, ControllerOptions &o) { o.sensing.range_model.pie_usable_fraction = real(a); },
+       [](O o, O d, Values &v) {
+         const double x = o.sensing.range_model.pie_usable_fraction;
+         if (x != d.sensing.range_model.pie_usable_fraction) v.push_back(num(x));
+       }},
+  };
+}
+
+// The run's limits and the robot's description.
+std::vector<Key> robot_keys() {
+  return {
+      {"speed-run", [](const Arg &a, ControllerOptions &o) { o.speed_run = flag(a); },
+       [](O o, O, Values &v) { if (o.speed_run) v.emplace_back("true"); }},
+      {"max-steps", max_steps, [](O o, O, Values &v) { v.push_back(std::to_string(o.motion.max_steps)); }},
+      {"wheel-radius", [](const Arg &a, ControllerOptions &o) { o.motion.wheel_radius_m = real(a); },
+       [](O o, O, Values &v) { v.push_back(num(o.motion.wheel_radius_m)); }},
+      {"axle", [](const Arg &a, ControllerOptions &o) { o.motion.axle_m = real(a); },
+       [](O o, O, Values &v) { v.push_back(num(o.motion.axle_m)); }},
+      {"lidar-noise", [](const Arg &a, ControllerOptions &o) { o.scan_filter.range_noise_m = real(a); },
+       [](O o, O, Values &v) { v.push_back(num(o.scan_filter.range_noise_m)); }},
+      {"left-motor", [](const Arg &a, ControllerOptions &o) { o.devices.left_motor = name(a); },
+       [](O o, O, Values &v) { v.push_back(o.devices.left_motor); }},
+      {"right-motor", [](const Arg &a, ControllerOptions &o) { o.devices.right_motor = name(a); },
+       [](O o, O, Values &v) { v.push_back(o.devices.right_motor); }},
+      {"left-encoder", [](const Arg &a, ControllerOptions &o) { o.devices.left_encoder = name(a); },
+       [](O o, O, Values &v) { v.push_back(o.devices.left_encoder); }},
+      {"right-encoder", [](const Arg &a, ControllerOptions &o) { o.devices.right_encoder = name(a); },
+       [](O o, O, Values &v) { v.push_back(o.devices.right_encoder); }},
+      {"imu", [](const Arg &a, ControllerOptions &o) { o.devices.imu = name(a); },
+       [](O o, O, Values &v) { v.push_back(o.devices.imu); }},
+      {"gps", [](const Arg &a, ControllerOptions &o) { o.devices.gps = std::string(a.value); },
+       [](O o, O, Values &v) { v.push_back(o.devices.gps); }},
+      {"lidar", [](const Arg &a, ControllerOptions &o) { o.devices.lidar = name(a); },
+       [](O o, O, Values &v) { v.push_back(o.devices.lidar); }},
+      {"bumper", bumper,
+       [](O o, O, Values &v) {
+         for (const BumperMount &b : o.sensing.bumpers) {
+           v.push_back(fmt::format("{},{},{}", num(b.angle_rad), num(b.offset_m), b.name));
+         }
+       }},
+      {"range", range,
+       [](O o, O, Values &v) {
+         for (const RangeSensorMount &r : o.sensing.ranges) {
+           v.push_back(fmt::format("{},{},{},{},{},{}", num(r.angle_rad), num(r.offset_m), num(r.max_range_m),
+                                   num(r.aperture_rad), num(r.range_error), r.name));
+         }
+       }},
+  };
+}
 
 // Every key the controller reads, in the order format_controller_args writes them.
 const std::vector<Key> &keys() {
-  static const std::vector<Key> table = {
-      {"size", size},
-      {"cell-size", [](const Arg &a, ControllerOptions &o) { o.geometry.cell_size_m = real(a); }},
-      {"origin", origin},
-      {"subcells", [](const Arg &a, ControllerOptions &o) { o.geometry.subcells = integer(a); }},
-      {"start", [](const Arg &a, ControllerOptions &o) { o.start = cell(a); }},
-      {"heading", [](const Arg &a, ControllerOptions &o) { o.start_heading = heading(a); }},
-      {"goal", [](const Arg &a, ControllerOptions &o) { o.goals.push_back(cell(a)); }},
-      {"model", [](const Arg &a, ControllerOptions &o) { o.model.kind = sensing::parse_model(a.value); }},
-      {"strategy", [](const Arg &a, ControllerOptions &o) { o.strategy = explore::parse_strategy(a.value); }},
-      {"hit-depth", [](const Arg &a, ControllerOptions &o) { o.model.hit_depth = integer(a); }},
-      {"ignore-no-return", [](const Arg &a, ControllerOptions &o) { o.model.ignore_no_return = flag(a); }},
-      {"threshold", [](const Arg &a, ControllerOptions &o) { o.occupied_threshold = static_cast<float>(real(a)); }},
-      {"p-free", [](const Arg &a, ControllerOptions &o) { o.sensor.p_free = real(a); }},
-      {"p-occ", [](const Arg &a, ControllerOptions &o) { o.sensor.p_occ = real(a); }},
-      {"prior", [](const Arg &a, ControllerOptions &o) { o.sensor.prior = real(a); }},
-      {"log-base", log_base},
-      {"clamp", clamp},
-      {"pie-beta-rad", [](const Arg &a, ControllerOptions &o) { o.sensing.range_model.pie_half_angle_rad = real(a); }},
-      {"pie-alpha", [](const Arg &a, ControllerOptions &o) { o.sensing.range_model.pie_contact_m = real(a); }},
-      {"pie-usable", [](const Arg &a, ControllerOptions &o) { o.sensing.range_model.pie_usable_fraction = real(a); }},
-      {"speed-run", [](const Arg &a, ControllerOptions &o) { o.speed_run = flag(a); }},
-      {"max-steps", [](const Arg &a, ControllerOptions &o) {
-         const auto v = number<std::int64_t>(a.value);
-         if (!v) bad(a.text, "an integer");
-         o.motion.max_steps = *v;
-       }},
-      {"wheel-radius", [](const Arg &a, ControllerOptions &o) { o.motion.wheel_radius_m = real(a); }},
-      {"axle", [](const Arg &a, ControllerOptions &o) { o.motion.axle_m = real(a); }},
-      {"lidar-noise", [](const Arg &a, ControllerOptions &o) { o.scan_filter.range_noise_m = real(a); }},
-      {"left-motor", [](const Arg &a, ControllerOptions &o) { o.devices.left_motor = name(a); }},
-      {"right-motor", [](const Arg &a, ControllerOptions &o) { o.devices.right_motor = name(a); }},
-      {"left-encoder", [](const Arg &a, ControllerOptions &o) { o.devices.left_encoder = name(a); }},
-      {"right-encoder", [](const Arg &a, ControllerOptions &o) { o.devices.right_encoder = name(a); }},
-      {"imu", [](const Arg &a, ControllerOptions &o) { o.devices.imu = name(a); }},
-      {"gps", [](const Arg &a, ControllerOptions &o) { o.devices.gps = std::string(a.value); }},
-      {"lidar", [](const Arg &a, ControllerOptions &o) { o.devices.lidar = name(a); }},
-      {"bumper", bumper},
-      {"range", range},
-  };
+  static const std::vector<Key> table = [] {
+    std::vector<Key> all = map_keys();
+    for (Key &k : robot_keys()) all.push_back(k);
+    return all;
+  }();
   return table;
 }
 
@@ -208,8 +290,6 @@ void apply_arg(std::string_view text, ControllerOptions &options) {
       fmt::format("unknown controller argument '{}' (known, as --key=value: {})", text, known_keys()));
 }
 
-std::string num(double v) { return fmt::format("{}", v); }
-
 }  // namespace
 
 ControllerOptions parse_controller_args(std::span<const std::string> args) {
@@ -225,49 +305,15 @@ ControllerOptions parse_controller_args(std::span<const std::string> args) {
 }
 
 std::vector<std::string> format_controller_args(const ControllerOptions &o) {
-  const ControllerOptions d;
-  std::vector<std::string> a;
-  const auto put = [&a](std::string_view key, const std::string &value) { a.push_back(fmt::format("--{}={}", key, value)); };
-  const mapping::GridGeometry &g = o.geometry;
-  put("size", fmt::format("{}x{}", g.width_cells, g.height_cells));
-  put("cell-size", num(g.cell_size_m));
-  put("origin", fmt::format("{},{}", num(g.origin.x_m), num(g.origin.y_m)));
-  put("subcells", std::to_string(g.subcells));
-  put("start", fmt::format("{},{}", o.start.x, o.start.y));
-  put("heading", std::string(1, mapping::to_char(o.start_heading)));
-  for (const mapping::Cell goal : o.goals) put("goal", fmt::format("{},{}", goal.x, goal.y));
-  put("model", std::string(sensing::to_string(o.model.kind)));
-  put("strategy", std::string(explore::to_string(o.strategy)));
-  if (o.model.hit_depth != d.model.hit_depth) put("hit-depth", std::to_string(o.model.hit_depth));
-  if (o.model.ignore_no_return) put("ignore-no-return", "true");
-  if (o.occupied_threshold) put("threshold", num(*o.occupied_threshold));
-  if (o.sensor.p_free != d.sensor.p_free) put("p-free", num(o.sensor.p_free));
-  if (o.sensor.p_occ != d.sensor.p_occ) put("p-occ", num(o.sensor.p_occ));
-  if (o.sensor.prior != d.sensor.prior) put("prior", num(o.sensor.prior));
-  if (o.sensor.base == mapping::LogBase::ten) put("log-base", "10");
-  if (o.sensor.clamp) put("clamp", fmt::format("{},{}", num(o.sensor.clamp->min), num(o.sensor.clamp->max)));
-  const sensing::RangeModelOptions &r = o.sensing.range_model;
-  if (r.pie_half_angle_rad != d.sensing.range_model.pie_half_angle_rad) put("pie-beta-rad", num(r.pie_half_angle_rad));
-  if (r.pie_contact_m != d.sensing.range_model.pie_contact_m) put("pie-alpha", num(r.pie_contact_m));
-  if (r.pie_usable_fraction != d.sensing.range_model.pie_usable_fraction) put("pie-usable", num(r.pie_usable_fraction));
-  if (o.speed_run) put("speed-run", "true");
-  put("max-steps", std::to_string(o.motion.max_steps));
-  put("wheel-radius", num(o.motion.wheel_radius_m));
-  put("axle", num(o.motion.axle_m));
-  put("lidar-noise", num(o.scan_filter.range_noise_m));
-  put("left-motor", o.devices.left_motor);
-  put("right-motor", o.devices.right_motor);
-  put("left-encoder", o.devices.left_encoder);
-  put("right-encoder", o.devices.right_encoder);
-  put("imu", o.devices.imu);
-  put("gps", o.devices.gps);
-  put("lidar", o.devices.lidar);
-  for (const BumperMount &b : o.sensing.bumpers) put("bumper", fmt::format("{},{},{}", num(b.angle_rad), num(b.offset_m), b.name));
-  for (const RangeSensorMount &s : o.sensing.ranges) {
-    put("range", fmt::format("{},{},{},{},{},{}", num(s.angle_rad), num(s.offset_m), num(s.max_range_m),
-                             num(s.aperture_rad), num(s.range_error), s.name));
+  const ControllerOptions defaults;
+  std::vector<std::string> args;
+  Values values;
+  for (const Key &k : keys()) {
+    values.clear();
+    k.write(o, defaults, values);
+    for (const std::string &value : values) args.push_back(fmt::format("--{}={}", k.key, value));
   }
-  return a;
+  return args;
 }
 
 }  // namespace robot
