@@ -3,9 +3,13 @@
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "app/run/profile_json.hpp"
+#include "app/run/run_options.hpp"
+#include "cli_runner.hpp"
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
 
@@ -94,4 +98,27 @@ TEST_CASE("profile JSON: --robot names a file when it has a '/' or ends in .json
   CHECK(app::resolve_robot("hambot-12m") == maze::sim::find_profile("hambot-12m"));
   CHECK_THROWS_WITH_AS(app::resolve_robot("no/such.json"),
                        "cannot read no/such.json: No such file or directory", common::InputError);
+}
+
+TEST_CASE("profile JSON: a run reads its profile file once, and its copies share what was read") {
+  const test_cli::TempDir dir("profile_once");
+  std::filesystem::create_directories(dir.path);
+  const std::string file = (dir.path / "r.json").string();
+  const auto write = [&file](const std::string &text) {
+    std::ofstream(file) << text;
+  };
+  write(edited("\"max_range_m\": 12.0", "\"max_range_m\": 5.5"));
+  app::RunOptions options;
+  options.robot = file;
+  CHECK(app::robot_profile(options).lidars.at(0).max_range_m == 5.5);
+  write(edited("\"max_range_m\": 12.0", "\"max_range_m\": 7.5"));  // edited while the run goes on
+  CHECK(app::robot_profile(options).lidars.at(0).max_range_m == 5.5);
+  const app::RunOptions copy = options;
+  CHECK(&app::robot_profile(copy) == &app::robot_profile(options));
+  // Another robot named: read anew; fresh options read the file as it is now.
+  options.robot = "hambot-12m";
+  CHECK(app::robot_profile(options) == maze::sim::find_profile("hambot-12m"));
+  app::RunOptions fresh;
+  fresh.robot = file;
+  CHECK(app::robot_profile(fresh).lidars.at(0).max_range_m == 7.5);
 }

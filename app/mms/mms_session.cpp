@@ -230,7 +230,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   validate(mms);
   const auto started = Clock::now();
   const maze::Maze truth = with_goals(given);
-  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const maze::sim::RobotProfile &profile = robot_profile(options);
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   require_sensors(options, profile);
   mapping::validate(controller_opts.geometry, mapping::kDefaultMaxGridBytes);

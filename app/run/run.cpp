@@ -387,7 +387,7 @@ render::RobotMark robot_mark(const robot::RunResult &result, const RunOptions &o
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
-  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const maze::sim::RobotProfile &profile = robot_profile(options);
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   check_fit(options, truth, profile, controller_opts);
   webots::embedded::Simulation simulation(truth, profile, options.simulation);

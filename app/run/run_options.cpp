@@ -95,7 +95,7 @@ void check_lidar_options(const GivenOptions &given, const RunOptions &options, s
   const bool lidar_option = given.given("--dropout") || given.given("--spikes") ||
                             (given.given("--noise") && options.simulation.noise.value_or(0.0) > 0.0);
   if (!lidar_option) return;
-  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const maze::sim::RobotProfile &profile = robot_profile(options);
   if (!profile.lidars.empty()) return;
   for (const char *option : {"--dropout", "--spikes"}) {
     if (!given.given(option)) continue;
@@ -108,7 +108,7 @@ void check_lidar_options(const GivenOptions &given, const RunOptions &options, s
 }
 
 bool has_bumper(const RunOptions &options) {
-  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const maze::sim::RobotProfile &profile = robot_profile(options);
   return std::any_of(profile.bumpers.begin(), profile.bumpers.end(),
                      [&](const maze::sim::BumperSpec &b) { return b.name == options.simulation.stuck_bumper; });
 }
@@ -128,7 +128,7 @@ sensing::RangeSensorKind range_sensor_kind(maze::sim::DistanceSensorType type) {
 void check_range_sensor_kinds(const RunOptions &options, std::vector<std::string> &warnings) {
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   if (!setup.reads_ranges()) return;
-  const maze::sim::RobotProfile profile = resolve_robot(options.robot);
+  const maze::sim::RobotProfile &profile = robot_profile(options);
   std::string others;
   unsigned seen = 0;
   for (const maze::sim::DistanceSensorSpec &sensor : profile.distance_sensors) {
@@ -177,7 +177,15 @@ void validate(const RunOptions &o) {
   validate_run(o);
   o.simulation.validate();
   validate(o.output);
-  resolve_robot(o.robot);  // a bad profile file fails here, before any world is read
+  robot_profile(o);  // a bad profile file fails here, before any world is read
+}
+
+const maze::sim::RobotProfile &robot_profile(const RunOptions &options) {
+  if (!options.resolved_profile || options.resolved_for != options.robot) {
+    options.resolved_profile = std::make_shared<const maze::sim::RobotProfile>(resolve_robot(options.robot));
+    options.resolved_for = options.robot;
+  }
+  return *options.resolved_profile;
 }
 
 std::string_view default_robot(sensing::ModelKind model) { return sensing::setup(model).default_robot; }

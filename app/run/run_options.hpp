@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -76,7 +77,19 @@ struct RunOptions {
   maze::sim::SimulationOptions simulation;
   PlanOptions plan;
   OutputOptions output;
+
+  // robot_profile()'s memo: the profile read for `resolved_for`, shared by copies.
+  mutable std::shared_ptr<const maze::sim::RobotProfile> resolved_profile;
+  mutable std::string resolved_for;
 };
+
+// The profile `options.robot` names, read once: a FILE.json is read and checked by the first
+// call, and later calls on these options (or copies of them) reuse it while `robot` is
+// unchanged, so one run never sees two versions of a file being edited. Throws
+// common::InputError for an unknown name or a bad file. Not safe to call on one object from
+// two threads at once; copies are independent (the command line's validate() resolves before a
+// batch copies the options into its workers).
+const maze::sim::RobotProfile &robot_profile(const RunOptions &options);
 
 // Throws common::InputError naming the first unusable option; each concern's own validate
 // (sensor model, mapping, range models, wavefront, simulation), then the run's: --subcells,
