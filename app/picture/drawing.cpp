@@ -1,8 +1,5 @@
 #include "app/picture/drawing.hpp"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-#include <cairo.h>
 #include <png.h>
 
 #include <algorithm>
@@ -11,6 +8,7 @@
 #include <cstring>
 #include <numbers>
 
+#include "app/picture/cairo_library.hpp"
 #include "common/error.hpp"
 
 namespace app {
@@ -18,18 +16,18 @@ namespace {
 
 constexpr const char *kFontFamily = "DejaVu Sans";
 
-void set_colour(cairo_t *cr, Rgb c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+void set_colour(cairo_t *cr, Rgb c) { cairo().set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
 
 // Grey anti-aliasing, no hinting: the same glyph shapes at every size and in every format.
 void set_font(cairo_t *cr, double size_px) {
-  cairo_select_font_face(cr, kFontFamily, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size_px);
-  cairo_font_options_t *options = cairo_font_options_create();
-  cairo_font_options_set_antialias(options, CAIRO_ANTIALIAS_GRAY);
-  cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
-  cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
-  cairo_set_font_options(cr, options);
-  cairo_font_options_destroy(options);
+  cairo().select_font_face(cr, kFontFamily, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo().set_font_size(cr, size_px);
+  cairo_font_options_t *options = cairo().font_options_create();
+  cairo().font_options_set_antialias(options, CAIRO_ANTIALIAS_GRAY);
+  cairo().font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+  cairo().font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+  cairo().set_font_options(cr, options);
+  cairo().font_options_destroy(options);
 }
 
 cairo_status_t append_bytes(void *closure, const unsigned char *data, unsigned int length) {
@@ -40,18 +38,18 @@ cairo_status_t append_bytes(void *closure, const unsigned char *data, unsigned i
 // A context on a 1 x 1 image for text metrics, made once.
 cairo_t *metrics_context() {
   static cairo_t *cr = [] {
-    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
-    cairo_t *c = cairo_create(s);
-    cairo_surface_destroy(s);
+    cairo_surface_t *s = cairo().image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
+    cairo_t *c = cairo().create(s);
+    cairo().surface_destroy(s);
     return c;
   }();
   return cr;
 }
 
 void check(cairo_t *cr, const char *what) {
-  const cairo_status_t status = cairo_status(cr);
+  const cairo_status_t status = cairo().status(cr);
   if (status != CAIRO_STATUS_SUCCESS) {
-    throw common::RuntimeFailure(std::string("cairo: ") + what + ": " + cairo_status_to_string(status));
+    throw common::RuntimeFailure(std::string("cairo: ") + what + ": " + cairo().status_to_string(status));
   }
 }
 
@@ -66,11 +64,11 @@ void flush_nothing(png_structp) {}
 // small as trying every filter on every row, for far less CPU on a big map. Cairo's own PNG
 // writer tries every filter and writes RGBA.
 std::string encode_png(cairo_surface_t *surface) {
-  cairo_surface_flush(surface);
-  const int width = cairo_image_surface_get_width(surface);
-  const int height = cairo_image_surface_get_height(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  const unsigned char *data = cairo_image_surface_get_data(surface);
+  cairo().surface_flush(surface);
+  const int width = cairo().image_surface_get_width(surface);
+  const int height = cairo().image_surface_get_height(surface);
+  const int stride = cairo().image_surface_get_stride(surface);
+  const unsigned char *data = cairo().image_surface_get_data(surface);
   std::string bytes;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png == nullptr ? nullptr : png_create_info_struct(png);
@@ -136,21 +134,21 @@ Drawing::Drawing(int width_px, int height_px, PictureFormat format)
       vector_bytes_(std::make_unique<std::string>()) {
   switch (format) {
     case PictureFormat::png:
-      surface_ = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width_, height_);
+      surface_ = cairo().image_surface_create(CAIRO_FORMAT_RGB24, width_, height_);
       break;
     case PictureFormat::svg:
-      surface_ = cairo_svg_surface_create_for_stream(append_bytes, vector_bytes_.get(), width_, height_);
-      cairo_svg_surface_set_document_unit(surface_, CAIRO_SVG_UNIT_PX);
+      surface_ = cairo().svg_surface_create_for_stream(append_bytes, vector_bytes_.get(), width_, height_);
+      cairo().svg_surface_set_document_unit(surface_, CAIRO_SVG_UNIT_PX);
       break;
     case PictureFormat::pdf:
       // A pixel a PostScript point: a 480 px picture prints 6.7 inches wide.
-      surface_ = cairo_pdf_surface_create_for_stream(append_bytes, vector_bytes_.get(), width_, height_);
+      surface_ = cairo().pdf_surface_create_for_stream(append_bytes, vector_bytes_.get(), width_, height_);
       break;
   }
-  cr_ = cairo_create(surface_);
+  cr_ = cairo().create(surface_);
   check(cr_, "cannot start a picture");
   set_colour(cr_, kWhite);
-  cairo_paint(cr_);
+  cairo().paint(cr_);
 }
 
 Drawing::Drawing(Drawing &&other) noexcept
@@ -161,48 +159,48 @@ Drawing::Drawing(Drawing &&other) noexcept
 }
 
 Drawing::~Drawing() {
-  if (cr_ != nullptr) cairo_destroy(cr_);
-  if (surface_ != nullptr) cairo_surface_destroy(surface_);
+  if (cr_ != nullptr) cairo().destroy(cr_);
+  if (surface_ != nullptr) cairo().surface_destroy(surface_);
 }
 
 void Drawing::fill_rect(RectPx r, Rgb c) {
-  cairo_rectangle(cr_, r.x, r.y, r.w, r.h);
+  cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
   set_colour(cr_, c);
-  cairo_fill(cr_);
+  cairo().fill(cr_);
 }
 
 void Drawing::fill_rects(const std::vector<RectPx> &rects, Rgb c) {
   if (rects.empty()) return;
-  for (const RectPx &r : rects) cairo_rectangle(cr_, r.x, r.y, r.w, r.h);
+  for (const RectPx &r : rects) cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
   set_colour(cr_, c);
-  cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-  cairo_fill(cr_);
+  cairo().set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+  cairo().fill(cr_);
 }
 
 void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
-  cairo_rectangle(cr_, r.x, r.y, r.w, r.h);
-  cairo_set_line_width(cr_, line_px);
-  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_MITER);
+  cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
+  cairo().set_line_width(cr_, line_px);
+  cairo().set_line_join(cr_, CAIRO_LINE_JOIN_MITER);
   set_colour(cr_, c);
-  cairo_stroke(cr_);
+  cairo().stroke(cr_);
 }
 
 void Drawing::polyline(const std::vector<PointPx> &points, double line_px, Rgb c) {
   if (points.size() < 2) return;
-  cairo_move_to(cr_, points.front().x, points.front().y);
-  for (std::size_t i = 1; i < points.size(); ++i) cairo_line_to(cr_, points[i].x, points[i].y);
-  cairo_set_line_width(cr_, line_px);
-  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
-  cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+  cairo().move_to(cr_, points.front().x, points.front().y);
+  for (std::size_t i = 1; i < points.size(); ++i) cairo().line_to(cr_, points[i].x, points[i].y);
+  cairo().set_line_width(cr_, line_px);
+  cairo().set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  cairo().set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
   set_colour(cr_, c);
-  cairo_stroke(cr_);
+  cairo().stroke(cr_);
 }
 
 void Drawing::disc(PointPx centre, double radius_px, Rgb c) {
-  cairo_new_sub_path(cr_);
-  cairo_arc(cr_, centre.x, centre.y, radius_px, 0.0, 2.0 * std::numbers::pi);
+  cairo().new_sub_path(cr_);
+  cairo().arc(cr_, centre.x, centre.y, radius_px, 0.0, 2.0 * std::numbers::pi);
   set_colour(cr_, c);
-  cairo_fill(cr_);
+  cairo().fill(cr_);
 }
 
 void Drawing::ringed_disc(PointPx centre, double radius_px, Rgb c, double ring_px, Rgb ring) {
@@ -215,10 +213,10 @@ void Drawing::blocks(const std::vector<Rgb> &tones, int columns, int rows, Point
   if (columns <= 0 || rows <= 0) return;
   if (format_ == PictureFormat::png) {
     // One pixel a block, scaled up by nearest neighbour: exact blocks at integer scales.
-    cairo_surface_t *image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, columns, rows);
-    cairo_surface_flush(image);
-    unsigned char *data = cairo_image_surface_get_data(image);
-    const int stride = cairo_image_surface_get_stride(image);
+    cairo_surface_t *image = cairo().image_surface_create(CAIRO_FORMAT_RGB24, columns, rows);
+    cairo().surface_flush(image);
+    unsigned char *data = cairo().image_surface_get_data(image);
+    const int stride = cairo().image_surface_get_stride(image);
     for (int j = 0; j < rows; ++j) {
       auto *row = reinterpret_cast<std::uint32_t *>(data + static_cast<std::ptrdiff_t>(j) * stride);
       for (int i = 0; i < columns; ++i) {
@@ -226,22 +224,22 @@ void Drawing::blocks(const std::vector<Rgb> &tones, int columns, int rows, Point
         row[i] = static_cast<std::uint32_t>(t.r) << 16 | static_cast<std::uint32_t>(t.g) << 8 | t.b;
       }
     }
-    cairo_surface_mark_dirty(image);
-    cairo_save(cr_);
-    cairo_translate(cr_, top_left.x, top_left.y);
-    cairo_scale(cr_, block_w, block_h);
-    cairo_set_source_surface(cr_, image, 0.0, 0.0);
-    cairo_pattern_set_filter(cairo_get_source(cr_), CAIRO_FILTER_NEAREST);
-    cairo_rectangle(cr_, 0.0, 0.0, columns, rows);
-    cairo_fill(cr_);
-    cairo_restore(cr_);
-    cairo_surface_destroy(image);
+    cairo().surface_mark_dirty(image);
+    cairo().save(cr_);
+    cairo().translate(cr_, top_left.x, top_left.y);
+    cairo().scale(cr_, block_w, block_h);
+    cairo().set_source_surface(cr_, image, 0.0, 0.0);
+    cairo().pattern_set_filter(cairo().get_source(cr_), CAIRO_FILTER_NEAREST);
+    cairo().rectangle(cr_, 0.0, 0.0, columns, rows);
+    cairo().fill(cr_);
+    cairo().restore(cr_);
+    cairo().surface_destroy(image);
     return;
   }
   // SVG and PDF: rectangles, a run of equal blocks in a row as one, no anti-aliasing (no
   // seams between neighbours).
-  cairo_save(cr_);
-  cairo_set_antialias(cr_, CAIRO_ANTIALIAS_NONE);
+  cairo().save(cr_);
+  cairo().set_antialias(cr_, CAIRO_ANTIALIAS_NONE);
   for (int j = 0; j < rows; ++j) {
     int i = 0;
     while (i < columns) {
@@ -252,29 +250,29 @@ void Drawing::blocks(const std::vector<Rgb> &tones, int columns, int rows, Point
       i += run;
     }
   }
-  cairo_restore(cr_);
+  cairo().restore(cr_);
 }
 
 double Drawing::text(PointPx at, std::string_view s, double size_px, Rgb c, Align align) {
   const std::string str(s);
   set_font(cr_, size_px);
   cairo_text_extents_t e;
-  cairo_text_extents(cr_, str.c_str(), &e);
+  cairo().text_extents(cr_, str.c_str(), &e);
   double x = at.x;
   if (align == Align::centre) x -= e.x_advance / 2.0;
   if (align == Align::right) x -= e.x_advance;
-  cairo_move_to(cr_, x, at.y);
+  cairo().move_to(cr_, x, at.y);
   set_colour(cr_, c);
-  cairo_show_text(cr_, str.c_str());
-  cairo_new_path(cr_);
+  cairo().show_text(cr_, str.c_str());
+  cairo().new_path(cr_);
   return e.x_advance;
 }
 
 Rgb Drawing::at(int x, int y) {
   if (format_ != PictureFormat::png || x < 0 || y < 0 || x >= width_ || y >= height_) return kWhite;
-  cairo_surface_flush(surface_);
-  const unsigned char *data = cairo_image_surface_get_data(surface_);
-  const int stride = cairo_image_surface_get_stride(surface_);
+  cairo().surface_flush(surface_);
+  const unsigned char *data = cairo().image_surface_get_data(surface_);
+  const int stride = cairo().image_surface_get_stride(surface_);
   const std::uint32_t p = reinterpret_cast<const std::uint32_t *>(data + static_cast<std::ptrdiff_t>(y) * stride)[x];
   return Rgb{static_cast<unsigned char>(p >> 16 & 0xff), static_cast<unsigned char>(p >> 8 & 0xff),
              static_cast<unsigned char>(p & 0xff)};
@@ -283,12 +281,12 @@ Rgb Drawing::at(int x, int y) {
 std::string Drawing::encode() {
   check(cr_, "cannot draw the picture");
   if (format_ == PictureFormat::png) return encode_png(surface_);
-  cairo_destroy(cr_);
+  cairo().destroy(cr_);
   cr_ = nullptr;
-  cairo_surface_finish(surface_);
-  const cairo_status_t status = cairo_surface_status(surface_);
+  cairo().surface_finish(surface_);
+  const cairo_status_t status = cairo().surface_status(surface_);
   if (status != CAIRO_STATUS_SUCCESS) {
-    throw common::RuntimeFailure(std::string("cairo: cannot write the picture: ") + cairo_status_to_string(status));
+    throw common::RuntimeFailure(std::string("cairo: cannot write the picture: ") + cairo().status_to_string(status));
   }
   return std::move(*vector_bytes_);
 }
@@ -298,7 +296,7 @@ double text_width(std::string_view s, double size_px) {
   cairo_t *cr = metrics_context();
   set_font(cr, size_px);
   cairo_text_extents_t e;
-  cairo_text_extents(cr, str.c_str(), &e);
+  cairo().text_extents(cr, str.c_str(), &e);
   return e.x_advance;
 }
 
@@ -308,7 +306,7 @@ cairo_font_extents_t font_extents(double size_px) {
   cairo_t *cr = metrics_context();
   set_font(cr, size_px);
   cairo_font_extents_t e;
-  cairo_font_extents(cr, &e);
+  cairo().font_extents(cr, &e);
   return e;
 }
 
