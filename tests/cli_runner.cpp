@@ -10,12 +10,13 @@
 namespace test_cli {
 
 Ran run(std::vector<std::string> args) {
+  const std::string first = args.empty() ? "run" : args.front();  // as main() builds the command line
   args.insert(args.begin(), "maze_mapper");
   std::vector<const char *> argv;
   for (const std::string &a : args) argv.push_back(a.c_str());
   CLI::App cli{"maze_mapper", "maze_mapper"};
   app::CommandContext context;
-  app::add_commands(cli, context);
+  app::add_commands(cli, context, first);
   std::ostringstream out;
   std::streambuf *saved = std::cout.rdbuf(out.rdbuf());
   try {

@@ -25,7 +25,7 @@ namespace {
 std::string usage_error(std::vector<std::string> args) {
   CLI::App cli{"maze_mapper", "maze_mapper"};
   app::CommandContext context;
-  app::add_commands(cli, context);
+  app::add_commands(cli, context, args.empty() ? "run" : args.front());  // as main() builds it
   const std::vector<std::string> words = args;
   args.insert(args.begin(), "maze_mapper");
   std::vector<const char *> argv;
@@ -97,6 +97,26 @@ TEST_CASE("cli: every description is lowercase and says (default X) the same way
     }
   }
   CHECK(options > 100);
+}
+
+TEST_CASE("cli: a command line that names a command builds only that one; --version none") {
+  const auto built = [](std::string_view first_word) {
+    CLI::App cli{"maze_mapper", "maze_mapper"};
+    app::CommandContext context;
+    app::add_commands(cli, context, first_word);
+    std::vector<std::string> names;
+    for (const CLI::App *command : cli.get_subcommands({})) names.push_back(command->get_name());
+    return names;
+  };
+  CHECK(built("robot") == std::vector<std::string>{"robot"});
+  CHECK(built("map-log") == std::vector<std::string>{"map-log"});
+  CHECK(built("--version").empty());
+  const std::vector<std::string> all = built("");
+  CHECK(all.size() == 15);
+  CHECK(built("--help") == all);
+  CHECK(built("rnu") == all);        // a misspelt command: the error names the nearest of all
+  CHECK(built("reference") == all);  // the reference describes every command
+  CHECK(usage_error({"rnu"}) == "error: unknown command 'rnu'; did you mean run?");
 }
 
 TEST_CASE("cli: --robot's help names every built-in robot") {

@@ -4,6 +4,7 @@
 // User errors are thrown as common::InputError and reported by main().
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "maze/world.hpp"
@@ -35,9 +36,12 @@ std::vector<std::string> split_child_command(const std::vector<std::string> &arg
 // (cmd_mms.cpp, mms_session.hpp).
 void add_mms_command(CLI::App &cli, CommandContext &context);
 
-// Every subcommand declared here, and the program's own flags (--help, --version), in the order
-// `maze_mapper --help` lists them: one list, in cli_app.cpp.
-void add_commands(CLI::App &cli, CommandContext &context);
+// The program's own flags (--help, --version) and its subcommands, in the order `maze_mapper
+// --help` lists them: one list, in cli_app.cpp. `first_word` is the command line's first word:
+// when it names a subcommand only that one is built, and for `--version` none (a start that
+// builds every command's options costs about half a millisecond); otherwise (empty, --help, a
+// misspelt name, `reference`, which describes them all) every one.
+void add_commands(CLI::App &cli, CommandContext &context, std::string_view first_word = {});
 
 // maze_mapper demo 1d: the textbook 1-D log-odds exercise; `demo` alone lists the demos
 // (cmd_demo.cpp).

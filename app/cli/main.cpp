@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -28,7 +29,7 @@ int main(int argc, char **argv) {
                "4D log-odds occupancy grid",
                "maze_mapper"};
   app::CommandContext context;
-  app::add_commands(cli, context);
+  app::add_commands(cli, context, argc <= 1 ? std::string_view("run") : std::string_view(argv[1]));
   common::install_signal_handlers();
 
   std::vector<std::string> words;  // the command line as parsed, for a usage error
