@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -12,6 +13,8 @@
 #include "common/error.hpp"
 #include "maze/arena.hpp"
 #include "maze/arena_generator.hpp"
+#include "maze/sim/profile.hpp"
+#include "sensing/pie_demo.hpp"
 
 namespace {
 
@@ -91,6 +94,10 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   const app::RoomSummary reached = app::run_room(o, out);
   CHECK(reached.ending == robot::RoomEnding::goal_reached);
   CHECK(app::room_exit_status(reached) == 0);
+  o.robot = "ir-fan";  // Figure 1's six sensors over the front
+  const app::RoomSummary fan = app::run_room(o, out);
+  CHECK(fan.ending == robot::RoomEnding::goal_reached);
+  o.robot.clear();
 
   maze::Arena walled;
   walled.x_max_m = 3.0;
@@ -102,6 +109,35 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   const app::RoomSummary cut_off = app::run_room_in(walled, o, out);
   CHECK(cut_off.ending == robot::RoomEnding::unreachable);
   CHECK(app::room_exit_status(cut_off) == 1);
+}
+
+TEST_CASE("room wavefront: a goal one cell from an obstacle is reached (the growth keeps the way, not the goal)") {
+  maze::Arena arena;
+  arena.x_max_m = 3.0;
+  arena.y_max_m = 2.0;
+  arena.obstacles.push_back(maze::Obstacle::from_box(1.98, 0.6, 2.4, 1.4));  // its cells from x 1.9 m
+  arena.starts.push_back({0.5, 1.0, 0.0});
+  app::RoomRunOptions o;
+  o.world = "one box";
+  o.room.strategy = robot::RoomStrategy::wavefront;
+  o.room.goal = mapping::Point{1.85, 1.0};  // 0.13 m from the box: room for the body (0.09 m)
+  o.room.dilate = 1;
+  o.model.kind = sensing::ModelKind::ray;
+  o.quiet = true;
+  std::ostringstream out;
+  const app::RoomSummary s = app::run_room_in(arena, o, out);
+  INFO(s.message);
+  CHECK(s.ending == robot::RoomEnding::goal_reached);
+}
+
+TEST_CASE("ir-fan carries demo pie's Figure 1 mounts, left to right") {
+  const auto &fan = maze::sim::find_profile("ir-fan");
+  const sensing::PieDemoOptions figure;
+  REQUIRE(fan.distance_sensors.size() == figure.mounts_deg.size());
+  for (std::size_t n = 0; n < figure.mounts_deg.size(); ++n) {
+    CHECK(fan.distance_sensors[n].angle_rad * 180.0 / std::numbers::pi == doctest::Approx(figure.mounts_deg[n]));
+    CHECK(fan.distance_sensors[n].type == maze::sim::DistanceSensorType::infra_red);
+  }
 }
 
 TEST_CASE("room: bad input is refused before anything runs") {

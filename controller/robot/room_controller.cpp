@@ -237,7 +237,11 @@ RoomEnding RoomController::run_wavefront() {
       message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", room_.goal->x_m, room_.goal->y_m, steps_);
       return RoomEnding::goal_reached;
     }
-    wave_ = plan::wave_from(g, obstacles(false), goal);
+    std::vector<bool> blocked = obstacles(false);
+    // The growth keeps the way clear of the body; like the robot's own cell, the goal's is an
+    // end of the way: blocked only when the map says it is itself an obstacle.
+    blocked[goal] = map_.probability_at(goal) >= room_.free_below_p - 1e-9;
+    wave_ = plan::wave_from(g, blocked, goal);
     const auto path = plan::descend(g, wave_, here);
     if (!path) {
       path_.clear();
