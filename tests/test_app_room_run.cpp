@@ -140,6 +140,36 @@ TEST_CASE("ir-fan carries demo pie's Figure 1 mounts, left to right") {
   }
 }
 
+TEST_CASE("room waypoints: the list driven in laps, or round and round until the time limit") {
+  app::RoomRunOptions o;
+  o.world = std::string(WORLDS_DIR) + "/ir_room.room";
+  o.room.strategy = robot::RoomStrategy::waypoints;
+  o.room.waypoints = {{0.5, 0.5}, {0.5, 2.4}};  // west of the partition, there and back
+  o.model.kind = sensing::ModelKind::ray;
+  o.quiet = true;
+  std::ostringstream out;
+  o.room.laps = 2;
+  const app::RoomSummary twice = app::run_room(o, out);
+  CHECK(twice.ending == robot::RoomEnding::arrived);
+  CHECK(twice.message == "reached all 2 waypoints 2 times");
+  o.room.laps = 1;
+  const app::RoomSummary once = app::run_room(o, out);
+  CHECK(once.message == "reached all 2 waypoints");
+  CHECK(once.sim_time_s < twice.sim_time_s);
+
+  o.room.laps = 0;
+  o.room.time_limit_s = 30.0;
+  o.quiet = false;
+  o.snapshots_at_s = {5.0, 30.0};
+  std::ostringstream maps;
+  const app::RoomSummary timed = app::run_room(o, maps);
+  CHECK(timed.ending == robot::RoomEnding::time_up);
+  CHECK(app::room_exit_status(timed) == 0);
+  CHECK(timed.sim_time_s == doctest::Approx(30.0).epsilon(0.002));
+  CHECK(maps.str().find("--- t = 5 s: step") != std::string::npos);
+  CHECK(maps.str().find("--- t = 30 s: step") != std::string::npos);
+}
+
 TEST_CASE("room: bad input is refused before anything runs") {
   app::RoomRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";

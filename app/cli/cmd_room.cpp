@@ -86,6 +86,9 @@ void build(RoomInput &in, const CLI::App &cmd) {
   if (given("--waypoints") && o.room.strategy != RoomStrategy::waypoints) {
     throw common::InputError("--waypoints applies to --strategy waypoints only");
   }
+  if (given("--laps") && o.room.strategy != RoomStrategy::waypoints) {
+    throw common::InputError("--laps applies to --strategy waypoints only");
+  }
   if (given("--goal") && o.room.strategy != RoomStrategy::wavefront) {
     throw common::InputError("--goal applies to --strategy wavefront only");
   }
@@ -110,6 +113,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--boundary", in->boundary, "XS,XE,YS,YE: the map's extent, m (default the world's)");
   cmd->add_option("--start", in->start, "X,Y[,DEG]: where the robot starts, m (default the world's start)");
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
+  cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time (default 1)");
   cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
   cmd->add_option("--dilate", o.room.dilate, "N: obstacles grown by N cells for planning (default 1)");
   cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most, wander needs it (default none)");

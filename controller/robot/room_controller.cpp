@@ -205,19 +205,24 @@ RoomEnding RoomController::run() {
 }
 
 RoomEnding RoomController::run_waypoints() {
-  for (std::size_t n = 0; n < room_.waypoints.size(); ++n) {
-    const Point p = room_.waypoints[n];
-    bool stopped = false;
-    if (const Motion m = go_to(p, StopWhen::obstacle_ahead, &stopped); m != Motion::ok) return finish(m);
-    if (stopped) {
-      message_ = fmt::format("leg {} to ({:g}, {:g}) stopped at ({:.2f}, {:.2f}): {}", n + 1, p.x_m, p.y_m,
-                             position_.x_m, position_.y_m,
-                             senses_.bumped() ? std::string("a bumper is pressed")
-                                              : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
-      return RoomEnding::blocked;
+  const std::size_t count = room_.waypoints.size();
+  for (int lap = 1; room_.laps == 0 || lap <= room_.laps; ++lap) {
+    for (std::size_t n = 0; n < count; ++n) {
+      const Point p = room_.waypoints[n];
+      bool stopped = false;
+      if (const Motion m = go_to(p, StopWhen::obstacle_ahead, &stopped); m != Motion::ok) return finish(m);
+      if (stopped) {
+        const std::string leg = lap == 1 ? fmt::format("leg {}", n + 1) : fmt::format("lap {} leg {}", lap, n + 1);
+        message_ = fmt::format("{} to ({:g}, {:g}) stopped at ({:.2f}, {:.2f}): {}", leg, p.x_m, p.y_m,
+                               position_.x_m, position_.y_m,
+                               senses_.bumped() ? std::string("a bumper is pressed")
+                                                : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
+        return RoomEnding::blocked;
+      }
     }
   }
-  message_ = fmt::format("reached all {} waypoints", room_.waypoints.size());
+  message_ = room_.laps == 1 ? fmt::format("reached all {} waypoints", count)
+                             : fmt::format("reached all {} waypoints {} times", count, room_.laps);
   return RoomEnding::arrived;
 }
 
