@@ -124,7 +124,8 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   add_seed_option(*cmd, o.simulation.seed, "the simulation's noise and wander's turns");
   add_model_options(*cmd, o.sensor);
   cmd->add_flag("--quiet", o.quiet, "print the summary only");
-  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json");
+  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json, map.png "
+                                     "(wavefront: wave.png), snapshots/*.png");
   cmd->callback([&context, in, cmd] {
     build(*in, *cmd);
     in->options.room.seed = in->options.simulation.seed;

@@ -72,7 +72,7 @@ std::string room_wave_numbers(const sensing::RoomMap &map, const std::vector<std
 }
 
 void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
-                        const std::string &summary_json, double threshold) {
+                        const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures) {
   std::ostringstream csv;
   for (int j = map.cells_y() - 1; j >= 0; --j) {
     for (int i = 0; i < map.cells_x(); ++i) csv << (i == 0 ? "" : ",") << fmt::format("{:.6f}", map.log_odds({i, j}));
@@ -91,6 +91,11 @@ void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, con
   common::write_file_atomically((d / "thresholded.txt").string(), room_binary_map(map, threshold));
   common::write_file_atomically((d / "map.pgm").string(), pgm);
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(map.geometry(), "map.pgm"));
+  for (const RoomFile &f : pictures) {
+    const std::filesystem::path path = d / f.name;
+    std::filesystem::create_directories(path.parent_path());
+    common::write_file_atomically(path.string(), f.bytes);
+  }
   common::write_file_atomically((d / "summary.json").string(), summary_json);
 }
 

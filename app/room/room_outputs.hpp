@@ -28,9 +28,15 @@ std::string room_summary_text(const RoomRunOptions &options, const std::string &
 std::string room_summary_json(const RoomRunOptions &options, const std::string &robot_name,
                               const sensing::SetUp &setup, const sensing::RoomGridSpec &spec,
                               const RoomSummary &summary);
-// Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml and summary.json into dir,
-// each atomically.
+// A file the run made, by its name in the output folder (e.g. "snapshots/t15s.png").
+struct RoomFile {
+  std::string name;
+  std::string bytes;
+};
+
+// Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json and the
+// pictures (map.png, wave.png, snapshots/...) into dir, each atomically.
 void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
-                        const std::string &summary_json, double threshold);
+                        const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures);
 
 }  // namespace app
