@@ -18,6 +18,7 @@
 #include "app/report/outputs.hpp"
 #include "app/room/room_outputs.hpp"
 #include "app/room/room_pictures.hpp"
+#include "app/room/room_report.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
@@ -389,11 +390,11 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   if (!options.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
-  out << room_summary_text(options, profile.name, setup, spec, summary);
+  const std::vector<RoomReportEntry> report = room_report(options, profile.name, setup, spec, summary);
+  out << room_summary_text(report);
   if (!options.out_dir.empty()) {
     log.draw(controller_loop, "map", "wave");
-    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(options, profile.name, setup, spec, summary),
-                       threshold, log.pictures());
+    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, log.pictures());
   }
   return summary;
 }
