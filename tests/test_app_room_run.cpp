@@ -13,6 +13,7 @@
 #include "common/error.hpp"
 #include "maze/arena.hpp"
 #include "maze/arena_generator.hpp"
+#include "maze/arena_world.hpp"
 #include "maze/sim/profile.hpp"
 #include "sensing/pie_demo.hpp"
 
@@ -40,6 +41,11 @@ app::RoomRunOptions frontier_options(const SetUpCase &s) {
   return o;
 }
 
+// The run in the world file o.world, as the room command loads it.
+app::RoomSummary run_file(const app::RoomRunOptions &o, std::ostream &out) {
+  return app::run_room(maze::load_any_world(o.world, {}, {}), o, out);
+}
+
 void check_mapped(const app::RoomSummary &s, const std::string &what, bool short_of_99 = false) {
   INFO(what, ": ", robot::to_string(s.ending), ": ", s.message);
   if (!short_of_99) CHECK(s.observed_share() >= 0.99);
@@ -55,7 +61,7 @@ TEST_CASE("room frontier: the shipped IR room mapped with the lidar and the IR (
     app::RoomRunOptions o = frontier_options(s);
     o.world = std::string(WORLDS_DIR) + "/ir_room.room";
     std::ostringstream out;
-    const app::RoomSummary summary = app::run_room(o, out);
+    const app::RoomSummary summary = run_file(o, out);
     check_mapped(summary, std::string(s.robot));
     CHECK(summary.ending == robot::RoomEnding::done);
   }
@@ -91,11 +97,11 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   o.model.kind = sensing::ModelKind::pie;
   o.quiet = true;
   std::ostringstream out;
-  const app::RoomSummary reached = app::run_room(o, out);
+  const app::RoomSummary reached = run_file(o, out);
   CHECK(reached.ending == robot::RoomEnding::goal_reached);
   CHECK(app::room_exit_status(reached) == 0);
   o.robot = "ir-fan";  // Figure 1's six sensors over the front
-  const app::RoomSummary fan = app::run_room(o, out);
+  const app::RoomSummary fan = run_file(o, out);
   CHECK(fan.ending == robot::RoomEnding::goal_reached);
   o.robot.clear();
 
@@ -149,11 +155,11 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   o.quiet = true;
   std::ostringstream out;
   o.room.laps = 2;
-  const app::RoomSummary twice = app::run_room(o, out);
+  const app::RoomSummary twice = run_file(o, out);
   CHECK(twice.ending == robot::RoomEnding::arrived);
   CHECK(twice.message == "reached all 2 waypoints 2 times");
   o.room.laps = 1;
-  const app::RoomSummary once = app::run_room(o, out);
+  const app::RoomSummary once = run_file(o, out);
   CHECK(once.message == "reached all 2 waypoints");
   CHECK(once.sim_time_s < twice.sim_time_s);
 
@@ -162,7 +168,7 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   o.quiet = false;
   o.snapshots_at_s = {5.0, 30.0};
   std::ostringstream maps;
-  const app::RoomSummary timed = app::run_room(o, maps);
+  const app::RoomSummary timed = run_file(o, maps);
   CHECK(timed.ending == robot::RoomEnding::time_up);
   CHECK(app::room_exit_status(timed) == 0);
   CHECK(timed.sim_time_s == doctest::Approx(30.0).epsilon(0.002));
@@ -177,14 +183,14 @@ TEST_CASE("room: bad input is refused before anything runs") {
   std::ostringstream out;
   o.room.strategy = robot::RoomStrategy::wavefront;
   o.room.goal = mapping::Point{7.0, 1.0};
-  CHECK_THROWS_WITH_AS(app::run_room(o, out), doctest::Contains("is outside the boundary"), common::InputError);
+  CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("is outside the boundary"), common::InputError);
   o.room.goal = mapping::Point{4.7, 2.7};
   o.start = mapping::Point{1.1, 0.5};  // in the partition
-  CHECK_THROWS_AS(app::run_room(o, out), common::InputError);
+  CHECK_THROWS_AS(run_file(o, out), common::InputError);
   o.start.reset();
   o.resolution_m = 0.0001;
-  CHECK_THROWS_WITH_AS(app::run_room(o, out), doctest::Contains("at most 20000 a side"), common::InputError);
+  CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("at most 20000 a side"), common::InputError);
   o.resolution_m = 0.0003;  // 16667 x 10000 cells: 2.8 GiB
-  CHECK_THROWS_WITH_AS(app::run_room(o, out), doctest::Contains("would take"), common::InputError);
+  CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("would take"), common::InputError);
   CHECK(out.str().empty());
 }

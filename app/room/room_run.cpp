@@ -6,9 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <iostream>
 #include <variant>
-#include <array>
 #include <filesystem>
 #include <numbers>
 
@@ -332,26 +330,10 @@ int room_exit_status(const RoomSummary &s) {
   }
 }
 
-RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
-  const auto started = std::chrono::steady_clock::now();
-  // ---- everything checked before anything runs ----
-  maze::ArenaOverrides arena_overrides;
-  if (options.boundary) {
-    arena_overrides.boundary_m = std::array<double, 4>{options.boundary->x_start_m, options.boundary->x_end_m,
-                                                       options.boundary->y_start_m, options.boundary->y_end_m};
-  }
-  const maze::AnyWorld loaded = maze::load_any_world(options.world, {}, arena_overrides);
-  maze::Arena arena;
-  if (const auto *a = std::get_if<maze::ArenaWorld>(&loaded)) {
-    arena = a->arena;
-    for (const std::string &w : a->warnings) std::cerr << w << '\n';
-  } else {
-    const auto &m = std::get<maze::World>(loaded);
-    if (options.boundary) throw common::InputError("--boundary applies to arenas; a maze's map covers the maze");
-    arena = maze::arena_from_maze(m.maze);
-    for (const std::string &w : m.warnings) std::cerr << w << '\n';
-  }
-  return run_room_in(arena, options, out, started);
+RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
+                     std::chrono::steady_clock::time_point started) {
+  if (const auto *a = std::get_if<maze::ArenaWorld>(&world)) return run_room_in(a->arena, options, out, started);
+  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
