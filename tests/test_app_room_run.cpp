@@ -174,6 +174,14 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   CHECK(timed.sim_time_s == doctest::Approx(30.0).epsilon(0.002));
   CHECK(maps.str().find("--- t = 5 s: step") != std::string::npos);
   CHECK(maps.str().find("--- t = 30 s: step") != std::string::npos);
+
+  // A route of the one point the robot stands on: it stays there, scanning, until the limit.
+  o.room.waypoints = {{0.3, 0.3}};
+  o.room.time_limit_s = 3.0;
+  o.quiet = true;
+  const app::RoomSummary still = run_file(o, maps);
+  CHECK(still.ending == robot::RoomEnding::time_up);
+  CHECK(still.sim_time_s == doctest::Approx(3.0).epsilon(0.02));
 }
 
 TEST_CASE("room: bad input is refused before anything runs") {

@@ -207,6 +207,7 @@ RoomEnding RoomController::run() {
 RoomEnding RoomController::run_waypoints() {
   const std::size_t count = room_.waypoints.size();
   for (int lap = 1; room_.laps == 0 || lap <= room_.laps; ++lap) {
+    const std::int64_t lap_began = steps_;
     for (std::size_t n = 0; n < count; ++n) {
       const Point p = room_.waypoints[n];
       bool stopped = false;
@@ -219,6 +220,11 @@ RoomEnding RoomController::run_waypoints() {
                                                 : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
         return RoomEnding::blocked;
       }
+    }
+    // A lap with every point where the robot stands takes no step: it rests there a step,
+    // scanning, so that time goes on to the limit.
+    if (steps_ == lap_began) {
+      if (const Motion m = drive_.come_to_rest(); m != Motion::ok) return finish(m);
     }
   }
   message_ = room_.laps == 1 ? fmt::format("reached all {} waypoints", count)
