@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -12,6 +13,9 @@
 #include "common/error.hpp"
 #include "maze/arena.hpp"
 #include "maze/arena_generator.hpp"
+#include "maze/arena_world.hpp"
+#include "maze/sim/profile.hpp"
+#include "sensing/pie_demo.hpp"
 
 namespace {
 
@@ -37,6 +41,11 @@ app::RoomRunOptions frontier_options(const SetUpCase &s) {
   return o;
 }
 
+// The run in the world file o.world, as the room command loads it.
+app::RoomSummary run_file(const app::RoomRunOptions &o, std::ostream &out) {
+  return app::run_room(maze::load_any_world(o.world, {}, {}), o, out);
+}
+
 void check_mapped(const app::RoomSummary &s, const std::string &what, bool short_of_99 = false) {
   INFO(what, ": ", robot::to_string(s.ending), ": ", s.message);
   if (!short_of_99) CHECK(s.observed_share() >= 0.99);
@@ -52,7 +61,7 @@ TEST_CASE("room frontier: the shipped IR room mapped with the lidar and the IR (
     app::RoomRunOptions o = frontier_options(s);
     o.world = std::string(WORLDS_DIR) + "/ir_room.room";
     std::ostringstream out;
-    const app::RoomSummary summary = app::run_room(o, out);
+    const app::RoomSummary summary = run_file(o, out);
     check_mapped(summary, std::string(s.robot));
     CHECK(summary.ending == robot::RoomEnding::done);
   }
@@ -88,9 +97,13 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   o.model.kind = sensing::ModelKind::pie;
   o.quiet = true;
   std::ostringstream out;
-  const app::RoomSummary reached = app::run_room(o, out);
+  const app::RoomSummary reached = run_file(o, out);
   CHECK(reached.ending == robot::RoomEnding::goal_reached);
   CHECK(app::room_exit_status(reached) == 0);
+  o.robot = "ir-fan";  // Figure 1's six sensors over the front
+  const app::RoomSummary fan = run_file(o, out);
+  CHECK(fan.ending == robot::RoomEnding::goal_reached);
+  o.robot.clear();
 
   maze::Arena walled;
   walled.x_max_m = 3.0;
@@ -104,6 +117,73 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   CHECK(app::room_exit_status(cut_off) == 1);
 }
 
+TEST_CASE("room wavefront: a goal one cell from an obstacle is reached (the growth keeps the way, not the goal)") {
+  maze::Arena arena;
+  arena.x_max_m = 3.0;
+  arena.y_max_m = 2.0;
+  arena.obstacles.push_back(maze::Obstacle::from_box(1.98, 0.6, 2.4, 1.4));  // its cells from x 1.9 m
+  arena.starts.push_back({0.5, 1.0, 0.0});
+  app::RoomRunOptions o;
+  o.world = "one box";
+  o.room.strategy = robot::RoomStrategy::wavefront;
+  o.room.goal = mapping::Point{1.85, 1.0};  // 0.13 m from the box: room for the body (0.09 m)
+  o.room.dilate = 1;
+  o.model.kind = sensing::ModelKind::ray;
+  o.quiet = true;
+  std::ostringstream out;
+  const app::RoomSummary s = app::run_room_in(arena, o, out);
+  INFO(s.message);
+  CHECK(s.ending == robot::RoomEnding::goal_reached);
+}
+
+TEST_CASE("ir-fan carries demo pie's Figure 1 mounts, left to right") {
+  const auto &fan = maze::sim::find_profile("ir-fan");
+  const sensing::PieDemoOptions figure;
+  REQUIRE(fan.distance_sensors.size() == figure.mounts_deg.size());
+  for (std::size_t n = 0; n < figure.mounts_deg.size(); ++n) {
+    CHECK(fan.distance_sensors[n].angle_rad * 180.0 / std::numbers::pi == doctest::Approx(figure.mounts_deg[n]));
+    CHECK(fan.distance_sensors[n].type == maze::sim::DistanceSensorType::infra_red);
+  }
+}
+
+TEST_CASE("room waypoints: the list driven in laps, or round and round until the time limit") {
+  app::RoomRunOptions o;
+  o.world = std::string(WORLDS_DIR) + "/ir_room.room";
+  o.room.strategy = robot::RoomStrategy::waypoints;
+  o.room.waypoints = {{0.5, 0.5}, {0.5, 2.4}};  // west of the partition, there and back
+  o.model.kind = sensing::ModelKind::ray;
+  o.quiet = true;
+  std::ostringstream out;
+  o.room.laps = 2;
+  const app::RoomSummary twice = run_file(o, out);
+  CHECK(twice.ending == robot::RoomEnding::arrived);
+  CHECK(twice.message == "reached all 2 waypoints 2 times");
+  o.room.laps = 1;
+  const app::RoomSummary once = run_file(o, out);
+  CHECK(once.message == "reached all 2 waypoints");
+  CHECK(once.sim_time_s < twice.sim_time_s);
+
+  o.room.laps = 0;
+  o.room.time_limit_s = 30.0;
+  o.quiet = false;
+  o.snapshots_at_s = {5.0, 30.0};
+  std::ostringstream maps;
+  const app::RoomSummary timed = run_file(o, maps);
+  CHECK(timed.ending == robot::RoomEnding::time_up);
+  CHECK(app::room_exit_status(timed) == 0);
+  CHECK(timed.sim_time_s == doctest::Approx(30.0).epsilon(0.002));
+  CHECK(maps.str().find("--- t = 5 s: step") != std::string::npos);
+  CHECK(maps.str().find("--- t = 30 s: step") != std::string::npos);
+
+  // A route of the one point the robot stands on: it stays there, scanning, until the limit.
+  o.room.waypoints = {{0.3, 0.3}};
+  o.room.time_limit_s = 3.0;
+  o.quiet = true;
+  const app::RoomSummary still = run_file(o, maps);
+  CHECK(still.ending == robot::RoomEnding::time_up);
+  CHECK(still.sim_time_s == doctest::Approx(3.0).epsilon(0.02));
+}
+
 TEST_CASE("room: bad input is refused before anything runs") {
   app::RoomRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
@@ -111,14 +191,14 @@ TEST_CASE("room: bad input is refused before anything runs") {
   std::ostringstream out;
   o.room.strategy = robot::RoomStrategy::wavefront;
   o.room.goal = mapping::Point{7.0, 1.0};
-  CHECK_THROWS_WITH_AS(app::run_room(o, out), doctest::Contains("is outside the boundary"), common::InputError);
+  CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("is outside the boundary"), common::InputError);
   o.room.goal = mapping::Point{4.7, 2.7};
   o.start = mapping::Point{1.1, 0.5};  // in the partition
-  CHECK_THROWS_AS(app::run_room(o, out), common::InputError);
+  CHECK_THROWS_AS(run_file(o, out), common::InputError);
   o.start.reset();
   o.resolution_m = 0.0001;
-  CHECK_THROWS_WITH_AS(app::run_room(o, out), doctest::Contains("at most 20000 a side"), common::InputError);
+  CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("at most 20000 a side"), common::InputError);
   o.resolution_m = 0.0003;  // 16667 x 10000 cells: 2.8 GiB
-  CHECK_THROWS_WITH_AS(app::run_room(o, out), doctest::Contains("would take"), common::InputError);
+  CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("would take"), common::InputError);
   CHECK(out.str().empty());
 }

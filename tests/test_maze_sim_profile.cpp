@@ -144,7 +144,7 @@ TEST_CASE("find_profile: an unknown name lists the known ones") {
   } catch (const common::InputError &e) {
     CHECK(e.diagnostic() ==
           "error: unknown robot 'roomba' (known robots: hambot, hambot-2025, hambot-12m, bumper-depth, ir-ring, "
-          "sonar-ring, micromouse)");
+          "ir-fan, sonar-ring, micromouse)");
   }
 }
 

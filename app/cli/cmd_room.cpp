@@ -1,5 +1,6 @@
 // maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/room_run.hpp).
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -9,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli/arena_options.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/model_options.hpp"
 #include "app/room/room_run.hpp"
@@ -51,10 +53,6 @@ void build(RoomInput &in, const CLI::App &cmd) {
     o.cells_y = static_cast<int>(c[1]);
   }
   if (!in.resolution.empty()) o.resolution_m = parse_number_list(in.resolution, "--resolution", 1)[0];
-  if (!in.boundary.empty()) {
-    const std::vector<double> b = parse_number_list(in.boundary, "--boundary", 4);
-    o.boundary = sensing::RoomBoundary{b[0], b[1], b[2], b[3]};
-  }
   if (!in.waypoints.empty()) {
     std::string text = in.waypoints;
     std::size_t start = 0;
@@ -86,6 +84,9 @@ void build(RoomInput &in, const CLI::App &cmd) {
   if (given("--waypoints") && o.room.strategy != RoomStrategy::waypoints) {
     throw common::InputError("--waypoints applies to --strategy waypoints only");
   }
+  if (given("--laps") && o.room.strategy != RoomStrategy::waypoints) {
+    throw common::InputError("--laps applies to --strategy waypoints only");
+  }
   if (given("--goal") && o.room.strategy != RoomStrategy::wavefront) {
     throw common::InputError("--goal applies to --strategy wavefront only");
   }
@@ -107,9 +108,10 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--robot", o.robot, "a robot profile or JSON file (default the set-up's robot)");
   cmd->add_option("--cells", in->cells, "X,Y: numCells over the boundary (square cells)");
   cmd->add_option("--resolution", in->resolution, "M: cell size, m (default 0.1)");
-  cmd->add_option("--boundary", in->boundary, "XS,XE,YS,YE: the map's extent, m (default the world's)");
+  add_boundary_option(*cmd, in->boundary);
   cmd->add_option("--start", in->start, "X,Y[,DEG]: where the robot starts, m (default the world's start)");
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
+  cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time (default 1)");
   cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
   cmd->add_option("--dilate", o.room.dilate, "N: obstacles grown by N cells for planning (default 1)");
   cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most, wander needs it (default none)");
@@ -120,14 +122,17 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   add_seed_option(*cmd, o.simulation.seed, "the simulation's noise and wander's turns");
   add_model_options(*cmd, o.sensor);
   cmd->add_flag("--quiet", o.quiet, "print the summary only");
-  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json");
+  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json, map.png "
+                                     "(wavefront: wave.png), snapshots/*.png");
   cmd->callback([&context, in, cmd] {
+    const auto started = std::chrono::steady_clock::now();
     build(*in, *cmd);
     in->options.room.seed = in->options.simulation.seed;
     if (in->options.model.kind == sensing::ModelKind::bump || in->options.model.kind == sensing::ModelKind::depth) {
       if (cmd->get_option("--log-base")->count() == 0) in->options.sensor.base = mapping::LogBase::ten;
     }
-    const RoomSummary summary = run_room(in->options, std::cout);
+    const maze::AnyWorld world = load_any_world_reporting(in->options.world, {}, arena_overrides(in->boundary));
+    const RoomSummary summary = run_room(world, in->options, std::cout, started);
     context.status = room_exit_status(summary);
   });
 }

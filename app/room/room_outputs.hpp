@@ -1,6 +1,6 @@
 #pragma once
-// What the room run (app/room/room_run.hpp) prints and writes: the maps as text, the summary,
-// and --out DIR's files.
+// What the room run (app/room/room_run.hpp) prints and writes: the maps as text and --out
+// DIR's files (the summary: app/room/room_report.hpp).
 
 #include <cstdint>
 #include <string>
@@ -20,17 +20,15 @@ std::string room_ascii_map(const robot::RoomController &c, double threshold);
 std::string room_binary_map(const sensing::RoomMap &map, double threshold);
 // The wave's numbers, north row first, right-aligned; "" for an empty wave.
 std::string room_wave_numbers(const sensing::RoomMap &map, const std::vector<std::int32_t> &wave);
-// The summary people read (the last line: the wall time).
-std::string room_summary_text(const RoomRunOptions &options, const std::string &robot_name,
-                              const sensing::SetUp &setup, const sensing::RoomGridSpec &spec,
-                              const RoomSummary &summary);
-// summary.json's text (no wall time: the same run writes the same file).
-std::string room_summary_json(const RoomRunOptions &options, const std::string &robot_name,
-                              const sensing::SetUp &setup, const sensing::RoomGridSpec &spec,
-                              const RoomSummary &summary);
-// Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml and summary.json into dir,
-// each atomically.
+// A file the run made, by its name in the output folder (e.g. "snapshots/t15s.png").
+struct RoomFile {
+  std::string name;
+  std::string bytes;
+};
+
+// Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json and the
+// pictures (map.png, wave.png, snapshots/...) into dir, each atomically.
 void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
-                        const std::string &summary_json, double threshold);
+                        const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures);
 
 }  // namespace app

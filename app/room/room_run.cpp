@@ -6,9 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <iostream>
 #include <variant>
-#include <array>
+#include <filesystem>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -16,6 +15,8 @@
 #include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
 #include "app/room/room_outputs.hpp"
+#include "app/room/room_pictures.hpp"
+#include "app/room/room_report.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
@@ -135,12 +136,14 @@ maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::RoomGrid
 }
 
 // What the run prints and records as it goes: trace.csv's text, and the snapshots (the map,
-// with the wave for wavefront) at the asked simulated times and control steps.
+// with the wave for wavefront) at the asked simulated times and control steps: printed unless
+// quiet, drawn (snapshots/NAME.png, NAME_wave.png) with --out.
 class RoomLog {
  public:
-  RoomLog(const RoomRunOptions &options, double threshold, std::ostream &out)
-      : options_(options), threshold_(threshold), out_(out), times_(options.snapshots_at_s),
-        steps_(options.snapshot_steps) {
+  RoomLog(const RoomRunOptions &options, double threshold, const MapTones &tones, RoomPictureMarks marks,
+          std::ostream &out)
+      : options_(options), threshold_(threshold), tones_(tones), marks_(std::move(marks)), out_(out),
+        times_(options.snapshots_at_s), steps_(options.snapshot_steps) {
     std::sort(times_.begin(), times_.end());
     std::sort(steps_.begin(), steps_.end());
     trace_ = "t,x,y,theta";
@@ -165,11 +168,27 @@ class RoomLog {
     trace_ += '\n';
     while (next_time_ < times_.size() && c.time_s() >= times_[next_time_] - 1e-9) {
       snapshot(c, fmt::format("t = {:g} s", times_[next_time_]));
+      const std::string name = fmt::format("snapshots/t{:g}s", times_[next_time_]);
+      draw(c, name, name + "_wave");
       ++next_time_;
     }
     while (next_step_ < steps_.size() && c.steps() >= steps_[next_step_]) {
       snapshot(c, fmt::format("step {}", steps_[next_step_]));
+      const std::string name = fmt::format("snapshots/step{}", steps_[next_step_]);
+      draw(c, name, name + "_wave");
       ++next_step_;
+    }
+  }
+
+  // With --out: the map's picture now as MAP.png (and the wave's, when there is one, as
+  // WAVE.png), kept until the run's files are written.
+  void draw(const robot::RoomController &c, const std::string &map, const std::string &wave) {
+    if (options_.out_dir.empty()) return;
+    RoomPictureMarks marks = marks_;
+    marks.caption += fmt::format(", step {}, {:.1f} s", c.steps(), c.time_s());
+    pictures_.push_back({map + ".png", room_map_picture(c, tones_, marks)});
+    if (options_.room.strategy == robot::RoomStrategy::wavefront && !c.wave().empty()) {
+      pictures_.push_back({wave + ".png", room_wave_picture(c, marks)});
     }
   }
 
@@ -196,10 +215,14 @@ class RoomLog {
   }
 
   const std::string &trace() const { return trace_; }
+  const std::vector<RoomFile> &pictures() const { return pictures_; }
 
  private:
   const RoomRunOptions &options_;
   double threshold_;
+  const MapTones &tones_;
+  RoomPictureMarks marks_;
+  std::vector<RoomFile> pictures_;  // (name in the output folder, bytes)
   std::ostream &out_;
   std::vector<double> times_;  // sorted
   std::size_t next_time_ = 0;
@@ -207,6 +230,17 @@ class RoomLog {
   std::size_t next_step_ = 0;
   std::string trace_;
 };
+
+// What the pictures mark besides the controller's state: the start, the goal, the caption.
+RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::SetUp &setup,
+                               const robot::RoomOptions &room) {
+  RoomPictureMarks marks;
+  marks.start = room.start;
+  marks.goal = room.goal;
+  marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
+                              robot::to_string(room.strategy), setup.name);
+  return marks;
+}
 
 // What the controller says of its run, on the grid `spec`.
 RoomSummary summary_of(const robot::RoomController &c, robot::RoomEnding ending, const sensing::RoomGridSpec &spec) {
@@ -296,26 +330,10 @@ int room_exit_status(const RoomSummary &s) {
   }
 }
 
-RoomSummary run_room(const RoomRunOptions &options, std::ostream &out) {
-  const auto started = std::chrono::steady_clock::now();
-  // ---- everything checked before anything runs ----
-  maze::ArenaOverrides arena_overrides;
-  if (options.boundary) {
-    arena_overrides.boundary_m = std::array<double, 4>{options.boundary->x_start_m, options.boundary->x_end_m,
-                                                       options.boundary->y_start_m, options.boundary->y_end_m};
-  }
-  const maze::AnyWorld loaded = maze::load_any_world(options.world, {}, arena_overrides);
-  maze::Arena arena;
-  if (const auto *a = std::get_if<maze::ArenaWorld>(&loaded)) {
-    arena = a->arena;
-    for (const std::string &w : a->warnings) std::cerr << w << '\n';
-  } else {
-    const auto &m = std::get<maze::World>(loaded);
-    if (options.boundary) throw common::InputError("--boundary applies to arenas; a maze's map covers the maze");
-    arena = maze::arena_from_maze(m.maze);
-    for (const std::string &w : m.warnings) std::cerr << w << '\n';
-  }
-  return run_room_in(arena, options, out, started);
+RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
+                     std::chrono::steady_clock::time_point started) {
+  if (const auto *a = std::get_if<maze::ArenaWorld>(&world)) return run_room_in(a->arena, options, out, started);
+  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
@@ -342,7 +360,8 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
 
   // ---- the run ----
   const double threshold = threshold_of(options);
-  RoomLog log(options, threshold, out);
+  const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
+  RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
   robot::RoomController controller_loop(simulation.robot(), controller, room, map,
                                         [&log](const robot::RoomController &c) { log.on_step(c); });
   RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
@@ -353,10 +372,11 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   if (!options.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
-  out << room_summary_text(options, profile.name, setup, spec, summary);
+  const std::vector<RoomReportEntry> report = room_report(options, profile.name, setup, spec, summary);
+  out << room_summary_text(report);
   if (!options.out_dir.empty()) {
-    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(options, profile.name, setup, spec, summary),
-                  threshold);
+    log.draw(controller_loop, "map", "wave");
+    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, log.pictures());
   }
   return summary;
 }

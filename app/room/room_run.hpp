@@ -21,6 +21,7 @@
 
 #include "mapping/sensor_model.hpp"
 #include "maze/arena.hpp"
+#include "maze/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/room_controller.hpp"
 #include "sensing/range_models.hpp"
@@ -34,7 +35,6 @@ struct RoomRunOptions {
   robot::RoomOptions room;
   std::optional<int> cells_x, cells_y;        // --cells X,Y
   std::optional<double> resolution_m;         // --resolution M (default 0.1)
-  std::optional<sensing::RoomBoundary> boundary;  // --boundary (default: the world's extent)
   std::string robot;                          // --robot (default: the set-up's robot)
   std::optional<mapping::Point> start;        // --start X,Y (default: the world's start)
   std::optional<double> start_yaw_deg;
@@ -66,10 +66,12 @@ struct RoomSummary {
   }
 };
 
-// Loads options.world (a maze runs as the arena of its walls), checks everything
-// (common::InputError, before anything runs), runs, prints on `out`.
-RoomSummary run_room(const RoomRunOptions &options, std::ostream &out);
-// The same in an arena given in code (options.world only names it; --boundary is the arena's).
+// The run in a loaded world (maze::load_any_world, --boundary already the arena's; a maze runs
+// as the arena of its walls; options.world names it): checks everything (common::InputError,
+// before anything runs), runs, prints on `out`.
+RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
+                     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
+// The same in an arena given in code.
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
 // 0: done, goal reached, every waypoint reached, wander's time up; 1 otherwise.

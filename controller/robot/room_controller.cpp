@@ -205,19 +205,30 @@ RoomEnding RoomController::run() {
 }
 
 RoomEnding RoomController::run_waypoints() {
-  for (std::size_t n = 0; n < room_.waypoints.size(); ++n) {
-    const Point p = room_.waypoints[n];
-    bool stopped = false;
-    if (const Motion m = go_to(p, StopWhen::obstacle_ahead, &stopped); m != Motion::ok) return finish(m);
-    if (stopped) {
-      message_ = fmt::format("leg {} to ({:g}, {:g}) stopped at ({:.2f}, {:.2f}): {}", n + 1, p.x_m, p.y_m,
-                             position_.x_m, position_.y_m,
-                             senses_.bumped() ? std::string("a bumper is pressed")
-                                              : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
-      return RoomEnding::blocked;
+  const std::size_t count = room_.waypoints.size();
+  for (int lap = 1; room_.laps == 0 || lap <= room_.laps; ++lap) {
+    const std::int64_t lap_began = steps_;
+    for (std::size_t n = 0; n < count; ++n) {
+      const Point p = room_.waypoints[n];
+      bool stopped = false;
+      if (const Motion m = go_to(p, StopWhen::obstacle_ahead, &stopped); m != Motion::ok) return finish(m);
+      if (stopped) {
+        const std::string leg = lap == 1 ? fmt::format("leg {}", n + 1) : fmt::format("lap {} leg {}", lap, n + 1);
+        message_ = fmt::format("{} to ({:g}, {:g}) stopped at ({:.2f}, {:.2f}): {}", leg, p.x_m, p.y_m,
+                               position_.x_m, position_.y_m,
+                               senses_.bumped() ? std::string("a bumper is pressed")
+                                                : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
+        return RoomEnding::blocked;
+      }
+    }
+    // A lap with every point where the robot stands takes no step: it rests there a step,
+    // scanning, so that time goes on to the limit.
+    if (steps_ == lap_began) {
+      if (const Motion m = drive_.come_to_rest(); m != Motion::ok) return finish(m);
     }
   }
-  message_ = fmt::format("reached all {} waypoints", room_.waypoints.size());
+  message_ = room_.laps == 1 ? fmt::format("reached all {} waypoints", count)
+                             : fmt::format("reached all {} waypoints {} times", count, room_.laps);
   return RoomEnding::arrived;
 }
 
@@ -237,7 +248,11 @@ RoomEnding RoomController::run_wavefront() {
       message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", room_.goal->x_m, room_.goal->y_m, steps_);
       return RoomEnding::goal_reached;
     }
-    wave_ = plan::wave_from(g, obstacles(false), goal);
+    std::vector<bool> blocked = obstacles(false);
+    // The growth keeps the way clear of the body; like the robot's own cell, the goal's is an
+    // end of the way: blocked only when the map says it is itself an obstacle.
+    blocked[goal] = map_.probability_at(goal) >= room_.free_below_p - 1e-9;
+    wave_ = plan::wave_from(g, blocked, goal);
     const auto path = plan::descend(g, wave_, here);
     if (!path) {
       path_.clear();

@@ -6,13 +6,15 @@
 //
 //   waypoints  for each point: turn to it, then drive straight; a bump or a return ahead
 //              closer than stop_distance_m stops the leg, and the run ends `blocked` saying
-//              which leg and why.
+//              which leg and why. The list is driven `laps` times (after its last point, on
+//              to its first again); laps 0: round and round until the time limit.
 //   wavefront  the lab's loop: a cell is free when p < free_below_p (0.6), obstacles grown
 //              by `dilate` cells, 4 neighbours; plan from the robot's cell to the goal's
 //              (plan/room_wavefront.hpp), drive to the path's next cell (the closest point of
 //              the path), scanning every step; when it is reached, plan again from there on
-//              the grown map. Ends at the goal (`goal_reached`), or `unreachable` when the
-//              wave does not reach the robot.
+//              the grown map. The growth keeps the way clear: the robot's cell and the
+//              goal's are blocked only when the map calls them obstacles. Ends at the goal
+//              (`goal_reached`), or `unreachable` when the wave does not reach the robot.
 //   frontier   plan through cells seen free (p < free_below_p, observed, not within `dilate`
 //              cells of one seen occupied) to the nearest cell within view_m of a frontier
 //              (an unobserved cell beside one seen free), drive the path, then turn a full
@@ -51,6 +53,7 @@ RoomStrategy parse_room_strategy(std::string_view name);
 struct RoomOptions {
   RoomStrategy strategy = RoomStrategy::frontier;
   std::vector<mapping::Point> waypoints;
+  int laps = 1;                         // waypoints: times the list is driven; 0: until time_limit_s
   std::optional<mapping::Point> goal;   // wavefront
   int dilate = 1;                       // cells
   double free_below_p = 0.6;
@@ -64,7 +67,7 @@ struct RoomOptions {
 };
 
 // Throws common::InputError: waypoints empty for waypoints, no goal for wavefront, no time
-// limit for wander, dilate outside 0 ... 8, a number not finite or out of range.
+// limit for wander or for laps 0, laps below 0, dilate outside 0 ... 8, a number not finite or out of range.
 void validate(const RoomOptions &options);
 
 enum class RoomEnding { done, goal_reached, arrived, blocked, unreachable, incomplete, time_up, no_progress,

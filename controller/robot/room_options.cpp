@@ -61,6 +61,8 @@ void validate(const RoomOptions &o) {
           "--strategy waypoints needs --waypoints X,Y;X,Y...");
   require(o.strategy != RoomStrategy::wavefront || o.goal.has_value(), "--strategy wavefront needs --goal X,Y");
   require(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time S");
+  require(o.laps >= 0, fmt::format("--laps must be a whole number >= 0 (got {})", o.laps));
+  require(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time S");
   require(o.dilate >= 0 && o.dilate <= kMaxRoomDilate,
           fmt::format("--dilate must be 0 to {} cells (got {})", kMaxRoomDilate, o.dilate));
   require(o.free_below_p > 0.0 && o.free_below_p <= 1.0, "the free threshold must be in (0, 1]");

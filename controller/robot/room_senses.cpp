@@ -3,18 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <span>
 
 #include <fmt/format.h>
 
-#include <webots/DistanceSensor.hpp>
-#include <webots/Lidar.hpp>
-#include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
 #include "common/angles.hpp"
 #include "common/error.hpp"
-#include "robot/require_device.hpp"
 
 namespace robot {
 namespace {
@@ -43,16 +38,14 @@ RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, s
       map_(map),
       sensing_(room_sensing_for(options.model.kind)),
       log_options_(map.log_options()),
+      devices_(robot, options, sensing::setup(options.model.kind)),
       filter_(options.scan_filter),
       marks_(marks_for(sensing_, options.sensor)) {
   switch (sensing_) {
-    case RoomSensing::lidar:
-      lidar_ = require_device(robot.getLidar(options.devices.lidar), options.devices.lidar);
-      break;
+    case RoomSensing::lidar: break;
     case RoomSensing::bump: {
       const auto &mounts = options.sensing.bumpers;
       for (std::size_t i = 0; i < mounts.size(); ++i) {
-        bumpers_.push_back(require_device(robot.getTouchSensor(mounts[i].name), mounts[i].name));
         const double a = mounts[i].angle_rad;
         const int side = std::abs(a) < 0.1 ? 2 : (a > 0 ? 1 : 0);
         bumper_of_side_[side] = static_cast<int>(i);
@@ -73,35 +66,23 @@ RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, s
       [[fallthrough]];
     case RoomSensing::pie:
     case RoomSensing::cone:
-      for (std::size_t i = 0; i < options.sensing.ranges.size(); ++i) {
+      for (std::size_t i = 0; i < options.sensing.ranges.size() && sensing_ == RoomSensing::depth; ++i) {
         const RangeSensorMount &m = options.sensing.ranges[i];
-        range_sensors_.push_back(require_device(robot.getDistanceSensor(m.name), m.name));
-        if (sensing_ == RoomSensing::depth) {
-          log_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
-          log_options_.depth_max_m = m.max_range_m + m.offset_m;
-        }
+        log_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
+        log_options_.depth_max_m = m.max_range_m + m.offset_m;
       }
       break;
   }
 }
 
-void RoomSenses::enable(int time_step_ms) {
-  if (lidar_ != nullptr) lidar_->enable(time_step_ms);
-  for (webots::TouchSensor *b : bumpers_) b->enable(time_step_ms);
-  for (webots::DistanceSensor *r : range_sensors_) r->enable(time_step_ms);
-}
+void RoomSenses::enable(int time_step_ms) { devices_.enable(time_step_ms); }
 
 void RoomSenses::read_ranges(mapping::Point centre, double yaw_rad) {
-  readings_.clear();
+  read_range_sensors(devices_.range_sensors, options_.sensing.ranges, centre, yaw_rad, readings_);
   clearance_ahead_m_ = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < range_sensors_.size(); ++i) {
+  for (std::size_t i = 0; i < readings_.size(); ++i) {
     const RangeSensorMount &m = options_.sensing.ranges[i];
-    const webots::DistanceSensor &sensor = *range_sensors_[i];
-    const double a = yaw_rad + m.angle_rad;
-    const double value = sensor.getValue();
-    readings_.push_back({{centre.x_m + m.offset_m * std::cos(a), centre.y_m + m.offset_m * std::sin(a)}, a, value,
-                         m.max_range_m, m.aperture_rad, m.range_error,
-                         sensor.getType() == webots::DistanceSensor::SONAR});
+    const double value = readings_[i].range_m;
     if (std::abs(m.angle_rad) <= kAheadHalfAngle_rad && value > 0.0 && value < m.max_range_m) {
       clearance_ahead_m_ = std::min(clearance_ahead_m_, value + m.offset_m);
     }
@@ -116,17 +97,7 @@ std::size_t RoomSenses::scan(mapping::Point centre, double yaw_rad, double time_
   log_step_.theta_rad = yaw_rad;
   switch (sensing_) {
     case RoomSensing::lidar: {
-      const float *ranges = lidar_->getRangeImage();
-      if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
-      sensing::LidarScan s;
-      s.origin = centre;
-      s.yaw_rad = yaw_rad;
-      s.fov_rad = lidar_->getFov();
-      s.min_range_m = lidar_->getMinRange();
-      s.max_range_m = lidar_->getMaxRange();
-      s.beam_offset = lidar_->getFrequency() > 0.0 ? 0.0 : 0.5;
-      s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar_->getHorizontalResolution()));
-      const sensing::LidarScan filtered = filter_.apply(s);
+      const sensing::LidarScan filtered = filter_.apply(lidar_scan(*devices_.lidar, centre, yaw_rad));
       clearance_ahead_m_ = std::numeric_limits<double>::infinity();
       for (int n = 0; n < filtered.beam_count(); ++n) {
         if (filtered.kind(n) != sensing::ReadingKind::hit) continue;
@@ -145,9 +116,9 @@ std::size_t RoomSenses::scan(mapping::Point centre, double yaw_rad, double time_
       sensing::mark_room_cone(map_, readings_, marks_);
       return marks_.apply(map_);
     case RoomSensing::bump:
-      log_step_.bump_right = bumpers_[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
-      log_step_.bump_left = bumpers_[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
-      log_step_.bump_front = bumpers_[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
+      log_step_.bump_right = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
+      log_step_.bump_left = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
+      log_step_.bump_front = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
       bumped_ = log_step_.bump_right || log_step_.bump_left || log_step_.bump_front;
       sensing::apply_log_step(log_options_, sensing::LogSensor::bump, log_step_, map_.log_grid());
       return 1;

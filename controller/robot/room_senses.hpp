@@ -12,16 +12,10 @@
 
 #include "mapping/grid_types.hpp"
 #include "robot/options.hpp"
+#include "robot/sensor_devices.hpp"
 #include "sensing/log_map.hpp"
 #include "sensing/room_map.hpp"
 #include "sensing/scan_filter.hpp"
-
-namespace webots {
-class DistanceSensor;
-class Lidar;
-class Robot;
-class TouchSensor;
-}  // namespace webots
 
 namespace robot {
 
@@ -55,10 +49,8 @@ class RoomSenses {
   sensing::RoomMap &map_;
   RoomSensing sensing_;
   sensing::LogMapOptions log_options_;
-  webots::Lidar *lidar_ = nullptr;
-  std::vector<webots::TouchSensor *> bumpers_;
-  std::vector<webots::DistanceSensor *> range_sensors_;
-  int bumper_of_side_[3] = {-1, -1, -1};  // right, left, front: index into bumpers_
+  SensorDevices devices_;
+  int bumper_of_side_[3] = {-1, -1, -1};  // right, left, front: index into devices_.bumpers
   sensing::ScanFilter filter_;
   sensing::RoomMarks marks_;
   std::vector<sensing::RangeReading> readings_;

@@ -1,16 +1,12 @@
 #include "robot/senses.hpp"
 
 #include <cmath>
-#include <span>
+#include <utility>
 #include <variant>
 
-#include <webots/DistanceSensor.hpp>
 #include <webots/Lidar.hpp>
-#include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
-#include "common/error.hpp"
-#include "robot/require_device.hpp"
 #include "sensing/cell_model.hpp"
 
 namespace robot {
@@ -25,25 +21,15 @@ Senses::Senses(webots::Robot &robot, const ControllerOptions &options, const Dri
       drive_(drive),
       grid_(grid),
       model_(model),
+      devices_(robot, options, setup_),
       filter_(options.scan_filter) {
-  if (setup_.reads_lidar()) {
-    lidar_ = require_device(robot.getLidar(options.devices.lidar), options.devices.lidar);
-  } else if (setup_.reads_bumpers()) {
-    for (const BumperMount &b : options.sensing.bumpers) bumpers_.push_back(require_device(robot.getTouchSensor(b.name), b.name));
-  } else {
-    for (const RangeSensorMount &r : options.sensing.ranges) {
-      range_sensors_.push_back(require_device(robot.getDistanceSensor(r.name), r.name));
-    }
-  }
   if (setup_.make_update != nullptr) leveled_.emplace(setup_.make_update(options.sensor));
 }
 
 void Senses::enable(int time_step_ms) {
-  if (lidar_ != nullptr) lidar_->enable(time_step_ms);
-  for (webots::TouchSensor *b : bumpers_) b->enable(time_step_ms);
-  for (webots::DistanceSensor *r : range_sensors_) r->enable(time_step_ms);
-  if (lidar_ != nullptr && lidar_->getFrequency() > 0.0) {
-    revolution_steps_ = static_cast<int>(std::ceil(1000.0 / (lidar_->getFrequency() * time_step_ms)));
+  devices_.enable(time_step_ms);
+  if (devices_.lidar != nullptr && devices_.lidar->getFrequency() > 0.0) {
+    revolution_steps_ = static_cast<int>(std::ceil(1000.0 / (devices_.lidar->getFrequency() * time_step_ms)));
   }
 }
 
@@ -81,16 +67,7 @@ Point Senses::mounted(Point centre, double angle_rad, double offset_m) const {
 }
 
 void Senses::scan_lidar(sensing::LidarMark mark, Cell c, std::int64_t step) {
-  const float *ranges = lidar_->getRangeImage();
-  if (ranges == nullptr) throw common::RuntimeFailure("the lidar returned no range image");
-  sensing::LidarScan s;
-  s.origin = position(c);
-  s.yaw_rad = drive_.yaw_rad();
-  s.fov_rad = lidar_->getFov();
-  s.min_range_m = lidar_->getMinRange();
-  s.max_range_m = lidar_->getMaxRange();
-  s.beam_offset = revolution_steps_ > 0 ? 0.0 : 0.5;  // a fixed lidar's beams sit half a beam in
-  s.ranges = std::span<const float>(ranges, static_cast<std::size_t>(lidar_->getHorizontalResolution()));
+  const sensing::LidarScan s = lidar_scan(*devices_.lidar, position(c), drive_.yaw_rad());
   // A scan before in the same control step is the same reading, not a second look.
   const bool second_look = !previous_scan_.ranges.empty() && previous_scan_step_ < step;
   const sensing::LidarScan filtered = second_look ? filter_.apply(s, previous_scan_) : filter_.apply(s);
@@ -106,14 +83,7 @@ void Senses::scan_lidar(sensing::LidarMark mark, Cell c, std::int64_t step) {
 
 void Senses::scan_ranges(sensing::RangeMark mark, Cell c) {
   const Point centre = position(c);
-  range_readings_.clear();
-  for (std::size_t i = 0; i < range_sensors_.size(); ++i) {
-    const RangeSensorMount &m = options_.sensing.ranges[i];
-    const webots::DistanceSensor &sensor = *range_sensors_[i];
-    range_readings_.push_back({mounted(centre, m.angle_rad, m.offset_m), drive_.yaw_rad() + m.angle_rad,
-                               sensor.getValue(), m.max_range_m, m.aperture_rad, m.range_error,
-                               sensor.getType() == webots::DistanceSensor::SONAR});
-  }
+  read_range_sensors(devices_.range_sensors, options_.sensing.ranges, centre, drive_.yaw_rad(), range_readings_);
   mark(grid_, options_.sensing.range_model, centre, range_readings_, *leveled_);
   leveled_->apply(grid_, model_);
 }
@@ -122,9 +92,9 @@ bool Senses::gather_bumps(Cell c) {
   const Point centre = position(c);
   bump_readings_.clear();
   bool pressed = false;
-  for (std::size_t i = 0; i < bumpers_.size(); ++i) {
+  for (std::size_t i = 0; i < devices_.bumpers.size(); ++i) {
     const BumperMount &m = options_.sensing.bumpers[i];
-    const bool on = bumpers_[i]->getValue() > 0.5;
+    const bool on = devices_.bumpers[i]->getValue() > 0.5;
     pressed = pressed || on;
     bump_readings_.push_back({mounted(centre, m.angle_rad, m.offset_m), on});
   }

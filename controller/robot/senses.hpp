@@ -17,17 +17,11 @@
 #include "mapping/sensor_model.hpp"
 #include "robot/drive.hpp"
 #include "robot/options.hpp"
+#include "robot/sensor_devices.hpp"
 #include "sensing/range_models.hpp"
 #include "sensing/scan.hpp"
 #include "sensing/scan_filter.hpp"
 #include "sensing/setups.hpp"
-
-namespace webots {
-class DistanceSensor;
-class Lidar;
-class Robot;
-class TouchSensor;
-}  // namespace webots
 
 namespace robot {
 
@@ -69,9 +63,7 @@ class Senses {
   mapping::OccupancyGrid &grid_;
   const mapping::SensorModel &model_;
 
-  webots::Lidar *lidar_ = nullptr;
-  std::vector<webots::TouchSensor *> bumpers_;         // as options.sensing.bumpers
-  std::vector<webots::DistanceSensor *> range_sensors_;  // as options.sensing.ranges
+  SensorDevices devices_;
   int revolution_steps_ = 0;
 
   mapping::ScanUpdate update_;

@@ -128,6 +128,19 @@ RobotProfile ir_ring() {
   return p;
 }
 
+// The IR assignment's Figure 1 (`demo pie`, sensing/pie_demo.hpp): six IR sensors 30 deg
+// apart over the robot's front, from +75 deg (left) to -75 deg (right); none looks back.
+// Each is ir-ring's sensor (the course's numbers); the pie model's 20 deg slice (--pie-beta
+// 10 deg) is the model's, not the beam's.
+RobotProfile ir_fan() {
+  RobotProfile p = base_robot("ir-fan", "six IR range sensors 30 deg apart over the front (the IR lab's Figure 1), 1.5 m");
+  for (int i = 0; i < 6; ++i) {
+    p.distance_sensors.push_back({fmt::format("ir{}", i), (75.0 - 30.0 * i) * kDeg, 0.03, 3, metres_table(1.5, 0.03),
+                                  DistanceSensorType::infra_red});
+  }
+  return p;
+}
+
 // Eight sonars every 45 deg. Course numbers: aperture 0.4 rad, 5 rays, +-6.6 % distance error.
 // Webots' sonar type: the nearest ray, rays beyond 22.5 deg incidence lost.
 RobotProfile sonar_ring() {
@@ -159,7 +172,7 @@ std::optional<DistanceSensorType> parse_distance_sensor_type(std::string_view te
 
 const std::vector<RobotProfile> &profiles() {
   static const std::vector<RobotProfile> all{hambot(),       hambot_2025(), hambot_12m(), bumper_depth(),
-                                             ir_ring(),      sonar_ring(),  micromouse()};
+                                             ir_ring(),      ir_fan(),      sonar_ring(),  micromouse()};
   return all;
 }
 

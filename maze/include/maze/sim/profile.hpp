@@ -20,6 +20,9 @@
 // | ir-ring       | as hambot                    | imu, gps; DistanceSensor "ir0" ... "ir5"     |
 // |               |                              |   (0, +45, +90, 180, -90, -45 deg; 1.5 m;    |
 // |               |                              |   type infra-red, 3 rays over 0.03 rad)      |
+// | ir-fan        | as hambot                    | imu, gps; DistanceSensor "ir0" ... "ir5"     |
+// |               |                              |   (+75 ... -75 deg in 30 deg steps, left to  |
+// |               |                              |   right: the IR lab's Figure 1; as ir-ring's)|
 // | sonar-ring    | as hambot                    | imu, gps; DistanceSensor "so0" ... "so7"     |
 // |               |                              |   (every 45 deg from 0 ccw; 5 m; type sonar, |
 // |               |                              |   5 rays over 0.4 rad)                       |
@@ -125,7 +128,7 @@ const std::vector<RobotProfile> &profiles();
 const RobotProfile &default_profile();
 // The profile called name; throws common::InputError naming the known profiles otherwise.
 const RobotProfile &find_profile(std::string_view name);
-// "hambot, hambot-2025, hambot-12m, bumper-depth, ir-ring, sonar-ring, micromouse"
+// "hambot, hambot-2025, hambot-12m, bumper-depth, ir-ring, ir-fan, sonar-ring, micromouse"
 std::string profile_names();
 
 // Throws common::InputError naming the first bad field by its key path, e.g.

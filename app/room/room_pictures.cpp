@@ -1,0 +1,147 @@
+// The room run's pictures (app/room/room_pictures.hpp).
+
+#include "app/room/room_pictures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include <fmt/format.h>
+
+#include "app/picture/figure.hpp"
+#include "app/picture/plain_grid_picture.hpp"
+#include "plan/room_wavefront.hpp"
+
+namespace app {
+namespace {
+
+constexpr Rgb kBlockedTone{90, 90, 90};
+constexpr Rgb kUnreachedTone{255, 255, 255};
+constexpr Rgb kNearTone{255, 236, 170};
+constexpr Rgb kFarTone{20, 60, 170};
+
+// The map's cells as a plain grid, each in `tone_of(flat index)`.
+template <typename ToneOf>
+PlainGrid room_grid(const sensing::RoomMap &map, ToneOf tone_of) {
+  PlainGrid g;
+  g.cells_x = map.cells_x();
+  g.cells_y = map.cells_y();
+  g.x0_m = map.spec().boundary.x_start_m;
+  g.y0_m = map.spec().boundary.y_start_m;
+  g.cell_w_m = g.cell_h_m = map.cell_m();
+  g.tones.reserve(map.size());
+  for (std::size_t n = 0; n < map.size(); ++n) g.tones.push_back(tone_of(n));
+  return g;
+}
+
+// The last plan's cells' centres, in pixels.
+std::vector<PointPx> plan_px(const robot::RoomController &c, const PlainGridFrame &frame) {
+  std::vector<PointPx> points;
+  for (const std::size_t n : c.path()) {
+    const mapping::Point p = c.map().centre_of(c.map().cell_of_index(n));
+    points.push_back(frame.at(p.x_m, p.y_m));
+  }
+  return points;
+}
+
+double mark_px(const PlainGridFrame &frame) { return std::max(4.0, frame.cell_w_px * 0.8); }
+
+void draw_goal(Drawing &page, const PlainGridFrame &frame, const RoomPictureMarks &marks) {
+  if (!marks.goal) return;
+  const PointPx g = frame.at(marks.goal->x_m, marks.goal->y_m);
+  const double side = mark_px(frame) * 1.5;
+  page.stroke_rect({g.x - side / 2, g.y - side / 2, side, side}, std::max(1.5, side / 6), kGoalColour);
+}
+
+void draw_robot(Drawing &page, const PlainGridFrame &frame, const robot::RoomController &c) {
+  const PointPx at = frame.at(c.position().x_m, c.position().y_m);
+  const double r = mark_px(frame) / 2;
+  page.ringed_disc(at, r, kEndColour, std::max(1.0, r / 4), kWhite);
+  // its heading: a white tick from the centre to the rim
+  page.polyline({at, {at.x + r * std::cos(c.yaw_rad()), at.y - r * std::sin(c.yaw_rad())}}, std::max(1.0, r / 3),
+                kWhite);
+}
+
+void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::RoomController &c) {
+  const std::vector<PointPx> plan = plan_px(c, frame);
+  if (plan.size() >= 2) page.polyline(plan, std::max(1.5, frame.cell_w_px / 5), kPlannedColour);
+}
+
+}  // namespace
+
+MapTones room_map_tones(const sensing::RoomMap &map, const sensing::MarkProbabilities &p, double threshold) {
+  MapTones tones;
+  tones.initial_log_odds = static_cast<float>(map.model().prior_log_odds());
+  tones.threshold = static_cast<float>(threshold);
+  tones.occupied_increment = map.model().increment_for(p.p_occ);
+  tones.free_increment = map.model().increment_for(p.p_free);
+  return tones;
+}
+
+std::string room_map_picture(const robot::RoomController &c, const MapTones &tones, const RoomPictureMarks &marks,
+                             PictureFormat format) {
+  const sensing::RoomMap &map = c.map();
+  const PlainGrid g = room_grid(map, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
+  Figure legend;
+  legend.lines = {marks.caption};
+  legend.items = {{Swatch::line, kPathColour, "trajectory"},
+                  {Swatch::square, kStartColour, "start"},
+                  {Swatch::disc, kEndColour, "robot"}};
+  if (c.path().size() >= 2) legend.items.push_back({Swatch::line, kPlannedColour, "last plan"});
+  if (marks.goal) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
+  legend.bar = map_tone_bar(tones, "never observed");
+  const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
+    for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
+    page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
+    draw_plan(page, frame, c);
+    const double side = mark_px(frame);
+    page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
+    draw_goal(page, frame, marks);
+    draw_robot(page, frame, c);
+  };
+  return plain_grid_picture(g, legend, overlay, format).encode();
+}
+
+Rgb wave_tone(std::int32_t value, std::int32_t top) {
+  if (value == plan::kWaveBlocked) return kBlockedTone;
+  if (value == plan::kWaveGoal) return kGoalColour;
+  if (value <= plan::kWaveUnreached) return kUnreachedTone;
+  const double f = top <= plan::kWaveGoal + 1
+                       ? 1.0
+                       : static_cast<double>(value - plan::kWaveGoal - 1) / static_cast<double>(top - plan::kWaveGoal - 1);
+  const auto mix = [f](unsigned char a, unsigned char b) {
+    return static_cast<unsigned char>(std::lround(a + f * (static_cast<double>(b) - a)));
+  };
+  return Rgb{mix(kNearTone.r, kFarTone.r), mix(kNearTone.g, kFarTone.g), mix(kNearTone.b, kFarTone.b)};
+}
+
+std::string room_wave_picture(const robot::RoomController &c, const RoomPictureMarks &marks, PictureFormat format) {
+  const std::vector<std::int32_t> &wave = c.wave();
+  const std::int32_t top = wave.empty() ? plan::kWaveGoal : *std::max_element(wave.begin(), wave.end());
+  const PlainGrid g = room_grid(c.map(), [&](std::size_t n) { return wave_tone(wave[n], top); });
+  Figure legend;
+  legend.lines = {marks.caption, fmt::format("the wave's numbers: 1 blocked, 2 the goal, up to {} the farthest", top)};
+  legend.items = {{Swatch::box, kBlockedTone, "1: obstacle, grown"}, {Swatch::box, kGoalColour, "2: goal"}};
+  if (c.path().size() >= 2) legend.items.push_back({Swatch::line, kPlannedColour, "path"});
+  legend.items.push_back({Swatch::disc, kEndColour, "robot"});
+  ColourBar bar;
+  bar.name = "wave";
+  const int samples = 60;
+  for (int k = 0; k < samples; ++k) {
+    bar.tones.push_back(wave_tone(plan::kWaveGoal + 1 + (top - plan::kWaveGoal - 1) * k / (samples - 1), top));
+  }
+  bar.ticks = {{0.0, fmt::format("{}", plan::kWaveGoal + 1)}, {1.0, fmt::format("{}", std::max(top, plan::kWaveGoal + 1))}};
+  bar.left_word = "near the goal";
+  bar.right_word = "far";
+  bar.extra = LegendItem{Swatch::box, kUnreachedTone, "0: not reached"};
+  legend.bar = bar;
+  const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    draw_plan(page, frame, c);
+    draw_goal(page, frame, marks);
+    draw_robot(page, frame, c);
+  };
+  return plain_grid_picture(g, legend, overlay, format).encode();
+}
+
+}  // namespace app

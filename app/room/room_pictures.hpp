@@ -1,0 +1,48 @@
+#pragma once
+// The room run's pictures (app/picture's drawing and page layout, as the maze's map.png and
+// map-log's pictures), north up, one block a map cell, the cells' i and j on the axes:
+//
+//   map    the log-odds in map.png's tones (occupied dark, free light, graded by the
+//          set-up's own increments; never observed blue-grey), the trajectory in red from the
+//          start (green square) to the robot (blue disc), the last plan in magenta, the goal
+//          a yellow frame; a colour bar of the tones and a scale bar.
+//   wave   the wavefront's numbers as the labs grade them, drawn: blocked cells (1, the
+//          obstacles grown) dark grey, the goal (2) yellow, each cell the wave reached in a
+//          tone from light (near the goal) to deep blue (the farthest), cells it never
+//          reached (0) white; the path and the robot over it.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/picture/drawing.hpp"
+#include "app/picture/map_picture.hpp"
+#include "mapping/grid_types.hpp"
+#include "robot/room_controller.hpp"
+#include "sensing/room_map.hpp"
+
+namespace app {
+
+// What both pictures mark besides the controller's own state.
+struct RoomPictureMarks {
+  mapping::Point start;
+  std::optional<mapping::Point> goal;
+  std::string caption;  // the legend's first line
+};
+
+// The map tones of a room run: the map's prior and the set-up's increments, --threshold.
+MapTones room_map_tones(const sensing::RoomMap &map, const sensing::MarkProbabilities &p, double threshold);
+
+// The map as the controller holds it now: tones, trajectory, last plan, start, goal, robot.
+std::string room_map_picture(const robot::RoomController &c, const MapTones &tones, const RoomPictureMarks &marks,
+                             PictureFormat format = PictureFormat::png);
+
+// The wave the controller planned on last (non-empty), with the path and the robot.
+std::string room_wave_picture(const robot::RoomController &c, const RoomPictureMarks &marks,
+                              PictureFormat format = PictureFormat::png);
+
+// The tone of a wave number (plan/room_wavefront.hpp's): `top` the largest in the wave.
+Rgb wave_tone(std::int32_t value, std::int32_t top);
+
+}  // namespace app

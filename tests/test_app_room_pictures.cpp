@@ -1,0 +1,91 @@
+// The room run's pictures (app/room/room_pictures.hpp): the wave's tones, and what
+// `room --out` draws: map.png, wave.png and a picture per snapshot, with their tones at known
+// cells. About 0.5 s.
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/picture/map_picture.hpp"
+#include "app/picture/plain_grid_picture.hpp"
+#include "app/room/room_pictures.hpp"
+#include "cli_runner.hpp"
+#include "png_reader.hpp"
+
+namespace {
+
+std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
+
+// Whether any pixel of the picture is in colour c.
+bool has_colour(const test_png::Png &png, app::Rgb c) {
+  for (std::size_t i = 0; i + 2 < png.rgb.size(); i += 3) {
+    if (png.rgb[i] == c.r && png.rgb[i + 1] == c.g && png.rgb[i + 2] == c.b) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("wave tones: blocked, goal, unreached, and light near the goal to deep blue at the farthest") {
+  CHECK(rgb(app::wave_tone(1, 40)) == std::vector<int>{90, 90, 90});
+  CHECK(rgb(app::wave_tone(2, 40)) == rgb(app::kGoalColour));
+  CHECK(rgb(app::wave_tone(0, 40)) == std::vector<int>{255, 255, 255});
+  CHECK(rgb(app::wave_tone(3, 40)) == std::vector<int>{255, 236, 170});
+  CHECK(rgb(app::wave_tone(40, 40)) == std::vector<int>{20, 60, 170});
+  const app::Rgb middle = app::wave_tone(22, 41);  // half way from 3 to 41: between the two
+  CHECK(middle.r == 138);  // (255 + 20) / 2, rounded
+  CHECK(middle.g == 148);  // (236 + 60) / 2
+}
+
+TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at known cells") {
+  const test_cli::TempDir dir("room_pictures");
+  const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
+  const test_cli::Ran ran = test_cli::run({"room", world, "--strategy", "wavefront", "--goal", "4.7,2.7",
+                                           "--snapshot-steps", "50", "--snapshots-at", "1", "--quiet", "--out",
+                                           dir.path.string()});
+  REQUIRE(ran.status == 0);
+  for (const char *name : {"map.png", "wave.png", "snapshots/step50.png", "snapshots/step50_wave.png",
+                           "snapshots/t1s.png", "snapshots/t1s_wave.png"}) {
+    INFO(name);
+    CHECK(std::filesystem::is_regular_file(dir.path / name));
+  }
+  const test_png::Png map = test_png::read_png(test_png::read_all(dir.path / "map.png"));
+  const test_png::Png wave = test_png::read_png(test_png::read_all(dir.path / "wave.png"));
+  // 5 m over 600 px: 12 px a cell, where the picture's layout puts the map.
+  app::PlainGrid grid;
+  grid.cells_x = 50;
+  grid.cells_y = 30;
+  grid.cell_w_m = grid.cell_h_m = 0.1;
+  const app::PlainGridFrame frame = app::plain_grid_frame(grid, app::Figure{});
+  REQUIRE(frame.cell_w_px == 12);
+  const auto centre = [&frame](double x_m, double y_m) {
+    const app::PointPx p = frame.at(x_m, y_m);
+    return std::vector<int>{static_cast<int>(p.x), static_cast<int>(p.y)};
+  };
+  // The shelf's underside (its face at y 1.75, in the cells of row 17): occupied on the map
+  // (a dark tone), blocked in the wave.
+  const std::vector<int> shelf = centre(4.55, 1.75);
+  CHECK(map.at(shelf[0], shelf[1])[0] < 70);
+  CHECK(wave.at(shelf[0], shelf[1]) == std::vector<int>{90, 90, 90});
+  // Inside the partition (1.0 ... 1.3, 0 ... 1.8): never observed, blocked in the wave.
+  const std::vector<int> partition = centre(1.15, 1.0);
+  CHECK(map.at(partition[0], partition[1]) == rgb(app::kUnknownTone));
+  CHECK(wave.at(partition[0], partition[1]) == std::vector<int>{90, 90, 90});
+  // The open middle of the room (2.0, 0.6): seen free (light); reached by the wave (neither
+  // blocked nor white).
+  const std::vector<int> open = centre(2.05, 0.65);
+  CHECK(map.at(open[0], open[1])[0] >= 215);
+  CHECK(wave.at(open[0], open[1]) != std::vector<int>{90, 90, 90});
+  CHECK(wave.at(open[0], open[1]) != std::vector<int>{255, 255, 255});
+  CHECK(has_colour(map, app::kStartColour));
+  CHECK(has_colour(map, app::kPathColour));
+  CHECK(has_colour(wave, app::kGoalColour));
+
+  // Frontier has no wave: map.png only.
+  const test_cli::TempDir frontier("room_pictures_frontier");
+  REQUIRE(test_cli::run({"room", world, "--quiet", "--out", frontier.path.string()}).status == 0);
+  CHECK(std::filesystem::is_regular_file(frontier.path / "map.png"));
+  CHECK_FALSE(std::filesystem::exists(frontier.path / "wave.png"));
+}
