@@ -252,6 +252,7 @@ const float *Simulation::lidar_range_image(int device) {
     common::Rng rng = rng_for(device);
     const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
     with_solids([&](const auto &solids) { model.range_image(solids, lidar_noise(spec), pose_, rng, state.ranges); });
+    lidar_beams_cast_ += spec.horizontal_resolution;
     apply_lidar_faults(device, spec, state.ranges);
   }
   return state.ranges.data();
@@ -303,6 +304,7 @@ void Simulation::rotating_range_image_in(const Solids &solids, int device, Devic
     }
     const std::uint64_t seed = maze::sim::beam_seed(options_.seed, device, step, i);
     const float range = model.beam_range(solids, noise, viewpoint_at(step), i, seed);
+    ++lidar_beams_cast_;
     state.ranges[b] = faulty_beam(device, spec, step, i, range);
   }
 }

@@ -104,6 +104,9 @@ class Simulation {
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
   std::int64_t time_ms() const { return time_ms_; }
+  // Lidar beams cast so far, every lidar together: a fixed lidar's whole image each step it
+  // is read, a rotating lidar's beams swept since they were last cast (bench/'s unit of work).
+  std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
   // The next Robot::step returns -1 (as when Webots quits).
   void request_stop() { stop_requested_ = true; }
 
@@ -204,6 +207,7 @@ class Simulation {
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;
+  std::int64_t lidar_beams_cast_ = 0;
   bool stop_requested_ = false;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
