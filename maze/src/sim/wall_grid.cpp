@@ -169,6 +169,11 @@ double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
 
 double WallGrid::cast_from(const CastOrigin &origin, double dx, double dy,
                            double max_range_m) const {
+  return cast_with_inverses(origin, dx, dy, 1.0 / dx, 1.0 / dy, max_range_m);
+}
+
+double WallGrid::cast_with_inverses(const CastOrigin &origin, double dx, double dy, double inv_dx, double inv_dy,
+                                    double max_range_m) const {
   // A ray along an axis has slabs it never crosses: the reference handles those exactly. So
   // does it a ray with a subnormal component, whose inverse overflows to infinity (an origin
   // on a box edge then makes 0 * infinity, and the quadrant walk's order of max and min
@@ -179,11 +184,28 @@ double WallGrid::cast_from(const CastOrigin &origin, double dx, double dy,
   }
   if (!origin.inside) return kInfinity;
   if (dx > 0.0) {
-    return dy > 0.0 ? cast_quadrant<true, true>(origin, dx, dy, max_range_m)
-                    : cast_quadrant<true, false>(origin, dx, dy, max_range_m);
+    return dy > 0.0 ? cast_quadrant<true, true>(origin, inv_dx, inv_dy, max_range_m)
+                    : cast_quadrant<true, false>(origin, inv_dx, inv_dy, max_range_m);
   }
-  return dy > 0.0 ? cast_quadrant<false, true>(origin, dx, dy, max_range_m)
-                  : cast_quadrant<false, false>(origin, dx, dy, max_range_m);
+  return dy > 0.0 ? cast_quadrant<false, true>(origin, inv_dx, inv_dy, max_range_m)
+                  : cast_quadrant<false, false>(origin, inv_dx, inv_dy, max_range_m);
+}
+
+void WallGrid::cast_fan(const CastOrigin &origin, std::span<const double> dx, std::span<const double> dy,
+                        double max_range_m, std::span<double> ranges) const {
+  assert(dy.size() == dx.size() && ranges.size() == dx.size());
+  constexpr std::size_t kBlock = 64;
+  double inv_dx[kBlock], inv_dy[kBlock];
+  for (std::size_t start = 0; start < dx.size(); start += kBlock) {
+    const std::size_t n = std::min(kBlock, dx.size() - start);
+    for (std::size_t k = 0; k < n; ++k) {
+      inv_dx[k] = 1.0 / dx[start + k];
+      inv_dy[k] = 1.0 / dy[start + k];
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      ranges[start + k] = cast_with_inverses(origin, dx[start + k], dy[start + k], inv_dx[k], inv_dy[k], max_range_m);
+    }
+  }
 }
 
 template <bool kEastward, bool kNorthward>
@@ -243,13 +265,11 @@ double WallGrid::entry_in_cell(std::uint8_t f, int cx, int cy, const CastOrigin 
 }
 
 template <bool kEastward, bool kNorthward>
-double WallGrid::cast_quadrant(const CastOrigin &origin, double dx, double dy,
+double WallGrid::cast_quadrant(const CastOrigin &origin, double inv_dx, double inv_dy,
                                double max_range_m) const {
   const double s = cell_size_m_;
   const double ox = origin.local_x_m;
   const double oy = origin.local_y_m;
-  const double inv_dx = 1.0 / dx;
-  const double inv_dy = 1.0 / dy;
   int cx = origin.cell_x;
   int cy = origin.cell_y;
   // The boxes with a face turned towards the ray, as in cast_reference.
