@@ -7,6 +7,10 @@
 #include <numbers>
 #include <type_traits>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 #include <fmt/format.h>
 
 #include "common/angles.hpp"
@@ -31,20 +35,53 @@ void cast_beams(const Solids &solids, const typename Solids::CastOrigin &origin,
     for (std::size_t k = 0; k < dx.size(); ++k) ranges[k] = solids.cast_from(origin, dx[k], dy[k], reach_m);
   }
 }
-// fixed_lidar_reading for each beam (the same values), without a branch: a block's
+void fixed_readings_baseline(const LidarSpec &lidar, const double *range_m, const double *cos_face,
+                             const double *noise_m, float *out, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) out[k] = fixed_lidar_reading(lidar, range_m[k], cos_face[k], noise_m[k]);
+}
+
+#if defined(__x86_64__) || defined(__i386__)
+// fixed_lidar_reading for each beam, the same values: the same IEEE operations in the same
+// order (floor((planar + noise) / resolution + 0.5) x resolution / cos_face, no fused
+// multiply-add), four beams to a 256-bit lane group, the range checks as masks: a block's
 // divisions overlap and no beam's range check is a branch to mispredict.
+[[gnu::target("avx2")]] void fixed_readings_avx2(const LidarSpec &lidar, const double *range_m, const double *cos_face,
+                                                 const double *noise_m, float *out, std::size_t n) {
+  std::size_t k = 0;
+  if (lidar.resolution_m > 0.0) {
+    const __m256d lo = _mm256_set1_pd(lidar.min_range_m), hi = _mm256_set1_pd(lidar.max_range_m);
+    const __m256d resolution = _mm256_set1_pd(lidar.resolution_m), half = _mm256_set1_pd(0.5);
+    const __m128 no_return = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    for (; k + 4 <= n; k += 4) {
+      const __m256d c = _mm256_loadu_pd(cos_face + k);
+      const __m256d planar = _mm256_mul_pd(_mm256_loadu_pd(range_m + k), c);
+      const __m256d steps = _mm256_add_pd(_mm256_div_pd(_mm256_add_pd(planar, _mm256_loadu_pd(noise_m + k)), resolution), half);
+      const __m256d floored = _mm256_round_pd(steps, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+      const __m256d reading = _mm256_div_pd(_mm256_mul_pd(floored, resolution), c);
+      const __m256d in_range = _mm256_and_pd(
+          _mm256_and_pd(_mm256_cmp_pd(planar, lo, _CMP_GE_OQ), _mm256_cmp_pd(planar, hi, _CMP_LT_OQ)),
+          _mm256_and_pd(_mm256_cmp_pd(reading, lo, _CMP_GE_OQ), _mm256_cmp_pd(reading, hi, _CMP_LT_OQ)));
+      // The four 64-bit masks as four 32-bit ones (their low halves), beside the four floats.
+      const __m128 mask = _mm_shuffle_ps(_mm256_castps256_ps128(_mm256_castpd_ps(in_range)),
+                                         _mm256_extractf128_ps(_mm256_castpd_ps(in_range), 1), _MM_SHUFFLE(2, 0, 2, 0));
+      _mm_storeu_ps(out + k, _mm_blendv_ps(no_return, _mm256_cvtpd_ps(reading), mask));
+    }
+  }
+  for (; k < n; ++k) out[k] = fixed_lidar_reading(lidar, range_m[k], cos_face[k], noise_m[k]);
+}
+
+#endif
+
 void fixed_readings(const LidarSpec &lidar, std::span<const double> range_m, std::span<const double> cos_face,
                     std::span<const double> noise_m, std::span<float> out) {
-  constexpr float kNoReturn = std::numeric_limits<float>::infinity();
-  const double lo = lidar.min_range_m, hi = lidar.max_range_m, resolution = lidar.resolution_m;
-  const bool quantise = resolution > 0.0;
-  for (std::size_t k = 0; k < range_m.size(); ++k) {
-    const double planar_m = range_m[k] * cos_face[k];
-    const double noisy_m = planar_m + noise_m[k];
-    const double reading_m = (quantise ? std::floor(noisy_m / resolution + 0.5) * resolution : noisy_m) / cos_face[k];
-    const bool in_range = planar_m >= lo && planar_m < hi && reading_m >= lo && reading_m < hi;
-    out[k] = in_range ? static_cast<float>(reading_m) : kNoReturn;
+#if defined(__x86_64__) || defined(__i386__)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) {
+    fixed_readings_avx2(lidar, range_m.data(), cos_face.data(), noise_m.data(), out.data(), range_m.size());
+    return;
   }
+#endif
+  fixed_readings_baseline(lidar, range_m.data(), cos_face.data(), noise_m.data(), out.data(), range_m.size());
 }
 
 }  // namespace
