@@ -75,7 +75,10 @@ maze::sim::Pose Simulation::arc_end(const maze::sim::Pose &from, double v_m_s, d
   // Exact arc: the chord of length v h sinc(turn / 2) along the mean heading.
   const double turn = w_rad_s * h_s;
   const double half = turn / 2.0;
-  const double chord = v_m_s * h_s * (half == 0.0 ? 1.0 : std::sin(half) / half);
+  const double length_m = v_m_s * h_s;
+  // Turning in place (no length, a finite turn): the chord is 0 whatever sinc is, so no sin.
+  const bool no_chord = length_m == 0.0 && std::isfinite(half);
+  const double chord = no_chord ? 0.0 : length_m * (half == 0.0 ? 1.0 : std::sin(half) / half);
   maze::sim::Pose to = from;
   if (chord != 0.0) {  // at rest: no sin/cos (adding 0 would change nothing)
     to.x_m += chord * std::cos(from.yaw_rad + half);

@@ -11,6 +11,7 @@ namespace maze::sim {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kSmallestNormal = std::numeric_limits<double>::min();
 // An overlap smaller than this is rounding, not a collision.
 constexpr double kSlop_m = 1e-12;
 // disc_in_free_core's safety margin: far above rounding, far below any wall thickness.
@@ -178,7 +179,6 @@ double WallGrid::cast_with_inverses(const CastOrigin &origin, double dx, double 
   // does it a ray with a subnormal component, whose inverse overflows to infinity (an origin
   // on a box edge then makes 0 * infinity, and the quadrant walk's order of max and min
   // would turn that NaN into another answer than the reference's).
-  constexpr double kSmallestNormal = std::numeric_limits<double>::min();
   if (std::abs(dx) < kSmallestNormal || std::abs(dy) < kSmallestNormal || !(std::isfinite(dx) && std::isfinite(dy))) {
     return cast_reference(origin.x_m, origin.y_m, dx, dy, max_range_m);
   }
@@ -203,7 +203,18 @@ void WallGrid::cast_fan(const CastOrigin &origin, std::span<const double> dx, st
       inv_dy[k] = 1.0 / dy[start + k];
     }
     for (std::size_t k = 0; k < n; ++k) {
-      ranges[start + k] = cast_with_inverses(origin, dx[start + k], dy[start + k], inv_dx[k], inv_dy[k], max_range_m);
+      const double x = dx[start + k], y = dy[start + k];
+      // cast_with_inverses, its four walks inlined here: a fan's beams share the origin's loads.
+      if (!origin.inside || !(std::abs(x) >= kSmallestNormal) || !(std::abs(y) >= kSmallestNormal) ||
+          !(std::isfinite(x) && std::isfinite(y))) {
+        ranges[start + k] = cast_with_inverses(origin, x, y, inv_dx[k], inv_dy[k], max_range_m);
+      } else if (x > 0.0) {
+        ranges[start + k] = y > 0.0 ? cast_quadrant<true, true>(origin, inv_dx[k], inv_dy[k], max_range_m)
+                                    : cast_quadrant<true, false>(origin, inv_dx[k], inv_dy[k], max_range_m);
+      } else {
+        ranges[start + k] = y > 0.0 ? cast_quadrant<false, true>(origin, inv_dx[k], inv_dy[k], max_range_m)
+                                    : cast_quadrant<false, false>(origin, inv_dx[k], inv_dy[k], max_range_m);
+      }
     }
   }
 }

@@ -207,6 +207,8 @@ class Simulation {
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;
+  double basic_step_s_ = 0.0;      // the basic time step in seconds, and the time limit in
+  std::int64_t time_limit_ms_ = 0; // ms (0: none), computed once from the options
   std::int64_t lidar_beams_cast_ = 0;
   bool stop_requested_ = false;
   bool ended_ = false;

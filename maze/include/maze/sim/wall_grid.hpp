@@ -120,7 +120,8 @@ class WallGrid {
   // cast_from for a ray with dx, dy != 0 from inside the maze, the signs fixed at compile time.
   // inv_dx, inv_dy: 1 / dx, 1 / dy.
   template <bool kEastward, bool kNorthward>
-  double cast_quadrant(const CastOrigin &origin, double inv_dx, double inv_dy, double max_range_m) const;
+  [[gnu::always_inline]] inline double cast_quadrant(const CastOrigin &origin, double inv_dx, double inv_dy,
+                                                     double max_range_m) const;
   // cast_from with 1 / dx and 1 / dy given.
   double cast_with_inverses(const CastOrigin &origin, double dx, double dy, double inv_dx, double inv_dy,
                             double max_range_m) const;
