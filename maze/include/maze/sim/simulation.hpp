@@ -182,9 +182,10 @@ class Simulation {
   // box is conservative, so the pose is the same as with push_out every substep).
   void keep_body_out_of_walls();
   // A wheel's rate until its next change (position control: the set velocity towards the
-  // target, 0 on it), and the time until it reaches its target (infinity: never this way).
+  // target, 0 on it), and the time until it reaches its target at that rate (infinity:
+  // never this way).
   double wheel_rate_rad_s(const Wheel &wheel) const;
-  double time_to_target_s(const Wheel &wheel) const;
+  double time_to_target_s(const Wheel &wheel, double rate_rad_s) const;
   bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
   void read_disabled(DeviceState &state);  // a disabled three-value device reads NaN
   common::Rng rng_for(int device) const;
