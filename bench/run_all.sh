@@ -1,6 +1,7 @@
 #!/bin/sh
 # Builds the `bench` preset and prints one table of every benchmark:
-# the lidar scan (bench_lidar), ray integration against OctoMap and the default-world scan
+# the lidar scan (bench_lidar), the course robot's cost a control step and a lidar beam
+# (bench_course_run), ray integration against OctoMap and the default-world scan
 # update (bench_ray_integration), `maze_mapper run` on a 16 x 16 maze, and the scaling runs
 # (bench/scale.sh). Run from anywhere:
 #
@@ -31,6 +32,10 @@ echo
 echo "## Lidar scan in a 20 x 20 m arena, 360 beams (bench_arena; Google Benchmark, CPU time)"
 "$bin/bench_arena" --benchmark_min_time=0.2 --benchmark_format=csv 2>/dev/null |
     awk -F, 'NR > 1 { gsub(/"/, "", $1); printf "%-52s %10.2f us cpu %10.2f us real\n", $1, $4, $3 }'
+echo
+
+echo "## The course robot: ns a control step and a lidar beam in real runs (bench_course_run; thread CPU time)"
+"$bin/bench_course_run" --rounds 5 64 256
 echo
 
 echo "## Ray integration and scan update (bench_ray_integration; thread CPU time)"

@@ -128,6 +128,8 @@ Simulation::Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &
 
 void Simulation::set_up() {
   options_.validate();
+  basic_step_s_ = options_.basic_time_step_ms / 1000.0;
+  time_limit_ms_ = static_cast<std::int64_t>(std::llround(options_.time_limit_s * 1000.0));
   check_stuck_bumper(profile_, options_.stuck_bumper);
   const bool overlaps = with_solids([&](const auto &solids) {
     maze::sim::check_pose_free(solids, pose_);
@@ -185,10 +187,10 @@ Device *Simulation::device(const std::string &name) {
 int Simulation::step(int duration_ms) {
   if (stop_requested_ || ended_) return -1;
   const int basic = options_.basic_time_step_ms;
-  const int count = std::max(1, (duration_ms + basic - 1) / basic);
-  const auto limit_ms = static_cast<std::int64_t>(std::llround(options_.time_limit_s * 1000.0));
+  const int count = duration_ms == basic ? 1 : std::max(1, (duration_ms + basic - 1) / basic);
+  const std::int64_t limit_ms = time_limit_ms_;
   for (int i = 0; i < count; ++i) {
-    advance(basic / 1000.0);
+    advance(basic_step_s_);
     time_ms_ += basic;
     ++steps_;
     if (history_steps_ > 0) {
@@ -252,6 +254,7 @@ const float *Simulation::lidar_range_image(int device) {
     common::Rng rng = rng_for(device);
     const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
     with_solids([&](const auto &solids) { model.range_image(solids, lidar_noise(spec), pose_, rng, state.ranges); });
+    lidar_beams_cast_ += spec.horizontal_resolution;
     apply_lidar_faults(device, spec, state.ranges);
   }
   return state.ranges.data();
@@ -303,6 +306,7 @@ void Simulation::rotating_range_image_in(const Solids &solids, int device, Devic
     }
     const std::uint64_t seed = maze::sim::beam_seed(options_.seed, device, step, i);
     const float range = model.beam_range(solids, noise, viewpoint_at(step), i, seed);
+    ++lidar_beams_cast_;
     state.ranges[b] = faulty_beam(device, spec, step, i, range);
   }
 }

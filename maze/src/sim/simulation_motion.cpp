@@ -22,10 +22,9 @@ double Simulation::wheel_rate_rad_s(const Wheel &wheel) const {
   return wheel.target_rad > wheel.angle_rad ? limit : -limit;
 }
 
-double Simulation::time_to_target_s(const Wheel &wheel) const {
-  const double rate = wheel_rate_rad_s(wheel);
-  if (std::isinf(wheel.target_rad) || rate == 0.0) return std::numeric_limits<double>::infinity();
-  return (wheel.target_rad - wheel.angle_rad) / rate;
+double Simulation::time_to_target_s(const Wheel &wheel, double rate_rad_s) const {
+  if (std::isinf(wheel.target_rad) || rate_rad_s == 0.0) return std::numeric_limits<double>::infinity();
+  return (wheel.target_rad - wheel.angle_rad) / rate_rad_s;
 }
 
 void Simulation::advance(double dt_s) {
@@ -33,11 +32,11 @@ void Simulation::advance(double dt_s) {
   // target, so a step is at most three pieces of constant rates, each an exact arc.
   double left_s = dt_s;
   for (int piece = 0; piece < 3 && left_s > 0.0; ++piece) {
-    const double to_left_s = time_to_target_s(wheels_[kLeft]);
-    const double to_right_s = time_to_target_s(wheels_[kRight]);
-    const double h = std::min({left_s, to_left_s, to_right_s});
     const double left_rate = wheel_rate_rad_s(wheels_[kLeft]);
     const double right_rate = wheel_rate_rad_s(wheels_[kRight]);
+    const double to_left_s = time_to_target_s(wheels_[kLeft], left_rate);
+    const double to_right_s = time_to_target_s(wheels_[kRight], right_rate);
+    const double h = std::min({left_s, to_left_s, to_right_s});
     turn_wheel(wheels_[kLeft], left_rate, h, h == to_left_s);
     turn_wheel(wheels_[kRight], right_rate, h, h == to_right_s);
     move_body(left_rate, right_rate, h);
@@ -75,7 +74,10 @@ maze::sim::Pose Simulation::arc_end(const maze::sim::Pose &from, double v_m_s, d
   // Exact arc: the chord of length v h sinc(turn / 2) along the mean heading.
   const double turn = w_rad_s * h_s;
   const double half = turn / 2.0;
-  const double chord = v_m_s * h_s * (half == 0.0 ? 1.0 : std::sin(half) / half);
+  const double length_m = v_m_s * h_s;
+  // Turning in place (no length, a finite turn): the chord is 0 whatever sinc is, so no sin.
+  const bool no_chord = length_m == 0.0 && std::isfinite(half);
+  const double chord = no_chord ? 0.0 : length_m * (half == 0.0 ? 1.0 : std::sin(half) / half);
   maze::sim::Pose to = from;
   if (chord != 0.0) {  // at rest: no sin/cos (adding 0 would change nothing)
     to.x_m += chord * std::cos(from.yaw_rad + half);

@@ -11,6 +11,7 @@ namespace maze::sim {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kSmallestNormal = std::numeric_limits<double>::min();
 // An overlap smaller than this is rounding, not a collision.
 constexpr double kSlop_m = 1e-12;
 // disc_in_free_core's safety margin: far above rounding, far below any wall thickness.
@@ -169,21 +170,53 @@ double WallGrid::cast_direction(double x_m, double y_m, double dx, double dy,
 
 double WallGrid::cast_from(const CastOrigin &origin, double dx, double dy,
                            double max_range_m) const {
+  return cast_with_inverses(origin, dx, dy, 1.0 / dx, 1.0 / dy, max_range_m);
+}
+
+double WallGrid::cast_with_inverses(const CastOrigin &origin, double dx, double dy, double inv_dx, double inv_dy,
+                                    double max_range_m) const {
   // A ray along an axis has slabs it never crosses: the reference handles those exactly. So
   // does it a ray with a subnormal component, whose inverse overflows to infinity (an origin
   // on a box edge then makes 0 * infinity, and the quadrant walk's order of max and min
   // would turn that NaN into another answer than the reference's).
-  constexpr double kSmallestNormal = std::numeric_limits<double>::min();
   if (std::abs(dx) < kSmallestNormal || std::abs(dy) < kSmallestNormal || !(std::isfinite(dx) && std::isfinite(dy))) {
     return cast_reference(origin.x_m, origin.y_m, dx, dy, max_range_m);
   }
   if (!origin.inside) return kInfinity;
   if (dx > 0.0) {
-    return dy > 0.0 ? cast_quadrant<true, true>(origin, dx, dy, max_range_m)
-                    : cast_quadrant<true, false>(origin, dx, dy, max_range_m);
+    return dy > 0.0 ? cast_quadrant<true, true>(origin, inv_dx, inv_dy, max_range_m)
+                    : cast_quadrant<true, false>(origin, inv_dx, inv_dy, max_range_m);
   }
-  return dy > 0.0 ? cast_quadrant<false, true>(origin, dx, dy, max_range_m)
-                  : cast_quadrant<false, false>(origin, dx, dy, max_range_m);
+  return dy > 0.0 ? cast_quadrant<false, true>(origin, inv_dx, inv_dy, max_range_m)
+                  : cast_quadrant<false, false>(origin, inv_dx, inv_dy, max_range_m);
+}
+
+void WallGrid::cast_fan(const CastOrigin &origin, std::span<const double> dx, std::span<const double> dy,
+                        double max_range_m, std::span<double> ranges) const {
+  assert(dy.size() == dx.size() && ranges.size() == dx.size());
+  constexpr std::size_t kBlock = 64;
+  double inv_dx[kBlock], inv_dy[kBlock];
+  for (std::size_t start = 0; start < dx.size(); start += kBlock) {
+    const std::size_t n = std::min(kBlock, dx.size() - start);
+    for (std::size_t k = 0; k < n; ++k) {
+      inv_dx[k] = 1.0 / dx[start + k];
+      inv_dy[k] = 1.0 / dy[start + k];
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const double x = dx[start + k], y = dy[start + k];
+      // cast_with_inverses, its four walks inlined here: a fan's beams share the origin's loads.
+      if (!origin.inside || !(std::abs(x) >= kSmallestNormal) || !(std::abs(y) >= kSmallestNormal) ||
+          !(std::isfinite(x) && std::isfinite(y))) {
+        ranges[start + k] = cast_with_inverses(origin, x, y, inv_dx[k], inv_dy[k], max_range_m);
+      } else if (x > 0.0) {
+        ranges[start + k] = y > 0.0 ? cast_quadrant<true, true>(origin, inv_dx[k], inv_dy[k], max_range_m)
+                                    : cast_quadrant<true, false>(origin, inv_dx[k], inv_dy[k], max_range_m);
+      } else {
+        ranges[start + k] = y > 0.0 ? cast_quadrant<false, true>(origin, inv_dx[k], inv_dy[k], max_range_m)
+                                    : cast_quadrant<false, false>(origin, inv_dx[k], inv_dy[k], max_range_m);
+      }
+    }
+  }
 }
 
 template <bool kEastward, bool kNorthward>
@@ -243,13 +276,11 @@ double WallGrid::entry_in_cell(std::uint8_t f, int cx, int cy, const CastOrigin 
 }
 
 template <bool kEastward, bool kNorthward>
-double WallGrid::cast_quadrant(const CastOrigin &origin, double dx, double dy,
+double WallGrid::cast_quadrant(const CastOrigin &origin, double inv_dx, double inv_dy,
                                double max_range_m) const {
   const double s = cell_size_m_;
   const double ox = origin.local_x_m;
   const double oy = origin.local_y_m;
-  const double inv_dx = 1.0 / dx;
-  const double inv_dy = 1.0 / dy;
   int cx = origin.cell_x;
   int cy = origin.cell_y;
   // The boxes with a face turned towards the ray, as in cast_reference.

@@ -2,7 +2,9 @@
 // What the simulated sensors measure at a pose: pure functions of the walls, the sensor's
 // spec and a random source. The embedded simulator's devices and `maze_mapper scan` use them.
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <vector>
@@ -54,13 +56,23 @@ double face_cos(double beam_angle_rad);
 // range_m rounded to the nearest multiple of resolution_m, halves up (Webots'
 // depth_resolution shader: floor(r / resolution + 0.5) x resolution); unchanged when
 // resolution_m is not positive.
-double quantised_m(double range_m, double resolution_m);
+inline double quantised_m(double range_m, double resolution_m) {
+  if (!(resolution_m > 0.0)) return range_m;
+  return std::floor(range_m / resolution_m + 0.5) * resolution_m;
+}
 // What a fixed Webots lidar returns for a beam whose wall is range_m away, cos_face its
 // face_cos, noise_m its Gaussian draw: the depth along the face's axis, range_m x cos_face,
 // is +infinity outside [min range, max range); else noise is added to it, it is quantised,
 // divided by cos_face back to a range along the beam, and that is +infinity outside
 // [min range, max range) again.
-float fixed_lidar_reading(const LidarSpec &lidar, double range_m, double cos_face, double noise_m);
+inline float fixed_lidar_reading(const LidarSpec &lidar, double range_m, double cos_face, double noise_m) {
+  constexpr float kNoReturn = std::numeric_limits<float>::infinity();
+  const double planar_m = range_m * cos_face;
+  if (!(planar_m >= lidar.min_range_m) || planar_m >= lidar.max_range_m) return kNoReturn;
+  const double reading_m = quantised_m(planar_m + noise_m, lidar.resolution_m) / cos_face;
+  if (!(reading_m >= lidar.min_range_m) || reading_m >= lidar.max_range_m) return kNoReturn;
+  return static_cast<float>(reading_m);
+}
 // A rotating lidar's: range_m plus noise_m, quantised, +infinity outside [min, max].
 float rotating_lidar_reading(const LidarSpec &lidar, double range_m, double noise_m);
 

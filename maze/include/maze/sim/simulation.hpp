@@ -104,6 +104,9 @@ class Simulation {
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
   std::int64_t time_ms() const { return time_ms_; }
+  // Lidar beams cast so far, every lidar together: a fixed lidar's whole image each step it
+  // is read, a rotating lidar's beams swept since they were last cast (bench/'s unit of work).
+  std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
   // The next Robot::step returns -1 (as when Webots quits).
   void request_stop() { stop_requested_ = true; }
 
@@ -179,9 +182,10 @@ class Simulation {
   // box is conservative, so the pose is the same as with push_out every substep).
   void keep_body_out_of_walls();
   // A wheel's rate until its next change (position control: the set velocity towards the
-  // target, 0 on it), and the time until it reaches its target (infinity: never this way).
+  // target, 0 on it), and the time until it reaches its target at that rate (infinity:
+  // never this way).
   double wheel_rate_rad_s(const Wheel &wheel) const;
-  double time_to_target_s(const Wheel &wheel) const;
+  double time_to_target_s(const Wheel &wheel, double rate_rad_s) const;
   bool fresh(DeviceState &state);  // whether the cache holds this step's reading; marks it
   void read_disabled(DeviceState &state);  // a disabled three-value device reads NaN
   common::Rng rng_for(int device) const;
@@ -204,6 +208,9 @@ class Simulation {
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;
+  double basic_step_s_ = 0.0;      // the basic time step in seconds, and the time limit in
+  std::int64_t time_limit_ms_ = 0; // ms (0: none), computed once from the options
+  std::int64_t lidar_beams_cast_ = 0;
   bool stop_requested_ = false;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar

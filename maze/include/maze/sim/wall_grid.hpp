@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "maze/maze.hpp"
@@ -81,6 +82,11 @@ class WallGrid {
   CastOrigin cast_origin(double x_m, double y_m) const;
   // cast_direction from a prepared origin: the same answers.
   double cast_from(const CastOrigin &origin, double dx, double dy, double max_range_m) const;
+  // ranges[k] = cast_from(origin, dx[k], dy[k], max_range_m) for a fan of beams (the spans
+  // of one length): the same answers, the beams' direction inverses computed in a loop of
+  // their own so that their divisions overlap.
+  void cast_fan(const CastOrigin &origin, std::span<const double> dx, std::span<const double> dy,
+                double max_range_m, std::span<double> ranges) const;
   // cast_direction's plain form, one slab test per box: the same answers bit for bit (the
   // tests hold cast_direction to it); cast_direction uses it for rays along an axis and for
   // rays with a subnormal component.
@@ -112,8 +118,13 @@ class WallGrid {
                   static_cast<std::size_t>(cx)];
   }
   // cast_from for a ray with dx, dy != 0 from inside the maze, the signs fixed at compile time.
+  // inv_dx, inv_dy: 1 / dx, 1 / dy.
   template <bool kEastward, bool kNorthward>
-  double cast_quadrant(const CastOrigin &origin, double dx, double dy, double max_range_m) const;
+  [[gnu::always_inline]] inline double cast_quadrant(const CastOrigin &origin, double inv_dx, double inv_dy,
+                                                     double max_range_m) const;
+  // cast_from with 1 / dx and 1 / dy given.
+  double cast_with_inverses(const CastOrigin &origin, double dx, double dy, double inv_dx, double inv_dy,
+                            double max_range_m) const;
   // Where a ray of that quadrant enters the solid boxes f (flags, those facing it) of cell
   // (cx, cy): the path length, or infinity when it misses them all.
   template <bool kEastward, bool kNorthward>
