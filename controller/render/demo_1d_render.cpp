@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "common/xml_text.hpp"
 #include "render/text_format.hpp"
 
 namespace render {
@@ -83,20 +84,6 @@ std::string centred(const std::string &text) {
   const std::size_t columns = kPlotColumns;
   const std::size_t pad = text.size() < columns ? (columns - text.size()) / 2 : 0;
   return std::string(kPlotLeft + pad, ' ') + text;
-}
-
-std::string xml_escaped(const std::string &text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // SVG layout, in px: the plot area and its margins.
@@ -194,7 +181,7 @@ std::string svg_belief_plot(std::span<const Demo1dCell> cells, const std::string
   out += R"(<svg xmlns="http://www.w3.org/2000/svg" width="660" height="400" viewBox="0 0 660 400" font-family="sans-serif" font-size="12">)" "\n";
   out += R"(  <rect width="660" height="400" fill="#fff"/>)" "\n";
   out += fmt::format(R"(  <text x="{:.2f}" y="24" text-anchor="middle" font-size="14">{}</text>)" "\n",
-                     frame.left + frame.width / 2, xml_escaped(title));
+                     frame.left + frame.width / 2, common::xml_escaped(title));
   out += svg_axes(frame, span_of(cells));
   out += svg_points(frame, cells);
   out += "</svg>\n";

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "common/xml_text.hpp"
 #include "maze/maze.hpp"
 #include "xml_source.hpp"
 
@@ -40,21 +41,6 @@ std::vector<XmlWall> read_walls(const xml::Element &world, const Source &src) {
     walls.push_back(w);
   }
   return walls;
-}
-
-// The text as an XML attribute value.
-std::string xml_escaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // A length or coordinate as written: 12 significant digits (a picometre on a metre; the
@@ -136,7 +122,7 @@ std::string write_xml_arena(const Arena &arena) {
       "  <boundary xs=\"{}\" xe=\"{}\" ys=\"{}\" ye=\"{}\"/>\n",
       arena.obstacles.size(), arena.obstacles.size() == 1 ? "" : "s", metres(arena.width_m()),
       metres(arena.height_m()),
-      arena.name.empty() ? std::string() : fmt::format(" name=\"{}\"", xml_escaped(arena.name)),
+      arena.name.empty() ? std::string() : fmt::format(" name=\"{}\"", common::xml_escaped(arena.name)),
       metres(arena.x_min_m), metres(arena.x_max_m), metres(arena.y_min_m), metres(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
     const auto l = o.centre_line();
