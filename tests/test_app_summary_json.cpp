@@ -109,6 +109,9 @@ TEST_CASE("summary.json: every option in effect, one object a concern") {
   CHECK(o.at("world_overrides").at("start") == nlohmann::json::array({0, 0, "east"}));
   CHECK(o.at("plan").at("dilate") == 0);
   CHECK(o.at("output").at("quiet") == true);
+  CHECK(o.at("output").at("trace_steps") == false);
+  CHECK(o.at("output").at("picture_formats") == nlohmann::json::array({"png"}));
+  CHECK(o.at("world_overrides").at("centre_goals") == false);
   CHECK(run.json.at("seed") == 7);
   // Without --max-steps, the limit in effect: 1000 a cell, at least 100000.
   CHECK(run_with_out({}).json.at("options").at("max_steps") == 100000);

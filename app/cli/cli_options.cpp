@@ -16,7 +16,6 @@
 
 #include "common/error.hpp"
 #include "app/cli/demo_commands.hpp"
-#include "maze/sim/profile.hpp"
 
 namespace app {
 namespace {
@@ -111,12 +110,6 @@ CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::
   });
   return command.add_option("--seed", seed, fmt::format("N: seed of {} (default {})", what, seed))
       ->check(whole_from_zero);
-}
-
-std::string robot_names() {
-  std::string names;
-  for (const maze::sim::RobotProfile &p : maze::sim::profiles()) names += (names.empty() ? "" : ", ") + p.name;
-  return names;
 }
 
 mapping::Cell parse_cell(const std::string &text, const std::string &option) {

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/run/option_fields.hpp"  // robot_names()
 #include "mapping/grid_types.hpp"
 #include "maze/world.hpp"
 
@@ -19,9 +20,6 @@ namespace app {
 // '-4')" (CLI11 alone would wrap "-4" to 2^64 - 4). `what` says what the seed drives; the
 // description ends "(default <seed's value>)".
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what);
-
-// "hambot, hambot-2025, ...": the built-in robot profiles' names (maze::sim::profiles()).
-std::string robot_names();
 
 // "X,Y" (whole numbers, blanks around them allowed) -> the cell; throws common::InputError
 // naming `option` as the user typed it: "--to must be X,Y (got '1')".

@@ -13,6 +13,7 @@
 
 #include "app/report/files_recorder.hpp"
 #include "app/cli/cli_options.hpp"
+#include "app/cli/option_binding.hpp"
 #include "app/run/run.hpp"
 #include "app/cli/run_cli.hpp"
 #include "app/run/terminal.hpp"
@@ -37,7 +38,7 @@ void add_width_options(CLI::App &command, RunOptions &o) {
 
 // What only `run` takes, besides the exploration options.
 void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
-  run.add_flag("--quiet", o.output.quiet, "print only the final map and the summary");
+  add_field_option(run, o.output, "--quiet");
   add_speed_run_option(run, o);
   run.add_option_function<std::string>(
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
@@ -54,12 +55,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
       "N: with --out, N pictures of the map at equal fractions of the run's steps in "
       "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
   add_picture_format_option(run, o);
-  run.add_flag("--no-trace{false}", o.output.trace, "with --out, do not write trace.csv");
-  run.add_flag("--trace-steps", o.output.trace_steps,
-               "with --out, trace.csv a row every control step (default for cell and ray: a row when the "
-               "action or cell changes or a scan updates the map)");
-  run.add_flag("--no-replay{false}", o.output.replay,
-               "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
+  add_field_options(run, o.output, {"--no-trace", "--trace-steps", "--no-replay"});
   run.add_option_function<std::string>(
       "--color", [&color](const std::string &text) { color = parse_color_choice(text); },
       "WHEN: ANSI colours auto (when standard output is a terminal and NO_COLOR is not set), always or never "
@@ -71,14 +67,9 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
                         },
                         "the old spelling of --color never")
       ->group("");
-  run.add_flag("--animate", o.output.animate,
-               "redraw the map in place as the robot moves (standard output must be a terminal)");
+  add_field_option(run, o.output, "--animate");
   add_width_options(run, o);
-  run.add_option("--fps", o.output.fps,
-                 fmt::format("--animate: frames per second, at most (default {:g})", o.output.fps));
-  run.add_option("--speed", o.output.speed,
-                 fmt::format("--animate: simulated seconds per wall-clock second (default {:g})", o.output.speed));
-  run.add_flag("--step", o.output.step, "stop after each cell: Enter goes on, q quits");
+  add_field_options(run, o.output, {"--fps", "--speed", "--step"});
 }
 
 void run_in_terminal(const RunOptions &options, CommandContext &context) {

@@ -6,9 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -18,92 +16,24 @@
 #include "app/run/shipped_worlds.hpp"
 #include "common/error.hpp"
 #include "app/cli/model_options.hpp"
+#include "app/cli/option_binding.hpp"
 
 namespace app {
 namespace {
 
-// The set-ups' names grouped by `key` ("cell, ray (a lidar); bump (bumpers); ...") or the
-// names sharing one key.
-template <typename Key>
-std::vector<std::pair<std::string_view, std::string>> grouped(Key key, std::string_view separator) {
-  std::vector<std::pair<std::string_view, std::string>> groups;
-  for (const sensing::SetUp &s : sensing::setups()) {
-    const auto same = [&](const auto &g) { return g.first == key(s); };
-    auto group = std::find_if(groups.begin(), groups.end(), same);
-    if (group == groups.end()) {
-      groups.emplace_back(key(s), std::string(s.name));
-    } else {
-      group->second += fmt::format("{}{}", separator, s.name);
-    }
-  }
-  return groups;
-}
-
-// "cell, ray (a lidar); bump (bumpers); depth, pie, cone (range sensors)"
-std::string models_by_device() {
-  std::string text;
-  for (const auto &[devices, names] : grouped([](const sensing::SetUp &s) { return s.devices(); }, ", ")) {
-    text += fmt::format("{}{} ({})", text.empty() ? "" : "; ", names, devices);
-  }
-  return text;
-}
-
-// "hambot; bumper-depth for bump and depth, ir-ring for pie and cone": the set-ups' default
-// robots, the first set-up's first.
-std::string default_robots() {
-  std::string text;
-  std::string others;
-  for (const auto &[robot, names] : grouped([](const sensing::SetUp &s) { return s.default_robot; }, " and ")) {
-    if (text.empty()) {
-      text = robot;
-    } else {
-      others += fmt::format("{}{} for {}", others.empty() ? "" : ", ", robot, names);
-    }
-  }
-  return others.empty() ? text : fmt::format("{}; {}", text, others);
-}
-
 void add_model_choice(CLI::App &command, RunOptions &o) {
-  command.add_option("--subcells", o.subcells,
-                     fmt::format("K: sub-cells per cell side, odd, 3 to 9 (default {})", o.subcells));
-  command.add_option_function<std::string>(
-      "--model", [&o](const std::string &name) { o.model.kind = sensing::parse_model(name); },
-      fmt::format("mapping model: {} (default {})", models_by_device(), sensing::to_string(o.model.kind)));
-  command.add_option("--threshold", o.threshold,
-                     "L: a sub-cell is occupied when its log-odds >= L, for the map and the walls "
-                     "(default none: when above 0)");
-  command.add_option_function<double>(
-      "--pie-beta", [&o](double deg) { o.range_model.pie_half_angle_rad = deg * std::numbers::pi / 180.0; },
-      fmt::format("pie model: slice half-angle, degrees (default {:g})",
-                  o.range_model.pie_half_angle_rad * 180.0 / std::numbers::pi));
-  command.add_option("--pie-alpha", o.range_model.pie_contact_m,
-                     fmt::format("pie model: contact slice length, m (default {})", o.range_model.pie_contact_m));
-  command.add_option("--hit-depth", o.model.hit_depth,
-                     fmt::format("ray model: sub-cells behind a hit also occupied (default {})", o.model.hit_depth));
-  command.add_flag("--ignore-no-return", o.model.ignore_no_return,
-                   "ray model: a beam with no return frees nothing (default off: it frees up to max range)");
-  command.add_option_function<std::string>(
-      "--strategy", [&o](const std::string &name) { o.strategy = explore::parse_strategy(name); },
-      "exploration: dfs, frontier, left-wall, right-wall or floodfill (default dfs)");
+  add_field_option(command, o, "--subcells");
+  add_field_option(command, o.model, "--model");
+  add_field_option(command, o, "--threshold");
+  add_field_options(command, o.range_model, {"--pie-beta", "--pie-alpha"});
+  add_field_options(command, o.model, {"--hit-depth", "--ignore-no-return"});
+  add_field_option(command, o, "--strategy");
 }
 
 void add_robot_and_faults(CLI::App &command, RunOptions &o) {
-  command.add_option("--robot", o.robot,
-                     fmt::format("NAME or FILE.json: robot profile, one of {} (default {})", robot_names(),
-                                 default_robots()));
+  add_field_option(command, o, "--robot");
   add_seed_option(command, o.simulation.seed, "the sensor noise and the faults");
-  command.add_option("--noise", o.simulation.noise,
-                     "lidar noise, standard deviation as a fraction of max range; 0 makes every sensor "
-                     "exact (default the robot's)");
-  command.add_option("--dropout", o.simulation.dropout,
-                     "fault: fraction of lidar beams that read +infinity (default 0)");
-  command.add_option("--spikes", o.simulation.spikes,
-                     "fault: fraction of lidar beams that read a random range (default 0)");
-  command.add_option("--stuck-bumper", o.simulation.stuck_bumper,
-                     "fault: NAME, a bumper that always reads pressed (default none)");
-  command.add_option("--wheel-slip", o.simulation.wheel_slip,
-                     "fault: fraction of wheel turning that does not move the robot; the encoders count "
-                     "it all (default 0)");
+  add_field_options(command, o.simulation, {"--noise", "--dropout", "--spikes", "--stuck-bumper", "--wheel-slip"});
 }
 
 }  // namespace
@@ -122,16 +52,11 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   command
       .add_option("--max-steps", o.max_steps, "N: stop after this many control steps (default 1000 a cell, at least 100000)")
       ->check(whole_steps);
-  command.add_option("--dilate", o.plan.wavefront.dilate,
-                     fmt::format("N: planning: grow obstacles by N sub-cells (default {})", o.plan.wavefront.dilate));
+  add_field_option(command, o.plan, "--dilate");
   add_world_options(command, o.world_overrides);
 }
 
-void add_speed_run_option(CLI::App &command, RunOptions &o) {
-  command.add_flag("--speed-run", o.plan.speed_run,
-                   "after the search, drive the known shortest path from the start to the goal, returning to "
-                   "the start first (a micromouse speed run; with floodfill the path is searched until proven)");
-}
+void add_speed_run_option(CLI::App &command, RunOptions &o) { add_field_option(command, o.plan, "--speed-run"); }
 
 std::vector<PictureFormat> parse_picture_formats(const std::string &text) {
   std::vector<PictureFormat> formats;
@@ -160,7 +85,7 @@ void add_picture_format_option(CLI::App &command, RunOptions &o) {
 void add_exploration_options(CLI::App &command, RunOptions &o) {
   command.add_option("WORLD", o.world, "maze file (default lab4x4.txt, from worlds/ here or the shipped worlds)");
   add_mapping_run_options(command, o);
-  command.add_flag("--ascii", o.output.ascii, "heading arrows as ^ > v < instead of ↑ → ↓ ←");
+  add_field_option(command, o.output, "--ascii");
   command.add_option_function<std::string>(
       "--unknown",
       [&o](const std::string &text) {

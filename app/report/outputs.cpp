@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/run/option_fields.hpp"
 #include "app/run/run_report.hpp"
 #include "app/report/truth_picture.hpp"
 #include "common/atomic_file.hpp"
@@ -98,120 +99,26 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-template <typename T>
-Json or_null(const std::optional<T> &value) {
-  return value ? Json(*value) : Json(nullptr);
-}
-
-Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
-
-// --cell-size, --start (X,Y, pos:N or random), --goal as given (null when not).
-Json world_overrides_json(const maze::WorldOverrides &w) {
-  const auto cell = [](maze::Cell c) { return Json::array({c.x, c.y}); };
-  Json j;
-  j["cell_size_m"] = or_null(w.cell_size_m);
-  j["start"] = nullptr;
-  if (w.start) {
-    j["start"] = cell(*w.start);
-    j["start"].push_back(std::string(maze::to_string(w.start_heading)));
-  }
-  j["start_position"] = or_null(w.start_position);  // --start pos:N
-  j["random_start"] = w.random_start;               // --start random (by the seed)
-  j["goals"] = nullptr;
-  if (w.goals) {
-    j["goals"] = Json::array();
-    for (const maze::Cell g : *w.goals) j["goals"].push_back(cell(g));
-  }
-  return j;
-}
-
-// The sensor model as the run used it: p_free and p_occ are the set-up's own numbers where it
-// marks with the course's (pie, bump, depth: "probabilities" says so), else --p-free/--p-occ.
-Json sensor_json(const mapping::SensorModelOptions &s, const sensing::SetUp &setup) {
-  const sensing::MarkProbabilities p = sensing::probabilities_in_effect(setup, s);
-  Json j;
-  j["probabilities"] = setup.fixed ? "the model's own (course numbers)" : "--p-free, --p-occ";
-  j["p_free"] = p.p_free;
-  j["p_occ"] = p.p_occ;
-  if (p.p_robot) j["p_robot"] = *p.p_robot;
-  j["prior"] = s.prior;
-  j["log_base"] = std::string(mapping::to_string(s.base));
-  j["clamp"] = s.clamp ? Json::array({s.clamp->min, s.clamp->max}) : Json(nullptr);
-  return j;
-}
-
-Json model_json(const sensing::ModelOptions &m) {
-  Json j;
-  j["kind"] = std::string(sensing::to_string(m.kind));
-  j["wall_margin"] = m.wall_margin;
-  j["hit_depth"] = m.hit_depth;
-  j["ignore_no_return"] = m.ignore_no_return;
-  return j;
-}
-
-Json range_model_json(const sensing::RangeModelOptions &r) {
-  Json j;
-  j["pie_half_angle_rad"] = r.pie_half_angle_rad;
-  j["pie_contact_m"] = r.pie_contact_m;
-  j["pie_usable_fraction"] = r.pie_usable_fraction;
-  return j;
-}
-
-// --seed, --noise (null: the robot's own) and the faults.
-Json simulation_json(const maze::sim::SimulationOptions &s) {
-  Json j;
-  j["seed"] = s.seed;
-  j["noise"] = or_null(s.noise);
-  j["dropout"] = s.dropout;
-  j["spikes"] = s.spikes;
-  j["stuck_bumper"] = s.stuck_bumper.empty() ? Json(nullptr) : Json(s.stuck_bumper);
-  j["wheel_slip"] = s.wheel_slip;
-  return j;
-}
-
-Json plan_options_json(const PlanOptions &p) {
-  Json j;
-  j["from"] = p.from ? cell_json(*p.from) : Json(nullptr);
-  j["to"] = p.to ? cell_json(*p.to) : Json(nullptr);
-  j["dilate"] = p.wavefront.dilate;
-  j["speed_run"] = p.speed_run;
-  return j;
-}
-
-Json output_json(const OutputOptions &o) {
-  Json j;
-  j["out"] = o.out_dir;
-  j["ascii"] = o.ascii;
-  j["unknown"] = o.unknown ? Json(std::string(1, *o.unknown)) : Json(nullptr);
-  j["quiet"] = o.quiet;
-  j["color"] = o.color;
-  j["animate"] = o.animate;
-  j["fps"] = o.fps;
-  j["speed"] = o.speed;
-  j["step"] = o.step;
-  j["trace"] = o.trace;
-  j["snapshots"] = o.snapshots;
-  j["replay"] = o.replay;
-  j["subcell_columns"] = or_null(o.subcell_columns);
-  return j;
-}
-
-// Every option in effect, one object a concern as RunOptions holds them.
+// Every option in effect, one object a concern as RunOptions holds them
+// (app/run/option_fields.hpp), with what the run settled: the steps in effect and the
+// sensor model's probabilities as its set-up marks with them (pie, bump, depth use the
+// course's own numbers: "probabilities" says which; depth adds the robot's own cells').
 Json options_json(const RunOptions &o, const RunSummary &s) {
-  Json j;
-  j["world"] = o.world;
-  j["world_overrides"] = world_overrides_json(o.world_overrides);
-  j["subcells"] = o.subcells;
-  j["strategy"] = std::string(explore::to_string(o.strategy));
-  j["robot"] = o.robot;
-  j["threshold"] = or_null(o.threshold);
-  j["max_steps"] = s.max_steps;
-  j["model"] = model_json(o.model);
-  j["sensor"] = sensor_json(o.sensor, sensing::setup(o.model.kind));
-  j["range_model"] = range_model_json(o.range_model);
-  j["simulation"] = simulation_json(o.simulation);
-  j["plan"] = plan_options_json(o.plan);
-  j["output"] = output_json(o.output);
+  const sensing::SetUp &setup = sensing::setup(o.model.kind);
+  const sensing::MarkProbabilities p = sensing::probabilities_in_effect(setup, o.sensor);
+  RunOptions in_effect = o;
+  in_effect.max_steps = s.max_steps;
+  in_effect.sensor.p_free = p.p_free;
+  in_effect.sensor.p_occ = p.p_occ;
+  Json j = echo_fields(in_effect);
+  Json sensor;
+  sensor["probabilities"] = setup.fixed ? "the model's own (course numbers)" : "--p-free, --p-occ";
+  const std::string_view p_occ = option_field<mapping::SensorModelOptions>("--p-occ").key;
+  for (const auto &item : j["sensor"].items()) {
+    sensor[item.key()] = item.value();
+    if (item.key() == p_occ && p.p_robot) sensor["p_robot"] = *p.p_robot;
+  }
+  j["sensor"] = sensor;
   return j;
 }
 
