@@ -1,34 +1,54 @@
 // The options described once (app/run/option_fields.hpp): each field that CLI11 binds from
-// the table sets what the summary.json echo shows under its key, and every option of `run`
-// and `plan` is a field of a table, so an option added to the command line and not to the
-// echo fails here.
+// the table sets what the summary.json echo shows under its key; every option of `run` and
+// `plan` is a field of a table, so an option added to the command line and not to the echo
+// fails here; and each field the table says a Webots controller takes reaches the
+// controllerArgs under its key and reads back unchanged.
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "app/cli/commands.hpp"
 #include "app/cli/option_binding.hpp"
+#include "app/run/run.hpp"
+#include "maze/world.hpp"
+#include "robot/controller_args.hpp"
 
 namespace {
 
-// A value each kind of field reads that differs from every default.
+// A value each kind of field reads that differs from every default (and that the controller
+// accepts: --p-occ above the prior).
 std::vector<std::string> sample_words(std::string_view flag, const app::FieldRef *value) {
-  static const std::map<std::string_view, std::string> parsed{
-      {"--strategy", "frontier"}, {"--model", "pie"}, {"--log-base", "10"}, {"--pie-beta", "12"}};
+  static const std::map<std::string_view, std::string> own_samples{
+      {"--strategy", "frontier"}, {"--model", "ray"}, {"--log-base", "10"}, {"--pie-beta", "12"}, {"--p-occ", "0.75"}};
   std::vector<std::string> words{"prog", std::string(flag)};
-  if (value == nullptr) {
-    REQUIRE(parsed.contains(flag));
-    words.push_back(parsed.at(flag));
+  if (own_samples.contains(flag)) {
+    words.push_back(own_samples.at(flag));
+  } else if (value == nullptr) {
+    FAIL("no sample for a parsed field");
   } else if (!std::holds_alternative<bool *>(*value)) {
-    words.push_back(std::holds_alternative<std::string *>(*value) ? "left" : "7");
+    const bool whole = std::holds_alternative<int *>(*value) || std::holds_alternative<std::optional<int> *>(*value);
+    words.push_back(std::holds_alternative<std::string *>(*value) ? "left" : whole ? "7" : "0.45");
   }
   return words;
+}
+
+// The field bound to `concern` on a command line of its own, given its sample value.
+template <typename Concern>
+void give_sample(const app::OptionField<Concern> &field, Concern &concern) {
+  CLI::App command;
+  app::add_field_option(command, concern, field.flag);
+  const app::FieldRef probe = field.value ? field.value(concern) : app::FieldRef{};
+  const std::vector<std::string> words = sample_words(field.flag, field.value ? &probe : nullptr);
+  std::vector<const char *> argv;
+  for (const std::string &w : words) argv.push_back(w.c_str());
+  command.parse(static_cast<int>(argv.size()), argv.data());
 }
 
 // Each field of Concern's table that the command line binds: given on a command line of its
@@ -40,13 +60,7 @@ void check_bound_fields_echo() {
     if (field.help == nullptr) continue;
     CAPTURE(field.flag);
     Concern concern{};
-    CLI::App command;
-    app::add_field_option(command, concern, field.flag);
-    const app::FieldRef probe = field.value ? field.value(concern) : app::FieldRef{};
-    std::vector<std::string> words = sample_words(field.flag, field.value ? &probe : nullptr);
-    std::vector<const char *> argv;
-    for (const std::string &w : words) argv.push_back(w.c_str());
-    command.parse(static_cast<int>(argv.size()), argv.data());
+    give_sample(field, concern);
     const nlohmann::ordered_json echoed = app::echo_fields(concern);
     for (const auto &item : defaults.items()) {
       CAPTURE(item.key());
@@ -90,6 +104,35 @@ std::set<std::string> command_options(std::string_view name) {
   return names;
 }
 
+// The controllerArgs run gives a Webots controller for lab4x4.txt with these options.
+std::vector<std::string> controller_args(const app::RunOptions &options) {
+  static const maze::Maze lab4x4 = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  return robot::format_controller_args(app::controller_options(options, lab4x4, app::robot_profile(options)));
+}
+
+// Each bound field of Concern's table with a controllerArgs key: given on the command line,
+// it changes that argument (and reads back into the same arguments).
+template <typename Concern>
+void check_fields_reach_controller(Concern &(*concern_of)(app::RunOptions &)) {
+  const std::vector<std::string> defaults = controller_args(app::RunOptions{});
+  for (const app::OptionField<Concern> &field : app::option_fields<Concern>()) {
+    if (field.help == nullptr || field.controller_arg.empty()) continue;
+    CAPTURE(field.flag);
+    app::RunOptions options;
+    Concern &concern = concern_of(options);
+    give_sample(field, concern);
+    const std::vector<std::string> args = controller_args(options);
+    const std::string prefix = fmt::format("--{}=", field.controller_arg);
+    std::vector<std::string> changed;
+    for (const std::string &arg : args) {
+      if (std::find(defaults.begin(), defaults.end(), arg) == defaults.end()) changed.push_back(arg);
+    }
+    REQUIRE(changed.size() == 1);
+    CHECK(changed.front().starts_with(prefix));
+    CHECK(robot::format_controller_args(robot::parse_controller_args(args)) == args);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("option fields: each bound field sets what the echo shows under its key") {
@@ -130,4 +173,42 @@ TEST_CASE("option fields: a flag names one field of its table") {
   CLI::App command;
   maze::sim::SimulationOptions simulation;
   CHECK_THROWS_AS(app::add_field_option(command, simulation, "--seed"), std::logic_error);
+}
+
+TEST_CASE("option fields: each field a controller takes reaches its controllerArgs key") {
+  check_fields_reach_controller<app::RunOptions>([](app::RunOptions &o) -> app::RunOptions & { return o; });
+  check_fields_reach_controller<sensing::ModelOptions>([](app::RunOptions & o) -> auto & { return o.model; });
+  check_fields_reach_controller<mapping::SensorModelOptions>([](app::RunOptions & o) -> auto & { return o.sensor; });
+  check_fields_reach_controller<sensing::RangeModelOptions>(
+      [](app::RunOptions & o) -> auto & { return o.range_model; });
+  check_fields_reach_controller<maze::sim::SimulationOptions>(
+      [](app::RunOptions & o) -> auto & { return o.simulation; });
+  check_fields_reach_controller<app::PlanOptions>([](app::RunOptions & o) -> auto & { return o.plan; });
+}
+
+TEST_CASE("option fields: every controllerArgs key is an option's or the maze's or the robot's") {
+  // What the controller learns from the maze (its size, origin, start heading) and from the
+  // robot's profile (wheels, device names, mounts), not from an option.
+  const std::set<std::string_view> from_maze_or_robot{
+      "size",         "origin",        "heading", "wheel-radius", "axle",  "left-motor", "right-motor",
+      "left-encoder", "right-encoder", "imu",     "gps",          "lidar", "bumper",     "range"};
+  std::set<std::string_view> carried;
+  const auto collect = [&carried](const auto &fields) {
+    for (const auto &field : fields) carried.insert(field.controller_arg);
+  };
+  collect(app::option_fields<app::RunOptions>());
+  collect(app::option_fields<maze::WorldOverrides>());
+  collect(app::option_fields<sensing::ModelOptions>());
+  collect(app::option_fields<mapping::SensorModelOptions>());
+  collect(app::option_fields<sensing::RangeModelOptions>());
+  collect(app::option_fields<maze::sim::SimulationOptions>());
+  collect(app::option_fields<app::PlanOptions>());
+  collect(app::option_fields<app::OutputOptions>());
+  carried.erase("");
+  for (const std::string_view key : robot::controller_arg_keys()) {
+    CAPTURE(key);
+    CHECK((carried.contains(key) != from_maze_or_robot.contains(key)));
+    carried.erase(key);
+  }
+  CHECK(carried.empty());  // no field names a key the controller does not read
 }

@@ -1,11 +1,11 @@
 #include "app/run/option_fields.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <numbers>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
@@ -38,16 +38,24 @@ Json json_value(const std::optional<T> &value) {
 
 // A plain field at Path in Concern.
 template <typename Concern, auto... Path>
-OptionField<Concern> plain(std::string_view key, std::string_view flag, std::string (*help)(const Concern &)) {
-  return {key, flag, help, [](Concern &c) -> FieldRef { return &member<Path...>(c); }, nullptr, "",
+OptionField<Concern> plain(std::string_view key, std::string_view flag, std::string (*help)(const Concern &),
+                           std::string_view controller_arg = "") {
+  return {key,
+          flag,
+          controller_arg,
+          help,
+          [](Concern &c) -> FieldRef { return &member<Path...>(c); },
+          nullptr,
+          "",
           [](const Concern &c) { return json_value(member<Path...>(c)); }};
 }
 
 // A field whose option is registered by its own code (see the header), or that no option sets
 // alone: its key and its echo.
 template <typename Concern>
-OptionField<Concern> own(std::string_view key, std::string_view flag, Json (*echo)(const Concern &)) {
-  return {key, flag, nullptr, nullptr, nullptr, "", echo};
+OptionField<Concern> own(std::string_view key, std::string_view flag, Json (*echo)(const Concern &),
+                         std::string_view controller_arg = "") {
+  return {key, flag, controller_arg, nullptr, nullptr, nullptr, "", echo};
 }
 
 Json cell_json(maze::Cell c) { return Json::array({c.x, c.y}); }
@@ -66,11 +74,11 @@ std::span<const OptionField<RunOptions>> option_fields() {
   static const std::vector<OptionField<O>> fields{
       own<O>("world", "WORLD", [](const O &o) { return Json(o.world); }),
       own<O>("world_overrides", "", [](const O &o) { return echo_fields(o.world_overrides); }),
-      plain<O, &O::subcells>("subcells", "--subcells",
-                             [](const O &d) {
-                               return fmt::format("K: sub-cells per cell side, odd, 3 to 9 (default {})", d.subcells);
-                             }),
-      {"strategy", "--strategy",
+      plain<O, &O::subcells>(
+          "subcells", "--subcells",
+          [](const O &d) { return fmt::format("K: sub-cells per cell side, odd, 3 to 9 (default {})", d.subcells); },
+          "subcells"),
+      {"strategy", "--strategy", "strategy",
        [](const O &d) {
          return fmt::format("exploration: dfs, frontier, left-wall, right-wall or floodfill (default {})",
                             explore::to_string(d.strategy));
@@ -82,15 +90,18 @@ std::span<const OptionField<RunOptions>> option_fields() {
                             return fmt::format("NAME or FILE.json: robot profile, one of {} (default {})",
                                                robot_names(), default_robots());
                           }),
-      plain<O, &O::threshold>("threshold", "--threshold",
-                              [](const O &) {
-                                return std::string(
-                                    "L: a sub-cell is occupied when its log-odds >= L, for the map and the walls "
-                                    "(default none: when above 0)");
-                              }),
+      plain<O, &O::threshold>(
+          "threshold", "--threshold",
+          [](const O &) {
+            return std::string(
+                "L: a sub-cell is occupied when its log-odds >= L, for the map and the walls "
+                "(default none: when above 0)");
+          },
+          "threshold"),
       // The echo shows the steps in effect (the maze's default when not given): the run's
       // summary carries them, and outputs.cpp sets them here before echoing.
-      own<O>("max_steps", "--max-steps", [](const O &o) { return json_value(o.max_steps); }),
+      own<O>(
+          "max_steps", "--max-steps", [](const O &o) { return json_value(o.max_steps); }, "max-steps"),
       own<O>("model", "", [](const O &o) { return echo_fields(o.model); }),
       own<O>("sensor", "", [](const O &o) { return echo_fields(o.sensor); }),
       own<O>("range_model", "", [](const O &o) { return echo_fields(o.range_model); }),
@@ -105,23 +116,28 @@ template <>
 std::span<const OptionField<maze::WorldOverrides>> option_fields() {
   using W = maze::WorldOverrides;
   static const std::vector<OptionField<W>> fields{
-      own<W>("cell_size_m", "--cell-size", [](const W &w) { return json_value(w.cell_size_m); }),
-      own<W>("start", "--start",
-             [](const W &w) {
-               if (!w.start) return Json(nullptr);
-               Json start = cell_json(*w.start);
-               start.push_back(std::string(maze::to_string(w.start_heading)));
-               return start;
-             }),
+      own<W>(
+          "cell_size_m", "--cell-size", [](const W &w) { return json_value(w.cell_size_m); }, "cell-size"),
+      own<W>(
+          "start", "--start",
+          [](const W &w) {
+            if (!w.start) return Json(nullptr);
+            Json start = cell_json(*w.start);
+            start.push_back(std::string(maze::to_string(w.start_heading)));
+            return start;
+          },
+          "start"),
       own<W>("start_position", "--start", [](const W &w) { return json_value(w.start_position); }),  // pos:N
-      own<W>("random_start", "--start", [](const W &w) { return Json(w.random_start); }),          // random
-      own<W>("goals", "--goal",
-             [](const W &w) {
-               if (!w.goals) return Json(nullptr);
-               Json goals = Json::array();
-               for (const maze::Cell g : *w.goals) goals.push_back(cell_json(g));
-               return goals;
-             }),
+      own<W>("random_start", "--start", [](const W &w) { return Json(w.random_start); }),            // random
+      own<W>(
+          "goals", "--goal",
+          [](const W &w) {
+            if (!w.goals) return Json(nullptr);
+            Json goals = Json::array();
+            for (const maze::Cell g : *w.goals) goals.push_back(cell_json(g));
+            return goals;
+          },
+          "goal"),
       own<W>("centre_goals", "--goal", [](const W &w) { return Json(w.centre_goals); }),  // --goal centre
   };
   return fields;
@@ -131,21 +147,26 @@ template <>
 std::span<const OptionField<sensing::ModelOptions>> option_fields() {
   using M = sensing::ModelOptions;
   static const std::vector<OptionField<M>> fields{
-      {"kind", "--model",
+      {"kind", "--model", "model",
        [](const M &d) {
          return fmt::format("mapping model: {} (default {})", models_by_device(), sensing::to_string(d.kind));
        },
        nullptr, [](M &m, const std::string &name) { m.kind = sensing::parse_model(name); }, "",
        [](const M &m) { return Json(std::string(sensing::to_string(m.kind))); }},
       own<M>("wall_margin", "", [](const M &m) { return Json(m.wall_margin); }),
-      plain<M, &M::hit_depth>("hit_depth", "--hit-depth",
-                              [](const M &d) {
-                                return fmt::format("ray model: sub-cells behind a hit also occupied (default {})",
-                                                   d.hit_depth);
-                              }),
-      plain<M, &M::ignore_no_return>("ignore_no_return", "--ignore-no-return", [](const M &) {
-        return std::string("ray model: a beam with no return frees nothing (default off: it frees up to max range)");
-      }),
+      plain<M, &M::hit_depth>(
+          "hit_depth", "--hit-depth",
+          [](const M &d) {
+            return fmt::format("ray model: sub-cells behind a hit also occupied (default {})", d.hit_depth);
+          },
+          "hit-depth"),
+      plain<M, &M::ignore_no_return>(
+          "ignore_no_return", "--ignore-no-return",
+          [](const M &) {
+            return std::string(
+                "ray model: a beam with no return frees nothing (default off: it frees up to max range)");
+          },
+          "ignore-no-return"),
   };
   return fields;
 }
@@ -154,13 +175,16 @@ template <>
 std::span<const OptionField<mapping::SensorModelOptions>> option_fields() {
   using S = mapping::SensorModelOptions;
   static const std::vector<OptionField<S>> fields{
-      plain<S, &S::p_free>("p_free", "--p-free",
-                           [](const S &d) { return fmt::format("inverse model where a beam passed (default {})", d.p_free); }),
-      plain<S, &S::p_occ>("p_occ", "--p-occ",
-                          [](const S &d) { return fmt::format("inverse model where a beam ended (default {})", d.p_occ); }),
-      plain<S, &S::prior>("prior", "--prior",
-                          [](const S &d) { return fmt::format("belief before any measurement (default {})", d.prior); }),
-      {"log_base", "--log-base",
+      plain<S, &S::p_free>(
+          "p_free", "--p-free",
+          [](const S &d) { return fmt::format("inverse model where a beam passed (default {})", d.p_free); }, "p-free"),
+      plain<S, &S::p_occ>(
+          "p_occ", "--p-occ",
+          [](const S &d) { return fmt::format("inverse model where a beam ended (default {})", d.p_occ); }, "p-occ"),
+      plain<S, &S::prior>(
+          "prior", "--prior",
+          [](const S &d) { return fmt::format("belief before any measurement (default {})", d.prior); }, "prior"),
+      {"log_base", "--log-base", "log-base",
        [](const S &d) { return fmt::format("base of the log-odds: e or 10 (default {})", mapping::to_string(d.base)); },
        nullptr,
        [](S &s, const std::string &base) {
@@ -172,10 +196,13 @@ std::span<const OptionField<mapping::SensorModelOptions>> option_fields() {
            throw common::InputError("--log-base must be e or 10 (got " + base + ")");
          }
        },
-       "",
-       [](const S &s) { return Json(std::string(mapping::to_string(s.base))); }},
-      own<S>("clamp", "--clamp",
-             [](const S &s) { return s.clamp ? Json::array({s.clamp->min, s.clamp->max}) : Json(nullptr); }),
+       "", [](const S &s) { return Json(std::string(mapping::to_string(s.base))); }},
+      own<S>(
+          "clamp", "--clamp",
+          [](const S &s) {
+            return s.clamp ? Json::array({s.clamp->min, s.clamp->max}) : Json(nullptr);
+          },
+          "clamp"),
   };
   return fields;
 }
@@ -184,7 +211,7 @@ template <>
 std::span<const OptionField<sensing::RangeModelOptions>> option_fields() {
   using R = sensing::RangeModelOptions;
   static const std::vector<OptionField<R>> fields{
-      {"pie_half_angle_rad", "--pie-beta",
+      {"pie_half_angle_rad", "--pie-beta", "pie-beta-rad",
        [](const R &d) {
          return fmt::format("pie model: slice half-angle, degrees (default {:g})",
                             d.pie_half_angle_rad * 180.0 / std::numbers::pi);
@@ -194,13 +221,13 @@ std::span<const OptionField<sensing::RangeModelOptions>> option_fields() {
          // The command line has checked the value reads as a FLOAT.
          r.pie_half_angle_rad = common::parse_number<double>(text).value() * std::numbers::pi / 180.0;
        },
-       "FLOAT",
-       [](const R &r) { return Json(r.pie_half_angle_rad); }},
-      plain<R, &R::pie_contact_m>("pie_contact_m", "--pie-alpha",
-                                  [](const R &d) {
-                                    return fmt::format("pie model: contact slice length, m (default {})", d.pie_contact_m);
-                                  }),
-      own<R>("pie_usable_fraction", "", [](const R &r) { return Json(r.pie_usable_fraction); }),
+       "FLOAT", [](const R &r) { return Json(r.pie_half_angle_rad); }},
+      plain<R, &R::pie_contact_m>(
+          "pie_contact_m", "--pie-alpha",
+          [](const R &d) { return fmt::format("pie model: contact slice length, m (default {})", d.pie_contact_m); },
+          "pie-alpha"),
+      own<R>(
+          "pie_usable_fraction", "", [](const R &r) { return Json(r.pie_usable_fraction); }, "pie-usable"),
   };
   return fields;
 }
@@ -210,25 +237,31 @@ std::span<const OptionField<maze::sim::SimulationOptions>> option_fields() {
   using S = maze::sim::SimulationOptions;
   static const std::vector<OptionField<S>> fields{
       own<S>("seed", "--seed", [](const S &s) { return Json(s.seed); }),
-      plain<S, &S::noise>("noise", "--noise",
-                          [](const S &) {
-                            return std::string("lidar noise, standard deviation as a fraction of max range; 0 makes "
-                                               "every sensor exact (default the robot's)");
-                          }),
-      plain<S, &S::dropout>("dropout", "--dropout", [](const S &) {
-        return std::string("fault: fraction of lidar beams that read +infinity (default 0)");
-      }),
-      plain<S, &S::spikes>("spikes", "--spikes", [](const S &) {
-        return std::string("fault: fraction of lidar beams that read a random range (default 0)");
-      }),
-      {"stuck_bumper", "--stuck-bumper",
+      plain<S, &S::noise>(
+          "noise", "--noise",
+          [](const S &) {
+            return std::string(
+                "lidar noise, standard deviation as a fraction of max range; 0 makes "
+                "every sensor exact (default the robot's)");
+          },
+          "lidar-noise"),
+      plain<S, &S::dropout>(
+          "dropout", "--dropout",
+          [](const S &) { return std::string("fault: fraction of lidar beams that read +infinity (default 0)"); }),
+      plain<S, &S::spikes>(
+          "spikes", "--spikes",
+          [](const S &) { return std::string("fault: fraction of lidar beams that read a random range (default 0)"); }),
+      {"stuck_bumper", "--stuck-bumper", "",
        [](const S &) { return std::string("fault: NAME, a bumper that always reads pressed (default none)"); },
        [](S &s) -> FieldRef { return &s.stuck_bumper; }, nullptr, "",
        [](const S &s) { return s.stuck_bumper.empty() ? Json(nullptr) : Json(s.stuck_bumper); }},
-      plain<S, &S::wheel_slip>("wheel_slip", "--wheel-slip", [](const S &) {
-        return std::string("fault: fraction of wheel turning that does not move the robot; the encoders count it all "
-                           "(default 0)");
-      }),
+      plain<S, &S::wheel_slip>(
+          "wheel_slip", "--wheel-slip",
+          [](const S &) {
+            return std::string(
+                "fault: fraction of wheel turning that does not move the robot; the encoders count it all "
+                "(default 0)");
+          }),
   };
   return fields;
 }
@@ -244,11 +277,15 @@ std::span<const OptionField<PlanOptions>> option_fields() {
           [](const P &d) {
             return fmt::format("N: planning: grow obstacles by N sub-cells (default {})", d.wavefront.dilate);
           }),
-      plain<P, &P::speed_run>("speed_run", "--speed-run", [](const P &) {
-        return std::string("after the search, drive the known shortest path from the start to the goal, returning to "
-                           "the start first (a micromouse speed run; with floodfill the path is searched until "
-                           "proven)");
-      }),
+      plain<P, &P::speed_run>(
+          "speed_run", "--speed-run",
+          [](const P &) {
+            return std::string(
+                "after the search, drive the known shortest path from the start to the goal, returning to "
+                "the start first (a micromouse speed run; with floodfill the path is searched until "
+                "proven)");
+          },
+          "speed-run"),
   };
   return fields;
 }
@@ -262,28 +299,41 @@ std::span<const OptionField<OutputOptions>> option_fields() {
                           [](const O &) { return std::string("heading arrows as ^ > v < instead of ↑ → ↓ ←"); }),
       own<O>("unknown", "--unknown",
              [](const O &o) { return o.unknown ? Json(std::string(1, *o.unknown)) : Json(nullptr); }),
-      plain<O, &O::quiet>("quiet", "--quiet", [](const O &) { return std::string("print only the final map and the summary"); }),
+      plain<O, &O::quiet>("quiet", "--quiet",
+                          [](const O &) { return std::string("print only the final map and the summary"); }),
       own<O>("color", "--color", [](const O &o) { return Json(o.color); }),
-      plain<O, &O::animate>("animate", "--animate", [](const O &) {
-        return std::string("redraw the map in place as the robot moves (standard output must be a terminal)");
-      }),
-      plain<O, &O::fps>("fps", "--fps",
-                        [](const O &d) { return fmt::format("--animate: frames per second, at most (default {:g})", d.fps); }),
+      plain<O, &O::animate>("animate", "--animate",
+                            [](const O &) {
+                              return std::string(
+                                  "redraw the map in place as the robot moves (standard output must be a terminal)");
+                            }),
+      plain<O, &O::fps>(
+          "fps", "--fps",
+          [](const O &d) { return fmt::format("--animate: frames per second, at most (default {:g})", d.fps); }),
       plain<O, &O::speed>("speed", "--speed",
                           [](const O &d) {
-                            return fmt::format("--animate: simulated seconds per wall-clock second (default {:g})", d.speed);
+                            return fmt::format("--animate: simulated seconds per wall-clock second (default {:g})",
+                                               d.speed);
                           }),
-      plain<O, &O::step>("step", "--step", [](const O &) { return std::string("stop after each cell: Enter goes on, q quits"); }),
-      plain<O, &O::trace>("trace", "--no-trace", [](const O &) { return std::string("with --out, do not write trace.csv"); }),
+      plain<O, &O::step>("step", "--step",
+                         [](const O &) { return std::string("stop after each cell: Enter goes on, q quits"); }),
+      plain<O, &O::trace>("trace", "--no-trace",
+                          [](const O &) { return std::string("with --out, do not write trace.csv"); }),
       own<O>("snapshots", "--snapshots", [](const O &o) { return Json(o.snapshots); }),
-      plain<O, &O::replay>("replay", "--no-replay", [](const O &) {
-        return std::string("with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
-      }),
+      plain<O, &O::replay>(
+          "replay", "--no-replay",
+          [](const O &) {
+            return std::string(
+                "with --out, do not write replay.html (the run in a browser: slider, play, the map at each move)");
+          }),
       own<O>("subcell_columns", "--wide", [](const O &o) { return json_value(o.subcell_columns); }),  // and --narrow
-      plain<O, &O::trace_steps>("trace_steps", "--trace-steps", [](const O &) {
-        return std::string("with --out, trace.csv a row every control step (default for cell and ray: a row when the "
-                           "action or cell changes or a scan updates the map)");
-      }),
+      plain<O, &O::trace_steps>(
+          "trace_steps", "--trace-steps",
+          [](const O &) {
+            return std::string(
+                "with --out, trace.csv a row every control step (default for cell and ray: a row when the "
+                "action or cell changes or a scan updates the map)");
+          }),
       own<O>("picture_formats", "--picture-format",
              [](const O &o) {
                Json formats = Json::array();

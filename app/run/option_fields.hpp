@@ -21,14 +21,13 @@
 //   key, and tests/test_app_option_fields.cpp checks each flag is an option of `run`.
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <variant>
-
-#include <nlohmann/json.hpp>
 
 #include "app/run/run_options.hpp"
 
@@ -42,15 +41,19 @@ template <typename Concern>
 struct OptionField {
   std::string_view key;   // summary.json: the key in the concern's object
   std::string_view flag;  // the option that sets it ("" when no option sets it alone)
+  // The Webots controllerArgs key that carries it to a controller (robot/controller_args.hpp:
+  // `maze_mapper convert` writes it, the controller reads it back); "" when the controller
+  // does not take it.
+  std::string_view controller_arg;
   // The help line given the options before parsing (their defaults); null: registered by its
   // own code (see above).
   std::string (*help)(const Concern &defaults) = nullptr;
-  FieldRef (*value)(Concern &) = nullptr;                           // plain
-  void (*parse)(Concern &, const std::string &text) = nullptr;      // parsed
+  FieldRef (*value)(Concern &) = nullptr;                       // plain
+  void (*parse)(Concern &, const std::string &text) = nullptr;  // parsed
   // A parsed field's value as CLI11's help names it and the command line checks it
   // (app/cli/cli_errors.hpp): "FLOAT" for a number, "" for text.
   std::string_view value_type;
-  nlohmann::ordered_json (*echo)(const Concern &) = nullptr;        // its value in summary.json
+  nlohmann::ordered_json (*echo)(const Concern &) = nullptr;  // its value in summary.json
 };
 
 template <typename Concern>
@@ -87,7 +90,8 @@ const OptionField<Concern> &option_field(std::string_view flag) {
 template <typename Concern>
 nlohmann::ordered_json echo_fields(const Concern &concern) {
   nlohmann::ordered_json object = nlohmann::ordered_json::object();
-  for (const OptionField<Concern> &field : option_fields<Concern>()) object[std::string(field.key)] = field.echo(concern);
+  for (const OptionField<Concern> &field : option_fields<Concern>())
+    object[std::string(field.key)] = field.echo(concern);
   return object;
 }
 

@@ -316,4 +316,10 @@ std::vector<std::string> format_controller_args(const ControllerOptions &o) {
   return args;
 }
 
+std::vector<std::string_view> controller_arg_keys() {
+  std::vector<std::string_view> names;
+  for (const Key &k : keys()) names.push_back(k.key);
+  return names;
+}
+
 }  // namespace robot

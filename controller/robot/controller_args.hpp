@@ -42,4 +42,8 @@ ControllerOptions parse_controller_args(std::span<const std::string> args);
 // options at their default are left out). Each element is one Webots controllerArgs string.
 std::vector<std::string> format_controller_args(const ControllerOptions &options);
 
+// Every key the controller reads ("size", "cell-size", ...), in the order
+// format_controller_args writes them.
+std::vector<std::string_view> controller_arg_keys();
+
 }  // namespace robot
