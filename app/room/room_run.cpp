@@ -125,14 +125,16 @@ robot::RoomOptions room_options_of(const RoomRunOptions &options, Point start, d
 }
 
 // The truth at the map's resolution, over the map's extent (a --resolution that does not
-// divide the boundary reaches past it by less than a cell).
+// divide the boundary reaches past it by less than a cell): reachable where a body clear of
+// the occupied cells can go, the frontier planner's rule on a perfect map.
 maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::RoomGridSpec &spec,
                                const maze::ArenaPose &start_pose, double body_radius_m) {
   maze::Arena on_grid = arena;
   on_grid.x_max_m = spec.boundary.x_end_m;
   on_grid.y_max_m = spec.boundary.y_end_m;
   on_grid.starts = {start_pose};
-  return maze::rasterise_arena(on_grid, spec.cells_x, spec.cells_y, body_radius_m);
+  return maze::rasterise_arena(on_grid, spec.cells_x, spec.cells_y, body_radius_m,
+                               maze::TruthClearance::to_occupied_cells);
 }
 
 // What the run prints and records as it goes: trace.csv's text, and the snapshots (the map,
