@@ -16,6 +16,7 @@
 #include "app/report/outputs.hpp"
 #include "app/room/room_outputs.hpp"
 #include "app/room/room_pictures.hpp"
+#include "app/room/room_replay.hpp"
 #include "app/room/room_report.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
@@ -244,6 +245,22 @@ RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::Set
   return marks;
 }
 
+// What replay.html shows besides the frames: the pictures' caption, the summary's lines.
+RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::RoomOptions &room,
+                           const std::vector<RoomReportEntry> &report) {
+  const RoomPictureMarks marks = picture_marks(options, setup, room);
+  RoomReplayText text;
+  text.title = options.world;
+  text.caption = marks.caption;
+  text.start = marks.start;
+  text.goal = marks.goal;
+  text.body_radius_m = room.body_radius_m;
+  for (const RoomReportEntry &e : report) {
+    if (!e.label.empty() && e.key != "wall_time_ms") text.summary.emplace_back(e.label, e.text);
+  }
+  return text;
+}
+
 // What the controller says of its run, on the grid `spec`.
 RoomSummary summary_of(const robot::RoomController &c, robot::RoomEnding ending, const sensing::RoomGridSpec &spec) {
   RoomSummary summary;
@@ -364,8 +381,13 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const double threshold = threshold_of(options);
   const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
   RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
+  std::optional<RoomReplay> replay;
+  if (!options.out_dir.empty()) replay.emplace(map, tones);
   robot::RoomController controller_loop(simulation.robot(), controller, room, map,
-                                        [&log](const robot::RoomController &c) { log.on_step(c); });
+                                        [&log, &replay](const robot::RoomController &c) {
+                                          log.on_step(c);
+                                          if (replay) replay->on_step(c);
+                                        });
   RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
 
   // ---- the score against the truth ----
@@ -378,7 +400,12 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   out << room_summary_text(report);
   if (!options.out_dir.empty()) {
     log.draw(controller_loop, "map", "wave");
-    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, log.pictures());
+    std::vector<RoomFile> files = log.pictures();
+    replay->finish(controller_loop);
+    if (std::optional<std::string> page = replay->html(replay_text(options, setup, room, report))) {
+      files.push_back({"replay.html", std::move(*page)});
+    }
+    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, files);
   }
   return summary;
 }
