@@ -15,41 +15,12 @@ png_spread=$2
 world=$3
 copy=${4:-}
 
-chromium=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$chromium" ]; then
-  if [ -n "${MAZE_MAPPER_REQUIRE_CHROMIUM:-}" ]; then
-    echo "FAIL: chromium is not installed and MAZE_MAPPER_REQUIRE_CHROMIUM is set (scripts/install-test-deps.sh)" >&2
-    exit 1
-  fi
-  echo "SKIP: chromium is not installed (scripts/install-test-deps.sh installs it)"
-  exit 77
-fi
-
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() {
-  echo "FAIL: $1" >&2
-  for f in "$dir/chromium.err" "$dir/dom.html"; do
-    [ -f "$f" ] && { echo "--- $f (head) ---" >&2; head -c 3000 "$f" >&2; echo >&2; }
-  done
-  exit 1
-}
+. "$(dirname "$0")/chromium_page.sh"
 
 "$program" run "$world" --quiet --no-trace --out "$dir/out" > "$dir/run.out" || fail "the run failed"
 page="$dir/out/replay.html"
-[ -s "$page" ] || fail "no replay.html"
-if grep -Eq '(src|href)=|https?:|@import|fetch\(' "$page"; then fail "replay.html refers to something outside itself"; fi
-
-# browser ARGS...: headless Chromium with a profile of its own, at most 60 s.
-browser() {
-  timeout 60 "$chromium" --headless --no-sandbox --disable-gpu --no-first-run --disable-extensions \
-    --disable-dev-shm-usage --user-data-dir="$dir/profile" --virtual-time-budget=10000 "$@" 2>> "$dir/chromium.err"
-}
-
-browser --dump-dom "file://$page" > "$dir/dom.html" || fail "chromium --dump-dom failed"
-grep -q 'data-js-error' "$dir/dom.html" && fail "a JavaScript error: $(grep -o 'data-js-error="[^"]*"' "$dir/dom.html")"
-grep -q 'data-replay-ready="[1-9]' "$dir/dom.html" || fail "the page's script did not finish (no data-replay-ready)"
-grep -q '<input type="range" id="step" min="0" max="[1-9][0-9]*"' "$dir/dom.html" || fail "no step slider with frames"
+self_contained "$page"
+load_page "file://$page" "at the end"
 grep -q '<button id="play"' "$dir/dom.html" || fail "no play button"
 coverage=$(sed -n 's/^coverage: //p' "$dir/run.out")
 grep -q "<dd id=\"summary-coverage\">$coverage</dd>" "$dir/dom.html" || fail "no summary coverage $coverage"
@@ -58,8 +29,7 @@ grep -q '<td class="occupied">+' "$dir/dom.html" || fail "no K x K matrix with a
 moves=$(sed -n 's/^moves: //p' "$dir/run.out")
 grep -q "move $moves/$moves " "$dir/dom.html" || fail "the last frame is not move $moves/$moves"
 
-browser --dump-dom "file://$page#frame=0" > "$dir/dom.html" || fail "chromium --dump-dom #frame=0 failed"
-grep -q 'data-js-error' "$dir/dom.html" && fail "a JavaScript error at #frame=0"
+load_page "file://$page#frame=0" "at #frame=0"
 grep -q "move 0/$moves " "$dir/dom.html" || fail "#frame=0 does not show move 0/$moves"
 
 browser --window-size=1100,800 --hide-scrollbars --screenshot="$dir/shot.png" "file://$page" > /dev/null ||

@@ -1,6 +1,6 @@
 // The room run's pictures (app/room/room_pictures.hpp): the wave's tones, and what
 // `room --out` draws: map.png, wave.png and a picture per snapshot, with their tones at known
-// cells. About 0.5 s.
+// cells; replay.html's frames. About 0.7 s.
 
 #include <doctest/doctest.h>
 
@@ -13,6 +13,8 @@
 #include "app/room/room_pictures.hpp"
 #include "cli_runner.hpp"
 #include "png_reader.hpp"
+
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -88,4 +90,36 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   REQUIRE(test_cli::run({"room", world, "--quiet", "--out", frontier.path.string()}).status == 0);
   CHECK(std::filesystem::is_regular_file(frontier.path / "map.png"));
   CHECK_FALSE(std::filesystem::exists(frontier.path / "wave.png"));
+}
+
+TEST_CASE("room --out: replay.html, a frame a step on the IR room's grid, the map at the end in map.png's tones") {
+  const test_cli::TempDir dir("room_replay");
+  const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
+  REQUIRE(test_cli::run({"room", world, "--strategy", "wavefront", "--goal", "4.7,2.7", "--quiet", "--out",
+                         dir.path.string()})
+              .status == 0);
+  const std::string page = test_png::read_all(dir.path / "replay.html");
+  const std::string open = "<script type=\"application/json\" id=\"replay-data\">";
+  const std::size_t from = page.find(open);
+  REQUIRE(from != std::string::npos);
+  const std::size_t begin = from + open.size();
+  const nlohmann::json data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
+  const nlohmann::json summary = nlohmann::json::parse(test_png::read_all(dir.path / "summary.json"));
+  const auto &steps = data["frames"]["step"];
+  REQUIRE(steps.size() == summary["steps"].get<std::size_t>());  // 1500 cells: a frame every step
+  CHECK(steps.front() == 1);
+  CHECK(steps.back() == summary["steps"]);
+  CHECK(data["frames"]["pose"].size() == 3 * steps.size());
+  // Every frame's changes applied: the partition never observed, the open middle seen free.
+  std::vector<long> cells(50 * 30, data["initial"].get<long>());
+  for (const auto &frame : data["frames"]["changes"]) {
+    long at = 0;
+    for (std::size_t k = 0; k + 1 < frame.size(); k += 2) {
+      at += frame[k].get<long>();
+      cells[static_cast<std::size_t>(at)] = frame[k + 1].get<long>();
+    }
+  }
+  const auto packed = [](app::Rgb c) { return (long{c.r} << 16) | (long{c.g} << 8) | long{c.b}; };
+  CHECK(cells[10 * 50 + 11] == packed(app::kUnknownTone));  // (1.15, 1.05)
+  CHECK((cells[6 * 50 + 20] >> 16) >= 215);                 // (2.05, 0.65)
 }

@@ -1,7 +1,8 @@
 // The room runs end to end in the embedded simulator: frontier maps the reachable free area of
 // the shipped arenas and of generated ones with the lidar, IR and sonar set-ups and never says
 // done when it did not; wavefront reaches its goal where one exists and says it cannot where
-// none does. About 4 s in all.
+// none does. About 5 s in all (the lidar's 20 arenas 3 s), besides the IR pie's 40 runs in
+// the acceptance suite (9 s).
 
 #include <doctest/doctest.h>
 
@@ -46,12 +47,24 @@ app::RoomSummary run_file(const app::RoomRunOptions &o, std::ostream &out) {
   return app::run_room(maze::load_any_world(o.world, {}, {}), o, out);
 }
 
-void check_mapped(const app::RoomSummary &s, const std::string &what, bool short_of_99 = false) {
+void check_mapped(const app::RoomSummary &s, const std::string &what) {
   INFO(what, ": ", robot::to_string(s.ending), ": ", s.message);
-  if (!short_of_99) CHECK(s.observed_share() >= 0.99);
+  CHECK(s.observed_share() >= 0.99);
   // Never done with reachable free space unobserved.
   if (s.ending == robot::RoomEnding::done) CHECK(s.reachable_free_observed == s.reachable_free);
   CHECK((s.ending == robot::RoomEnding::done || s.ending == robot::RoomEnding::incomplete));
+}
+
+// The generated 3 x 3 m arenas of the acceptance: four rectangles of 0.2 to 0.8 m.
+maze::Arena generated_arena(int seed) {
+  maze::ArenaGeneration g;
+  g.seed = static_cast<std::uint64_t>(seed);
+  g.width_m = 3.0;
+  g.height_m = 3.0;
+  g.obstacles = 4;
+  g.min_side_m = 0.2;
+  g.max_side_m = 0.8;
+  return maze::generate_arena(g);
 }
 
 }  // namespace
@@ -68,24 +81,28 @@ TEST_CASE("room frontier: the shipped IR room mapped with the lidar and the IR (
 }
 
 TEST_CASE("room frontier: 20 generated arenas mapped with the lidar") {
+  // Seed 14 has a pocket behind a 0.31 m gap that the map's occupied cells close for the
+  // body: the robot, in before the map grew, drives out again over the cells it came by.
   for (int seed = 1; seed <= 20; ++seed) {
-    maze::ArenaGeneration g;
-    g.seed = static_cast<std::uint64_t>(seed);
-    g.width_m = 3.0;
-    g.height_m = 3.0;
-    g.obstacles = 4;
-    g.min_side_m = 0.2;
-    g.max_side_m = 0.8;
-    const maze::Arena arena = maze::generate_arena(g);
-    const SetUpCase &s = kSetUps[0];
     std::ostringstream out;
-    const app::RoomSummary summary = app::run_room_in(arena, frontier_options(s), out);
-    // Seed 14 falls short today (94.5 %: frontier cells set aside behind a narrow gap); it must
-    // still end incomplete, never done.
-    const bool known_short = seed == 14;
-    check_mapped(summary, "seed " + std::to_string(seed) + " " + s.robot, known_short);
-    if (known_short) CHECK(summary.ending == robot::RoomEnding::incomplete);
+    const app::RoomSummary summary = app::run_room_in(generated_arena(seed), frontier_options(kSetUps[0]), out);
+    check_mapped(summary, "seed " + std::to_string(seed) + " hambot");
   }
+}
+
+// Optimised builds only (tests/CMakeLists.txt's acceptance cases): about 9 s of CPU.
+TEST_SUITE("acceptance") {
+TEST_CASE("room frontier: 20 generated arenas mapped with the IR pie (ir-ring and ir-fan)") {
+  for (const char *robot_name : {"ir-ring", "ir-fan"}) {
+    for (int seed = 1; seed <= 20; ++seed) {
+      std::ostringstream out;
+      app::RoomRunOptions o = frontier_options(kSetUps[2]);
+      o.robot = robot_name;
+      const app::RoomSummary summary = app::run_room_in(generated_arena(seed), o, out);
+      check_mapped(summary, "seed " + std::to_string(seed) + " " + robot_name + " pie");
+    }
+  }
+}
 }
 
 TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is not (exit 1)") {

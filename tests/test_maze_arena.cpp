@@ -314,6 +314,22 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
                        "a grid of 20000 x 20000 cells is too fine: at most 67108864 cells", common::InputError);
 }
 
+TEST_CASE("truth at the map's resolution: a gap is passable when a body clear of the occupied cells fits") {
+  // A wall across y = 1 with a 0.31 m gap (x 0.81 to 1.12); a 0.09 m body; the north half
+  // beyond it. At 0.1 m cells the gap leaves two free columns (0.9 to 1.1): the centre clears
+  // the wall itself (0.14 m) but not the occupied cells (0.05 m), so the map cannot show the
+  // body passing; at 0.05 m it leaves five, the middle one 0.125 m from the occupied cells.
+  const maze::Arena a = maze::read_room(
+      "boundary 0 2 0 2\nrect 0 0.95 0.81 1.05\nrect 1.12 0.95 2 1.05\nstart 0.5 0.5\n", "f");
+  const maze::ArenaTruth to_wall = maze::rasterise_arena(a, 20, 20, 0.09);
+  const maze::ArenaTruth to_cells = maze::rasterise_arena(a, 20, 20, 0.09, maze::TruthClearance::to_occupied_cells);
+  CHECK(to_wall.is_reachable(10, 15));
+  CHECK(!to_cells.is_reachable(10, 15));
+  CHECK(to_cells.is_reachable(10, 5));
+  const maze::ArenaTruth finer = maze::rasterise_arena(a, 40, 40, 0.09, maze::TruthClearance::to_occupied_cells);
+  CHECK(finer.is_reachable(20, 30));
+}
+
 TEST_CASE("truth: a rotated obstacle marks exactly the cells its area meets") {
   // A square of side sqrt(2) m turned 45 degrees about (2, 2): a diamond reaching 1 m each way.
   maze::Arena a = maze::read_room("boundary 0 4 0 4\nstart 0.5 0.5\n", "f");

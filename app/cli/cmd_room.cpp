@@ -90,8 +90,8 @@ void build(RoomInput &in, const CLI::App &cmd) {
   if (given("--goal") && o.room.strategy != RoomStrategy::wavefront) {
     throw common::InputError("--goal applies to --strategy wavefront only");
   }
-  if (given("--dilate") && o.room.strategy != RoomStrategy::wavefront && o.room.strategy != RoomStrategy::frontier) {
-    throw common::InputError("--dilate applies to --strategy wavefront and frontier only");
+  if (given("--dilate") && o.room.strategy != RoomStrategy::wavefront) {
+    throw common::InputError("--dilate applies to --strategy wavefront only (frontier keeps the body's radius clear)");
   }
 }
 
@@ -113,7 +113,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
   cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time (default 1)");
   cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
-  cmd->add_option("--dilate", o.room.dilate, "N: obstacles grown by N cells for planning (default 1)");
+  cmd->add_option("--dilate", o.room.dilate, "N: wavefront: obstacles grown by N cells for planning (default 1)");
   cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most, wander needs it (default none)");
   cmd->add_option("--snapshots-at", in->snapshots_at, "T1,T2,...: print the map at these simulated seconds");
   cmd->add_option("--snapshot-steps", in->snapshot_steps, "N1,N2,...: print the map at these control steps");

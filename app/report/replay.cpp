@@ -105,8 +105,9 @@ void append_summary(std::string &out, const ReplayInput &input) {
   out += ']';
 }
 
-// Every "</" as "<\/", so that nothing in the data closes its <script> block.
-std::string escaped(const std::string &json) {
+}  // namespace
+
+std::string escaped_for_script(const std::string &json) {
   std::string out;
   out.reserve(json.size());
   for (std::size_t i = 0; i < json.size(); ++i) {
@@ -116,17 +117,14 @@ std::string escaped(const std::string &json) {
   return out;
 }
 
-std::string page_with(const std::string &data) {
+std::string page_with_data(std::string_view page, const std::string &data) {
   constexpr std::string_view kMark = "<!--REPLAY_DATA-->";
-  const std::string_view page = kReplayPage;
   const std::size_t at = page.find(kMark);
   std::string html(page.substr(0, at));
   html += data;
   html += page.substr(at + kMark.size());
   return html;
 }
-
-}  // namespace
 
 std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
   const GridHistory &h = *input.history;
@@ -167,7 +165,7 @@ std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
 std::optional<Replay> replay_html(const ReplayInput &input) {
   const int moves = std::max<int>(1, static_cast<int>(input.history->arrivals().size()));
   for (int per = 1;; per = std::min(per * 2, moves)) {
-    std::string html = page_with(escaped(replay_data_json(input, per)));
+    std::string html = page_with_data(kReplayPage, escaped_for_script(replay_data_json(input, per)));
     if (html.size() <= input.max_bytes) return Replay{std::move(html), per};
     if (per >= moves) return std::nullopt;
   }

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -59,6 +60,11 @@ struct Replay {
 
 // The page, or nothing when even the final map alone is over input.max_bytes.
 std::optional<Replay> replay_html(const ReplayInput &input);
+
+// Every "</" in `json` as "<\/", so that nothing in the data closes its <script> block.
+std::string escaped_for_script(const std::string &json);
+// `page` with its mark <!--REPLAY_DATA--> replaced by `data` (the room run's page uses it too).
+std::string page_with_data(std::string_view page, const std::string &data);
 
 // The data block's JSON with `moves_per_frame` moves a frame (>= 1), "</" not yet escaped.
 std::string replay_data_json(const ReplayInput &input, int moves_per_frame);

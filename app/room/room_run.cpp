@@ -16,6 +16,7 @@
 #include "app/report/outputs.hpp"
 #include "app/room/room_outputs.hpp"
 #include "app/room/room_pictures.hpp"
+#include "app/room/room_replay.hpp"
 #include "app/room/room_report.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
@@ -125,14 +126,16 @@ robot::RoomOptions room_options_of(const RoomRunOptions &options, Point start, d
 }
 
 // The truth at the map's resolution, over the map's extent (a --resolution that does not
-// divide the boundary reaches past it by less than a cell).
+// divide the boundary reaches past it by less than a cell): reachable where a body clear of
+// the occupied cells can go, the frontier planner's rule on a perfect map.
 maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::RoomGridSpec &spec,
                                const maze::ArenaPose &start_pose, double body_radius_m) {
   maze::Arena on_grid = arena;
   on_grid.x_max_m = spec.boundary.x_end_m;
   on_grid.y_max_m = spec.boundary.y_end_m;
   on_grid.starts = {start_pose};
-  return maze::rasterise_arena(on_grid, spec.cells_x, spec.cells_y, body_radius_m);
+  return maze::rasterise_arena(on_grid, spec.cells_x, spec.cells_y, body_radius_m,
+                               maze::TruthClearance::to_occupied_cells);
 }
 
 // What the run prints and records as it goes: trace.csv's text, and the snapshots (the map,
@@ -240,6 +243,22 @@ RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::Set
   marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
                               robot::to_string(room.strategy), setup.name);
   return marks;
+}
+
+// What replay.html shows besides the frames: the pictures' caption, the summary's lines.
+RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::RoomOptions &room,
+                           const std::vector<RoomReportEntry> &report) {
+  const RoomPictureMarks marks = picture_marks(options, setup, room);
+  RoomReplayText text;
+  text.title = options.world;
+  text.caption = marks.caption;
+  text.start = marks.start;
+  text.goal = marks.goal;
+  text.body_radius_m = room.body_radius_m;
+  for (const RoomReportEntry &e : report) {
+    if (!e.label.empty() && e.key != "wall_time_ms") text.summary.emplace_back(e.label, e.text);
+  }
+  return text;
 }
 
 // What the controller says of its run, on the grid `spec`.
@@ -362,8 +381,13 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const double threshold = threshold_of(options);
   const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
   RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
+  std::optional<RoomReplay> replay;
+  if (!options.out_dir.empty()) replay.emplace(map, tones);
   robot::RoomController controller_loop(simulation.robot(), controller, room, map,
-                                        [&log](const robot::RoomController &c) { log.on_step(c); });
+                                        [&log, &replay](const robot::RoomController &c) {
+                                          log.on_step(c);
+                                          if (replay) replay->on_step(c);
+                                        });
   RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
 
   // ---- the score against the truth ----
@@ -376,7 +400,12 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   out << room_summary_text(report);
   if (!options.out_dir.empty()) {
     log.draw(controller_loop, "map", "wave");
-    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, log.pictures());
+    std::vector<RoomFile> files = log.pictures();
+    replay->finish(controller_loop);
+    if (std::optional<std::string> page = replay->html(replay_text(options, setup, room, report))) {
+      files.push_back({"replay.html", std::move(*page)});
+    }
+    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, files);
   }
   return summary;
 }

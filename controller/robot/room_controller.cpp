@@ -11,6 +11,7 @@
 #include <webots/Robot.hpp>
 
 #include "common/angles.hpp"
+#include "common/cell_clearance.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "plan/room_wavefront.hpp"
@@ -94,6 +95,12 @@ void RoomController::mark_under_body() {
     }
   }
   under_body_[map_.index(here)] = true;
+  // The cells the robot's centre has driven through (within a quarter cell of their centre):
+  // the body has been there, so the way back through them is clear whatever the map says
+  // of their neighbours since.
+  if (driven_.size() != map_.size()) driven_.assign(map_.size(), false);
+  const Point c = map_.centre_of(here);
+  if (std::hypot(c.x_m - position_.x_m, c.y_m - position_.y_m) <= map_.cell_m() / 4) driven_[map_.index(here)] = true;
 }
 
 bool RoomController::blocked_ahead() const {
@@ -159,13 +166,24 @@ bool RoomController::sees(std::size_t from, std::size_t to) const {
   return true;
 }
 
+std::vector<bool> RoomController::grown_obstacles(const std::vector<bool> &occupied) const {
+  const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
+  if (room_.strategy != RoomStrategy::frontier) return plan::dilated(g, occupied, room_.dilate);
+  const std::vector<std::uint8_t> near = common::cells_without_clearance(
+      g.cells_x, g.cells_y, map_.cell_m(), room_.body_radius_m, [&occupied](std::size_t n) { return occupied[n]; });
+  std::vector<bool> grown(map_.size(), false);
+  for (std::size_t n = 0; n < map_.size(); ++n) {
+    grown[n] = occupied[n] || (near[n] != 0 && !(n < driven_.size() && driven_[n]));
+  }
+  return grown;
+}
+
 std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
   std::vector<bool> out(map_.size(), false);
   for (std::size_t n = 0; n < map_.size(); ++n) {
     out[n] = map_.probability_at(n) >= room_.free_below_p - 1e-9;
   }
-  const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
-  std::vector<bool> grown = plan::dilated(g, out, room_.dilate);
+  std::vector<bool> grown = grown_obstacles(out);
   if (unknown_blocked) {
     for (std::size_t n = 0; n < map_.size(); ++n) {
       grown[n] = grown[n] || (map_.unobserved_at(n) && !(n < under_body_.size() && under_body_[n]));

@@ -15,8 +15,9 @@
 //              the grown map. The growth keeps the way clear: the robot's cell and the
 //              goal's are blocked only when the map calls them obstacles. Ends at the goal
 //              (`goal_reached`), or `unreachable` when the wave does not reach the robot.
-//   frontier   plan through cells seen free (p < free_below_p, observed, not within `dilate`
-//              cells of one seen occupied) to the nearest cell within view_m of a frontier
+//   frontier   plan through cells seen free (p < free_below_p, observed, where the body,
+//              body_radius_m, centred on the cell touches no cell seen occupied, or that the
+//              robot's centre has driven through) to the nearest cell within view_m of a frontier
 //              (an unobserved cell beside one seen free), drive the path, then turn a full
 //              turn there scanning. A frontier still unobserved after a visit that aimed at it
 //              is set aside. Ends `done` when no frontier is left, `incomplete` (with how many
@@ -55,7 +56,7 @@ struct RoomOptions {
   std::vector<mapping::Point> waypoints;
   int laps = 1;                         // waypoints: times the list is driven; 0: until time_limit_s
   std::optional<mapping::Point> goal;   // wavefront
-  int dilate = 1;                       // cells
+  int dilate = 1;                       // cells (wavefront)
   double free_below_p = 0.6;
   double time_limit_s = 0.0;            // 0: none (wander needs one)
   double stop_distance_m = 0.2;         // a return ahead closer than this (from the centre) stops a leg
@@ -121,6 +122,10 @@ class RoomController {
   Motion go_to(mapping::Point p, StopWhen when, bool *stopped);
   Motion look_around();
   std::vector<bool> obstacles(bool unknown_blocked) const;
+  // The cells seen occupied grown for planning: wavefront by `dilate` cells (the lab's rule);
+  // frontier by the body's radius in metres (common/cell_clearance.hpp), except the cells
+  // the robot has driven through.
+  std::vector<bool> grown_obstacles(const std::vector<bool> &occupied) const;
   sensing::RoomCell robot_cell() const;
   RoomEnding finish(Motion m);
 
@@ -157,6 +162,7 @@ class RoomController {
   std::vector<std::size_t> path_;
   std::vector<std::int32_t> wave_;
   std::vector<bool> under_body_;  // cells the body has stood on: free whatever the map says
+  std::vector<bool> driven_;      // cells the centre drove through: never grown over (frontier)
   std::size_t frontier_left_ = 0;
   std::string message_;
 };

@@ -175,10 +175,17 @@ RoomEnding RoomController::run_frontier() {
     const auto path = plan::descend(g, wave_, here);
     path_ = path ? *path : std::vector<std::size_t>{here};
     bool stopped = false;
-    if (const Motion m = drive_path_corners(&stopped); m != Motion::ok) return finish(m);
+    Motion driven = drive_path_corners(&stopped);
+    if (driven == Motion::no_progress) {
+      // Wedged on something the map had not shown (a corner between the beams): stopped, as
+      // by a touch; the visit counts against its frontier cell like any other.
+      stopped = true;
+      driven = Motion::ok;
+    }
+    if (driven != Motion::ok) return finish(driven);
     if (stopped) {
-      // Back off a little before planning again.
-      if (const Motion m = back_off(); m != Motion::ok) return finish(m);
+      // Back off a little before planning again (from a wedge it may not get far).
+      if (const Motion m = back_off(); m != Motion::ok && m != Motion::no_progress) return finish(m);
     }
     if (map_.index(robot_cell()) == target || !stopped) {
       if (const Motion m = look_around(); m != Motion::ok) return finish(m);

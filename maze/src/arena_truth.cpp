@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "common/cell_clearance.hpp"
 #include "common/error.hpp"
 
 namespace maze {
@@ -215,9 +216,14 @@ void mark_reachable_body(ArenaTruth &t, const std::vector<std::uint8_t> &centres
 
 }  // namespace
 
-ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m) {
+ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m,
+                           TruthClearance clearance) {
   ArenaTruth t = empty_truth(arena, cells_x, cells_y);
-  const std::vector<std::uint8_t> blocked = mark_obstacles(arena, t, robot_radius_m);
+  std::vector<std::uint8_t> blocked = mark_obstacles(arena, t, robot_radius_m);
+  if (clearance == TruthClearance::to_occupied_cells) {
+    blocked = common::cells_without_clearance(cells_x, cells_y, t.cell_x_m, robot_radius_m,
+                                              [&t](std::size_t n) { return t.occupied[n] != 0; });
+  }
   mark_reachable_body(t, reachable_centres(arena, t, blocked), robot_radius_m);
   return t;
 }

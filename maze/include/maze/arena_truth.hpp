@@ -16,6 +16,11 @@
 //     of that one's centre: robot_radius_m plus half a cell's diagonal (the body of a centre
 //     anywhere in the cell). With radius 0 and square cells: the free cells 4-connected to
 //     the start's. The map's "observed share of the reachable free area" is over these cells.
+//     With TruthClearance::to_occupied_cells the centre's clearance is measured to the
+//     occupied cells' squares instead of the obstacles (common/cell_clearance.hpp; square
+//     cells): the truth at the map's resolution, where a map can say no more than that an
+//     obstacle lies somewhere in a cell, so the gaps it calls passable are those a robot
+//     planning on a perfect map at that resolution can pass.
 
 #include <cstddef>
 #include <cstdint>
@@ -45,6 +50,9 @@ struct ArenaTruth {
   }
 };
 
+// How a centre's clearance of robot_radius_m is measured (see reachable above).
+enum class TruthClearance { to_obstacles, to_occupied_cells };
+
 // At most this many cells (64 Mi): a grid finer is refused.
 inline constexpr std::size_t kMaxTruthCells = std::size_t{1} << 26;
 
@@ -52,7 +60,8 @@ inline constexpr std::size_t kMaxTruthCells = std::size_t{1} << 26;
 // arena's start(). O(cells + the cells each obstacle's bounding box covers). Throws
 // common::InputError "a grid of 20000 x 20000 cells is too fine: at most 67108864 cells" when
 // the grid is empty or too fine.
-ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m);
+ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m,
+                           TruthClearance clearance = TruthClearance::to_obstacles);
 
 // The number of cells of `cell_m` (> 0) along a side of `side_m`: round(side / cell), at least 1.
 int cells_along(double side_m, double cell_m);
