@@ -107,6 +107,29 @@ TEST_CASE("map-log, depth: the ray's cells -0.176, its end +5.000, the robot's c
         "+0.000 +0.000 +0.000 +0.000 +0.000\n");
 }
 
+TEST_CASE("map-log, depth: axial readings (depth along the sensor's axis) from a sensor ahead of the centre") {
+  LogMapOptions o = five_by_five();
+  o.depth_reading = sensing::DepthReading::axial;
+  o.depth_origin_x_m = 1.0;  // the sensor 1 m ahead: at (1.5, 2.5)
+  o.depth_angles_deg[0] = 60.0;
+  LogGrid g = sensing::make_log_grid(o);
+  LogStep s;
+  s.x_m = 0.5, s.y_m = 2.5, s.theta_rad = 0.0;
+  // depth_5 straight ahead: 2 m along the axis is 2 m of range, to (3.5, 2.5); depth_1 at 60 deg:
+  // 1 m along the axis is 2 m of range, to (2.5, 4.23).
+  s.depth_m = {1.0, 0, 0, 0, 2.0, 0, 0, 0, 0};
+  sensing::apply_log_step(o, LogSensor::depth, s, g);
+  CHECK(matrix(g) ==
+        "+0.000 +0.000 +5.000 +0.000 +0.000\n"
+        "+0.000 +0.000 -0.176 +0.000 +0.000\n"
+        "-0.368 -0.176 -0.176 +5.000 +0.000\n"
+        "+0.000 +0.000 +0.000 +0.000 +0.000\n"
+        "+0.000 +0.000 +0.000 +0.000 +0.000\n");
+  o.depth_angles_deg[0] = 90.0;
+  CHECK_THROWS_WITH_AS(sensing::validate(o), "--depth-reading axial needs every depth angle within (-90, 90) degrees (got 90)",
+                       common::InputError);
+}
+
 TEST_CASE("map-log: the same grid as the rule written out, on logs of random poses and readings") {
   common::Rng rng(17);
   for (int trial = 0; trial < 40; ++trial) {

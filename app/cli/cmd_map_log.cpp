@@ -37,18 +37,22 @@ struct MapLogInput {
   std::string boundary;
   std::string base = "10";
   std::string depth_angles;
+  std::string depth_reading = "range";
+  std::string depth_origin;
   std::string snapshots;
   std::string out_dir;
   double threshold = -0.5;
   sensing::LogMapOptions options;
   bool bump_options_given = false;   // --bump-radius
-  bool depth_options_given = false;  // --depth-angles, --depth-max
+  bool depth_options_given = false;  // --depth-angles, --depth-max, --depth-reading, --depth-origin
 };
 
 // An option of the other sensor is refused, not ignored.
 void check_sensor_options(const MapLogInput &input, sensing::LogSensor sensor) {
   if (sensor == sensing::LogSensor::bump && input.depth_options_given) {
-    throw common::InputError("--depth-angles and --depth-max apply to depth logs only (this log is mapped with its bumps)");
+    throw common::InputError(
+        "--depth-angles, --depth-max, --depth-reading and --depth-origin apply to depth logs only (this log is mapped "
+        "with its bumps)");
   }
   if (sensor == sensing::LogSensor::depth && input.bump_options_given) {
     throw common::InputError("--bump-radius applies to bump logs only (this log is mapped with its depth rays)");
@@ -196,6 +200,14 @@ sensing::LogMapOptions to_options(const MapLogInput &input) {
   if (!input.depth_angles.empty()) {
     const auto angles = parse_number_list(input.depth_angles, "--depth-angles", sensing::kLogDepthRays);
     std::copy(angles.begin(), angles.end(), o.depth_angles_deg.begin());
+  }
+  if (input.depth_reading != "range" && input.depth_reading != "axial") {
+    throw common::InputError("--depth-reading must be range or axial (got " + input.depth_reading + ")");
+  }
+  o.depth_reading = input.depth_reading == "axial" ? sensing::DepthReading::axial : sensing::DepthReading::range;
+  if (!input.depth_origin.empty()) {
+    const auto origin = parse_number_list(input.depth_origin, "--depth-origin", 2);
+    o.depth_origin_x_m = origin[0], o.depth_origin_y_m = origin[1];
   }
   sensing::validate(o);
   return o;
@@ -367,17 +379,22 @@ void add_map_log_command(CLI::App &cli, CommandContext &context) {
   CLI::Option *radius = cmd->add_option("--bump-radius", o.bump_radius_m, fmt::format("centre to the bumpers' contact points, m (default {:g})", o.bump_radius_m));
   CLI::Option *angles = cmd->add_option("--depth-angles", input->depth_angles, "A1,...,A9: depth_1..depth_9's directions, deg, left positive (default 28.5 ... -28.5)");
   CLI::Option *depth_max = cmd->add_option("--depth-max", o.depth_max_m, "depth max range, m: readings >= it are ignored (default 10)");
+  CLI::Option *reading = cmd->add_option("--depth-reading", input->depth_reading,
+      "range or axial: a depth reading is the range along its ray (default; run's trace.csv), or the depth along "
+      "the sensor's forward axis, a depth camera's and the Cornell homework simulator's (range = depth / cos A)");
+  CLI::Option *origin = cmd->add_option("--depth-origin", input->depth_origin,
+      "X,Y: the depth sensor's origin in the robot's frame, m, x forward, y left (default 0,0: the centre)");
   cmd->add_option("--threshold", input->threshold, "log-odds at or above which a cell is drawn W (default -0.5)");
   cmd->add_option("--snapshots-at", input->snapshots, "F1,F2,...: fractions of the log to write grids at (default 0.333,0.667,1; needs --out)");
   // run's --snapshots is a count; this one's fractions were --snapshots before.
   add_old_spelling(*cmd, "--snapshots", "--snapshots-at", [input](const std::string &text) { input->snapshots = text; });
   cmd->add_option("-o,--out", input->out_dir, "DIR: logodds.csv (Y rows, north first) and logodds.png, logodds_stepN.csv and .png per snapshot, thresholded.txt and .png");
-  cmd->callback([&context, input, radius, angles, depth_max] {
+  cmd->callback([&context, input, radius, angles, depth_max, reading, origin] {
     if (!std::isfinite(input->threshold)) {
       throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", input->threshold));
     }
     input->bump_options_given = radius->count() > 0;
-    input->depth_options_given = angles->count() + depth_max->count() > 0;
+    input->depth_options_given = angles->count() + depth_max->count() + reading->count() + origin->count() > 0;
     run_map_log(*input);
     context.status = 0;
   });

@@ -30,7 +30,8 @@ const std::map<std::string, std::string, std::less<>> &group_of_option() {
     for (const char *name : {"--cell-size", "--start", "--goal", "--boundary", "--cells"}) table[name] = kWorldGroup;
     for (const char *name : {"--robot", "--model", "--subcells", "--threshold", "--pie-beta", "--pie-alpha",
                              "--hit-depth", "--ignore-no-return", "--noise", "--seed", "--p-free", "--p-occ",
-                             "--prior", "--log-base", "--clamp", "--sensor", "--bump-radius", "--depth-angles", "--depth-max"}) {
+                             "--prior", "--log-base", "--clamp", "--sensor", "--bump-radius", "--depth-angles", "--depth-max",
+                             "--depth-reading", "--depth-origin"}) {
       table[name] = kRobotGroup;
     }
     for (const char *name : {"--strategy", "--max-steps", "--dilate", "--speed-run", "--plan-to", "--from", "--to",

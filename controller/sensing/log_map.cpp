@@ -58,12 +58,18 @@ void mark_bumps(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
 
 void mark_depth(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
   const double step = std::min((o.x_end_m - o.x_start_m) / o.cells_x, (o.y_end_m - o.y_start_m) / o.cells_y);
+  const double cos_t = std::cos(s.theta_rad);
+  const double sin_t = std::sin(s.theta_rad);
+  const double x0 = s.x_m + o.depth_origin_x_m * cos_t - o.depth_origin_y_m * sin_t;
+  const double y0 = s.y_m + o.depth_origin_x_m * sin_t + o.depth_origin_y_m * cos_t;
   for (int n = 0; n < kLogDepthRays; ++n) {
     const double z = s.depth_m[static_cast<std::size_t>(n)];
     if (!(z > 0.0 && z < o.depth_max_m)) continue;
-    const double a = s.theta_rad + o.depth_angles_deg[static_cast<std::size_t>(n)] * kDeg;
-    for (int k = 0; k * step < z; ++k) marks.mark(s.x_m + k * step * std::cos(a), s.y_m + k * step * std::sin(a), ray);
-    marks.mark(s.x_m + z * std::cos(a), s.y_m + z * std::sin(a), occupied);
+    const double angle = o.depth_angles_deg[static_cast<std::size_t>(n)] * kDeg;
+    const double range = o.depth_reading == DepthReading::axial ? z / std::cos(angle) : z;
+    const double a = s.theta_rad + angle;
+    for (int k = 0; k * step < range; ++k) marks.mark(x0 + k * step * std::cos(a), y0 + k * step * std::sin(a), ray);
+    marks.mark(x0 + range * std::cos(a), y0 + range * std::sin(a), occupied);
   }
 }
 
@@ -81,6 +87,11 @@ void validate(const LogMapOptions &o) {
   require(o.bump_radius_m > 0.0 && std::isfinite(o.bump_radius_m), fmt::format("--bump-radius must be > 0 m (got {})", o.bump_radius_m));
   require(o.depth_max_m > 0.0 && std::isfinite(o.depth_max_m), fmt::format("--depth-max must be > 0 m (got {})", o.depth_max_m));
   for (const double a : o.depth_angles_deg) require(std::isfinite(a), "--depth-angles must be nine finite numbers");
+  require(std::isfinite(o.depth_origin_x_m) && std::isfinite(o.depth_origin_y_m), "--depth-origin must be two finite numbers X,Y");
+  for (const double a : o.depth_angles_deg) {
+    require(o.depth_reading == DepthReading::range || std::abs(a) < 90.0,
+            fmt::format("--depth-reading axial needs every depth angle within (-90, 90) degrees (got {})", a));
+  }
 }
 
 LogGrid make_log_grid(const LogMapOptions &o) {

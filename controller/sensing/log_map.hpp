@@ -14,7 +14,12 @@
 //                          s = min(w, h)
 // occupied over free over ray. Bumpers touch at bump_radius from the centre: front along
 // theta, left at theta + 45 deg, right at theta - 45 deg. Depth rays leave the centre at
-// theta + angle (angles left positive); a reading <= 0 or >= depth_max is ignored. Base 10:
+// theta + angle (angles left positive) from the sensor's origin (depth_origin, in the robot's
+// frame: x forward, y left; default the centre); a reading z <= 0 or >= depth_max is ignored.
+// A reading is the range along its ray (this program's depth robot and its trace), or with
+// DepthReading::axial the depth along the sensor's forward axis, as a depth camera and the
+// Cornell homework's simulator report it (its depthPredict): the ray's range is then
+// z / cos(angle). Base 10:
 // l(0.99999) = +5.000, l(0.3) = -0.368, l(0.4) = -0.176.
 
 #include <array>
@@ -25,6 +30,9 @@
 namespace sensing {
 
 enum class LogSensor { bump, depth };
+
+// What a depth reading measures: the range along its ray, or the depth along the sensor's axis.
+enum class DepthReading { range, axial };
 
 inline constexpr double kLogOccupiedP = 0.99999;
 inline constexpr double kLogFreeP = 0.3;
@@ -41,11 +49,14 @@ struct LogMapOptions {
   // depth_1 ... depth_9, deg, left positive: 57 deg across (a Kinect's field of view).
   std::array<double, kLogDepthRays> depth_angles_deg{28.5, 21.375, 14.25, 7.125, 0.0, -7.125, -14.25, -21.375, -28.5};
   double depth_max_m = 10.0;
+  DepthReading depth_reading = DepthReading::range;
+  double depth_origin_x_m = 0.0;  // the depth sensor's origin in the robot's frame, forward
+  double depth_origin_y_m = 0.0;  // and left
 };
 
 // Throws common::InputError naming the option: cells not 1 ... 2000, a boundary of zero or
 // negative width or height, a prior not in (0, 1), a radius or depth max not > 0, a number
-// not finite.
+// not finite, an axial reading's angle not within (-90, 90) degrees.
 void validate(const LogMapOptions &options);
 
 // One time step of the log: pose (m, rad) and the readings.
