@@ -380,8 +380,9 @@ void add_map_log_command(CLI::App &cli, CommandContext &context) {
   CLI::Option *angles = cmd->add_option("--depth-angles", input->depth_angles, "A1,...,A9: depth_1..depth_9's directions, deg, left positive (default 28.5 ... -28.5)");
   CLI::Option *depth_max = cmd->add_option("--depth-max", o.depth_max_m, "depth max range, m: readings >= it are ignored (default 10)");
   CLI::Option *reading = cmd->add_option("--depth-reading", input->depth_reading,
-      "range or axial: a depth reading is the range along its ray (default; run's trace.csv), or the depth along "
-      "the sensor's forward axis, a depth camera's and the Cornell homework simulator's (range = depth / cos A)");
+      "range or axial: a depth reading is the range along its ray (run's trace.csv), or the depth along the "
+      "sensor's forward axis, a depth camera's and the Cornell homework simulator's: range = depth / cos A "
+      "(default range)");
   CLI::Option *origin = cmd->add_option("--depth-origin", input->depth_origin,
       "X,Y: the depth sensor's origin in the robot's frame, m, x forward, y left (default 0,0: the centre)");
   cmd->add_option("--threshold", input->threshold, "log-odds at or above which a cell is drawn W (default -0.5)");
