@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -26,7 +27,9 @@ namespace {
 // accepts: --p-occ above the prior).
 std::vector<std::string> sample_words(std::string_view flag, const app::FieldRef *value) {
   static const std::map<std::string_view, std::string> own_samples{
-      {"--strategy", "frontier"}, {"--model", "ray"}, {"--log-base", "10"}, {"--pie-beta", "12"}, {"--p-occ", "0.75"}};
+      {"--strategy", "frontier"}, {"--model", "ray"},          {"--log-base", "10"},
+      {"--pie-beta", "12"},       {"--p-occ", "0.75"},         {"--unknown", "?"},
+      {"--snapshots", "7"},       {"--picture-format", "svg"}, {"--cell-size", "0.45"}};
   std::vector<std::string> words{"prog", std::string(flag)};
   if (own_samples.contains(flag)) {
     words.push_back(own_samples.at(flag));
@@ -104,9 +107,10 @@ std::set<std::string> command_options(std::string_view name) {
   return names;
 }
 
-// The controllerArgs run gives a Webots controller for lab4x4.txt with these options.
+// The controllerArgs run gives a Webots controller for lab4x4.txt with these options (the
+// world's overrides applied as the world is read).
 std::vector<std::string> controller_args(const app::RunOptions &options) {
-  static const maze::Maze lab4x4 = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  const maze::Maze lab4x4 = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt", options.world_overrides).maze;
   return robot::format_controller_args(app::controller_options(options, lab4x4, app::robot_profile(options)));
 }
 
@@ -127,6 +131,7 @@ void check_fields_reach_controller(Concern &(*concern_of)(app::RunOptions &)) {
     for (const std::string &arg : args) {
       if (std::find(defaults.begin(), defaults.end(), arg) == defaults.end()) changed.push_back(arg);
     }
+    CAPTURE(fmt::format("{}", fmt::join(changed, " ")));
     REQUIRE(changed.size() == 1);
     CHECK(changed.front().starts_with(prefix));
     CHECK(robot::format_controller_args(robot::parse_controller_args(args)) == args);
@@ -137,6 +142,7 @@ void check_fields_reach_controller(Concern &(*concern_of)(app::RunOptions &)) {
 
 TEST_CASE("option fields: each bound field sets what the echo shows under its key") {
   check_bound_fields_echo<app::RunOptions>();
+  check_bound_fields_echo<maze::WorldOverrides>();
   check_bound_fields_echo<sensing::ModelOptions>();
   check_bound_fields_echo<mapping::SensorModelOptions>();
   check_bound_fields_echo<sensing::RangeModelOptions>();
@@ -177,6 +183,7 @@ TEST_CASE("option fields: a flag names one field of its table") {
 
 TEST_CASE("option fields: each field a controller takes reaches its controllerArgs key") {
   check_fields_reach_controller<app::RunOptions>([](app::RunOptions &o) -> app::RunOptions & { return o; });
+  check_fields_reach_controller<maze::WorldOverrides>([](app::RunOptions &o) -> auto & { return o.world_overrides; });
   check_fields_reach_controller<sensing::ModelOptions>([](app::RunOptions & o) -> auto & { return o.model; });
   check_fields_reach_controller<mapping::SensorModelOptions>([](app::RunOptions & o) -> auto & { return o.sensor; });
   check_fields_reach_controller<sensing::RangeModelOptions>(

@@ -16,6 +16,7 @@
 
 #include "common/error.hpp"
 #include "app/cli/demo_commands.hpp"
+#include "app/cli/option_binding.hpp"
 
 namespace app {
 namespace {
@@ -91,15 +92,6 @@ std::vector<maze::Cell> parse_goals(const std::string &text) {
   }
 }
 
-double checked_cell_size(double m) {
-  if (!(m > maze::kMinCellSize_m && m <= maze::kMaxCellSize_m)) {
-    throw common::InputError(fmt::format(
-        "--cell-size must be more than {} m (four walls of {} m) and at most {} m (got {})", maze::kMinCellSize_m,
-        maze::kDefaultWallThickness_m, maze::kMaxCellSize_m, m));
-  }
-  return m;
-}
-
 }  // namespace
 
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
@@ -119,9 +111,7 @@ mapping::Cell parse_cell(const std::string &text, const std::string &option) {
 }
 
 void add_cell_size_option(CLI::App &command, maze::WorldOverrides &overrides) {
-  command.add_option_function<double>(
-      "--cell-size", [&overrides](double m) { overrides.cell_size_m = checked_cell_size(m); },
-      "M: cell side of a text or num world, metres (default 1; an XML world has its own)");
+  add_field_option(command, overrides, "--cell-size");
 }
 
 void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {

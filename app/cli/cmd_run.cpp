@@ -45,15 +45,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
   run.add_option("-o,--out", o.output.out_dir,
                  "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
-  // 0 is "none" inside (the default), not a value to type: --snapshots 0 wrote none, silently.
-  run.add_option_function<int>(
-      "--snapshots",
-      [&o](int n) {
-        validate_snapshots(n);
-        o.output.snapshots = n;
-      },
-      "N: with --out, N pictures of the map at equal fractions of the run's steps in "
-      "DIR/snapshots/ (3: after 1/3, 2/3 and at the end)");
+  add_field_option(run, o.output, "--snapshots");
   add_picture_format_option(run, o);
   add_field_options(run, o.output, {"--no-trace", "--trace-steps", "--no-replay"});
   run.add_option_function<std::string>(

@@ -58,41 +58,14 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
 
 void add_speed_run_option(CLI::App &command, RunOptions &o) { add_field_option(command, o.plan, "--speed-run"); }
 
-std::vector<PictureFormat> parse_picture_formats(const std::string &text) {
-  std::vector<PictureFormat> formats;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', begin), text.size());
-    const std::string name = text.substr(begin, comma - begin);
-    const std::optional<PictureFormat> format = picture_format_named(name);
-    if (!format) throw common::InputError(fmt::format("--picture-format takes png, svg and pdf (got '{}')", name));
-    if (std::find(formats.begin(), formats.end(), *format) != formats.end()) {
-      throw common::InputError(fmt::format("--picture-format names {} twice", name));
-    }
-    formats.push_back(*format);
-    begin = comma + 1;
-  }
-  return formats;
-}
-
 void add_picture_format_option(CLI::App &command, RunOptions &o) {
-  command.add_option_function<std::string>(
-      "--picture-format", [&o](const std::string &text) { o.output.picture_formats = parse_picture_formats(text); },
-      "LIST: with --out, map, truth, plan and the snapshots as png, svg and/or pdf, comma-separated "
-      "(default png; svg and pdf print at any size)");
+  add_field_option(command, o.output, "--picture-format");
 }
 
 void add_exploration_options(CLI::App &command, RunOptions &o) {
   command.add_option("WORLD", o.world, "maze file (default lab4x4.txt, from worlds/ here or the shipped worlds)");
   add_mapping_run_options(command, o);
-  add_field_option(command, o.output, "--ascii");
-  command.add_option_function<std::string>(
-      "--unknown",
-      [&o](const std::string &text) {
-        validate_unknown(text);
-        o.output.unknown = text[0];
-      },
-      "CHAR: drawn for never-observed sub-cells (default blank)");
+  add_field_options(command, o.output, {"--ascii", "--unknown"});
 }
 
 RunOptions checked_run_options(const CLI::App &command, RunOptions options, bool with_default_world) {

@@ -23,8 +23,6 @@ void add_speed_run_option(CLI::App &command, RunOptions &options);
 
 // --picture-format LIST (run, plan): png, svg and/or pdf, comma-separated.
 void add_picture_format_option(CLI::App &command, RunOptions &options);
-// The formats of "png,svg"; throws common::InputError on an unknown or repeated one.
-std::vector<PictureFormat> parse_picture_formats(const std::string &text);
 
 // add_mapping_run_options, with WORLD, --ascii and --unknown (run, compare, plan).
 void add_exploration_options(CLI::App &command, RunOptions &options);

@@ -66,6 +66,23 @@ Json cell_or_null(const std::optional<Cell> &c) {
   return c ? cell_json(*c) : Json(nullptr);
 }
 
+void set_unknown(OutputOptions &o, const std::string &text) {
+  validate_unknown(text);
+  o.unknown = text[0];
+}
+
+void set_snapshots(OutputOptions &o, const std::string &text) {
+  const long long n = common::parse_number<long long>(text).value();  // checked as an INT
+  validate_snapshots(n);
+  o.snapshots = static_cast<int>(n);
+}
+
+Json picture_formats_json(const OutputOptions &o) {
+  Json formats = Json::array();
+  for (const PictureFormat f : o.picture_formats) formats.push_back(std::string(to_string(f)));
+  return formats;
+}
+
 }  // namespace
 
 template <>
@@ -116,8 +133,21 @@ template <>
 std::span<const OptionField<maze::WorldOverrides>> option_fields() {
   using W = maze::WorldOverrides;
   static const std::vector<OptionField<W>> fields{
-      own<W>(
-          "cell_size_m", "--cell-size", [](const W &w) { return json_value(w.cell_size_m); }, "cell-size"),
+      {"cell_size_m", "--cell-size", "cell-size",
+       [](const W &) {
+         return std::string("M: cell side of a text or num world, metres (default 1; an XML world has its own)");
+       },
+       nullptr,
+       [](W &w, const std::string &text) {
+         const double m = common::parse_real(text).value();  // checked as a FLOAT (nan and inf read)
+         if (!(m > maze::kMinCellSize_m && m <= maze::kMaxCellSize_m)) {
+           throw common::InputError(
+               fmt::format("--cell-size must be more than {} m (four walls of {} m) and at most {} m (got {})",
+                           maze::kMinCellSize_m, maze::kDefaultWallThickness_m, maze::kMaxCellSize_m, m));
+         }
+         w.cell_size_m = m;
+       },
+       "FLOAT", [](const W &w) { return json_value(w.cell_size_m); }},
       own<W>(
           "start", "--start",
           [](const W &w) {
@@ -219,7 +249,7 @@ std::span<const OptionField<sensing::RangeModelOptions>> option_fields() {
        nullptr,
        [](R &r, const std::string &text) {
          // The command line has checked the value reads as a FLOAT.
-         r.pie_half_angle_rad = common::parse_number<double>(text).value() * std::numbers::pi / 180.0;
+         r.pie_half_angle_rad = common::parse_real(text).value() * std::numbers::pi / 180.0;
        },
        "FLOAT", [](const R &r) { return Json(r.pie_half_angle_rad); }},
       plain<R, &R::pie_contact_m>(
@@ -297,8 +327,9 @@ std::span<const OptionField<OutputOptions>> option_fields() {
       own<O>("out", "--out", [](const O &o) { return Json(o.out_dir); }),
       plain<O, &O::ascii>("ascii", "--ascii",
                           [](const O &) { return std::string("heading arrows as ^ > v < instead of ↑ → ↓ ←"); }),
-      own<O>("unknown", "--unknown",
-             [](const O &o) { return o.unknown ? Json(std::string(1, *o.unknown)) : Json(nullptr); }),
+      {"unknown", "--unknown", "",
+       [](const O &) { return std::string("CHAR: drawn for never-observed sub-cells (default blank)"); }, nullptr,
+       set_unknown, "", [](const O &o) { return o.unknown ? Json(std::string(1, *o.unknown)) : Json(nullptr); }},
       plain<O, &O::quiet>("quiet", "--quiet",
                           [](const O &) { return std::string("print only the final map and the summary"); }),
       own<O>("color", "--color", [](const O &o) { return Json(o.color); }),
@@ -319,7 +350,14 @@ std::span<const OptionField<OutputOptions>> option_fields() {
                          [](const O &) { return std::string("stop after each cell: Enter goes on, q quits"); }),
       plain<O, &O::trace>("trace", "--no-trace",
                           [](const O &) { return std::string("with --out, do not write trace.csv"); }),
-      own<O>("snapshots", "--snapshots", [](const O &o) { return Json(o.snapshots); }),
+      // 0 is "none" inside (the default), not a value to type: --snapshots 0 wrote none, silently.
+      {"snapshots", "--snapshots", "",
+       [](const O &) {
+         return std::string(
+             "N: with --out, N pictures of the map at equal fractions of the run's steps in DIR/snapshots/ (3: after "
+             "1/3, 2/3 and at the end)");
+       },
+       nullptr, set_snapshots, "INT", [](const O &o) { return Json(o.snapshots); }},
       plain<O, &O::replay>(
           "replay", "--no-replay",
           [](const O &) {
@@ -334,12 +372,14 @@ std::span<const OptionField<OutputOptions>> option_fields() {
                 "with --out, trace.csv a row every control step (default for cell and ray: a row when the "
                 "action or cell changes or a scan updates the map)");
           }),
-      own<O>("picture_formats", "--picture-format",
-             [](const O &o) {
-               Json formats = Json::array();
-               for (const PictureFormat f : o.picture_formats) formats.push_back(std::string(to_string(f)));
-               return formats;
-             }),
+      {"picture_formats", "--picture-format", "",
+       [](const O &) {
+         return std::string(
+             "LIST: with --out, map, truth, plan and the snapshots as png, svg and/or pdf, comma-separated (default "
+             "png; svg and pdf print at any size)");
+       },
+       nullptr, [](O &o, const std::string &text) { o.picture_formats = parse_picture_formats(text); }, "",
+       picture_formats_json},
   };
   return fields;
 }

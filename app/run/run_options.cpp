@@ -154,10 +154,27 @@ void validate_subcells(int subcells) {
   mapping::validate(one_cell, mapping::kDefaultMaxGridBytes);
 }
 
-void validate_snapshots(int snapshots) {
+void validate_snapshots(long long snapshots) {
   if (snapshots < 1 || snapshots > kMaxSnapshots) {
     throw common::InputError(fmt::format("--snapshots must be from 1 to {} (got {})", kMaxSnapshots, snapshots));
   }
+}
+
+std::vector<PictureFormat> parse_picture_formats(const std::string &text) {
+  std::vector<PictureFormat> formats;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string name = text.substr(begin, comma - begin);
+    const std::optional<PictureFormat> format = picture_format_named(name);
+    if (!format) throw common::InputError(fmt::format("--picture-format takes png, svg and pdf (got '{}')", name));
+    if (std::find(formats.begin(), formats.end(), *format) != formats.end()) {
+      throw common::InputError(fmt::format("--picture-format names {} twice", name));
+    }
+    formats.push_back(*format);
+    begin = comma + 1;
+  }
+  return formats;
 }
 
 void validate_unknown(std::string_view text) {

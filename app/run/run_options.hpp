@@ -103,7 +103,11 @@ void validate(const RunOptions &options);
 void validate_subcells(int subcells);
 
 // --snapshots N typed: throws common::InputError unless 1 <= N <= 100 (0, none, is the default).
-void validate_snapshots(int snapshots);
+void validate_snapshots(long long snapshots);
+
+// --picture-format LIST: the formats of "png,svg"; throws common::InputError on an unknown or
+// repeated one.
+std::vector<PictureFormat> parse_picture_formats(const std::string &text);
 
 // --unknown CHAR: throws common::InputError unless text is one printable ASCII character
 // other than W.
