@@ -1,6 +1,7 @@
 #include "app/picture/drawing.hpp"
 
 #include <png.h>
+#include <sys/mman.h>
 
 #include <algorithm>
 #include <cctype>
@@ -51,6 +52,20 @@ void check(cairo_t *cr, const char *what) {
   if (status != CAIRO_STATUS_SUCCESS) {
     throw common::RuntimeFailure(std::string("cairo: ") + what + ": " + cairo().status_to_string(status));
   }
+}
+
+// `bytes` of white pixels (every byte 0xff; RGB24 ignores the top byte) in pages of their
+// own. A big map's page is tens of megabytes: in huge pages where the kernel has them, it
+// costs a few dozen page faults instead of thousands, and memset is cheaper than Cairo's
+// paint of fresh memory (together about a tenth of a 256 x 256 run's CPU before).
+void *white_pages(std::size_t bytes) {
+  void *p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw common::RuntimeFailure("cairo: cannot start a picture: out of memory");
+#ifdef MADV_HUGEPAGE
+  ::madvise(p, bytes, MADV_HUGEPAGE);  // advice only: without huge pages the page works the same
+#endif
+  std::memset(p, 0xff, bytes);
+  return p;
 }
 
 void append_png_bytes(png_structp png, png_bytep data, png_size_t size) {
@@ -133,9 +148,14 @@ Drawing::Drawing(int width_px, int height_px, PictureFormat format)
     : width_(std::max(1, width_px)), height_(std::max(1, height_px)), format_(format),
       vector_bytes_(std::make_unique<std::string>()) {
   switch (format) {
-    case PictureFormat::png:
-      surface_ = cairo().image_surface_create(CAIRO_FORMAT_RGB24, width_, height_);
+    case PictureFormat::png: {
+      const int stride = cairo().format_stride_for_width(CAIRO_FORMAT_RGB24, width_);
+      pixels_bytes_ = static_cast<std::size_t>(stride) * static_cast<std::size_t>(height_);
+      pixels_ = white_pages(pixels_bytes_);
+      surface_ = cairo().image_surface_create_for_data(static_cast<unsigned char *>(pixels_), CAIRO_FORMAT_RGB24,
+                                                       width_, height_, stride);
       break;
+    }
     case PictureFormat::svg:
       surface_ = cairo().svg_surface_create_for_stream(append_bytes, vector_bytes_.get(), width_, height_);
       cairo().svg_surface_set_document_unit(surface_, CAIRO_SVG_UNIT_PX);
@@ -147,6 +167,7 @@ Drawing::Drawing(int width_px, int height_px, PictureFormat format)
   }
   cr_ = cairo().create(surface_);
   check(cr_, "cannot start a picture");
+  if (format == PictureFormat::png) return;  // white already
   set_colour(cr_, kWhite);
   cairo().paint(cr_);
 }
@@ -156,11 +177,14 @@ Drawing::Drawing(Drawing &&other) noexcept
   std::swap(surface_, other.surface_);
   std::swap(cr_, other.cr_);
   std::swap(vector_bytes_, other.vector_bytes_);
+  std::swap(pixels_, other.pixels_);
+  std::swap(pixels_bytes_, other.pixels_bytes_);
 }
 
 Drawing::~Drawing() {
   if (cr_ != nullptr) cairo().destroy(cr_);
   if (surface_ != nullptr) cairo().surface_destroy(surface_);
+  if (pixels_ != nullptr) ::munmap(pixels_, pixels_bytes_);
 }
 
 void Drawing::fill_rect(RectPx r, Rgb c) {
