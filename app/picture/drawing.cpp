@@ -1,15 +1,14 @@
 #include "app/picture/drawing.hpp"
 
-#include <png.h>
 #include <sys/mman.h>
 
 #include <algorithm>
 #include <cctype>
-#include <csetjmp>
 #include <cstring>
 #include <numbers>
 
 #include "app/picture/cairo_library.hpp"
+#include "app/picture/png_encode.hpp"
 #include "common/error.hpp"
 
 namespace app {
@@ -68,54 +67,11 @@ void *white_pages(std::size_t bytes) {
   return p;
 }
 
-void append_png_bytes(png_structp png, png_bytep data, png_size_t size) {
-  static_cast<std::string *>(png_get_io_ptr(png))->append(reinterpret_cast<const char *>(data), size);
-}
-
-void flush_nothing(png_structp) {}
-
-// The image surface's pixels as PNG (8-bit RGB). libpng's full interface, for its filter:
-// a map is flat colours in bands a sub-cell tall, so the Up filter alone keeps the files as
-// small as trying every filter on every row, for far less CPU on a big map. Cairo's own PNG
-// writer tries every filter and writes RGBA.
+// The image surface's pixels as PNG (app/picture/png_encode.hpp: 8-bit RGB, the Up filter).
 std::string encode_png(cairo_surface_t *surface) {
   cairo().surface_flush(surface);
-  const int width = cairo().image_surface_get_width(surface);
-  const int height = cairo().image_surface_get_height(surface);
-  const int stride = cairo().image_surface_get_stride(surface);
-  const unsigned char *data = cairo().image_surface_get_data(surface);
-  std::string bytes;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png == nullptr ? nullptr : png_create_info_struct(png);
-  if (png == nullptr || info == nullptr) {
-    png_destroy_write_struct(&png, nullptr);
-    throw common::RuntimeFailure("libpng: cannot start a PNG");
-  }
-  std::vector<unsigned char> row(static_cast<std::size_t>(width) * 3);
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw common::RuntimeFailure("libpng: cannot encode the picture");
-  }
-  png_set_write_fn(png, &bytes, append_png_bytes, flush_nothing);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
-  png_set_compression_level(png, 6);
-  png_write_info(png, info);
-  for (int y = 0; y < height; ++y) {
-    const auto *pixels = reinterpret_cast<const std::uint32_t *>(data + static_cast<std::ptrdiff_t>(y) * stride);
-    for (int x = 0; x < width; ++x) {
-      const std::uint32_t p = pixels[x];  // CAIRO_FORMAT_RGB24: 0x00RRGGBB in a native word
-      const auto i = static_cast<std::size_t>(x) * 3;
-      row[i] = static_cast<unsigned char>(p >> 16 & 0xff);
-      row[i + 1] = static_cast<unsigned char>(p >> 8 & 0xff);
-      row[i + 2] = static_cast<unsigned char>(p & 0xff);
-    }
-    png_write_row(png, row.data());
-  }
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return bytes;
+  return rgb24_png(cairo().image_surface_get_data(surface), cairo().image_surface_get_width(surface),
+                   cairo().image_surface_get_height(surface), cairo().image_surface_get_stride(surface));
 }
 
 }  // namespace

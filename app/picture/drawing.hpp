@@ -10,7 +10,7 @@
 // without the font fontconfig substitutes another sans font.
 //
 // PNG and SVG bytes are the same on every run of the same input (PDF carries its creation
-// date). PNG is 8-bit RGB, written with libpng's Up filter (see encode_png in drawing.cpp).
+// date). PNG is 8-bit RGB, every row Up-filtered (app/picture/png_encode.hpp).
 
 #include <cstddef>
 #include <cstdint>
