@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/report/replay_page.hpp"
+#include "common/fixed_decimal.hpp"
 #include "mapping/walls.hpp"
 
 namespace app {
@@ -27,7 +28,7 @@ void append_ints(std::string &out, const std::vector<long> &values) {
   out += '[';
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (i > 0) out += ',';
-    fmt::format_to(std::back_inserter(out), "{}", values[i]);
+    common::append_int(out, values[i]);
   }
   out += ']';
 }
@@ -106,13 +107,18 @@ void append_summary(std::string &out, const ReplayInput &input) {
 }
 
 // Every "</" as "<\/", so that nothing in the data closes its <script> block.
-std::string escaped(const std::string &json) {
+std::string escaped(std::string json) {
+  std::size_t at = json.find("</");
+  if (at == std::string::npos) return json;  // the usual case: nothing to copy
   std::string out;
-  out.reserve(json.size());
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    out += json[i];
-    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') out += '\\';
+  out.reserve(json.size() + 16);
+  std::size_t from = 0;
+  for (; at != std::string::npos; at = json.find("</", at + 2)) {
+    out.append(json, from, at + 1 - from);
+    out += '\\';
+    from = at + 1;
   }
+  out.append(json, from, std::string::npos);
   return out;
 }
 
@@ -120,7 +126,9 @@ std::string page_with(const std::string &data) {
   constexpr std::string_view kMark = "<!--REPLAY_DATA-->";
   const std::string_view page = kReplayPage;
   const std::size_t at = page.find(kMark);
-  std::string html(page.substr(0, at));
+  std::string html;
+  html.reserve(page.size() + data.size());
+  html += page.substr(0, at);
   html += data;
   html += page.substr(at + kMark.size());
   return html;
