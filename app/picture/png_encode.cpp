@@ -39,11 +39,18 @@ void filter_up(const std::uint32_t *pixels, const std::uint32_t *above, int widt
   }
 }
 
+// Pictures above this many pixels (a map of about 2000 x 2000 px and more) are compressed by
+// zlib's fast matcher, tuned to take the longest match it finds (258 bytes) from up to 16
+// candidates: on the two 21-megapixel pictures of a 256 x 256 run, half the CPU of level 6
+// for 1.84 MB instead of 1.41 MB. Smaller pictures keep level 6 (zlib's default and libpng's).
+constexpr long long kFastAbovePixels = 4'000'000;
+
 class Deflater {
  public:
-  Deflater() {
-    // Level 6, zlib's default and libpng's: the size the pictures had.
-    if (deflateInit(&z_, 6) != Z_OK) throw common::RuntimeFailure("zlib: cannot start a PNG");
+  explicit Deflater(long long pixels) {
+    const bool fast = pixels > kFastAbovePixels;
+    if (deflateInit(&z_, fast ? 1 : 6) != Z_OK) throw common::RuntimeFailure("zlib: cannot start a PNG");
+    if (fast) deflateTune(&z_, 4, 4, 258, 16);  // good length, longest inserted, nice length, chain
   }
   ~Deflater() { deflateEnd(&z_); }
   Deflater(const Deflater &) = delete;
@@ -85,7 +92,7 @@ std::string rgb24_png(const unsigned char *pixels, int width, int height, int st
   const std::size_t row_bytes = 1 + 3 * static_cast<std::size_t>(width);
   std::vector<unsigned char> row(row_bytes);
   bool row_is_zeros = false;
-  Deflater deflater;
+  Deflater deflater(static_cast<long long>(width) * height);
   const auto *above = static_cast<const std::uint32_t *>(nullptr);
   for (int y = 0; y < height; ++y) {
     const auto *line = reinterpret_cast<const std::uint32_t *>(pixels + static_cast<std::ptrdiff_t>(y) * stride);
