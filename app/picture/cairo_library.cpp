@@ -66,6 +66,7 @@ void bind_surfaces_and_text(void *l, CairoLibrary &c) {
 // Paths, paint and state.
 void bind_drawing(void *l, CairoLibrary &c) {
   bind(l, "cairo_arc", c.arc);
+  bind(l, "cairo_clip", c.clip);
   bind(l, "cairo_fill", c.fill);
   bind(l, "cairo_line_to", c.line_to);
   bind(l, "cairo_move_to", c.move_to);

@@ -13,6 +13,7 @@ namespace app {
 
 struct CairoLibrary {
   decltype(&::cairo_arc) arc = nullptr;
+  decltype(&::cairo_clip) clip = nullptr;
   decltype(&::cairo_create) create = nullptr;
   decltype(&::cairo_destroy) destroy = nullptr;
   decltype(&::cairo_fill) fill = nullptr;

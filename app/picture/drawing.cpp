@@ -167,13 +167,28 @@ void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
 
 void Drawing::polyline(const std::vector<PointPx> &points, double line_px, Rgb c) {
   if (points.size() < 2) return;
-  cairo().move_to(cr_, points.front().x, points.front().y);
-  for (std::size_t i = 1; i < points.size(); ++i) cairo().line_to(cr_, points[i].x, points[i].y);
   cairo().set_line_width(cr_, line_px);
   cairo().set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
   cairo().set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
   set_colour(cr_, c);
-  cairo().stroke(cr_);
+  // A long line on a PNG page is stroked a band of rows at a time, clipped to the band: Cairo
+  // then leaves out the segments outside it, so that its outline of the line, about 600 bytes
+  // a point (1.2 GB for the path of a 1024 x 1024 run), is a band's and not the whole line's.
+  // The clip is on whole pixels: every pixel is drawn as by one stroke.
+  constexpr std::size_t kBandedFromPoints = 10'000;
+  constexpr int kBandRows = 256;
+  const bool banded = format_ == PictureFormat::png && points.size() >= kBandedFromPoints;
+  for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
+    cairo().save(cr_);
+    if (banded) {
+      cairo().rectangle(cr_, 0.0, top, width_, kBandRows);
+      cairo().clip(cr_);
+    }
+    cairo().move_to(cr_, points.front().x, points.front().y);
+    for (std::size_t i = 1; i < points.size(); ++i) cairo().line_to(cr_, points[i].x, points[i].y);
+    cairo().stroke(cr_);
+    cairo().restore(cr_);
+  }
 }
 
 void Drawing::disc(PointPx centre, double radius_px, Rgb c) {
