@@ -16,6 +16,11 @@ namespace {
 
 constexpr const char *kFontFamily = "DejaVu Sans";
 
+// Lines of this many points and more, and as many rectangles, are drawn on a PNG page a band
+// of kBandRows rows at a time (see polyline and fill_rects).
+constexpr std::size_t kBandedFromShapes = 10'000;
+constexpr int kBandRows = 256;
+
 void set_colour(cairo_t *cr, Rgb c) { cairo().set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
 
 // Grey anti-aliasing, no hinting: the same glyph shapes at every size and in every format.
@@ -151,10 +156,24 @@ void Drawing::fill_rect(RectPx r, Rgb c) {
 
 void Drawing::fill_rects(const std::vector<RectPx> &rects, Rgb c) {
   if (rects.empty()) return;
-  for (const RectPx &r : rects) cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
   set_colour(cr_, c);
   cairo().set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-  cairo().fill(cr_);
+  // Many rectangles on a PNG page (a big maze's walls) are filled a band of rows at a time,
+  // clipped to the band, each band with the rectangles that reach into it: Cairo's path and
+  // outline are then a band's, not the whole maze's. Whole-pixel clips: the same pixels.
+  const bool banded = format_ == PictureFormat::png && rects.size() >= kBandedFromShapes;
+  for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
+    cairo().save(cr_);
+    if (banded) {
+      cairo().rectangle(cr_, 0.0, top, width_, kBandRows);
+      cairo().clip(cr_);
+    }
+    for (const RectPx &r : rects) {
+      if (!banded || (r.y < top + kBandRows && r.y + r.h > top)) cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
+    }
+    cairo().fill(cr_);
+    cairo().restore(cr_);
+  }
 }
 
 void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
@@ -175,9 +194,7 @@ void Drawing::polyline(const std::vector<PointPx> &points, double line_px, Rgb c
   // then leaves out the segments outside it, so that its outline of the line, about 600 bytes
   // a point (1.2 GB for the path of a 1024 x 1024 run), is a band's and not the whole line's.
   // The clip is on whole pixels: every pixel is drawn as by one stroke.
-  constexpr std::size_t kBandedFromPoints = 10'000;
-  constexpr int kBandRows = 256;
-  const bool banded = format_ == PictureFormat::png && points.size() >= kBandedFromPoints;
+  const bool banded = format_ == PictureFormat::png && points.size() >= kBandedFromShapes;
   for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
     cairo().save(cr_);
     if (banded) {
