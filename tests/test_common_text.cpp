@@ -2,11 +2,16 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common/csv.hpp"
+#include "common/fixed_decimal.hpp"
+#include "common/random.hpp"
 #include "common/parse_number.hpp"
 
 namespace {
@@ -70,4 +75,31 @@ TEST_CASE("csv_fields reads back what csv_field writes, with each field's column
   CHECK(located[2].column == 6);
   CHECK(located[3].column == 12);
   CHECK_FALSE(common::csv_fields("\"open,quote"));
+}
+
+TEST_CASE("append_fixed and append_int write what fmt writes, byte for byte") {
+  const auto fixed = [](double v, int decimals) {
+    std::string text;
+    common::append_fixed(text, v, decimals);
+    return text;
+  };
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // Ties in binary (x.5 at the last decimal), signs, zeros, carries, the fallbacks.
+  for (const double v : {0.0, -0.0, 0.5, 1.5708, -1.5708, 0.03125, -0.03125, 0.00005, -0.00004, 9.99995, 0.99999,
+                         123456.78915, 2.5e-5, 1e12, -3e9, std::nan(""), kInf, -kInf, 0.0625, 1.0 / 3.0}) {
+    for (int decimals = 0; decimals <= 6; ++decimals) {
+      CHECK_MESSAGE(fixed(v, decimals) == fmt::format("{:.{}f}", v, decimals), v, " ", decimals);
+    }
+  }
+  common::Rng random(7);
+  int wrong = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double v = (random.uniform(0.0, 1.0) - 0.5) * std::pow(10.0, random.uniform(-6.0, 7.0));
+    for (const int decimals : {3, 4}) wrong += fixed(v, decimals) != fmt::format("{:.{}f}", v, decimals) ? 1 : 0;
+  }
+  CHECK(wrong == 0);
+  std::string ints;
+  common::append_int(ints, std::int64_t{-1234567890123});
+  common::append_int(ints, 0);
+  CHECK(ints == "-12345678901230");
 }

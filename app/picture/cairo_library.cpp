@@ -37,7 +37,9 @@ void bind_surfaces_and_text(void *l, CairoLibrary &c) {
   bind(l, "cairo_font_options_set_hint_metrics", c.font_options_set_hint_metrics);
   bind(l, "cairo_font_options_set_hint_style", c.font_options_set_hint_style);
   bind(l, "cairo_get_source", c.get_source);
+  bind(l, "cairo_format_stride_for_width", c.format_stride_for_width);
   bind(l, "cairo_image_surface_create", c.image_surface_create);
+  bind(l, "cairo_image_surface_create_for_data", c.image_surface_create_for_data);
   bind(l, "cairo_image_surface_get_data", c.image_surface_get_data);
   bind(l, "cairo_image_surface_get_height", c.image_surface_get_height);
   bind(l, "cairo_image_surface_get_stride", c.image_surface_get_stride);
@@ -64,6 +66,7 @@ void bind_surfaces_and_text(void *l, CairoLibrary &c) {
 // Paths, paint and state.
 void bind_drawing(void *l, CairoLibrary &c) {
   bind(l, "cairo_arc", c.arc);
+  bind(l, "cairo_clip", c.clip);
   bind(l, "cairo_fill", c.fill);
   bind(l, "cairo_line_to", c.line_to);
   bind(l, "cairo_move_to", c.move_to);

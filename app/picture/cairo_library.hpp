@@ -13,6 +13,7 @@ namespace app {
 
 struct CairoLibrary {
   decltype(&::cairo_arc) arc = nullptr;
+  decltype(&::cairo_clip) clip = nullptr;
   decltype(&::cairo_create) create = nullptr;
   decltype(&::cairo_destroy) destroy = nullptr;
   decltype(&::cairo_fill) fill = nullptr;
@@ -22,8 +23,10 @@ struct CairoLibrary {
   decltype(&::cairo_font_options_set_antialias) font_options_set_antialias = nullptr;
   decltype(&::cairo_font_options_set_hint_metrics) font_options_set_hint_metrics = nullptr;
   decltype(&::cairo_font_options_set_hint_style) font_options_set_hint_style = nullptr;
+  decltype(&::cairo_format_stride_for_width) format_stride_for_width = nullptr;
   decltype(&::cairo_get_source) get_source = nullptr;
   decltype(&::cairo_image_surface_create) image_surface_create = nullptr;
+  decltype(&::cairo_image_surface_create_for_data) image_surface_create_for_data = nullptr;
   decltype(&::cairo_image_surface_get_data) image_surface_get_data = nullptr;
   decltype(&::cairo_image_surface_get_height) image_surface_get_height = nullptr;
   decltype(&::cairo_image_surface_get_stride) image_surface_get_stride = nullptr;

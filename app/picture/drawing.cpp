@@ -1,20 +1,25 @@
 #include "app/picture/drawing.hpp"
 
-#include <png.h>
+#include <sys/mman.h>
 
 #include <algorithm>
 #include <cctype>
-#include <csetjmp>
 #include <cstring>
 #include <numbers>
 
 #include "app/picture/cairo_library.hpp"
+#include "app/picture/png_encode.hpp"
 #include "common/error.hpp"
 
 namespace app {
 namespace {
 
 constexpr const char *kFontFamily = "DejaVu Sans";
+
+// Lines of this many points and more, and as many rectangles, are drawn on a PNG page a band
+// of kBandRows rows at a time (see polyline and fill_rects).
+constexpr std::size_t kBandedFromShapes = 10'000;
+constexpr int kBandRows = 256;
 
 void set_colour(cairo_t *cr, Rgb c) { cairo().set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
 
@@ -53,54 +58,25 @@ void check(cairo_t *cr, const char *what) {
   }
 }
 
-void append_png_bytes(png_structp png, png_bytep data, png_size_t size) {
-  static_cast<std::string *>(png_get_io_ptr(png))->append(reinterpret_cast<const char *>(data), size);
+// `bytes` of white pixels (every byte 0xff; RGB24 ignores the top byte) in pages of their
+// own. A big map's page is tens of megabytes: in huge pages where the kernel has them, it
+// costs a few dozen page faults instead of thousands, and memset is cheaper than Cairo's
+// paint of fresh memory (together about a tenth of a 256 x 256 run's CPU before).
+void *white_pages(std::size_t bytes) {
+  void *p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw common::RuntimeFailure("cairo: cannot start a picture: out of memory");
+#ifdef MADV_HUGEPAGE
+  ::madvise(p, bytes, MADV_HUGEPAGE);  // advice only: without huge pages the page works the same
+#endif
+  std::memset(p, 0xff, bytes);
+  return p;
 }
 
-void flush_nothing(png_structp) {}
-
-// The image surface's pixels as PNG (8-bit RGB). libpng's full interface, for its filter:
-// a map is flat colours in bands a sub-cell tall, so the Up filter alone keeps the files as
-// small as trying every filter on every row, for far less CPU on a big map. Cairo's own PNG
-// writer tries every filter and writes RGBA.
+// The image surface's pixels as PNG (app/picture/png_encode.hpp: 8-bit RGB, the Up filter).
 std::string encode_png(cairo_surface_t *surface) {
   cairo().surface_flush(surface);
-  const int width = cairo().image_surface_get_width(surface);
-  const int height = cairo().image_surface_get_height(surface);
-  const int stride = cairo().image_surface_get_stride(surface);
-  const unsigned char *data = cairo().image_surface_get_data(surface);
-  std::string bytes;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png == nullptr ? nullptr : png_create_info_struct(png);
-  if (png == nullptr || info == nullptr) {
-    png_destroy_write_struct(&png, nullptr);
-    throw common::RuntimeFailure("libpng: cannot start a PNG");
-  }
-  std::vector<unsigned char> row(static_cast<std::size_t>(width) * 3);
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw common::RuntimeFailure("libpng: cannot encode the picture");
-  }
-  png_set_write_fn(png, &bytes, append_png_bytes, flush_nothing);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
-  png_set_compression_level(png, 6);
-  png_write_info(png, info);
-  for (int y = 0; y < height; ++y) {
-    const auto *pixels = reinterpret_cast<const std::uint32_t *>(data + static_cast<std::ptrdiff_t>(y) * stride);
-    for (int x = 0; x < width; ++x) {
-      const std::uint32_t p = pixels[x];  // CAIRO_FORMAT_RGB24: 0x00RRGGBB in a native word
-      const auto i = static_cast<std::size_t>(x) * 3;
-      row[i] = static_cast<unsigned char>(p >> 16 & 0xff);
-      row[i + 1] = static_cast<unsigned char>(p >> 8 & 0xff);
-      row[i + 2] = static_cast<unsigned char>(p & 0xff);
-    }
-    png_write_row(png, row.data());
-  }
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return bytes;
+  return rgb24_png(cairo().image_surface_get_data(surface), cairo().image_surface_get_width(surface),
+                   cairo().image_surface_get_height(surface), cairo().image_surface_get_stride(surface));
 }
 
 }  // namespace
@@ -133,9 +109,14 @@ Drawing::Drawing(int width_px, int height_px, PictureFormat format)
     : width_(std::max(1, width_px)), height_(std::max(1, height_px)), format_(format),
       vector_bytes_(std::make_unique<std::string>()) {
   switch (format) {
-    case PictureFormat::png:
-      surface_ = cairo().image_surface_create(CAIRO_FORMAT_RGB24, width_, height_);
+    case PictureFormat::png: {
+      const int stride = cairo().format_stride_for_width(CAIRO_FORMAT_RGB24, width_);
+      pixels_bytes_ = static_cast<std::size_t>(stride) * static_cast<std::size_t>(height_);
+      pixels_ = white_pages(pixels_bytes_);
+      surface_ = cairo().image_surface_create_for_data(static_cast<unsigned char *>(pixels_), CAIRO_FORMAT_RGB24,
+                                                       width_, height_, stride);
       break;
+    }
     case PictureFormat::svg:
       surface_ = cairo().svg_surface_create_for_stream(append_bytes, vector_bytes_.get(), width_, height_);
       cairo().svg_surface_set_document_unit(surface_, CAIRO_SVG_UNIT_PX);
@@ -147,6 +128,7 @@ Drawing::Drawing(int width_px, int height_px, PictureFormat format)
   }
   cr_ = cairo().create(surface_);
   check(cr_, "cannot start a picture");
+  if (format == PictureFormat::png) return;  // white already
   set_colour(cr_, kWhite);
   cairo().paint(cr_);
 }
@@ -156,11 +138,14 @@ Drawing::Drawing(Drawing &&other) noexcept
   std::swap(surface_, other.surface_);
   std::swap(cr_, other.cr_);
   std::swap(vector_bytes_, other.vector_bytes_);
+  std::swap(pixels_, other.pixels_);
+  std::swap(pixels_bytes_, other.pixels_bytes_);
 }
 
 Drawing::~Drawing() {
   if (cr_ != nullptr) cairo().destroy(cr_);
   if (surface_ != nullptr) cairo().surface_destroy(surface_);
+  if (pixels_ != nullptr) ::munmap(pixels_, pixels_bytes_);
 }
 
 void Drawing::fill_rect(RectPx r, Rgb c) {
@@ -171,10 +156,24 @@ void Drawing::fill_rect(RectPx r, Rgb c) {
 
 void Drawing::fill_rects(const std::vector<RectPx> &rects, Rgb c) {
   if (rects.empty()) return;
-  for (const RectPx &r : rects) cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
   set_colour(cr_, c);
   cairo().set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-  cairo().fill(cr_);
+  // Many rectangles on a PNG page (a big maze's walls) are filled a band of rows at a time,
+  // clipped to the band, each band with the rectangles that reach into it: Cairo's path and
+  // outline are then a band's, not the whole maze's. Whole-pixel clips: the same pixels.
+  const bool banded = format_ == PictureFormat::png && rects.size() >= kBandedFromShapes;
+  for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
+    cairo().save(cr_);
+    if (banded) {
+      cairo().rectangle(cr_, 0.0, top, width_, kBandRows);
+      cairo().clip(cr_);
+    }
+    for (const RectPx &r : rects) {
+      if (!banded || (r.y < top + kBandRows && r.y + r.h > top)) cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
+    }
+    cairo().fill(cr_);
+    cairo().restore(cr_);
+  }
 }
 
 void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
@@ -187,13 +186,26 @@ void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
 
 void Drawing::polyline(const std::vector<PointPx> &points, double line_px, Rgb c) {
   if (points.size() < 2) return;
-  cairo().move_to(cr_, points.front().x, points.front().y);
-  for (std::size_t i = 1; i < points.size(); ++i) cairo().line_to(cr_, points[i].x, points[i].y);
   cairo().set_line_width(cr_, line_px);
   cairo().set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
   cairo().set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
   set_colour(cr_, c);
-  cairo().stroke(cr_);
+  // A long line on a PNG page is stroked a band of rows at a time, clipped to the band: Cairo
+  // then leaves out the segments outside it, so that its outline of the line, about 600 bytes
+  // a point (1.2 GB for the path of a 1024 x 1024 run), is a band's and not the whole line's.
+  // The clip is on whole pixels: every pixel is drawn as by one stroke.
+  const bool banded = format_ == PictureFormat::png && points.size() >= kBandedFromShapes;
+  for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
+    cairo().save(cr_);
+    if (banded) {
+      cairo().rectangle(cr_, 0.0, top, width_, kBandRows);
+      cairo().clip(cr_);
+    }
+    cairo().move_to(cr_, points.front().x, points.front().y);
+    for (std::size_t i = 1; i < points.size(); ++i) cairo().line_to(cr_, points[i].x, points[i].y);
+    cairo().stroke(cr_);
+    cairo().restore(cr_);
+  }
 }
 
 void Drawing::disc(PointPx centre, double radius_px, Rgb c) {

@@ -10,8 +10,9 @@
 // without the font fontconfig substitutes another sans font.
 //
 // PNG and SVG bytes are the same on every run of the same input (PDF carries its creation
-// date). PNG is 8-bit RGB, written with libpng's Up filter (see encode_png in drawing.cpp).
+// date). PNG is 8-bit RGB, every row Up-filtered (app/picture/png_encode.hpp).
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -100,6 +101,9 @@ class Drawing {
   std::unique_ptr<std::string> vector_bytes_;  // SVG / PDF as Cairo writes them (a stable address)
   cairo_surface_t *surface_ = nullptr;
   cairo_t *cr_ = nullptr;
+  // A PNG page's pixels, mapped by the page itself (see white_pages in drawing.cpp).
+  void *pixels_ = nullptr;
+  std::size_t pixels_bytes_ = 0;
 };
 
 // Text metrics of the pictures' font at `size_px`, without a page.

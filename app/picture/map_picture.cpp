@@ -29,6 +29,11 @@ Figure map_figure(const mapping::GridGeometry &g) {
   return fig;
 }
 
+PointPx cell_centre_at(const mapping::GridGeometry &g, PointPx origin, mapping::Cell c) {
+  const double cell_px = g.subcells * map_scale(g);
+  return {origin.x + (c.x + 0.5) * cell_px, origin.y + (g.height_cells - 1 - c.y + 0.5) * cell_px};
+}
+
 PointPx subcell_centre_px(const mapping::GridGeometry &g, PointPx origin, mapping::SubCell s) {
   const double scale = map_scale(g);
   return {origin.x + (s.x + 0.5) * scale, origin.y + (g.height_subcells() - 1 - s.y + 0.5) * scale};
@@ -49,7 +54,7 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
   }
   const double goal_line = std::max(1.0, cell_px / 14);
   for (const mapping::Cell goal : marks.goals) {
-    const PointPx c = cell_centre_px(g, goal);
+    const PointPx c = cell_centre_at(g, origin, goal);
     const double inset = cell_px / 8 + goal_line / 2;
     page.stroke_rect({c.x - cell_px / 2 + inset, c.y - cell_px / 2 + inset, cell_px - 2 * inset, cell_px - 2 * inset},
                      goal_line, kGoalColour);
@@ -64,7 +69,8 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
   }
   if (marks.path.empty()) return;
   std::vector<PointPx> points;
-  for (const mapping::Cell c : marks.path) points.push_back(cell_centre_px(g, c));
+  points.reserve(marks.path.size());
+  for (const mapping::Cell c : marks.path) points.push_back(cell_centre_at(g, origin, c));
   page.polyline(points, std::max(1.5, cell_px / 9), kPathColour);
   const PointPx start = points.front();
   const double side = std::max({2.0, cell_px / 3, min_mark_px});
@@ -140,9 +146,7 @@ int map_scale(const mapping::GridGeometry &geometry) {
 PointPx map_origin_px(const mapping::GridGeometry &geometry) { return layout_figure(map_figure(geometry)).map_origin; }
 
 PointPx cell_centre_px(const mapping::GridGeometry &g, mapping::Cell c) {
-  const PointPx origin = map_origin_px(g);
-  const double cell_px = g.subcells * map_scale(g);
-  return {origin.x + (c.x + 0.5) * cell_px, origin.y + (g.height_cells - 1 - c.y + 0.5) * cell_px};
+  return cell_centre_at(g, map_origin_px(g), c);
 }
 
 Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,

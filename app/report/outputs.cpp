@@ -19,6 +19,7 @@
 #include "app/report/truth_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/fixed_decimal.hpp"
 #include "mapping/walls.hpp"
 #include "sensing/setups.hpp"
 
@@ -140,9 +141,24 @@ std::string trace_header(const std::string &sensor_columns) {
 
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
                       double yaw_rad, const std::string &sensor_values) {
-  fmt::format_to(std::back_inserter(csv), "{},{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}{}\n", step.step,
-                 step.sim_time_s, x_m, y_m, yaw_rad, step.cell.x, step.cell.y,
-                 robot::to_string(step.action), step.subcells_updated, sensor_values);
+  // As "{},{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}{}\n" (the same bytes; common/fixed_decimal.hpp).
+  common::append_int(csv, step.step);
+  csv += ',';
+  common::append_fixed(csv, step.sim_time_s, 3);
+  for (const double v : {x_m, y_m, yaw_rad}) {
+    csv += ',';
+    common::append_fixed(csv, v, 4);
+  }
+  csv += ',';
+  common::append_int(csv, step.cell.x);
+  csv += ',';
+  common::append_int(csv, step.cell.y);
+  csv += ',';
+  csv += robot::to_string(step.action);
+  csv += ',';
+  common::append_int(csv, step.subcells_updated);
+  csv += sensor_values;
+  csv += '\n';
 }
 
 namespace {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <iterator>
 #include <string_view>
 
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/report/replay_page.hpp"
+#include "common/fixed_decimal.hpp"
 #include "mapping/walls.hpp"
 
 namespace app {
@@ -27,13 +29,13 @@ void append_ints(std::string &out, const std::vector<long> &values) {
   out += '[';
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (i > 0) out += ',';
-    fmt::format_to(std::back_inserter(out), "{}", values[i]);
+    common::append_int(out, values[i]);
   }
   out += ']';
 }
 
 // The changes of log [first, last) as (gap, value) pairs, the last value of each sub-cell.
-std::vector<long> frame_changes(const std::vector<GridHistory::Change> &log, std::size_t first, std::size_t last,
+std::vector<long> frame_changes(const std::deque<GridHistory::Change> &log, std::size_t first, std::size_t last,
                                 const MapTones &tones) {
   std::vector<GridHistory::Change> window(log.begin() + static_cast<std::ptrdiff_t>(first),
                                           log.begin() + static_cast<std::ptrdiff_t>(last));
@@ -67,33 +69,38 @@ void append_path(std::string &out, const GridHistory &history) {
   out += fmt::format(",\"headings\":\"{}\"}}", headings);
 }
 
-// "frames": for each, the last arrival it shows, its step and its changes.
+// "frames": for each, the last arrival it shows, its step and its changes (written straight
+// into `out`: they are most of the page).
 void append_frames(std::string &out, const ReplayInput &input, int moves_per_frame) {
   const std::vector<GridHistory::Arrival> &arrivals = input.history->arrivals();
-  const std::vector<GridHistory::Change> &log = input.history->change_log();
+  const std::deque<GridHistory::Change> &log = input.history->change_log();
   const std::size_t per = static_cast<std::size_t>(moves_per_frame);
   const std::size_t count = std::max<std::size_t>(1, (arrivals.size() + per - 1) / per);
   std::vector<long> shows;
   std::vector<long> steps;
-  std::string changes = "[";
-  std::size_t first = 0;
+  std::vector<std::size_t> ends;  // frame f's changes: log [ends[f - 1], ends[f])
+  std::size_t end = 0;
   for (std::size_t f = 0; f < count; ++f) {
     const std::size_t next = std::min((f + 1) * per, arrivals.size());  // the next frame's first arrival
     const bool last_frame = f + 1 == count;
     const std::int64_t until = last_frame ? input.steps + 1 : arrivals[next].step;
-    std::size_t end = first;
     while (end < log.size() && log[end].step < until) ++end;
     shows.push_back(static_cast<long>(next) - 1);
     steps.push_back(static_cast<long>(last_frame ? input.steps : until - 1));
-    if (f > 0) changes += ',';
-    append_ints(changes, frame_changes(log, first, end, input.tones));
-    first = end;
+    ends.push_back(end);
   }
   out += "\"frames\":{\"arrival\":";
   append_ints(out, shows);
   out += ",\"step\":";
   append_ints(out, steps);
-  out += ",\"changes\":" + changes + "]}";
+  out += ",\"changes\":[";
+  std::size_t first = 0;
+  for (std::size_t f = 0; f < count; ++f) {
+    if (f > 0) out += ',';
+    append_ints(out, frame_changes(log, first, ends[f], input.tones));
+    first = ends[f];
+  }
+  out += "]}";
 }
 
 void append_summary(std::string &out, const ReplayInput &input) {
@@ -107,20 +114,27 @@ void append_summary(std::string &out, const ReplayInput &input) {
 
 }  // namespace
 
-std::string escaped_for_script(const std::string &json) {
+std::string escaped_for_script(std::string json) {
+  std::size_t at = json.find("</");
+  if (at == std::string::npos) return json;  // the usual case: nothing to copy
   std::string out;
-  out.reserve(json.size());
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    out += json[i];
-    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') out += '\\';
+  out.reserve(json.size() + 16);
+  std::size_t from = 0;
+  for (; at != std::string::npos; at = json.find("</", at + 2)) {
+    out.append(json, from, at + 1 - from);
+    out += '\\';
+    from = at + 1;
   }
+  out.append(json, from, std::string::npos);
   return out;
 }
 
 std::string page_with_data(std::string_view page, const std::string &data) {
   constexpr std::string_view kMark = "<!--REPLAY_DATA-->";
   const std::size_t at = page.find(kMark);
-  std::string html(page.substr(0, at));
+  std::string html;
+  html.reserve(page.size() + data.size());
+  html += page.substr(0, at);
   html += data;
   html += page.substr(at + kMark.size());
   return html;
@@ -137,6 +151,8 @@ std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
       quoted(input.title), quoted(input.caption), g.width_cells, g.height_cells, g.subcells, g.cell_size_m,
       encoded(h.initial_log_odds(), t), t.occupied_increment, t.free_increment, input.steps, moves_per_frame,
       input.reachable_cells);
+  // About 12 bytes a change and 24 an arrival: reserved, so that the data is not copied as it grows.
+  out.reserve(out.size() + 12 * h.change_log().size() + 24 * h.arrivals().size() + 4096);
   std::vector<long> goals;
   for (const mapping::Cell c : input.goals) {
     goals.push_back(c.x);

@@ -62,7 +62,7 @@ struct Replay {
 std::optional<Replay> replay_html(const ReplayInput &input);
 
 // Every "</" in `json` as "<\/", so that nothing in the data closes its <script> block.
-std::string escaped_for_script(const std::string &json);
+std::string escaped_for_script(std::string json);
 // `page` with its mark <!--REPLAY_DATA--> replaced by `data` (the room run's page uses it too).
 std::string page_with_data(std::string_view page, const std::string &data);
 

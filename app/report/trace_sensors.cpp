@@ -10,6 +10,7 @@
 #include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
+#include "common/fixed_decimal.hpp"
 #include "sensing/setups.hpp"
 
 namespace app {
@@ -54,17 +55,21 @@ TraceSensors::TraceSensors(webots::Robot &robot, const robot::ControllerOptions 
 }
 
 void TraceSensors::append_values(std::string &csv) const {
-  auto out = std::back_inserter(csv);
+  const auto metres = [&csv](double v) {  // ",{:.4f}"
+    csv += ',';
+    common::append_fixed(csv, v, 4);
+  };
   if (gps_ != nullptr) {
     const double *v = gps_->getValues();
-    fmt::format_to(out, ",{:.4f},{:.4f}", v[0], v[1]);
+    metres(v[0]);
+    metres(v[1]);
   }
-  if (imu_ != nullptr) fmt::format_to(out, ",{:.4f}", imu_->getRollPitchYaw()[2]);
-  for (const webots::TouchSensor *b : bumps_) fmt::format_to(out, ",{}", b->getValue() > 0.5 ? 1 : 0);
+  if (imu_ != nullptr) metres(imu_->getRollPitchYaw()[2]);
+  for (const webots::TouchSensor *b : bumps_) csv += b->getValue() > 0.5 ? ",1" : ",0";
   for (const Depth &d : depths_) {
     const double reading_m = d.sensor->getValue();
     const bool nothing = !(reading_m < d.max_range_m);
-    fmt::format_to(out, ",{:.4f}", nothing ? 0.0 : reading_m + d.offset_m);
+    metres(nothing ? 0.0 : reading_m + d.offset_m);
   }
 }
 
