@@ -1,11 +1,11 @@
 #include "app/run/option_fields.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <numbers>
 #include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "common/error.hpp"
 #include "common/parse_number.hpp"

@@ -1,9 +1,10 @@
 #pragma once
 // The options of a run, each described once: the command-line option that sets it, its help
 // (with its default, read from the options themselves), where it lives in RunOptions and its
-// key in summary.json's "options" echo. The command line registers options from here
-// (app/cli/option_binding.hpp) and the echo writes every field from here
-// (app/report/outputs.cpp); docs/output.md lists the echo's keys.
+// key in summary.json's "options" echo, and the Webots controllerArgs key that carries it to a
+// controller. The command line registers options from here (app/cli/option_binding.hpp) and
+// the echo writes every field from here (app/report/outputs.cpp); docs/output.md lists the
+// echo's keys.
 //
 // A table a concern: option_fields<mapping::SensorModelOptions>() holds --p-free, --p-occ,
 // --prior, --log-base and --clamp, and serves every command that takes a sensor model (run,
@@ -16,18 +17,19 @@
 // - parsed: text that `parse` turns into the field (names of enums, units converted), with
 //   `echo` writing it back;
 // - own code: `help` is null, the option is registered by its own function in app/cli
-//   (--seed, --clamp, --start, --goal, --max-steps, --picture-format and the other options
-//   whose arity, checks or help vary with the command); the table still names its flag and
-//   key, and tests/test_app_option_fields.cpp checks each flag is an option of `run`.
+//   (--seed, --clamp, --start, --goal, --max-steps, --out and the other options whose arity,
+//   checks or help vary with the command); the table still names its flag and key, and
+//   tests/test_app_option_fields.cpp checks each flag is an option of `run` or `plan`.
 
 #include <cstdint>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <variant>
+
+#include <nlohmann/json.hpp>
 
 #include "app/run/run_options.hpp"
 
