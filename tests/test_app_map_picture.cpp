@@ -146,7 +146,8 @@ TEST_CASE("map.png marks the robot with a blue disc at the path's last cell, the
   g.width_cells = 3;
   g.height_cells = 2;
   const mapping::OccupancyGrid grid(g, 0.0f);
-  const app::MapMarks marks{{{0, 0}, {1, 0}, {1, 1}}, {{2, 1}}, {}, {}};
+  const std::vector<mapping::Cell> path{{0, 0}, {1, 0}, {1, 1}};
+  const app::MapMarks marks{path, {{2, 1}}, {}, {}};
   app::Drawing page = app::map_picture(grid, app::MapTones{}, marks, "model cell, K 3");
   const app::PointPx origin = app::map_origin_px(g);
   const app::PointPx end = app::cell_centre_px(g, {1, 1});
@@ -191,7 +192,8 @@ TEST_CASE("pictures: PNG bytes are the same on every drawing; SVG and PDF by nam
   g.width_cells = 2;
   g.height_cells = 2;
   const mapping::OccupancyGrid grid(g, 0.0f);
-  const app::MapMarks marks{{{0, 0}, {1, 0}}, {{1, 1}}, {}, {}};
+  const std::vector<mapping::Cell> path{{0, 0}, {1, 0}};
+  const app::MapMarks marks{path, {{1, 1}}, {}, {}};
   const std::string a = app::map_picture(grid, app::MapTones{}, marks, "caption").encode();
   const std::string b = app::map_picture(grid, app::MapTones{}, marks, "caption").encode();
   CHECK(a == b);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <numbers>
 
@@ -16,9 +17,9 @@ namespace {
 
 constexpr const char *kFontFamily = "DejaVu Sans";
 
-// Lines of this many points and more, and as many rectangles, are drawn on a PNG page a band
-// of kBandRows rows at a time (see polyline and fill_rects).
-constexpr std::size_t kBandedFromShapes = 10'000;
+// A PNG page's many rectangles, and its lines of this many points and more, are drawn a band
+// of kBandRows rows at a time (see fill_rects and polyline).
+constexpr std::size_t kBandedFromPoints = 10'000;
 constexpr int kBandRows = 256;
 
 void set_colour(cairo_t *cr, Rgb c) { cairo().set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
@@ -154,26 +155,29 @@ void Drawing::fill_rect(RectPx r, Rgb c) {
   cairo().fill(cr_);
 }
 
-void Drawing::fill_rects(const std::vector<RectPx> &rects, Rgb c) {
-  if (rects.empty()) return;
-  set_colour(cr_, c);
-  cairo().set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-  // Many rectangles on a PNG page (a big maze's walls) are filled a band of rows at a time,
-  // clipped to the band, each band with the rectangles that reach into it: Cairo's path and
-  // outline are then a band's, not the whole maze's. Whole-pixel clips: the same pixels.
-  const bool banded = format_ == PictureFormat::png && rects.size() >= kBandedFromShapes;
-  for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
+void Drawing::each_band(bool banded, const std::function<void(int top_px, int bottom_px)> &draw) {
+  if (!banded || format_ != PictureFormat::png) {
+    draw(0, height_);
+    return;
+  }
+  for (int top = 0; top < height_; top += kBandRows) {
+    const int bottom = std::min(height_, top + kBandRows);
     cairo().save(cr_);
-    if (banded) {
-      cairo().rectangle(cr_, 0.0, top, width_, kBandRows);
-      cairo().clip(cr_);
-    }
-    for (const RectPx &r : rects) {
-      if (!banded || (r.y < top + kBandRows && r.y + r.h > top)) cairo().rectangle(cr_, r.x, r.y, r.w, r.h);
-    }
-    cairo().fill(cr_);
+    cairo().rectangle(cr_, 0.0, top, width_, bottom - top);
+    cairo().clip(cr_);
+    draw(top, bottom);
     cairo().restore(cr_);
   }
+}
+
+void Drawing::fill_rects(const RectsInRows &rects_in, Rgb c) {
+  set_colour(cr_, c);
+  cairo().set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+  const RectSink add = [this](const RectPx &r) { cairo().rectangle(cr_, r.x, r.y, r.w, r.h); };
+  each_band(true, [&](int top_px, int bottom_px) {
+    rects_in(top_px, bottom_px, add);
+    cairo().fill(cr_);
+  });
 }
 
 void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
@@ -185,27 +189,42 @@ void Drawing::stroke_rect(RectPx r, double line_px, Rgb c) {
 }
 
 void Drawing::polyline(const std::vector<PointPx> &points, double line_px, Rgb c) {
-  if (points.size() < 2) return;
+  polyline(points.size(), [&points](std::size_t i) { return points[i]; }, line_px, c);
+}
+
+void Drawing::polyline(std::size_t count, const PointAt &point_at, double line_px, Rgb c) {
+  if (count < 2) return;
   cairo().set_line_width(cr_, line_px);
   cairo().set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
   cairo().set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
   set_colour(cr_, c);
-  // A long line on a PNG page is stroked a band of rows at a time, clipped to the band: Cairo
-  // then leaves out the segments outside it, so that its outline of the line, about 600 bytes
-  // a point (1.2 GB for the path of a 1024 x 1024 run), is a band's and not the whole line's.
-  // The clip is on whole pixels: every pixel is drawn as by one stroke.
-  const bool banded = format_ == PictureFormat::png && points.size() >= kBandedFromShapes;
-  for (int top = 0; top < height_; top += banded ? kBandRows : height_) {
-    cairo().save(cr_);
-    if (banded) {
-      cairo().rectangle(cr_, 0.0, top, width_, kBandRows);
-      cairo().clip(cr_);
+  // A long line on a PNG page is stroked a band of rows at a time, clipped to the band, with
+  // only the segments that come within reach of the band: Cairo's path and its outline of the
+  // line (about 600 bytes a point, 1.2 GB for the path of a 1024 x 1024 run) are then a band's.
+  // With round joins and caps the stroke is the union of its segments' strokes, so where the
+  // line is cut (a new sub-path) the caps fall outside the band: every pixel in it is as one
+  // stroke of the whole line draws it.
+  const double reach_px = line_px / 2 + 2;
+  const bool banded = format_ == PictureFormat::png && count >= kBandedFromPoints;
+  each_band(banded, [&](int top_px, int bottom_px) {
+    const auto in_reach = [&](PointPx a, PointPx b) {
+      return !banded || (std::min(a.y, b.y) - reach_px < bottom_px && std::max(a.y, b.y) + reach_px > top_px);
+    };
+    PointPx previous = point_at(0);
+    bool drawing = false;  // previous is the end of the sub-path being drawn
+    for (std::size_t i = 1; i < count; ++i) {
+      const PointPx next = point_at(i);
+      if (in_reach(previous, next)) {
+        if (!drawing) cairo().move_to(cr_, previous.x, previous.y);
+        cairo().line_to(cr_, next.x, next.y);
+        drawing = true;
+      } else {
+        drawing = false;
+      }
+      previous = next;
     }
-    cairo().move_to(cr_, points.front().x, points.front().y);
-    for (std::size_t i = 1; i < points.size(); ++i) cairo().line_to(cr_, points[i].x, points[i].y);
     cairo().stroke(cr_);
-    cairo().restore(cr_);
-  }
+  });
 }
 
 void Drawing::disc(PointPx centre, double radius_px, Rgb c) {
@@ -222,9 +241,60 @@ void Drawing::ringed_disc(PointPx centre, double radius_px, Rgb c, double ring_p
 
 void Drawing::blocks(const std::vector<Rgb> &tones, int columns, int rows, PointPx top_left, double block_w,
                      double block_h) {
+  const auto width = static_cast<std::size_t>(std::max(0, columns));
+  blocks([&](int i, int j) { return tones[static_cast<std::size_t>(j) * width + static_cast<std::size_t>(i)]; }, columns,
+         rows, top_left, block_w, block_h);
+}
+
+void Drawing::blocks(const ToneAt &tone_at, int columns, int rows, PointPx top_left, double block_w, double block_h) {
   if (columns <= 0 || rows <= 0) return;
+  const auto whole_px = [](double v, double least) { return v >= least && v <= 1e6 && v == std::floor(v); };
+  if (format_ == PictureFormat::png && whole_px(top_left.x, -1e6) && whole_px(top_left.y, -1e6) && whole_px(block_w, 1) &&
+      whole_px(block_h, 1)) {
+    write_blocks(tone_at, columns, rows, static_cast<int>(top_left.x), static_cast<int>(top_left.y),
+                 static_cast<int>(block_w), static_cast<int>(block_h));
+    return;
+  }
+  paint_blocks(tone_at, columns, rows, top_left, block_w, block_h);
+}
+
+void Drawing::write_blocks(const ToneAt &tone_at, int columns, int rows, int left_px, int top_px, int block_w_px,
+                           int block_h_px) {
+  // The pixels Cairo's nearest-neighbour fill of the same blocks gives: block (i, j) covers
+  // [left + i w, left + (i + 1) w) x [top + j h, top + (j + 1) h), cut to the page.
+  const long long right_px = left_px + static_cast<long long>(columns) * block_w_px;
+  const int x0 = std::clamp(left_px, 0, width_);
+  const int x1 = static_cast<int>(std::clamp<long long>(right_px, 0, width_));
+  if (x0 >= x1) return;
+  cairo().surface_flush(surface_);
+  auto *data = static_cast<unsigned char *>(pixels_);
+  const int stride = cairo().image_surface_get_stride(surface_);
+  std::vector<std::uint32_t> words(static_cast<std::size_t>(x1 - x0));
+  for (int j = 0; j < rows; ++j) {
+    const long long block_top = top_px + static_cast<long long>(j) * block_h_px;
+    const int y0 = static_cast<int>(std::clamp<long long>(block_top, 0, height_));
+    const int y1 = static_cast<int>(std::clamp<long long>(block_top + block_h_px, 0, height_));
+    if (y0 >= y1) continue;
+    for (int x = x0; x < x1;) {
+      const int i = (x - left_px) / block_w_px;
+      const Rgb t = tone_at(i, j);
+      const std::uint32_t word = static_cast<std::uint32_t>(t.r) << 16 | static_cast<std::uint32_t>(t.g) << 8 | t.b;
+      const auto end = static_cast<int>(std::min<long long>(x1, left_px + (i + 1LL) * block_w_px));
+      std::fill(words.begin() + (x - x0), words.begin() + (end - x0), word);
+      x = end;
+    }
+    for (int y = y0; y < y1; ++y) {
+      std::memcpy(data + static_cast<std::ptrdiff_t>(y) * stride + static_cast<std::ptrdiff_t>(x0) * 4, words.data(),
+                  words.size() * sizeof(std::uint32_t));
+    }
+  }
+  cairo().surface_mark_dirty(surface_);
+}
+
+void Drawing::paint_blocks(const ToneAt &tone_at, int columns, int rows, PointPx top_left, double block_w,
+                           double block_h) {
   if (format_ == PictureFormat::png) {
-    // One pixel a block, scaled up by nearest neighbour: exact blocks at integer scales.
+    // One pixel a block, scaled up by nearest neighbour.
     cairo_surface_t *image = cairo().image_surface_create(CAIRO_FORMAT_RGB24, columns, rows);
     cairo().surface_flush(image);
     unsigned char *data = cairo().image_surface_get_data(image);
@@ -232,7 +302,7 @@ void Drawing::blocks(const std::vector<Rgb> &tones, int columns, int rows, Point
     for (int j = 0; j < rows; ++j) {
       auto *row = reinterpret_cast<std::uint32_t *>(data + static_cast<std::ptrdiff_t>(j) * stride);
       for (int i = 0; i < columns; ++i) {
-        const Rgb t = tones[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i)];
+        const Rgb t = tone_at(i, j);
         row[i] = static_cast<std::uint32_t>(t.r) << 16 | static_cast<std::uint32_t>(t.g) << 8 | t.b;
       }
     }
@@ -255,10 +325,10 @@ void Drawing::blocks(const std::vector<Rgb> &tones, int columns, int rows, Point
   for (int j = 0; j < rows; ++j) {
     int i = 0;
     while (i < columns) {
-      const std::size_t first = static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i);
+      const Rgb first = tone_at(i, j);
       int run = 1;
-      while (i + run < columns && tones[first + static_cast<std::size_t>(run)] == tones[first]) ++run;
-      fill_rect({top_left.x + i * block_w, top_left.y + j * block_h, run * block_w, block_h}, tones[first]);
+      while (i + run < columns && tone_at(i + run, j) == first) ++run;
+      fill_rect({top_left.x + i * block_w, top_left.y + j * block_h, run * block_w, block_h}, first);
       i += run;
     }
   }

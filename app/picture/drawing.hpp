@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,17 +71,33 @@ class Drawing {
   PictureFormat format() const { return format_; }
 
   void fill_rect(RectPx r, Rgb c);
-  // Many rectangles of one colour as one shape (a maze's walls).
-  void fill_rects(const std::vector<RectPx> &rects, Rgb c);
+  // Many rectangles of one colour as one shape (a maze's walls), handed over a band of rows
+  // at a time: rects_in(top_px, bottom_px, add) calls add() for every rectangle that reaches
+  // into the rows [top_px, bottom_px); more do no harm (the band's clip leaves them out). A
+  // PNG page asks band by band (see kBandRows in drawing.cpp), so that neither the caller nor
+  // Cairo holds more than a band's rectangles; SVG and PDF ask once, for the whole page, and
+  // keep the order in which they were added.
+  using RectSink = std::function<void(const RectPx &)>;
+  using RectsInRows = std::function<void(double top_px, double bottom_px, const RectSink &add)>;
+  void fill_rects(const RectsInRows &rects_in, Rgb c);
   // The rectangle's outline, the line `line_px` wide centred on its edges.
   void stroke_rect(RectPx r, double line_px, Rgb c);
   // A line through the points, round joins and caps.
   void polyline(const std::vector<PointPx> &points, double line_px, Rgb c);
+  // The same through `count` points given one at a time, point_at(0) first (no copy of a
+  // long line's points: a 1024 x 1024 run's path is two million of them).
+  using PointAt = std::function<PointPx(std::size_t index)>;
+  void polyline(std::size_t count, const PointAt &point_at, double line_px, Rgb c);
   void disc(PointPx centre, double radius_px, Rgb c);
   // A disc with a ring of `ring_px` around it.
   void ringed_disc(PointPx centre, double radius_px, Rgb c, double ring_px, Rgb ring);
-  // `columns` x `rows` blocks, block (i, j) (j = 0 the top row) in tones[j * columns + i],
-  // each block_w x block_h px from (x, y); edges crisp (nearest-neighbour) at any scale.
+  // `columns` x `rows` blocks, block (i, j) (j = 0 the top row) in tone_at(i, j), each
+  // block_w x block_h px from (x, y); edges crisp (nearest-neighbour) at any scale. On a PNG
+  // page at whole-pixel places and sizes the blocks are written straight into the page (no
+  // copy of the tones: a 1024 x 1024 maze's map is 9.4 million of them).
+  using ToneAt = std::function<Rgb(int column, int row)>;
+  void blocks(const ToneAt &tone_at, int columns, int rows, PointPx top_left, double block_w, double block_h);
+  // The same with the tones in a vector, tones[j * columns + i].
   void blocks(const std::vector<Rgb> &tones, int columns, int rows, PointPx top_left, double block_w,
               double block_h);
 
@@ -95,6 +112,15 @@ class Drawing {
   std::string encode();
 
  private:
+  // Calls draw() once for the whole page, or (banded, PNG only) once a band of kBandRows rows,
+  // clipped to the band on whole pixels (every pixel as one call for the page would draw it).
+  void each_band(bool banded, const std::function<void(int top_px, int bottom_px)> &draw);
+  // blocks() on a PNG page at whole pixels: the page's words written directly.
+  void write_blocks(const ToneAt &tone_at, int columns, int rows, int left_px, int top_px, int block_w_px,
+                    int block_h_px);
+  // blocks() through Cairo: SVG and PDF as rectangles, PNG at fractional places by scaling.
+  void paint_blocks(const ToneAt &tone_at, int columns, int rows, PointPx top_left, double block_w, double block_h);
+
   int width_;
   int height_;
   PictureFormat format_;

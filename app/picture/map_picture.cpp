@@ -68,15 +68,13 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
     page.ringed_disc(points.front(), r, kPlannedColour, std::max(1.0, r / 5), kWhite);
   }
   if (marks.path.empty()) return;
-  std::vector<PointPx> points;
-  points.reserve(marks.path.size());
-  for (const mapping::Cell c : marks.path) points.push_back(cell_centre_at(g, origin, c));
-  page.polyline(points, std::max(1.5, cell_px / 9), kPathColour);
-  const PointPx start = points.front();
+  const auto path_point = [&](std::size_t i) { return cell_centre_at(g, origin, marks.path[i]); };
+  page.polyline(marks.path.size(), path_point, std::max(1.5, cell_px / 9), kPathColour);
+  const PointPx start = path_point(0);
   const double side = std::max({2.0, cell_px / 3, min_mark_px});
   page.fill_rect({start.x - side / 2, start.y - side / 2, side, side}, kStartColour);
   const double r = std::max({2.0, cell_px / 7, min_mark_px / 2});
-  page.ringed_disc(points.back(), r, kEndColour, std::max(1.0, r / 5), kWhite);
+  page.ringed_disc(path_point(marks.path.size() - 1), r, kEndColour, std::max(1.0, r / 5), kWhite);
 }
 
 std::vector<LegendItem> map_items(const MapMarks &marks) {
@@ -160,14 +158,9 @@ Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, c
   fig.px_per_m = scale / g.subcell_size_m();
   const FigureLayout layout = layout_figure(fig);
   Drawing page(layout.width, layout.height, format);
-  const int w = g.width_subcells();
   const int h = g.height_subcells();
-  std::vector<Rgb> cells;
-  cells.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-  for (int row = 0; row < h; ++row) {
-    for (int x = 0; x < w; ++x) cells.push_back(tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones));
-  }
-  page.blocks(cells, w, h, layout.map_origin, scale, scale);
+  page.blocks([&](int x, int row) { return tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones); },
+              g.width_subcells(), h, layout.map_origin, scale, scale);
   draw_marks(page, g, layout.map_origin, marks, 0.6 * layout.font_px);
   draw_figure(page, fig, layout);
   return page;

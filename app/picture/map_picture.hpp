@@ -21,6 +21,7 @@
 // Drawn by app/picture/drawing.hpp in the layout of app/picture/figure.hpp.
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -63,8 +64,10 @@ struct LandmarkMark {
   double radius_m = 0.0;
 };
 
+// What is drawn over the map. The path is the caller's (a long run's is millions of cells):
+// it must outlive the marks.
 struct MapMarks {
-  std::vector<mapping::Cell> path;   // cells in order of arrival, start first (may be empty)
+  std::span<const mapping::Cell> path;  // cells in order of arrival, start first (may be empty)
   std::vector<mapping::Cell> goals;
   std::vector<mapping::SubCell> planned;  // a planned path (plan.png), sub-cell centres, in magenta
   std::vector<LandmarkMark> landmarks;    // discs of their colour, ringed in black

@@ -174,7 +174,8 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
   const std::vector<std::int64_t> steps = snapshot_steps(summary.steps, count);
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const mapping::OccupancyGrid grid = files.history->grid_at(steps[i]);
-    const MapMarks marks{files.history->path_at(steps[i]), files.goals, {}, files.landmarks};
+    const std::vector<mapping::Cell> path = files.history->path_at(steps[i]);
+    const MapMarks marks{path, files.goals, {}, files.landmarks};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
     for (const PictureFormat format : options.output.picture_formats) {
       const std::string name = fmt::format("{:0{}}.{}", i + 1, digits, to_string(format));

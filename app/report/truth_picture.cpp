@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -75,25 +76,60 @@ RectPx side_rect(const TruthLayout &l, maze::Cell c, maze::Side s, double fracti
   return {};
 }
 
-void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable,
-                double min_mark_px) {
-  const maze::Maze &m = *in.truth;
-  std::vector<Rgb> tones;
-  std::vector<RectPx> unscored;
-  for (int row = 0; row < m.height(); ++row) {
-    for (int x = 0; x < m.width(); ++x) {
-      const maze::Cell c{x, m.height() - 1 - row};
-      tones.push_back(!reachable[flat(m, c)] ? kUnreachableTone
-                      : (*in.visited)[flat(m, c)] ? kWhite : kUnvisitedTone);
-      if (!reachable[flat(m, c)]) {
+// The rows y (first, last; south to north) of the cells whose sides may reach into the
+// picture's rows [top_px, bottom_px): a side reaches half a side's thickness beyond its cell.
+std::pair<int, int> cell_rows_in(const TruthLayout &l, double top_px, double bottom_px) {
+  const double first_row_top = l.origin.y + l.side_px;
+  const auto picture_row = [&](double y_px) { return static_cast<int>(std::floor((y_px - first_row_top) / l.cell_px)); };
+  const int top_row = std::max(0, picture_row(top_px - l.side_px) - 1);
+  const int bottom_row = std::min(l.height_cells - 1, picture_row(bottom_px + l.side_px) + 1);
+  return {l.height_cells - 1 - bottom_row, l.height_cells - 1 - top_row};
+}
+
+// The walls of the cells never reachable from the start (each cell its own four sides).
+Drawing::RectsInRows unscored_walls(const TruthLayout &l, const maze::Maze &m, const std::vector<bool> &reachable) {
+  return [&l, &m, &reachable](double top_px, double bottom_px, const Drawing::RectSink &add) {
+    const auto [first, last] = cell_rows_in(l, top_px, bottom_px);
+    for (int y = first; y <= last; ++y) {
+      for (int x = 0; x < m.width(); ++x) {
+        const maze::Cell c{x, y};
+        if (reachable[flat(m, c)]) continue;
         for (const maze::Side s : maze::kSides) {
-          if (m.has_wall(c, s)) unscored.push_back(side_rect(l, c, s, 1.0));
+          if (m.has_wall(c, s)) add(side_rect(l, c, s, 1.0));
         }
       }
     }
-  }
-  page.blocks(tones, m.width(), m.height(), {l.origin.x + l.side_px, l.origin.y + l.side_px}, l.cell_px, l.cell_px);
-  page.fill_rects(unscored, kUnscoredWallColour);
+  };
+}
+
+// The scored sides of one verdict, as drawn: a right side only where it is a wall, an unseen
+// opening as the middle half of its side.
+Drawing::RectsInRows sides_judged(const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable,
+                                  SideVerdict verdict) {
+  return [&l, &in, &reachable, verdict](double top_px, double bottom_px, const Drawing::RectSink &add) {
+    const maze::Maze &m = *in.truth;
+    const double length = verdict == SideVerdict::unseen_opening ? 0.5 : 1.0;
+    const auto [first, last] = cell_rows_in(l, top_px, bottom_px);
+    for (int y = first; y <= last; ++y) {
+      for_each_scored_side_in_row(m, reachable, y, [&](maze::Cell c, maze::Side s) {
+        const bool wall = m.has_wall(c, s);
+        if (judge_side(wall, in.learned(c, s)) == verdict && (wall || verdict != SideVerdict::right)) {
+          add(side_rect(l, c, s, length));
+        }
+      });
+    }
+  };
+}
+
+void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable,
+                double min_mark_px) {
+  const maze::Maze &m = *in.truth;
+  const auto cell_tone = [&](int x, int row) {
+    const std::size_t i = flat(m, maze::Cell{x, m.height() - 1 - row});
+    return !reachable[i] ? kUnreachableTone : (*in.visited)[i] ? kWhite : kUnvisitedTone;
+  };
+  page.blocks(cell_tone, m.width(), m.height(), {l.origin.x + l.side_px, l.origin.y + l.side_px}, l.cell_px, l.cell_px);
+  page.fill_rects(unscored_walls(l, m, reachable), kUnscoredWallColour);
   draw_landmarks(page, l, m);  // first: the goals and the start are drawn over them
   const double line = std::max(1.0, l.cell_px / 14);
   for (const maze::Cell goal : m.goals()) {
@@ -187,22 +223,10 @@ Drawing truth_picture(const TruthInput &in, PictureFormat format) {
   const TruthLayout l = layout_of(in, layout.map_origin);
   Drawing page(layout.width, layout.height, format);
   draw_cells(page, l, in, reachable, 0.6 * layout.font_px);
-  std::vector<RectPx> right, missed, phantom, unseen;
-  for_each_scored_side(m, reachable, [&](maze::Cell c, maze::Side s) {
-    const bool wall = m.has_wall(c, s);
-    switch (judge_side(wall, in.learned(c, s))) {
-      case SideVerdict::right:
-        if (wall) right.push_back(side_rect(l, c, s, 1.0));
-        break;
-      case SideVerdict::missed: missed.push_back(side_rect(l, c, s, 1.0)); break;
-      case SideVerdict::phantom: phantom.push_back(side_rect(l, c, s, 1.0)); break;
-      case SideVerdict::unseen_opening: unseen.push_back(side_rect(l, c, s, 0.5)); break;
-    }
-  });
-  page.fill_rects(right, kRightWallColour);
-  page.fill_rects(missed, kMissedColour);
-  page.fill_rects(phantom, kPhantomColour);
-  page.fill_rects(unseen, kUnseenColour);
+  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::right), kRightWallColour);
+  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::missed), kMissedColour);
+  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::phantom), kPhantomColour);
+  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::unseen_opening), kUnseenColour);
   draw_figure(page, fig, layout);
   return page;
 }

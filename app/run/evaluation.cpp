@@ -20,24 +20,27 @@ SideVerdict judge_side(bool true_wall, LearnedSide learned) {
   return learned == LearnedSide::wall ? SideVerdict::phantom : SideVerdict::unseen_opening;
 }
 
-void for_each_scored_side(const maze::Maze &truth, const std::vector<bool> &reachable,
-                          const std::function<void(maze::Cell, maze::Side)> &scored) {
+void for_each_scored_side_in_row(const maze::Maze &truth, const std::vector<bool> &reachable, int y,
+                                 const std::function<void(maze::Cell, maze::Side)> &scored) {
   const auto w = static_cast<std::size_t>(truth.width());
   auto at = [w](maze::Cell c) { return static_cast<std::size_t>(c.y) * w + static_cast<std::size_t>(c.x); };
   auto is_reachable = [&](maze::Cell c) { return truth.contains(c) && reachable[at(c)]; };
-  for (int y = 0; y < truth.height(); ++y) {
-    for (int x = 0; x < truth.width(); ++x) {
-      const maze::Cell c{x, y};
-      if (!reachable[at(c)]) continue;
-      for (const maze::Side s : maze::kSides) {
-        // A side shared with another reachable cell is counted by the cell to its south or
-        // west, i.e. as that cell's north or east side.
-        const bool counted_by_neighbour =
-            (s == maze::Side::south || s == maze::Side::west) && is_reachable(maze::neighbour(c, s));
-        if (!counted_by_neighbour) scored(c, s);
-      }
+  for (int x = 0; x < truth.width(); ++x) {
+    const maze::Cell c{x, y};
+    if (!reachable[at(c)]) continue;
+    for (const maze::Side s : maze::kSides) {
+      // A side shared with another reachable cell is counted by the cell to its south or
+      // west, i.e. as that cell's north or east side.
+      const bool counted_by_neighbour =
+          (s == maze::Side::south || s == maze::Side::west) && is_reachable(maze::neighbour(c, s));
+      if (!counted_by_neighbour) scored(c, s);
     }
   }
+}
+
+void for_each_scored_side(const maze::Maze &truth, const std::vector<bool> &reachable,
+                          const std::function<void(maze::Cell, maze::Side)> &scored) {
+  for (int y = 0; y < truth.height(); ++y) for_each_scored_side_in_row(truth, reachable, y, scored);
 }
 
 MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,

@@ -53,6 +53,10 @@ SideVerdict judge_side(bool true_wall, LearnedSide learned);
 // east side). `reachable` is truth.reachable_from_start().
 void for_each_scored_side(const maze::Maze &truth, const std::vector<bool> &reachable,
                           const std::function<void(maze::Cell, maze::Side)> &scored);
+// The same for the cells of row y alone (south to north, the rows together give every side
+// once, in for_each_scored_side's order).
+void for_each_scored_side_in_row(const maze::Maze &truth, const std::vector<bool> &reachable, int y,
+                                 const std::function<void(maze::Cell, maze::Side)> &scored);
 
 // The scored sides that are not right (unknown included) of the cells looked[y * W + x] marks,
 // either cell of a shared side: a run may leave cells unvisited by design, never a wrong side
