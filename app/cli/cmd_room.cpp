@@ -133,8 +133,8 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
                   "range or axial (--model depth): the depth rays report the range along the ray, or the depth along "
                   "the heading from --depth-origin, as a depth camera and the homework's simulator do (default range)");
   cmd->add_option("--depth-origin", in->depth_origin,
-                  "X,Y (--model depth): the depth rays leave this point of the robot, m, x forward, y left (default: "
-                  "each from the rim, trace.csv's depths from the centre)");
+                  "X,Y (--model depth): the depth rays leave this point of the robot, m, x forward, y left (default "
+                  "none: each from the rim, trace.csv's depths from the centre)");
   add_seed_option(*cmd, o.simulation.seed, "the simulation's noise and wander's turns");
   add_model_options(*cmd, o.sensor);
   cmd->add_flag("--quiet", o.quiet, "print the summary only");
