@@ -1,8 +1,8 @@
 // The room runs end to end in the embedded simulator: frontier maps the reachable free area of
 // the shipped arenas and of generated ones with the lidar, IR and sonar set-ups and never says
 // done when it did not; wavefront reaches its goal where one exists and says it cannot where
-// none does. About 5 s in all (the lidar's 20 arenas 3 s), besides the IR pie's 40 runs in
-// the acceptance suite (9 s).
+// none does. About 8 s in all (the lidar's 20 arenas 3 s, the cones' 40 runs 3 s), besides
+// the IR pie's 40 runs in the acceptance suite (9 s).
 
 #include <doctest/doctest.h>
 
@@ -87,6 +87,26 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the lidar") {
     std::ostringstream out;
     const app::RoomSummary summary = app::run_room_in(generated_arena(seed), frontier_options(kSetUps[0]), out);
     check_mapped(summary, "seed " + std::to_string(seed) + " hambot");
+  }
+}
+
+TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone; the IR cone never says done falsely") {
+  // The sonar maps every arena to 99 % (its walls at the edge answer its lost echoes; seed 8
+  // stops at 99.62 %, incomplete). The IR cone stops short on seeds 11 and 13 (97.78 %,
+  // 98.59 %: a slanted reading's arc across the mouth of a 0.4 m corridor) and says so.
+  // About 3 s for the 40 runs.
+  for (const char *robot_name : {"sonar-ring", "ir-ring"}) {
+    for (int seed = 1; seed <= 20; ++seed) {
+      std::ostringstream out;
+      app::RoomRunOptions o = frontier_options(kSetUps[1]);
+      o.robot = robot_name;
+      const app::RoomSummary s = app::run_room_in(generated_arena(seed), o, out);
+      INFO("seed ", seed, " ", robot_name, ": ", robot::to_string(s.ending), ": ", s.message);
+      if (std::string(robot_name) == "sonar-ring") check_mapped(s, "seed " + std::to_string(seed) + " sonar cone");
+      CHECK(s.observed_share() >= 0.97);
+      if (s.ending == robot::RoomEnding::done) CHECK(s.reachable_free_observed == s.reachable_free);
+      CHECK((s.ending == robot::RoomEnding::done || s.ending == robot::RoomEnding::incomplete));
+    }
   }
 }
 

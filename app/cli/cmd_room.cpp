@@ -25,6 +25,7 @@ struct RoomInput {
   std::string strategy = "frontier";
   std::string model = "ray";
   std::string cells, resolution, boundary, waypoints, goal, start, snapshots_at, snapshot_steps;
+  std::string depth_reading = "range", depth_origin;
   RoomRunOptions options;
 };
 
@@ -78,6 +79,11 @@ void build(RoomInput &in, const CLI::App &cmd) {
       o.snapshot_steps.push_back(static_cast<std::int64_t>(v));
     }
   }
+  if (in.depth_reading != "range" && in.depth_reading != "axial") {
+    throw common::InputError("--depth-reading must be range or axial (got " + in.depth_reading + ")");
+  }
+  o.depth_reading = in.depth_reading == "axial" ? sensing::DepthReading::axial : sensing::DepthReading::range;
+  if (!in.depth_origin.empty()) o.depth_origin = point_of(in.depth_origin, "--depth-origin");
   // Options of one strategy given to another are refused, not ignored.
   const auto given = [&cmd](const char *name) { return cmd.get_option(name)->count() > 0; };
   using robot::RoomStrategy;
@@ -86,6 +92,10 @@ void build(RoomInput &in, const CLI::App &cmd) {
   }
   if (given("--laps") && o.room.strategy != RoomStrategy::waypoints) {
     throw common::InputError("--laps applies to --strategy waypoints only");
+  }
+  if ((given("--depth-reading") || given("--depth-origin")) && o.model.kind != sensing::ModelKind::depth) {
+    throw common::InputError(fmt::format("--depth-reading and --depth-origin apply to --model depth only (got --model {})",
+                                         in.model));
   }
   if (given("--goal") && o.room.strategy != RoomStrategy::wavefront) {
     throw common::InputError("--goal applies to --strategy wavefront only");
@@ -119,6 +129,12 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--snapshot-steps", in->snapshot_steps, "N1,N2,...: print the map at these control steps");
   cmd->add_option("--threshold", o.threshold, "log-odds drawn W at or above (default 0; bump and depth -0.5)");
   cmd->add_option("--max-steps", o.max_steps, "control steps at most (default 2000000)");
+  cmd->add_option("--depth-reading", in->depth_reading,
+                  "range or axial (--model depth): the depth rays report the range along the ray, or the depth along "
+                  "the heading from --depth-origin, as a depth camera and the homework's simulator do (default range)");
+  cmd->add_option("--depth-origin", in->depth_origin,
+                  "X,Y (--model depth): the depth rays leave this point of the robot, m, x forward, y left (default "
+                  "none: each from the rim, trace.csv's depths from the centre)");
   add_seed_option(*cmd, o.simulation.seed, "the simulation's noise and wander's turns");
   add_model_options(*cmd, o.sensor);
   cmd->add_flag("--quiet", o.quiet, "print the summary only");

@@ -68,7 +68,13 @@ std::vector<RoomReportEntry> room_report(const RoomRunOptions &options, const st
   e.both("world", "world", options.world, options.world);
   const std::string strategy(robot::to_string(options.room.strategy));
   e.both("strategy", "strategy", strategy, strategy);
-  e.both("robot", "robot", fmt::format("{} ({} set-up)", robot_name, setup.name), robot_name);
+  std::string depth;
+  if (options.depth_reading == sensing::DepthReading::axial || options.depth_origin) {
+    const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
+    depth = fmt::format("; depth {} from {:g},{:g} m", options.depth_reading == sensing::DepthReading::axial ? "axial" : "range",
+                        o.x_m, o.y_m);
+  }
+  e.both("robot", "robot", fmt::format("{} ({} set-up{})", robot_name, setup.name, depth), robot_name);
   e.json_only("model", std::string(setup.name));
   add_grid(e, spec);
   e.both("steps", "steps", fmt::format("{}", summary.steps), summary.steps);

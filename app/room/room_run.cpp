@@ -3,6 +3,7 @@
 #include "app/room/room_run.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -45,6 +46,26 @@ double threshold_of(const RoomRunOptions &o) {
   return o.threshold.value_or(is_log_set_up(o.model.kind) ? -0.5 : 0.0);
 }
 
+// --depth-reading and --depth-origin: the depth rays leave one origin in the robot's frame
+// and, axial, report the depth along the heading (a depth camera, the homework's simulator).
+void with_depth_convention(maze::sim::RobotProfile &profile, const RoomRunOptions &options) {
+  if (options.depth_reading == sensing::DepthReading::range && !options.depth_origin) return;
+  if (options.model.kind != sensing::ModelKind::depth) {
+    throw common::InputError(fmt::format("--depth-reading and --depth-origin apply to --model depth only (got --model {})",
+                                         sensing::setup(options.model.kind).name));
+  }
+  const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
+  if (!(std::isfinite(o.x_m) && std::isfinite(o.y_m) && std::hypot(o.x_m, o.y_m) <= profile.body_radius_m)) {
+    throw common::InputError(fmt::format("--depth-origin must lie on the robot, within its {:g} m radius (got {:g},{:g})",
+                                         profile.body_radius_m, o.x_m, o.y_m));
+  }
+  for (maze::sim::DistanceSensorSpec &d : profile.distance_sensors) {
+    d.origin_m = std::array<double, 2>{o.x_m, o.y_m};
+    d.axial = options.depth_reading == sensing::DepthReading::axial;
+  }
+  maze::sim::validate_profile(profile);
+}
+
 // The set-up's robot (--robot, else the set-up's own); refused when it lacks the set-up's devices.
 maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const RoomRunOptions &options) {
   const std::string robot_name = options.robot.empty() ? std::string(setup.default_robot) : options.robot;
@@ -53,6 +74,7 @@ maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const RoomRunOpti
     throw common::InputError(fmt::format("--robot {} has no {}, which --model {} reads", profile.name, setup.devices(),
                                          setup.name));
   }
+  with_depth_convention(profile, options);
   return profile;
 }
 

@@ -24,6 +24,7 @@
 #include "maze/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/room_controller.hpp"
+#include "sensing/log_map.hpp"
 #include "sensing/range_models.hpp"
 #include "sensing/room_map.hpp"
 #include "sensing/setups.hpp"
@@ -41,6 +42,10 @@ struct RoomRunOptions {
   mapping::SensorModelOptions sensor;
   sensing::ModelOptions model;                // kind: --model (default ray)
   sensing::RangeModelOptions range_model;
+  // --model depth: how the depth rays report (range along the ray, or axial depth along the
+  // heading) and where they leave from (robot frame, m; none: the rim, the range from the centre).
+  sensing::DepthReading depth_reading = sensing::DepthReading::range;
+  std::optional<mapping::Point> depth_origin;
   std::optional<double> threshold;            // log-odds drawn W at or above (default 0; bump/depth -0.5)
   std::vector<double> snapshots_at_s;
   std::vector<std::int64_t> snapshot_steps;

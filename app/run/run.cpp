@@ -47,7 +47,8 @@ robot::SensingOptions sensing_of(const maze::sim::RobotProfile &profile) {
   for (const maze::sim::DistanceSensorSpec &d : profile.distance_sensors) {
     const maze::sim::LookupRow &far = d.lookup_table.back();
     s.ranges.push_back({d.name, d.angle_rad, profile.body_radius_m, far.value, d.aperture_rad,
-                        far.noise_fraction});
+                        far.noise_fraction, std::nullopt, d.axial});
+    if (d.origin_m) s.ranges.back().origin = mapping::Point{(*d.origin_m)[0], (*d.origin_m)[1]};
   }
   return s;
 }

@@ -27,6 +27,11 @@ struct RangeSensorMount {
   double max_range_m = 0.0;      // a value at or beyond this saw nothing
   double aperture_rad = 0.0;     // full beam width (cone model)
   double range_error = 0.0;      // relative distance error (cone model)
+  // A depth camera's pixel (room --model depth): the ray leaves this point of the robot's
+  // frame (x forward, y left, m) instead of the rim, and with axial the value is the depth
+  // along the heading (range cos angle_rad), a value at max range still nothing seen.
+  std::optional<mapping::Point> origin = std::nullopt;
+  bool axial = false;
 };
 
 struct BumperMount {

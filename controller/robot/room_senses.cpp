@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <webots/DistanceSensor.hpp>
 #include <webots/TouchSensor.hpp>
 
 #include "common/angles.hpp"
@@ -66,12 +67,30 @@ RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, s
       [[fallthrough]];
     case RoomSensing::pie:
     case RoomSensing::cone:
-      for (std::size_t i = 0; i < options.sensing.ranges.size() && sensing_ == RoomSensing::depth; ++i) {
-        const RangeSensorMount &m = options.sensing.ranges[i];
-        log_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
-        log_options_.depth_max_m = m.max_range_m + m.offset_m;
-      }
+      if (sensing_ == RoomSensing::depth) read_depth_mounts(options.sensing.ranges);
       break;
+  }
+}
+
+// map-log's depth options for these rays: their angles, and either the range from the centre
+// (rays on the rim: the reading plus the rim's offset) or, from a common origin, the reading
+// itself as the rays say it (range or axial); map-log ignores a reading at depth_max.
+void RoomSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts) {
+  const RangeSensorMount &first = mounts.front();
+  for (std::size_t i = 0; i < mounts.size(); ++i) {
+    const RangeSensorMount &m = mounts[i];
+    const bool same_origin = m.origin.has_value() == first.origin.has_value() &&
+                             (!m.origin || (m.origin->x_m == first.origin->x_m && m.origin->y_m == first.origin->y_m));
+    if (!same_origin || m.axial != first.axial) {
+      throw common::InputError("the depth set-up in a room needs its nine rays read alike: from one origin, all axial or none");
+    }
+    log_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
+    log_options_.depth_max_m = m.max_range_m + (m.origin ? 0.0 : m.offset_m);
+  }
+  log_options_.depth_reading = first.axial ? sensing::DepthReading::axial : sensing::DepthReading::range;
+  if (first.origin) {
+    log_options_.depth_origin_x_m = first.origin->x_m;
+    log_options_.depth_origin_y_m = first.origin->y_m;
   }
 }
 
@@ -84,7 +103,11 @@ void RoomSenses::read_ranges(mapping::Point centre, double yaw_rad) {
     const RangeSensorMount &m = options_.sensing.ranges[i];
     const double value = readings_[i].range_m;
     if (std::abs(m.angle_rad) <= kAheadHalfAngle_rad && value > 0.0 && value < m.max_range_m) {
-      clearance_ahead_m_ = std::min(clearance_ahead_m_, value + m.offset_m);
+      const sensing::RangeReading &r = readings_[i];
+      const double from_centre = m.origin ? std::hypot(r.origin.x_m + value * std::cos(r.angle_rad) - centre.x_m,
+                                                       r.origin.y_m + value * std::sin(r.angle_rad) - centre.y_m)
+                                          : value + m.offset_m;
+      clearance_ahead_m_ = std::min(clearance_ahead_m_, from_centre);
     }
   }
 }
@@ -125,8 +148,9 @@ std::size_t RoomSenses::scan(mapping::Point centre, double yaw_rad, double time_
     case RoomSensing::depth:
       read_ranges(centre, yaw_rad);
       for (std::size_t i = 0; i < readings_.size(); ++i) {
-        // map-log's depth is the distance from the robot's centre along the ray
-        log_step_.depth_m[i] = readings_[i].range_m + options_.sensing.ranges[i].offset_m;
+        // map-log's depth: from the centre along the ray, or from the rays' origin as the device says it
+        const RangeSensorMount &m = options_.sensing.ranges[i];
+        log_step_.depth_m[i] = m.origin ? devices_.range_sensors[i]->getValue() : readings_[i].range_m + m.offset_m;
       }
       sensing::apply_log_step(log_options_, sensing::LogSensor::depth, log_step_, map_.log_grid());
       return 1;

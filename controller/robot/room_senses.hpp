@@ -44,6 +44,7 @@ class RoomSenses {
 
  private:
   void read_ranges(mapping::Point centre, double yaw_rad);
+  void read_depth_mounts(const std::vector<RangeSensorMount> &mounts);
 
   const ControllerOptions &options_;
   sensing::RoomMap &map_;

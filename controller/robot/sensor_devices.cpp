@@ -55,8 +55,14 @@ void read_range_sensors(const std::vector<webots::DistanceSensor *> &sensors,
     const RangeSensorMount &m = mounts[i];
     const webots::DistanceSensor &sensor = *sensors[i];
     const double a = yaw_rad + m.angle_rad;
-    out.push_back({{centre.x_m + m.offset_m * std::cos(a), centre.y_m + m.offset_m * std::sin(a)}, a,
-                   sensor.getValue(), m.max_range_m, m.aperture_rad, m.range_error,
+    mapping::Point origin{centre.x_m + m.offset_m * std::cos(a), centre.y_m + m.offset_m * std::sin(a)};
+    if (m.origin) {
+      origin = {centre.x_m + m.origin->x_m * std::cos(yaw_rad) - m.origin->y_m * std::sin(yaw_rad),
+                centre.y_m + m.origin->x_m * std::sin(yaw_rad) + m.origin->y_m * std::cos(yaw_rad)};
+    }
+    double value = sensor.getValue();
+    if (m.axial && value < m.max_range_m) value /= std::cos(m.angle_rad);  // the depth's range along its ray
+    out.push_back({origin, a, value, m.max_range_m, m.aperture_rad, m.range_error,
                    sensor.getType() == webots::DistanceSensor::SONAR});
   }
 }

@@ -37,7 +37,8 @@ struct SensorDevices {
 sensing::LidarScan lidar_scan(const webots::Lidar &lidar, mapping::Point origin, double yaw_rad);
 
 // Every range sensor's reading now in the world frame (the sensor on its mount, `mounts[i]`
-// for range_sensors[i]), the robot's centre at `centre` facing yaw_rad; into `out`, cleared.
+// for range_sensors[i], at its origin when it has one; an axial depth as its range along the
+// ray), the robot's centre at `centre` facing yaw_rad; into `out`, cleared.
 void read_range_sensors(const std::vector<webots::DistanceSensor *> &sensors,
                         const std::vector<RangeSensorMount> &mounts, mapping::Point centre, double yaw_rad,
                         std::vector<sensing::RangeReading> &out);

@@ -286,6 +286,8 @@ void validate_distance_sensor(const std::string &key, const DistanceSensorSpec &
   require_at_most(key + ".aperture_rad", d.aperture_rad, kPi, "pi");
   if (d.rays < 1 || d.rays > 1000) bad(key + ".rays", fmt::format("must be 1 to 1000 (got {})", d.rays));
   require_positive(key + ".gaussian_width", d.gaussian_width);
+  if (d.axial && !(std::abs(d.angle_rad) < kPi / 2)) bad(key + ".angle_rad", "must be within (-pi/2, pi/2) for an axial depth");
+  if (d.origin_m) require_finite(key + ".origin_m", (*d.origin_m)[0] + (*d.origin_m)[1]);
   if (d.lookup_table.empty()) bad(key + ".lookup_table", "must have at least one row");
   for (std::size_t i = 0; i < d.lookup_table.size(); ++i) {
     const std::string row = fmt::format("{}.lookup_table[{}]", key, i);

@@ -283,9 +283,18 @@ double sensor_distance_in(const Solids &walls, const DistanceSensorSpec &sensor,
                           const Pose &pose) {
   assert(sensor.rays >= 1 && !sensor.lookup_table.empty());
   const double direction = pose.yaw_rad + sensor.angle_rad;
-  const double ox = pose.x_m + body_radius_m * std::cos(direction);
-  const double oy = pose.y_m + body_radius_m * std::sin(direction);
+  double ox = pose.x_m + body_radius_m * std::cos(direction);
+  double oy = pose.y_m + body_radius_m * std::sin(direction);
+  if (sensor.origin_m) {
+    const auto &o = *sensor.origin_m;
+    ox = pose.x_m + o[0] * std::cos(pose.yaw_rad) - o[1] * std::sin(pose.yaw_rad);
+    oy = pose.y_m + o[0] * std::sin(pose.yaw_rad) + o[1] * std::cos(pose.yaw_rad);
+  }
   const double range_m = sensor.lookup_table.back().distance_m;
+  if (sensor.axial) {
+    const double d = walls.cast(ox, oy, direction, range_m);
+    return d < range_m ? d * std::cos(sensor.angle_rad) : range_m;
+  }
   if (sensor.type == DistanceSensorType::sonar) {
     double nearest = range_m;
     for (int k = 0; k < sensor.rays; ++k) {

@@ -37,6 +37,7 @@
 // Profiles are data: app/run/profile_json.hpp prints one as JSON and reads one back
 // (`maze_mapper robot NAME`, `--robot FILE.json`); validate_profile() is the one check.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -87,6 +88,12 @@ struct DistanceSensorSpec {
   std::vector<LookupRow> lookup_table;  // increasing distance
   DistanceSensorType type = DistanceSensorType::generic;
   double gaussian_width = 1.0;  // Webots' gaussianWidth: the ray weights' spread (generic, infra-red)
+  // Where the rays leave from: none, the body's rim along angle_rad; else this point in the
+  // robot's frame (x forward, y left, m), as a depth camera's pixels share its lens.
+  std::optional<std::array<double, 2>> origin_m = std::nullopt;
+  // A depth camera's pixel: the value is the depth along the robot's heading (the distance
+  // times cos angle_rad), not along the ray; nothing seen is still the table's last distance.
+  bool axial = false;
   bool operator==(const DistanceSensorSpec &) const = default;
 };
 
