@@ -125,12 +125,44 @@ TEST_CASE("fixed lidar: a fixed lidar reports no head frequency, so the controll
   CHECK(old.robot().getLidar("lidar")->getFrequency() == 12.0);
 }
 
-// range_image works in blocks of passes (the fan's casts, the noise, the readings four at a
-// time with AVX2 where the processor has it): held here to the beam-by-beam form it replaced,
-// bit for bit, over random poses in a carved maze, with and without noise, with a
-// resolution (the lane path) and without (the scalar path), ranges short enough that
-// min_range and max_range cut beams.
-TEST_CASE("fixed lidar: range_image gives the beam-by-beam readings bit for bit") {
+namespace {
+
+// range_image at one pose against the beam-by-beam form it replaced (cast, draw, read, in index
+// order), bit for bit; each beam's cast also against cast_reference, one slab test a box. The
+// beams compared.
+int compare_range_image(const maze::sim::WallGrid &walls, const maze::sim::LidarSpec &spec,
+                        const maze::sim::Pose &pose, double noise, std::uint64_t seed) {
+  const maze::sim::LidarModel model(spec);
+  std::vector<float> image(static_cast<std::size_t>(spec.horizontal_resolution));
+  common::Rng rng(seed);
+  model.range_image(walls, noise, pose, rng, image);
+  common::Rng reference_rng(seed);
+  const double sigma_m = noise * spec.max_range_m;
+  const double reach_m = spec.max_range_m + 6.0 * sigma_m + spec.resolution_m;
+  int compared = 0;
+  for (int i = 0; i < spec.horizontal_resolution; ++i) {
+    const double a = pose.yaw_rad;
+    const double b = maze::sim::beam_angle_rad(spec, i);
+    const double dx = std::cos(a) * std::cos(b) - std::sin(a) * std::sin(b);
+    const double dy = std::sin(a) * std::cos(b) + std::cos(a) * std::sin(b);
+    const double range = walls.cast_direction(pose.x_m, pose.y_m, dx, dy, reach_m);
+    const double reference = walls.cast_reference(pose.x_m, pose.y_m, dx, dy, reach_m);
+    if (std::bit_cast<std::uint64_t>(range) != std::bit_cast<std::uint64_t>(reference)) {
+      FAIL_CHECK("beam " << i << " at (" << pose.x_m << ", " << pose.y_m << ", " << pose.yaw_rad
+                         << "): cast " << range << " != reference " << reference);
+    }
+    const double noise_m = sigma_m > 0.0 ? reference_rng.normal(0.0, sigma_m) : 0.0;
+    const float expected = maze::sim::fixed_lidar_reading(spec, range, maze::sim::face_cos(b), noise_m);
+    const float got = image[static_cast<std::size_t>(i)];
+    if (std::bit_cast<std::uint32_t>(got) != std::bit_cast<std::uint32_t>(expected)) {
+      FAIL_CHECK("seed " << seed << " beam " << i << ": " << got << " != " << expected);
+    }
+    ++compared;
+  }
+  return compared;
+}
+
+maze::Maze carved_maze() {
   maze::Maze m(9, 7);
   common::Rng carve(7);
   for (int y = 0; y < m.height(); ++y) {
@@ -140,6 +172,18 @@ TEST_CASE("fixed lidar: range_image gives the beam-by-beam readings bit for bit"
       }
     }
   }
+  return m;
+}
+
+}  // namespace
+
+// range_image works in blocks of passes (the fan's casts, the noise, the readings four at a
+// time with AVX2 where the processor has it): held here to the beam-by-beam form it replaced,
+// bit for bit, over random poses in a carved maze, with and without noise, with a
+// resolution (the lane path) and without (the scalar path), ranges short enough that
+// min_range and max_range cut beams.
+TEST_CASE("fixed lidar: range_image gives the beam-by-beam readings bit for bit") {
+  const maze::Maze m = carved_maze();
   const maze::sim::WallGrid walls(m);
   maze::sim::LidarSpec spec = hambot_lidar();
   int compared = 0;
@@ -149,35 +193,46 @@ TEST_CASE("fixed lidar: range_image gives the beam-by-beam readings bit for bit"
       spec.min_range_m = max_range_m > 2.0 ? 0.05 : 0.4;
       spec.resolution_m = resolution_m;
       spec.horizontal_resolution = max_range_m > 2.0 ? 360 : 203;  // blocks of 64 and a remainder
-      const maze::sim::LidarModel model(spec);
       common::Rng where(11);
       for (int p = 0; p < 150; ++p) {
         const maze::sim::Pose pose{where.uniform(0.06, 8.94), where.uniform(0.06, 6.94), where.uniform(-kPi, kPi)};
         if (walls.inside_wall(pose.x_m, pose.y_m)) continue;
         const double noise = p % 3 == 0 ? 0.0 : spec.noise * (1 + p % 4);
-        std::vector<float> image(static_cast<std::size_t>(spec.horizontal_resolution));
-        common::Rng rng(static_cast<std::uint64_t>(p));
-        model.range_image(walls, noise, pose, rng, image);
-        // The beam-by-beam form: cast, draw, read, in index order.
-        common::Rng reference_rng(static_cast<std::uint64_t>(p));
-        const double sigma_m = noise * spec.max_range_m;
-        const double reach_m = spec.max_range_m + 6.0 * sigma_m + spec.resolution_m;
-        for (int i = 0; i < spec.horizontal_resolution; ++i) {
-          const double a = pose.yaw_rad;
-          const double dx = std::cos(a) * std::cos(maze::sim::beam_angle_rad(spec, i)) -
-                            std::sin(a) * std::sin(maze::sim::beam_angle_rad(spec, i));
-          const double dy = std::sin(a) * std::cos(maze::sim::beam_angle_rad(spec, i)) +
-                            std::cos(a) * std::sin(maze::sim::beam_angle_rad(spec, i));
-          const double range = walls.cast_direction(pose.x_m, pose.y_m, dx, dy, reach_m);
-          const double noise_m = sigma_m > 0.0 ? reference_rng.normal(0.0, sigma_m) : 0.0;
-          const float expected = maze::sim::fixed_lidar_reading(
-              spec, range, maze::sim::face_cos(maze::sim::beam_angle_rad(spec, i)), noise_m);
-          const float got = image[static_cast<std::size_t>(i)];
-          if (std::bit_cast<std::uint32_t>(got) != std::bit_cast<std::uint32_t>(expected)) {
-            FAIL_CHECK("pose " << p << " beam " << i << ": " << got << " != " << expected);
-          }
-          ++compared;
-        }
+        compared += compare_range_image(walls, spec, pose, noise, static_cast<std::uint64_t>(p));
+      }
+    }
+  }
+  CHECK(compared > 100000);
+}
+
+// The cell walk leaves out the boxes a ray passes by a clear margin and tests every box near
+// a corner: beams aimed at the boxes' corners (a grid vertex, or h from it either way on each
+// axis), exactly and turned off by 1e-15 to 1e-4 rad either side, so that they graze, touch or
+// pass each corner by less than, about and more than that margin.
+TEST_CASE("fixed lidar: range_image gives the beam-by-beam readings bit for bit on beams grazing corners") {
+  const maze::Maze m = carved_maze();
+  const maze::sim::WallGrid walls(m);
+  REQUIRE(walls.cell_size_m() == 1.0);
+  const double h = walls.wall_thickness_m() / 2.0;
+  const maze::sim::LidarSpec spec = hambot_lidar();
+  common::Rng where(23);
+  int compared = 0;
+  for (int p = 0; p < 400; ++p) {
+    const int cx = static_cast<int>(where.uniform(0.0, 9.0));
+    const int cy = static_cast<int>(where.uniform(0.0, 7.0));
+    const double x = cx + where.uniform(0.05, 0.95);
+    const double y = cy + where.uniform(0.05, 0.95);
+    if (walls.inside_wall(x, y)) continue;
+    // A vertex of the cell or one up to two cells on, and a box corner at or around it.
+    const double vx = cx + std::floor(where.uniform(-1.0, 3.0)) + h * std::floor(where.uniform(-1.0, 2.0));
+    const double vy = cy + std::floor(where.uniform(-1.0, 3.0)) + h * std::floor(where.uniform(-1.0, 2.0));
+    const int beam = static_cast<int>(where.uniform(0.0, spec.horizontal_resolution));
+    const double aim = std::atan2(vy - y, vx - x) - maze::sim::beam_angle_rad(spec, beam);
+    for (const double off : {0.0, 1e-15, 1e-12, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4}) {
+      for (const double side : {1.0, -1.0}) {
+        const maze::sim::Pose pose{x, y, aim + side * off};
+        const double noise = p % 4 == 0 ? spec.noise : 0.0;
+        compared += compare_range_image(walls, spec, pose, noise, static_cast<std::uint64_t>(p));
       }
     }
   }

@@ -293,8 +293,14 @@ double WallGrid::cast_quadrant(const CastOrigin &origin, double inv_dx, double i
   const double t_delta_y = s * std::abs(inv_dy);
   double t_max_x = ((cx + (kEastward ? 1 : 0)) * s - ox) * inv_dx;
   double t_max_y = ((cy + (kNorthward ? 1 : 0)) * s - oy) * inv_dy;
+  const double clear_x = half_thickness_m_ * std::abs(inv_dx) + kClearPass_cells * (t_delta_x + t_delta_y);
+  const double clear_y = half_thickness_m_ * std::abs(inv_dy) + kClearPass_cells * (t_delta_x + t_delta_y);
+  constexpr auto pass_y = static_cast<std::uint8_t>(~(kNorthward ? kNorth | kCornerNE | kCornerNW : kSouth | kCornerSW | kCornerSE));
+  constexpr auto pass_x = static_cast<std::uint8_t>(~(kEastward ? kEast | kCornerNE | kCornerSE : kWest | kCornerNW | kCornerSW));
   for (;;) {
-    const std::uint8_t f = flags(cx, cy) & mask;
+    std::uint8_t f = flags(cx, cy) & mask;
+    if (f != 0 && t_max_y - t_max_x > clear_y) f &= pass_y;  // leaving across the far x side
+    else if (f != 0 && t_max_x - t_max_y > clear_x) f &= pass_x;
     if (f != 0) {
       const double best = entry_in_cell<kEastward, kNorthward>(f, cx, cy, origin, inv_dx, inv_dy);
       if (best < kInfinity) return best <= max_range_m ? best : kInfinity;

@@ -113,12 +113,19 @@ class WallGrid {
     kNorth = 1, kEast = 2, kSouth = 4, kWest = 8,
     kCornerNE = 16, kCornerNW = 32, kCornerSW = 64, kCornerSE = 128,
   };
+  // cast_quadrant's clear margin, in cells of path along each axis: far above the rounding
+  // between the walk's summed crossing distances and the slab tests' own (some ulps of a
+  // coordinate, k^2 / 2 ulps of a cell after k cells: it holds to 10^5 cells).
+  static constexpr double kClearPass_cells = 1e-6;
   std::uint8_t flags(int cx, int cy) const {
     return flags_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) +
                   static_cast<std::size_t>(cx)];
   }
   // cast_from for a ray with dx, dy != 0 from inside the maze, the signs fixed at compile time.
-  // inv_dx, inv_dy: 1 / dx, 1 / dy.
+  // inv_dx, inv_dy: 1 / dx, 1 / dy. A ray leaving a cell across its far x side before it comes
+  // within h of its far y side, by a clear margin (kClearPass_cells), passes the far y side's
+  // strip and corners: their slab tests would find the entry in y after the exit in x. The walk
+  // leaves those boxes out (and the same with x and y swapped); near a far corner it tests all.
   template <bool kEastward, bool kNorthward>
   [[gnu::always_inline]] inline double cast_quadrant(const CastOrigin &origin, double inv_dx, double inv_dy,
                                                      double max_range_m) const;
