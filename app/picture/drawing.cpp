@@ -260,8 +260,9 @@ void Drawing::blocks(const ToneAt &tone_at, int columns, int rows, PointPx top_l
 
 void Drawing::write_blocks(const ToneAt &tone_at, int columns, int rows, int left_px, int top_px, int block_w_px,
                            int block_h_px) {
-  // The pixels Cairo's nearest-neighbour fill of the same blocks gives: block (i, j) covers
-  // [left + i w, left + (i + 1) w) x [top + j h, top + (j + 1) h), cut to the page.
+  // Block (i, j) covers exactly [left + i w, left + (i + 1) w) x [top + j h, top + (j + 1) h),
+  // cut to the page (Cairo's scaled nearest-neighbour fill, in 16.16 fixed point, can put a
+  // block's first column in the block before it at big scales).
   const long long right_px = left_px + static_cast<long long>(columns) * block_w_px;
   const int x0 = std::clamp(left_px, 0, width_);
   const int x1 = static_cast<int>(std::clamp<long long>(right_px, 0, width_));
