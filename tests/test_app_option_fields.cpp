@@ -19,6 +19,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/option_binding.hpp"
 #include "app/run/run.hpp"
+#include "common/error.hpp"
 #include "maze/world.hpp"
 #include "robot/controller_args.hpp"
 
@@ -72,6 +73,27 @@ void check_bound_fields_echo() {
         CHECK(echoed.at(item.key()) != item.value());
       } else {
         CHECK(echoed.at(item.key()) == item.value());
+      }
+    }
+  }
+}
+
+// Each field of Concern's table that parses its own text: words that are not what it reads,
+// given straight to the parse (no command line's check before it, as parse_run_options
+// once had), end in common::InputError naming the flag, never in another exception.
+template <typename Concern>
+void check_parses_refuse_wrong_words() {
+  for (const app::OptionField<Concern> &field : app::option_fields<Concern>()) {
+    if (field.parse == nullptr) continue;
+    CAPTURE(field.flag);
+    for (const std::string word : {"", "abc", "--snapshots", "1e999x", "\xeb"}) {
+      CAPTURE(word);
+      Concern concern{};
+      try {
+        field.parse(concern, word);
+        FAIL("read a word that is not its type");
+      } catch (const common::InputError &e) {
+        CHECK(e.diagnostic().find(field.flag) != std::string::npos);
       }
     }
   }
@@ -150,6 +172,25 @@ TEST_CASE("option fields: each bound field sets what the echo shows under its ke
   check_bound_fields_echo<maze::sim::SimulationOptions>();
   check_bound_fields_echo<app::PlanOptions>();
   check_bound_fields_echo<app::OutputOptions>();
+}
+
+TEST_CASE("option fields: a table's own parse refuses what it does not read, in an InputError") {
+  check_parses_refuse_wrong_words<app::RunOptions>();
+  check_parses_refuse_wrong_words<maze::WorldOverrides>();
+  check_parses_refuse_wrong_words<sensing::ModelOptions>();
+  check_parses_refuse_wrong_words<mapping::SensorModelOptions>();
+  check_parses_refuse_wrong_words<sensing::RangeModelOptions>();
+  check_parses_refuse_wrong_words<maze::sim::SimulationOptions>();
+  check_parses_refuse_wrong_words<app::PlanOptions>();
+  check_parses_refuse_wrong_words<app::OutputOptions>();
+}
+
+TEST_CASE("run's parse-only command line checks values as the program does") {
+  // The fuzz target's crash (fuzz_run_cli): `run WORLD --snapshots --snapshots` reached the
+  // field's parse unchecked and escaped as std::bad_optional_access.
+  const std::vector<const char *> argv{"maze_mapper", "run", "worln-ubc", "--snapshots", "--snapshots"};
+  CHECK_THROWS_WITH_AS(app::parse_run_options(static_cast<int>(argv.size()), argv.data()),
+                       "--snapshots needs a whole number (got '--snapshots')", common::InputError);
 }
 
 TEST_CASE("option fields: every option of run and plan is echoed, every field's option exists") {

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "app/report/files_recorder.hpp"
+#include "app/cli/cli_errors.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/option_binding.hpp"
 #include "app/run/run.hpp"
@@ -147,6 +148,7 @@ RunOptions parse_run_options(int argc, const char *const *argv) {
   CommandContext context;
   context.run_parse_only = &options;
   add_run_command(cli, context);
+  check_values_ourselves(cli);  // as add_commands() does for the program
   cli.parse(argc, argv);
   return options;
 }

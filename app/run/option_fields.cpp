@@ -66,13 +66,29 @@ Json cell_or_null(const std::optional<Cell> &c) {
   return c ? cell_json(*c) : Json(nullptr);
 }
 
+// The value of `flag` as the type its help names. The command line checks values first
+// (check_values_ourselves, in the same words); a table's parse is also reached without that
+// check (parse_run_options, a fuzz target), so it refuses a wrong value itself rather than
+// trusting it.
+long long whole_number_of(std::string_view flag, const std::string &text) {
+  const std::optional<long long> n = common::parse_number<long long>(text);
+  if (!n) throw common::InputError(fmt::format("{} needs a whole number (got '{}')", flag, text));
+  return *n;
+}
+
+double real_number_of(std::string_view flag, const std::string &text) {
+  const std::optional<double> x = common::parse_real(text);
+  if (!x) throw common::InputError(fmt::format("{} needs a number (got '{}')", flag, text));
+  return *x;
+}
+
 void set_unknown(OutputOptions &o, const std::string &text) {
   validate_unknown(text);
   o.unknown = text[0];
 }
 
 void set_snapshots(OutputOptions &o, const std::string &text) {
-  const long long n = common::parse_number<long long>(text).value();  // checked as an INT
+  const long long n = whole_number_of("--snapshots", text);
   validate_snapshots(n);
   o.snapshots = static_cast<int>(n);
 }
@@ -139,7 +155,7 @@ std::span<const OptionField<maze::WorldOverrides>> option_fields() {
        },
        nullptr,
        [](W &w, const std::string &text) {
-         const double m = common::parse_real(text).value();  // checked as a FLOAT (nan and inf read)
+         const double m = real_number_of("--cell-size", text);  // nan and inf read: refused below
          if (!(m > maze::kMinCellSize_m && m <= maze::kMaxCellSize_m)) {
            throw common::InputError(
                fmt::format("--cell-size must be more than {} m (four walls of {} m) and at most {} m (got {})",
@@ -248,8 +264,7 @@ std::span<const OptionField<sensing::RangeModelOptions>> option_fields() {
        },
        nullptr,
        [](R &r, const std::string &text) {
-         // The command line has checked the value reads as a FLOAT.
-         r.pie_half_angle_rad = common::parse_real(text).value() * std::numbers::pi / 180.0;
+         r.pie_half_angle_rad = real_number_of("--pie-beta", text) * std::numbers::pi / 180.0;
        },
        "FLOAT", [](const R &r) { return Json(r.pie_half_angle_rad); }},
       plain<R, &R::pie_contact_m>(
