@@ -2,7 +2,6 @@
 // The tests' readers of the pictures and files run --out writes: libpng's own decoder, not
 // the program's encoder, reads a PNG back into RGB pixels.
 #include <doctest/doctest.h>
-
 #include <png.h>
 
 #include <cstdio>
@@ -11,7 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "app/picture/drawing.hpp"
+
 namespace test_png {
+
+// A colour as the pixels Png::at() returns.
+inline std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
 
 inline std::string read_all(const std::filesystem::path &path) {
   std::string bytes(static_cast<std::size_t>(std::filesystem::file_size(path)), '\0');

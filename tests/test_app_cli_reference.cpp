@@ -15,10 +15,10 @@
 
 namespace {
 
-struct Program {
+struct ReferenceProgram {
   CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot", "maze_mapper"};
   app::CommandContext context;
-  Program() { app::add_commands(cli, context); }
+  ReferenceProgram() { app::add_commands(cli, context); }
 };
 
 std::string roff_name(std::string name) {
@@ -50,7 +50,7 @@ std::string case_line(const std::string &script, const std::string &path) {
 }  // namespace
 
 TEST_CASE("the man page has a section for every command, with every option of each") {
-  const Program program;
+  const ReferenceProgram program;
   const std::string page = app::man_page(program.cli, "0.0.0");
   const std::vector<app::CommandNode> nodes = app::visible_commands(program.cli);
   CHECK(nodes.size() > 10);
@@ -76,7 +76,7 @@ TEST_CASE("the man page has a section for every command, with every option of ea
 }
 
 TEST_CASE("the bash and zsh completions offer every command and option, and say which take a value") {
-  const Program program;
+  const ReferenceProgram program;
   const std::string bash = app::bash_completion(program.cli);
   const std::string zsh = app::zsh_completion(program.cli);
   for (const app::CommandNode &node : app::visible_commands(program.cli)) {
@@ -109,7 +109,7 @@ TEST_CASE("the bash and zsh completions offer every command and option, and say 
 }
 
 TEST_CASE("the fish completion has a line for every option of every command") {
-  const Program program;
+  const ReferenceProgram program;
   const std::string fish = app::fish_completion(program.cli);
   for (const app::CommandNode &node : app::visible_commands(program.cli)) {
     INFO("command: ", node.path);

@@ -19,11 +19,11 @@
 
 namespace {
 
-struct Program {
+struct HelpProgram {
   CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot and map it into a 4D log-odds occupancy grid",
                "maze_mapper"};
   app::CommandContext context;
-  Program() { app::add_commands(cli, context); }
+  HelpProgram() { app::add_commands(cli, context); }
 };
 
 std::size_t code_points(const std::string &line) {
@@ -74,7 +74,7 @@ struct Columns {
 
 TEST_CASE("every command's help fits 80 columns, breaks no word and keeps no library leftovers") {
   const Columns columns("80");
-  const Program program;
+  const HelpProgram program;
   for (const app::CommandNode &node : app::visible_commands(program.cli)) {
     const std::string help = help_of(node);
     INFO("maze_mapper ", node.path, " --help:\n", help);
@@ -103,7 +103,7 @@ TEST_CASE("every command's help fits 80 columns, breaks no word and keeps no lib
 
 TEST_CASE("at 60 columns too (but the examples), and the usage line shows what is required") {
   const Columns columns("60");
-  const Program program;
+  const HelpProgram program;
   for (const app::CommandNode &node : app::visible_commands(program.cli)) {
     // The examples are command lines, kept whole (they fit 80 columns, checked above).
     const std::string help = help_of(node);
@@ -131,7 +131,7 @@ TEST_CASE("at 60 columns too (but the examples), and the usage line shows what i
 
 TEST_CASE("run's options are grouped: world, robot and model, exploration, faults, output") {
   const Columns columns("80");
-  const Program program;
+  const HelpProgram program;
   const std::string help = program.cli.get_subcommand("run")->help("maze_mapper");
   std::size_t at = 0;
   for (const char *heading : {"\nWorld:\n", "\nRobot and model:\n", "\nExploration:\n", "\nFaults:\n", "\nOutput:\n",
@@ -147,7 +147,7 @@ TEST_CASE("run's options are grouped: world, robot and model, exploration, fault
 
 TEST_CASE("the examples are commands of the program with options their command has") {
   const Columns columns("80");
-  const Program program;
+  const HelpProgram program;
   std::size_t commands_with_examples = 0;
   for (const app::CommandNode &node : app::visible_commands(program.cli)) {
     const std::string footer = node.app->get_footer();

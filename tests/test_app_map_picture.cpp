@@ -30,7 +30,7 @@ struct OutDir {
   ~OutDir() { fs::remove_all(path); }
 };
 
-std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
+using test_png::rgb;
 
 // Whether two colours are within `tolerance` in every channel (anti-aliased edges, blocks).
 bool near(const std::vector<int> &a, app::Rgb b, int tolerance = 8) {

@@ -18,7 +18,7 @@
 
 namespace {
 
-std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
+using test_png::rgb;
 
 // Whether any pixel of the picture is in colour c.
 bool has_colour(const test_png::Png &png, app::Rgb c) {

@@ -26,7 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 using test_png::Png;
 
-std::vector<int> rgb(app::Rgb c) { return {c.r, c.g, c.b}; }
+using test_png::rgb;
 
 struct Tally {
   int right = 0;

@@ -1,4 +1,5 @@
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstdint>
@@ -7,12 +8,11 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "common/csv.hpp"
 #include "common/fixed_decimal.hpp"
-#include "common/random.hpp"
 #include "common/parse_number.hpp"
+#include "common/random.hpp"
+#include "test_values.hpp"
 
 namespace {
 
@@ -83,7 +83,6 @@ TEST_CASE("append_fixed and append_int write what fmt writes, byte for byte") {
     common::append_fixed(text, v, decimals);
     return text;
   };
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   // Ties in binary (x.5 at the last decimal), signs, zeros, carries, the fallbacks.
   for (const double v : {0.0, -0.0, 0.5, 1.5708, -1.5708, 0.03125, -0.03125, 0.00005, -0.00004, 9.99995, 0.99999,
                          123456.78915, 2.5e-5, 1e12, -3e9, std::nan(""), kInf, -kInf, 0.0625, 1.0 / 3.0}) {

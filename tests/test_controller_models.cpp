@@ -6,15 +6,16 @@
 #include <string>
 #include <vector>
 
-#include "sensing/cell_model.hpp"
-#include "mapping/traversal.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
+#include "mapping/traversal.hpp"
 #include "render/ascii_map.hpp"
+#include "sensing/cell_model.hpp"
+#include "sensing/setups.hpp"
 #include "synthetic_world.hpp"
+#include "test_values.hpp"
 
 using mapping::Cell;
 using mapping::GridGeometry;
@@ -24,8 +25,6 @@ using mapping::OccupancyGrid;
 using mapping::SubCell;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // 3 x 3 cells of 1 m; only the centre cell's north and west sides are walls.
 const char *const kNorthWest =

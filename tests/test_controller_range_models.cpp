@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "sensing/setups.hpp"
-#include "sensing/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "render/ascii_map.hpp"
+#include "sensing/range_models.hpp"
+#include "sensing/setups.hpp"
+#include "test_values.hpp"
 
 using sensing::BumpReading;
 using mapping::Cell;
@@ -21,7 +22,6 @@ using sensing::RangeReading;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kNorth = kPi / 2.0;
 
 mapping::GridGeometry geometry(int k) {

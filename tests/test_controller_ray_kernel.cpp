@@ -14,14 +14,15 @@
 #include <utility>
 #include <vector>
 
-#include "mapping/traversal.hpp"
 #include "common/random.hpp"
 #include "mapping/log_odds.hpp"
-#include "sensing/ray_model.hpp"
-#include "sensing/setups.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "sensing/scan.hpp"
 #include "mapping/sensor_model.hpp"
+#include "mapping/traversal.hpp"
+#include "sensing/ray_model.hpp"
+#include "sensing/scan.hpp"
+#include "sensing/setups.hpp"
+#include "test_values.hpp"
 
 namespace {
 
@@ -29,8 +30,6 @@ using mapping::GridGeometry;
 using sensing::ModelOptions;
 using mapping::OccupancyGrid;
 using mapping::SubCell;
-
-constexpr double kPi = std::numbers::pi;
 
 bool interior(SubCell s, int k) {
   const mapping::LocalSubCell l = mapping::local_of(s, k);

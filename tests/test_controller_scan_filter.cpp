@@ -17,15 +17,15 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "sensing/setups.hpp"
-#include "mapping/occupancy_grid.hpp"
-#include "sensing/scan_filter.hpp"
-#include "mapping/sensor_model.hpp"
 #include "full_circle_scan.hpp"
+#include "mapping/occupancy_grid.hpp"
+#include "mapping/sensor_model.hpp"
+#include "sensing/scan_filter.hpp"
+#include "sensing/setups.hpp"
+#include "test_values.hpp"
 
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -306,7 +306,7 @@ std::vector<float> random_scan(common::Rng &rng, int n, const sensing::LidarScan
     const bool open = rng.uniform01() < 0.1;  // a view past max range
     for (int k = 0; k < length && i < n; ++k, ++i) {
       const double range = d / std::cos(std::clamp(angle, -1.5, 1.5));
-      r[static_cast<std::size_t>(i)] = open || range > limits.max_range_m ? kInf : static_cast<float>(range);
+      r[static_cast<std::size_t>(i)] = open || range > limits.max_range_m ? kFloatInf : static_cast<float>(range);
       angle += step;
     }
   }
@@ -325,18 +325,22 @@ std::vector<float> random_scan(common::Rng &rng, int n, const sensing::LidarScan
       }
       case 2: {  // a dropped run
         const int size = 1 + pick(9);
-        for (int k = 0; k < size && j + k < n; ++k) r[static_cast<std::size_t>(j + k)] = kInf;
+        for (int k = 0; k < size && j + k < n; ++k) r[static_cast<std::size_t>(j + k)] = kFloatInf;
         break;
       }
       case 3: v = kNaN; break;
       case 4: v = -static_cast<float>(rng.uniform(0.0, 2.0)); break;
-      case 5: v = -kInf; break;
+      case 5:
+        v = -kFloatInf;
+        break;
       case 6: v = -0.0f; break;
       case 7: v = 0.0f; break;
       case 8: v = static_cast<float>(limits.min_range_m * rng.uniform01()); break;
       case 9: v = static_cast<float>(limits.min_range_m); break;
       case 10: v = static_cast<float>(limits.max_range_m); break;
-      case 11: v = std::nextafter(static_cast<float>(limits.max_range_m), kInf); break;
+      case 11:
+        v = std::nextafter(static_cast<float>(limits.max_range_m), kFloatInf);
+        break;
       case 12: v = static_cast<float>(rng.uniform(limits.max_range_m - 1.0, limits.max_range_m + 1.0)); break;
       default: v = v * static_cast<float>(rng.uniform(0.97, 1.03)); break;  // noise
     }
@@ -366,7 +370,7 @@ std::vector<float> corridor_end_view() {
     r[static_cast<std::size_t>(170 + i)] = static_cast<float>(0.494 / std::sin((10 - i) * kDeg));
     r[static_cast<std::size_t>(190 - i)] = r[static_cast<std::size_t>(170 + i)];
   }
-  for (int i = 178; i <= 182; ++i) r[static_cast<std::size_t>(i)] = kInf;
+  for (int i = 178; i <= 182; ++i) r[static_cast<std::size_t>(i)] = kFloatInf;
   return r;
 }
 
@@ -383,7 +387,7 @@ TEST_CASE("scan filter: what a fault-free lidar sees passes unchanged") {
   CHECK(text(filtered(corridor), 95, 185) == text(corridor, 95, 185));
   // A real view past max range, wider than a few beams, stays a no return.
   std::vector<float> open(360, 1.5f);
-  for (int i = 170; i < 190; ++i) open[static_cast<std::size_t>(i)] = kInf;
+  for (int i = 170; i < 190; ++i) open[static_cast<std::size_t>(i)] = kFloatInf;
   CHECK(text(filtered(open), 165, 195) == text(open, 165, 195));
   // Down a corridor longer than max range: its walls, seen at a grazing angle, return up to
   // near 12 m on both sides of a few no returns. One scan cannot tell them from dropped
@@ -393,7 +397,7 @@ TEST_CASE("scan filter: what a fault-free lidar sees passes unchanged") {
   sensing::ScanFilter again;
   CHECK(text(values(again.apply(full_circle(corridor_end), full_circle(corridor_end))), 165, 195) == text(corridor_end, 165, 195));
   // Nothing returns at all (an empty hall): every no return stands.
-  const std::vector<float> nothing(360, kInf);
+  const std::vector<float> nothing(360, kFloatInf);
   CHECK(text(filtered(nothing), 0, 359) == text(nothing, 0, 359));
 }
 
@@ -428,8 +432,8 @@ TEST_CASE("scan filter: a short view past max range seen twice from the same pos
   CHECK(text(values(filter.apply(scan, full_circle(other))), 165, 195) == dropped);
   // Two beams repeating is too likely for dropouts (5 %^4 a pair at a 5 % rate): at least three.
   std::vector<float> pair = closed_cell();
-  pair[100] = kInf;
-  pair[101] = kInf;
+  pair[100] = kFloatInf;
+  pair[101] = kFloatInf;
   CHECK(text(values(filter.apply(full_circle(pair), full_circle(pair))), 99, 102) == text(pair, 99, 99) + " - - " + text(pair, 102, 102));
 }
 
@@ -438,7 +442,7 @@ TEST_CASE("scan filter: a spike that agrees with neither neighbour is no informa
   r[180] = 7.3f;   // through the wall ahead
   r[90] = 0.2f;    // a phantom obstacle
   r[0] = 3.0f;     // beside a no return, across the wrap
-  r[1] = kInf;
+  r[1] = kFloatInf;
   const std::vector<float> expected = without(r, {180, 90, 0, 1});  // beam 1: a dropped beam
   const std::vector<float> f = filtered(r);
   CHECK(text(f, 0, 359) == text(expected, 0, 359));
@@ -463,9 +467,9 @@ TEST_CASE("scan filter: two spikes side by side cannot vouch for each other") {
 
 TEST_CASE("scan filter: a short run of no returns between returns is dropped beams") {
   std::vector<float> r = closed_cell();
-  for (int i = 10; i < 16; ++i) r[static_cast<std::size_t>(i)] = kInf;   // 6 beams: dropped
-  for (int i = 100; i < 107; ++i) r[static_cast<std::size_t>(i)] = kInf;  // 7 beams: a view
-  r[359] = kInf;  // wraps around beam 0
+  for (int i = 10; i < 16; ++i) r[static_cast<std::size_t>(i)] = kFloatInf;    // 6 beams: dropped
+  for (int i = 100; i < 107; ++i) r[static_cast<std::size_t>(i)] = kFloatInf;  // 7 beams: a view
+  r[359] = kFloatInf;                                                          // wraps around beam 0
   sensing::ScanFilter filter;
   const sensing::LidarScan out = filter.apply(full_circle(r));
   const std::vector<float> f(out.ranges.begin(), out.ranges.end());
@@ -481,7 +485,7 @@ TEST_CASE("scan filter: a short run of no returns between returns is dropped bea
 }
 
 TEST_CASE("scan filter: a partial field of view keeps no returns at its ends") {
-  std::vector<float> r{kInf, kInf, 1.0f, 1.0f, kInf, 1.0f, 1.0f, kInf};
+  std::vector<float> r{kFloatInf, kFloatInf, 1.0f, 1.0f, kFloatInf, 1.0f, 1.0f, kFloatInf};
   sensing::LidarScan s = full_circle(r);
   s.fov_rad = 8 * kDeg;
   sensing::ScanFilter filter;
@@ -494,7 +498,7 @@ TEST_CASE("scan filter: NaN, negative and below-minimum readings are no informat
   r[45] = kNaN;
   r[46] = -0.5f;
   r[47] = 0.01f;
-  r[48] = -kInf;
+  r[48] = -kFloatInf;
   sensing::ScanFilter filter;
   const sensing::LidarScan out = filter.apply(full_circle(r));
   CHECK(text({out.ranges.begin(), out.ranges.end()}, 0, 359) == text(without(r, {45, 46, 47, 48}), 0, 359));
@@ -521,7 +525,7 @@ TEST_CASE("scan filter: NaN and negative readings are never stored in the grid")
     // Nothing valid at all: nothing is updated but the centre the robot stands on (the cell
     // model frees it whatever the lidar says).
     std::vector<float> bad(360);
-    for (std::size_t i = 0; i < bad.size(); ++i) bad[i] = i % 3 == 0 ? kNaN : (i % 3 == 1 ? -1.0f : -kInf);
+    for (std::size_t i = 0; i < bad.size(); ++i) bad[i] = i % 3 == 0 ? kNaN : (i % 3 == 1 ? -1.0f : -kFloatInf);
     mapping::OccupancyGrid grid(g, 0.0f);
     sensing::LidarScan scan = full_circle(bad);
     scan.origin = {1.5, 1.5};
@@ -556,7 +560,7 @@ TEST_CASE("scan filter: any scan comes out the same size, each reading kept or n
     std::vector<float> r(static_cast<std::size_t>(n));
     for (float &v : r) {
       const double u = rng.uniform01();
-      v = u < 0.2 ? kInf : (u < 0.25 ? kNaN : (u < 0.3 ? -1.0f : static_cast<float>(rng.uniform(0.0, 13.0))));
+      v = u < 0.2 ? kFloatInf : (u < 0.25 ? kNaN : (u < 0.3 ? -1.0f : static_cast<float>(rng.uniform(0.0, 13.0))));
     }
     sensing::LidarScan s = full_circle(r);
     if (trial % 2 == 1) s.fov_rad = n * kDeg;  // a partial field of view
@@ -644,7 +648,7 @@ TEST_CASE("scan filter: the same readings and counts, bit for bit, as the refere
       // no return becomes a return and back), so that repeated and new runs both occur.
       std::vector<float> earlier = r;
       for (float &v : earlier) {
-        if (rng.uniform01() < 0.15) v = rng.uniform01() < 0.5 ? kInf : static_cast<float>(limits.max_range_m / 2);
+        if (rng.uniform01() < 0.15) v = rng.uniform01() < 0.5 ? kFloatInf : static_cast<float>(limits.max_range_m / 2);
       }
       sensing::LidarScan before = limits;
       before.ranges = earlier;
@@ -676,8 +680,8 @@ TEST_CASE("scan filter: a fault-free closed cell with spikes matches the referen
     std::vector<float> r = closed_cell();
     std::rotate(r.begin(), r.begin() + shift, r.end());
     for (int k = 0; k < 6; ++k) r[static_cast<std::size_t>(rng.below(360))] = static_cast<float>(rng.uniform(0.0, 12.0));
-    r[static_cast<std::size_t>(shift)] = kInf;
-    r[static_cast<std::size_t>((shift + 359) % 360)] = kInf;
+    r[static_cast<std::size_t>(shift)] = kFloatInf;
+    r[static_cast<std::size_t>((shift + 359) % 360)] = kFloatInf;
     r[static_cast<std::size_t>((shift + 180) % 360)] = 5.0f;
     r[static_cast<std::size_t>((shift + 181) % 360)] = 5.02f;
     const sensing::LidarScan scan = full_circle(r);
@@ -699,7 +703,7 @@ TEST_CASE("scan filter: a lone return in a view past max range is a spike, even 
   // three beams apart (0.61 and 0.68 m) agree with each other; the cell model read the pair
   // as a wall and sealed half a 128 x 128 maze.
   std::vector<float> r = closed_cell();
-  for (int i = 160; i <= 200; ++i) r[static_cast<std::size_t>(i)] = kInf;
+  for (int i = 160; i <= 200; ++i) r[static_cast<std::size_t>(i)] = kFloatInf;
   r[179] = 0.607f;
   r[182] = 0.679f;
   // Both go; the two no returns between them, now bounded by rejected beams, are a short
@@ -707,15 +711,15 @@ TEST_CASE("scan filter: a lone return in a view past max range is a spike, even 
   CHECK(text(filtered(r), 177, 184) == "inf inf - - - - inf inf");
   // A real return whose neighbours were both dropped has the wall beyond them: it stays.
   std::vector<float> wall = closed_cell();
-  wall[179] = kInf;
-  wall[181] = kInf;
+  wall[179] = kFloatInf;
+  wall[181] = kFloatInf;
   wall[177] = 2.2f;  // and a spike pair that it alone tells from the wall
   wall[178] = 2.0f;
   CHECK(text(filtered(wall), 180, 180) == text(wall, 180, 180));
   // A return beside an invalid reading (below min range) is not lone: that is no view.
   r[178] = 0.01f;
   r[180] = 0.62f;
-  r[182] = kInf;
+  r[182] = kFloatInf;
   CHECK(text(filtered(r), 178, 180) == "- 61 62");
 }
 

@@ -7,18 +7,18 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "common/random.hpp"
-#include "sensing/scan.hpp"
 #include "full_circle_scan.hpp"
+#include "sensing/scan.hpp"
+#include "test_values.hpp"
 
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -37,7 +37,7 @@ std::optional<float> reference_median(const sensing::LidarScan &s, int centre, d
     const float r = s.ranges[static_cast<std::size_t>(i)];
     const sensing::ReadingKind k = s.kind_of(r);
     if (k == sensing::ReadingKind::invalid) continue;
-    valid.push_back(k == sensing::ReadingKind::no_return ? kInf : r);
+    valid.push_back(k == sensing::ReadingKind::no_return ? kFloatInf : r);
   }
   if (valid.empty()) return std::nullopt;
   const auto returns = std::count_if(valid.begin(), valid.end(), [](float v) { return std::isfinite(v); });
@@ -51,12 +51,12 @@ std::optional<float> reference_median(const sensing::LidarScan &s, int centre, d
 
 TEST_CASE("median_range: a lone dropout or spike among five 1-degree beams is outvoted") {
   std::vector<float> r(360, 0.5f);
-  r[180] = kInf;
+  r[180] = kFloatInf;
   CHECK(*full_circle(r).median_range(180, 2.5 * kDeg) == 0.5f);
   r[180] = 0.5f;
   r[90] = 7.0f;                       // a spike beside a wall
   CHECK(*full_circle(r).median_range(90, 2.5 * kDeg) == 0.5f);
-  std::vector<float> open(360, kInf);
+  std::vector<float> open(360, kFloatInf);
   open[270] = 0.2f;                   // a spike into an opening
   CHECK(std::isinf(*full_circle(open).median_range(270, 2.5 * kDeg)));
 }
@@ -70,14 +70,14 @@ TEST_CASE("median_range: invalid readings are left out; none valid gives nothing
 }
 
 TEST_CASE("median_range: beams further apart than the window read one beam, as before") {
-  const std::vector<float> r{1.0f, kInf, 2.0f, 3.0f};
+  const std::vector<float> r{1.0f, kFloatInf, 2.0f, 3.0f};
   CHECK(*full_circle(r).median_range(2, 2.5 * kDeg) == 2.0f);
   CHECK(std::isinf(*full_circle(r).median_range(1, 2.5 * kDeg)));
 }
 
 TEST_CASE("median_range: the same reading, bit for bit, as the reference, on any window") {
   common::Rng rng(77);
-  const float pool[] = {0.5f, 0.5f, 0.51f, 0.0f, -0.0f, kInf, -kInf, kNaN, -1.0f, 0.01f, 12.0f, 12.5f, 3.0f};
+  const float pool[] = {0.5f, 0.5f, 0.51f, 0.0f, -0.0f, kFloatInf, -kFloatInf, kNaN, -1.0f, 0.01f, 12.0f, 12.5f, 3.0f};
   int compared = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     CAPTURE(trial);

@@ -7,8 +7,9 @@
 
 #include "common/angles.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "sensing/scan.hpp"
 #include "mapping/walls.hpp"
+#include "sensing/scan.hpp"
+#include "test_values.hpp"
 
 using mapping::Cell;
 using mapping::Heading;
@@ -16,8 +17,6 @@ using mapping::LocalSubCell;
 using mapping::SideState;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 sensing::LidarScan scan_of(const std::vector<float> &ranges, double yaw, double fov) {
   sensing::LidarScan s;

@@ -17,12 +17,9 @@
 #include "maze/room_format.hpp"
 #include "maze/world.hpp"
 #include "maze/xml_arena.hpp"
+#include "test_values.hpp"
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-std::string fixture(const std::string &name) { return std::string(TEST_DATA_DIR) + "/worlds/" + name; }
 
 // The room of the format's drawing: 5 x 3 m, a 1 m box, a 0.1 m wall, start and goal.
 constexpr const char *kRoom =
@@ -202,7 +199,7 @@ TEST_CASE("course XML: thick walls, diagonal walls and no walls are arenas; a ma
   CHECK(!maze::xml_world_is_arena(R"(<world cellSize="1"><wall x1="0" y1="0" x2="1" y2="1"/></world>)", "f.xml", {}));
   CHECK(!maze::xml_world_is_arena("<world/>", "f.xml", maze::XmlReadOptions{1.0}));
 
-  const maze::AnyWorld thick = maze::load_any_world(fixture("thick_obstacles.xml"), {}, {});
+  const maze::AnyWorld thick = maze::load_any_world(world_fixture("thick_obstacles.xml"), {}, {});
   REQUIRE(maze::is_arena(thick));
   const maze::Arena &a = std::get<maze::ArenaWorld>(thick).arena;
   REQUIRE(a.obstacles.size() == 5);
@@ -221,7 +218,7 @@ TEST_CASE("course XML: thick walls, diagonal walls and no walls are arenas; a ma
   REQUIRE(!maze::is_arena(lab));
   CHECK(std::get<maze::World>(lab).maze == maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.xml").maze);
   // The maze loader still refuses an arena, in its own words.
-  CHECK_THROWS_WITH_AS(maze::load_world(fixture("thick_obstacles.xml")),
+  CHECK_THROWS_WITH_AS(maze::load_world(world_fixture("thick_obstacles.xml")),
                        doctest::Contains("are obstacles in an arena, not a grid maze"), common::InputError);
 }
 
@@ -254,11 +251,11 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
   maze::WorldOverrides cells;
   cells.cell_size_m = 1.0;
   // --cell-size asks for a maze: the XML is read as one (and fails as one).
-  CHECK_THROWS_WITH_AS(maze::load_any_world(fixture("thick_obstacles.xml"), cells, {}),
+  CHECK_THROWS_WITH_AS(maze::load_any_world(world_fixture("thick_obstacles.xml"), cells, {}),
                        doctest::Contains("are obstacles in an arena, not a grid maze"), common::InputError);
   maze::WorldOverrides start;
   start.start = maze::Cell{1, 1};
-  CHECK_THROWS_WITH_AS(maze::load_any_world(fixture("thick_obstacles.xml"), start, {}),
+  CHECK_THROWS_WITH_AS(maze::load_any_world(world_fixture("thick_obstacles.xml"), start, {}),
                        doctest::Contains("--start names cells of a grid maze"), common::InputError);
   maze::ArenaOverrides boundary;
   boundary.boundary_m = std::array<double, 4>{0, 1, 0, 1};

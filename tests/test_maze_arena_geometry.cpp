@@ -7,7 +7,6 @@
 #include <limits>
 #include <numbers>
 #include <vector>
-
 #include <webots/DistanceSensor.hpp>
 #include <webots/GPS.hpp>
 #include <webots/InertialUnit.hpp>
@@ -26,11 +25,10 @@
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
+#include "test_values.hpp"
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 const double kRoot2 = std::sqrt(2.0);
 
 // 10 x 10 m, a 2 m box at (4..6, 4..6) and a 2 m square turned 45 degrees about (5, 8.5)...

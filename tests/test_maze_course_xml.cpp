@@ -12,10 +12,9 @@
 #include "maze/text_map.hpp"
 #include "maze/world.hpp"
 #include "maze/xml_format.hpp"
+#include "test_values.hpp"
 
 namespace {
-
-std::string fixture(const std::string &name) { return std::string(TEST_DATA_DIR) + "/worlds/" + name; }
 
 std::string diagnostic_of(const std::string &xml) {
   try {
@@ -39,13 +38,14 @@ maze::Maze with_start(const char *x, const char *y, const char *theta) {
 }  // namespace
 
 TEST_CASE("course XML: a 5 x 5 m frame with inner walls on 0.5 m reads as 10 x 10 cells of 0.5 m") {
-  const maze::World world = maze::load_world(fixture("course_lattice.xml"));
+  const maze::World world = maze::load_world(world_fixture("course_lattice.xml"));
   // Its starts sit on 1 m centres, which most inner walls are off: the walls' lattice, said.
   REQUIRE(world.warnings.size() == 1);
-  CHECK(world.warnings[0].starts_with(fixture("course_lattice.xml") +
-                                      ": warning: the start positions sit on the centres of 1 m cells, but the walls "
-                                      "(-1.5, -1)-(2.5, -1) at line 14, (-2.5, 0.5)-(0, 0.5) at line 15, (0.5, -1)-(0.5, "
-                                      "1.5) at line 16 and 2 more are off that lattice: read as 10x10 cells of 0.5 m"));
+  CHECK(
+      world.warnings[0].starts_with(world_fixture("course_lattice.xml") +
+                                    ": warning: the start positions sit on the centres of 1 m cells, but the walls "
+                                    "(-1.5, -1)-(2.5, -1) at line 14, (-2.5, 0.5)-(0, 0.5) at line 15, (0.5, -1)-(0.5, "
+                                    "1.5) at line 16 and 2 more are off that lattice: read as 10x10 cells of 0.5 m"));
   const maze::Maze &m = world.maze;
   CHECK(m.cell_size_m() == 0.5);
   CHECK(m.origin_x_m() == -2.5);
@@ -80,7 +80,7 @@ TEST_CASE("course XML: a 5 x 5 m frame with inner walls on 0.5 m reads as 10 x 1
 }
 
 TEST_CASE("course XML: a frame in 1 m pieces with 0.5 m inner walls, the start on a node facing west") {
-  const maze::Maze m = maze::load_world(fixture("course_frame_1m.xml")).maze;
+  const maze::Maze m = maze::load_world(world_fixture("course_frame_1m.xml")).maze;
   CHECK(m.cell_size_m() == 0.5);
   CHECK(m.start() == maze::Cell{5, 3});
   CHECK(m.start_heading() == maze::Side::west);
@@ -105,7 +105,7 @@ TEST_CASE("course XML: a frame in 1 m pieces with 0.5 m inner walls, the start o
 }
 
 TEST_CASE("course XML: written and read back, the 0.5 m maze is the same") {
-  const maze::Maze m = maze::load_world(fixture("course_lattice.xml")).maze;
+  const maze::Maze m = maze::load_world(world_fixture("course_lattice.xml")).maze;
   CHECK(maze::read_xml(maze::write_xml_keeping_origin(m), "again.xml") == m);
   // Centred (the default), the same maze with its centre on (0, 0): already so.
   CHECK(maze::read_xml(maze::write_xml(m), "again.xml") == m);
@@ -141,7 +141,7 @@ TEST_CASE("course XML: the lattice tolerates decimal rounding, and the stated ce
 }
 
 TEST_CASE("course XML: arenas are not grid mazes, and a wall end off every lattice says where") {
-  CHECK(diagnostic_of(maze::read_file(fixture("thick_obstacles.xml"))) ==
+  CHECK(diagnostic_of(maze::read_file(world_fixture("thick_obstacles.xml"))) ==
         "f.xml:8:40: error: walls 1 m thick, the shortest 2 m long, are obstacles in an arena, not a grid maze "
         "(its walls are thinner than a quarter of a cell)");
   CHECK(diagnostic_of("<world>\n  <startPositions><pos x='0' y='0'/></startPositions>\n</world>") ==
@@ -158,7 +158,7 @@ TEST_CASE("course XML: arenas are not grid mazes, and a wall end off every latti
 }
 
 TEST_CASE("course XML: a walled open arena reads on the lattice of its start positions") {
-  const maze::World arena = maze::load_world(fixture("course_arena11.xml"));
+  const maze::World arena = maze::load_world(world_fixture("course_arena11.xml"));
   CHECK(arena.warnings.empty());
   const maze::Maze &m = arena.maze;
   CHECK(m.width() == 11);
@@ -171,7 +171,7 @@ TEST_CASE("course XML: a walled open arena reads on the lattice of its start pos
   REQUIRE(m.landmarks().size() == 1);
   CHECK(m.landmarks()[0] == maze::Landmark{-2.0, 3.0, 2.0, 0.0, 0.0, 1.0});
 
-  const maze::Maze five = maze::load_world(fixture("course_arena5_starts.xml")).maze;
+  const maze::Maze five = maze::load_world(world_fixture("course_arena5_starts.xml")).maze;
   CHECK(five.width() == 5);
   CHECK(five.height() == 5);
   CHECK(five.cell_size_m() == 1.0);
@@ -185,7 +185,7 @@ TEST_CASE("course XML: a walled open arena reads on the lattice of its start pos
 }
 
 TEST_CASE("course XML: a half wall keeps the walls' finer lattice, with one warning that says how to choose") {
-  const std::string file = fixture("course_half_wall.xml");
+  const std::string file = world_fixture("course_half_wall.xml");
   const maze::World world = maze::load_world(file);
   CHECK(world.maze.width() == 10);
   CHECK(world.maze.cell_size_m() == 0.5);
@@ -220,7 +220,7 @@ TEST_CASE("course XML: a half wall keeps the walls' finer lattice, with one warn
 }
 
 TEST_CASE("course XML: --start pos:N and random pick among the start positions") {
-  const std::string file = fixture("course_arena5_starts.xml");
+  const std::string file = world_fixture("course_arena5_starts.xml");
   maze::WorldOverrides third;
   third.start_position = 3;
   CHECK(maze::load_world(file, third).maze.start() == maze::Cell{2, 0});
@@ -272,7 +272,7 @@ TEST_CASE("course XML: bad landmarks and start positions are located") {
 TEST_CASE("course XML: landmarks and every start position survive a round trip") {
   for (const char *name : {"course_arena5_starts.xml", "course_half_wall.xml", "course_arena11.xml"}) {
     CAPTURE(name);
-    const maze::Maze m = maze::load_world(fixture(name)).maze;
+    const maze::Maze m = maze::load_world(world_fixture(name)).maze;
     const maze::Maze kept = maze::read_xml(maze::write_xml_keeping_origin(m), "x.xml");
     CHECK(kept == m);
   }

@@ -14,6 +14,7 @@
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/wall_grid.hpp"
+#include "test_values.hpp"
 
 namespace {
 
@@ -21,8 +22,6 @@ using maze::sim::DistanceSensorSpec;
 using maze::sim::DistanceSensorType;
 using maze::sim::Pose;
 
-constexpr double kPi = std::numbers::pi;
-constexpr double h = maze::kDefaultWallThickness_m / 2.0;  // half a wall: 0.006 m
 constexpr double kRange_m = 5.0;
 
 // A sensor looking along the robot's heading, its table distance -> metres up to 5 m.
@@ -35,7 +34,7 @@ double measured(const maze::sim::WallGrid &walls, const DistanceSensorSpec &s, P
 }
 
 // 2 x 2 cells of 1 m, one interior wall: the north side of (0, 0), x = 0 ... 1, its east
-// end a post whose end face is x = 1 + h, y = 1 - h ... 1 + h.
+// end a post whose end face is x = 1 + kHalfWall_m, y = 1 - kHalfWall_m ... 1 + kHalfWall_m.
 maze::Maze post_maze() {
   maze::Maze m(2, 2);
   m.set_wall({0, 0}, maze::Side::north, true);
@@ -69,7 +68,7 @@ TEST_CASE("ray weights: Webots' Gaussian exp(-(t / (a g))^2), normalised") {
 TEST_CASE("sonar square to a wall: the nearest ray, the axis, not the rays' mean") {
   const maze::sim::WallGrid walls(maze::Maze(1, 1));
   const Pose centre{0.5, 0.5, kPi / 2};
-  const double d = 0.5 - h;  // centre to the north face
+  const double d = 0.5 - kHalfWall_m;  // centre to the north face
   // Every ray's incidence is at most 0.2 rad < pi / 8: all return; the axis is nearest.
   CHECK(measured(walls, sensor(DistanceSensorType::sonar, 5, 0.4), centre) == doctest::Approx(d).epsilon(1e-12));
   // generic: the weighted mean of d / cos t over the five rays, longer than d.
@@ -86,7 +85,7 @@ TEST_CASE("sonar at 30 degrees to a wall: only the ray within 22.5 degrees of th
   // Heading 60 deg from east: incidence on the north face 30 deg; the rays at +0.2, +0.1,
   // 0, -0.1, -0.2 rad meet it at 18.5, 24.3, 30, 35.7, 41.5 deg: only the first returns.
   const Pose at{0.5, 0.5, kPi / 3};
-  const double to_face = 1.0 - h - 0.5;
+  const double to_face = 1.0 - kHalfWall_m - 0.5;
   CHECK(measured(walls, sensor(DistanceSensorType::sonar, 5, 0.4), at) ==
         doctest::Approx(to_face / std::sin(kPi / 3 + 0.2)).epsilon(1e-12));
   // One ray on the axis, 30 deg: lost, the sonar reads its range.
@@ -105,14 +104,14 @@ TEST_CASE("a sonar ray grazing a post: the end face returns a shallow ray, the s
   const maze::sim::WallGrid walls(post_maze());
   const DistanceSensorSpec sonar = sensor(DistanceSensorType::sonar, 1, 0.0);
   const DistanceSensorSpec generic = sensor(DistanceSensorType::generic, 1, 0.0);
-  const double run = 1.5 - (1.0 + h);  // x from the sensor to the post's end face
-  // Westward and 0.3 rad up (17 deg): meets the end face x = 1 + h at y = 1: 17 deg incidence.
+  const double run = 1.5 - (1.0 + kHalfWall_m);  // x from the sensor to the post's end face
+  // Westward and 0.3 rad up (17 deg): meets the end face x = 1 + kHalfWall_m at y = 1: 17 deg incidence.
   const double a = 0.3;
   const Pose shallow{1.5, 1.0 - run * std::tan(a), kPi - a};
   CHECK(measured(walls, sonar, shallow) == doctest::Approx(run / std::cos(a)).epsilon(1e-12));
   // A micrometre under the post's lower corner: the ray grazes the corner and meets the
   // wall's south face 3 micrometres on, at 90 - 17 = 73 deg: lost. generic sees it there.
-  const Pose grazing{1.5, 1.0 - h - run * std::tan(a) - 1e-6, kPi - a};
+  const Pose grazing{1.5, 1.0 - kHalfWall_m - run * std::tan(a) - 1e-6, kPi - a};
   CHECK(measured(walls, sonar, grazing) == kRange_m);
   CHECK(measured(walls, generic, grazing) == doctest::Approx(run / std::cos(a)).epsilon(1e-4));
   // 0.5 rad (29 deg) on the end face: lost.
@@ -120,15 +119,16 @@ TEST_CASE("a sonar ray grazing a post: the end face returns a shallow ray, the s
   // Down onto the wall's north face, 0.3 rad below the horizontal (73 deg incidence): lost.
   const Pose above{0.9, 1.1, -kPi + a};
   CHECK(measured(walls, sonar, above) == kRange_m);
-  CHECK(measured(walls, generic, above) == doctest::Approx((0.1 - h) / std::sin(a)).epsilon(1e-12));
+  CHECK(measured(walls, generic, above) == doctest::Approx((0.1 - kHalfWall_m) / std::sin(a)).epsilon(1e-12));
   // Steeply down onto it (1.3 rad below the horizontal, 15 deg incidence): returns.
-  CHECK(measured(walls, sonar, {0.9, 1.5, -kPi + 1.3}) == doctest::Approx((0.5 - h) / std::sin(1.3)).epsilon(1e-12));
+  CHECK(measured(walls, sonar, {0.9, 1.5, -kPi + 1.3}) ==
+        doctest::Approx((0.5 - kHalfWall_m) / std::sin(1.3)).epsilon(1e-12));
 }
 
 TEST_CASE("cast_hit: the face's normal along x or y") {
   const maze::sim::WallGrid walls(post_maze());
   const maze::sim::RayHit east = maze::sim::cast_hit(walls, 1.5, 1.0, kPi, 5.0);
-  CHECK(east.distance_m == doctest::Approx(0.5 - h));
+  CHECK(east.distance_m == doctest::Approx(0.5 - kHalfWall_m));
   CHECK(east.normal_x == 1.0);
   CHECK(east.normal_y == 0.0);
   const maze::sim::RayHit north = maze::sim::cast_hit(walls, 0.5, 1.5, -kPi / 2, 5.0);
@@ -136,7 +136,7 @@ TEST_CASE("cast_hit: the face's normal along x or y") {
   CHECK(north.normal_y == 1.0);
   // Through a grid vertex at 45 deg: both faces at once, the tie goes to the x face.
   const maze::sim::RayHit corner = maze::sim::cast_hit(maze::sim::WallGrid(maze::Maze(1, 1)), 0.5, 0.5, kPi / 4, 5.0);
-  CHECK(corner.distance_m == doctest::Approx(std::sqrt(2.0) * (0.5 - h)));
+  CHECK(corner.distance_m == doctest::Approx(std::sqrt(2.0) * (0.5 - kHalfWall_m)));
   CHECK(corner.normal_x == -1.0);
   CHECK(corner.normal_y == 0.0);
   const maze::sim::RayHit none = maze::sim::cast_hit(walls, 0.5, 0.5, 0.0, 0.1);

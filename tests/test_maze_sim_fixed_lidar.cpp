@@ -7,7 +7,6 @@
 #include <numbers>
 #include <string>
 #include <vector>
-
 #include <webots/Lidar.hpp>
 #include <webots/Robot.hpp>
 
@@ -16,6 +15,7 @@
 #include "maze/sim/scan.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
+#include "test_values.hpp"
 
 // The default robot's fixed lidar, worked by hand (docs/simulator.md, "The fixed lidar"):
 // Webots points beam i of a fixed lidar at fov/2 - (i + 1/2) fov/N, measures the depth along
@@ -24,7 +24,6 @@
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
 const maze::sim::LidarSpec &hambot_lidar() { return maze::sim::default_profile().lidars.front(); }

@@ -8,7 +8,6 @@
 #include <numbers>
 #include <stdexcept>
 #include <vector>
-
 #include <webots/DistanceSensor.hpp>
 #include <webots/GPS.hpp>
 #include <webots/InertialUnit.hpp>
@@ -22,11 +21,10 @@
 #include "maze/maze.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
+#include "test_values.hpp"
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double h = maze::kDefaultWallThickness_m / 2.0;
 using webots::embedded::Simulation;
 
 maze::sim::SimulationOptions exact() {
@@ -106,7 +104,7 @@ TEST_CASE("Lidar: the range image at a known pose, in the conventions' beam orde
   CHECK(lidar->getFov() == doctest::Approx(2 * kPi));
   const float *ranges = lidar->getRangeImage();
   REQUIRE(ranges != nullptr);
-  const double side = 1.5 - h;
+  const double side = 1.5 - kHalfWall_m;
   // A fixed lidar's beam i points half a beam in: at pi - (i + 1/2) degrees from the heading.
   const double half = std::cos(0.5 * kPi / 180.0);
   CHECK(ranges[0] == doctest::Approx(side / half).epsilon(1e-6));    // back
@@ -131,7 +129,8 @@ TEST_CASE("Lidar: +infinity outside [min range, max range]") {
   lidar->enable(32);
   const float *ranges = lidar->getRangeImage();
   CHECK(std::isinf(ranges[180]));                               // the east end is 19.494 m away
-  CHECK(ranges[0] == doctest::Approx((0.5 - h) / std::cos(0.5 * kPi / 180.0)).epsilon(1e-6));  // west wall behind
+  CHECK(ranges[0] ==
+        doctest::Approx((0.5 - kHalfWall_m) / std::cos(0.5 * kPi / 180.0)).epsilon(1e-6));  // west wall behind
 }
 
 TEST_CASE("Lidar: noise has mean 0 and sigma noise x max range (10^5 samples)") {
@@ -265,7 +264,7 @@ TEST_CASE("Driving into a wall stops at the wall and presses the bumpers touchin
   CHECK(front->getValue() == 0.0);
   drive(robot, 10.0, 10.0);
   for (int i = 0; i < 100; ++i) robot.step(32);
-  CHECK(sim.pose().y_m == doctest::Approx(1.0 - h - 0.09).epsilon(1e-9));
+  CHECK(sim.pose().y_m == doctest::Approx(1.0 - kHalfWall_m - 0.09).epsilon(1e-9));
   CHECK(sim.pose().x_m == doctest::Approx(0.5).epsilon(1e-9));
   CHECK(front->getValue() == 1.0);
   CHECK(left->getValue() == 0.0);
@@ -284,8 +283,8 @@ TEST_CASE("Driving diagonally into a corner presses the two side bumpers") {
   }
   drive(robot, 10.0, 10.0);
   for (int i = 0; i < 100; ++i) robot.step(32);
-  CHECK(sim.pose().x_m == doctest::Approx(1.0 - h - 0.09).epsilon(1e-9));
-  CHECK(sim.pose().y_m == doctest::Approx(1.0 - h - 0.09).epsilon(1e-9));
+  CHECK(sim.pose().x_m == doctest::Approx(1.0 - kHalfWall_m - 0.09).epsilon(1e-9));
+  CHECK(sim.pose().y_m == doctest::Approx(1.0 - kHalfWall_m - 0.09).epsilon(1e-9));
   CHECK(robot.getTouchSensor("bumper front")->getValue() == 0.0);
   CHECK(robot.getTouchSensor("bumper left")->getValue() == 1.0);
   CHECK(robot.getTouchSensor("bumper right")->getValue() == 1.0);
@@ -296,7 +295,7 @@ TEST_CASE("Driving along a wall at an angle slides along it") {
   Simulation sim(corridor, hambot(), at(0.5, 0.5, 0.3));
   drive(sim.robot(), 10.0, 10.0);
   for (int i = 0; i < 100; ++i) sim.robot().step(32);  // 1.44 m, the wall after 1.36 m
-  CHECK(sim.pose().y_m == doctest::Approx(1.0 - h - 0.09).epsilon(1e-9));
+  CHECK(sim.pose().y_m == doctest::Approx(1.0 - kHalfWall_m - 0.09).epsilon(1e-9));
   CHECK(sim.pose().x_m > 1.5);
 }
 
@@ -338,7 +337,7 @@ TEST_CASE("DistanceSensor: the IR ring averages its three rays like Webots") {
   CHECK(front->getAperture() == 0.03);
   CHECK(front->getMinValue() == 0.0);
   CHECK(front->getMaxValue() == 1.5);
-  const double d = 0.5 - h - 0.09;  // from the rim to the north wall
+  const double d = 0.5 - kHalfWall_m - 0.09;  // from the rim to the north wall
   const double w = std::exp(-0.25);  // rays at +-aperture / 2
   const double expected = (d + 2 * w * d / std::cos(0.015)) / (1 + 2 * w);
   CHECK(front->getValue() == doctest::Approx(expected).epsilon(1e-9));
@@ -383,8 +382,8 @@ TEST_CASE("DistanceSensor: the depth fan of the bumper-depth robot") {
     ray->enable(32);
     const double a = (60.0 - 15.0 * i) * kPi / 180.0;  // from the heading, left positive
     // From the rim point (0.09 sin a left, 0.09 cos a ahead) to the nearest face.
-    const double ahead = (0.5 - h - 0.09 * std::cos(a)) / std::cos(a);
-    const double side = (0.5 - h - 0.09 * std::abs(std::sin(a))) / std::abs(std::sin(a));
+    const double ahead = (0.5 - kHalfWall_m - 0.09 * std::cos(a)) / std::cos(a);
+    const double side = (0.5 - kHalfWall_m - 0.09 * std::abs(std::sin(a))) / std::abs(std::sin(a));
     const double expected = std::abs(std::sin(a)) < 1e-12 ? ahead : std::min(ahead, side);
     CHECK(ray->getValue() == doctest::Approx(expected).epsilon(1e-9));
   }
@@ -401,13 +400,17 @@ maze::sim::RobotProfile rotating_robot(double frequency_hz) {
 }
 
 // The range of beam i (beam offset `offset`, in beams) of a 360-beam lidar at (x, y) facing
-// yaw, in the open 3 x 3 maze: the nearest inner wall face, h in from the maze's edges.
+// yaw, in the open 3 x 3 maze: the nearest inner wall face, kHalfWall_m in from the maze's edges.
 double room_range(double x, double y, double yaw, int i, double offset) {
   const double a = yaw + kPi - (i + offset) * 2 * kPi / 360;
   const double dx = std::cos(a);
   const double dy = std::sin(a);
-  const double tx = dx > 0 ? (3.0 - h - x) / dx : dx < 0 ? (h - x) / dx : std::numeric_limits<double>::infinity();
-  const double ty = dy > 0 ? (3.0 - h - y) / dy : dy < 0 ? (h - y) / dy : std::numeric_limits<double>::infinity();
+  const double tx = dx > 0   ? (3.0 - kHalfWall_m - x) / dx
+                    : dx < 0 ? (kHalfWall_m - x) / dx
+                             : std::numeric_limits<double>::infinity();
+  const double ty = dy > 0   ? (3.0 - kHalfWall_m - y) / dy
+                    : dy < 0 ? (kHalfWall_m - y) / dy
+                             : std::numeric_limits<double>::infinity();
   return std::min(tx, ty);
 }
 

@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "maze/validate.hpp"
 #include "maze/world.hpp"
+#include "test_values.hpp"
 
 namespace {
 
@@ -14,8 +15,6 @@ struct Case {
   const char *file;
   const char *diagnostic;  // after the path
 };
-
-std::string fixture(const char *name) { return std::string(TEST_DATA_DIR) + "/worlds/" + name; }
 
 std::string diagnostic_of(const std::string &path) {
   try {
@@ -79,7 +78,7 @@ TEST_CASE("validation: every fault is named, with its place, to the letter") {
   };
   for (const Case &c : cases) {
     CAPTURE(c.file);
-    CHECK(diagnostic_of(fixture(c.file)) == fixture(c.file) + c.diagnostic);
+    CHECK(diagnostic_of(world_fixture(c.file)) == world_fixture(c.file) + c.diagnostic);
   }
 }
 
@@ -89,16 +88,17 @@ TEST_CASE("validation: a file that cannot be read says why") {
 }
 
 TEST_CASE("validation: unreachable cells are a warning, not an error") {
-  const auto world = maze::load_world(fixture("unreachable.txt"));
+  const auto world = maze::load_world(world_fixture("unreachable.txt"));
   REQUIRE(world.warnings.size() == 1);
-  CHECK(world.warnings[0] == fixture("unreachable.txt") + ": warning: 1 cell cannot be reached from the start: (1,0)");
+  CHECK(world.warnings[0] ==
+        world_fixture("unreachable.txt") + ": warning: 1 cell cannot be reached from the start: (1,0)");
   CHECK(world.maze.reachable_count() == 15);
 }
 
 TEST_CASE("validation: notes after the maze, CRLF and unknown XML elements are accepted") {
   const auto lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
-  CHECK(maze::load_world(fixture("notes.txt")).maze == lab);
-  CHECK(maze::load_world(fixture("unknown_elements.xml")).maze == lab);
+  CHECK(maze::load_world(world_fixture("notes.txt")).maze == lab);
+  CHECK(maze::load_world(world_fixture("unknown_elements.xml")).maze == lab);
 }
 
 TEST_CASE("validation: the checks, one by one, on a raw maze") {

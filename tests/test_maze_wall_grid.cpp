@@ -10,12 +10,9 @@
 #include "maze/generator.hpp"
 #include "maze/maze.hpp"
 #include "maze/sim/wall_grid.hpp"
+#include "test_values.hpp"
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double h = maze::kDefaultWallThickness_m / 2.0;  // half a wall: 0.006 m
 
 // 2 x 2 cells of 1 m; one interior wall: the north side of (0, 0), from x = 0 to 1, so
 // its east end (the post at (1, 1)) is free-standing in the middle of the maze.
@@ -29,7 +26,7 @@ maze::Maze stub_maze() {
 
 TEST_CASE("WallGrid::cast: an enclosed cell, beams along the walls and into the corners") {
   const maze::sim::WallGrid walls(maze::Maze(1, 1));
-  const double free = 0.5 - h;  // centre to each inner face
+  const double free = 0.5 - kHalfWall_m;  // centre to each inner face
   CHECK(walls.cast(0.5, 0.5, 0.0, 12.0) == doctest::Approx(free).epsilon(1e-12));
   CHECK(walls.cast(0.5, 0.5, kPi / 2, 12.0) == doctest::Approx(free).epsilon(1e-12));
   CHECK(walls.cast(0.5, 0.5, kPi, 12.0) == doctest::Approx(free).epsilon(1e-12));
@@ -40,38 +37,36 @@ TEST_CASE("WallGrid::cast: an enclosed cell, beams along the walls and into the 
   }
   // Off-centre, oblique: x = 0.2 + t cos a reaches the east face 0.994 first.
   const double a = 0.3;
-  CHECK(walls.cast(0.2, 0.3, a, 12.0) == doctest::Approx((1.0 - h - 0.2) / std::cos(a)).epsilon(1e-12));
+  CHECK(walls.cast(0.2, 0.3, a, 12.0) == doctest::Approx((1.0 - kHalfWall_m - 0.2) / std::cos(a)).epsilon(1e-12));
 }
 
 TEST_CASE("WallGrid::cast: max range, and no return beyond it") {
   const maze::sim::WallGrid walls(maze::Maze(8, 1));
-  CHECK(walls.cast(0.5, 0.5, 0.0, 12.0) == doctest::Approx(8.0 - h - 0.5).epsilon(1e-12));
+  CHECK(walls.cast(0.5, 0.5, 0.0, 12.0) == doctest::Approx(8.0 - kHalfWall_m - 0.5).epsilon(1e-12));
   CHECK(walls.cast(0.5, 0.5, 0.0, 7.0) == kInf);
-  CHECK(walls.cast(0.5, 0.5, 0.0, 8.0 - h - 0.5) == doctest::Approx(8.0 - h - 0.5));
+  CHECK(walls.cast(0.5, 0.5, 0.0, 8.0 - kHalfWall_m - 0.5) == doctest::Approx(8.0 - kHalfWall_m - 0.5));
 }
 
 TEST_CASE("WallGrid::cast: wall ends, faces and beams that just miss them") {
   const maze::sim::WallGrid walls(stub_maze());
-  // Along the wall's centre line y = 1 from the east: the end face at x = 1 + h.
-  CHECK(walls.cast(1.5, 1.0, kPi, 12.0) == doctest::Approx(0.5 - h).epsilon(1e-12));
-  // Along the wall's south face y = 1 - h: a touch counts, at the end post's corner.
-  CHECK(walls.cast(1.5, 1.0 - h, kPi, 12.0) == doctest::Approx(0.5 - h).epsilon(1e-12));
+  // Along the wall's centre line y = 1 from the east: the end face at x = 1 + kHalfWall_m.
+  CHECK(walls.cast(1.5, 1.0, kPi, 12.0) == doctest::Approx(0.5 - kHalfWall_m).epsilon(1e-12));
+  // Along the wall's south face y = 1 - kHalfWall_m: a touch counts, at the end post's corner.
+  CHECK(walls.cast(1.5, 1.0 - kHalfWall_m, kPi, 12.0) == doctest::Approx(0.5 - kHalfWall_m).epsilon(1e-12));
   // Just below the face: under the wall all the way to the west outer wall.
-  CHECK(walls.cast(1.5, 1.0 - h - 1e-9, kPi, 12.0) == doctest::Approx(1.5 - h).epsilon(1e-12));
-  // Just above the top face (y = 1 + h): over the wall, to the west outer wall.
-  CHECK(walls.cast(1.5, 1.0 + h + 1e-9, kPi, 12.0) == doctest::Approx(1.5 - h).epsilon(1e-12));
-  // Obliquely onto the middle of the end face (1 + h, 1).
-  const double to_end = std::atan2(0.5, -(0.5 - h));
-  CHECK(walls.cast(1.5, 0.5, to_end, 12.0) ==
-        doctest::Approx(std::hypot(0.5 - h, 0.5)).epsilon(1e-12));
-  // Passing 1 mm above the end's top-right corner (1 + h, 1 + h): on to the north wall.
-  const double past = std::atan2(0.5 + h + 0.001, -(0.5 - h));
-  CHECK(walls.cast(1.5, 0.5, past, 12.0) ==
-        doctest::Approx((2.0 - h - 0.5) / std::sin(past)).epsilon(1e-12));
+  CHECK(walls.cast(1.5, 1.0 - kHalfWall_m - 1e-9, kPi, 12.0) == doctest::Approx(1.5 - kHalfWall_m).epsilon(1e-12));
+  // Just above the top face (y = 1 + kHalfWall_m): over the wall, to the west outer wall.
+  CHECK(walls.cast(1.5, 1.0 + kHalfWall_m + 1e-9, kPi, 12.0) == doctest::Approx(1.5 - kHalfWall_m).epsilon(1e-12));
+  // Obliquely onto the middle of the end face (1 + kHalfWall_m, 1).
+  const double to_end = std::atan2(0.5, -(0.5 - kHalfWall_m));
+  CHECK(walls.cast(1.5, 0.5, to_end, 12.0) == doctest::Approx(std::hypot(0.5 - kHalfWall_m, 0.5)).epsilon(1e-12));
+  // Passing 1 mm above the end's top-right corner (1 + kHalfWall_m, 1 + kHalfWall_m): on to the north wall.
+  const double past = std::atan2(0.5 + kHalfWall_m + 0.001, -(0.5 - kHalfWall_m));
+  CHECK(walls.cast(1.5, 0.5, past, 12.0) == doctest::Approx((2.0 - kHalfWall_m - 0.5) / std::sin(past)).epsilon(1e-12));
   // From the cell north of the wall, straight down onto its top face.
-  CHECK(walls.cast(0.5, 1.5, -kPi / 2, 12.0) == doctest::Approx(0.5 - h).epsilon(1e-12));
-  // Straight down past the end (x = 1.1 > 1 + h): to the south outer wall.
-  CHECK(walls.cast(1.1, 1.5, -kPi / 2, 12.0) == doctest::Approx(1.5 - h).epsilon(1e-12));
+  CHECK(walls.cast(0.5, 1.5, -kPi / 2, 12.0) == doctest::Approx(0.5 - kHalfWall_m).epsilon(1e-12));
+  // Straight down past the end (x = 1.1 > 1 + kHalfWall_m): to the south outer wall.
+  CHECK(walls.cast(1.1, 1.5, -kPi / 2, 12.0) == doctest::Approx(1.5 - kHalfWall_m).epsilon(1e-12));
 }
 
 TEST_CASE("WallGrid: cell size, thickness and origin from the maze") {
@@ -79,9 +74,9 @@ TEST_CASE("WallGrid: cell size, thickness and origin from the maze") {
   m.set_physical(0.18, 0.012, -1.0, 2.0);  // micromouse cells, origin moved
   const maze::sim::WallGrid walls(m);
   CHECK(walls.cast(-1.0 + 0.09, 2.0 + 0.09, 0.0, 12.0) ==
-        doctest::Approx(3 * 0.18 - 0.09 - h).epsilon(1e-12));
+        doctest::Approx(3 * 0.18 - 0.09 - kHalfWall_m).epsilon(1e-12));
   CHECK(walls.cast(-1.0 + 0.09, 2.0 + 0.09, kPi / 2, 12.0) ==
-        doctest::Approx(2 * 0.18 - 0.09 - h).epsilon(1e-12));
+        doctest::Approx(2 * 0.18 - 0.09 - kHalfWall_m).epsilon(1e-12));
 }
 
 TEST_CASE("WallGrid: inside_maze and inside_wall") {
@@ -91,19 +86,19 @@ TEST_CASE("WallGrid: inside_maze and inside_wall") {
   CHECK_FALSE(walls.inside_maze(-0.01, 1.0));
   CHECK_FALSE(walls.inside_maze(1.0, 2.01));
   CHECK(walls.inside_wall(0.5, 1.0));
-  CHECK(walls.inside_wall(0.5, 1.0 - h));       // on the face
-  CHECK(walls.inside_wall(1.0 + h, 1.0));       // on the end face
-  CHECK_FALSE(walls.inside_wall(1.0 + h + 1e-9, 1.0));
+  CHECK(walls.inside_wall(0.5, 1.0 - kHalfWall_m));  // on the face
+  CHECK(walls.inside_wall(1.0 + kHalfWall_m, 1.0));  // on the end face
+  CHECK_FALSE(walls.inside_wall(1.0 + kHalfWall_m + 1e-9, 1.0));
   CHECK_FALSE(walls.inside_wall(1.5, 1.0));     // no wall north of (1, 0)
   CHECK(walls.inside_wall(0.003, 1.5));         // the west outer wall
 }
 
 TEST_CASE("WallGrid::push_out: a disc is moved clear of a wall along the normal") {
   const maze::sim::WallGrid walls(maze::Maze(1, 1));
-  double x = 0.5, y = 1.0 - h - 0.05;  // 4 cm into the north wall for a 9 cm disc
+  double x = 0.5, y = 1.0 - kHalfWall_m - 0.05;  // 4 cm into the north wall for a 9 cm disc
   CHECK(walls.push_out(x, y, 0.09));
   CHECK(x == doctest::Approx(0.5));
-  CHECK(y == doctest::Approx(1.0 - h - 0.09));
+  CHECK(y == doctest::Approx(1.0 - kHalfWall_m - 0.09));
   CHECK_FALSE(walls.push_out(x, y, 0.09));
 }
 
@@ -168,7 +163,9 @@ TEST_CASE("WallGrid::cast_direction: a direction with a subnormal component cast
     double x = -1.25 + rng.uniform(0.0, 12 * 0.7);
     double y = 2.5 + rng.uniform(0.0, 9 * 0.7);
     // Half the origins on a box's edge across the tiny component: (edge - origin) is 0 there.
-    const double edge = std::floor(rng.uniform(0.0, 9.0)) * 0.7 + (i % 3 == 0 ? h : i % 3 == 1 ? 0.7 - h : 0.0);
+    const double edge = std::floor(rng.uniform(0.0, 9.0)) * 0.7 + (i % 3 == 0   ? kHalfWall_m
+                                                                   : i % 3 == 1 ? 0.7 - kHalfWall_m
+                                                                                : 0.0);
     if (i % 32 >= 16) (i % 16 < 8 ? x : y) = (i % 16 < 8 ? -1.25 : 2.5) + edge;
     if (walls.inside_wall(x, y)) continue;
     const double tiny = (i % 4 < 2 ? 1e-320 : 4.9e-324) * (i % 2 == 0 ? 1.0 : -1.0);

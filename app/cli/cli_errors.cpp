@@ -38,7 +38,7 @@ const CLI::App &chosen(const CLI::App &cli) {
   return *app;
 }
 
-std::vector<std::string> option_names(const CLI::App &app) {
+std::vector<std::string> suggestable_option_names(const CLI::App &app) {
   std::vector<std::string> names;
   for (const CLI::Option *o : app.get_options()) {
     if (o->get_group().empty()) continue;  // hidden: an old spelling, not one to suggest
@@ -91,7 +91,7 @@ std::string unexpected(const CLI::App &cli, const std::vector<std::string> &extr
   const CLI::App &app = chosen(cli);
   const std::string where = &app == &cli ? "maze_mapper" : app.get_name();
   if (first.starts_with("-")) {
-    const std::vector<std::string> close = close_option_names(first, option_names(app));
+    const std::vector<std::string> close = close_option_names(first, suggestable_option_names(app));
     return close.empty() ? fmt::format("{} has no option {}", where, first)
                          : fmt::format("{} has no option {}; did you mean {}?", where, first, either(close));
   }

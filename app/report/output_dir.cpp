@@ -22,10 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-[[noreturn]] void fail_out(const std::string &dir, const std::string &reason) {
-  throw common::InputError(fmt::format("--out {}: {}", dir, reason));
-}
-
 // The first missing ancestor of dir (dir itself when only it is missing), to remove on failure.
 fs::path first_missing(const fs::path &dir) {
   fs::path missing;
@@ -42,7 +38,7 @@ void probe_writable(const std::string &dir) {
   const fs::path probe = fs::path(dir) / fmt::format(".maze_mapper.probe.{}", ::getpid());
   const std::string name = probe.string();
   const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) fail_out(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
+  if (fd < 0) refuse_out_dir(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
   ::close(fd);
   ::unlink(name.c_str());
 }
@@ -90,12 +86,12 @@ void remove_stale_files(const fs::path &dir, const std::vector<std::string> &wri
 }  // namespace
 
 void prepare_output_dir(const std::string &dir) {
-  if (dir.empty()) fail_out(dir, "an empty path");
+  if (dir.empty()) refuse_out_dir(dir, "an empty path");
   const fs::path path(dir);
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (fs::exists(status)) {
-    if (!fs::is_directory(status)) fail_out(dir, "exists and is not a directory");
+    if (!fs::is_directory(status)) refuse_out_dir(dir, "exists and is not a directory");
     probe_writable(dir);
     return;
   }
@@ -105,7 +101,7 @@ void prepare_output_dir(const std::string &dir) {
   if (ec || !fs::is_directory(path)) {
     const std::string reason = ec ? ec.message() : std::string(std::strerror(errno != 0 ? errno : EACCES));
     if (!created.empty()) fs::remove_all(created, ec);
-    fail_out(dir, fmt::format("cannot create the directory: {}", reason));
+    refuse_out_dir(dir, fmt::format("cannot create the directory: {}", reason));
   }
   try {
     probe_writable(dir);
@@ -121,6 +117,10 @@ void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::s
 
 void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written) {
   remove_stale_files(fs::path(dir), written);
+}
+
+void refuse_out_dir(const std::string &dir, const std::string &reason) {
+  throw common::InputError(fmt::format("--out {}: {}", dir, reason));
 }
 
 }  // namespace app

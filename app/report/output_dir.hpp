@@ -14,6 +14,9 @@ namespace app {
 // directory it created is left behind.
 void prepare_output_dir(const std::string &dir);
 
+// Throws common::InputError "--out DIR: REASON": the one form of every refusal of DIR.
+[[noreturn]] void refuse_out_dir(const std::string &dir, const std::string &reason);
+
 // Throws common::InputError "--out DIR/NAME is also an input ..." when one of the files the
 // run may write in DIR is one of `inputs` (the world), before anything runs.
 void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &inputs);

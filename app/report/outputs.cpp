@@ -1,6 +1,7 @@
 #include "app/report/outputs.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,14 +10,13 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <system_error>
 
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
+#include "app/report/output_dir.hpp"
+#include "app/report/truth_picture.hpp"
 #include "app/run/option_fields.hpp"
 #include "app/run/run_report.hpp"
-#include "app/report/truth_picture.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/fixed_decimal.hpp"
@@ -27,10 +27,6 @@ namespace app {
 namespace {
 
 namespace fs = std::filesystem;
-
-[[noreturn]] void fail_out(const std::string &dir, const std::string &reason) {
-  throw common::InputError(fmt::format("--out {}: {}", dir, reason));
-}
 
 std::string fixed(double v, int decimals) { return fmt::format("{:.{}f}", v, decimals); }
 
@@ -167,7 +163,7 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
                      std::vector<std::string> &written) {
   std::error_code ec;
   fs::create_directory(dir, ec);
-  if (ec) fail_out(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
+  if (ec) refuse_out_dir(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
   const MapTones tones = map_tones(options, *files.model);
   const int count = options.output.snapshots;
   const int digits = std::max(2, static_cast<int>(std::to_string(count).size()));

@@ -16,9 +16,7 @@
 namespace app {
 namespace {
 
-using Json = nlohmann::json;
-
-std::string quoted(const std::string &text) { return Json(text).dump(); }
+std::string quoted(const std::string &text) { return nlohmann::json(text).dump(); }
 
 // 2 * round(100 * l) + 1 when occupied by the map's rule (see replay.hpp).
 long encoded(float l, const MapTones &tones) {

@@ -14,10 +14,6 @@ namespace {
 using mapping::Point;
 constexpr int kMaxRoomDilate = 8;
 
-void require(bool ok, const std::string &message) {
-  if (!ok) throw common::InputError(message);
-}
-
 }  // namespace
 
 std::string_view to_string(RoomStrategy s) {
@@ -57,21 +53,23 @@ std::string_view to_string(RoomEnding e) {
 }
 
 void validate(const RoomOptions &o) {
-  require(o.strategy != RoomStrategy::waypoints || !o.waypoints.empty(),
-          "--strategy waypoints needs --waypoints X,Y;X,Y...");
-  require(o.strategy != RoomStrategy::wavefront || o.goal.has_value(), "--strategy wavefront needs --goal X,Y");
-  require(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time S");
-  require(o.laps >= 0, fmt::format("--laps must be a whole number >= 0 (got {})", o.laps));
-  require(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time S");
-  require(o.dilate >= 0 && o.dilate <= kMaxRoomDilate,
-          fmt::format("--dilate must be 0 to {} cells (got {})", kMaxRoomDilate, o.dilate));
-  require(o.free_below_p > 0.0 && o.free_below_p <= 1.0, "the free threshold must be in (0, 1]");
-  require(std::isfinite(o.time_limit_s) && o.time_limit_s >= 0.0,
-          fmt::format("--time must be >= 0 s (got {})", o.time_limit_s));
+  common::require_input(o.strategy != RoomStrategy::waypoints || !o.waypoints.empty(),
+                        "--strategy waypoints needs --waypoints X,Y;X,Y...");
+  common::require_input(o.strategy != RoomStrategy::wavefront || o.goal.has_value(),
+                        "--strategy wavefront needs --goal X,Y");
+  common::require_input(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time S");
+  common::require_input(o.laps >= 0, fmt::format("--laps must be a whole number >= 0 (got {})", o.laps));
+  common::require_input(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time S");
+  common::require_input(o.dilate >= 0 && o.dilate <= kMaxRoomDilate,
+                        fmt::format("--dilate must be 0 to {} cells (got {})", kMaxRoomDilate, o.dilate));
+  common::require_input(o.free_below_p > 0.0 && o.free_below_p <= 1.0, "the free threshold must be in (0, 1]");
+  common::require_input(std::isfinite(o.time_limit_s) && o.time_limit_s >= 0.0,
+                        fmt::format("--time must be >= 0 s (got {})", o.time_limit_s));
   for (const Point &p : o.waypoints) {
-    require(std::isfinite(p.x_m) && std::isfinite(p.y_m), "--waypoints must be finite numbers");
+    common::require_input(std::isfinite(p.x_m) && std::isfinite(p.y_m), "--waypoints must be finite numbers");
   }
-  require(o.stop_distance_m > 0.0 && o.back_off_m > 0.0 && o.view_m > 0.0, "room distances must be > 0 m");
+  common::require_input(o.stop_distance_m > 0.0 && o.back_off_m > 0.0 && o.view_m > 0.0,
+                        "room distances must be > 0 m");
 }
 
 }  // namespace robot

@@ -2,26 +2,22 @@
 
 #include "sensing/log_map.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <map>
 #include <numbers>
 #include <string>
 
-#include <fmt/format.h>
-
+#include "common/angles.hpp"
 #include "common/error.hpp"
 
 namespace sensing {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kMaxCells = 2000;
 
 enum Level { occupied = 0, free_cell = 1, ray = 2 };  // lower wins
-
-void require(bool ok, const std::string &message) {
-  if (!ok) throw common::InputError(message);
-}
 
 // Marks gathered for one step: cell index -> strongest level.
 class StepMarks {
@@ -65,7 +61,7 @@ void mark_depth(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
   for (int n = 0; n < kLogDepthRays; ++n) {
     const double z = s.depth_m[static_cast<std::size_t>(n)];
     if (!(z > 0.0 && z < o.depth_max_m)) continue;
-    const double angle = o.depth_angles_deg[static_cast<std::size_t>(n)] * kDeg;
+    const double angle = o.depth_angles_deg[static_cast<std::size_t>(n)] * common::kRadPerDeg;
     const double range = o.depth_reading == DepthReading::axial ? z / std::cos(angle) : z;
     const double a = s.theta_rad + angle;
     for (int k = 0; k * step < range; ++k) marks.mark(x0 + k * step * std::cos(a), y0 + k * step * std::sin(a), ray);
@@ -76,21 +72,29 @@ void mark_depth(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
 }  // namespace
 
 void validate(const LogMapOptions &o) {
-  require(o.cells_x >= 1 && o.cells_x <= kMaxCells && o.cells_y >= 1 && o.cells_y <= kMaxCells,
-          fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxCells, o.cells_x, o.cells_y));
+  common::require_input(
+      o.cells_x >= 1 && o.cells_x <= kMaxCells && o.cells_y >= 1 && o.cells_y <= kMaxCells,
+      fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxCells, o.cells_x, o.cells_y));
   for (const double v : {o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m}) {
-    require(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
+    common::require_input(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
   }
-  require(o.x_start_m < o.x_end_m, fmt::format("--boundary: XS must be less than XE (got {} and {})", o.x_start_m, o.x_end_m));
-  require(o.y_start_m < o.y_end_m, fmt::format("--boundary: YS must be less than YE (got {} and {})", o.y_start_m, o.y_end_m));
-  require(o.prior > 0.0 && o.prior < 1.0, fmt::format("--prior must be in (0, 1) (got {})", o.prior));
-  require(o.bump_radius_m > 0.0 && std::isfinite(o.bump_radius_m), fmt::format("--bump-radius must be > 0 m (got {})", o.bump_radius_m));
-  require(o.depth_max_m > 0.0 && std::isfinite(o.depth_max_m), fmt::format("--depth-max must be > 0 m (got {})", o.depth_max_m));
-  for (const double a : o.depth_angles_deg) require(std::isfinite(a), "--depth-angles must be nine finite numbers");
-  require(std::isfinite(o.depth_origin_x_m) && std::isfinite(o.depth_origin_y_m), "--depth-origin must be two finite numbers X,Y");
+  common::require_input(o.x_start_m < o.x_end_m,
+                        fmt::format("--boundary: XS must be less than XE (got {} and {})", o.x_start_m, o.x_end_m));
+  common::require_input(o.y_start_m < o.y_end_m,
+                        fmt::format("--boundary: YS must be less than YE (got {} and {})", o.y_start_m, o.y_end_m));
+  common::require_input(o.prior > 0.0 && o.prior < 1.0, fmt::format("--prior must be in (0, 1) (got {})", o.prior));
+  common::require_input(o.bump_radius_m > 0.0 && std::isfinite(o.bump_radius_m),
+                        fmt::format("--bump-radius must be > 0 m (got {})", o.bump_radius_m));
+  common::require_input(o.depth_max_m > 0.0 && std::isfinite(o.depth_max_m),
+                        fmt::format("--depth-max must be > 0 m (got {})", o.depth_max_m));
+  for (const double a : o.depth_angles_deg)
+    common::require_input(std::isfinite(a), "--depth-angles must be nine finite numbers");
+  common::require_input(std::isfinite(o.depth_origin_x_m) && std::isfinite(o.depth_origin_y_m),
+                        "--depth-origin must be two finite numbers X,Y");
   for (const double a : o.depth_angles_deg) {
-    require(o.depth_reading == DepthReading::range || std::abs(a) < 90.0,
-            fmt::format("--depth-reading axial needs every depth angle within (-90, 90) degrees (got {})", a));
+    common::require_input(
+        o.depth_reading == DepthReading::range || std::abs(a) < 90.0,
+        fmt::format("--depth-reading axial needs every depth angle within (-90, 90) degrees (got {})", a));
   }
 }
 

@@ -18,19 +18,14 @@
 namespace sensing {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kMaxCellsPerSide = 2000.0;
 constexpr double kMaxPoseCells = 1e6;  // the pose's distance from 0,0, in cells
 // A point this close to the sensor is at it (a cell corner i * r computed a rounding error
 // from the robot's x).
 constexpr double kAtSensor_m = 1e-9;
 
-void require(bool ok, const std::string &message) {
-  if (!ok) throw common::InputError(message);
-}
-
 void require_finite(double value, const char *what) {
-  require(std::isfinite(value), fmt::format("{} must be a finite number (got {})", what, value));
+  common::require_input(std::isfinite(value), fmt::format("{} must be a finite number (got {})", what, value));
 }
 
 using Part = PieVerdict;
@@ -42,7 +37,8 @@ Part part_of(const PieDemoSlice &s, double beta_rad, double px, double py) {
   const double distance = std::hypot(ex, ey);
   const double reach = s.contact ? s.contact_m : s.clear_m;
   if (distance > reach) return Part::outside;
-  if (distance > kAtSensor_m && std::abs(common::wrap_angle_rad(std::atan2(ey, ex) - s.heading_deg * kDeg)) > beta_rad) {
+  if (distance > kAtSensor_m &&
+      std::abs(common::wrap_angle_rad(std::atan2(ey, ex) - s.heading_deg * common::kRadPerDeg)) > beta_rad) {
     return Part::outside;
   }
   return distance <= s.clear_m ? Part::clear : Part::contact;
@@ -78,26 +74,32 @@ void validate(const PieDemoOptions &o) {
                                     std::pair{o.max_range_m, "--max-range"}}) {
     require_finite(value, what);
   }
-  require(!o.readings_m.empty(), "--readings needs at least one reading");
-  require(o.readings_m.size() == o.mounts_deg.size(),
-          fmt::format("--readings has {} values but --mounts has {}", o.readings_m.size(), o.mounts_deg.size()));
+  common::require_input(!o.readings_m.empty(), "--readings needs at least one reading");
+  common::require_input(
+      o.readings_m.size() == o.mounts_deg.size(),
+      fmt::format("--readings has {} values but --mounts has {}", o.readings_m.size(), o.mounts_deg.size()));
   for (std::size_t n = 0; n < o.readings_m.size(); ++n) {
-    require(std::isfinite(o.readings_m[n]) && o.readings_m[n] >= 0.0,
-            fmt::format("--readings item {} must be a finite number >= 0 m (got {})", n + 1, o.readings_m[n]));
-    require(std::isfinite(o.mounts_deg[n]), fmt::format("--mounts item {} must be a finite number (got {})", n + 1, o.mounts_deg[n]));
+    common::require_input(
+        std::isfinite(o.readings_m[n]) && o.readings_m[n] >= 0.0,
+        fmt::format("--readings item {} must be a finite number >= 0 m (got {})", n + 1, o.readings_m[n]));
+    common::require_input(std::isfinite(o.mounts_deg[n]),
+                          fmt::format("--mounts item {} must be a finite number (got {})", n + 1, o.mounts_deg[n]));
   }
-  require(o.half_angle_deg > 0.0 && o.half_angle_deg < 90.0, fmt::format("--beta must be in (0, 90) deg (got {})", o.half_angle_deg));
-  require(o.contact_m > 0.0, fmt::format("--alpha must be > 0 m (got {})", o.contact_m));
-  require(o.resolution_m > 0.0, fmt::format("--resolution must be > 0 m (got {})", o.resolution_m));
-  require(o.max_range_m > 0.0, fmt::format("--max-range must be > 0 m (got {})", o.max_range_m));
+  common::require_input(o.half_angle_deg > 0.0 && o.half_angle_deg < 90.0,
+                        fmt::format("--beta must be in (0, 90) deg (got {})", o.half_angle_deg));
+  common::require_input(o.contact_m > 0.0, fmt::format("--alpha must be > 0 m (got {})", o.contact_m));
+  common::require_input(o.resolution_m > 0.0, fmt::format("--resolution must be > 0 m (got {})", o.resolution_m));
+  common::require_input(o.max_range_m > 0.0, fmt::format("--max-range must be > 0 m (got {})", o.max_range_m));
   const double reach = std::min(*std::max_element(o.readings_m.begin(), o.readings_m.end()), o.max_range_m) + o.contact_m;
   // Far from the origin a cell index loses its precision (at 1e308 m every slice missed
   // every cell, and the demo said "no cell updated").
-  require(std::abs(o.x_m) / o.resolution_m <= kMaxPoseCells && std::abs(o.y_m) / o.resolution_m <= kMaxPoseCells,
-          fmt::format("--pose X and Y must lie within {:g} cells of --resolution of 0,0 (got {:g}, {:g})",
-                      kMaxPoseCells, o.x_m, o.y_m));
-  require(2.0 * reach / o.resolution_m <= kMaxCellsPerSide,
-          fmt::format("the slices would span more than {} cells a side: raise --resolution", kMaxCellsPerSide));
+  common::require_input(
+      std::abs(o.x_m) / o.resolution_m <= kMaxPoseCells && std::abs(o.y_m) / o.resolution_m <= kMaxPoseCells,
+      fmt::format("--pose X and Y must lie within {:g} cells of --resolution of 0,0 (got {:g}, {:g})", kMaxPoseCells,
+                  o.x_m, o.y_m));
+  common::require_input(
+      2.0 * reach / o.resolution_m <= kMaxCellsPerSide,
+      fmt::format("the slices would span more than {} cells a side: raise --resolution", kMaxCellsPerSide));
 }
 
 std::vector<PieDemoSlice> pie_demo_slices(const PieDemoOptions &o) {
@@ -118,7 +120,7 @@ std::vector<PieDemoSlice> pie_demo_slices(const PieDemoOptions &o) {
 
 std::vector<PieDemoCell> pie_demo_update(const PieDemoOptions &o) {
   const double r = o.resolution_m;
-  const double beta = o.half_angle_deg * kDeg;
+  const double beta = o.half_angle_deg * common::kRadPerDeg;
   const double occupied = mapping::log_odds(kPieDemoOccupiedP);
   const double clear = mapping::log_odds(kPieDemoClearP);
   std::map<std::pair<int, int>, PieDemoCell> cells;  // keyed (-j, i): north row first

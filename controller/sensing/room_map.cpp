@@ -20,43 +20,45 @@ namespace {
 
 constexpr double kSquareTolerance = 1e-9;
 
-void require(bool ok, const std::string &message) {
-  if (!ok) throw common::InputError(message);
-}
-
 void require_boundary(const RoomBoundary &b) {
   for (const double v : {b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m}) {
-    require(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
+    common::require_input(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
   }
-  require(b.x_start_m < b.x_end_m, fmt::format("--boundary: XS must be less than XE (got {} and {})", b.x_start_m, b.x_end_m));
-  require(b.y_start_m < b.y_end_m, fmt::format("--boundary: YS must be less than YE (got {} and {})", b.y_start_m, b.y_end_m));
+  common::require_input(b.x_start_m < b.x_end_m,
+                        fmt::format("--boundary: XS must be less than XE (got {} and {})", b.x_start_m, b.x_end_m));
+  common::require_input(b.y_start_m < b.y_end_m,
+                        fmt::format("--boundary: YS must be less than YE (got {} and {})", b.y_start_m, b.y_end_m));
 }
 
 }  // namespace
 
 RoomGridSpec room_grid_from_cells(const RoomBoundary &b, int cells_x, int cells_y) {
   require_boundary(b);
-  require(cells_x >= 1 && cells_y >= 1 && cells_x <= kMaxRoomCellsPerSide && cells_y <= kMaxRoomCellsPerSide,
-          fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxRoomCellsPerSide, cells_x, cells_y));
+  common::require_input(
+      cells_x >= 1 && cells_y >= 1 && cells_x <= kMaxRoomCellsPerSide && cells_y <= kMaxRoomCellsPerSide,
+      fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxRoomCellsPerSide, cells_x, cells_y));
   const double w = b.width_m() / cells_x;
   const double h = b.height_m() / cells_y;
-  require(std::abs(w - h) <= kSquareTolerance * std::max(w, h),
-          fmt::format("--cells {},{} over a {:g} x {:g} m boundary makes cells {:g} m wide and {:g} m high: the room "
-                      "map's cells are square (try --cells {},{} or --resolution {:g})",
-                      cells_x, cells_y, b.width_m(), b.height_m(), w, h, cells_x,
-                      std::max(1, static_cast<int>(std::lround(b.height_m() / w))), w));
+  common::require_input(
+      std::abs(w - h) <= kSquareTolerance * std::max(w, h),
+      fmt::format("--cells {},{} over a {:g} x {:g} m boundary makes cells {:g} m wide and {:g} m high: the room "
+                  "map's cells are square (try --cells {},{} or --resolution {:g})",
+                  cells_x, cells_y, b.width_m(), b.height_m(), w, h, cells_x,
+                  std::max(1, static_cast<int>(std::lround(b.height_m() / w))), w));
   RoomGridSpec s{b, cells_x, cells_y, w};
   return s;
 }
 
 RoomGridSpec room_grid_from_resolution(const RoomBoundary &b, double cell_m) {
   require_boundary(b);
-  require(std::isfinite(cell_m) && cell_m > 0.0, fmt::format("--resolution must be > 0 m (got {})", cell_m));
+  common::require_input(std::isfinite(cell_m) && cell_m > 0.0,
+                        fmt::format("--resolution must be > 0 m (got {})", cell_m));
   const double nx = std::ceil(b.width_m() / cell_m - 1e-9);
   const double ny = std::ceil(b.height_m() / cell_m - 1e-9);
-  require(nx <= kMaxRoomCellsPerSide && ny <= kMaxRoomCellsPerSide,
-          fmt::format("--resolution {:g} m over a {:g} x {:g} m boundary makes {:g} x {:g} cells; at most {} a side",
-                      cell_m, b.width_m(), b.height_m(), nx, ny, kMaxRoomCellsPerSide));
+  common::require_input(
+      nx <= kMaxRoomCellsPerSide && ny <= kMaxRoomCellsPerSide,
+      fmt::format("--resolution {:g} m over a {:g} x {:g} m boundary makes {:g} x {:g} cells; at most {} a side",
+                  cell_m, b.width_m(), b.height_m(), nx, ny, kMaxRoomCellsPerSide));
   RoomGridSpec s;
   s.cells_x = std::max(1, static_cast<int>(nx));
   s.cells_y = std::max(1, static_cast<int>(ny));
@@ -73,15 +75,18 @@ std::uint64_t room_map_bytes(const RoomGridSpec &s) {
 
 void validate(const RoomGridSpec &s, std::uint64_t max_bytes) {
   require_boundary(s.boundary);
-  require(s.cells_x >= 1 && s.cells_y >= 1 && s.cells_x <= kMaxRoomCellsPerSide && s.cells_y <= kMaxRoomCellsPerSide,
-          fmt::format("the room map must have 1 to {} cells a side (got {} x {})", kMaxRoomCellsPerSide, s.cells_x,
-                      s.cells_y));
-  require(std::isfinite(s.cell_m) && s.cell_m > 0.0, fmt::format("the room map's cells must be > 0 m (got {})", s.cell_m));
+  common::require_input(
+      s.cells_x >= 1 && s.cells_y >= 1 && s.cells_x <= kMaxRoomCellsPerSide && s.cells_y <= kMaxRoomCellsPerSide,
+      fmt::format("the room map must have 1 to {} cells a side (got {} x {})", kMaxRoomCellsPerSide, s.cells_x,
+                  s.cells_y));
+  common::require_input(std::isfinite(s.cell_m) && s.cell_m > 0.0,
+                        fmt::format("the room map's cells must be > 0 m (got {})", s.cell_m));
   const std::uint64_t bytes = room_map_bytes(s);
-  require(bytes <= max_bytes, fmt::format("a {} x {} room map would take {:.1f} MiB, more than {:.0f} MiB: use a coarser "
-                                          "--resolution or fewer --cells",
-                                          s.cells_x, s.cells_y, static_cast<double>(bytes) / 1048576.0,
-                                          static_cast<double>(max_bytes) / 1048576.0));
+  common::require_input(bytes <= max_bytes,
+                        fmt::format("a {} x {} room map would take {:.1f} MiB, more than {:.0f} MiB: use a coarser "
+                                    "--resolution or fewer --cells",
+                                    s.cells_x, s.cells_y, static_cast<double>(bytes) / 1048576.0,
+                                    static_cast<double>(max_bytes) / 1048576.0));
 }
 
 RoomMap::RoomMap(const RoomGridSpec &spec, const mapping::SensorModel &model) : spec_(spec), model_(model) {

@@ -1,5 +1,7 @@
 #include "maze/room_format.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -7,11 +9,10 @@
 #include <optional>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
 #include "maze/maze.hpp"
+#include "metres_text.hpp"
 
 namespace maze {
 
@@ -102,10 +103,6 @@ std::string degrees_of(double yaw_rad) {
   }
   return fmt::format("{}", deg);
 }
-
-// A length or coordinate as written: 12 significant digits (a picometre on a metre; the
-// rounding of sums and halves in doubles left out), -0 as 0.
-std::string metres(double v) { return fmt::format("{:.12g}", v + 0.0); }
 
 }  // namespace
 
@@ -206,28 +203,29 @@ Arena read_room(std::string_view text, const std::string &file) {
 }
 
 std::string write_room(const Arena &arena) {
-  std::string text = fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
-                                 arena.obstacles.size() == 1 ? "" : "s", metres(arena.width_m()),
-                                 metres(arena.height_m()));
+  std::string text =
+      fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
+                  arena.obstacles.size() == 1 ? "" : "s", metres_text(arena.width_m()), metres_text(arena.height_m()));
   if (!arena.name.empty()) fmt::format_to(std::back_inserter(text), "name {}\n", arena.name);
-  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres(arena.x_min_m), metres(arena.x_max_m),
-                 metres(arena.y_min_m), metres(arena.y_max_m));
+  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres_text(arena.x_min_m),
+                 metres_text(arena.x_max_m), metres_text(arena.y_min_m), metres_text(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
     if (o.axis_aligned()) {
       const auto b = o.bounds();
-      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres(b[0]), metres(b[1]), metres(b[2]),
-                     metres(b[3]));
+      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
+                     metres_text(b[2]), metres_text(b[3]));
     } else {
       const auto l = o.centre_line();
-      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", metres(l[0]), metres(l[1]), metres(l[2]),
-                     metres(l[3]), metres(l[4]));
+      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", metres_text(l[0]), metres_text(l[1]),
+                     metres_text(l[2]), metres_text(l[3]), metres_text(l[4]));
     }
   }
   for (const ArenaPose &s : arena.starts) {
-    fmt::format_to(std::back_inserter(text), "start {} {} {}\n", metres(s.x_m), metres(s.y_m), degrees_of(s.yaw_rad));
+    fmt::format_to(std::back_inserter(text), "start {} {} {}\n", metres_text(s.x_m), metres_text(s.y_m),
+                   degrees_of(s.yaw_rad));
   }
   for (const ArenaPoint &g : arena.goals) {
-    fmt::format_to(std::back_inserter(text), "goal {} {}\n", metres(g.x_m), metres(g.y_m));
+    fmt::format_to(std::back_inserter(text), "goal {} {}\n", metres_text(g.x_m), metres_text(g.y_m));
   }
   return text;
 }

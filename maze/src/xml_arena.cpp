@@ -1,5 +1,7 @@
 #include "maze/xml_arena.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -7,11 +9,10 @@
 #include <numbers>
 #include <optional>
 
-#include <fmt/format.h>
-
 #include "common/error.hpp"
 #include "common/xml_text.hpp"
 #include "maze/maze.hpp"
+#include "metres_text.hpp"
 #include "xml_source.hpp"
 
 namespace maze {
@@ -42,10 +43,6 @@ std::vector<XmlWall> read_walls(const xml::Element &world, const Source &src) {
   }
   return walls;
 }
-
-// A length or coordinate as written: 12 significant digits (a picometre on a metre; the
-// rounding of sums and halves in doubles left out), -0 as 0.
-std::string metres(double v) { return fmt::format("{:.12g}", v + 0.0); }
 
 }  // namespace
 
@@ -120,27 +117,27 @@ std::string write_xml_arena(const Arena &arena) {
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<!-- maze_mapper arena: {} obstacle{}, boundary {} x {} m -->\n<world{}>\n"
       "  <boundary xs=\"{}\" xe=\"{}\" ys=\"{}\" ye=\"{}\"/>\n",
-      arena.obstacles.size(), arena.obstacles.size() == 1 ? "" : "s", metres(arena.width_m()),
-      metres(arena.height_m()),
+      arena.obstacles.size(), arena.obstacles.size() == 1 ? "" : "s", metres_text(arena.width_m()),
+      metres_text(arena.height_m()),
       arena.name.empty() ? std::string() : fmt::format(" name=\"{}\"", common::xml_escaped(arena.name)),
-      metres(arena.x_min_m), metres(arena.x_max_m), metres(arena.y_min_m), metres(arena.y_max_m));
+      metres_text(arena.x_min_m), metres_text(arena.x_max_m), metres_text(arena.y_min_m), metres_text(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
     const auto l = o.centre_line();
     fmt::format_to(std::back_inserter(text), "  <wall x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" width=\"{}\"/>\n",
-                   metres(l[0]), metres(l[1]), metres(l[2]), metres(l[3]), metres(l[4]));
+                   metres_text(l[0]), metres_text(l[1]), metres_text(l[2]), metres_text(l[3]), metres_text(l[4]));
   }
   if (!arena.starts.empty()) {
     text += "  <startPositions>\n";
     for (const ArenaPose &s : arena.starts) {
-      fmt::format_to(std::back_inserter(text), "    <pos x=\"{}\" y=\"{}\" theta=\"{}\"/>\n", metres(s.x_m),
-                     metres(s.y_m), s.yaw_rad);
+      fmt::format_to(std::back_inserter(text), "    <pos x=\"{}\" y=\"{}\" theta=\"{}\"/>\n", metres_text(s.x_m),
+                     metres_text(s.y_m), s.yaw_rad);
     }
     text += "  </startPositions>\n";
   }
   int id = 0;
   for (const ArenaPoint &g : arena.goals) {
-    fmt::format_to(std::back_inserter(text), "  <goal id=\"{}\" x=\"{}\" y=\"{}\"/>\n", id++, metres(g.x_m),
-                   metres(g.y_m));
+    fmt::format_to(std::back_inserter(text), "  <goal id=\"{}\" x=\"{}\" y=\"{}\"/>\n", id++, metres_text(g.x_m),
+                   metres_text(g.y_m));
   }
   text += "</world>\n";
   return text;

@@ -7,6 +7,8 @@
 
 namespace common {
 
+inline constexpr double kRadPerDeg = std::numbers::pi / 180.0;  // degrees * kRadPerDeg = radians
+
 // Angle wrapped into (-pi, pi].
 inline double wrap_angle_rad(double angle_rad) {
   constexpr double two_pi = 2.0 * std::numbers::pi;

@@ -64,6 +64,11 @@ class InputError : public std::runtime_error {
   std::string message_;
 };
 
+// Throws InputError(message) unless `ok`: a check of a user's value, in one line.
+inline void require_input(bool ok, const std::string &message) {
+  if (!ok) throw InputError(message);
+}
+
 // Something the program itself could not do (a write failed, a robot made no progress).
 // Exit status 1.
 class RuntimeFailure : public std::runtime_error {

@@ -5,16 +5,14 @@
 #include <cmath>
 #include <limits>
 
+#include "contact_tolerances.hpp"
+
 namespace maze::sim {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kMaxBucketsPerSide = 64;
 constexpr double kMinBucket_m = 0.1;
-// An overlap smaller than this is rounding, not a collision (as WallGrid's).
-constexpr double kSlop_m = 1e-12;
-constexpr double kCoreMargin_m = 1e-9;
 
 // Narrows [t_in, t_out] to where o + t d is within [lo, hi]; records whether this slab set
 // t_in. False when the ray is parallel to the slab and outside it.

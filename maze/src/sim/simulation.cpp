@@ -66,8 +66,6 @@ namespace webots::embedded {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr int kLeft = 0;
-constexpr int kRight = 1;
 // Salts the seed of the fault draws so they are independent of the noise's.
 constexpr std::uint64_t kFaultSalt = 0x6a09e667f3bcc909ULL;
 
@@ -157,10 +155,10 @@ void Simulation::set_up() {
   for (int i = 0; i < static_cast<int>(profile_.lidars.size()); ++i) {
     add_device<Lidar>(profile_.lidars[static_cast<std::size_t>(i)].name, Kind::lidar, i);
   }
-  add_device<Motor>(profile_.left_motor, Kind::motor, kLeft);
-  add_device<Motor>(profile_.right_motor, Kind::motor, kRight);
-  add_device<PositionSensor>(profile_.left_encoder, Kind::encoder, kLeft);
-  add_device<PositionSensor>(profile_.right_encoder, Kind::encoder, kRight);
+  add_device<Motor>(profile_.left_motor, Kind::motor, kLeftWheel);
+  add_device<Motor>(profile_.right_motor, Kind::motor, kRightWheel);
+  add_device<PositionSensor>(profile_.left_encoder, Kind::encoder, kLeftWheel);
+  add_device<PositionSensor>(profile_.right_encoder, Kind::encoder, kRightWheel);
   add_device<InertialUnit>(profile_.imu, Kind::imu, 0);
   add_device<GPS>(profile_.gps, Kind::gps, 0);
   for (int i = 0; i < static_cast<int>(profile_.bumpers.size()); ++i) {

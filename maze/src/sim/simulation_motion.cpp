@@ -9,11 +9,6 @@
 
 namespace webots::embedded {
 
-namespace {
-constexpr int kLeft = 0;
-constexpr int kRight = 1;
-}  // namespace
-
 double Simulation::wheel_rate_rad_s(const Wheel &wheel) const {
   if (std::isinf(wheel.target_rad)) return wheel.velocity_rad_s;
   // Position control: towards the target at up to the set velocity, stopping on it.
@@ -32,13 +27,13 @@ void Simulation::advance(double dt_s) {
   // target, so a step is at most three pieces of constant rates, each an exact arc.
   double left_s = dt_s;
   for (int piece = 0; piece < 3 && left_s > 0.0; ++piece) {
-    const double left_rate = wheel_rate_rad_s(wheels_[kLeft]);
-    const double right_rate = wheel_rate_rad_s(wheels_[kRight]);
-    const double to_left_s = time_to_target_s(wheels_[kLeft], left_rate);
-    const double to_right_s = time_to_target_s(wheels_[kRight], right_rate);
+    const double left_rate = wheel_rate_rad_s(wheels_[kLeftWheel]);
+    const double right_rate = wheel_rate_rad_s(wheels_[kRightWheel]);
+    const double to_left_s = time_to_target_s(wheels_[kLeftWheel], left_rate);
+    const double to_right_s = time_to_target_s(wheels_[kRightWheel], right_rate);
     const double h = std::min({left_s, to_left_s, to_right_s});
-    turn_wheel(wheels_[kLeft], left_rate, h, h == to_left_s);
-    turn_wheel(wheels_[kRight], right_rate, h, h == to_right_s);
+    turn_wheel(wheels_[kLeftWheel], left_rate, h, h == to_left_s);
+    turn_wheel(wheels_[kRightWheel], right_rate, h, h == to_right_s);
     move_body(left_rate, right_rate, h);
     left_s -= h;
   }

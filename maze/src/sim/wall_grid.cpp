@@ -6,16 +6,13 @@
 #include <limits>
 #include <optional>
 
+#include "contact_tolerances.hpp"
+
 namespace maze::sim {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kSmallestNormal = std::numeric_limits<double>::min();
-// An overlap smaller than this is rounding, not a collision.
-constexpr double kSlop_m = 1e-12;
-// disc_in_free_core's safety margin: far above rounding, far below any wall thickness.
-constexpr double kCoreMargin_m = 1e-9;
 
 // A ray (ox, oy) + t (dx, dy), with the inverses of its direction precomputed.
 struct Ray {

@@ -205,6 +205,8 @@ class Simulation {
   // body last left the previous box: inside it, a physics substep needs no push_out. The
   // pose only changes in advance(), so the box cannot go stale.
   std::optional<maze::sim::Box> free_centres_;
+  static constexpr int kLeftWheel = 0;  // wheels_[kLeftWheel]: the left motor and encoder
+  static constexpr int kRightWheel = 1;
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;

@@ -1,0 +1,22 @@
+#pragma once
+// Values and paths many test files use, defined once (the test files are also compiled
+// together, several to a translation unit, in the unity build: a name each file defined for
+// itself would clash).
+
+#include <limits>
+#include <numbers>
+#include <string>
+#include <string_view>
+
+#include "maze/maze.hpp"
+
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+inline constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+// Half a wall of the default thickness: 0.006 m.
+inline constexpr double kHalfWall_m = maze::kDefaultWallThickness_m / 2.0;
+
+// A world of tests/data/worlds/.
+inline std::string world_fixture(std::string_view name) {
+  return std::string(TEST_DATA_DIR) + "/worlds/" + std::string(name);
+}
