@@ -80,9 +80,11 @@ Motion RoomController::step(Action) {
 }
 
 bool RoomController::seen_occupied(std::size_t flat) const {
-  // Where the body has touched or been, its own observation stands over the echoes'.
-  if (body_observes_ && flat < contact_.size() && contact_[flat]) return true;
-  if (body_observes_ && flat < under_body_.size() && under_body_[flat]) return false;
+  // Where frontier's body has touched or been, its own observation stands over the echoes'.
+  if (body_observes_ && room_.strategy == RoomStrategy::frontier) {
+    if (flat < contact_.size() && contact_[flat]) return true;
+    if (flat < under_body_.size() && under_body_[flat]) return false;
+  }
   return map_.probability_at(flat) >= room_.free_below_p - 1e-9;
 }
 

@@ -21,7 +21,10 @@
 //              (an unobserved cell beside one seen free), drive the path, then turn a full
 //              turn there scanning. A frontier still unobserved after a visit that aimed at it
 //              is set aside. Ends `done` when no frontier is left, `incomplete` (with how many
-//              cells) when only set-aside or unreachable ones are.
+//              cells) when only set-aside or unreachable ones are. With a set-up whose
+//              nothing-seen marks nothing (the sonar cone) it first sweeps: legs onto
+//              unobserved ground and probes past cells the echoes closed (robot/room_sweep.cpp),
+//              the body's cover (free) and contacts (occupied) standing over the echoes'.
 //   wander     drive straight until a bump or a return ahead, back off back_off_m, turn a
 //              seeded random 90 ... 180 deg either way; until the time limit (`time_up`).
 //
@@ -114,8 +117,8 @@ class RoomController {
   void mark_under_body();
   // The body covers this cell: under_body_, and observed free the first time when body_observes_.
   void cover(std::size_t flat);
-  // p >= free_below_p, unless the body has covered the cell and body_observes_ (the body's
-  // own observation stands over the echoes').
+  // p >= free_below_p; frontier with body_observes_: a cell the body touched is, one it
+  // covered is not (the body's own observations stand over the echoes').
   bool seen_occupied(std::size_t flat) const;
   // Whether the line between two cells' centres crosses no cell seen occupied (besides `to`).
   bool sees(std::size_t from, std::size_t to) const;
