@@ -1,9 +1,9 @@
 // The room runs end to end in the embedded simulator: frontier maps the reachable free area of
 // the shipped arenas and of generated ones with the lidar, IR and sonar set-ups and never says
 // done when it did not; wavefront reaches its goal where one exists and says it cannot where
-// none does. About 7.5 s of CPU in all (the lidar's 20 arenas 3 s, the cones' 40 runs 3 s, the sonar's
-// sweeps 0.5 s), besides the acceptance suite's IR pie 40 runs (9 s) and the sonar in the two
-// floor-bounded shipped arenas (3 s).
+// none does. About 7.5 s of CPU in all (the lidar's 20 arenas 3 s, the cones' 40 runs 3 s,
+// the sonar's sweeps 0.5 s), besides the acceptance suite's IR pie 40 runs (9 s) and the
+// sonar in the two floor-bounded shipped arenas (3 s).
 
 #include <doctest/doctest.h>
 
