@@ -56,6 +56,15 @@ void add_score(Entries &e, const RoomSummary &s) {
                      s.reachable_free_observed, s.reachable_free),
          s.reachable_free);
   e.json_only("reachable_free_observed", s.reachable_free_observed);
+  if (s.sweep) {
+    e.both("sweep_legs", "body sweep",
+           fmt::format("{} legs onto unobserved ground ({} probes past cells the echoes closed); {} cells first "
+                       "observed by the body",
+                       s.sweep->legs, s.sweep->probes, s.sweep->body_observed),
+           s.sweep->legs);
+    e.json_only("sweep_probes", s.sweep->probes);
+    e.json_only("body_observed", s.sweep->body_observed);
+  }
 }
 
 }  // namespace

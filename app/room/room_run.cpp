@@ -293,6 +293,7 @@ RoomSummary summary_of(const robot::RoomController &c, robot::RoomEnding ending,
   summary.cells_x = spec.cells_x;
   summary.cells_y = spec.cells_y;
   summary.cell_m = spec.cell_m;
+  if (c.body_observes()) summary.sweep = RoomSummary::BodySweep{c.sweep_legs(), c.probe_legs(), c.map().body_observed()};
   return summary;
 }
 

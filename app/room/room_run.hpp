@@ -66,6 +66,12 @@ struct RoomSummary {
   std::size_t cells_right = 0, cells_total = 0;  // thresholded map against the truth, every cell
   std::size_t observed_cells_right = 0, observed_cells = 0;
   std::size_t reachable_free = 0, reachable_free_observed = 0;
+  // Set-ups whose nothing-seen marks nothing (the sonar cone): frontier's sweep legs, the
+  // probes among them, and the cells first observed by the robot's body.
+  struct BodySweep {
+    std::size_t legs = 0, probes = 0, body_observed = 0;
+  };
+  std::optional<BodySweep> sweep;
   double observed_share() const {
     return reachable_free == 0 ? 1.0 : static_cast<double>(reachable_free_observed) / static_cast<double>(reachable_free);
   }

@@ -45,6 +45,7 @@ RoomController::RoomController(webots::Robot &robot, const ControllerOptions &op
       position_(room.start) {
   chassis_.enable(time_step_ms_);
   senses_.enable(time_step_ms_);
+  body_observes_ = senses_.nothing_seen_marks_nothing();
 }
 
 double RoomController::time_s() const { return robot_.getTime(); }
@@ -78,6 +79,21 @@ Motion RoomController::step(Action) {
   return Motion::ok;
 }
 
+bool RoomController::seen_occupied(std::size_t flat) const {
+  // Where frontier's body has touched or been, its own observation stands over the echoes'.
+  if (body_observes_ && room_.strategy == RoomStrategy::frontier) {
+    if (flat < contact_.size() && contact_[flat]) return true;
+    if (flat < under_body_.size() && under_body_[flat]) return false;
+  }
+  return map_.probability_at(flat) >= room_.free_below_p - 1e-9;
+}
+
+void RoomController::cover(std::size_t flat) {
+  if (under_body_[flat]) return;
+  under_body_[flat] = true;
+  if (body_observes_) map_.observe_by_body(flat);
+}
+
 void RoomController::mark_under_body() {
   if (under_body_.size() != map_.size()) under_body_.assign(map_.size(), false);
   const double r = room_.body_radius_m;
@@ -90,11 +106,11 @@ void RoomController::mark_under_body() {
     for (int i = std::min(a.i, here.i); i <= std::max(b.i, here.i); ++i) {
       const Point c = map_.centre_of({i, j});
       if (map_.contains({i, j}) && std::hypot(c.x_m - position_.x_m, c.y_m - position_.y_m) <= r) {
-        under_body_[map_.index({i, j})] = true;
+        cover(map_.index({i, j}));
       }
     }
   }
-  under_body_[map_.index(here)] = true;
+  cover(map_.index(here));
   // The cells the robot's centre has driven through (within a quarter cell of their centre):
   // the body has been there, so the way back through them is clear whatever the map says
   // of their neighbours since.
@@ -181,7 +197,7 @@ std::vector<bool> RoomController::grown_obstacles(const std::vector<bool> &occup
 std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
   std::vector<bool> out(map_.size(), false);
   for (std::size_t n = 0; n < map_.size(); ++n) {
-    out[n] = map_.probability_at(n) >= room_.free_below_p - 1e-9;
+    out[n] = seen_occupied(n);
   }
   std::vector<bool> grown = grown_obstacles(out);
   if (unknown_blocked) {

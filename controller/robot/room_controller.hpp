@@ -21,7 +21,10 @@
 //              (an unobserved cell beside one seen free), drive the path, then turn a full
 //              turn there scanning. A frontier still unobserved after a visit that aimed at it
 //              is set aside. Ends `done` when no frontier is left, `incomplete` (with how many
-//              cells) when only set-aside or unreachable ones are.
+//              cells) when only set-aside or unreachable ones are. With a set-up whose
+//              nothing-seen marks nothing (the sonar cone) it first sweeps: legs onto
+//              unobserved ground and probes past cells the echoes closed (robot/room_sweep.cpp),
+//              the body's cover (free) and contacts (occupied) standing over the echoes'.
 //   wander     drive straight until a bump or a return ahead, back off back_off_m, turn a
 //              seeded random 90 ... 180 deg either way; until the time limit (`time_up`).
 //
@@ -102,11 +105,21 @@ class RoomController {
   const RoomSenses &senses() const { return senses_; }
   // frontier: cells still unobserved beside seen-free ones when it ended.
   std::size_t frontier_left() const { return frontier_left_; }
+  // Whether the ground the body covers is observed free (sensing::RoomMap::observe_by_body).
+  bool body_observes() const { return body_observes_; }
+  // frontier's sweep legs (onto unobserved ground), and how many of them were probes.
+  std::size_t sweep_legs() const { return sweep_legs_; }
+  std::size_t probe_legs() const { return probe_legs_; }
 
  private:
   Motion step(Action action);
   void update_pose();
   void mark_under_body();
+  // The body covers this cell: under_body_, and observed free the first time when body_observes_.
+  void cover(std::size_t flat);
+  // p >= free_below_p; frontier with body_observes_: a cell the body touched is, one it
+  // covered is not (the body's own observations stand over the echoes').
+  bool seen_occupied(std::size_t flat) const;
   // Whether the line between two cells' centres crosses no cell seen occupied (besides `to`).
   bool sees(std::size_t from, std::size_t to) const;
   // Cells within view_cells steps (over cells not seen occupied) of a frontier cell: their
@@ -143,6 +156,35 @@ class RoomController {
   Motion drive_path_corners(bool *stopped);
   // Straight back by back_off_m.
   Motion back_off();
+  // The body sweep (robot/room_sweep.cpp; set-ups whose nothing-seen marks nothing): a leg
+  // from a cell reached through seen-free cells (`from`) onto the frontier cell `aim`, ending
+  // at `end`: aim's centre and on straight over unobserved cells the body clears (at most
+  // kSweepReach_m), or, when the body cannot stand on aim, the point nearest `from` whose
+  // body covers aim's centre.
+  struct SweepLeg {
+    std::size_t from = 0, aim = 0;
+    mapping::Point end;
+  };
+  // The leg to the nearest unobserved cell not `swept` beside one covered or seen free (by
+  // `steps` from the robot); none when no such cell is in the body's reach.
+  std::optional<SweepLeg> sweep_leg(const std::vector<std::int32_t> &steps, const std::vector<bool> &swept) const;
+  // When none is: a probe, from the nearest cell at the edge of the ground reached, straight
+  // on over cells the map closes (seen occupied by echoes, or grown) to the first unobserved
+  // cell within kSweepReach_m and on over unobserved ones; stopped only by a touch or a wedge.
+  std::optional<SweepLeg> probe_leg(const std::vector<std::int32_t> &steps, const std::vector<bool> &swept) const;
+  // The last cell from c on, a step d at a time, while `on` holds and the body clears the edge.
+  sensing::RoomCell run_end(sensing::RoomCell c, std::pair<int, int> d, const std::function<bool(std::size_t)> &on) const;
+  bool covered_or_seen_free(std::size_t flat) const;
+  // Drives to leg.from through `blocked`, then to leg.end; a touch or a wedge stops the leg
+  // and the robot backs off.
+  Motion sweep(const SweepLeg &leg, const std::vector<bool> &blocked);
+  // Whether a body centred at p overlaps no cell seen occupied and stays within the grid;
+  // only the latter.
+  bool body_clear_at(mapping::Point p) const;
+  bool body_clear_at_edge(mapping::Point p) const;
+  // A sweep leg stopped by a touch or a wedge: the cell just ahead of the body's rim is
+  // observed occupied (RoomMap::observe_contact) and stays so for planning.
+  void mark_contact();
   RoomEnding run_wander();
 
   webots::Robot &robot_;
@@ -164,6 +206,9 @@ class RoomController {
   std::vector<bool> under_body_;  // cells the body has stood on: free whatever the map says
   std::vector<bool> driven_;      // cells the centre drove through: never grown over (frontier)
   std::size_t frontier_left_ = 0;
+  std::vector<bool> contact_;     // cells a touch or a wedge of a sweep leg marked (body_observes_)
+  bool body_observes_ = false;
+  std::size_t sweep_legs_ = 0, probe_legs_ = 0;    // the ground the body covers is observed free (RoomMap::observe_by_body)
   std::string message_;
 };
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <utility>
 
 #include <fmt/format.h>
@@ -147,10 +148,26 @@ RoomEnding RoomController::run_frontier() {
   std::vector<std::uint8_t> attempts(map_.size(), 0);  // visits aimed at each frontier cell
   const int view_cells = std::max(1, static_cast<int>(std::floor(room_.view_m / map_.cell_m())));
   if (const Motion m = look_around(); m != Motion::ok) return finish(m);
+  std::vector<bool> swept(map_.size(), false);  // frontier cells a sweep leg left unobserved
   for (;;) {
     const Frontier found = find_frontier(map_, set_aside);
     const std::vector<bool> &frontier = found.cells;
     frontier_left_ = found.open + found.aside;
+    const std::size_t here = map_.index(robot_cell());
+    const std::vector<bool> blocked = obstacles(true);
+    const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, here);
+    if (body_observes_) {
+      // Sweep the frontier the body can cover before looking from afar: a look observes only
+      // what echoes, a sweep every cell the body goes over.
+      std::optional<SweepLeg> leg = sweep_leg(steps, swept);
+      if (!leg && (leg = probe_leg(steps, swept))) ++probe_legs_;
+      if (leg) {
+        ++sweep_legs_;
+        if (const Motion m = sweep(*leg, blocked); m != Motion::ok) return finish(m);
+        if (!covered_or_seen_free(leg->aim)) swept[leg->aim] = true;
+        continue;
+      }
+    }
     if (found.open == 0) {
       if (found.aside == 0) {
         message_ = "no frontier left";
@@ -160,11 +177,8 @@ RoomEnding RoomController::run_frontier() {
                              found.aside == 1 ? "" : "s");
       return RoomEnding::incomplete;
     }
-    const std::size_t here = map_.index(robot_cell());
-    const std::vector<bool> blocked = obstacles(true);
     std::vector<std::size_t> nearest_frontier;
-    const std::size_t target =
-        frontier_target(frontier, view_cells, attempts, plan::steps_from(g, blocked, here), nearest_frontier);
+    const std::size_t target = frontier_target(frontier, view_cells, attempts, steps, nearest_frontier);
     if (target == map_.size()) {
       for (std::size_t n = 0; n < map_.size(); ++n) set_aside[n] = set_aside[n] || frontier[n];
       continue;  // every frontier out of reach: the next round ends

@@ -96,6 +96,13 @@ void RoomSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts) 
 
 void RoomSenses::enable(int time_step_ms) { devices_.enable(time_step_ms); }
 
+bool RoomSenses::nothing_seen_marks_nothing() const {
+  if (sensing_ != RoomSensing::cone) return false;
+  return std::any_of(devices_.range_sensors.begin(), devices_.range_sensors.end(), [](const webots::DistanceSensor *d) {
+    return d->getType() == webots::DistanceSensor::SONAR;
+  });
+}
+
 void RoomSenses::read_ranges(mapping::Point centre, double yaw_rad) {
   read_range_sensors(devices_.range_sensors, options_.sensing.ranges, centre, yaw_rad, readings_);
   clearance_ahead_m_ = std::numeric_limits<double>::infinity();

@@ -41,6 +41,9 @@ class RoomSenses {
   // The last scan as map-log reads it (bump and depth set-ups).
   const sensing::LogStep &log_step() const { return log_step_; }
   RoomSensing sensing() const { return sensing_; }
+  // Whether a reading of nothing seen marks nothing (the cone set-up with a sonar, whose echo
+  // may be lost at a slant): then the ground the body covers is what observes open floor.
+  bool nothing_seen_marks_nothing() const;
 
  private:
   void read_ranges(mapping::Point centre, double yaw_rad);

@@ -145,6 +145,13 @@ int RoomMarks::level_of(const RoomMap &map, RoomCell c) const {
   return l == kUnmarked ? -1 : l;
 }
 
+void RoomMap::observe_by_body(std::size_t flat) {
+  if (unobserved_at(flat)) ++body_observed_;
+  grid_.log_odds[flat] = model_.update_free(grid_.log_odds[flat]);
+}
+
+void RoomMap::observe_contact(std::size_t flat) { grid_.log_odds[flat] = model_.update_occupied(grid_.log_odds[flat]); }
+
 std::size_t RoomMarks::apply(RoomMap &map) {
   const mapping::SensorModel &model = map.model();
   const double increments[2] = {model.increment_for(level_p_[0]), model.increment_for(level_p_[1])};

@@ -25,6 +25,11 @@
 //          nothing.
 //   bump, depth  the homework's numbers exactly: map-log's apply_log_step on this grid (base
 //          10: +5 / -0.368 / -0.176), so `map-log` on a run's trace gives the run's grid.
+//
+// The body: for a set-up whose nothing-seen marks nothing (the sonar cone), a cell the
+// robot's body has covered is observed free, as the bump homework's robot cell is (the robot
+// stood there): the first step the body covers it, one free update (observe_by_body); a
+// touch or a wedge, one occupied update of the cell ahead of the body (observe_contact).
 
 #include <cstddef>
 #include <cstdint>
@@ -106,6 +111,14 @@ class RoomMap {
   // Never updated: still exactly l(prior).
   bool unobserved_at(std::size_t flat) const { return grid_.log_odds[flat] == model_.prior_log_odds(); }
 
+  // The body has covered this cell for the first time: one free update l <- l + l(p_free) -
+  // l(prior) (clamped when the model clamps). Counts the cells no reading had observed.
+  void observe_by_body(std::size_t flat);
+  // The body touched something in this cell: one occupied update (l(p_occ) - l(prior)).
+  void observe_contact(std::size_t flat);
+  // Cells whose first observation was the body's.
+  std::size_t body_observed() const { return body_observed_; }
+
   // The grid as map-log holds it, and the map-log options with this grid's boundary, cells
   // and prior in base 10 (the bump and depth set-ups' homework numbers).
   const LogGrid &log_grid() const { return grid_; }
@@ -119,6 +132,7 @@ class RoomMap {
   const mapping::SensorModel &model_;
   mapping::GridGeometry geometry_;
   LogGrid grid_;
+  std::size_t body_observed_ = 0;
 };
 
 // One scan's marks: per cell the strongest level (0 strongest). apply() gives each marked
