@@ -24,6 +24,8 @@ using sensing::RoomCell;
 
 // A planned leg (on the grown map) stops only when a return ahead is this close to the body.
 constexpr double kTouchMargin_m = 0.03;
+// A wavefront ending: this many legs in a row stopped by a touch without touching a new cell.
+constexpr int kMaxBareStops = 3;
 
 int time_step_of(webots::Robot &robot, const MotionOptions &m) {
   return m.time_step_ms > 0 ? m.time_step_ms : static_cast<int>(std::lround(robot.getBasicTimeStep()));
@@ -80,10 +82,11 @@ Motion RoomController::step(Action) {
 }
 
 bool RoomController::seen_occupied(std::size_t flat) const {
-  // Where frontier's body has touched or been, its own observation stands over the echoes'.
-  if (body_observes_ && room_.strategy == RoomStrategy::frontier) {
-    if (flat < contact_.size() && contact_[flat]) return true;
-    if (flat < under_body_.size() && under_body_[flat]) return false;
+  // Where the body has touched (a frontier sweep leg, a wavefront leg) or frontier's body has
+  // been, its own observation stands over the echoes'.
+  if (flat < contact_.size() && contact_[flat]) return true;
+  if (body_observes_ && room_.strategy == RoomStrategy::frontier && flat < under_body_.size() && under_body_[flat]) {
+    return false;
   }
   return map_.probability_at(flat) >= room_.free_below_p - 1e-9;
 }
@@ -274,6 +277,7 @@ RoomEnding RoomController::run_wavefront() {
   }
   const std::size_t goal = map_.index(*goal_cell);
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
+  int bare_stops = 0;  // legs stopped by a touch since the last one that touched a new cell
   for (;;) {
     const std::size_t here = map_.index(robot_cell());
     if (here == goal) {
@@ -284,8 +288,8 @@ RoomEnding RoomController::run_wavefront() {
     }
     std::vector<bool> blocked = obstacles(false);
     // The growth keeps the way clear of the body; like the robot's own cell, the goal's is an
-    // end of the way: blocked only when the map says it is itself an obstacle.
-    blocked[goal] = map_.probability_at(goal) >= room_.free_below_p - 1e-9;
+    // end of the way: blocked only when the map says it is itself an obstacle (or it was touched).
+    blocked[goal] = seen_occupied(goal);
     wave_ = plan::wave_from(g, blocked, goal);
     const auto path = plan::descend(g, wave_, here);
     if (!path) {
@@ -297,9 +301,24 @@ RoomEnding RoomController::run_wavefront() {
     path_ = *path;
     // The closest point of the path ahead: its next cell.
     bool stopped = false;
-    if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[1])), StopWhen::touching, &stopped); m != Motion::ok) {
-      return finish(m);
+    Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[1])), StopWhen::touching, &stopped);
+    if (m == Motion::no_progress) {
+      stopped = true;  // wedged on what the map had not shown: as a touch
+      m = Motion::ok;
     }
+    if (m != Motion::ok) return finish(m);
+    // A leg that ends in its cell has done its part, touching or not.
+    if (!stopped || map_.index(robot_cell()) == path_[1]) continue;
+    // A touch the map did not show short of the cell: the cell just ahead is occupied for
+    // planning; back off and plan again. Stops that touch no new cell cannot change the plan.
+    bare_stops = mark_contact() ? 0 : bare_stops + 1;
+    if (bare_stops >= kMaxBareStops) {
+      message_ = fmt::format("no progress to the goal ({:g}, {:g}): stopped by a touch {} times at ({:.2f}, {:.2f}) "
+                             "and learned nothing new",
+                             room_.goal->x_m, room_.goal->y_m, bare_stops, position_.x_m, position_.y_m);
+      return RoomEnding::no_progress;
+    }
+    if (const Motion b = back_off(); b != Motion::ok && b != Motion::no_progress) return finish(b);
   }
 }
 

@@ -117,8 +117,8 @@ class RoomController {
   void mark_under_body();
   // The body covers this cell: under_body_, and observed free the first time when body_observes_.
   void cover(std::size_t flat);
-  // p >= free_below_p; frontier with body_observes_: a cell the body touched is, one it
-  // covered is not (the body's own observations stand over the echoes').
+  // p >= free_below_p; a cell the body touched is (mark_contact), and with frontier and
+  // body_observes_ one it covered is not (the body's own observations stand over the echoes').
   bool seen_occupied(std::size_t flat) const;
   // Whether the line between two cells' centres crosses no cell seen occupied (besides `to`).
   bool sees(std::size_t from, std::size_t to) const;
@@ -182,9 +182,10 @@ class RoomController {
   // only the latter.
   bool body_clear_at(mapping::Point p) const;
   bool body_clear_at_edge(mapping::Point p) const;
-  // A sweep leg stopped by a touch or a wedge: the cell just ahead of the body's rim is
-  // observed occupied (RoomMap::observe_contact) and stays so for planning.
-  void mark_contact();
+  // A sweep or wavefront leg stopped by a touch or a wedge: the cell just ahead of the body's
+  // rim is observed occupied (RoomMap::observe_contact) and stays so for planning; false when
+  // that cell was touched before (or is the robot's own).
+  bool mark_contact();
   RoomEnding run_wander();
 
   webots::Robot &robot_;
@@ -206,7 +207,7 @@ class RoomController {
   std::vector<bool> under_body_;  // cells the body has stood on: free whatever the map says
   std::vector<bool> driven_;      // cells the centre drove through: never grown over (frontier)
   std::size_t frontier_left_ = 0;
-  std::vector<bool> contact_;     // cells a touch or a wedge of a sweep leg marked (body_observes_)
+  std::vector<bool> contact_;     // cells a touch or a wedge of a sweep or wavefront leg marked
   bool body_observes_ = false;
   std::size_t sweep_legs_ = 0, probe_legs_ = 0;    // the ground the body covers is observed free (RoomMap::observe_by_body)
   std::string message_;

@@ -157,16 +157,17 @@ Motion RoomController::sweep(const SweepLeg &leg, const std::vector<bool> &block
   return b == Motion::no_progress ? Motion::ok : b;
 }
 
-void RoomController::mark_contact() {
+bool RoomController::mark_contact() {
   const double yaw = drive_.yaw_rad();
   const double d = room_.body_radius_m + kContactAhead_m;
   const auto c = map_.cell_at({position_.x_m + d * std::cos(yaw), position_.y_m + d * std::sin(yaw)});
-  if (!c || *c == robot_cell()) return;
+  if (!c || *c == robot_cell()) return false;
   const std::size_t n = map_.index(*c);
   if (contact_.size() != map_.size()) contact_.assign(map_.size(), false);
-  if (contact_[n]) return;
+  if (contact_[n]) return false;
   contact_[n] = true;
   map_.observe_contact(n);
+  return true;
 }
 
 }  // namespace robot
