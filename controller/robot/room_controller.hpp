@@ -208,8 +208,8 @@ class RoomController {
   std::vector<bool> driven_;      // cells the centre drove through: never grown over (frontier)
   std::size_t frontier_left_ = 0;
   std::vector<bool> contact_;     // cells a touch or a wedge of a sweep or wavefront leg marked
-  bool body_observes_ = false;
-  std::size_t sweep_legs_ = 0, probe_legs_ = 0;    // the ground the body covers is observed free (RoomMap::observe_by_body)
+  bool body_observes_ = false;  // the ground the body covers is observed free (RoomMap::observe_by_body)
+  std::size_t sweep_legs_ = 0, probe_legs_ = 0;  // frontier's sweep legs, and the probes among them
   std::string message_;
 };
 
