@@ -16,7 +16,7 @@ failures=0
 check() {  # world walls algorithm...
   world=$1 walls=$2
   shift 2
-  if ! "$program" mms "$world" --quiet --walls "$walls" --time-limit 120 -- "$@" > "$work/out" 2>&1; then
+  if ! "$program" mms "$world" --quiet --walls "$walls" --wall-limit 120 -- "$@" > "$work/out" 2>&1; then
     echo "FAILED: $world --walls $walls -- $*"
     grep -E '^(end|goal|score):' "$work/out" || tail -5 "$work/out"
     failures=$((failures + 1))
@@ -46,7 +46,7 @@ done
 for walls in truth sensed; do
   for algorithm in python cpp; do
     if [ "$algorithm" = python ]; then set -- $python_floodfill; else set -- "$cpp_floodfill"; fi
-    if ! "$program" batch "$work/generated" --jobs 2 --walls "$walls" --time-limit 120 -- "$@" > "$work/batch" 2>&1; then
+    if ! "$program" batch "$work/generated" --jobs 2 --walls "$walls" --wall-limit 120 -- "$@" > "$work/batch" 2>&1; then
       echo "FAILED: batch of $generated generated mazes, --walls $walls, $algorithm"
       cat "$work/batch"
       failures=$((failures + 1))

@@ -17,9 +17,9 @@ worlds=$3
   -o "$dir/out" > "$dir/run.out" || fail "the run failed"
 page="$dir/out/replay.html"
 self_contained "$page"
-steps=$(sed -n 's/^steps *//p' "$dir/run.out")
+steps=$(sed -n 's/^steps: *//p' "$dir/run.out")
 load_page "file://$page" "at the end"
-grep -q '<dd id="summary-ending">goal reached: ' "$dir/dom.html" || fail "no summary ending"
+grep -q '<dd id="summary-end">goal reached (' "$dir/dom.html" || fail "no summary ending"
 grep -q "step $steps  t " "$dir/dom.html" || fail "the last frame is not step $steps"
 
 load_page "file://$page#frame=0" "at #frame=0"

@@ -4,15 +4,21 @@
 
 #include <doctest/doctest.h>
 
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "app/cli/commands.hpp"
 #include "app/run/run.hpp"
+#include "app/run/step_limit.hpp"
 #include "common/error.hpp"
 #include "maze/world.hpp"
+#include "cli_runner.hpp"
+#include "test_values.hpp"
 
 namespace {
 
@@ -114,4 +120,34 @@ TEST_CASE("run command line: --start pos:N and --start random, the latter by --s
       CHECK(e.diagnostic() == std::string("error: --start pos:N needs N = 1, 2, ... (got '") + bad + "')");
     }
   }
+}
+
+TEST_CASE("run command line: --time-limit is simulated seconds, more than 0; inf is no limit") {
+  CHECK(parse_run({"--time-limit", "2.5"}).time_limit_s == std::optional<double>{2.5});
+  CHECK(parse_run({"--time-limit", "inf"}).time_limit_s == std::optional<double>{kInf});
+  for (const char *bad : {"0", "-1"}) {
+    try {
+      parse_run({"--time-limit", bad});
+      FAIL("no error for ", bad);
+    } catch (const common::InputError &e) {
+      CHECK(e.diagnostic() == fmt::format("error: --time-limit must be more than 0 simulated seconds (got {})", bad));
+    }
+  }
+}
+
+TEST_CASE("steps_within: the control steps a time limit allows, at least one, saturating") {
+  CHECK(app::steps_within(2.0, 32) == 62);
+  CHECK(app::steps_within(0.001, 32) == 1);
+  CHECK(app::steps_within(9.3e9, 32) == 290625000000);
+  CHECK(app::steps_within(1e300, 32) == std::numeric_limits<std::int64_t>::max());
+  CHECK(app::steps_within(kInf, 32) == std::numeric_limits<std::int64_t>::max());
+}
+
+TEST_CASE("a run stopped by --time-limit ends as planned and says so; a huge limit changes nothing") {
+  const test_cli::Ran timed = test_cli::run({"run", std::string(WORLDS_DIR) + "/lab4x4.txt", "--quiet", "--time-limit", "2"});
+  CHECK(timed.status == 0);
+  CHECK(timed.out.find("end: max steps (--time-limit 2 s of simulated time)\nsteps: 62\n") != std::string::npos);
+  const test_cli::Ran whole = test_cli::run({"run", std::string(WORLDS_DIR) + "/lab4x4.txt", "--quiet", "--time-limit", "inf"});
+  CHECK(whole.status == 0);
+  CHECK(whole.out.find("end: done\n") != std::string::npos);
 }

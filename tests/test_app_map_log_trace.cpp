@@ -283,11 +283,11 @@ TEST_CASE("room --model depth: map-log on the run's trace.csv gives the run's gr
   };
   for (const Convention &c : conventions) {
     const test_cli::TempDir dir("room_depth");
-    std::vector<std::string> room{"room", world, "--model", "depth", "--strategy", "wander", "--time", "20",
+    std::vector<std::string> room{"room", world, "--model", "depth", "--strategy", "wander", "--time-limit", "20",
                                   "--quiet", "-o", (dir.path / "run").string()};
     room.insert(room.end(), c.room.begin(), c.room.end());
     const std::string summary = run_cli(room);
-    CHECK((c.room.empty() || summary.find("; depth ") != std::string::npos));
+    CHECK((c.room.empty() || summary.find("\ndepth: ") != std::string::npos));
     // The readings land where the walls are: most observed cells right against the truth
     // (about 83 % after 20 s of wander, whichever convention; read wrongly, the walls move).
     const std::size_t at = summary.find("; observed ");

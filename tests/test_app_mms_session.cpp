@@ -30,14 +30,14 @@ namespace fs = std::filesystem;
 const std::string kScripts = std::string(TEST_DATA_DIR) + "/mms/";
 
 app::MmsRun run_script(const std::string &world, const std::string &script, app::MmsWalls walls,
-                       double time_limit_s = 20.0) {
+                       double wall_limit_s = 20.0) {
   app::RunOptions options;
   options.world = std::string(WORLDS_DIR) + "/" + world;
   options.output.quiet = true;
   app::MmsOptions mms;
   mms.command = {"sh", kScripts + script};
   mms.walls = walls;
-  mms.time_limit_s = time_limit_s;
+  mms.wall_limit_s = wall_limit_s;
   std::ostringstream out;
   return app::run_mms_world(options, mms, out);
 }
@@ -87,7 +87,7 @@ TEST_CASE("mms: --until goal ends an algorithm that never exits, once it stands 
 }
 
 TEST_CASE("mms: misbehaving algorithms end the run with their reason, their process killed and reaped") {
-  SUBCASE("hangs: the time limit, its sleeping child killed too") {
+  SUBCASE("hangs: the wall limit, its sleeping child killed too") {
     const std::string pid_file = fs::temp_directory_path() / fmt::format("mms_hang_{}.pid", ::getpid());
     ::setenv("MMS_TEST_PIDFILE", pid_file.c_str(), 1);
     const auto started = std::chrono::steady_clock::now();
@@ -99,8 +99,8 @@ TEST_CASE("mms: misbehaving algorithms end the run with their reason, their proc
     REQUIRE_FALSE(sleeper.empty());
     for (int i = 0; i < 100 && running(sleeper); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     CHECK_FALSE(running(sleeper));
-    CHECK(run.mms.end == app::MmsEnd::time_limit);
-    CHECK(run.mms.message == "no end after 1 s (--time-limit), 1 lines");
+    CHECK(run.mms.end == app::MmsEnd::wall_limit);
+    CHECK(run.mms.message == "no end after 1 s (--wall-limit), 1 lines");
     CHECK(std::chrono::steady_clock::now() - started < std::chrono::seconds(10));
     REQUIRE(run.mms.exit);
     CHECK(run.mms.exit->signal == SIGKILL);
@@ -144,7 +144,7 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
   app::RunOptions options;
   app::MmsOptions mms;
   mms.command = {"sh", kScripts + "by_size.sh"};
-  mms.time_limit_s = 2.0;
+  mms.wall_limit_s = 2.0;
   const app::WorldList list = app::expand_worlds({WORLDS_DIR});
   const std::vector<app::MmsBatchItem> items = app::run_mms_batch(options, mms, list.worlds, 2, {}, nullptr);
   REQUIRE(items.size() == list.worlds.size());
@@ -155,7 +155,7 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
     const int width = item.run.summary.width;
     const app::MmsEnd end = item.run.mms.end;
     if (width == 4) CHECK(item.error == "failed: the algorithm ended (killed by signal 11 (SIGSEGV)) after 1 lines");
-    if (width == 8) CHECK(end == app::MmsEnd::time_limit);
+    if (width == 8) CHECK(end == app::MmsEnd::wall_limit);
     if (width == 16) CHECK(item.error == "protocol error: line 2 \"garbage from a confused mouse\": unknown command");
     if (width == 32) CHECK(item.error == "failed: the algorithm ended (exit status 3) after 1 lines");
     if (width == 6) CHECK(item.ok);
@@ -170,7 +170,7 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
 }
 
-TEST_CASE("mms --out: summary.json holds mms's stats and score, marks.txt the algorithm's marks") {
+TEST_CASE("mms --out: the files every run writes, summary.json with mms's stats and score, marks.txt the marks") {
   const fs::path dir = fs::temp_directory_path() / fmt::format("mms_out_{}", ::getpid());
   fs::remove_all(dir);
   app::RunOptions options;
@@ -190,7 +190,18 @@ TEST_CASE("mms --out: summary.json holds mms's stats and score, marks.txt the al
   CHECK(json.find("\"best_run_distance\": 4") != std::string::npos);
   CHECK(json.find("\"score\": 5.5") != std::string::npos);
   CHECK(json.find("\"goal\": \"reached\"") != std::string::npos);
-  CHECK(fs::exists(dir / "marks.txt"));
-  CHECK(fs::exists(dir / "map.png"));
+  CHECK(json.find("\"end\": ") != std::string::npos);
+  CHECK(json.find("\"sim_time_s\": ") != std::string::npos);
+  for (const char *name : {"marks.txt", "map.png", "truth.png", "map.pgm", "map.yaml", "trace.csv", "replay.html"}) {
+    INFO(name);
+    CHECK(fs::is_regular_file(dir / name));
+  }
+  // trace.csv: the rows where something happens (as for a run with the lidar), the last one
+  // the run's last step.
+  std::ifstream trace(dir / "trace.csv");
+  std::string line, last;
+  while (std::getline(trace, line)) last = line;
+  const std::string last_step = last.substr(0, last.find(','));
+  CHECK(json.find(fmt::format("\"steps\": {},", last_step)) != std::string::npos);
   fs::remove_all(dir);
 }

@@ -85,6 +85,12 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   CHECK(has_colour(map, app::kPathColour));
   CHECK(has_colour(wave, app::kGoalColour));
 
+  // truth.png: the shelf occupied and mapped so (near-black); the partition never observed.
+  const test_png::Png truth = test_png::read_png(test_png::read_all(dir.path / "truth.png"));
+  CHECK(truth.at(shelf[0], shelf[1]) == std::vector<int>{25, 25, 25});
+  CHECK(truth.at(partition[0], partition[1]) == rgb(app::kUnknownTone));
+  CHECK(truth.at(open[0], open[1]) == std::vector<int>{255, 255, 255});
+
   // Frontier has no wave: map.png only.
   const test_cli::TempDir frontier("room_pictures_frontier");
   REQUIRE(test_cli::run({"room", world, "--quiet", "--out", frontier.path.string()}).status == 0);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/room/room_report.hpp"
+#include "app/run/report.hpp"
 
 namespace {
 
@@ -38,38 +39,46 @@ Made made() {
 
 }  // namespace
 
-TEST_CASE("room report: the printed summary, a line an entry with a label, in order") {
+TEST_CASE("room report: the summary block is the run's key: value lines, end: included, in order") {
   const Made m = made();
-  const auto report = app::room_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
-  CHECK(app::room_summary_text(report) ==
-        "world         worlds/ir_room.room\n"
-        "strategy      waypoints\n"
-        "robot         ir-fan (pie set-up)\n"
-        "grid          50 x 30 cells of 0.1 m over 0,5,0,3\n"
-        "steps         1096\n"
-        "sim time      35.07 s\n"
-        "ending        arrived: reached all 8 waypoints\n"
-        "cells right   1337 of 1500 (89.1 %); observed 1295 of 1440\n"
-        "observed      98.56 % of the reachable free area (1229 of 1247 cells)\n"
-        "wall time     350 ms\n");
+  const app::Report report =
+      app::room_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
+  CHECK(app::format_summary(report) ==
+        "world: worlds/ir_room.room\n"
+        "grid: 50 x 30 cells of 0.1 m over 0,5,0,3\n"
+        "model: pie\n"
+        "strategy: waypoints\n"
+        "robot: ir-fan\n"
+        "seed: 42\n"
+        "end: arrived (reached all 8 waypoints)\n"
+        "steps: 1096\n"
+        "cell_accuracy: 89.13% (1337 of 1500 cells right; observed 1295 of 1440)\n"
+        "coverage: 98.56% (1229 of 1247 reachable free cells observed)\n"
+        "sim_time_s: 35.072\n"
+        "wall_time_ms: 350\n");
 }
 
-TEST_CASE("room report: summary.json has every typed entry in order and no wall time") {
+TEST_CASE("room report: summary.json has every entry in order, with the core keys of every kind of run") {
   const Made m = made();
-  const auto report = app::room_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
-  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(app::room_summary_json(report));
+  const app::Report report =
+      app::room_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
+  const nlohmann::ordered_json j = app::report_json(report);
   std::string keys;
   for (const auto &item : j.items()) keys += item.key() + " ";
   CHECK(keys ==
-        "world strategy robot model cells_x cells_y cell_m boundary_m steps sim_time_s ending message cells_right "
-        "cells_total observed_cells observed_cells_right reachable_free reachable_free_observed ");
+        "world grid cells_x cells_y cell_m boundary_m model depth strategy robot seed end end_message steps "
+        "cell_accuracy cells_right cells_total observed_cells observed_cells_right coverage reachable_free "
+        "reachable_free_observed sim_time_s wall_time_ms ");
   CHECK(j["robot"] == "ir-fan");
   CHECK(j["model"] == "pie");
   CHECK(j["cells_x"] == 50);
   CHECK(j["boundary_m"] == nlohmann::ordered_json::array({0.0, 5.0, 0.0, 3.0}));
   CHECK(j["sim_time_s"] == 35.072);
-  CHECK(j["ending"] == "arrived");
+  CHECK(j["end"] == "arrived");
+  CHECK(j["end_message"] == "reached all 8 waypoints");
+  CHECK(j["coverage"] == 98.56);
+  CHECK(j["cell_accuracy"] == 89.13);
   CHECK(j["reachable_free_observed"] == 1229);
-  CHECK_FALSE(j.contains("wall_time_ms"));
-  CHECK_FALSE(j.contains("grid"));
+  CHECK(j["grid"].is_null());
+  CHECK(j["depth"].is_null());
 }

@@ -36,8 +36,8 @@ app::RunOptions options_for(explore::StrategyKind strategy) {
 
 }  // namespace
 
-TEST_CASE("RunReport: the summary block is the entries with a printed value, in order") {
-  const app::RunReport report(options_for(explore::StrategyKind::dfs), finished_run());
+TEST_CASE("run report: the summary block is the entries with a printed value, in order") {
+  const app::Report report = app::run_report(options_for(explore::StrategyKind::dfs), finished_run());
   const std::string block = app::format_summary(report);
   CHECK(block.starts_with("world: worlds/lab4x4.txt\nsize: 4x4\nsubcells: 3\nmodel: cell\nstrategy: dfs\n"));
   CHECK(block.ends_with("sim_time_s: 86.272\nwall_time_ms: 1\n"));
@@ -46,8 +46,8 @@ TEST_CASE("RunReport: the summary block is the entries with a printed value, in 
   CHECK(report.text("end") == "done");
 }
 
-TEST_CASE("RunReport: summary.json holds every entry, null where the run has none") {
-  const app::RunReport report(options_for(explore::StrategyKind::dfs), finished_run());
+TEST_CASE("run report: summary.json holds every entry, null where the run has none") {
+  const app::Report report = app::run_report(options_for(explore::StrategyKind::dfs), finished_run());
   const nlohmann::ordered_json j = app::report_json(report);
   for (const auto &line : app::summary_pairs(report)) {
     CAPTURE(line.first);
@@ -60,24 +60,24 @@ TEST_CASE("RunReport: summary.json holds every entry, null where the run has non
   CHECK(j.size() == report.entries().size());
 }
 
-TEST_CASE("RunReport: \"goal\" is reported when the run was asked to reach one, in every output") {
+TEST_CASE("run report: \"goal\" is reported when the run was asked to reach one, in every output") {
   app::BatchItem dfs;
   dfs.ran = true;
   dfs.summary = finished_run();
-  dfs.report.emplace(options_for(explore::StrategyKind::dfs), dfs.summary);
+  dfs.report = app::run_report(options_for(explore::StrategyKind::dfs), dfs.summary);
   CHECK_FALSE(app::reports_goal(options_for(explore::StrategyKind::dfs)));
   CHECK(dfs.report->text("goal").empty());
   CHECK(app::row_of(dfs).goal.empty());  // reached_goal alone does not make a goal column
 
   app::BatchItem floodfill = dfs;
-  floodfill.report.emplace(options_for(explore::StrategyKind::floodfill), floodfill.summary);
+  floodfill.report = app::run_report(options_for(explore::StrategyKind::floodfill), floodfill.summary);
   CHECK(app::reports_goal(options_for(explore::StrategyKind::floodfill)));
   CHECK(floodfill.report->text("goal") == "reached");
   CHECK(app::report_json(*floodfill.report)["goal"] == "reached");
   CHECK(app::row_of(floodfill).goal == "reached");
 }
 
-TEST_CASE("RunReport: a speed run is one entry for the block, the JSON and batch's column") {
+TEST_CASE("run report: a speed run is one entry for the block, the JSON and batch's column") {
   app::RunOptions o = options_for(explore::StrategyKind::floodfill);
   o.plan.speed_run = true;
   app::BatchItem item;
@@ -86,7 +86,7 @@ TEST_CASE("RunReport: a speed run is one entry for the block, the JSON and batch
   item.summary.speed_run.time_s = 12.5;
   item.summary.speed_run.cells = 14;
   item.summary.speed_run.turns = 5;
-  item.report.emplace(o, item.summary);
+  item.report = app::run_report(o, item.summary);
   CHECK(item.report->text("speed_run") == "14 cells start to goal in 12.500 s");
   CHECK(item.report->text("speed_run_turns") == "5");
   CHECK(app::report_json(*item.report)["speed_run"]["cells"] == 14);

@@ -119,7 +119,7 @@ TEST_SUITE("acceptance") {
 
 namespace {
 
-// Issue 17 item 5: a range set-up explores worlds/lab4x4.txt for noise seeds 1 ... 20 at K:
+// A range set-up explores worlds/lab4x4.txt for noise seeds 1 ... 20 at K:
 // every run ends done with every cell visited; returns the runs' wall accuracies.
 std::vector<double> range_setup_accuracies(const std::string &robot, sensing::ModelKind model, int k) {
   app::RunOptions options;
@@ -184,8 +184,8 @@ TEST_SUITE("acceptance") {
 
 namespace {
 
-// Issue 14: at the scale where long views broke runs (corridors longer than the lidar's
-// range, seen end-on, taken for dropped beams; runs ended "done" at 5 % coverage). Every
+// Long views at scale: corridors longer than the lidar's range, seen end-on, must not be
+// taken for dropped beams (a run that did so ended "done" at 5 % coverage). Every
 // combination of generator, loops, K, lidar model, lidar (this term's fixed 12 m, last
 // year's rotating 3 m) and faults (none, or 5 % dropout + 1 % spikes) at 128 x 128; at 256 x 256 one
 // run per generator, model and range, the other factors turning with the index. Each run must

@@ -71,7 +71,7 @@ TEST_CASE("demo 1d: the default exercise, checked by hand") {
   CHECK(c110.occupied_updates == 6);
   CHECK(c110.log_odds == doctest::Approx(0.738194).epsilon(1e-6));
   CHECK(c110.belief == doctest::Approx(0.6766).epsilon(1e-4));
-  CHECK(c110.belief == doctest::Approx(0.68).epsilon(0.01));  // the "about 0.68"
+  CHECK(c110.belief == doctest::Approx(0.68).epsilon(0.01));  // the exercise's "about 0.68"
 
   CHECK(cell_at(cells, 100).log_odds == doctest::Approx(-0.956402).epsilon(1e-6));
   CHECK(cell_at(cells, 120).log_odds == doctest::Approx(0.369097).epsilon(1e-6));

@@ -239,7 +239,7 @@ TEST_CASE("ray model fast path: bit-identical to the reference over random scans
 }
 
 TEST_CASE("ray model fast path: the benchmark's workload matches the reference") {
-  // Issue 8's workload shape, 30 scans: K = 5, 0.02 m sub-cells, 0.9 to 1.1 m returns.
+  // The ray benchmark's workload shape, 30 scans: K = 5, 0.02 m sub-cells, 0.9 to 1.1 m returns.
   GridGeometry g;
   g.width_cells = 40;
   g.height_cells = 40;

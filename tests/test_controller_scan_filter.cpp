@@ -26,9 +26,6 @@
 
 namespace {
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 std::vector<float> filtered(const std::vector<float> &ranges,
                             const sensing::ScanFilterOptions &options = {}) {
   sensing::ScanFilter filter(options);
@@ -57,7 +54,7 @@ std::string text(const std::vector<float> &r, int from, int to) {
 
 // `r` with the beams `gone` read as no information.
 std::vector<float> without(std::vector<float> r, std::initializer_list<int> gone) {
-  for (const int i : gone) r[static_cast<std::size_t>(i)] = kNaN;
+  for (const int i : gone) r[static_cast<std::size_t>(i)] = kFloatNaN;
   return r;
 }
 
@@ -87,7 +84,7 @@ class ReferenceFilter {
     for (std::size_t i = 0; i < ranges_.size(); ++i) {
       switch (scan.kind_of(ranges_[i])) {
         case sensing::ReadingKind::invalid:
-          ranges_[i] = kNaN;
+          ranges_[i] = kFloatNaN;
           ++counts_.invalid;
           break;
         case sensing::ReadingKind::hit: state_[i] = trusted; break;
@@ -198,7 +195,7 @@ class ReferenceFilter {
   bool reject_collected() {
     for (const int i : rejected_) {
       state_[static_cast<std::size_t>(i)] = rejected;
-      ranges_[static_cast<std::size_t>(i)] = kNaN;
+      ranges_[static_cast<std::size_t>(i)] = kFloatNaN;
       ++counts_.spikes;
     }
     return !rejected_.empty();
@@ -273,7 +270,7 @@ class ReferenceFilter {
         for (int o = run_start; o < offset; ++o) {
           float &r = ranges_[static_cast<std::size_t>((first + o) % n)];
           if (std::isnan(r)) continue;
-          r = kNaN;
+          r = kFloatNaN;
           ++counts_.dropouts;
         }
       }
@@ -328,7 +325,7 @@ std::vector<float> random_scan(common::Rng &rng, int n, const sensing::LidarScan
         for (int k = 0; k < size && j + k < n; ++k) r[static_cast<std::size_t>(j + k)] = kFloatInf;
         break;
       }
-      case 3: v = kNaN; break;
+      case 3: v = kFloatNaN; break;
       case 4: v = -static_cast<float>(rng.uniform(0.0, 2.0)); break;
       case 5:
         v = -kFloatInf;
@@ -495,7 +492,7 @@ TEST_CASE("scan filter: a partial field of view keeps no returns at its ends") {
 
 TEST_CASE("scan filter: NaN, negative and below-minimum readings are no information") {
   std::vector<float> r = closed_cell();
-  r[45] = kNaN;
+  r[45] = kFloatNaN;
   r[46] = -0.5f;
   r[47] = 0.01f;
   r[48] = -kFloatInf;
@@ -525,7 +522,7 @@ TEST_CASE("scan filter: NaN and negative readings are never stored in the grid")
     // Nothing valid at all: nothing is updated but the centre the robot stands on (the cell
     // model frees it whatever the lidar says).
     std::vector<float> bad(360);
-    for (std::size_t i = 0; i < bad.size(); ++i) bad[i] = i % 3 == 0 ? kNaN : (i % 3 == 1 ? -1.0f : -kFloatInf);
+    for (std::size_t i = 0; i < bad.size(); ++i) bad[i] = i % 3 == 0 ? kFloatNaN : (i % 3 == 1 ? -1.0f : -kFloatInf);
     mapping::OccupancyGrid grid(g, 0.0f);
     sensing::LidarScan scan = full_circle(bad);
     scan.origin = {1.5, 1.5};
@@ -538,7 +535,7 @@ TEST_CASE("scan filter: NaN and negative readings are never stored in the grid")
     CHECK(changed == static_cast<int>(expected));
     // Every other beam invalid, the rest a closed cell: every value stored is finite.
     std::vector<float> mixed = closed_cell();
-    for (std::size_t i = 0; i < mixed.size(); i += 2) mixed[i] = i % 4 == 0 ? kNaN : -0.3f;
+    for (std::size_t i = 0; i < mixed.size(); i += 2) mixed[i] = i % 4 == 0 ? kFloatNaN : -0.3f;
     scan.ranges = mixed;
     CHECK(sensing::integrate_scan(options, grid, filter.apply(scan), mapping::Cell{1, 1}, model, update) > 0);
     for (int y = 0; y < g.height_subcells(); ++y) {
@@ -560,7 +557,7 @@ TEST_CASE("scan filter: any scan comes out the same size, each reading kept or n
     std::vector<float> r(static_cast<std::size_t>(n));
     for (float &v : r) {
       const double u = rng.uniform01();
-      v = u < 0.2 ? kFloatInf : (u < 0.25 ? kNaN : (u < 0.3 ? -1.0f : static_cast<float>(rng.uniform(0.0, 13.0))));
+      v = u < 0.2 ? kFloatInf : (u < 0.25 ? kFloatNaN : (u < 0.3 ? -1.0f : static_cast<float>(rng.uniform(0.0, 13.0))));
     }
     sensing::LidarScan s = full_circle(r);
     if (trial % 2 == 1) s.fov_rad = n * kDeg;  // a partial field of view

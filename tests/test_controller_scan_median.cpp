@@ -19,9 +19,6 @@
 
 namespace {
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // median_range as first written (a vector per call): the reference the allocation-free one
 // must match bit for bit.
 std::optional<float> reference_median(const sensing::LidarScan &s, int centre, double half_window_rad) {
@@ -62,7 +59,7 @@ TEST_CASE("median_range: a lone dropout or spike among five 1-degree beams is ou
 }
 
 TEST_CASE("median_range: invalid readings are left out; none valid gives nothing") {
-  std::vector<float> r(360, kNaN);
+  std::vector<float> r(360, kFloatNaN);
   CHECK_FALSE(full_circle(r).median_range(0, 2.5 * kDeg).has_value());
   r[359] = 1.0f;                      // wraps around beam 0
   r[1] = -1.0f;
@@ -77,7 +74,7 @@ TEST_CASE("median_range: beams further apart than the window read one beam, as b
 
 TEST_CASE("median_range: the same reading, bit for bit, as the reference, on any window") {
   common::Rng rng(77);
-  const float pool[] = {0.5f, 0.5f, 0.51f, 0.0f, -0.0f, kFloatInf, -kFloatInf, kNaN, -1.0f, 0.01f, 12.0f, 12.5f, 3.0f};
+  const float pool[] = {0.5f, 0.5f, 0.51f, 0.0f, -0.0f, kFloatInf, -kFloatInf, kFloatNaN, -1.0f, 0.01f, 12.0f, 12.5f, 3.0f};
   int compared = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     CAPTURE(trial);

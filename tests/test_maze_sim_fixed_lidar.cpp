@@ -24,8 +24,6 @@
 
 namespace {
 
-constexpr double kDeg = kPi / 180.0;
-
 const maze::sim::LidarSpec &hambot_lidar() { return maze::sim::default_profile().lidars.front(); }
 
 // The range of beam i read from format_scan's line "i angle range".

@@ -13,6 +13,8 @@
 inline constexpr double kPi = std::numbers::pi;
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+inline constexpr float kFloatNaN = std::numeric_limits<float>::quiet_NaN();
+inline constexpr double kDeg = kPi / 180.0;  // radians a degree
 // Half a wall of the default thickness: 0.006 m.
 inline constexpr double kHalfWall_m = maze::kDefaultWallThickness_m / 2.0;
 

@@ -73,7 +73,7 @@ BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()
   controls.interrupted = interrupted;
   run_row(item, [&] {
     item.summary = run_and_write(options, sink, controls);
-    item.report.emplace(options, item.summary);
+    item.report = run_report(options, item.summary);
     item.ran = true;
     item.interrupted = item.summary.interrupted;
     item.ok = exit_status(item.summary) == 0;

@@ -44,7 +44,7 @@ struct BatchItem {
   bool interrupted = false;   // stopped by Ctrl-C, or never started because of it
   std::string error;          // the error line, when it did not run or did not end as planned
   RunSummary summary;         // when it ran
-  std::optional<RunReport> report;  // when it ran: the goal and speed_run columns come from it
+  std::optional<Report> report;  // when it ran: the goal and speed_run columns come from it
 };
 
 // One run of a batch: a world, and the start position to start from (--each-start: pos:N,

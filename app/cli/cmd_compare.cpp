@@ -101,7 +101,7 @@ void print_columns(const std::vector<std::vector<std::string>> &columns, std::os
 // and one total line at the end keeps the table stable.
 using Summary = std::vector<std::pair<std::string, std::string>>;
 
-Summary table_pairs(const RunReport &report) {
+Summary table_pairs(const Report &report) {
   Summary pairs = summary_pairs(report);
   std::erase_if(pairs, [](const auto &pair) { return pair.first == "wall_time_ms"; });
   return pairs;
@@ -170,7 +170,7 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
     }
     status = std::max(status, exit_status(summary));
     total_ms += summary.wall_time_ms;
-    const RunReport report(one, summary);
+    const Report report = run_report(one, summary);
     const std::string block = format_summary(report);
     if (!text.str().ends_with(block)) throw common::RuntimeFailure("compare: a run's output does not end in its summary");
     const std::string map = text.str().substr(0, text.str().size() - block.size());

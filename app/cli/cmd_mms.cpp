@@ -40,14 +40,14 @@ void add_mms_command(CLI::App &cli, CommandContext &context) {
   add_mms_options(*command, *mms);
   command->add_flag("--quiet", parsed->output.quiet, "print only the final map, the marks and the summary");
   command->add_option("--out", parsed->output.out_dir,
-                      "DIR: write map.pgm + map.yaml, map.png, truth.png, summary.json (with mms's stats and "
-                      "score) and marks.txt (the algorithm's marks)");
+                      "DIR: write map.pgm + map.yaml, map.png, truth.png, trace.csv, replay.html, summary.json "
+                      "(with mms's stats and score) and marks.txt (the algorithm's marks)");
   command->add_flag("--no-color", *no_color, "no ANSI colours (default colours when stdout is a terminal)");
   command->add_flag("--transcript", mms->transcript,
                     "print the conversation on stderr: `mms N> line` from the algorithm, `mms N< answer` back");
   command->callback([command, parsed, mms, no_color, &context] {
     RunOptions options = checked_run_options(*command, *parsed, true);
-    refuse_strategy_options(*command);
+    check_mms_command_line(*command);
     print_warnings(options_not_applying(*command, options));
     options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
     MmsOptions asked = *mms;

@@ -121,10 +121,13 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   add_boundary_option(*cmd, in->boundary);
   cmd->add_option("--start", in->start, "X,Y[,DEG]: where the robot starts, m (default the world's start)");
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
-  cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time (default 1)");
+  cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time-limit (default 1)");
   cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
   cmd->add_option("--dilate", o.room.dilate, "N: wavefront: obstacles grown by N cells for planning (default 1)");
-  cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most, wander needs it (default none)");
+  cmd->add_option("--time-limit", o.room.time_limit_s, "S: stop after S simulated seconds; wander needs it (default none)");
+  add_old_spelling(*cmd, "--time", "--time-limit", [in](const std::string &text) {
+    in->options.room.time_limit_s = parse_number_list(text, "--time-limit", 1)[0];
+  });
   cmd->add_option("--snapshots-at", in->snapshots_at, "T1,T2,...: print the map at these simulated seconds");
   cmd->add_option("--snapshot-steps", in->snapshot_steps, "N1,N2,...: print the map at these control steps");
   cmd->add_option("--threshold", o.threshold, "log-odds drawn W at or above (default 0; bump and depth -0.5)");
@@ -138,8 +141,8 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   add_seed_option(*cmd, o.simulation.seed, "the simulation's noise and wander's turns");
   add_model_options(*cmd, o.sensor);
   cmd->add_flag("--quiet", o.quiet, "print the summary only");
-  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json, map.png "
-                                     "(wavefront: wave.png), snapshots/*.png");
+  cmd->add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json, map.png, "
+                                     "truth.png, replay.html (wavefront: wave.png), snapshots/*.png");
   cmd->callback([&context, in, cmd] {
     const auto started = std::chrono::steady_clock::now();
     build(*in, *cmd);

@@ -34,7 +34,7 @@ const std::map<std::string, std::string, std::less<>> &group_of_option() {
                              "--depth-reading", "--depth-origin"}) {
       table[name] = kRobotGroup;
     }
-    for (const char *name : {"--strategy", "--max-steps", "--dilate", "--speed-run", "--plan-to", "--from", "--to",
+    for (const char *name : {"--strategy", "--max-steps", "--time-limit", "--dilate", "--speed-run", "--plan-to", "--from", "--to",
                              "--step"}) {
       table[name] = kExplorationGroup;
     }

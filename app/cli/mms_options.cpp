@@ -40,8 +40,10 @@ void add_mms_options(CLI::App &command, MmsOptions &o) {
       },
       "exit|goal|start: end when the algorithm exits, when the robot first reaches the goal, or when it is back "
       "at the start after the goal (default exit)");
-  command.add_option("--time-limit", o.time_limit_s,
-                     fmt::format("S: wall-clock seconds the algorithm has, the whole run (default {:g})", o.time_limit_s));
+  command.add_option("--wall-limit", o.wall_limit_s,
+                     fmt::format("S: wall-clock seconds the algorithm has, the whole run: the guard against a hung "
+                                 "program (default {:g}; --time-limit is simulated seconds)",
+                                 o.wall_limit_s));
   command.add_option("--max-line", o.max_line_bytes,
                      fmt::format("BYTES: a longer line from the algorithm ends the run (default {})", o.max_line_bytes));
   command.add_flag("--ignore-invalid", o.ignore_invalid,
@@ -50,19 +52,27 @@ void add_mms_options(CLI::App &command, MmsOptions &o) {
 }
 
 bool mms_options_given(const CLI::App &command) {
-  for (const char *name : {"--walls", "--until", "--time-limit", "--max-line", "--ignore-invalid"}) {
+  for (const char *name : {"--walls", "--until", "--wall-limit", "--max-line", "--ignore-invalid"}) {
     const CLI::Option *option = command.get_option_no_throw(name);
     if (option != nullptr && option->count() > 0) return true;
   }
   return false;
 }
 
-void refuse_strategy_options(const CLI::App &command) {
-  for (const char *name : {"--strategy", "--speed-run"}) {
+void check_mms_command_line(const CLI::App &command) {
+  const auto given = [&command](const char *name) {
     const CLI::Option *option = command.get_option_no_throw(name);
-    if (option != nullptr && option->count() > 0) {
+    return option != nullptr && option->count() > 0;
+  };
+  for (const char *name : {"--strategy", "--speed-run"}) {
+    if (given(name)) {
       throw common::InputError(fmt::format("{} does not apply to an mms algorithm: it decides where the robot goes", name));
     }
+  }
+  if (given("--time-limit") && !given("--wall-limit")) {
+    fmt::print(stderr, "warning: --time-limit is simulated seconds; the guard against a hung program is --wall-limit "
+                       "(wall-clock seconds, default {:g})\n",
+               MmsOptions{}.wall_limit_s);
   }
 }
 
@@ -72,7 +82,7 @@ int run_mms_batch_command(const CLI::App &command, const RunOptions &options, Mm
   if (child_command.empty()) {
     throw common::InputError("the mms options need the algorithm: batch WORLD... [options] -- COMMAND [ARGS...]");
   }
-  refuse_strategy_options(command);
+  check_mms_command_line(command);
   mms.command = child_command;
   validate(mms);
   std::function<void(std::size_t, std::size_t)> progress;

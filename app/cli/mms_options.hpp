@@ -1,6 +1,6 @@
 #pragma once
 // The options of an mms-protocol run as `mms` and `batch ... -- COMMAND` spell them:
-// --walls truth|sensed, --until exit|goal|start, --time-limit S, --max-line BYTES,
+// --walls truth|sensed, --until exit|goal|start, --wall-limit S, --max-line BYTES,
 // --ignore-invalid; and the mms batch's command line.
 
 #include <CLI/CLI.hpp>
@@ -14,8 +14,10 @@
 namespace app {
 
 void add_mms_options(CLI::App &command, MmsOptions &options);
-// Throws common::InputError when --strategy or --speed-run was given (they do not apply).
-void refuse_strategy_options(const CLI::App &command);
+// Throws common::InputError when --strategy or --speed-run was given (they do not apply);
+// warns when --time-limit (simulated seconds) was given without --wall-limit, the wall-clock
+// guard that --time-limit was in mms before.
+void check_mms_command_line(const CLI::App &command);
 // Whether the command line gave one of add_mms_options' options.
 bool mms_options_given(const CLI::App &command);
 

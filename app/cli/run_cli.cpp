@@ -52,6 +52,7 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   command
       .add_option("--max-steps", o.max_steps, "N: stop after this many control steps (default 1000 a cell, at least 100000)")
       ->check(whole_steps);
+  add_field_option(command, o, "--time-limit");
   add_field_option(command, o.plan, "--dilate");
   add_world_options(command, o.world_overrides);
 }

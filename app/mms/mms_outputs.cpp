@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
+#include "common/interrupt.hpp"
 
 namespace app {
 namespace {
@@ -50,13 +51,8 @@ std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, c
   return j.dump(2) + "\n";
 }
 
-void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run,
-                       const RunFiles &files) {
-  RunOptions without = options;
-  without.output.trace = false;
-  without.output.replay = false;
-  without.output.snapshots = 0;
-  write_outputs(dir, without, run.summary, files);
+void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
+  const common::SignalsEndProcess signals_end_process;  // each file whole or absent
   const std::filesystem::path d(dir);
   common::write_file_atomically((d / "summary.json").string(), mms_summary_json(options, mms, run));
   common::write_file_atomically((d / "marks.txt").string(), render_marks(run.mms.marks, false));

@@ -1,8 +1,8 @@
 #pragma once
-// `mms --out DIR`: the files of `run --out` that fit an algorithm's run (map.pgm + map.yaml,
-// map.png, truth.png, summary.json; no trace.csv or replay.html), summary.json holding every
-// key of the mms summary block (format_mms_summary) too, and marks.txt: the algorithm's
-// marks as the terminal shows them, without colour.
+// `mms --out DIR`: what an algorithm's run adds to the files every run writes (report/'s
+// FilesRecorder: map.pgm + map.yaml, map.png, truth.png, trace.csv, replay.html, snapshots):
+// summary.json holding every key of the mms summary block (format_mms_summary) too, and
+// marks.txt, the algorithm's marks as the terminal shows them, without colour.
 
 #include <string>
 
@@ -16,8 +16,8 @@ namespace app {
 // best-run values null until a run has finished).
 std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
 
-// Writes the files into dir (prepared by prepare_output_dir).
-void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run,
-                       const RunFiles &files);
+// Writes summary.json (replacing the recorder's) and marks.txt into dir, which the recorder
+// prepared and filled.
+void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
 
 }  // namespace app

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <ostream>
 
 #include <fmt/format.h>
@@ -11,9 +12,11 @@
 #include "app/run/evaluation.hpp"
 #include "app/mms/mms_mouse.hpp"
 #include "app/mms/mms_outputs.hpp"
+#include "app/report/files_recorder.hpp"
 #include "app/report/outputs.hpp"
 #include "app/report/truth_picture.hpp"
 #include "app/run/profile_json.hpp"
+#include "app/run/step_limit.hpp"
 #include "app/run/terminal.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
@@ -53,7 +56,7 @@ std::string quoted_line(std::string_view line) {
 void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child, const RunControls &controls,
               MmsReport &report) {
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                           std::chrono::duration<double>(options.time_limit_s));
+                                           std::chrono::duration<double>(options.wall_limit_s));
   std::string line;
   for (;;) {
     const ChildProcess::Read r = child.read_line(line, deadline, options.max_line_bytes, controls.interrupted);
@@ -64,8 +67,8 @@ void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child,
       return;
     }
     if (r == ChildProcess::Read::timeout) {
-      report.end = MmsEnd::time_limit;
-      report.message = fmt::format("no end after {:g} s (--time-limit), {} lines", options.time_limit_s, report.lines);
+      report.end = MmsEnd::wall_limit;
+      report.message = fmt::format("no end after {:g} s (--wall-limit), {} lines", options.wall_limit_s, report.lines);
       return;
     }
     if (r == ChildProcess::Read::interrupted) {
@@ -148,8 +151,8 @@ std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::Ru
 
 void validate(const MmsOptions &options) {
   if (options.command.empty()) throw common::InputError("mms needs the algorithm's command after --: mms WORLD -- python3 algo.py");
-  if (!(options.time_limit_s > 0.0)) {
-    throw common::InputError(fmt::format("--time-limit must be more than 0 seconds (got {:g})", options.time_limit_s));
+  if (!(options.wall_limit_s > 0.0)) {
+    throw common::InputError(fmt::format("--wall-limit must be more than 0 seconds (got {:g})", options.wall_limit_s));
   }
   if (options.max_line_bytes < 64) {
     throw common::InputError(fmt::format("--max-line must be at least 64 bytes (got {})", options.max_line_bytes));
@@ -161,7 +164,7 @@ std::string_view to_string(MmsEnd end) {
     case MmsEnd::exited: return "exited";
     case MmsEnd::reached: return "reached";
     case MmsEnd::failed: return "failed";
-    case MmsEnd::time_limit: return "time limit";
+    case MmsEnd::wall_limit: return "wall limit";
     case MmsEnd::protocol_error: return "protocol error";
     case MmsEnd::robot: return "robot stopped";
     case MmsEnd::interrupted: return "interrupted";
@@ -240,7 +243,11 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
 
   const std::string &out_dir = options.output.out_dir;
-  if (!out_dir.empty()) prepare_output_dir(out_dir);
+  std::optional<FilesRecorder> recorder;  // the files every kind of run writes
+  if (!out_dir.empty()) {
+    recorder.emplace();
+    recorder->start(RunStart{options, truth, simulation.robot(), controller_opts, style.initial_log_odds});
+  }
   robot::CommandController controller(simulation.robot(), controller_opts);
   MmsRun run;
   MmsReport &report = run.mms;
@@ -248,8 +255,19 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   std::optional<robot::ProgressPrinter> printer;
   if (!options.output.quiet) printer.emplace(out, style, truth.width() * truth.height());
   robot::RunHooks hooks;
-  if (printer) hooks.on_move = [&printer](const robot::MoveReport &r) { (*printer)(r); };
-  if (controls.interrupted != nullptr) hooks.on_step = [&controls](const robot::StepReport &) { return !controls.interrupted(); };
+  if (printer || recorder) {
+    hooks.on_move = [&printer, &recorder](const robot::MoveReport &r) {
+      if (recorder) recorder->on_move(r);
+      if (printer) (*printer)(r);
+    };
+  }
+  if (controls.interrupted != nullptr || recorder) {
+    hooks.on_step = [&controls, &recorder, &simulation](const robot::StepReport &step) {
+      if (recorder) recorder->on_step(step, simulation.pose());
+      return controls.interrupted == nullptr || !controls.interrupted();
+    };
+  }
+  if (recorder) hooks.grid_changes = recorder->grid_changes();
 
   MmsMouse mouse(truth, mms, controller, controller_opts, report);
   ChildProcess child(mms.command);  // before the robot moves: a command that cannot start prints nothing
@@ -258,15 +276,16 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const robot::RunResult result = controller.finish(reason, report.message);
   summarize(truth, result, style, run.summary);
   run.summary.interrupted = report.end == MmsEnd::interrupted;
-  run.summary.max_steps = controller_opts.motion.max_steps;
-  run.summary.max_steps_asked = options.max_steps.has_value();
+  const StepLimit limit = step_limit(options, truth);
+  run.summary.max_steps = limit.steps;
+  run.summary.max_steps_asked = limit.asked;
+  run.summary.time_limited = limit.time_limited;
+  name_step_limit(options, run.summary);
   run.summary.wall_time_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
 
-  if (!out_dir.empty()) {
-    RunFiles files{&result.grid, &model, &result.path, nullptr, {}, &truth, &result.visits,
-                   learned_sides(result, style), nullptr, landmark_marks(truth)};
-    for (const maze::Cell goal : truth.goals()) files.goals.push_back(Cell{goal.x, goal.y});
-    write_mms_outputs(out_dir, options, mms, run, files);
+  if (recorder) {
+    recorder->finish(RunEnd{options, truth, run.summary, result, model, learned_sides(result, style)});
+    write_mms_outputs(out_dir, options, mms, run);
   }
   if (report.end == MmsEnd::interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";

@@ -34,7 +34,7 @@ struct MmsOptions {
   std::vector<std::string> command;       // the algorithm and its arguments
   MmsWalls walls = MmsWalls::sensed;
   MmsUntil until = MmsUntil::exit;
-  double time_limit_s = 60.0;             // wall clock, the whole conversation
+  double wall_limit_s = 60.0;             // --wall-limit: wall clock, the whole conversation
   std::size_t max_line_bytes = 4096;      // a longer line ends it (a flood)
   bool ignore_invalid = false;            // --ignore-invalid: skip lines that are no command, as mms does
   bool transcript = false;                // --transcript: the conversation on stderr
@@ -47,12 +47,12 @@ enum class MmsEnd {
   exited,          // the algorithm ended (exit status 0)
   reached,         // --until goal / start: reached
   failed,          // the algorithm ended otherwise (status, signal) or closed its output and hung
-  time_limit,      // --time-limit ran out
+  wall_limit,      // --wall-limit ran out (wall-clock seconds: the guard against a hung program)
   protocol_error,  // a line that is no command, too long, or a move not simulated
   robot,           // the robot could not go on (no progress, step limit)
   interrupted,     // Ctrl-C or SIGTERM
 };
-std::string_view to_string(MmsEnd end);  // "exited", "reached", "failed", "time limit", ...
+std::string_view to_string(MmsEnd end);  // "exited", "reached", "failed", "wall limit", ...
 
 struct MmsReport {
   MmsEnd end = MmsEnd::exited;

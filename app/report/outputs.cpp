@@ -122,7 +122,7 @@ Json options_json(const RunOptions &o, const RunSummary &s) {
 }  // namespace
 
 std::string summary_json(const RunOptions &o, const RunSummary &s) {
-  Json j = report_json(RunReport(o, s));
+  Json j = report_json(run_report(o, s));
   j["options"] = options_json(o, s);
   return j.dump(2) + "\n";
 }
@@ -254,7 +254,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.caption = map_caption(options);
   input.steps = summary.steps;
   input.reachable_cells = summary.score.reachable_cells;
-  input.summary = summary_pairs(RunReport(options, summary));
+  input.summary = summary_pairs(run_report(options, summary));
   return replay_html(input);
 }
 

@@ -19,6 +19,21 @@ constexpr Rgb kBlockedTone{90, 90, 90};
 constexpr Rgb kUnreachedTone{255, 255, 255};
 constexpr Rgb kNearTone{255, 236, 170};
 constexpr Rgb kFarTone{20, 60, 170};
+constexpr Rgb kOccupiedRightTone{25, 25, 25};
+constexpr Rgb kMissedTone{220, 40, 40};
+constexpr Rgb kPhantomTone{200, 40, 200};
+constexpr Rgb kUnreachableFreeTone{205, 205, 205};
+
+// A cell's verdict: the map's state (never observed, or thresholded) against the truth's.
+Rgb truth_tone(const sensing::RoomMap &map, const maze::ArenaTruth &truth, double threshold, std::size_t n) {
+  const sensing::RoomCell cell = map.cell_of_index(n);
+  const bool occupied = truth.is_occupied(cell.i, cell.j);
+  if (map.unobserved_at(n)) return kUnknownTone;
+  const bool mapped_occupied = map.log_odds_at(n) >= threshold;
+  if (occupied) return mapped_occupied ? kOccupiedRightTone : kMissedTone;
+  if (mapped_occupied) return kPhantomTone;
+  return truth.is_reachable(cell.i, cell.j) ? kWhite : kUnreachableFreeTone;
+}
 
 // The map's cells as a plain grid, each in `tone_of(flat index)`.
 template <typename ToneOf>
@@ -98,6 +113,30 @@ std::string room_map_picture(const robot::RoomController &c, const MapTones &ton
     const double side = mark_px(frame);
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
     draw_goal(page, frame, marks);
+    draw_robot(page, frame, c);
+  };
+  return plain_grid_picture(g, legend, overlay, format).encode();
+}
+
+std::string room_truth_picture(const robot::RoomController &c, const maze::ArenaTruth &truth, double threshold,
+                               const RoomPictureMarks &marks, const RoomTruthScores &scores, PictureFormat format) {
+  const sensing::RoomMap &map = c.map();
+  const PlainGrid g = room_grid(map, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
+  Figure legend;
+  legend.lines = {marks.caption, "cell_accuracy " + scores.cell_accuracy, "coverage " + scores.coverage};
+  legend.items = {{Swatch::box, kOccupiedRightTone, "occupied, mapped so"},
+                  {Swatch::box, kMissedTone, "occupied, mapped free"},
+                  {Swatch::box, kPhantomTone, "free, mapped occupied"},
+                  {Swatch::box, kUnknownTone, "never observed"},
+                  {Swatch::box, kUnreachableFreeTone, "free, not reachable"},
+                  {Swatch::line, kPathColour, "trajectory"},
+                  {Swatch::disc, kEndColour, "robot"}};
+  const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
+    for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
+    page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
+    const double side = mark_px(frame);
+    page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
     draw_robot(page, frame, c);
   };
   return plain_grid_picture(g, legend, overlay, format).encode();

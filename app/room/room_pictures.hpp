@@ -10,6 +10,11 @@
 //          obstacles grown) dark grey, the goal (2) yellow, each cell the wave reached in a
 //          tone from light (near the goal) to deep blue (the farthest), cells it never
 //          reached (0) white; the path and the robot over it.
+//   truth  the map scored against the truth at the map's resolution, as the summary's
+//          cell_accuracy and coverage count it: occupied cells learned right near-black,
+//          missed (mapped free) red, phantoms (occupied on the map, free in truth) magenta,
+//          free cells white where reachable and light grey where not, cells never observed
+//          blue-grey; the trajectory, start and robot over it.
 
 #include <cstdint>
 #include <optional>
@@ -18,6 +23,7 @@
 
 #include "app/picture/drawing.hpp"
 #include "app/picture/map_picture.hpp"
+#include "maze/arena_truth.hpp"
 #include "mapping/grid_types.hpp"
 #include "robot/room_controller.hpp"
 #include "sensing/room_map.hpp"
@@ -41,6 +47,17 @@ std::string room_map_picture(const robot::RoomController &c, const MapTones &ton
 // The wave the controller planned on last (non-empty), with the path and the robot.
 std::string room_wave_picture(const robot::RoomController &c, const RoomPictureMarks &marks,
                               PictureFormat format = PictureFormat::png);
+
+// What the truth picture's legend prints: the summary's scores, as it words them.
+struct RoomTruthScores {
+  std::string cell_accuracy;  // "89.13% (1337 of 1500 cells right; ...)"
+  std::string coverage;       // "98.56% (1229 of 1247 reachable free cells observed)"
+};
+
+// The map scored against `truth` (the same grid), cells at or above `threshold` occupied.
+std::string room_truth_picture(const robot::RoomController &c, const maze::ArenaTruth &truth, double threshold,
+                               const RoomPictureMarks &marks, const RoomTruthScores &scores,
+                               PictureFormat format = PictureFormat::png);
 
 // The tone of a wave number (plan/room_wavefront.hpp's): `top` the largest in the wave.
 Rgb wave_tone(std::int32_t value, std::int32_t top);

@@ -269,7 +269,7 @@ RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::Set
 
 // What replay.html shows besides the frames: the pictures' caption, the summary's lines.
 RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::RoomOptions &room,
-                           const std::vector<RoomReportEntry> &report) {
+                           const Report &report) {
   const RoomPictureMarks marks = picture_marks(options, setup, room);
   RoomReplayText text;
   text.title = options.world;
@@ -277,8 +277,8 @@ RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &
   text.start = marks.start;
   text.goal = marks.goal;
   text.body_radius_m = room.body_radius_m;
-  for (const RoomReportEntry &e : report) {
-    if (!e.label.empty() && e.key != "wall_time_ms") text.summary.emplace_back(e.label, e.text);
+  for (auto &[key, value] : summary_pairs(report)) {
+    if (key != "wall_time_ms") text.summary.emplace_back(key, value);
   }
   return text;
 }
@@ -419,16 +419,20 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   if (!options.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
-  const std::vector<RoomReportEntry> report = room_report(options, profile.name, setup, spec, summary);
-  out << room_summary_text(report);
+  const Report report = room_report(options, profile.name, setup, spec, summary);
+  if (!options.quiet) out << '\n';
+  out << format_summary(report);
   if (!options.out_dir.empty()) {
     log.draw(controller_loop, "map", "wave");
     std::vector<RoomFile> files = log.pictures();
+    const RoomTruthScores scores{report.text("cell_accuracy"), report.text("coverage")};
+    files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold,
+                                                     picture_marks(options, setup, room), scores)});
     replay->finish(controller_loop);
     if (std::optional<std::string> page = replay->html(replay_text(options, setup, room, report))) {
       files.push_back({"replay.html", std::move(*page)});
     }
-    write_room_outputs(options.out_dir, map, log.trace(), room_summary_json(report), threshold, files);
+    write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
   }
   return summary;
 }

@@ -28,6 +28,7 @@
 #include "render/ascii_map.hpp"
 #include "robot/progress_printer.hpp"
 #include "app/run/plan_path.hpp"
+#include "app/run/step_limit.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/terminal.hpp"
 
@@ -141,10 +142,7 @@ std::string describe_wrong_sides(const WrongSides &wrong) {
 //   incomplete  dfs and frontier mean to visit every reachable cell (wall followers and
 //               floodfill may leave cells by design): reachable cells never visited.
 void judge_ending(const RunOptions &options, RunSummary &summary) {
-  if (summary.reason == robot::EndReason::max_steps && !summary.max_steps_asked) {
-    // The default limit is a safety net far above what any set-up needs; reaching it is a failure.
-    summary.message = fmt::format("the default limit of {} steps ran out; --max-steps N allows more", summary.max_steps);
-  }
+  name_step_limit(options, summary);
   if (summary.reason != robot::EndReason::done && summary.reason != robot::EndReason::incomplete) return;
   const MapScore &score = summary.score;
   const auto add = [&](const std::string &finding) {
@@ -203,7 +201,7 @@ robot::ControllerOptions controller_options(const RunOptions &options, const maz
   c.sensor = options.sensor;
   c.model = options.model;
   c.strategy = options.strategy;
-  c.motion.max_steps = options.max_steps.value_or(max_steps_for(maze));
+  c.motion.max_steps = step_limit(options, maze).steps;
   c.speed_run = options.plan.speed_run;
   c.sensing.range_model = options.range_model;
   if (options.threshold) c.occupied_threshold = static_cast<float>(*options.threshold);
@@ -353,8 +351,10 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   }
   summary.width = truth.width();
   summary.height = truth.height();
-  summary.max_steps = options.max_steps.value_or(max_steps_for(truth));
-  summary.max_steps_asked = options.max_steps.has_value();
+  const StepLimit limit = step_limit(options, truth);
+  summary.max_steps = limit.steps;
+  summary.max_steps_asked = limit.asked;
+  summary.time_limited = limit.time_limited;
   summary.steps = result.steps;
   summary.moves = result.moves;
   summary.visited = result.visited;

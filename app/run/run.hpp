@@ -51,7 +51,8 @@ struct RunSummary {
   int width = 0;
   int height = 0;
   std::int64_t max_steps = 0;           // the step limit in effect (--max-steps or max_steps_for)
-  bool max_steps_asked = false;         // the limit is the user's --max-steps, not max_steps_for's
+  bool max_steps_asked = false;         // the limit is the user's (--max-steps, --time-limit), not max_steps_for's
+  bool time_limited = false;            // the limit in effect is --time-limit's
   std::int64_t steps = 0;
   int moves = 0;
   int visited = 0;

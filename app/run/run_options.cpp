@@ -45,6 +45,9 @@ void validate_run(const RunOptions &o) {
   if (noise && !(*noise >= 0.0 && *noise <= 1.0)) {
     throw common::InputError(fmt::format("--noise must be a fraction of the max range from 0 to 1 (got {})", *noise));
   }
+  if (o.time_limit_s && !(*o.time_limit_s > 0.0)) {
+    throw common::InputError(fmt::format("--time-limit must be more than 0 simulated seconds (got {:g})", *o.time_limit_s));
+  }
   if (o.max_steps && *o.max_steps < 1) {
     throw common::InputError(fmt::format("--max-steps must be at least 1 (got {})", *o.max_steps));
   }

@@ -72,6 +72,9 @@ struct RunOptions {
   // --max-steps: control steps before the run stops; none: max_steps_for(maze), which no
   // complete exploration reaches (dfs and frontier take about 200 steps a cell).
   std::optional<std::int64_t> max_steps;
+  // --time-limit: simulated seconds before the run stops (every kind of run takes it); none:
+  // no limit but the steps'. Any positive number, inf included: the steps it allows saturate.
+  std::optional<double> time_limit_s;
   // --seed, --noise (lidar noise as a fraction of max range; none: the robot's) and the
   // faults --dropout, --spikes, --stuck-bumper, --wheel-slip.
   maze::sim::SimulationOptions simulation;

@@ -20,24 +20,7 @@ Json or_null(const std::optional<T> &value) {
 
 Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
 
-// Appends the report's entries in order; a key is added once.
-class Entries {
- public:
-  explicit Entries(std::vector<ReportEntry> &entries) : entries_(entries) {}
-  // Printed as `text`, in summary.json as `json`.
-  void both(std::string key, std::string text, Json json) {
-    entries_.push_back({std::move(key), std::move(text), std::move(json)});
-  }
-  // Printed and in summary.json as the same string.
-  void both(std::string key, const std::string &text) { both(std::move(key), text, Json(text)); }
-  // In summary.json only.
-  void json_only(std::string key, Json json) { entries_.push_back({std::move(key), std::nullopt, std::move(json)}); }
-
- private:
-  std::vector<ReportEntry> &entries_;
-};
-
-void add_goal_entries(Entries &e, const RunOptions &o, const RunSummary &s) {
+void add_goal_entries(Report &e, const RunOptions &o, const RunSummary &s) {
   const bool goal = reports_goal(o);
   if (goal) e.both("goal", s.reached_goal ? "reached" : "not reached");
   else e.json_only("goal", nullptr);
@@ -51,7 +34,7 @@ void add_goal_entries(Entries &e, const RunOptions &o, const RunSummary &s) {
   }
 }
 
-void add_plan_entries(Entries &e, const RunSummary &s) {
+void add_plan_entries(Report &e, const RunSummary &s) {
   if (!s.plan) {
     e.json_only("plan", nullptr);
     e.json_only("plan_length", nullptr);
@@ -68,7 +51,7 @@ void add_plan_entries(Entries &e, const RunSummary &s) {
   }
 }
 
-void add_speed_run_entries(Entries &e, const RunOptions &o, const RunSummary &s) {
+void add_speed_run_entries(Report &e, const RunOptions &o, const RunSummary &s) {
   if (!o.plan.speed_run) {
     e.json_only("search", nullptr);
     e.json_only("speed_run", nullptr);
@@ -103,8 +86,8 @@ std::string describe_shortest(const explore::ShortestPathProof &proof) {
   return fmt::format("{} cells start to goal, not proven ({})", *proof.known_moves, may);
 }
 
-RunReport::RunReport(const RunOptions &o, const RunSummary &s) {
-  Entries e(entries_);
+Report run_report(const RunOptions &o, const RunSummary &s) {
+  Report e;
   e.both("world", o.world);
   e.both("size", fmt::format("{}x{}", s.width, s.height));
   e.json_only("width", s.width);
@@ -117,7 +100,7 @@ RunReport::RunReport(const RunOptions &o, const RunSummary &s) {
   e.both("robot", o.robot);
   e.both("seed", std::to_string(o.simulation.seed), Json(o.simulation.seed));
   const std::string reason(robot::to_string(s.reason));
-  e.both("end", s.message.empty() ? reason : fmt::format("{} ({})", reason, s.message), Json(reason));
+  e.both("end", end_text(reason, s.message), Json(reason));
   e.json_only("end_message", s.message);
   e.both("steps", std::to_string(s.steps), Json(s.steps));
   e.both("moves", std::to_string(s.moves), Json(s.moves));
@@ -131,42 +114,11 @@ RunReport::RunReport(const RunOptions &o, const RunSummary &s) {
   add_speed_run_entries(e, o, s);
   e.both("sim_time_s", fmt::format("{:.3f}", s.sim_time_s), Json(s.sim_time_s));
   e.both("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms), Json(s.wall_time_ms));
-}
-
-const ReportEntry *RunReport::find(std::string_view key) const {
-  for (const ReportEntry &entry : entries_) {
-    if (entry.key == key) return &entry;
-  }
-  return nullptr;
-}
-
-std::string RunReport::text(std::string_view key) const {
-  const ReportEntry *entry = find(key);
-  return entry != nullptr && entry->text ? *entry->text : std::string();
-}
-
-std::string format_summary(const RunReport &report) {
-  std::string out;
-  for (const auto &[key, value] : summary_pairs(report)) out += fmt::format("{}: {}\n", key, value);
-  return out;
+  return e;
 }
 
 std::string format_summary(const RunOptions &options, const RunSummary &summary) {
-  return format_summary(RunReport(options, summary));
-}
-
-std::vector<std::pair<std::string, std::string>> summary_pairs(const RunReport &report) {
-  std::vector<std::pair<std::string, std::string>> pairs;
-  for (const ReportEntry &entry : report.entries()) {
-    if (entry.text) pairs.emplace_back(entry.key, *entry.text);
-  }
-  return pairs;
-}
-
-nlohmann::ordered_json report_json(const RunReport &report) {
-  Json j = Json::object();
-  for (const ReportEntry &entry : report.entries()) j[entry.key] = entry.json;
-  return j;
+  return format_summary(run_report(options, summary));
 }
 
 }  // namespace app

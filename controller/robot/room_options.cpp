@@ -57,14 +57,14 @@ void validate(const RoomOptions &o) {
                         "--strategy waypoints needs --waypoints X,Y;X,Y...");
   common::require_input(o.strategy != RoomStrategy::wavefront || o.goal.has_value(),
                         "--strategy wavefront needs --goal X,Y");
-  common::require_input(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time S");
+  common::require_input(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time-limit S");
   common::require_input(o.laps >= 0, fmt::format("--laps must be a whole number >= 0 (got {})", o.laps));
-  common::require_input(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time S");
+  common::require_input(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time-limit S");
   common::require_input(o.dilate >= 0 && o.dilate <= kMaxRoomDilate,
                         fmt::format("--dilate must be 0 to {} cells (got {})", kMaxRoomDilate, o.dilate));
   common::require_input(o.free_below_p > 0.0 && o.free_below_p <= 1.0, "the free threshold must be in (0, 1]");
-  common::require_input(std::isfinite(o.time_limit_s) && o.time_limit_s >= 0.0,
-                        fmt::format("--time must be >= 0 s (got {})", o.time_limit_s));
+  common::require_input(o.time_limit_s >= 0.0,  // NaN refused; inf is no limit
+                        fmt::format("--time-limit must be more than 0 simulated seconds (got {})", o.time_limit_s));
   for (const Point &p : o.waypoints) {
     common::require_input(std::isfinite(p.x_m) && std::isfinite(p.y_m), "--waypoints must be finite numbers");
   }

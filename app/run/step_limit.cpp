@@ -1,0 +1,37 @@
+#include "app/run/step_limit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace app {
+
+std::int64_t steps_within(double time_limit_s, int step_ms) {
+  const double steps = std::floor(time_limit_s * 1000.0 / step_ms);
+  constexpr auto kMost = std::numeric_limits<std::int64_t>::max();
+  if (!(steps < static_cast<double>(kMost))) return kMost;  // inf, or past int64's range
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+}
+
+void name_step_limit(const RunOptions &options, RunSummary &summary) {
+  if (summary.reason != robot::EndReason::max_steps) return;
+  if (summary.time_limited) {
+    summary.message = fmt::format("--time-limit {:g} s of simulated time", *options.time_limit_s);
+  } else if (!summary.max_steps_asked) {
+    // The default limit is a safety net far above what any set-up needs; reaching it is a failure.
+    summary.message = fmt::format("the default limit of {} steps ran out; --max-steps N allows more", summary.max_steps);
+  }
+}
+
+StepLimit step_limit(const RunOptions &options, const maze::Maze &maze) {
+  StepLimit limit{options.max_steps.value_or(max_steps_for(maze)), options.max_steps.has_value(), false};
+  if (options.time_limit_s) {
+    const std::int64_t timed = steps_within(*options.time_limit_s, options.simulation.basic_time_step_ms);
+    if (timed < limit.steps) limit = {timed, true, true};
+  }
+  return limit;
+}
+
+}  // namespace app

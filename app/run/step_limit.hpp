@@ -1,0 +1,26 @@
+#pragma once
+// A run's step limit: --max-steps (or max_steps_for's safety net) and --time-limit, simulated
+// seconds, turned into control steps, and the words a run stopped by it ends with.
+
+#include <cstdint>
+
+#include "app/run/run.hpp"
+
+namespace app {
+
+// The control steps of `step_ms` that fit in `time_limit_s` simulated seconds, at least 1 and
+// saturating at the largest step count (a limit of 1e300 s or inf is no limit).
+std::int64_t steps_within(double time_limit_s, int step_ms);
+// The step limit in effect for options on maze: --max-steps (or max_steps_for's), lowered to
+// what --time-limit allows.
+struct StepLimit {
+  std::int64_t steps = 0;
+  bool asked = false;         // --max-steps or --time-limit set it, not max_steps_for
+  bool time_limited = false;  // --time-limit's is the lower
+};
+StepLimit step_limit(const RunOptions &options, const maze::Maze &maze);
+// A run stopped by its step limit says which: `--time-limit S s of simulated time`, or the
+// default limit (a failure); a --max-steps the user gave needs no words.
+void name_step_limit(const RunOptions &options, RunSummary &summary);
+
+}  // namespace app
