@@ -73,7 +73,7 @@ std::vector<maze::sim::Pose> poses(int side, std::uint64_t seed) {
 
 void scan(benchmark::State &state, const maze::Maze &m) {
   const maze::sim::WallGrid walls(m);
-  // The 12 m lidar docs/benchmarks.md's table measured (hambot's own reaches 3 m and rotates).
+  // The 12 m lidar of docs/benchmarks.md's table, its whole image from one pose (as a fixed lidar).
   const maze::sim::LidarSpec &spec = maze::sim::find_profile("hambot-12m").lidars.front();
   const maze::sim::LidarModel lidar(spec);
   const double noise = state.range(1) != 0 ? spec.noise : 0.0;
