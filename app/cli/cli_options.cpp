@@ -2,6 +2,7 @@
 #include "app/cli/cli_errors.hpp"
 #include "app/cli/cli_options.hpp"
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,22 @@
 #include "app/cli/option_binding.hpp"
 
 namespace app {
+
+std::optional<std::array<double, 2>> metres_point(std::string_view text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos) return std::nullopt;
+  std::array<double, 2> point{};
+  const std::string_view parts[2] = {text.substr(0, comma), text.substr(comma + 1)};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::string_view part = common::trim_blanks(parts[k]);
+    if (part.size() < 2 || part.back() != 'm') return std::nullopt;
+    const std::optional<double> value = common::parse_number<double>(part.substr(0, part.size() - 1));
+    if (!value) return std::nullopt;
+    point[k] = *value;
+  }
+  return point;
+}
+
 namespace {
 
 bool whole_number(std::string_view text, int &value) {
@@ -62,17 +79,25 @@ void parse_start(const std::string &text, maze::WorldOverrides &o) {
     o.start_position = n;
     return;
   }
+  o.start_m.reset();
   const std::size_t second = text.find(',', text.find(',') + 1);
-  o.start = cell_of(std::string_view(text).substr(0, second));
+  const std::string_view where = std::string_view(text).substr(0, second);
+  o.start = cell_of(where);
+  if (!o.start) o.start_m = metres_point(where);
   o.start_heading = maze::Side::north;
   if (second != std::string::npos) {
     const std::optional<maze::Side> heading = heading_of(std::string_view(text).substr(second + 1));
-    if (heading) o.start_heading = *heading;
-    if (!heading) o.start.reset();
+    if (heading) {
+      o.start_heading = *heading;
+    } else {
+      o.start.reset();
+      o.start_m.reset();
+    }
   }
-  if (!o.start) {
-    throw common::InputError(
-        fmt::format("--start must be X,Y or X,Y,HEADING with HEADING N, E, S or W (got '{}')", text));
+  if (!o.start && !o.start_m) {
+    throw common::InputError(fmt::format(
+        "--start must be X,Y (a cell) or Xm,Ym (metres), then optionally ,HEADING with HEADING N, E, S or W (got '{}')",
+        text));
   }
 }
 

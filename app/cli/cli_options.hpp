@@ -32,6 +32,10 @@ mapping::Cell parse_cell(const std::string &text, const std::string &option);
 void add_cell_size_option(CLI::App &command, maze::WorldOverrides &overrides);
 void add_world_options(CLI::App &command, maze::WorldOverrides &overrides);
 
+// "Xm,Ym" -> the point in metres, each a finite number with the unit m; nothing for any other
+// text (a cell's "X,Y" among them).
+std::optional<std::array<double, 2>> metres_point(std::string_view text);
+
 // A pose as every command spells it: X,Y,YAW in one word (no quoting), X and Y in metres, YAW
 // in degrees counter-clockwise from east, or with its unit: 90deg, 1.5708rad. Both angles
 // are given; yaw_deg is exactly as typed when YAW was degrees, yaw_rad when radians.

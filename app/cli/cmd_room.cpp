@@ -1,9 +1,11 @@
 // maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/room_run.hpp).
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,22 @@ struct RoomInput {
 mapping::Point point_of(const std::string &text, const std::string &option) {
   const std::vector<double> v = parse_number_list(text, option, 2);
   return {v[0], v[1]};
+}
+
+// --start Xm,Ym[,DEG]: metres, as every command spells a point in metres; the old X,Y[,DEG]
+// (no unit) is read the same, with a warning.
+void read_start(const std::string &text, RoomRunOptions &o) {
+  const std::size_t second = text.find(',', text.find(',') + 1);
+  const std::string where = text.substr(0, second);
+  std::optional<std::array<double, 2>> point = metres_point(where);
+  if (!point) {
+    const std::vector<double> bare = parse_number_list(where, "--start", 2);
+    point = std::array<double, 2>{bare[0], bare[1]};
+    fmt::print(stderr, "{}\n", old_spelling_warning(fmt::format("--start {}", where),
+                                                    fmt::format("--start {:g}m,{:g}m", bare[0], bare[1])));
+  }
+  o.start = mapping::Point{(*point)[0], (*point)[1]};
+  if (second != std::string::npos) o.start_yaw_deg = parse_number_list(text.substr(second + 1), "--start's DEG", 1)[0];
 }
 
 void build(RoomInput &in, const CLI::App &cmd) {
@@ -66,12 +84,7 @@ void build(RoomInput &in, const CLI::App &cmd) {
     }
   }
   if (!in.goal.empty()) o.room.goal = point_of(in.goal, "--goal");
-  if (!in.start.empty()) {
-    const std::vector<double> s = parse_number_list(in.start, "--start");
-    if (s.size() != 2 && s.size() != 3) throw common::InputError("--start must be X,Y or X,Y,DEG");
-    o.start = mapping::Point{s[0], s[1]};
-    if (s.size() == 3) o.start_yaw_deg = s[2];
-  }
+  if (!in.start.empty()) read_start(in.start, o);
   if (!in.snapshots_at.empty()) o.snapshots_at_s = parse_number_list(in.snapshots_at, "--snapshots-at");
   if (!in.snapshot_steps.empty()) {
     for (const double v : parse_number_list(in.snapshot_steps, "--snapshot-steps")) {
@@ -119,7 +132,8 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--cells", in->cells, "X,Y: numCells over the boundary (square cells)");
   cmd->add_option("--resolution", in->resolution, "M: cell size, m (default 0.1)");
   add_boundary_option(*cmd, in->boundary);
-  cmd->add_option("--start", in->start, "X,Y[,DEG]: where the robot starts, m (default the world's start)");
+  cmd->add_option("--start", in->start, "POINT[,DEG]: where the robot starts, in metres with the unit (0.5m,1.2m), and its heading, degrees "
+                                     "from east (default the world's start)");
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
   cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time-limit (default 1)");
   cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");

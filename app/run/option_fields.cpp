@@ -1,6 +1,8 @@
 #include "app/run/option_fields.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -60,6 +62,13 @@ OptionField<Concern> own(std::string_view key, std::string_view flag, Json (*ech
 
 Json cell_json(maze::Cell c) { return Json::array({c.x, c.y}); }
 Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
+
+// A point in metres, [x, y], each rounded to the micrometre as the echo prints it.
+Json metres_json(const std::array<double, 2> &point) {
+  Json j = Json::array();
+  for (const double v : point) j.push_back(std::round(v * 1e6) / 1e6);
+  return j;
+}
 
 template <typename Cell>
 Json cell_or_null(const std::optional<Cell> &c) {
@@ -175,6 +184,7 @@ std::span<const OptionField<maze::WorldOverrides>> option_fields() {
             return start;
           },
           "start"),
+      own<W>("start_m", "--start", [](const W &w) { return w.start_m ? metres_json(*w.start_m) : Json(nullptr); }),
       own<W>("start_position", "--start", [](const W &w) { return json_value(w.start_position); }),  // pos:N
       own<W>("random_start", "--start", [](const W &w) { return Json(w.random_start); }),            // random
       own<W>(

@@ -41,7 +41,7 @@ void set_boundary(Arena &a, const std::array<double, 4> &b) {
 
 void refuse_maze_overrides(const WorldOverrides &o, const std::string &path) {
   const char *option = o.cell_size_m                                ? "--cell-size"
-                       : (o.start || o.start_position || o.random_start) ? "--start"
+                       : (o.start || o.start_m || o.start_position || o.random_start) ? "--start"
                        : (o.goals || o.centre_goals)                 ? "--goal"
                                                                      : nullptr;
   if (option != nullptr) {

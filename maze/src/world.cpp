@@ -86,6 +86,18 @@ void apply(World &world, const WorldOverrides &o) {
     require_inside(world.maze, *o.start, "--start");
     world.maze.set_start(*o.start, o.start_heading);
   }
+  if (o.start_m) {
+    const Maze &m = world.maze;
+    const double column = std::floor(((*o.start_m)[0] - m.origin_x_m()) / m.cell_size_m());
+    const double row = std::floor(((*o.start_m)[1] - m.origin_y_m()) / m.cell_size_m());
+    if (!(column >= 0 && column < m.width() && row >= 0 && row < m.height())) {
+      throw common::InputError(fmt::format("--start {:g}m,{:g}m is outside the maze ({:g} to {:g} m east, {:g} to {:g} m north)",
+                                           (*o.start_m)[0], (*o.start_m)[1], m.origin_x_m(),
+                                           m.origin_x_m() + m.width() * m.cell_size_m(), m.origin_y_m(),
+                                           m.origin_y_m() + m.height() * m.cell_size_m()));
+    }
+    world.maze.set_start(Cell{static_cast<int>(column), static_cast<int>(row)}, o.start_heading);
+  }
   if (o.goals) {
     for (const Cell g : *o.goals) require_inside(world.maze, g, "--goal");
     world.maze.clear_goals();

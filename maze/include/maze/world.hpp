@@ -2,6 +2,7 @@
 // Worlds as files: reading one whatever its format (detected by content), writing one by the
 // output's extension, safely.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -31,6 +32,8 @@ struct WorldOverrides {
   // An XML world has its own size: one that differs by more than 1e-9 of it is an error.
   std::optional<double> cell_size_m;
   std::optional<Cell> start;           // replaces the file's start
+  // --start Xm,Ym[,HEADING]: the start given in metres, the cell that holds the point.
+  std::optional<std::array<double, 2>> start_m;
   Side start_heading = Side::north;    // with start
   // --start pos:N: the world's N-th start position (1-based), cell and heading.
   std::optional<int> start_position;
