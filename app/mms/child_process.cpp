@@ -30,7 +30,6 @@ namespace app {
 namespace {
 
 constexpr auto kPollSlice = std::chrono::milliseconds(50);
-constexpr const char *kMarkVariable = "MAZE_MAPPER_CHILD";
 
 void close_fd(int &fd) {
   if (fd >= 0) ::close(fd);
@@ -67,20 +66,18 @@ void adopt_orphans() {
   std::call_once(once, [] { ::prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0); });
 }
 
-// "MAZE_MAPPER_CHILD=PID.N": unique to one ChildProcess of this process, inherited by all
-// its child's descendants (a grandchild that left the group with setsid(2) too).
+// "MAZE_MAPPER_CHILD_PID_N=1": unique to one ChildProcess of this process, inherited by all
+// its child's descendants (a grandchild that left the group with setsid(2) too). A name of
+// its own, so that the marks of an mms run inside an mms run's program are both kept.
 std::string descendant_mark() {
   static std::atomic<unsigned> serial{0};
-  return fmt::format("{}={}.{}", kMarkVariable, ::getpid(), serial.fetch_add(1));
+  return fmt::format("MAZE_MAPPER_CHILD_{}_{}=1", ::getpid(), serial.fetch_add(1));
 }
 
-// Our environment with `mark` added (a mark the parent had is replaced).
+// Our environment with `mark` added.
 std::vector<char *> environment_with(const std::string &mark) {
   std::vector<char *> env;
-  const std::string prefix = std::string(kMarkVariable) + "=";
-  for (char **e = environ; *e != nullptr; ++e) {
-    if (std::strncmp(*e, prefix.c_str(), prefix.size()) != 0) env.push_back(*e);
-  }
+  for (char **e = environ; *e != nullptr; ++e) env.push_back(*e);
   env.push_back(const_cast<char *>(mark.c_str()));
   env.push_back(nullptr);
   return env;

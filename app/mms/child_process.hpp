@@ -4,7 +4,7 @@
 // of its own so that ending it ends what it started too. Linux only.
 //
 // What it starts in a session or group of its own (setsid) is ended with it too: the child
-// gets MAZE_MAPPER_CHILD=PID.N in its environment, which its descendants inherit, and ending
+// gets MAZE_MAPPER_CHILD_PID_N=1 in its environment, which its descendants inherit, and ending
 // it kills every process that holds that mark (found in /proc). This process is made a
 // subreaper (PR_SET_CHILD_SUBREAPER), so such orphans are its children to reap. A
 // descendant that clears its environment escapes this; a cgroup would not be escaped.
@@ -74,7 +74,7 @@ class ChildProcess {
   bool exited() const;        // it exited (or was killed) and is not reaped yet
   bool readable_now() const;  // its output holds bytes (or its end) this instant
 
-  std::string mark_;     // MAZE_MAPPER_CHILD=PID.N in its environment and its descendants'
+  std::string mark_;     // MAZE_MAPPER_CHILD_PID_N=1 in its environment and its descendants'
 
   pid_t pid_ = -1;
   int to_child_ = -1;    // its standard input
