@@ -106,6 +106,20 @@ TEST_CASE("mms: misbehaving algorithms end the run with their reason, their proc
     CHECK(run.mms.exit->signal == SIGKILL);
     CHECK(app::exit_status(run) == 1);
   }
+  SUBCASE("exits, leaving a child in a session of its own that holds its output: its exit ends the run, the child killed") {
+    const std::string pid_file = fs::temp_directory_path() / fmt::format("mms_escape_{}.pid", ::getpid());
+    fs::remove(pid_file);
+    ::setenv("MMS_TEST_PIDFILE", pid_file.c_str(), 1);
+    const app::MmsRun run = run_script("lab4x4.txt", "escape.sh", app::MmsWalls::truth, 10.0);
+    ::unsetenv("MMS_TEST_PIDFILE");
+    std::string escaped;
+    std::ifstream(pid_file) >> escaped;
+    fs::remove(pid_file);
+    REQUIRE_FALSE(escaped.empty());
+    CHECK_FALSE(running(escaped));
+    CHECK(run.mms.end == app::MmsEnd::exited);
+    CHECK(run.mms.message == "the algorithm ended (exit status 0) after 0 lines");
+  }
   SUBCASE("crashes") {
     const app::MmsRun run = run_script("lab4x4.txt", "crash.sh", app::MmsWalls::sensed);
     CHECK(run.mms.end == app::MmsEnd::failed);
@@ -168,6 +182,23 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
   const std::string csv = app::format_mms_batch_csv(items);
   CHECK(csv.starts_with(std::string(app::kMmsBatchCsvHeader) + "\n"));
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
+}
+
+TEST_CASE("mms batch: an interrupted row is marked and left out of the totals and the CSV") {
+  app::MmsBatchItem done;
+  done.world = "a.txt";
+  done.ran = true;
+  done.ok = true;
+  done.run.summary.reached_goal = true;
+  app::MmsBatchItem stopped;
+  stopped.world = "b.txt";
+  stopped.ran = true;
+  stopped.interrupted = true;
+  stopped.run.mms.end = app::MmsEnd::interrupted;
+  stopped.run.summary.reached_goal = true;  // reached before the signal: still not counted
+  const std::string table = app::format_mms_batch_table({done, stopped}, 0.0, {});
+  CHECK(table.find("total: 2 worlds, 1 ok, 0 failed, 1 interrupted; goal reached 1 of 1;") != std::string::npos);
+  CHECK(app::format_mms_batch_csv({done, stopped}).find("b.txt") == std::string::npos);
 }
 
 TEST_CASE("mms --out: the files every run writes, summary.json with mms's stats and score, marks.txt the marks") {

@@ -14,6 +14,7 @@
 
 #include "app/run/run.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "app/run/run_report.hpp"
 
 namespace app {
@@ -147,11 +148,16 @@ std::vector<BatchRow> read_batch_csvs(const std::vector<std::string> &files);
 int batch_exit_status(const std::vector<BatchItem> &items);
 
 // Runs one world's run() for a batch row: a bad input (common::InputError) marks the row
-// bad_input with its diagnostic, any other failure is the row's error; the batch goes on.
+// bad_input with its diagnostic, a wait a stop signal ended (common::Interrupted: a FIFO
+// world without a writer) marks it interrupted, any other failure is the row's error; the
+// batch goes on.
 template <typename Row, typename Run>
 void run_row(Row &row, Run &&run) {
   try {
     run();
+  } catch (const common::Interrupted &e) {
+    row.interrupted = true;
+    row.error = e.what();
   } catch (const common::InputError &e) {
     row.bad_input = true;
     row.error = e.diagnostic();

@@ -30,8 +30,12 @@ MmsBatchItem run_one(RunOptions options, const MmsOptions &mms, const std::strin
     if (!item.ok) {
       const MmsReport &r = item.run.mms;
       const bool as_asked = r.end == MmsEnd::exited || r.end == MmsEnd::reached;
-      item.error = as_asked ? fmt::format("{}, but the goal was not reached", r.message)
-                            : fmt::format("{}: {}", to_string(r.end), r.message);
+      if (item.interrupted) {
+        item.error = r.message;  // "interrupted by SIGTERM"
+      } else {
+        item.error = as_asked ? fmt::format("{}, but the goal was not reached", r.message)
+                              : fmt::format("{}: {}", to_string(r.end), r.message);
+      }
     }
   });
   return item;
@@ -98,7 +102,7 @@ std::string format_mms_batch_table(const std::vector<MmsBatchItem> &items, doubl
     rows.push_back({c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], best, c[12], c[13], c[14]});
     ok += item.ok ? 1 : 0;
     interrupted += item.interrupted ? 1 : 0;
-    if (item.ran) {
+    if (item.ran && !item.interrupted) {  // an interrupted run is shown, not counted
       ++ran;
       reached += item.run.summary.reached_goal ? 1 : 0;
       score_sum += item.run.mms.stats.score();
@@ -144,7 +148,9 @@ std::string format_mms_batch_csv(const std::vector<MmsBatchItem> &items) {
 }
 
 int mms_batch_exit_status(const std::vector<MmsBatchItem> &items) {
-  if (std::any_of(items.begin(), items.end(), [](const MmsBatchItem &i) { return i.interrupted; })) return 130;
+  if (std::any_of(items.begin(), items.end(), [](const MmsBatchItem &i) { return i.interrupted; })) {
+    return common::interrupted_exit_status();
+  }
   if (std::all_of(items.begin(), items.end(), [](const MmsBatchItem &i) { return i.ok; })) return 0;
   if (std::all_of(items.begin(), items.end(), [](const MmsBatchItem &i) { return i.bad_input; })) return 2;
   return 1;

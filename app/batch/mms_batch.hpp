@@ -43,7 +43,8 @@ inline constexpr std::string_view kMmsBatchCsvHeader =
 // The same as CSV (interrupted worlds left out), kMmsBatchCsvHeader first.
 std::string format_mms_batch_csv(const std::vector<MmsBatchItem> &items);
 
-// 130 when interrupted, 0 when every run was ok, 2 when every world was bad input, else 1.
+// 128 + the signal when interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 0 when every run
+// was ok, 2 when every world was bad input, else 1.
 int mms_batch_exit_status(const std::vector<MmsBatchItem> &items);
 
 }  // namespace app

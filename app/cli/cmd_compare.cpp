@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -145,6 +146,15 @@ std::string compare_csv(const std::vector<int> &ks, const std::vector<std::vecto
   return out;
 }
 
+// The names compare --out may write: compare.csv, and run --out's in each kK/.
+std::vector<std::string> compare_output_names(const std::vector<int> &ks) {
+  std::vector<std::string> names{"compare.csv"};
+  for (const int k : ks) {
+    for (const std::string &name : run_output_names()) names.push_back(fmt::format("k{}/{}", k, name));
+  }
+  return names;
+}
+
 // One quiet run per K: the maps side by side under a heading per K (unless --quiet), then
 // the summaries as one table. With --out DIR each run writes run --out's files into DIR/kK/
 // and DIR/compare.csv holds the table. Ctrl-C stops the run in flight at its next step and
@@ -156,8 +166,13 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
   double total_ms = 0.0;
   RunControls controls;
   controls.interrupted = &common::interrupted;
+  std::exception_ptr no_space;  // a full disk: said after the table, which the user still gets
+  controls.no_space = &no_space;
   const common::SignalsStopWork stop_signals;
-  if (!output.out_dir.empty()) prepare_output_dir(output.out_dir);
+  if (!output.out_dir.empty()) {
+    prepare_output_dir(output.out_dir);
+    refuse_outputs_over_inputs(output.out_dir, compare_output_names(ks), run_inputs(options));
+  }
   for (const int k : ks) {
     RunOptions one = options;
     one.subcells = k;
@@ -181,12 +196,20 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
   if (!output.quiet) print_columns(maps, out);
   print_columns(table, out);
   out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);
-  if (!output.out_dir.empty()) {
+  if (!output.out_dir.empty() && !no_space) {
     const std::filesystem::path dir(output.out_dir);
-    common::write_file_atomically((dir / "compare.csv").string(), compare_csv(ks, table));
-    std::string wrote = "wrote " + (dir / "compare.csv").string();
-    for (const int k : ks) wrote += ", " + (dir / fmt::format("k{}", k) / "").string();
-    out << wrote << '\n';
+    try {
+      common::write_file_atomically((dir / "compare.csv").string(), compare_csv(ks, table));
+      std::string wrote = "wrote " + (dir / "compare.csv").string();
+      for (const int k : ks) wrote += ", " + (dir / fmt::format("k{}", k) / "").string();
+      out << wrote << '\n';
+    } catch (const common::NoSpaceError &) {
+      no_space = std::current_exception();
+    }
+  }
+  if (no_space) {
+    out << std::flush;
+    std::rethrow_exception(no_space);
   }
   return status;
 }

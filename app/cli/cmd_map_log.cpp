@@ -297,6 +297,16 @@ std::string caption(const MapLogInput &input, const sensing::LogMapOptions &o, s
                      o.cells_x, o.cells_y, step, steps);
 }
 
+// The names --out may write: the final files and each snapshot's.
+std::vector<std::string> map_log_output_names(const std::vector<std::size_t> &snapshots) {
+  std::vector<std::string> names{"logodds.csv", "logodds.png", "thresholded.txt", "thresholded.png"};
+  for (const std::size_t at : snapshots) {
+    names.push_back(fmt::format("logodds_step{}.csv", at));
+    names.push_back(fmt::format("logodds_step{}.png", at));
+  }
+  return names;
+}
+
 // --out: a snapshot's grid and picture after step `at`.
 void write_snapshot(const MapLogInput &input, const sensing::LogMapOptions &o, const sensing::LogGrid &grid,
                     std::size_t at, std::size_t steps) {
@@ -347,7 +357,10 @@ void run_map_log(const MapLogInput &input) {
   check_sensor_options(input, log.sensor);
   const auto snapshots = snapshot_steps(input, log.steps.size());
   warn_outside_boundary(o, log);
-  if (!input.out_dir.empty()) prepare_output_dir(input.out_dir);
+  if (!input.out_dir.empty()) {
+    prepare_output_dir(input.out_dir);
+    refuse_outputs_over_inputs(input.out_dir, map_log_output_names(snapshots), {{"the log", input.log_path}});
+  }
   sensing::LogGrid grid = sensing::make_log_grid(o);
   for (std::size_t n = 0; n < log.steps.size(); ++n) {
     sensing::apply_log_step(o, log.sensor, log.steps[n], grid);

@@ -1,7 +1,9 @@
 // maze_mapper: map a maze cell by cell into a 4D log-odds occupancy grid (see README.md).
 // This is the composition root: the only place that wires the world side to the controller.
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -21,6 +23,26 @@ namespace {
 
 constexpr int kExitUsage = 2;
 constexpr int kExitFailure = 1;
+
+// Standard output could not take the program's output (`error_number`: the failed write's
+// errno): exit status 4 when the disk is full (as for a file), 1 otherwise.
+int stdout_failed(int error_number) {
+  if (error_number == ENOSPC || error_number == EDQUOT) {
+    fmt::print(stderr, "error: cannot write standard output: {}\n", std::strerror(error_number));
+    return common::kExitNoSpace;
+  }
+  fmt::print(stderr, "error: could not write to standard output\n");
+  return kExitFailure;
+}
+
+// A stop signal recorded while the command still worked (after its last poll, while it
+// printed or wrote its files) is its exit status too: 128 + the signal, said on one line
+// unless the command's own status already says it.
+int status_after_signal(int status) {
+  if (!common::interrupted() || status == common::interrupted_exit_status()) return status;
+  fmt::print(stderr, "error: interrupted by {}\n", common::interrupt_name());
+  return common::interrupted_exit_status();
+}
 
 }  // namespace
 
@@ -49,11 +71,8 @@ int main(int argc, char **argv) {
       cli.parse(static_cast<int>(parsed.size()), parsed.data());
     }
     std::cout.flush();
-    if (!std::cout) {
-      fmt::print(stderr, "error: could not write to standard output\n");
-      return kExitFailure;
-    }
-    return context.status;
+    if (!std::cout) return stdout_failed(errno);
+    return status_after_signal(context.status);
   } catch (const CLI::CallForHelp &e) {
     return cli.exit(e);
   } catch (const CLI::CallForAllHelp &e) {

@@ -1,16 +1,23 @@
 #include "app/mms/child_process.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <mutex>
 #include <thread>
 
 #include <fmt/format.h>
@@ -52,6 +59,81 @@ struct SpawnSetup {
   SpawnSetup &operator=(const SpawnSetup &) = delete;
 };
 
+// This process adopts its orphaned descendants (prctl PR_SET_CHILD_SUBREAPER): a grandchild
+// whose parent died is ours to end and reap, not init's. Once per process.
+void adopt_orphans() {
+  static std::once_flag once;
+  std::call_once(once, [] { ::prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0); });
+}
+
+// "MAZE_MAPPER_CHILD_PID_N=1": unique to one ChildProcess of this process, inherited by all
+// its child's descendants (a grandchild that left the group with setsid(2) too). A name of
+// its own, so that the marks of an mms run inside an mms run's program are both kept.
+std::string descendant_mark() {
+  static std::atomic<unsigned> serial{0};
+  return fmt::format("MAZE_MAPPER_CHILD_{}_{}=1", ::getpid(), serial.fetch_add(1));
+}
+
+// Our environment with `mark` added.
+std::vector<char *> environment_with(const std::string &mark) {
+  std::vector<char *> env;
+  for (char **e = environ; *e != nullptr; ++e) env.push_back(*e);
+  env.push_back(const_cast<char *>(mark.c_str()));
+  env.push_back(nullptr);
+  return env;
+}
+
+// Whether process `pid`'s environment holds `mark` (false once it is a zombie: /proc shows
+// no environment then).
+bool has_mark(pid_t pid, const std::string &mark) {
+  std::ifstream file(fmt::format("/proc/{}/environ", pid), std::ios::binary);
+  std::string entry;
+  while (std::getline(file, entry, '\0')) {
+    if (entry == mark) return true;
+  }
+  return false;
+}
+
+// The live processes (ours excepted) whose environment holds `mark`.
+std::vector<pid_t> marked_processes(const std::string &mark) {
+  std::vector<pid_t> found;
+  DIR *proc = ::opendir("/proc");
+  if (proc == nullptr) return found;
+  const pid_t self = ::getpid();
+  while (const dirent *entry = ::readdir(proc)) {
+    char *end = nullptr;
+    const long pid = std::strtol(entry->d_name, &end, 10);
+    if (end == entry->d_name || *end != '\0' || pid <= 0 || pid == self) continue;
+    if (has_mark(static_cast<pid_t>(pid), mark)) found.push_back(static_cast<pid_t>(pid));
+  }
+  ::closedir(proc);
+  return found;
+}
+
+// Kills every live process holding `mark` until none is left (what is killed may fork
+// meanwhile: scanned again), then reaps those that became our children (orphans adopted).
+// Gives up after about a second.
+void end_marked(const std::string &mark) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+  std::vector<pid_t> killed;
+  for (;;) {
+    const std::vector<pid_t> alive = marked_processes(mark);
+    if (alive.empty() || std::chrono::steady_clock::now() >= give_up) break;
+    for (const pid_t pid : alive) {
+      ::kill(pid, SIGKILL);
+      if (std::find(killed.begin(), killed.end(), pid) == killed.end()) killed.push_back(pid);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  while (!killed.empty() && std::chrono::steady_clock::now() < give_up) {
+    std::erase_if(killed, [](pid_t pid) {
+      const pid_t r = ::waitpid(pid, nullptr, WNOHANG);
+      return r == pid || (r < 0 && errno == ECHILD && ::kill(pid, 0) != 0);  // reaped, or gone elsewhere
+    });
+    if (!killed.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
 }  // namespace
 
 std::string describe(const ChildExit &e) {
@@ -89,7 +171,10 @@ ChildProcess::ChildProcess(const std::vector<std::string> &argv) {
   std::vector<char *> args;
   for (const std::string &a : argv) args.push_back(const_cast<char *>(a.c_str()));
   args.push_back(nullptr);
-  const int error = posix_spawnp(&pid_, args[0], &setup.actions, &setup.attr, args.data(), environ);
+  adopt_orphans();
+  mark_ = descendant_mark();
+  std::vector<char *> env = environment_with(mark_);
+  const int error = posix_spawnp(&pid_, args[0], &setup.actions, &setup.attr, args.data(), env.data());
   close_fd(in[0]);
   close_fd(out[1]);
   if (error != 0) {
@@ -149,8 +234,13 @@ ChildProcess::Read ChildProcess::read_line(std::string &line, Clock::time_point 
     std::array<pollfd, 2> fds{pollfd{from_child_, POLLIN, 0}, pollfd{to_child_, POLLOUT, 0}};
     const nfds_t count = (to_child_ >= 0 && !pending_input_.empty()) ? 2 : 1;
     const int ms = static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(wait).count()) + 1;
-    if (::poll(fds.data(), count, ms) < 0 && errno != EINTR) {
-      throw std::runtime_error(fmt::format("poll: {}", std::strerror(errno)));
+    const int ready = ::poll(fds.data(), count, ms);
+    if (ready < 0 && errno != EINTR) throw std::runtime_error(fmt::format("poll: {}", std::strerror(errno)));
+    if (ready == 0 && exited() && !readable_now()) {
+      // It ended and said all it will: a grandchild holding its output open is not it.
+      output_closed_ = true;
+      if (!buffer_.empty()) buffer_ += '\n';
+      continue;
     }
     if (count == 2 && (fds[1].revents & (POLLOUT | POLLERR | POLLHUP)) != 0) flush_input();
     if ((fds[0].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
@@ -164,6 +254,11 @@ ChildProcess::Read ChildProcess::read_line(std::string &line, Clock::time_point 
       }
     }
   }
+}
+
+bool ChildProcess::readable_now() const {
+  pollfd p{from_child_, POLLIN, 0};
+  return ::poll(&p, 1, 0) > 0;
 }
 
 bool ChildProcess::reap(int options) {
@@ -184,9 +279,8 @@ bool ChildProcess::reap(int options) {
 ChildExit ChildProcess::finish(Clock::time_point deadline) {
   close_fd(to_child_);  // end of its input: a child reading more sees it
   for (;;) {
-    siginfo_t info{};
     // Exited, not reaped yet: its group id stays its own while what it left behind is killed.
-    if (::waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_) break;
+    if (exited()) break;
     if (Clock::now() >= deadline) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -197,9 +291,15 @@ ChildExit ChildProcess::kill() {
   if (!reaped_) {
     ::kill(-pid_, SIGKILL);  // the group: what it started too
     reap(0);
+    end_marked(mark_);       // and what left the group (setsid), orphaned to us by now
   }
   close_fd(to_child_);
   return exit_;
+}
+
+bool ChildProcess::exited() const {
+  siginfo_t info{};
+  return ::waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_;
 }
 
 }  // namespace app

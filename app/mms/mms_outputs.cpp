@@ -51,6 +51,20 @@ std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, c
   return j.dump(2) + "\n";
 }
 
+std::vector<std::string> mms_output_names() {
+  std::vector<std::string> names = run_output_names();
+  names.emplace_back("marks.txt");
+  return names;
+}
+
+std::vector<NamedInput> mms_inputs(const RunOptions &options, const MmsOptions &mms) {
+  std::vector<NamedInput> inputs = run_inputs(options);
+  for (std::size_t i = 0; i < mms.command.size(); ++i) {
+    inputs.push_back({i == 0 ? "the program" : "the program's argument", mms.command[i]});
+  }
+  return inputs;
+}
+
 void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
   const common::SignalsEndProcess signals_end_process;  // each file whole or absent
   const std::filesystem::path d(dir);

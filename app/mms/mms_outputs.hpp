@@ -5,6 +5,7 @@
 // marks.txt, the algorithm's marks as the terminal shows them, without colour.
 
 #include <string>
+#include <vector>
 
 #include "app/mms/mms_session.hpp"
 #include "app/report/outputs.hpp"
@@ -15,6 +16,13 @@ namespace app {
 // walls, mms_end, mms_end_message, lines, crashes, and the stats (total_distance ... score,
 // best-run values null until a run has finished).
 std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
+
+// The names write_mms_outputs may write in its dir (run --out's and marks.txt).
+std::vector<std::string> mms_output_names();
+
+// The files an mms run reads, for refuse_outputs_over_inputs: the world, --robot's file, the
+// program and each of its arguments (any may name a file it reads: `python3 DIR/algo.py`).
+std::vector<NamedInput> mms_inputs(const RunOptions &options, const MmsOptions &mms);
 
 // Writes summary.json (replacing the recorder's) and marks.txt into dir, which the recorder
 // prepared and filled.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -18,7 +19,9 @@
 #include "app/run/profile_json.hpp"
 #include "app/run/step_limit.hpp"
 #include "app/run/terminal.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "mapping/walls.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
@@ -73,7 +76,7 @@ void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child,
     }
     if (r == ChildProcess::Read::interrupted) {
       report.end = MmsEnd::interrupted;
-      report.message = "interrupted";
+      report.message = "interrupted by " + common::interrupt_name();
       return;
     }
     ++report.lines;
@@ -214,7 +217,10 @@ robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandCont
     report.end = MmsEnd::robot;
   }
   if (!report.exit) report.exit = child.kill();
-  if (motion == robot::Motion::stopped) report.end = MmsEnd::interrupted;
+  if (motion == robot::Motion::stopped) {
+    report.end = MmsEnd::interrupted;
+    report.message = "interrupted by " + common::interrupt_name();
+  }
   robot::EndReason reason = reason_of(report, motion);
   if (report.end == MmsEnd::robot && motion != robot::Motion::ok) {
     std::string why;
@@ -245,6 +251,8 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const std::string &out_dir = options.output.out_dir;
   std::optional<FilesRecorder> recorder;  // the files every kind of run writes
   if (!out_dir.empty()) {
+    // The program's files and marks.txt too, before the recorder prepares the folder.
+    refuse_outputs_over_inputs(out_dir, mms_output_names(), mms_inputs(options, mms));
     recorder.emplace();
     recorder->start(RunStart{options, truth, simulation.robot(), controller_opts, style.initial_log_odds});
   }
@@ -283,9 +291,14 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   name_step_limit(options, run.summary);
   run.summary.wall_time_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
 
+  std::exception_ptr no_space;
   if (recorder) {
-    recorder->finish(RunEnd{options, truth, run.summary, result, model, learned_sides(result, style)});
-    write_mms_outputs(out_dir, options, mms, run);
+    try {
+      recorder->finish(RunEnd{options, truth, run.summary, result, model, learned_sides(result, style)});
+      write_mms_outputs(out_dir, options, mms, run);
+    } catch (const common::NoSpaceError &) {
+      no_space = std::current_exception();  // said after the summary, which the user still gets
+    }
   }
   if (report.end == MmsEnd::interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";
@@ -294,6 +307,10 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
     out << "the algorithm's marks (setWall, setColor, setText):\n" << render_marks(report.marks, style.color) << '\n';
   }
   out << format_mms_summary(options, mms, run);
+  if (no_space) {
+    out << std::flush;
+    std::rethrow_exception(no_space);
+  }
   return run;
 }
 
@@ -317,6 +334,16 @@ std::string command_line(const std::vector<std::string> &command) {
   return text;
 }
 
+namespace {
+
+// The summary's end: "interrupted by SIGTERM", "failed (the algorithm ended ...)", "exited".
+std::string mms_end_text(const MmsReport &r) {
+  if (r.end == MmsEnd::interrupted) return r.message;
+  return r.message.empty() ? std::string(to_string(r.end)) : fmt::format("{} ({})", to_string(r.end), r.message);
+}
+
+}  // namespace
+
 std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
   const RunSummary &s = run.summary;
   const MmsReport &r = run.mms;
@@ -331,7 +358,7 @@ std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms,
   line("seed", std::to_string(options.simulation.seed));
   line("algorithm", command_line(mms.command));
   line("walls", mms.walls == MmsWalls::truth ? "truth" : "sensed");
-  line("end", r.message.empty() ? std::string(to_string(r.end)) : fmt::format("{} ({})", to_string(r.end), r.message));
+  line("end", mms_end_text(r));
   line("lines", std::to_string(r.lines));
   line("steps", std::to_string(s.steps));
   line("moves", std::to_string(s.moves));
@@ -354,7 +381,7 @@ std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms,
 }
 
 int exit_status(const MmsRun &run) {
-  if (run.mms.end == MmsEnd::interrupted) return 130;
+  if (run.mms.end == MmsEnd::interrupted) return common::interrupted_exit_status();
   const bool ended_as_asked = run.mms.end == MmsEnd::exited || run.mms.end == MmsEnd::reached;
   return ended_as_asked && run.summary.reached_goal ? 0 : 1;
 }

@@ -50,7 +50,7 @@ enum class MmsEnd {
   wall_limit,      // --wall-limit ran out (wall-clock seconds: the guard against a hung program)
   protocol_error,  // a line that is no command, too long, or a move not simulated
   robot,           // the robot could not go on (no progress, step limit)
-  interrupted,     // Ctrl-C or SIGTERM
+  interrupted,     // Ctrl-C, SIGTERM or SIGHUP
 };
 std::string_view to_string(MmsEnd end);  // "exited", "reached", "failed", "wall limit", ...
 
@@ -72,7 +72,8 @@ struct MmsRun {
 // Runs the algorithm on one maze; prints the progress (unless quiet), the final map, the
 // algorithm's marks and the summary to out. Throws common::InputError when the options do
 // not fit the maze or robot, or the command cannot be started. A maze without goals gets
-// its centre cells (mms's goal).
+// its centre cells (mms's goal). With --out, a full disk throws common::NoSpaceError after
+// the summary is printed.
 MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maze &truth, std::ostream &out,
                const RunControls &controls = {});
 // Loads options.world and runs run_mms.
@@ -85,7 +86,7 @@ MmsRun run_mms_world(const RunOptions &options, const MmsOptions &mms, std::ostr
 std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
 
 // 0 when the algorithm ended as asked (exited 0, or --until reached) and the robot reached
-// the goal; 130 when interrupted; 1 otherwise.
+// the goal; 128 + the signal when interrupted (143 for SIGTERM); 1 otherwise.
 int exit_status(const MmsRun &run);
 
 // "python3 algo.py" (arguments with blanks quoted).

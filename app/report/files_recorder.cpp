@@ -10,7 +10,7 @@ namespace app {
 void FilesRecorder::start(const RunStart &start) {
   const std::string &dir = start.options.output.out_dir;
   prepare_output_dir(dir);
-  refuse_outputs_over_inputs(dir, {start.options.world});
+  refuse_outputs_over_inputs(dir, run_output_names(), run_inputs(start.options));
   if (start.options.output.trace) {
     trace_.emplace(dir, start.robot, start.controller, trace_every_step(start.options));
   }

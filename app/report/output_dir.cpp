@@ -3,6 +3,7 @@
 #include "app/report/output_dir.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,11 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // The first missing ancestor of dir (dir itself when only it is missing), to remove on failure.
+// A link is there, dangling or not: never counted missing, so never removed.
 fs::path first_missing(const fs::path &dir) {
   fs::path missing;
   for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
     std::error_code ec;
-    if (fs::exists(p, ec) || ec) break;
+    if (fs::exists(fs::symlink_status(p, ec)) || ec) break;
     missing = p;
     if (p == p.parent_path()) break;
   }
@@ -37,10 +39,15 @@ fs::path first_missing(const fs::path &dir) {
 void probe_writable(const std::string &dir) {
   const fs::path probe = fs::path(dir) / fmt::format(".maze_mapper.probe.{}", ::getpid());
   const std::string name = probe.string();
+  const int slot = common::register_temporary(name);  // a signal meanwhile removes it
   const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) refuse_out_dir(dir, fmt::format("cannot create a file there: {}", std::strerror(errno)));
-  ::close(fd);
-  ::unlink(name.c_str());
+  const int open_errno = errno;
+  if (fd >= 0) {
+    ::close(fd);
+    ::unlink(name.c_str());
+  }
+  common::unregister_temporary(slot);
+  if (fd < 0) refuse_out_dir(dir, fmt::format("cannot create a file there: {}", std::strerror(open_errno)));
 }
 
 
@@ -54,6 +61,21 @@ constexpr std::array<const char *, 15> kOutputNames{
 bool is_snapshot_name(const std::string &name) {
   if (name.size() < 6 || !(name.ends_with(".png") || name.ends_with(".svg") || name.ends_with(".pdf"))) return false;
   return std::all_of(name.begin(), name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The file `name` names in dir; for a folder's name ("snapshots/"), the file of that folder
+// that has `input`'s name (links followed), empty when there is none.
+fs::path output_path_for(const fs::path &dir, const std::string &name, const std::string &input) {
+  if (!name.ends_with('/')) return dir / name;
+  std::error_code ec;
+  const fs::path real = fs::canonical(input, ec);
+  return ec ? fs::path() : dir / name / real.filename();
+}
+
+// Whether writing `output` would replace `input`: one file, not a character device.
+bool is_same_content(const std::string &output, const std::string &input) {
+  struct stat st {};
+  return ::stat(output.c_str(), &st) == 0 && !S_ISCHR(st.st_mode) && common::same_file(output, input);
 }
 
 // Removes a file an earlier run left (a regular file or a link; never anything else).
@@ -95,6 +117,10 @@ void prepare_output_dir(const std::string &dir) {
     probe_writable(dir);
     return;
   }
+  if (fs::is_symlink(fs::symlink_status(path, ec))) {
+    refuse_out_dir(dir, fmt::format("a symbolic link to {}, which does not exist (create that directory, or give "
+                                    "another path)", fs::read_symlink(path, ec).string()));
+  }
   const fs::path created = first_missing(path);
   errno = 0;
   fs::create_directories(path, ec);
@@ -111,8 +137,25 @@ void prepare_output_dir(const std::string &dir) {
   }
 }
 
-void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &inputs) {
-  for (const char *name : kOutputNames) common::refuse_output_over_input("--out", (fs::path(dir) / name).string(), inputs);
+const std::vector<std::string> &run_output_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all(kOutputNames.begin(), kOutputNames.end());
+    all.emplace_back("snapshots/");
+    return all;
+  }();
+  return names;
+}
+
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &names,
+                                const std::vector<NamedInput> &inputs) {
+  for (const NamedInput &input : inputs) {
+    for (const std::string &name : names) {
+      const fs::path output = output_path_for(fs::path(dir), name, input.path);
+      if (output.empty() || !is_same_content(output.string(), input.path)) continue;
+      throw common::InputError(fmt::format("--out {} is also an input ({} {}): refusing to overwrite it",
+                                           output.string(), input.what, input.path));
+    }
+  }
 }
 
 void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written) {

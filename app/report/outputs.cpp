@@ -223,6 +223,10 @@ void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummar
 
 }  // namespace
 
+std::vector<NamedInput> run_inputs(const RunOptions &options) {
+  return {{"the world", options.world}, {"--robot", options.robot}};
+}
+
 std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
                        std::size_t snapshot_files) {
   std::vector<std::string> names(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot));

@@ -113,6 +113,9 @@ std::string truth_png_file(const RunOptions &options, const RunFiles &files, Pic
 std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
                        std::size_t snapshot_files);
 
+// The files a run reads, for refuse_outputs_over_inputs: the world and --robot's file.
+std::vector<NamedInput> run_inputs(const RunOptions &options);
+
 // Writes the files into dir (prepared by prepare_output_dir); then removes the files an
 // earlier run left there that this one did not write (of the names above only: trace.csv
 // after --no-trace, replay.html, plan.*, snapshots/NN.png beyond this run's N; nothing

@@ -70,6 +70,11 @@ std::string room_wave_numbers(const sensing::RoomMap &map, const std::vector<std
   return out;
 }
 
+std::vector<std::string> room_output_names() {
+  return {"trace.csv", "logodds.csv", "thresholded.txt", "map.pgm", "map.yaml", "summary.json",
+          "map.png",   "wave.png",    "replay.html",     "snapshots/"};
+}
+
 void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
                         const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures) {
   std::ostringstream csv;

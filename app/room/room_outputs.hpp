@@ -26,6 +26,9 @@ struct RoomFile {
   std::string bytes;
 };
 
+// The names write_room_outputs may write in its dir; "snapshots/" stands for that folder's files.
+std::vector<std::string> room_output_names();
+
 // Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json and the
 // pictures (map.png, wave.png, snapshots/...) into dir, each atomically.
 void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,

@@ -393,7 +393,8 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   sensing::RoomMap map(spec, model);
   if (!options.out_dir.empty()) {
     prepare_output_dir(options.out_dir);
-    refuse_outputs_over_inputs(options.out_dir, {options.world});
+    refuse_outputs_over_inputs(options.out_dir, room_output_names(),
+                               {{"the world", options.world}, {"--robot", options.robot}});
   }
   maze::sim::SimulationOptions sim = options.simulation;
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};

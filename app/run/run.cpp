@@ -427,7 +427,9 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
     out << planned.str();
   }
   out << format_summary(options, summary);
-  if (no_space) {
+  if (no_space && controls.no_space != nullptr) {
+    *controls.no_space = no_space;
+  } else if (no_space) {
     out << std::flush;
     std::rethrow_exception(no_space);
   }

@@ -7,6 +7,7 @@
 // against the truth.
 
 #include <cstdint>
+#include <exception>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -32,6 +33,9 @@ struct RunControls {
   // Keeps the run's files (app/run/run_recorder.hpp); required when options.output.out_dir
   // is set: report/'s run_and_write() makes one.
   RunRecorder *recorder = nullptr;
+  // When set, a full disk while the recorder writes is kept here (common::NoSpaceError) and
+  // the run returns its summary; when null it is thrown after the summary is printed.
+  std::exception_ptr *no_space = nullptr;
 };
 
 // What the planner found, for the summary.

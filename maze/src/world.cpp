@@ -18,6 +18,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/input_file.hpp"
 #include "maze/arena_world.hpp"
 #include "maze/maz_format.hpp"
 #include "common/random.hpp"
@@ -35,16 +36,6 @@ namespace {
 constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
 
 // Closes a file descriptor when it goes out of scope.
-struct FileDescriptor {
-  int fd = -1;
-  explicit FileDescriptor(int f) : fd(f) {}
-  FileDescriptor(const FileDescriptor &) = delete;
-  FileDescriptor &operator=(const FileDescriptor &) = delete;
-  ~FileDescriptor() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
 common::InputError cannot(std::string_view what, const std::string &path, int error) {
   return common::InputError(fmt::format("cannot {} {}: {}", what, path, std::strerror(error)));
 }
@@ -202,21 +193,18 @@ common::SourceLocation location_of(std::string_view text, std::size_t offset, co
 }  // namespace
 
 std::string read_world_text(const std::string &path) {
-  const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
-  if (file.fd < 0) throw cannot("read", path, errno);
+  common::InputFile file(path);  // a FIFO's wait for its writer ends on a stop signal
   std::string text;
   struct stat status {};
-  if (::fstat(file.fd, &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0) {
+  if (::fstat(file.fd(), &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0) {
     text.reserve(std::min(static_cast<std::size_t>(status.st_size), kMaxFileBytes) + 1);  // no doubling
   }
   std::optional<Format> format;
   char buffer[1 << 16];
   for (;;) {
-    const ssize_t n = ::read(file.fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw cannot("read", path, errno);
+    const std::size_t n = file.read(buffer, sizeof buffer);
     const std::size_t start = text.size();
-    text.append(buffer, static_cast<std::size_t>(n));
+    text.append(buffer, n);
     if (!format && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {
       format = detect_format(text, path);  // throws when the first bytes are no format at all
     }
@@ -323,16 +311,13 @@ void save_world(const Maze &maze, const std::string &path) {
 }
 
 std::string read_file(const std::string &path) {
-  const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
-  if (file.fd < 0) throw cannot("read", path, errno);
+  common::InputFile file(path);
   std::string text;
   char buffer[1 << 16];
   for (;;) {
-    const ssize_t n = ::read(file.fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw cannot("read", path, errno);
+    const std::size_t n = file.read(buffer, sizeof buffer);
     if (n == 0) return text;
-    text.append(buffer, static_cast<std::size_t>(n));
+    text.append(buffer, n);
     if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
   }
 }

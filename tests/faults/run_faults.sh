@@ -146,6 +146,79 @@ else
   echo "     (skipped: mounting a tmpfs is not allowed here)"
 fi
 
+begin "a full disk under --out: mms, compare and plan print their summary too, exit status 4"
+mkdir -p "$dir/tiny"
+if unshare -m sh -c "mount -t tmpfs -o size=16k tmpfs '$dir/tiny' && exit 0" 2>/dev/null; then
+  for cmd in "mms --quiet" "compare --quiet" "plan"; do
+    case $cmd in mms*) algorithm="-- sh -c 'exit 0'" want="^end: exited" ;; compare*) algorithm="" want="^wall_time_ms" ;;
+      *) algorithm="" want="^end: done" ;; esac
+    status=0
+    unshare -m sh -c "mount -t tmpfs -o size=16k tmpfs '$dir/tiny' && '$program' $cmd '$lab' --out '$dir/tiny/out' \
+      $algorithm >'$dir/out' 2>'$dir/err'" || status=$?
+    [ "$status" = 4 ] || fail "$cmd: exit $status, expected 4"
+    grep -q "$want" "$dir/out" || fail "$cmd: no summary"
+    grep -q "^error: cannot write .*: No space left on device$" "$dir/err" || fail "$cmd: message: $(cat "$dir/err")"
+  done
+else
+  echo "     (skipped: mounting a tmpfs is not allowed here)"
+fi
+
+begin "standard output on a full device (/dev/full): exit status 4 in every command, said once"
+for cmd in "run --quiet" "plan" "compare --quiet" "mms --quiet"; do
+  status=0
+  case $cmd in
+    mms*) "$program" $cmd "$lab" -- sh -c 'exit 0' >/dev/full 2>"$dir/err" || status=$? ;;
+    *) "$program" $cmd "$lab" >/dev/full 2>"$dir/err" || status=$? ;;
+  esac
+  [ "$status" = 4 ] || fail "$cmd >/dev/full: exit $status, expected 4"
+  [ "$(cat "$dir/err")" = "error: cannot write standard output: No space left on device" ] ||
+    fail "$cmd: message: $(cat "$dir/err")"
+done
+
+begin "a dangling symbolic link as --out is refused and left as it is"
+ln -s missing "$dir/out"
+for out in "$dir/out" "$dir/out/sub"; do
+  status=0
+  "$program" run "$lab" --quiet --out "$out" >/dev/null 2>"$dir/err" || status=$?
+  [ "$status" = 2 ] || fail "--out $out: exit $status, expected 2"
+  [ -L "$dir/out" ] || fail "--out $out: the link was removed"
+  [ ! -e "$dir/missing" ] || fail "--out $out: the link's target was made"
+done
+grep -q "^error: --out .*out/sub: cannot create the directory" "$dir/err" || fail "message: $(cat "$dir/err")"
+"$program" run "$lab" --quiet --out "$dir/out" >/dev/null 2>"$dir/err"
+grep -qx "error: --out $dir/out: a symbolic link to missing, which does not exist (create that directory, or give another path)" \
+  "$dir/err" || fail "message: $(cat "$dir/err")"
+
+# $1 the input's description in the message, $2 the input's path, then the command line.
+refused_as_input() {
+  what=$1 input=$2
+  shift 2
+  cp "$input" "$dir/before"
+  status=0
+  "$program" "$@" >/dev/null 2>"$dir/err" || status=$?
+  [ "$status" = 2 ] || fail "$*: exit $status, expected 2"
+  grep -qx "error: --out $input is also an input ($what $input): refusing to overwrite it" "$dir/err" ||
+    fail "$*: message: $(cat "$dir/err")"
+  cmp -s "$input" "$dir/before" || fail "$*: $input changed"
+}
+begin "an input in --out under an output's name is refused before anything runs, and kept"
+mkdir -p "$dir/o"
+"$program" robot hambot >"$dir/o/summary.json"
+refused_as_input --robot "$dir/o/summary.json" run "$lab" --quiet --robot "$dir/o/summary.json" --out "$dir/o"
+cp "$lab" "$dir/o/trace.csv"
+refused_as_input "the world" "$dir/o/trace.csv" run "$dir/o/trace.csv" --quiet --out "$dir/o"
+printf 'exit 0\n' >"$dir/o/marks.txt"
+refused_as_input "the program's argument" "$dir/o/marks.txt" mms "$lab" --quiet --out "$dir/o" -- sh "$dir/o/marks.txt"
+cp tests/data/logs/room_depth.csv "$dir/o/logodds.csv"
+refused_as_input "the log" "$dir/o/logodds.csv" map-log "$dir/o/logodds.csv" --cells 12,12 --boundary 0,6,0,6 --out "$dir/o"
+cp worlds/open_room6x6.txt "$dir/o/thresholded.txt"
+refused_as_input "the world" "$dir/o/thresholded.txt" room "$dir/o/thresholded.txt" --quiet --out "$dir/o"
+mkdir -p "$dir/o/k5"
+"$program" robot hambot >"$dir/o/k5/map.yaml"
+refused_as_input --robot "$dir/o/k5/map.yaml" compare "$lab" --quiet --robot "$dir/o/k5/map.yaml" --out "$dir/o"
+[ ! -e "$dir/o/map.png" ] && [ ! -e "$dir/o/k3" ] || fail "a refused command wrote: $(ls "$dir/o")"
+no_temporaries
+
 # --- --out owns its directory's outputs -------------------------------------------------
 
 begin "a reused --out loses the files this run does not write, and nothing else"
@@ -259,6 +332,98 @@ wait "$pid" || status=$?
 [ "$(wc -l <"$dir/rows.csv")" = 2 ] || fail "rows.csv: $(cat "$dir/rows.csv")"
 grep -q "lab4x4" "$dir/rows.csv" || fail "the finished row is not in rows.csv"
 no_temporaries
+
+# Waits (at most ~20 s) until process $1 holds file $2 open.
+wait_opened() {
+  tries=0
+  until ls -l "/proc/$1/fd" 2>/dev/null | grep -qF -- "-> $2"; do
+    tries=$((tries + 1))
+    [ "$tries" -lt 400 ] || return 1
+    sleep 0.05
+  done
+}
+# Ends process $1 with SIGKILL unless it ends within $2 seconds; prints the watchdog's pid.
+watchdog() {
+  (sleep "$2"; kill -KILL "$1" 2>/dev/null) >/dev/null 2>&1 &
+  echo $!
+}
+
+begin "SIGTERM while a FIFO world waits for its writer: run, batch, compare, mms exit 143"
+mkfifo "$dir/world.txt"
+for cmd in run batch compare mms; do
+  if [ "$cmd" = mms ]; then
+    "$program" mms "$dir/world.txt" -- sh -c 'exit 0' >"$dir/out" 2>"$dir/err" &
+  else
+    "$program" "$cmd" "$dir/world.txt" >"$dir/out" 2>"$dir/err" &
+  fi
+  pid=$!
+  guard=$(watchdog "$pid" 20)
+  wait_opened "$pid" "$dir/world.txt" || fail "$cmd: the world was never opened"
+  kill -TERM "$pid"
+  status=0
+  wait "$pid" || status=$?
+  kill "$guard" 2>/dev/null
+  [ "$status" = 143 ] || fail "$cmd: exit $status, expected 143"
+  cat "$dir/out" "$dir/err" | grep -q "interrupted by SIGTERM" || fail "$cmd: message: $(cat "$dir/err")"
+done
+
+begin "a signal after 'wrote DIR/' (the summary held by a full pipe) is exit 143, the output whole"
+mkfifo "$dir/stdout"
+exec 3<>"$dir/stdout"  # a reader that reads nothing until the signal is sent: the pipe fills
+"$program" run "$scratch/maze64.txt" --subcells 5 --quiet --color never --no-trace --no-replay --out "$dir/out" \
+  >"$dir/stdout" 2>"$dir/err" 3<&- &
+pid=$!
+wait_for_text "$dir/err" "^wrote" || fail "no wrote line"
+kill -TERM "$pid"
+cat "$dir/stdout" 3<&- >"$dir/got" &
+reader=$!
+status=0
+wait "$pid" || status=$?
+exec 3<&-
+wait "$reader"
+[ "$status" = 143 ] || fail "exit $status, expected 143"
+[ "$(grep -c "interrupted by SIGTERM" "$dir/err")" = 1 ] || fail "message: $(cat "$dir/err")"
+grep -q "^end: " "$dir/got" || fail "the summary was lost"
+png_whole "$dir/out/map.png" || fail "map.png cut"
+no_temporaries
+
+# $1 signal name, $2 expected status: an mms program that waits, signalled once it started.
+signal_in_mms() {
+  begin "SIG$1 while mms waits on its program: exit $2, said once, the program ended"
+  "$program" mms "$lab" --quiet -- sh -c "echo \$\$ >'$dir/started'; exec sleep 60" >"$dir/out" 2>"$dir/err" &
+  pid=$!
+  wait_for -s "$dir/started" || fail "the program never started"
+  kill -"$1" "$pid"
+  status=0
+  wait "$pid" || status=$?
+  [ "$status" = "$2" ] || fail "exit $status, expected $2"
+  grep -qx "end: interrupted by SIG$1" "$dir/out" || fail "end line: $(grep '^end' "$dir/out")"
+  ! kill -0 "$(cat "$dir/started")" 2>/dev/null || fail "the program still runs"
+}
+signal_in_mms TERM 143
+signal_in_mms HUP 129
+
+begin "SIGTERM of an mms batch: exit 143, the interrupted row marked and out of the totals"
+"$program" batch "$lab" --jobs 1 -- sh -c "echo \$\$ >'$dir/started'; exec sleep 60" >"$dir/out" 2>"$dir/err" &
+pid=$!
+wait_for -s "$dir/started" || fail "the program never started"
+kill -TERM "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" = 143 ] || fail "exit $status, expected 143"
+grep -q "lab4x4.txt .* interrupted .*interrupted by SIGTERM$" "$dir/out" || fail "row: $(grep lab4x4 "$dir/out")"
+grep -q "^total: 1 worlds, 0 ok, 0 failed, 1 interrupted; goal reached 0 of 0; mean score -$" "$dir/out" ||
+  fail "totals: $(grep '^total' "$dir/out")"
+
+begin "an mms program's grandchild in a session of its own ends with the run; the program's exit is its end"
+"$program" mms "$lab" --quiet --time-limit 20 -- sh -c "setsid sh -c 'echo \$\$ >\"$dir/grandchild\"; exec sleep 60' &
+  while [ ! -s '$dir/grandchild' ]; do sleep 0.01; done; exit 0" >"$dir/out" 2>"$dir/err"
+grep -q "^end: exited (the algorithm ended (exit status 0) after 0 lines)" "$dir/out" ||
+  fail "end line: $(grep '^end' "$dir/out")"
+if kill -0 "$(cat "$dir/grandchild")" 2>/dev/null; then
+  fail "the grandchild still runs"
+  kill "$(cat "$dir/grandchild")"
+fi
 
 # --- The soak: random runs interrupted at random moments (seeded; ~20 s) -----------------
 

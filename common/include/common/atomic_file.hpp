@@ -154,10 +154,17 @@ class OutputFile {
       if (fd_ < 0) detail::fail_write(path_, errno);
       return;
     }
-    temporary_ = detail::temporary_path_for(target_.path);
-    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd_ < 0) detail::fail_write(path_, errno);
-    slot_ = register_temporary(temporary_);
+    // Known to the signal handler before it exists: a signal in between finds it registered.
+    const std::string temporary = detail::temporary_path_for(target_.path);
+    slot_ = register_temporary(temporary);
+    fd_ = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd_ < 0) {
+      const int open_errno = errno;
+      unregister_temporary(slot_);  // not ours (EEXIST) or not made: never to be removed
+      slot_ = -1;
+      detail::fail_write(path_, open_errno);
+    }
+    temporary_ = temporary;
   }
   ~OutputFile() { discard(); }
   OutputFile(const OutputFile &) = delete;
@@ -239,10 +246,15 @@ inline void check_writable(const std::string &path) {
     return;
   }
   const std::string temporary = detail::temporary_path_for(target.path);
+  const int slot = register_temporary(temporary);  // before it exists, as OutputFile does
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) detail::fail_write(path, errno);
-  ::close(fd);
-  ::unlink(temporary.c_str());
+  const int open_errno = errno;
+  if (fd >= 0) {
+    ::close(fd);
+    ::unlink(temporary.c_str());
+  }
+  unregister_temporary(slot);
+  if (fd < 0) detail::fail_write(path, open_errno);
 }
 
 // Whether `a` and `b` are one file (device and inode, links followed); false when either

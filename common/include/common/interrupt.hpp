@@ -64,12 +64,13 @@ extern "C" inline void on_stop_signal(int signal_number) {
   int none = 0;
   g_signal.compare_exchange_strong(none, signal_number);
   if (g_stop_work_depth.load() > 0) return;
+  bool removed = false;
   for (TemporarySlot &slot : g_temporaries) {
-    if (slot.state.load() == 2) ::unlink(slot.path.data());
+    if (slot.state.load() == 2 && ::unlink(slot.path.data()) == 0) removed = true;
   }
   write_stderr("\nerror: interrupted by ");
   write_stderr(signal_word(signal_number));
-  write_stderr("; unfinished output files removed\n");
+  write_stderr(removed ? "; unfinished output files removed\n" : "\n");
   ::_exit(128 + signal_number);
 }
 
@@ -130,6 +131,8 @@ class SignalsEndProcess {
 
 // Registers a temporary file for the handler to remove; returns its slot, or -1 when all
 // slots are taken or the path is too long (the file is then not removed on a signal).
+// Register a path before creating the file (O_EXCL), so that no signal finds the file
+// unknown; unregister it once it is renamed or removed, or when creating it failed.
 inline int register_temporary(const std::string &path) {
   if (path.size() + 1 > detail::TemporarySlot{}.path.size()) return -1;
   for (std::size_t i = 0; i < detail::g_temporaries.size(); ++i) {

@@ -73,7 +73,8 @@ World load_world(const std::string &path, const WorldOverrides &overrides);
 World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides);
 // A world file's text, read in proportion: the format is told from the first bytes that are
 // not blank (so an image or /dev/zero fails at once), reading stops at a NUL byte (an
-// error: no text format holds one) and past a .maz's 256 bytes. Throws common::InputError.
+// error: no text format holds one) and past a .maz's 256 bytes. Throws common::InputError;
+// common::Interrupted when a stop signal ends a wait (a FIFO's writer, common/input_file.hpp).
 std::string read_world_text(const std::string &path);
 
 // What writing the world in `format` would drop, as one line "FORMAT holds no ...: dropped
@@ -92,7 +93,8 @@ std::string format_world(const Maze &maze, Format format, std::string_view title
 // Writes the maze to `path` in the format its extension names.
 void save_world(const Maze &maze, const std::string &path);
 
-// The whole file; throws common::InputError "cannot read FILE: reason" (also above 1 GiB).
+// The whole file; throws common::InputError "cannot read FILE: reason" (also above 1 GiB),
+// common::Interrupted as read_world_text does.
 std::string read_file(const std::string &path);
 
 // common::write_file_atomically (common/atomic_file.hpp): a regular file through a temporary
