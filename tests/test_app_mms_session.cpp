@@ -68,6 +68,35 @@ TEST_CASE("mms: the README's example conversation runs unchanged, answers checke
   }
 }
 
+TEST_CASE("mms: counts past what mms carries out crash, walls stop at the maze's edge, distances never wrap") {
+  for (const app::MmsWalls walls : {app::MmsWalls::truth, app::MmsWalls::sensed}) {
+    const app::MmsRun run = run_script("open_room6x6.txt", "huge_counts.sh", walls);
+    INFO(run.mms.message);
+    CHECK(run.mms.end == app::MmsEnd::exited);
+    CHECK(run.mms.crashes == 5);
+    CHECK(run.mms.stats.total_distance() == 2LL * app::kMaxMoveCells);
+    CHECK(run.summary.moves == 10);  // five cells north and five back
+  }
+}
+
+TEST_CASE("mms: --ignore-invalid skips getStat of a stat mms does not have, as mms drops it") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  options.output.quiet = true;
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "unknown_stat.sh"};
+  mms.walls = app::MmsWalls::truth;
+  std::ostringstream out;
+  const app::MmsRun strict = app::run_mms_world(options, mms, out);
+  CHECK(strict.mms.end == app::MmsEnd::protocol_error);
+  CHECK(strict.mms.message == "line 1 \"getStat foo\": getStat: no stat 'foo'");
+  mms.ignore_invalid = true;
+  const app::MmsRun lenient = app::run_mms_world(options, mms, out);
+  INFO(lenient.mms.message);
+  CHECK(lenient.mms.end == app::MmsEnd::exited);
+  CHECK(lenient.mms.lines == 2);
+}
+
 TEST_CASE("mms: --until goal ends an algorithm that never exits, once it stands in the centre") {
   app::RunOptions options;
   options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";

@@ -41,7 +41,8 @@ void add_mms_options(CLI::App &command, MmsOptions &o) {
       "exit|goal|start: end when the algorithm exits, when the robot first reaches the goal, or when it is back "
       "at the start after the goal (default exit)");
   command.add_option("--time-limit", o.time_limit_s,
-                     fmt::format("S: wall-clock seconds the algorithm has, the whole run (default {:g})", o.time_limit_s));
+                     fmt::format("S: wall-clock seconds the algorithm has, the whole run; inf for no limit (default {:g})",
+                                 o.time_limit_s));
   command.add_option("--max-line", o.max_line_bytes,
                      fmt::format("BYTES: a longer line from the algorithm ends the run (default {})", o.max_line_bytes));
   command.add_flag("--ignore-invalid", o.ignore_invalid,

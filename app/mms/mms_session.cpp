@@ -15,6 +15,7 @@
 #include "app/report/truth_picture.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/terminal.hpp"
+#include "common/deadline.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
 #include "maze/sim/profile.hpp"
@@ -52,8 +53,7 @@ std::string quoted_line(std::string_view line) {
 // The conversation itself, until something ends it.
 void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child, const RunControls &controls,
               MmsReport &report) {
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                           std::chrono::duration<double>(options.time_limit_s));
+  const auto deadline = common::deadline_after<Clock>(Clock::now(), options.time_limit_s);
   std::string line;
   for (;;) {
     const ChildProcess::Read r = child.read_line(line, deadline, options.max_line_bytes, controls.interrupted);

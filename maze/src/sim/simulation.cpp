@@ -185,7 +185,8 @@ Device *Simulation::device(const std::string &name) {
 int Simulation::step(int duration_ms) {
   if (stop_requested_ || ended_) return -1;
   const int basic = options_.basic_time_step_ms;
-  const int count = duration_ms == basic ? 1 : std::max(1, (duration_ms + basic - 1) / basic);
+  if (duration_ms <= 0) return 0;  // no time passes
+  const int count = duration_ms / basic + (duration_ms % basic != 0 ? 1 : 0);
   const std::int64_t limit_ms = time_limit_ms_;
   for (int i = 0; i < count; ++i) {
     advance(basic_step_s_);
