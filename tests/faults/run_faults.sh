@@ -219,6 +219,17 @@ signal_in_run_loop INT 130
 signal_in_run_loop TERM 143
 signal_in_run_loop HUP 129
 
+begin "SIGINT in a room run without --out: exit 130, its summary, no word of files"
+"$program" room worlds/ir_room.room --strategy wander --time 100000 --snapshot-steps 1 >"$dir/stdout" 2>"$dir/err" &
+pid=$!
+wait_for_text "$dir/stdout" "^--- step 1:" || fail "the room run printed no snapshot"
+kill -INT "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" = 130 ] || fail "exit $status, expected 130"
+grep -q "stopped: interrupted by Ctrl-C" "$dir/stdout" || fail "no summary saying so: $(tail -3 "$dir/stdout")"
+! grep -q "output files" "$dir/err" || fail "speaks of output files it never had: $(cat "$dir/err")"
+
 begin "SIGTERM while the files are written (a FIFO holds the writer): exit 143, nothing half-written"
 mkdir -p "$dir/out"
 mkfifo "$dir/out/replay.html"
