@@ -10,6 +10,7 @@
 #include <variant>
 #include <filesystem>
 #include <numbers>
+#include <ostream>
 
 #include <fmt/format.h>
 
@@ -233,7 +234,7 @@ class RoomLog {
     if (options_.room.strategy == robot::RoomStrategy::wavefront && !c.wave().empty()) {
       out_ << "wavefront (obstacles 1, goal 2):\n" << room_wave_numbers(c.map(), c.wave());
     }
-    out_ << '\n';
+    out_ << '\n' << std::flush;  // seen as the run goes, also through a pipe or in a file
   }
 
   // After the run: says of each snapshot it never reached that the run ended first.

@@ -53,6 +53,7 @@ _PYBIND_MISMATCH = re.compile(r"^[\w.]+\(\): incompatible (?:function|constructo
 
 
 def _one_line(shown, text, args, kwargs):
+    text = re.sub(r"<([\w.]+) object at 0x[0-9a-f]+>", r"\1()", text).replace("maze_mapper._native.", "")
     signatures = re.findall(r"^\s+\d+\. (.*)$", text, re.MULTILINE)
     takes = " or ".join(
         re.sub(r"self: [\w.]+(, )?", "", re.sub(r"^[\w.]*\(", "(", s)).split(" -> ")[0] for s in signatures)
