@@ -126,7 +126,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->add_option("--start", in->start, "X,Y[,DEG]: where the robot starts, m (default the world's start)");
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
   cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time (default 1)");
-  cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront; default the world file's first goal)");
+  cmd->add_option("--goal", in->goal, "X,Y: the goal, m, of wavefront (default the world file's first goal)");
   cmd->add_option("--dilate", o.room.dilate, "N: wavefront: obstacles grown by N cells for planning (default 1)");
   cmd->add_option("--time", o.room.time_limit_s, "S: simulated seconds at most, wander needs it (default none)");
   cmd->add_option("--snapshots-at", in->snapshots_at, "T1,T2,...: print the map at these simulated seconds");
