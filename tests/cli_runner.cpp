@@ -12,10 +12,11 @@ namespace test_cli {
 Ran run(std::vector<std::string> args) {
   const std::string first = args.empty() ? "run" : args.front();  // as main() builds the command line
   args.insert(args.begin(), "maze_mapper");
+  app::CommandContext context;
+  args = app::split_child_command(args, context);  // mms and batch: the algorithm after "--"
   std::vector<const char *> argv;
   for (const std::string &a : args) argv.push_back(a.c_str());
   CLI::App cli{"maze_mapper", "maze_mapper"};
-  app::CommandContext context;
   app::add_commands(cli, context, first);
   std::ostringstream out;
   std::streambuf *saved = std::cout.rdbuf(out.rdbuf());

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "app/batch/batch.hpp"
+#include "cli_runner.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
@@ -110,9 +111,78 @@ TEST_CASE("batch merge: a file that is no batch CSV says where") {
   } catch (const common::InputError &e) {
     diagnostic = e.diagnostic();
   }
-  CHECK(diagnostic == fmt::format("{}:2: error: not a batch CSV row (10 fields: {})", file.string(),
-                                  app::kBatchCsvHeader));
+  CHECK(diagnostic == fmt::format("{}:2:9: error: moves must be a whole number from 0 (got 'x')", file.string()));
   fs::remove(file);
+}
+
+namespace {
+
+// The diagnostic read_batch_csvs throws for these parts, or "" when they merge.
+std::string merge_error(const std::vector<std::string> &parts) {
+  try {
+    app::read_batch_csvs(parts);
+  } catch (const common::InputError &e) {
+    return e.diagnostic();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("batch merge: a part saved with a byte order mark and CRLF line ends reads as the plain one") {
+  const test_cli::TempDir dir("merge_crlf");
+  fs::create_directories(dir.path);
+  const std::string rows = "\"a.txt\",4x4,29,100.00,97.50,,,3,done,\n\"b\nc.txt\",4x4,12,50.00,75.00,,,4,done,\n";
+  const std::string plain = (dir.path / "plain.csv").string();
+  const std::string windows = (dir.path / "windows.csv").string();
+  common::write_file_atomically(plain, std::string(app::kBatchCsvHeader) + "\n" + rows);
+  std::string crlf = "\xEF\xBB\xBF" + std::string(app::kBatchCsvHeader) + "\n" + rows;
+  for (std::size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2)) crlf.insert(at, "\r");
+  common::write_file_atomically(windows, crlf);
+  const std::vector<app::BatchRow> want = app::read_batch_csvs({plain});
+  const std::vector<app::BatchRow> got = app::read_batch_csvs({windows});
+  REQUIRE(got.size() == 2);
+  CHECK(got[1].world == "b\nc.txt");
+  CHECK(without_times(got) == without_times(want));
+}
+
+TEST_CASE("batch merge: a part given twice is refused, by its real path or its rows; empty parts may repeat") {
+  const test_cli::TempDir dir("merge_twice");
+  fs::create_directories(dir.path);
+  const std::string a = (dir.path / "a.csv").string();
+  const std::string copy = (dir.path / "copy.csv").string();
+  const std::string link = (dir.path / "link.csv").string();
+  const std::string empty1 = (dir.path / "empty1.csv").string();
+  const std::string empty2 = (dir.path / "empty2.csv").string();
+  const std::string header = std::string(app::kBatchCsvHeader) + "\n";
+  common::write_file_atomically(a, header + "\"a.txt\",4x4,29,100.00,97.50,,,3,done,\n");
+  common::write_file_atomically(copy, header + "\"a.txt\",4x4,29,100.00,97.50,,,3,done,\n");
+  common::write_file_atomically(empty1, header);
+  common::write_file_atomically(empty2, header);
+  fs::create_symlink(a, link);
+  CHECK(merge_error({a, a}) == fmt::format("{}: error: is {} again (the same file): its rows would count twice", a, a));
+  CHECK(merge_error({a, link}) ==
+        fmt::format("{}: error: is {} again (the same file): its rows would count twice", link, a));
+  CHECK(merge_error({a, copy}) == fmt::format("{}: error: holds the same rows as {}: its rows would count twice", copy, a));
+  CHECK(merge_error({empty1, a, empty2}).empty());
+}
+
+TEST_CASE("batch merge: a number out of its column's range says where, to the column") {
+  const test_cli::TempDir dir("merge_range");
+  fs::create_directories(dir.path);
+  const std::string file = (dir.path / "part.csv").string();
+  const auto error_for = [&](const std::string &row) {
+    common::write_file_atomically(file, std::string(app::kBatchCsvHeader) + "\n" + row + "\n");
+    return merge_error({file});
+  };
+  CHECK(error_for("a.txt,4x4,29,250,97.50,,,3,done,") ==
+        file + ":2:14: error: coverage must be a percentage from 0 to 100 (got '250')");
+  CHECK(error_for("a.txt,4x4,29,100,-1,,,3,done,") ==
+        file + ":2:18: error: wall_accuracy must be a percentage from 0 to 100 (got '-1')");
+  CHECK(error_for("a.txt,4x4,-3,100,100,,,3,done,") == file + ":2:11: error: moves must be a whole number from 0 (got '-3')");
+  CHECK(error_for("a.txt,4x4,3,100,100,,,inf,done,") ==
+        file + ":2:23: error: ms must be a number of milliseconds from 0 (got 'inf')");
+  CHECK(error_for("a.txt,4x4,3,100,100,,,0,done,").empty());
 }
 
 TEST_CASE("batch merge: a row that ended incomplete, wrong or without progress is failed in the merged totals") {

@@ -4,7 +4,9 @@
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <sstream>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,8 @@
 
 #include "app/cli/cli_reference.hpp"
 #include "app/cli/commands.hpp"
+#include "cli_runner.hpp"
+#include "common/error.hpp"
 
 namespace {
 
@@ -147,4 +151,54 @@ TEST_CASE("an option's value is named by its description's capitals, else by its
   CHECK(app::value_name(*cell) == "X,Y");
   CHECK(app::value_name(*plain) == "N");
   CHECK(app::value_name(*switch_).empty());
+}
+
+namespace {
+
+// What a command needs besides the option under test to get as far as checking its options.
+std::vector<std::string> needs(const std::string &path, const std::string &scratch) {
+  const std::string lab = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  const std::string room = std::string(WORLDS_DIR) + "/ir_room.room";
+  if (path == "run" || path == "compare" || path == "plan" || path == "batch" || path == "mms") return {lab};
+  if (path == "room" || path == "show") return {room};
+  if (path == "scan") return {lab, "--pose", "0.5,0.5,0"};
+  if (path == "convert") return {lab, scratch + "/out.num"};
+  if (path == "generate") return {"4x4"};
+  if (path == "map-log") return {std::string(TEST_DATA_DIR) + "/logs/room_bump.csv", "--boundary", "0,6,0,6"};
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("cli: every number option of every command refuses nan and inf in a line naming the option") {
+  const ReferenceProgram program;
+  const test_cli::TempDir scratch("number_options");
+  std::filesystem::create_directories(scratch.path);
+  int checked = 0;
+  for (const app::CommandNode &node : app::visible_commands(program.cli)) {
+    for (const CLI::Option *option : node.app->get_options()) {
+      if (option->get_type_name() != "FLOAT" || option->get_items_expected_max() != 1 || !option->nonpositional()) continue;
+      for (const char *value : {"nan", "inf", "-inf"}) {
+        std::vector<std::string> args;
+        std::istringstream words(node.path);
+        for (std::string word; words >> word;) args.push_back(word);
+        for (const std::string &a : needs(node.path, scratch.path.string())) args.push_back(a);
+        args.insert(args.end(), {option->get_name(), value});
+        if (node.path == "mms" || node.path == "batch") args.insert(args.end(), {"--", "true"});
+        INFO(node.path, " ", option->get_name(), " ", std::string(value));
+        std::string message;
+        try {
+          test_cli::run(args);
+        } catch (const common::InputError &e) {
+          message = e.diagnostic();
+        }
+        // --time-limit and --wall-limit inf are no limit (as coreutils' timeout takes it); a run follows.
+        const bool limit = option->get_name() == "--time-limit" || option->get_name() == "--wall-limit";
+        if (limit && std::string_view(value) == "inf") continue;
+        CHECK(message.find(option->get_name()) != std::string::npos);
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked > 30);
 }

@@ -39,6 +39,8 @@ TEST_CASE("mms lines: every command of the README reads, with its arguments") {
   }
   CHECK(parse_mms_line("moveForward 5").command->count == 5);
   CHECK(parse_mms_line("moveForward abc").command->count == 0);  // mms reads it as 0: crash
+  CHECK(parse_mms_line("moveForward 99999999999").command->count == 0);  // past an int: 0 too, as Qt's toInt
+  CHECK(parse_mms_line("moveForward 2147483647").command->count == 2147483647);  // the mouse crashes it
   CHECK(parse_mms_line("setWall 0 0 W").command->side == 'w');  // the README's own example writes W
   const auto text = parse_mms_line("setText 3 -1 two words and more").command;
   CHECK(text->x == 3);
@@ -58,6 +60,7 @@ TEST_CASE("mms lines: what mms would ignore is no command, and says why") {
   CHECK(parse_mms_line("setColor 0 0 z").error == "setColor: 'z' is no colour (kbacgorwyBCAGORVY)");
   CHECK(parse_mms_line("setText x 1 hi").error == "setText takes X Y TEXT");
   CHECK(parse_mms_line("getStat").error == "getStat takes a stat name");
+  CHECK(parse_mms_line("getStat foo").error == "getStat: no stat 'foo'");
   CHECK(parse_mms_line("wallfront").error == "unknown command");  // case matters, as in mms
 }
 

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -21,6 +22,7 @@
 #include "app/batch/batch.hpp"
 #include "app/batch/mms_batch.hpp"
 #include "app/mms/mms_session.hpp"
+#include "common/deadline.hpp"
 #include "common/error.hpp"
 
 namespace {
@@ -66,6 +68,48 @@ TEST_CASE("mms: the README's example conversation runs unchanged, answers checke
     CHECK(run.mms.marks.walls[0] == 8);  // setWall 0 0 W
     CHECK(run.mms.marks.texts[16].empty());  // set, then cleared
   }
+}
+
+TEST_CASE("mms: a wall limit past what the clock counts (1e10 s, inf) is no limit, not an end at once") {
+  for (const double limit_s : {9.3e9, 1e10, 1e300, std::numeric_limits<double>::infinity()}) {
+    INFO(limit_s);
+    const app::MmsRun run = run_script("classic16x16.txt", "readme_conversation.sh", app::MmsWalls::truth, limit_s);
+    CHECK(run.mms.end == app::MmsEnd::exited);
+    CHECK(run.mms.lines == 18);
+  }
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point now = Clock::now();
+  CHECK(common::deadline_after<Clock>(now, 1e10) == Clock::time_point::max());
+  CHECK(common::deadline_after<Clock>(now, 2.5) - now == std::chrono::milliseconds(2500));
+}
+
+TEST_CASE("mms: counts past what mms carries out crash, walls stop at the maze's edge, distances never wrap") {
+  for (const app::MmsWalls walls : {app::MmsWalls::truth, app::MmsWalls::sensed}) {
+    const app::MmsRun run = run_script("open_room6x6.txt", "huge_counts.sh", walls);
+    INFO(run.mms.message);
+    CHECK(run.mms.end == app::MmsEnd::exited);
+    CHECK(run.mms.crashes == 5);
+    CHECK(run.mms.stats.total_distance() == 2LL * app::kMaxMoveCells);
+    CHECK(run.summary.moves == 10);  // five cells north and five back
+  }
+}
+
+TEST_CASE("mms: --ignore-invalid skips getStat of a stat mms does not have, as mms drops it") {
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  options.output.quiet = true;
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "unknown_stat.sh"};
+  mms.walls = app::MmsWalls::truth;
+  std::ostringstream out;
+  const app::MmsRun strict = app::run_mms_world(options, mms, out);
+  CHECK(strict.mms.end == app::MmsEnd::protocol_error);
+  CHECK(strict.mms.message == "line 1 \"getStat foo\": getStat: no stat 'foo'");
+  mms.ignore_invalid = true;
+  const app::MmsRun lenient = app::run_mms_world(options, mms, out);
+  INFO(lenient.mms.message);
+  CHECK(lenient.mms.end == app::MmsEnd::exited);
+  CHECK(lenient.mms.lines == 2);
 }
 
 TEST_CASE("mms: --until goal ends an algorithm that never exits, once it stands in the centre") {

@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -312,4 +313,36 @@ TEST_CASE("room: bad input is refused before anything runs") {
   o.resolution_m = 0.0003;  // 16667 x 10000 cells: 2.8 GiB
   CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("would take"), common::InputError);
   CHECK(out.str().empty());
+}
+
+TEST_CASE("room wavefront: without --goal it heads for the world file's goal") {
+  app::RoomRunOptions o;
+  o.world = std::string(WORLDS_DIR) + "/ir_room.room";  // goal 4.7 2.7
+  o.room.strategy = robot::RoomStrategy::wavefront;
+  o.room.dilate = 1;
+  o.model.kind = sensing::ModelKind::pie;
+  o.quiet = true;
+  std::ostringstream out;
+  const app::RoomSummary reached = run_file(o, out);
+  CHECK(reached.ending == robot::RoomEnding::goal_reached);
+  maze::Arena no_goal;  // a world that gives none still needs --goal
+  no_goal.x_max_m = 3.0;
+  no_goal.y_max_m = 2.0;
+  no_goal.starts.push_back({0.5, 1.0, 0.0});
+  CHECK_THROWS_WITH_AS(app::run_room_in(no_goal, o, out), "--strategy wavefront needs --goal X,Y (the world gives none)",
+                       common::InputError);
+}
+
+TEST_CASE("room: a stop request ends any strategy at its next control step, stopped and interrupted") {
+  app::RoomRunOptions o = frontier_options(kSetUps[0]);
+  o.world = std::string(WORLDS_DIR) + "/ir_room.room";
+  std::ostringstream out;
+  const app::RoomSummary s = app::run_room(maze::load_any_world(o.world, {}, {}), o, out,
+                                           std::chrono::steady_clock::now(), [] { return true; });
+  CHECK(s.ending == robot::RoomEnding::stopped);
+  CHECK(s.interrupted);
+  CHECK(s.message == "interrupted by Ctrl-C");  // no signal was recorded: a stop asked for in code
+  CHECK(s.steps == 0);  // asked before the first control step
+  CHECK(app::room_exit_status(s) == 130);
+  CHECK(out.str().find("interrupted by Ctrl-C") != std::string::npos);
 }

@@ -92,6 +92,25 @@ TEST_CASE("Robot(): attaches to the current simulation, and fails without one") 
   CHECK(sim.robot().getTime() == doctest::Approx(0.064));
 }
 
+TEST_CASE("Robot::step: no time passes for a duration of 0 or less; a partial step counts whole") {
+  Simulation sim(maze::Maze(2, 2), hambot(), exact());
+  webots::Robot &robot = sim.robot();
+  CHECK(robot.step(0) == 0);
+  CHECK(robot.step(-1) == 0);
+  CHECK(robot.step(std::numeric_limits<int>::min()) == 0);
+  CHECK(sim.time_ms() == 0);
+  CHECK(robot.step(33) == 0);
+  CHECK(sim.time_ms() == 64);
+}
+
+TEST_CASE("Simulation: a time limit past the millisecond clock is none") {
+  maze::sim::SimulationOptions o = exact();
+  o.time_limit_s = 1e300;
+  Simulation sim(maze::Maze(2, 2), hambot(), o);
+  CHECK(sim.robot().step(32) == 0);
+  CHECK(sim.robot().step(32) == 0);
+}
+
 TEST_CASE("Lidar: the range image at a known pose, in the conventions' beam order") {
   // 3 x 3 open maze, robot in the middle facing north.
   Simulation sim(maze::Maze(3, 3), hambot(), at(1.5, 1.5, kPi / 2));

@@ -139,9 +139,13 @@ struct Shard {
 Shard parse_shard(const std::string &text);
 std::vector<std::string> shard_of(const std::vector<std::string> &worlds, Shard shard);
 
-// `batch merge`: the rows of batch CSVs, in the order of the files and of their lines.
-// Throws common::InputError ("FILE:LINE: error: ...") for a file that cannot be read, a
-// header that is not kBatchCsvHeader, or a line that does not parse.
+// `batch merge`: the rows of batch CSVs, in the order of the files and of their lines. A
+// UTF-8 byte order mark and CRLF line ends are read (a spreadsheet's export). Throws
+// common::InputError for a file that cannot be read ("FILE: error: ..."), a header that is
+// not kBatchCsvHeader, a line that does not parse ("FILE:LINE: error: ..."), a number out
+// of its column's range (moves a whole number from 0, coverage and wall_accuracy 0 to 100,
+// ms from 0: "FILE:LINE:COL: error: ..."), and a part given twice: the same file again
+// (its real path), or one holding the same rows as an earlier one.
 std::vector<BatchRow> read_batch_csvs(const std::vector<std::string> &files);
 
 // 130 when interrupted, 0 when every run succeeded, 2 when every world was bad input, else 1.

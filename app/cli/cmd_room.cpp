@@ -17,6 +17,7 @@
 #include "app/cli/model_options.hpp"
 #include "app/room/room_run.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/demo_commands.hpp"
 
@@ -97,6 +98,9 @@ void build(RoomInput &in, const CLI::App &cmd) {
   }
   o.depth_reading = in.depth_reading == "axial" ? sensing::DepthReading::axial : sensing::DepthReading::range;
   if (!in.depth_origin.empty()) o.depth_origin = point_of(in.depth_origin, "--depth-origin");
+  if (o.threshold && !std::isfinite(*o.threshold)) {
+    throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *o.threshold));
+  }
   // Options of one strategy given to another are refused, not ignored.
   const auto given = [&cmd](const char *name) { return cmd.get_option(name)->count() > 0; };
   using robot::RoomStrategy;
@@ -136,7 +140,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
                                      "from east (default the world's start)");
   cmd->add_option("--waypoints", in->waypoints, "X,Y;X,Y;...: the points to visit, m (waypoints)");
   cmd->add_option("--laps", o.room.laps, "N: drive the waypoints N times over; 0: until --time-limit (default 1)");
-  cmd->add_option("--goal", in->goal, "X,Y: the goal, m (wavefront)");
+  cmd->add_option("--goal", in->goal, "X,Y: the goal, m, of wavefront (default the world file's first goal)");
   cmd->add_option("--dilate", o.room.dilate, "N: wavefront: obstacles grown by N cells for planning (default 1)");
   cmd->add_option("--time-limit", o.room.time_limit_s, "S: stop after S simulated seconds; wander needs it (default none)");
   add_old_spelling(*cmd, "--time", "--time-limit", [in](const std::string &text) {
@@ -165,7 +169,8 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
       if (cmd->get_option("--log-base")->count() == 0) in->options.sensor.base = mapping::LogBase::ten;
     }
     const maze::AnyWorld world = load_any_world_reporting(in->options.world, {}, arena_overrides(in->boundary));
-    const RoomSummary summary = run_room(world, in->options, std::cout, started);
+    const common::SignalsStopWork stop_signals;  // a signal ends the run at its next control step
+    const RoomSummary summary = run_room(world, in->options, std::cout, started, &common::interrupted);
     context.status = room_exit_status(summary);
   });
 }

@@ -42,7 +42,7 @@ void add_mms_options(CLI::App &command, MmsOptions &o) {
       "at the start after the goal (default exit)");
   command.add_option("--wall-limit", o.wall_limit_s,
                      fmt::format("S: wall-clock seconds the algorithm has, the whole run: the guard against a hung "
-                                 "program (default {:g}; --time-limit is simulated seconds)",
+                                 "program; inf for no limit (default {:g}; --time-limit is simulated seconds)",
                                  o.wall_limit_s));
   command.add_option("--max-line", o.max_line_bytes,
                      fmt::format("BYTES: a longer line from the algorithm ends the run (default {})", o.max_line_bytes));

@@ -127,13 +127,14 @@ std::optional<bool> MmsMouse::wall(Cell c, Heading h, bool own_cell) {
 // N half steps away: the sides of ceil(N / 2) cells on (mms counts from the cell's centre,
 // and a half step reaches the next side).
 MmsOutcome MmsMouse::wall_query(Heading h, int half_steps) {
-  const int cells = std::max(1, (half_steps + 1) / 2);
+  const int cells = std::max(1, half_steps / 2 + half_steps % 2);
   Cell c = controller_.cell();
   for (int i = 0; i < cells; ++i) {
     const std::optional<bool> is_wall = wall(c, h, i == 0);
     if (!is_wall) return motion_failed(robot_motion_);
     if (*is_wall) return answer("true");
     c = mapping::neighbour(c, h);
+    if (!truth_.contains(maze::Cell{c.x, c.y})) return answer("true");  // the maze's edge: walled
   }
   return answer("false");
 }
@@ -146,7 +147,7 @@ MmsOutcome MmsMouse::turn(Heading h) {
 }
 
 MmsOutcome MmsMouse::move_forward(int cells) {
-  if (cells < 1) return crash();
+  if (cells < 1 || cells > kMaxMoveCells) return crash();
   const std::optional<bool> ahead = wall(controller_.cell(), heading_, true);
   if (!ahead) return motion_failed(robot_motion_);
   if (*ahead) return crash();

@@ -5,10 +5,12 @@
 //   wall questions  from the maze (MmsWalls::truth) or from the robot's grid (sensed: a side
 //                   of its own cell it has not seen yet is looked at first, and one still
 //                   unknown counts as a wall; a side further on, wallFront 3 and beyond,
-//                   comes from the grid as it is, unknown counting as no wall)
+//                   comes from the grid as it is, unknown counting as no wall; the maze's
+//                   edge is a wall, however far N reaches)
 //   wallFrontLeft and the other diagonals: true, as from any cell centre in mms (they aim
 //                   at a corner post)
-//   moveForward N   crash when N < 1 or a wall is right ahead (nothing moves); else the robot
+//   moveForward N   crash when N < 1, N > kMaxMoveCells or a wall is right ahead (nothing
+//                   moves, nothing counted); else the robot
 //                   drives cell by cell, looking at each side before crossing it, and stops
 //                   before a wall on the way (crash), else ack
 //   turns           the robot turns in place; ack

@@ -134,6 +134,8 @@ ParsedLine parse_answered(const std::vector<std::string_view> &tokens) {
     c.verb = w.verb;
     if (w.verb == MmsVerb::get_stat) {
       if (tokens.size() != 2) return failed("getStat takes a stat name");
+      // mms drops a name it does not know, as any line it cannot read (empty stats answer every known one).
+      if (!MmsStats().stat(tokens[1])) return failed(fmt::format("getStat: no stat '{}'", tokens[1]));
       c.stat = std::string(tokens[1]);
     } else if (tokens.size() == 2) {
       c.count = integer(tokens[1]).value_or(0);  // as mms reads it: not a number is 0
@@ -202,7 +204,7 @@ void MmsStats::start_run() {
   started_run_ = true;
 }
 
-void MmsStats::add_distance(int cells) {
+void MmsStats::add_distance(long long cells) {
   const float effective = cells > 2 ? static_cast<float>(cells) / 2.0F + 1.0F : static_cast<float>(cells);
   total_distance_ += cells;
   total_effective_ += effective;
@@ -233,7 +235,7 @@ void MmsStats::end_unfinished_run() { started_run_ = false; }
 
 void MmsStats::penalize_for_reset() { penalty_ = 15.0F; }
 
-std::optional<int> MmsStats::best_run_distance() const { return solved_ ? std::optional(best_distance_) : std::nullopt; }
+std::optional<long long> MmsStats::best_run_distance() const { return solved_ ? std::optional(best_distance_) : std::nullopt; }
 std::optional<int> MmsStats::best_run_turns() const { return solved_ ? std::optional(best_turns_) : std::nullopt; }
 std::optional<float> MmsStats::best_run_effective_distance() const {
   return solved_ ? std::optional(best_effective_) : std::nullopt;

@@ -25,6 +25,7 @@
 // cannot read without a word; here that is a ParsedLine with an error, and the session
 // decides.
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,11 @@ enum class MmsVerb {
   set_wall, clear_wall, set_color, clear_color, clear_all_color, set_text, clear_text, clear_all_text,
   was_reset, ack_reset, get_stat,
 };
+
+// The longest moveForward N carried out: mms counts a move in half steps in an int, so a
+// larger N overflows there and crashes; here it is answered crash, nothing moved or counted.
+// N beyond an int reads as 0, as Qt's toInt reads it (crash too).
+inline constexpr int kMaxMoveCells = std::numeric_limits<int>::max() / 2;
 
 struct MmsCommand {
   MmsVerb verb = MmsVerb::maze_width;
@@ -87,7 +93,7 @@ std::optional<MmsRgb> mms_color_rgb(char letter);
 class MmsStats {
  public:
   void start_run();
-  void add_distance(int cells);
+  void add_distance(long long cells);
   void add_turn();
   void finish_run();
   void end_unfinished_run();
@@ -95,13 +101,13 @@ class MmsStats {
 
   bool running() const { return started_run_; }
   bool solved() const { return solved_; }
-  int total_distance() const { return total_distance_; }
+  long long total_distance() const { return total_distance_; }
   int total_turns() const { return total_turns_; }
   float total_effective_distance() const { return total_effective_; }
-  std::optional<int> best_run_distance() const;
+  std::optional<long long> best_run_distance() const;
   std::optional<int> best_run_turns() const;
   std::optional<float> best_run_effective_distance() const;
-  int current_run_distance() const { return current_distance_; }
+  long long current_run_distance() const { return current_distance_; }
   int current_run_turns() const { return current_turns_; }
   float current_run_effective_distance() const { return current_effective_; }
   float score() const;
@@ -114,13 +120,13 @@ class MmsStats {
   bool started_run_ = false;
   bool solved_ = false;
   float penalty_ = 0.0F;
-  int total_distance_ = 0;
+  long long total_distance_ = 0;  // 64 bits: moveForward adds up to kMaxMoveCells a line
   int total_turns_ = 0;
   float total_effective_ = 0.0F;
-  int current_distance_ = 0;
+  long long current_distance_ = 0;
   int current_turns_ = 0;
   float current_effective_ = 0.0F;
-  int best_distance_ = 0;
+  long long best_distance_ = 0;
   int best_turns_ = 0;
   float best_effective_ = 0.0F;
 };

@@ -20,6 +20,7 @@
 #include "app/run/step_limit.hpp"
 #include "app/run/terminal.hpp"
 #include "common/atomic_file.hpp"
+#include "common/deadline.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "mapping/walls.hpp"
@@ -58,8 +59,7 @@ std::string quoted_line(std::string_view line) {
 // The conversation itself, until something ends it.
 void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child, const RunControls &controls,
               MmsReport &report) {
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                           std::chrono::duration<double>(options.wall_limit_s));
+  const auto deadline = common::deadline_after<Clock>(Clock::now(), options.wall_limit_s);
   std::string line;
   for (;;) {
     const ChildProcess::Read r = child.read_line(line, deadline, options.max_line_bytes, controls.interrupted);

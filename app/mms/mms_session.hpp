@@ -34,13 +34,14 @@ struct MmsOptions {
   std::vector<std::string> command;       // the algorithm and its arguments
   MmsWalls walls = MmsWalls::sensed;
   MmsUntil until = MmsUntil::exit;
-  double wall_limit_s = 60.0;             // --wall-limit: wall clock, the whole conversation
+  double wall_limit_s = 60.0;             // --wall-limit: wall clock, the whole conversation; inf: none
   std::size_t max_line_bytes = 4096;      // a longer line ends it (a flood)
   bool ignore_invalid = false;            // --ignore-invalid: skip lines that are no command, as mms does
   bool transcript = false;                // --transcript: the conversation on stderr
 };
 
-// Throws common::InputError for an empty command, a time limit <= 0, a line cap < 64.
+// Throws common::InputError for an empty command, a time limit <= 0 or NaN, a line cap < 64.
+// A time limit past what the clock counts (1e10 s, inf) is no limit.
 void validate(const MmsOptions &options);
 
 enum class MmsEnd {

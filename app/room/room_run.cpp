@@ -10,6 +10,7 @@
 #include <variant>
 #include <filesystem>
 #include <numbers>
+#include <ostream>
 
 #include <fmt/format.h>
 
@@ -23,6 +24,7 @@
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/arena.hpp"
 #include "maze/arena_truth.hpp"
@@ -139,8 +141,14 @@ robot::ControllerOptions room_controller_options(const RoomRunOptions &options,
 }
 
 // The strategy's options, from the start, stopping no nearer than the body's radius + 8 cm.
-robot::RoomOptions room_options_of(const RoomRunOptions &options, Point start, double body_radius_m) {
+// The room options as the run uses them: wavefront without --goal heads for the world's
+// first goal, when its file gives one.
+robot::RoomOptions room_options_of(const RoomRunOptions &options, const maze::Arena &arena, Point start,
+                                   double body_radius_m) {
   robot::RoomOptions room = options.room;
+  if (room.strategy == robot::RoomStrategy::wavefront && !room.goal && !arena.goals.empty()) {
+    room.goal = Point{arena.goals.front().x_m, arena.goals.front().y_m};
+  }
   room.start = start;
   room.stop_distance_m = std::max(room.stop_distance_m, body_radius_m + 0.08);
   room.body_radius_m = body_radius_m;
@@ -226,7 +234,7 @@ class RoomLog {
     if (options_.room.strategy == robot::RoomStrategy::wavefront && !c.wave().empty()) {
       out_ << "wavefront (obstacles 1, goal 2):\n" << room_wave_numbers(c.map(), c.wave());
     }
-    out_ << '\n';
+    out_ << '\n' << std::flush;  // seen as the run goes, also through a pipe or in a file
   }
 
   // After the run: says of each snapshot it never reached that the run ended first.
@@ -363,6 +371,7 @@ void print_end(std::ostream &out, RoomLog &log, const robot::RoomController &c, 
 }  // namespace
 
 int room_exit_status(const RoomSummary &s) {
+  if (s.interrupted) return common::interrupted_exit_status();
   switch (s.ending) {
     case robot::RoomEnding::done:
     case robot::RoomEnding::goal_reached:
@@ -373,22 +382,25 @@ int room_exit_status(const RoomSummary &s) {
 }
 
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started) {
-  if (const auto *a = std::get_if<maze::ArenaWorld>(&world)) return run_room_in(a->arena, options, out, started);
-  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started);
+                     std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
+  if (const auto *a = std::get_if<maze::ArenaWorld>(&world)) {
+    return run_room_in(a->arena, options, out, started, interrupted);
+  }
+  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started, interrupted);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started) {
+                        std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
-  robot::validate(options.room);
   const maze::ArenaPose start_pose = start_pose_of(arena, options);
+  const robot::RoomOptions room =
+      room_options_of(options, arena, {start_pose.x_m, start_pose.y_m}, profile.body_radius_m);
+  robot::validate(room);
   const sensing::RoomGridSpec spec = grid_of(arena, options);
   check_places(arena, options, spec, start_pose, profile.body_radius_m);
   const robot::ControllerOptions controller = room_controller_options(options, profile);
-  const robot::RoomOptions room = room_options_of(options, {start_pose.x_m, start_pose.y_m}, profile.body_radius_m);
   const mapping::SensorModel model(options.sensor);
   sensing::RoomMap map(spec, model);
   if (!options.out_dir.empty()) {
@@ -411,8 +423,13 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
                                         [&log, &replay](const robot::RoomController &c) {
                                           log.on_step(c);
                                           if (replay) replay->on_step(c);
-                                        });
+                                        },
+                                        interrupted);
   RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
+  if (summary.ending == robot::RoomEnding::stopped && interrupted != nullptr && interrupted()) {
+    summary.interrupted = true;
+    summary.message = "interrupted by " + common::interrupt_name();
+  }
 
   // ---- the score against the truth ----
   const std::size_t first_left = score(map, truth, threshold, summary);

@@ -57,6 +57,7 @@ struct RoomRunOptions {
 
 struct RoomSummary {
   robot::RoomEnding ending = robot::RoomEnding::done;
+  bool interrupted = false;  // stopped by a signal
   std::string message;
   std::int64_t steps = 0;
   double sim_time_s = 0.0;
@@ -79,13 +80,17 @@ struct RoomSummary {
 
 // The run in a loaded world (maze::load_any_world, --boundary already the arena's; a maze runs
 // as the arena of its walls; options.world names it): checks everything (common::InputError,
-// before anything runs), runs, prints on `out`.
+// before anything runs), runs, prints on `out`. `interrupted`, polled every control step,
+// ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
+                     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
+                     robot::RoomStopPoll interrupted = nullptr);
 // The same in an arena given in code.
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
-// 0: done, goal reached, every waypoint reached, wander's time up; 1 otherwise.
+                        std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
+                        robot::RoomStopPoll interrupted = nullptr);
+// 0: done, goal reached, every waypoint reached, wander's time up; 128 + the signal when
+// interrupted; 1 otherwise.
 int room_exit_status(const RoomSummary &summary);
 
 }  // namespace app

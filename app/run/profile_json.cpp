@@ -98,6 +98,9 @@ class Node {
   int whole_number(const char *key) const {
     const Node n = at(key);
     if (!n.json_.is_number_integer()) n.fail("must be a whole number");
+    if (n.json_.is_number_unsigned() && n.json_.get<unsigned long long>() > 1'000'000'000ULL) {
+      n.fail(fmt::format("is out of range (got {})", n.json_.get<unsigned long long>()));
+    }
     const auto v = n.json_.get<long long>();
     if (v < -1'000'000'000LL || v > 1'000'000'000LL) n.fail(fmt::format("is out of range (got {})", v));
     return static_cast<int>(v);
@@ -219,6 +222,39 @@ std::string parse_reason(const std::string &what) {
   return bracket == std::string::npos ? what : what.substr(bracket + 2);
 }
 
+// Where the parser gave up, as its SAX interface reports it: the parse errors nlohmann
+// throws without a byte offset (a number past a double's range, out_of_range.406) get one.
+class StopLocator final : public nlohmann::json_sax<Json> {
+ public:
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t &) override { return true; }
+  bool string(string_t &) override { return true; }
+  bool binary(binary_t &) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t &) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t position, const std::string &last_token, const nlohmann::detail::exception &) override {
+    token_start = position - std::min(position, last_token.size());
+    token = last_token;
+    return false;
+  }
+  std::size_t token_start = 0;  // from 0
+  std::string token;
+};
+
+// The located error for a number nlohmann reads past a double's range ("1e999").
+common::InputError number_out_of_range(std::string_view text, const std::string &file) {
+  StopLocator locator;
+  Json::sax_parse(text.begin(), text.end(), &locator);
+  return common::InputError(location_of(text, locator.token_start, file),
+                            fmt::format("{} is not a finite number (past a double's range)", locator.token));
+}
+
 }  // namespace
 
 std::string profile_to_json(const RobotProfile &p) {
@@ -253,6 +289,8 @@ RobotProfile profile_from_json(std::string_view text, const std::string &file) {
     const std::size_t offset = e.byte == 0 ? 0 : e.byte - 1;
     throw common::InputError(location_of(text, offset, file),
                              "invalid JSON: " + parse_reason(e.what()));
+  } catch (const Json::out_of_range &) {
+    throw number_out_of_range(text, file);
   }
   try {
     const RobotProfile profile = read_profile(Node(json, ""));

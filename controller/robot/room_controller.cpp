@@ -34,12 +34,13 @@ int time_step_of(webots::Robot &robot, const MotionOptions &m) {
 }  // namespace
 
 RoomController::RoomController(webots::Robot &robot, const ControllerOptions &options, const RoomOptions &room,
-                               sensing::RoomMap &map, RoomStepHook on_step)
+                               sensing::RoomMap &map, RoomStepHook on_step, RoomStopPoll stop_requested)
     : robot_(robot),
       options_(options),
       room_(room),
       map_(map),
       on_step_(std::move(on_step)),
+      stop_requested_(stop_requested),
       time_step_ms_(time_step_of(robot, options.motion)),
       chassis_(robot, options.devices),
       drive_(chassis_, options.motion, time_step_ms_, [this](Action a) { return step(a); }),
@@ -67,6 +68,7 @@ void RoomController::update_pose() {
 
 Motion RoomController::step(Action) {
   if (steps_ >= options_.motion.max_steps) return Motion::max_steps;
+  if (stop_requested_ != nullptr && stop_requested_()) return Motion::stopped;
   if (room_.time_limit_s > 0.0 && robot_.getTime() >= room_.time_limit_s) {
     time_up_ = true;
     return Motion::stopped;

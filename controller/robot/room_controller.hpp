@@ -81,12 +81,14 @@ std::string_view to_string(RoomEnding e);
 // What a step hook sees: the controller after a control step.
 class RoomController;
 using RoomStepHook = std::function<void(const RoomController &)>;
+// Asked before every control step; true ends the run `stopped` (Ctrl-C, SIGTERM).
+using RoomStopPoll = bool (*)();
 
 class RoomController {
  public:
   // The robot, options and map must outlive the controller; options validated by the caller.
   RoomController(webots::Robot &robot, const ControllerOptions &options, const RoomOptions &room,
-                 sensing::RoomMap &map, RoomStepHook on_step = {});
+                 sensing::RoomMap &map, RoomStepHook on_step = {}, RoomStopPoll stop_requested = nullptr);
 
   // Runs the strategy to its end.
   RoomEnding run();
@@ -193,6 +195,7 @@ class RoomController {
   const RoomOptions &room_;
   sensing::RoomMap &map_;
   RoomStepHook on_step_;
+  RoomStopPoll stop_requested_;
   int time_step_ms_;
   WebotsChassis chassis_;
   Drive drive_;

@@ -56,7 +56,7 @@ void validate(const RoomOptions &o) {
   common::require_input(o.strategy != RoomStrategy::waypoints || !o.waypoints.empty(),
                         "--strategy waypoints needs --waypoints X,Y;X,Y...");
   common::require_input(o.strategy != RoomStrategy::wavefront || o.goal.has_value(),
-                        "--strategy wavefront needs --goal X,Y");
+                        "--strategy wavefront needs --goal X,Y (the world gives none)");
   common::require_input(o.strategy != RoomStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time-limit S");
   common::require_input(o.laps >= 0, fmt::format("--laps must be a whole number >= 0 (got {})", o.laps));
   common::require_input(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time-limit S");

@@ -13,6 +13,9 @@ maze_mapper.Error (a ValueError) carrying the line the program prints. NumPy is 
 the arrays, not to import the package. Students' guide: docs/python.md.
 """
 
+import functools
+import re
+
 from ._native import (
     CellModel,
     Error,
@@ -31,10 +34,59 @@ from ._native import (
 )
 
 __all__ = [
-    "CellModel", "Error", "OccupancyGrid", "RayModel", "Score", "SensorModel", "World",
-    "explore_world", "format_cell_matrix", "keep_grid", "load_world", "log_odds",
+    "ArgumentTypeError", "CellModel", "Error", "OccupancyGrid", "RayModel", "Score", "SensorModel",
+    "World", "explore_world", "format_cell_matrix", "keep_grid", "load_world", "log_odds",
     "probability", "render", "score",
 ]
+
+
+class ArgumentTypeError(Error, TypeError):
+    """An argument of the wrong type (a word where a number goes): a maze_mapper.Error like
+    every other bad input, and a TypeError as Python's own functions raise."""
+
+
+# pybind11 reports a call no signature accepts with a TypeError of its own, over several lines
+# ("log_odds(): incompatible function arguments. The following argument types are
+# supported:\n    1. (p: float, base: object = 'e') -> float\n\nInvoked with: 'x'"); it
+# becomes one line in the program's form, naming what was given by its types.
+_PYBIND_MISMATCH = re.compile(r"^[\w.]+\(\): incompatible (?:function|constructor) arguments")
+
+
+def _one_line(shown, text, args, kwargs):
+    text = re.sub(r"<([\w.]+) object at 0x[0-9a-f]+>", r"\1()", text).replace("maze_mapper._native.", "")
+    signatures = re.findall(r"^\s+\d+\. (.*)$", text, re.MULTILINE)
+    takes = " or ".join(
+        re.sub(r"self: [\w.]+(, )?", "", re.sub(r"^[\w.]*\(", "(", s)).split(" -> ")[0] for s in signatures)
+    given = [type(a).__name__ for a in args] + [f"{k}={type(v).__name__}" for k, v in kwargs.items()]
+    return f"error: {shown}() takes {takes}, not ({', '.join(given)})"
+
+
+def _wrong_types_raise_error(function, shown, method):
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        except TypeError as wrong:
+            if isinstance(wrong, Error) or not _PYBIND_MISMATCH.match(str(wrong)):
+                raise
+            given = args[1:] if method else args
+            raise ArgumentTypeError(_one_line(shown, str(wrong), given, kwargs)) from None
+    return call
+
+
+def _raise_error_for_wrong_types():
+    """Wraps the native functions and the methods of the native classes above."""
+    names = globals()
+    for name in ("explore_world", "format_cell_matrix", "load_world", "log_odds", "probability", "render", "score"):
+        names[name] = _wrong_types_raise_error(names[name], name, False)
+    for cls in (CellModel, OccupancyGrid, RayModel, Score, SensorModel, World):
+        for attribute, value in list(vars(cls).items()):
+            if callable(value) and (attribute == "__init__" or not attribute.startswith("_")):
+                shown = cls.__name__ if attribute == "__init__" else f"{cls.__name__}.{attribute}"
+                setattr(cls, attribute, _wrong_types_raise_error(value, shown, True))
+
+
+_raise_error_for_wrong_types()
 
 # What a controller handed to keep_grid, for the runner to score when the controller ends.
 _kept = None

@@ -1,9 +1,11 @@
 // SensorModel, log-odds and the occupancy grid, whose values NumPy sees in place.
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
@@ -63,15 +65,27 @@ py::array_t<float> array_view(py::object self) {
   return py::array_t<float>({h, w, k, k}, {w * k * k * f, k * k * f, k * f, f}, &g.grid.at_index(0), self);
 }
 
+// l(p) of a probability strictly between 0 and 1 (0 and 1 have none: -inf and +inf).
+double checked_log_odds(double p, const py::object &base) {
+  if (!(p > 0.0 && p < 1.0)) {
+    throw common::InputError(fmt::format("log_odds: p must be a probability strictly between 0 and 1 (got {})", p));
+  }
+  return mapping::log_odds(p, parse_base(base));
+}
+
+// The probability of a log-odds value; +-inf are certainty (1 and 0), NaN is no value.
+double checked_probability(double l, const py::object &base) {
+  if (std::isnan(l)) throw common::InputError("probability: log_odds must be a number (got nan)");
+  return mapping::probability(l, parse_base(base));
+}
+
 }  // namespace
 
 void bind_mapping(py::module_ &m) {
-  m.def(
-      "log_odds", [](double p, const py::object &base) { return mapping::log_odds(p, parse_base(base)); }, py::arg("p"),
-      py::arg("base") = "e", "l(p) = log_b(p / (1 - p)), base e or 10.");
-  m.def(
-      "probability", [](double l, const py::object &base) { return mapping::probability(l, parse_base(base)); },
-      py::arg("log_odds"), py::arg("base") = "e", "The probability of a log-odds value: 1 - 1 / (1 + b^l).");
+  m.def("log_odds", &checked_log_odds, py::arg("p"), py::arg("base") = "e",
+        "l(p) = log_b(p / (1 - p)), base e or 10; p strictly between 0 and 1.");
+  m.def("probability", &checked_probability, py::arg("log_odds"), py::arg("base") = "e",
+        "The probability of a log-odds value: 1 - 1 / (1 + b^l).");
 
   py::class_<mapping::SensorModel>(m, "SensorModel",
                                    "The inverse sensor model's numbers (--p-free, --p-occ, --prior, --log-base, "

@@ -41,6 +41,10 @@ class LidarModel {
     if (!(fov_rad > 0.0 && fov_rad <= 2.0 * std::numbers::pi + 1e-9)) {
       throw common::InputError(fmt::format("fov_rad must be in (0, 2 pi] (got {})", fov_rad));
     }
+    if (!(std::isfinite(position_m.first) && std::isfinite(position_m.second) && std::isfinite(yaw_rad))) {
+      throw common::InputError(fmt::format("the pose must be finite numbers (got position ({}, {}), yaw_rad {})",
+                                           position_m.first, position_m.second, yaw_rad));
+    }
     sensing::LidarScan scan;
     scan.origin = {position_m.first, position_m.second};
     scan.yaw_rad = yaw_rad;

@@ -94,7 +94,13 @@ class PyRobot {
     robot_ = std::make_unique<webots::Robot>();
     names_ = simulation_.cast<const PySimulation &>().device_names();
   }
-  int step(int duration_ms) { return robot_->step(duration_ms); }
+  // Webots' Robot.step: a negative duration is a mistake (raised); 0 passes no time.
+  int step(int duration_ms) {
+    if (duration_ms < 0) {
+      throw common::InputError("Robot.step: the duration must be 0 or more ms (got " + std::to_string(duration_ms) + ")");
+    }
+    return robot_->step(duration_ms);
+  }
   double time_s() const { return robot_->getTime(); }
   double basic_time_step_ms() const { return robot_->getBasicTimeStep(); }
   std::string name() const { return robot_->getName(); }

@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "app/run/evaluation.hpp"
+#include "app/run/option_fields.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
 #include "bindings.hpp"
@@ -48,9 +49,12 @@ struct Score {
   std::vector<ScoredSide> first_wrong_where_looked;
 };
 
+// load_world(path, cell_size_m=...): the cell size checked as --cell-size checks it (its one rule).
 maze::World load(const std::string &path, std::optional<double> cell_size_m) {
   maze::WorldOverrides overrides;
-  overrides.cell_size_m = cell_size_m;
+  if (cell_size_m) {
+    app::option_field<maze::WorldOverrides>("--cell-size").parse(overrides, fmt::format("{}", *cell_size_m));
+  }
   return maze::load_world(path, overrides);
 }
 

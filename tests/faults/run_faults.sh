@@ -292,6 +292,17 @@ signal_in_run_loop INT 130
 signal_in_run_loop TERM 143
 signal_in_run_loop HUP 129
 
+begin "SIGINT in a room run without --out: exit 130, its summary, no word of files"
+"$program" room worlds/ir_room.room --strategy wander --time 100000 --snapshot-steps 1 >"$dir/stdout" 2>"$dir/err" &
+pid=$!
+wait_for_text "$dir/stdout" "^--- step 1:" || fail "the room run printed no snapshot"
+kill -INT "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" = 130 ] || fail "exit $status, expected 130"
+grep -q "stopped: interrupted by Ctrl-C" "$dir/stdout" || fail "no summary saying so: $(tail -3 "$dir/stdout")"
+! grep -q "output files" "$dir/err" || fail "speaks of output files it never had: $(cat "$dir/err")"
+
 begin "SIGTERM while the files are written (a FIFO holds the writer): exit 143, nothing half-written"
 mkdir -p "$dir/out"
 mkfifo "$dir/out/replay.html"
@@ -416,7 +427,7 @@ grep -q "^total: 1 worlds, 0 ok, 0 failed, 1 interrupted; goal reached 0 of 0; m
   fail "totals: $(grep '^total' "$dir/out")"
 
 begin "an mms program's grandchild in a session of its own ends with the run; the program's exit is its end"
-"$program" mms "$lab" --quiet --time-limit 20 -- sh -c "setsid sh -c 'echo \$\$ >\"$dir/grandchild\"; exec sleep 60' &
+"$program" mms "$lab" --quiet --wall-limit 20 -- sh -c "setsid sh -c 'echo \$\$ >\"$dir/grandchild\"; exec sleep 60' &
   while [ ! -s '$dir/grandchild' ]; do sleep 0.01; done; exit 0" >"$dir/out" 2>"$dir/err"
 grep -q "^end: exited (the algorithm ended (exit status 0) after 0 lines)" "$dir/out" ||
   fail "end line: $(grep '^end' "$dir/out")"

@@ -127,7 +127,9 @@ Simulation::Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &
 void Simulation::set_up() {
   options_.validate();
   basic_step_s_ = options_.basic_time_step_ms / 1000.0;
-  time_limit_ms_ = static_cast<std::int64_t>(std::llround(options_.time_limit_s * 1000.0));
+  // A limit past what the millisecond clock counts (about 292 million years) is none.
+  const double limit_ms = options_.time_limit_s * 1000.0;
+  time_limit_ms_ = limit_ms < 9.0e18 ? static_cast<std::int64_t>(std::llround(limit_ms)) : 0;
   check_stuck_bumper(profile_, options_.stuck_bumper);
   const bool overlaps = with_solids([&](const auto &solids) {
     maze::sim::check_pose_free(solids, pose_);
@@ -185,7 +187,8 @@ Device *Simulation::device(const std::string &name) {
 int Simulation::step(int duration_ms) {
   if (stop_requested_ || ended_) return -1;
   const int basic = options_.basic_time_step_ms;
-  const int count = duration_ms == basic ? 1 : std::max(1, (duration_ms + basic - 1) / basic);
+  if (duration_ms <= 0) return 0;  // no time passes
+  const int count = duration_ms / basic + (duration_ms % basic != 0 ? 1 : 0);
   const std::int64_t limit_ms = time_limit_ms_;
   for (int i = 0; i < count; ++i) {
     advance(basic_step_s_);

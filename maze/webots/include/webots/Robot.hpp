@@ -28,8 +28,9 @@ class Robot {
   Robot(const Robot &) = delete;
   Robot &operator=(const Robot &) = delete;
 
-  // Advances simulated time by duration ms (a multiple of the basic time step);
-  // returns -1 when the simulation ends, else 0.
+  // Advances simulated time by duration ms (a multiple of the basic time step; a partial one
+  // counts whole); a duration <= 0 advances nothing. Returns -1 when the simulation ends,
+  // else 0.
   virtual int step(int duration);
 
   double getTime() const;           // simulated seconds since the start
