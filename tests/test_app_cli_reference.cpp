@@ -148,3 +148,15 @@ TEST_CASE("an option's value is named by its description's capitals, else by its
   CHECK(app::value_name(*plain) == "N");
   CHECK(app::value_name(*switch_).empty());
 }
+
+TEST_CASE("the man page's EXIT STATUS names every status the program ends with") {
+  ReferenceProgram program;
+  const std::string page = app::man_page(program.cli, "0.0.0");
+  const std::size_t start = page.find(".SH EXIT STATUS\n");
+  REQUIRE(start != std::string::npos);
+  const std::string section = page.substr(start, page.find("\n.SH", start + 1) - start);
+  for (const char *status : {"0", "1", "2", "4", "129", "130", "143"}) {
+    CAPTURE(status);
+    CHECK(section.find(std::string(".TP\n\\fB") + status + "\\fR\n") != std::string::npos);
+  }
+}
