@@ -252,7 +252,8 @@ std::string man_page(const CLI::App &root, const std::string &version) {
          ".TP\n\\fI../share/maze_mapper/worlds/\\fR (beside the program: \\fI/usr/share/maze_mapper/worlds/\\fR)\n"
          "The shipped worlds, used when \\fBMAZE_MAPPER_WORLDS\\fR is not set and the working directory "
          "has no \\fIworlds/lab4x4.txt\\fR. A \\fIWORLD\\fR given on the command line is a path, relative to "
-         "the working directory.\n";
+         "the working directory, or, when nothing is there, a shipped world's name with or without its extension "
+         "(\\fBmaze_mapper run maze8x8\\fR); \\fBmaze_mapper worlds\\fR lists them.\n";
   out += ".SH EXIT STATUS\n"
          ".TP\n\\fB0\\fR\nThe command did what was asked.\n"
          ".TP\n\\fB1\\fR\nA run did not map its maze, or did not deliver what was asked besides (a path, a "
