@@ -7,6 +7,10 @@
 set(MAZE_MAPPER_PACKAGE_MAINTAINER "maze_mapper maintainers <maintainers@users.noreply.h-seed-64e759d4.example>"
     CACHE STRING "The Debian package's Maintainer, \"Name <address>\"")
 set(_debian_dir ${CMAKE_BINARY_DIR}/packaging/debian)
+# The Debian revision: the package is made apart from the program's source (a Debian
+# changelog, changelog.Debian.gz, not a native package's changelog.gz).
+set(CPACK_DEBIAN_PACKAGE_RELEASE 1)
+set(MAZE_MAPPER_DEB_VERSION "${PROJECT_VERSION}-${CPACK_DEBIAN_PACKAGE_RELEASE}")
 
 # Debian's doc files: the changelog (compressed, gzip -n: the same bytes each build) and the
 # copyright file, beside README in the documentation folder.

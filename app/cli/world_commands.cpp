@@ -60,9 +60,10 @@ void add_worlds_command(CLI::App &cli, CommandContext &context) {
       throw common::InputError(fmt::format("no shipped worlds: no {} beside the program; set {} to the worlds' folder",
                                            kWorldsBesideProgram, kWorldsEnvironmentVariable));
     }
-    fmt::print("{:<22} {:<6} size\n", "world", "kind");
-    for (const std::filesystem::path &file : shipped_world_files()) fmt::print("{}\n", shipped_world_line(file));
-    fmt::print("in {} (a name, with or without its extension, is enough: maze_mapper run maze8x8)\n", dir->string());
+    std::cout << fmt::format("{:<22} {:<6} size\n", "world", "kind");
+    for (const std::filesystem::path &file : shipped_world_files()) std::cout << shipped_world_line(file) << '\n';
+    std::cout << fmt::format("in {} (a name, with or without its extension, is enough: maze_mapper run maze8x8)\n",
+                             dir->string());
     context.status = 0;
   });
 }
