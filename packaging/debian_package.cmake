@@ -4,6 +4,8 @@
 # Python. tests/package_deb.sh builds it, runs lintian on it (no error, no warning), installs,
 # uses and removes it.
 
+include(GNUInstallDirs)
+set(CPACK_PACKAGE_NAME maze-mapper)
 set(MAZE_MAPPER_PACKAGE_MAINTAINER "maze_mapper maintainers <maintainers@users.noreply.h-seed-64e759d4.example>"
     CACHE STRING "The Debian package's Maintainer, \"Name <address>\"")
 set(_debian_dir ${CMAKE_BINARY_DIR}/packaging/debian)
@@ -23,9 +25,11 @@ add_custom_command(
   VERBATIM)
 add_custom_target(maze_mapper_debian_changelog ALL DEPENDS ${_debian_dir}/changelog.Debian.gz)
 install(FILES ${_debian_dir}/changelog.Debian.gz ${_debian_dir}/copyright DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# lintian's overrides: the one tag that does not apply to a package made outside Debian.
+install(FILES ${CMAKE_CURRENT_LIST_DIR}/debian/lintian-overrides RENAME ${CPACK_PACKAGE_NAME}
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/lintian/overrides)
 
 set(CPACK_GENERATOR DEB)
-set(CPACK_PACKAGE_NAME maze-mapper)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_CONTACT "${MAZE_MAPPER_PACKAGE_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "simulated robot that maps grid mazes into a log-odds occupancy grid")

@@ -264,7 +264,7 @@ std::string one_dash_long_option(const CLI::App &cli, const std::vector<std::str
     for (const CLI::Option *o : command->get_options()) {
       if (!o->check_lname(name)) continue;
       const std::string where = command == &cli ? "maze_mapper" : command->get_name();
-      return fmt::format("{} has no option {}; did you mean --{}? (a long option takes two dashes)", where,
+      return fmt::format("{} has no option {}; did you mean --{}?", where,
                          word.substr(0, word.find('=')), name);
     }
   }
