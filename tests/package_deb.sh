@@ -1,7 +1,7 @@
 #!/bin/bash
 # The Debian package as a teacher hands it out, on this machine (root; CI's own Debian 12):
 # CPack builds maze_mapper_VERSION_ARCH.deb from a release build, `apt install` installs it,
-# the program maps its default world and a shipped one from another directory, `man` shows
+# the program maps its default world and a shipped one by its name from another directory, `man` shows
 # every command, bash completes `maze_mapper run --rob` to --robot, python3 imports the module
 # (as root, so Python writes __pycache__ beside it), and removing the package leaves nothing
 # under /usr that was not there before. lintian finds no error and no warning in it. Needs
@@ -62,9 +62,11 @@ cd "$work"  # under /tmp: no worlds/ here
 maze_mapper > "$work/main.out" || fail "maze_mapper from /tmp exited $?"
 grep -q '^world: /usr/share/maze_mapper/worlds/lab4x4.txt$' "$work/main.out" || fail "the default world: $(grep '^world:' "$work/main.out")"
 grep -q '^end: done$' "$work/main.out" || fail "the default world was not mapped: $(grep '^end:' "$work/main.out")"
-maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.txt --quiet > "$work/run.out" || fail "run maze8x8 exited $?"
+maze_mapper run maze8x8 --quiet > "$work/run.out" || fail "run maze8x8 exited $?"
+grep -q '^world: /usr/share/maze_mapper/worlds/maze8x8.txt$' "$work/run.out" || fail "run maze8x8: $(grep '^world:' "$work/run.out")"
 grep -q '^end: done$' "$work/run.out" || fail "maze8x8 was not mapped"
-echo "ran: maze_mapper, maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.txt (end: done)"
+maze_mapper worlds | grep -q '^maze8x8.txt  *maze   8 x 8 cells$' || fail "maze_mapper worlds does not list maze8x8.txt"
+echo "ran: maze_mapper, maze_mapper run maze8x8 (a shipped world by its name; end: done), maze_mapper worlds"
 
 # Every command --help lists, and every one those list (demo 1d, batch merge), in the man page.
 MANPAGER=cat MANWIDTH=80 man maze_mapper > "$work/man.txt" 2> "$work/man.err" || { cat "$work/man.err" >&2; fail "man maze_mapper"; }
@@ -95,11 +97,13 @@ done
 echo "completion: bash completes 'maze_mapper run --rob' to --robot; zsh and fish installed"
 
 if [ -n "$python_module" ]; then
-    (cd / && env -u PYTHONPATH python3 -c 'import maze_mapper, numpy; print(maze_mapper.__file__)') > "$work/python.out" ||
+    (cd / && env -u PYTHONPATH -u PYTHONDONTWRITEBYTECODE /usr/bin/python3 -c 'import maze_mapper, numpy; print(maze_mapper.__file__)') > "$work/python.out" ||
         fail "python3 cannot import the installed module"
     grep -qx /usr/lib/python3/dist-packages/maze_mapper/__init__.py "$work/python.out" ||
         fail "python3 imported maze_mapper from $(cat "$work/python.out")"
-    echo "python: import maze_mapper from /usr/lib/python3/dist-packages"
+    [ -d /usr/lib/python3/dist-packages/maze_mapper/__pycache__ ] ||
+        fail "python3 wrote no __pycache__ beside the module (what the package's prerm removes)"
+    echo "python: import maze_mapper from /usr/lib/python3/dist-packages (its __pycache__ written)"
 fi
 
 # apt remove (not --purge), what a teacher types; the prerm takes Python's __pycache__ away.
