@@ -9,11 +9,12 @@
 #                               without it unless MAZE_MAPPER_REQUIRE_CHROMIUM is set, as
 #                               .ci/run does)
 #   dpkg-dev file man-db        the Debian package stage (tests/package_deb.sh): CPack's
-#                               dpkg-shlibdeps and file, and `man` to read the installed page
+#   lintian                     dpkg-shlibdeps and file, `man` to read the installed page, and
+#                               lintian to check the package (no error, no warning)
 #   python3                     the example mms algorithm in Python (tests/mms_examples.sh)
 #   pybind11-dev python3-dev    the Python module (python/, MAZE_MAPPER_PYTHON) and its tests
 #   python3-numpy python3-pytest
 # Further package names given as arguments are installed too.
 exec "$(dirname "$0")/install-deps.sh" doctest-dev clang libclang-rt-14-dev universal-ctags tmux chromium \
-    dpkg-dev file man-db \
+    dpkg-dev file man-db lintian \
     python3 pybind11-dev python3-dev python3-numpy python3-pytest "$@"

@@ -1,10 +1,11 @@
 #!/bin/bash
 # The Debian package as a teacher hands it out, on this machine (root; CI's own Debian 12):
 # CPack builds maze_mapper_VERSION_ARCH.deb from a release build, `apt install` installs it,
-# the program maps its default world and a shipped one from another directory, `man` shows
-# every command, bash completes `maze_mapper run --rob` to --robot, and removing the package
-# leaves nothing under /usr that was not there before. Needs dpkg-dev, file and man-db
-# (scripts/install-test-deps.sh). Usage: tests/package_deb.sh [BUILD_DIR] (build/release).
+# the program maps its default world and a shipped one by its name from another directory, `man` shows
+# every command, bash completes `maze_mapper run --rob` to --robot, python3 imports the module
+# (as root, so Python writes __pycache__ beside it), and removing the package leaves nothing
+# under /usr that was not there before. lintian finds no error and no warning in it. Needs
+# dpkg-dev, file, man-db and lintian (scripts/install-test-deps.sh). Usage: tests/package_deb.sh [BUILD_DIR] (build/release).
 set -euo pipefail
 build=$(realpath "${1:-build/release}")
 package=maze-mapper
@@ -34,6 +35,22 @@ echo "depends: $depends"
 for needed in libcairo2 fonts-dejavu-core; do
     grep -q "$needed" <<< "$depends" || fail "the package does not depend on $needed (the pictures)"
 done
+python_module=$(dpkg-deb -c "$deb" | awk '{ print $6 }' | grep '/maze_mapper/__init__.py$' || true)
+if [ -n "$python_module" ]; then
+    [ "$python_module" = ./usr/lib/python3/dist-packages/maze_mapper/__init__.py ] ||
+        fail "the Python module is at $python_module, not in /usr/lib/python3/dist-packages"
+    for needed in 'python3 (>=' python3-numpy; do
+        grep -qF "$needed" <<< "$depends" || fail "the package has the Python module but no Depends on $needed"
+    done
+fi
+
+# Every lintian error (E:) and warning (W:) fails; the informational tags (I:, N:) do not.
+# Run as root, lintian says so: --allow-root.
+lintian --allow-root --no-tag-display-limit "$deb" > "$work/lintian.out" 2>&1 || true
+if grep -E '^(E|W): ' "$work/lintian.out" >&2; then
+    fail "lintian: $(grep -cE '^(E|W): ' "$work/lintian.out") errors and warnings"
+fi
+echo "lintian: no error, no warning"
 
 find /usr -xdev | sort > "$work/before"
 export DEBIAN_FRONTEND=noninteractive
@@ -45,9 +62,11 @@ cd "$work"  # under /tmp: no worlds/ here
 maze_mapper > "$work/main.out" || fail "maze_mapper from /tmp exited $?"
 grep -q '^world: /usr/share/maze_mapper/worlds/lab4x4.txt$' "$work/main.out" || fail "the default world: $(grep '^world:' "$work/main.out")"
 grep -q '^end: done$' "$work/main.out" || fail "the default world was not mapped: $(grep '^end:' "$work/main.out")"
-maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.txt --quiet > "$work/run.out" || fail "run maze8x8 exited $?"
+maze_mapper run maze8x8 --quiet > "$work/run.out" || fail "run maze8x8 exited $?"
+grep -q '^world: /usr/share/maze_mapper/worlds/maze8x8.txt$' "$work/run.out" || fail "run maze8x8: $(grep '^world:' "$work/run.out")"
 grep -q '^end: done$' "$work/run.out" || fail "maze8x8 was not mapped"
-echo "ran: maze_mapper, maze_mapper run /usr/share/maze_mapper/worlds/maze8x8.txt (end: done)"
+maze_mapper worlds | grep -q '^maze8x8.txt  *maze   8 x 8 cells$' || fail "maze_mapper worlds does not list maze8x8.txt"
+echo "ran: maze_mapper, maze_mapper run maze8x8 (a shipped world by its name; end: done), maze_mapper worlds"
 
 # Every command --help lists, and every one those list (demo 1d, batch merge), in the man page.
 MANPAGER=cat MANWIDTH=80 man maze_mapper > "$work/man.txt" 2> "$work/man.err" || { cat "$work/man.err" >&2; fail "man maze_mapper"; }
@@ -71,12 +90,24 @@ grep -qx "$completion" "$work/files" || fail "no bash completion installed"
 got=$(bash -c 'source "$1"; COMP_WORDS=(maze_mapper run --rob); COMP_CWORD=2; _maze_mapper; echo "${COMPREPLY[*]}"' _ "$completion")
 [ "$got" = "--robot" ] || fail "bash completes 'maze_mapper run --rob' to '$got'"
 for f in /usr/share/zsh/vendor-completions/_maze_mapper /usr/share/fish/vendor_completions.d/maze_mapper.fish \
-         /usr/share/doc/maze_mapper/README.md /usr/share/maze_mapper/worlds/lab4x4.txt; do
+         /usr/share/doc/maze-mapper/README.md /usr/share/doc/maze-mapper/copyright \
+         /usr/share/doc/maze-mapper/changelog.Debian.gz /usr/share/maze_mapper/worlds/lab4x4.txt; do
     grep -qx "$f" "$work/files" || fail "$f is not in the package"
 done
 echo "completion: bash completes 'maze_mapper run --rob' to --robot; zsh and fish installed"
 
-apt-get remove -y -qq --purge "$package" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt remove"; }
+if [ -n "$python_module" ]; then
+    (cd / && env -u PYTHONPATH -u PYTHONDONTWRITEBYTECODE /usr/bin/python3 -c 'import maze_mapper, numpy; print(maze_mapper.__file__)') > "$work/python.out" ||
+        fail "python3 cannot import the installed module"
+    grep -qx /usr/lib/python3/dist-packages/maze_mapper/__init__.py "$work/python.out" ||
+        fail "python3 imported maze_mapper from $(cat "$work/python.out")"
+    [ -d /usr/lib/python3/dist-packages/maze_mapper/__pycache__ ] ||
+        fail "python3 wrote no __pycache__ beside the module (what the package's prerm removes)"
+    echo "python: import maze_mapper from /usr/lib/python3/dist-packages (its __pycache__ written)"
+fi
+
+# apt remove (not --purge), what a teacher types; the prerm takes Python's __pycache__ away.
+apt-get remove -y -qq "$package" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt remove"; }
 installed=0
 find /usr -xdev | sort > "$work/after"
 if ! diff "$work/before" "$work/after" > "$work/diff"; then

@@ -112,7 +112,7 @@ TEST_CASE("cli: a command line that names a command builds only that one; --vers
   CHECK(built("map-log") == std::vector<std::string>{"map-log"});
   CHECK(built("--version").empty());
   const std::vector<std::string> all = built("");
-  CHECK(all.size() == 15);
+  CHECK(all.size() == 16);
   CHECK(built("--help") == all);
   CHECK(built("rnu") == all);        // a misspelt command: the error names the nearest of all
   CHECK(built("reference") == all);  // the reference describes every command
@@ -216,4 +216,45 @@ TEST_CASE("cli: --clamp must hold the prior's log-odds") {
   CHECK_THROWS_WITH_AS(mapping::validate(around_0_405),
                        "--clamp must hold the prior's log-odds 0.2007 (--prior 0.55) between MIN and MAX (got 0.25 2)",
                        common::InputError);
+}
+
+TEST_CASE("cli: a long option typed with one dash is pointed to its two-dash spelling") {
+  const auto one_dash = [](const std::vector<std::string> &words) {
+    CLI::App cli{"maze_mapper", "maze_mapper"};
+    app::CommandContext context;
+    app::add_commands(cli, context, words.front());
+    return app::one_dash_long_option(cli, words);
+  };
+  // CLI11 alone reads -out as -o with the value "ut".
+  CHECK(one_dash({"run", "-out", "results"}) ==
+        "run has no option -out; did you mean --out?");
+  CHECK(one_dash({"run", "-seed=3"}) == "run has no option -seed; did you mean --seed?");
+  CHECK(one_dash({"batch", "merge", "-out", "all.csv"}) ==
+        "merge has no option -out; did you mean --out?");
+  CHECK(one_dash({"mms", "-color", "never"}) ==
+        "mms has no option -color; did you mean --color?");
+  CHECK(one_dash({"run", "-o", "results", "--prior", "-0.5"}).empty());  // short options and numbers
+  CHECK(one_dash({"run", "--out", "results"}).empty());
+  CHECK(one_dash({"batch", "a.txt", "--", "-out"}).empty());  // after --: an argument
+}
+
+TEST_CASE("cli: a world file in the command's place suggests run") {
+  const std::string file = WORLDS_DIR "/maze8x8.txt";
+  CHECK(usage_error({file}) == "error: unknown command '" + file + "'; to map that world: maze_mapper run " + file);
+  CHECK(usage_error({"maze8x8"}) == "error: unknown command 'maze8x8'; to map that world: maze_mapper run maze8x8");
+  CHECK(usage_error({"nothing_here.txt"}).starts_with("error: unknown command 'nothing_here.txt' (choose run, "));
+}
+
+TEST_CASE("cli: mms takes --color as run does; --no-color is its old spelling") {
+  CLI::App cli{"maze_mapper", "maze_mapper"};
+  app::CommandContext context;
+  app::add_commands(cli, context);
+  for (const char *command : {"run", "mms"}) {
+    CAPTURE(command);
+    const CLI::App *sub = cli.get_subcommand(command);
+    REQUIRE(sub->get_option_no_throw("--color") != nullptr);
+    CHECK(sub->get_option("--color")->get_description().find("NO_COLOR") != std::string::npos);
+    CHECK(sub->get_option("--no-color")->get_group().empty());  // hidden
+  }
+  CHECK(usage_error({"mms", "--color", "sometimes"}).find("--color") != std::string::npos);
 }

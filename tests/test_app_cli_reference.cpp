@@ -202,3 +202,15 @@ TEST_CASE("cli: every number option of every command refuses nan and inf in a li
   }
   CHECK(checked > 30);
 }
+
+TEST_CASE("the man page's EXIT STATUS names every status the program ends with") {
+  ReferenceProgram program;
+  const std::string page = app::man_page(program.cli, "0.0.0");
+  const std::size_t start = page.find(".SH EXIT STATUS\n");
+  REQUIRE(start != std::string::npos);
+  const std::string section = page.substr(start, page.find("\n.SH", start + 1) - start);
+  for (const char *status : {"0", "1", "2", "4", "129", "130", "143"}) {
+    CAPTURE(status);
+    CHECK(section.find(std::string(".TP\n\\fB") + status + "\\fR\n") != std::string::npos);
+  }
+}

@@ -64,13 +64,14 @@ TEST_CASE("compare: a heading per K over the maps, the summaries as one table, i
   CHECK(lines.back().starts_with("wall_time_ms: "));
 }
 
-TEST_CASE("compare --quiet --out DIR: the table alone; compare.csv a row per K, run --out's files in DIR/kK/") {
+TEST_CASE("compare --quiet --out DIR: the table alone, without the time; compare.csv a row per K, run --out's files in DIR/kK/") {
   const test_cli::TempDir dir("compare_out");
   const test_cli::Ran ran =
       test_cli::run({"compare", kWorld, "--subcells", "3,5", "--noise", "0", "--quiet", "--out", dir.path.string()});
   CHECK(ran.status == 0);
   CHECK(ran.out.find("WWW") == std::string::npos);
   CHECK(ran.out.find("wall_accuracy ") != std::string::npos);
+  CHECK(ran.out.find("wall_time_ms") == std::string::npos);
   const auto csv = lines_of(test_png::read_all(dir.path / "compare.csv"));
   REQUIRE(csv.size() == 3);
   const auto header = fields_of(csv[0]);

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -279,4 +280,43 @@ TEST_CASE("mms --out: the files every run writes, summary.json with mms's stats 
   const std::string last_step = last.substr(0, last.find(','));
   CHECK(json.find(fmt::format("\"steps\": {},", last_step)) != std::string::npos);
   fs::remove_all(dir);
+}
+
+TEST_CASE("mms: moveForward 5 drives one ramped leg, faster than five moveForward, the same five cells") {
+  // The micromouse has a speed-run profile (2 m/s^2 up to 1 m/s); --walls truth knows every
+  // side ahead open, so the five cells are one leg. In --walls sensed a side the grid does not
+  // know yet ends the leg: never slower than cell by cell.
+  const auto drive = [](std::vector<std::string> counts, app::MmsWalls walls) {
+    app::RunOptions options;
+    options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+    options.world_overrides.cell_size_m = 0.18;
+    options.robot = "micromouse";
+    options.output.quiet = true;
+    app::MmsOptions mms;
+    mms.command = {"sh", kScripts + "forward.sh"};
+    mms.command.insert(mms.command.end(), counts.begin(), counts.end());
+    mms.walls = walls;
+    std::ostringstream out;
+    return app::run_mms_world(options, mms, out);
+  };
+  for (const app::MmsWalls walls : {app::MmsWalls::truth, app::MmsWalls::sensed}) {
+    const app::MmsRun standing = drive({}, walls);
+    const app::MmsRun one_leg = drive({"5"}, walls);
+    const app::MmsRun five_moves = drive({"1", "1", "1", "1", "1"}, walls);
+    for (const app::MmsRun *run : {&one_leg, &five_moves}) {
+      INFO(run->mms.message);
+      CHECK(run->mms.end == app::MmsEnd::exited);
+      CHECK(run->summary.moves == 5);
+      CHECK(run->mms.stats.total_distance() == 5);
+      CHECK(run->mms.crashes == 0);
+      CHECK(run->summary.visited == five_moves.summary.visited);
+    }
+    const double leg_s = one_leg.summary.sim_time_s - standing.summary.sim_time_s;
+    const double moves_s = five_moves.summary.sim_time_s - standing.summary.sim_time_s;
+    CAPTURE(leg_s);
+    CAPTURE(moves_s);
+    CHECK(leg_s > 0.0);
+    CHECK(leg_s <= moves_s);
+    if (walls == app::MmsWalls::truth) CHECK(leg_s < 0.8 * moves_s);
+  }
 }

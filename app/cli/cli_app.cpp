@@ -33,6 +33,7 @@ constexpr Command kCommands[] = {
     {"explain", add_explain_command},
     {"map-log", add_map_log_command},
     {"room", add_room_command},
+    {"worlds", add_worlds_command},
     {"show", add_show_command},
     {"convert", add_convert_command},
     {"generate", add_generate_command},

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <functional>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/run/shipped_worlds.hpp"
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
 
@@ -80,6 +83,23 @@ std::vector<std::string> close_option_names(const std::string &typed, const std:
   return close_names(typed, names);
 }
 
+// The subcommand of `command` called `word`, or null.
+const CLI::App *subcommand_named(const CLI::App &command, const std::string &word) {
+  if (word.starts_with("-")) return nullptr;
+  for (const CLI::App *sub : command.get_subcommands([](const CLI::App *) { return true; })) {
+    if (sub->get_name() == word) return sub;
+  }
+  return nullptr;
+}
+
+// Whether `word`, in the command's place, is a world to map: a file that is there, or a
+// shipped world's name (`maze_mapper maze8x8.txt` meant `maze_mapper run maze8x8.txt`).
+bool names_a_world(const std::string &word) {
+  if (word.starts_with("-")) return false;
+  std::error_code error;
+  return std::filesystem::is_regular_file(word, error) || shipped_world(word).has_value();
+}
+
 // The first word the command line did not expect, told with the names it may have meant.
 std::string unexpected(const CLI::App &cli, const std::vector<std::string> &extras) {
   // An unknown option first: the words after it may be its value.
@@ -90,6 +110,9 @@ std::string unexpected(const CLI::App &cli, const std::vector<std::string> &extr
   if (first.starts_with("--")) first = first.substr(0, first.find('='));
   const CLI::App &app = chosen(cli);
   const std::string where = &app == &cli ? "maze_mapper" : app.get_name();
+  if (&app == &cli && names_a_world(extras.front())) {
+    return fmt::format("unknown command '{}'; to map that world: maze_mapper run {}", extras.front(), extras.front());
+  }
   if (first.starts_with("-")) {
     const std::vector<std::string> close = close_option_names(first, suggestable_option_names(app));
     return close.empty() ? fmt::format("{} has no option {}", where, first)
@@ -226,6 +249,26 @@ std::string describe_usage_error(const CLI::App &cli, const CLI::ParseError &err
     }
   }
   return error.what();  // a case the program does not word itself (none known)
+}
+
+std::string one_dash_long_option(const CLI::App &cli, const std::vector<std::string> &words) {
+  const CLI::App *command = &cli;
+  for (const std::string &word : words) {
+    if (word == "--") break;  // the rest are arguments, not options
+    if (const CLI::App *sub = subcommand_named(*command, word)) {
+      command = sub;
+      continue;
+    }
+    if (word.size() < 3 || word[0] != '-' || word[1] == '-') continue;
+    const std::string name = word.substr(1, word.find('=') - 1);
+    for (const CLI::Option *o : command->get_options()) {
+      if (!o->check_lname(name)) continue;
+      const std::string where = command == &cli ? "maze_mapper" : command->get_name();
+      return fmt::format("{} has no option {}; did you mean --{}?", where,
+                         word.substr(0, word.find('=')), name);
+    }
+  }
+  return "";
 }
 
 }  // namespace app

@@ -11,6 +11,8 @@
 //   run --quiet=maybe    ->  --quiet is a flag: it takes no value, or true or false (got 'maybe')
 //                                                                    (ConversionError)
 //   convert x.txt        ->  convert needs OUT                       (RequiredError)
+//   run -out DIR         ->  run has no option -out; did you mean --out? (one_dash_long_option)
+//   maze8x8.txt          ->  unknown command 'maze8x8.txt'; to map that world: maze_mapper run maze8x8.txt
 //
 // A value's check throws common::InputError ("error: MESSAGE", exit 2) from inside CLI11's
 // parse; the other errors are CLI11's exceptions, told by their type and the tree's state.
@@ -38,6 +40,11 @@ void check_values_ourselves(CLI::App &command);
 // option left short of values at the end.
 std::string describe_usage_error(const CLI::App &cli, const CLI::ParseError &error,
                                  const std::vector<std::string> &words);
+
+// A long option typed with one dash (`run -out DIR`, which CLI11 would read as `-o ut`):
+// "run has no option -out; did you mean --out? ..." for the first such word of the command
+// line (the words after the program's name, up to a lone `--`), "" when there is none.
+std::string one_dash_long_option(const CLI::App &cli, const std::vector<std::string> &words);
 
 // The names within a small edit distance of `typed` (transpositions count one), the
 // closest first: for "--sede" among --seed, --speed, --step: {"--seed"}. A prefix of

@@ -18,6 +18,7 @@
 #include "common/error.hpp"
 #include "app/cli/demo_commands.hpp"
 #include "app/cli/option_binding.hpp"
+#include "app/run/shipped_worlds.hpp"
 
 namespace app {
 
@@ -118,6 +119,25 @@ std::vector<maze::Cell> parse_goals(const std::string &text) {
 }
 
 }  // namespace
+
+void add_color_option(CLI::App &command, ColorChoice &color) {
+  command.add_option_function<std::string>(
+      "--color", [&color](const std::string &text) { color = parse_color_choice(text); },
+      "WHEN: ANSI colours auto (when standard output is a terminal and NO_COLOR is not set), always or never "
+      "(default auto)");
+  command
+      .add_flag_callback("--no-color",
+                         [&color] {
+                           fmt::print(stderr, "{}\n", old_spelling_warning("--no-color", "--color never"));
+                           color = ColorChoice::never;
+                         },
+                         "the old spelling of --color never")
+      ->group("");
+}
+
+CLI::Option *accept_shipped_world_names(CLI::Option *world) {
+  return world->transform([](const std::string &given) { return world_argument(given); });
+}
 
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
   const CLI::Validator whole_from_zero = usage_check("--seed", [](const std::string &text) {

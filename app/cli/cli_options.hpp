@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/run/option_fields.hpp"  // robot_names()
+#include "app/run/terminal.hpp"       // ColorChoice
 #include "mapping/grid_types.hpp"
 #include "maze/world.hpp"
 
@@ -20,6 +21,14 @@ namespace app {
 // '-4')" (CLI11 alone would wrap "-4" to 2^64 - 4). `what` says what the seed drives; the
 // description ends "(default <seed's value>)".
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what);
+
+// --color WHEN (auto, always, never; auto honours NO_COLOR) into `color`, and its old spelling
+// --no-color (hidden; warns and means --color never): the same in every command that colours.
+void add_color_option(CLI::App &command, ColorChoice &color);
+
+// A WORLD argument (one or several) as every command reads it: a path, else the name of a
+// shipped world, with or without its extension (app/run/shipped_worlds.hpp, world_argument).
+CLI::Option *accept_shipped_world_names(CLI::Option *world);
 
 // "X,Y" (whole numbers, blanks around them allowed) -> the cell; throws common::InputError
 // naming `option` as the user typed it: "--to must be X,Y (got '1')".

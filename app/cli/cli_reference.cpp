@@ -252,11 +252,19 @@ std::string man_page(const CLI::App &root, const std::string &version) {
          ".TP\n\\fI../share/maze_mapper/worlds/\\fR (beside the program: \\fI/usr/share/maze_mapper/worlds/\\fR)\n"
          "The shipped worlds, used when \\fBMAZE_MAPPER_WORLDS\\fR is not set and the working directory "
          "has no \\fIworlds/lab4x4.txt\\fR. A \\fIWORLD\\fR given on the command line is a path, relative to "
-         "the working directory.\n";
+         "the working directory, or, when nothing is there, a shipped world's name with or without its extension "
+         "(\\fBmaze_mapper run maze8x8\\fR); \\fBmaze_mapper worlds\\fR lists them.\n";
   out += ".SH EXIT STATUS\n"
-         "0 when the command did what was asked; 1 when a run did not map its maze or made no path it "
-         "was asked for; 2 for bad input (one \\fBerror:\\fR line on standard error); 130 after Ctrl\\-C.\n";
-  out += ".SH SEE ALSO\n/usr/share/doc/maze_mapper/README.md and the docs/ folder beside it.\n";
+         ".TP\n\\fB0\\fR\nThe command did what was asked.\n"
+         ".TP\n\\fB1\\fR\nA run did not map its maze, or did not deliver what was asked besides (a path, a "
+         "speed run); in \\fBbatch\\fR, some worlds failed; in \\fBmms\\fR, the algorithm failed or the robot "
+         "did not reach the goal.\n"
+         ".TP\n\\fB2\\fR\nBad input or usage: one \\fBerror:\\fR line on standard error.\n"
+         ".TP\n\\fB4\\fR\nAn output could not be written for lack of space (the summary is still printed).\n"
+         ".TP\n\\fB129\\fR\nStopped by SIGHUP (the terminal closed).\n"
+         ".TP\n\\fB130\\fR\nStopped by SIGINT (Ctrl\\-C).\n"
+         ".TP\n\\fB143\\fR\nStopped by SIGTERM (kill, timeout).\n";
+  out += ".SH SEE ALSO\n/usr/share/doc/maze-mapper/README.md and the docs/ folder beside it.\n";
   return out;
 }
 

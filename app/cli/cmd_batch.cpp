@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "app/batch/batch.hpp"
+#include "app/cli/cli_options.hpp"
 #include "app/cli/mms_options.hpp"
 #include "app/cli/run_cli.hpp"
 #include "app/run/terminal.hpp"
@@ -80,7 +81,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   auto batch = std::make_shared<BatchInput>();
   CLI::App *command = cli.add_subcommand(
       "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
-  command->add_option("WORLD", batch->worlds, "maze files or folders");
+  accept_shipped_world_names(command->add_option("WORLD", batch->worlds, "maze files or folders, or shipped worlds' names"));
   command->add_option("--jobs", batch->jobs, "N: parallel runs (default all cores)");
   command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
   command->add_option("--shard", batch->shard,

@@ -195,7 +195,7 @@ int compare_runs(const RunOptions &options, const CompareOutput &output, const s
   const auto table = summary_table(ks, summaries);
   if (!output.quiet) print_columns(maps, out);
   print_columns(table, out);
-  out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);
+  if (!output.quiet) out << fmt::format("wall_time_ms: {:.0f}\n", total_ms);  // --quiet: the table alone
   if (!output.out_dir.empty() && !no_space) {
     const std::filesystem::path dir(output.out_dir);
     try {

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli/cli_options.hpp"
 #include "app/cli/mms_options.hpp"
 #include "app/mms/mms_session.hpp"
 #include "app/cli/run_cli.hpp"
@@ -32,7 +33,7 @@ std::vector<std::string> split_child_command(const std::vector<std::string> &arg
 void add_mms_command(CLI::App &cli, CommandContext &context) {
   auto parsed = std::make_shared<RunOptions>();
   auto mms = std::make_shared<MmsOptions>();
-  auto no_color = std::make_shared<bool>(false);
+  auto color = std::make_shared<ColorChoice>(ColorChoice::automatic);
   CLI::App *command = cli.add_subcommand(
       "mms", "run an mms-protocol micromouse algorithm (any program: mms WORLD -- python3 algo.py) on the "
              "simulated robot; print the map, its marks, and mms's stats and score");
@@ -42,14 +43,14 @@ void add_mms_command(CLI::App &cli, CommandContext &context) {
   command->add_option("--out", parsed->output.out_dir,
                       "DIR: write map.pgm + map.yaml, map.png, truth.png, trace.csv, replay.html, summary.json "
                       "(with mms's stats and score) and marks.txt (the algorithm's marks)");
-  command->add_flag("--no-color", *no_color, "no ANSI colours (default colours when stdout is a terminal)");
+  add_color_option(*command, *color);
   command->add_flag("--transcript", mms->transcript,
                     "print the conversation on stderr: `mms N> line` from the algorithm, `mms N< answer` back");
-  command->callback([command, parsed, mms, no_color, &context] {
+  command->callback([command, parsed, mms, color, &context] {
     RunOptions options = checked_run_options(*command, *parsed, true);
     check_mms_command_line(*command);
     print_warnings(options_not_applying(*command, options));
-    options.output.color = !*no_color && is_terminal(STDOUT_FILENO);
+    options.output.color = use_color(*color, STDOUT_FILENO);
     MmsOptions asked = *mms;
     asked.command = context.child_command;
     validate(asked);

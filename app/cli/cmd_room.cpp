@@ -129,7 +129,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
                                              "wavefront to a goal, frontier exploration or wander");
   auto in = std::make_shared<RoomInput>();
   RoomRunOptions &o = in->options;
-  cmd->add_option("WORLD", o.world, "the world file")->required();
+  accept_shipped_world_names(cmd->add_option("WORLD", o.world, "the world file, or a shipped world's name"))->required();
   cmd->add_option("--strategy", in->strategy, "waypoints, wavefront, frontier or wander (default frontier)");
   cmd->add_option("--model", in->model, "ray (lidar), pie or cone (IR/sonar ring), bump or depth (default ray)");
   cmd->add_option("--robot", o.robot, "a robot profile or JSON file (default the set-up's robot)");

@@ -49,17 +49,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
   add_field_option(run, o.output, "--snapshots");
   add_picture_format_option(run, o);
   add_field_options(run, o.output, {"--no-trace", "--trace-steps", "--no-replay"});
-  run.add_option_function<std::string>(
-      "--color", [&color](const std::string &text) { color = parse_color_choice(text); },
-      "WHEN: ANSI colours auto (when standard output is a terminal and NO_COLOR is not set), always or never "
-      "(default auto)");
-  run.add_flag_callback("--no-color",
-                        [&color] {
-                          fmt::print(stderr, "{}\n", old_spelling_warning("--no-color", "--color never"));
-                          color = ColorChoice::never;
-                        },
-                        "the old spelling of --color never")
-      ->group("");
+  add_color_option(run, color);
   add_field_option(run, o.output, "--animate");
   add_width_options(run, o);
   add_field_options(run, o.output, {"--fps", "--speed", "--step"});

@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "app/cli/cli_options.hpp"
+#include "app/run/shipped_worlds.hpp"
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
 
@@ -91,7 +92,7 @@ maze::sim::Pose scan_pose(ScanArgs &args, std::vector<std::string> &warnings) {
   }
   for (std::size_t i = 1; i < words.size(); ++i) {
     if (!args.world.empty()) throw common::InputError(fmt::format("scan: unexpected argument '{}'", words[i]));
-    args.world = words[i];
+    args.world = world_argument(words[i]);
   }
   if (args.world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
   const PoseArgument pose = parse_pose(words[0], "--pose", warnings);
@@ -106,7 +107,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
       "scan", "print one lidar range image at a pose: `index angle_rad range_m` a line");
   // Not required() for CLI11: a required positional takes a value of --pose's when WORLD is
   // left out, and the error then blames --pose. scan_pose asks for it instead.
-  show_as_required(*scan->add_option("WORLD", args->world, "maze file"));
+  show_as_required(*accept_shipped_world_names(scan->add_option("WORLD", args->world, "maze file or a shipped world's name")));
   CLI::Option *pose = scan->add_option("--pose", args->pose,
                                        "X,Y,YAW: position in metres (world frame) and heading in degrees, "
                                        "counter-clockwise from east (1.5708rad: in radians)");

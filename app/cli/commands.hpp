@@ -59,6 +59,8 @@ void add_room_command(CLI::App &cli, CommandContext &context);
 // Loads a world (maze::load_world) and prints its warnings on stderr, one a line.
 maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides = {});
 
+// `worlds`: the shipped worlds, one a line: file name, maze or arena, size (world_commands.cpp).
+void add_worlds_command(CLI::App &cli, CommandContext &context);
 // `show WORLD`: the canonical text map on stdout, nothing else.
 void add_show_command(CLI::App &cli, CommandContext &context);
 // `convert WORLD OUT [--cell-size M]`: writes OUT in the format its extension names (.txt,

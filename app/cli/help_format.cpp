@@ -238,6 +238,7 @@ const std::map<std::string, std::string, std::less<>> &examples() {
                   "  maze_mapper explain --p-free 0.2 --p-occ 0.7 --log-base 10"},
       {"map-log", "  maze_mapper map-log log.csv --boundary -2,2,-2,2\n"
                   "  maze_mapper map-log results/trace.csv --boundary 0,4,0,4 --cells 40,40"},
+      {"worlds", "  maze_mapper worlds     # then, from any folder: maze_mapper run maze8x8"},
       {"show", "  maze_mapper show maze.txt\n"
                "  maze_mapper show course.xml"},
       {"convert", "  maze_mapper convert maze.txt maze.num\n"

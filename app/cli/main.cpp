@@ -66,6 +66,10 @@ int main(int argc, char **argv) {
     } else {
       const std::vector<std::string> args = app::split_child_command(std::vector<std::string>(argv, argv + argc), context);
       words.assign(args.begin() + 1, args.end());
+      if (const std::string one_dash = app::one_dash_long_option(cli, words); !one_dash.empty()) {
+        fmt::print(stderr, "error: {}\n", common::printable(one_dash));
+        return kExitUsage;
+      }
       std::vector<const char *> parsed;
       for (const std::string &word : args) parsed.push_back(word.c_str());
       cli.parse(static_cast<int>(parsed.size()), parsed.data());

@@ -64,7 +64,8 @@ void add_picture_format_option(CLI::App &command, RunOptions &o) {
 }
 
 void add_exploration_options(CLI::App &command, RunOptions &o) {
-  command.add_option("WORLD", o.world, "maze file (default lab4x4.txt, from worlds/ here or the shipped worlds)");
+  accept_shipped_world_names(command.add_option(
+      "WORLD", o.world, "maze file or a shipped world's name (default lab4x4.txt, from worlds/ here or the shipped worlds)"));
   add_mapping_run_options(command, o);
   add_field_options(command, o.output, {"--ascii", "--unknown"});
 }

@@ -1,4 +1,4 @@
-// The world subcommands: show, convert, generate.
+// The world subcommands: worlds, show, convert, generate.
 
 #include <cstdint>
 #include <cstdio>
@@ -15,7 +15,9 @@
 #include "app/cli/cli_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/report/webots_export.hpp"
+#include "app/run/shipped_worlds.hpp"
 #include "common/atomic_file.hpp"
+#include "common/error.hpp"
 #include "maze/arena_text.hpp"
 #include "maze/generator.hpp"
 #include "maze/text_map.hpp"
@@ -30,6 +32,42 @@ maze::World load_world_reporting(const std::string &path, const maze::WorldOverr
   return world;
 }
 
+namespace {
+
+// One shipped world's line of `worlds`: its file name, whether it is a grid maze or an arena
+// (a room in metres), and its size; a file that does not load says why.
+std::string shipped_world_line(const std::filesystem::path &file) {
+  const std::string name = file.filename().string();
+  try {
+    const maze::AnyWorld world = maze::load_any_world(file.string(), {}, {});
+    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
+      return fmt::format("{:<22} arena  {:g} x {:g} m", name, arena->arena.width_m(), arena->arena.height_m());
+    }
+    const maze::Maze &m = std::get<maze::World>(world).maze;
+    return fmt::format("{:<22} maze   {} x {} cells", name, m.width(), m.height());
+  } catch (const common::InputError &e) {
+    return fmt::format("{:<22} ?      does not load: {}", name, e.what());
+  }
+}
+
+}  // namespace
+
+void add_worlds_command(CLI::App &cli, CommandContext &context) {
+  auto *cmd = cli.add_subcommand("worlds", "list the shipped worlds, which every command finds by name from any folder");
+  cmd->callback([&context] {
+    const std::optional<std::filesystem::path> dir = shipped_worlds_dir();
+    if (!dir) {
+      throw common::InputError(fmt::format("no shipped worlds: no {} beside the program; set {} to the worlds' folder",
+                                           kWorldsBesideProgram, kWorldsEnvironmentVariable));
+    }
+    std::cout << fmt::format("{:<22} {:<6} size\n", "world", "kind");
+    for (const std::filesystem::path &file : shipped_world_files()) std::cout << shipped_world_line(file) << '\n';
+    std::cout << fmt::format("in {} (a name, with or without its extension, is enough: maze_mapper run maze8x8)\n",
+                             dir->string());
+    context.status = 0;
+  });
+}
+
 void add_show_command(CLI::App &cli, CommandContext &context) {
   auto *cmd = cli.add_subcommand("show", "print a world: a maze as a canonical micromouse text map, an arena drawn on a grid");
   struct Args {
@@ -37,7 +75,9 @@ void add_show_command(CLI::App &cli, CommandContext &context) {
     std::optional<double> resolution_m;
   };
   auto args = std::make_shared<Args>();
-  cmd->add_option("WORLD", args->world, "maze or arena file: text map, num, XML, .maz or room (detected by content)")
+  accept_shipped_world_names(
+      cmd->add_option("WORLD", args->world,
+                      "maze or arena file: text map, num, XML, .maz or room (detected by content), or a shipped world's name"))
       ->required();
   cmd->add_option("--resolution", args->resolution_m,
                   "M: an arena's drawing, metres a cell (default the finest of 0.05, 0.1, 0.2, 0.25, 0.5, 1 ... m "
@@ -65,7 +105,9 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     bool keep_origin = false;
   };
   auto args = std::make_shared<Args>();
-  cmd->add_option("WORLD", args->world, "maze or arena file: text map, num, XML, .maz or room (detected by content)")
+  accept_shipped_world_names(
+      cmd->add_option("WORLD", args->world,
+                      "maze or arena file: text map, num, XML, .maz or room (detected by content), or a shipped world's name"))
       ->required();
   cmd->add_option("OUT", args->out,
                   "output file: .txt (text map), .num, .xml, .maz (16 x 16, binary), .wbt (Webots R2023b) or .room "

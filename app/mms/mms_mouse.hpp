@@ -55,7 +55,10 @@ class MmsMouse {
   std::optional<bool> wall(mapping::Cell c, mapping::Heading h, bool own_cell);
   MmsOutcome wall_query(mapping::Heading h, int half_steps);
   MmsOutcome turn(mapping::Heading h);
+  // moveForward N: the straight in legs over the cells known open (one ramped leg when all
+  // are), checking each side it has not known before; N cells of mms's distance either way.
   MmsOutcome move_forward(int cells);
+  int straight_known_open(int most) const;
   MmsOutcome crash();
   MmsOutcome ack_reset();
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace app {
 
@@ -27,5 +28,22 @@ std::optional<std::filesystem::path> shipped_worlds_dir();
 // else lab4x4.txt in the folder beside the program. Throws common::InputError when none of
 // these applies.
 std::string default_world();
+
+// The shipped worlds: the regular files of shipped_worlds_dir() but its README, sorted by
+// name; empty when there is no such folder.
+std::vector<std::filesystem::path> shipped_world_files();
+
+// The shipped world `name` names: the file of that name, else the one file whose name without
+// its extension is `name` (maze8x8 -> maze8x8.txt; lab4x4 names lab4x4.txt, .num and .xml
+// and so lab4x4.txt, the text map, which the others are made from). Nothing for a name with a
+// folder in it, or one no shipped world has.
+std::optional<std::filesystem::path> shipped_world(const std::string &name);
+
+// A WORLD as the command line gives it: the path itself when something is there, else the
+// shipped world its name names (`maze_mapper run maze8x8` from any folder). A path with a
+// folder that is not there but whose last part names a shipped world throws
+// common::InputError saying so (`worlds/maze8x8.txt` typed outside a checkout); any other
+// path is returned as it is, for the reader's own "cannot read" error.
+std::string world_argument(const std::string &given);
 
 }  // namespace app

@@ -1,6 +1,9 @@
 #include "robot/command_controller.hpp"
 
+#include <string>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include <webots/Robot.hpp>
 
@@ -55,6 +58,30 @@ Motion CommandController::move(Heading h) {
   ++b.moves;
   const bool new_cell = !b.visits.visited(b.cell);
   b.visits.record(b.cell, b.heading);
+  return b.arrive(new_cell);
+}
+
+Motion CommandController::move_straight(Heading h, int cells) {
+  CellRobot &b = *body_;
+  if (cells <= 1) return cells == 1 ? move(h) : Motion::ok;
+  if (const Motion s = turn_to(h); s != Motion::ok) return s;
+  Cell last = b.cell;
+  for (int i = 0; i < cells; ++i) last = mapping::neighbour(last, h);
+  const mapping::Point target = b.grid.centre_of(last);
+  const double distance_m = cells * b.options.geometry.cell_size_m;
+  const std::string what = fmt::format("cell ({},{})", last.x, last.y);
+  const bool ramped = b.options.motion.ramp_acceleration_m_s2 > 0.0 && b.options.motion.ramp_top_speed_m_s > 0.0;
+  if (const Motion s = ramped ? b.drive.drive_ramped(target, h, distance_m, what) : b.drive.drive_to(target, h, distance_m, what);
+      s != Motion::ok) {
+    return s;
+  }
+  const bool new_cell = !b.visits.visited(last);
+  for (int i = 0; i < cells; ++i) {
+    b.cell = mapping::neighbour(b.cell, h);
+    b.path.push_back(b.cell);
+    b.visits.record(b.cell, b.heading);
+    ++b.moves;
+  }
   return b.arrive(new_cell);
 }
 
