@@ -110,6 +110,25 @@ class Simulation {
   // The next Robot::step returns -1 (as when Webots quits).
   void request_stop() { stop_requested_ = true; }
 
+  // ---- a supervisor's edits (Webots' Supervisor API; the composition root's, never a
+  // robot-side controller's) ----
+  // Adds a solid to an arena's world, at once seen by the sensors and met by the body (a body
+  // it overlaps is pushed out as it next moves). Throws common::InputError on a maze's world
+  // (its walls are on the lattice), or for a solid with a non-finite or negative size.
+  void add_obstacle(const maze::Obstacle &obstacle);
+  void add_disc(const maze::ArenaDisc &disc);
+  // Moves the robot to pose, its origin z_m above the floor (Webots' translation and rotation
+  // fields set by a supervisor): the wheels keep their speeds and angles; every reading is
+  // taken afresh at the new pose. GPS z reads z_m from then on.
+  void teleport(const maze::sim::Pose &pose, double z_m);
+  double height_m() const { return height_m_; }
+  // Webots' simulationReset, as far as this world goes: the solids added since the start are
+  // gone, the robot stands at its start pose with its wheels at rest; time runs on.
+  void reset_world();
+  // The distance from (x, y) along angle_rad to the first solid, +infinity beyond max_range_m
+  // (what a supervisor checks a line of sight with).
+  double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
+
   // ---- plumbing for the webots:: device classes (maze/src/webots/) ----
   int step(int duration_ms);
   int basic_time_step_ms() const { return options_.basic_time_step_ms; }
@@ -200,6 +219,10 @@ class Simulation {
   maze::sim::SimulationOptions options_;
   std::optional<maze::sim::WallGrid> walls_;        // a maze's
   std::optional<maze::sim::ArenaGeometry> arena_;   // or an arena's
+  std::optional<maze::Arena> arena_world_;          // the arena arena_ is built from
+  std::optional<maze::Arena> initial_arena_;        // and as it was built first
+  maze::sim::Pose initial_pose_;
+  double height_m_ = 0.0;                           // the robot's origin above the floor
   maze::sim::Pose pose_;
   // Where the body's centre touches no wall (WallGrid::free_centres), computed when the
   // body last left the previous box: inside it, a physics substep needs no push_out. The
