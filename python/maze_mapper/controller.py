@@ -166,8 +166,9 @@ _SUPPORTED = ("Robot", "Supervisor", "Lidar", "Motor", "PositionSensor", "Inerti
               "DistanceSensor", "TouchSensor", "Camera", "Display")
 
 # The wall-clock time (time.perf_counter()) after which the runner ends the simulation (its
-# --wall-limit), or None.
+# --wall-limit), or None; and whether a step has ended it so.
 wall_deadline = None
+wall_limit_reached = False
 
 
 class SimulationEnded(SystemExit):
@@ -208,6 +209,8 @@ class Robot:
         if self._ended:
             raise SimulationEnded(0)
         if wall_deadline is not None and time.perf_counter() > wall_deadline:
+            global wall_limit_reached
+            wall_limit_reached = True
             _scene.current.simulation.request_stop()
         if _scene.current is not None:
             self._before = _scene.current.simulation.pose

@@ -183,6 +183,7 @@ def main(argv=None):
     random.seed(args.seed)
     started = time.perf_counter()
     controller.wall_deadline = None if args.wall_limit is None else started + args.wall_limit
+    controller.wall_limit_reached = False
     try:
         end, status = _run_controller(args.controller, controller_args)
     finally:
@@ -190,7 +191,7 @@ def main(argv=None):
         Robot.created = None
         controller.wall_deadline = None
     wall_time_ms = (time.perf_counter() - started) * 1000.0
-    if args.wall_limit is not None and wall_time_ms >= args.wall_limit * 1000.0 and end == "simulation ended":
+    if controller.wall_limit_reached:
         end = "wall-clock limit"
     sys.stdout.flush()
     try:
