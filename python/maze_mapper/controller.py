@@ -192,6 +192,7 @@ class Robot:
         Robot.created = self
         self._ended = False
         self._before = None  # the pose before the last step (GPS speed)
+        self.distance_m = 0.0  # the path the body has moved along, teleports left out
         self.devices = {name: self._handle.device(name) for name in self._handle.device_names()}
         if self._handle.getName().startswith("hambot"):
             # The course HamBot's camera and display (camera.py).
@@ -213,11 +214,19 @@ class Robot:
             wall_limit_reached = True
             _scene.current.simulation.request_stop()
         if _scene.current is not None:
-            self._before = _scene.current.simulation.pose
+            self._record_path(_scene.current)
         result = self._handle.step(time_step)
         if result == -1:
             self._ended = True
         return result
+
+    def _record_path(self, scene):
+        """Keeps the pose before this step and adds the last step's move to distance_m."""
+        pose = scene.simulation.pose
+        if self._before is not None and not scene.teleported:
+            self.distance_m += math.hypot(pose[0] - self._before[0], pose[1] - self._before[1])
+        scene.teleported = False
+        self._before = pose
 
     def getBasicTimeStep(self):
         return self._handle.getBasicTimeStep()

@@ -124,6 +124,15 @@ def _world_lines(args, world, the_scene):
     return [f"world: {args.world}", f"arena: {world.name}", f"obstacles: {world.obstacles}"]
 
 
+def _distance_m(the_scene):
+    """The path the robot's body moved along, m (teleports left out)."""
+    robot = Robot.created
+    if robot is None or not hasattr(robot, "distance_m"):
+        return 0.0
+    robot._record_path(the_scene)  # the last step's move
+    return robot.distance_m
+
+
 def _summary(args, world, the_scene, end, wall_time_ms):
     simulation = the_scene.simulation
     x, y, _, yaw = simulation.pose
@@ -134,6 +143,7 @@ def _summary(args, world, the_scene, end, wall_time_ms):
         f"steps: {simulation.steps}",
         f"sim_time_s: {simulation.time_s:.3f}",
         f"final_pose: {x:.3f} {y:.3f} {math.degrees(yaw):.1f}",
+        f"distance_m: {_distance_m(the_scene):.3f}",
     ]
     if maze_mapper._kept is not None and not isinstance(world, maze_mapper.World):
         lines.append("grid: kept, not scored (the world is no maze)")
@@ -186,20 +196,18 @@ def main(argv=None):
     controller.wall_limit_reached = False
     try:
         end, status = _run_controller(args.controller, controller_args)
-    finally:
-        simulation.release_current()
-        Robot.created = None
-        controller.wall_deadline = None
-    wall_time_ms = (time.perf_counter() - started) * 1000.0
-    if controller.wall_limit_reached:
-        end = "wall-clock limit"
-    sys.stdout.flush()
-    try:
+        wall_time_ms = (time.perf_counter() - started) * 1000.0
+        if controller.wall_limit_reached:
+            end = "wall-clock limit"
+        sys.stdout.flush()
         print("\n" + _summary(args, world, scene.current, end, wall_time_ms))
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return status or EXIT_USAGE
     finally:
+        simulation.release_current()
+        Robot.created = None
+        controller.wall_deadline = None
         scene.current = None
     return status
 

@@ -276,6 +276,7 @@ class RobotNode(Node):
         else:
             yaw = yaw_of_rotation(value, "the robot's rotation")
         self._scene.simulation.teleport(x, y, z, yaw)
+        self._scene.teleported = True
 
     def getPosition(self):
         return self._value("translation")
@@ -305,6 +306,7 @@ class Scene:
         self.simulation = simulation
         self.world_file = world_file
         self.landmarks = []
+        self.teleported = False  # since the last step (the path length leaves teleports out)
         self._warned = False
         self._next_id = 1
         self.root = Node(self, 0, "Group", "Group", "", {"children": []}, {"children": "MFNode"})
@@ -367,6 +369,7 @@ class Scene:
         del self.root._values["children"][self._initial_children:]
         self.landmarks.clear()
         self.simulation.reset_world()
+        self.teleported = True
 
 
 # The scene of the run in progress (maze_mapper.run sets it), else None.
