@@ -249,7 +249,7 @@ def render(camera):
     image[:HEIGHT_PX // 2] = _SKY_BGRA
     image[HEIGHT_PX // 2:] = _FLOOR_BGRA
     simulation = _scene.current.simulation
-    landmarks = _scene.current.landmarks if _scene.current.world_file is None else []
+    landmarks = _scene.current.landmarks
     rows = np.arange(HEIGHT_PX) + 0.5
     for column in range(WIDTH_PX):
         offset = math.atan2(WIDTH_PX / 2.0 - (column + 0.5), f)

@@ -347,21 +347,22 @@ class Scene:
         children.insert(len(children) if position == -1 or position >= len(children) else position, node)
 
     def _build(self, type_name, fields, yaw, node):
+        """Adds the node's solid to the simulated world (with --world: nothing, said once)."""
+        if self.world_file is not None:
+            if not self._warned:
+                print(f"warning: the world is {self.world_file} (--world): the nodes the controller imports "
+                      "add no solid", file=sys.stderr)
+                self._warned = True
+            return
         x, y, z = fields["translation"]
         if type_name == "Obstacle":
             across, along, _height = fields["size"]
-            solid = lambda: self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
+            self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
         else:
             height, radius, _ = fields["size"]
+            self.simulation.add_cylinder(x, y, radius)
             colors = [c for colour in fields["recognitionColors"] for c in colour]
             self.landmarks.append(Landmark(node, x, y, z, radius, height, yaw, colors))
-            solid = lambda: self.simulation.add_cylinder(x, y, radius)
-        if self.world_file is None:
-            solid()
-        elif not self._warned:
-            print(f"warning: the world is {self.world_file} (--world): the nodes the controller imports "
-                  "add no solid", file=sys.stderr)
-            self._warned = True
 
     def reset(self):
         """Webots' simulationReset here: the imported nodes are gone and the robot is back at

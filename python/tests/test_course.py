@@ -191,3 +191,25 @@ def test_an_arena_world_runs_in_the_python_runner(controller_file):
         summary = summary_of(out)
         assert summary["world"] == world and "arena" in summary
         assert int(out.splitlines()[0].split()[1]) > 180  # walls and obstacles within the lidar's 12 m
+
+
+def test_with_a_world_file_the_nodes_a_controller_imports_add_no_solid(controller_file):
+    body = "print('found', sup.getFromDef('Landmark_0') is not None, len(robot.camera.getRecognitionObjects()))\n"
+    status, out, err = run_course(course_controller(controller_file, body), "--world", "worlds/lab4x4.txt")
+    assert status == 0, err
+    assert "found True 0" in out.splitlines()
+    assert err == ("warning: the world is worlds/lab4x4.txt (--world): the nodes the controller imports "
+                   "add no solid\n")
+
+
+def test_every_world_of_the_repository_runs_in_the_python_runner_mazes_and_arenas_alike(controller_file):
+    from conftest import WORLDS
+    path = controller_file("from controller import Robot\nr = Robot()\nr.step(32)\n")
+    fixtures = os.path.join(os.path.dirname(WORLDS), "tests", "data", "worlds")
+    names = [f"worlds/{n}" for n in sorted(os.listdir(WORLDS)) if not n.endswith(".md")]
+    names += [f"tests/data/worlds/{n}" for n in sorted(os.listdir(fixtures)) if n.startswith("course_")]
+    assert len(names) >= 15
+    for name in names:
+        status, out, err = run_controller(path, "--world", name)
+        assert status == 0, (name, err)
+        assert summary_of(out)["end"] == "controller finished", name

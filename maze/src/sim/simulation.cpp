@@ -149,6 +149,7 @@ void Simulation::add_obstacle(const maze::Obstacle &obstacle) {
   arena_world_->obstacles.push_back(obstacle);
   arena_.emplace(*arena_world_);
   free_centres_.reset();
+  for (DeviceState &state : states_) state.read_at_step = -1;  // the sensors see it at once
 }
 
 void Simulation::add_disc(const maze::ArenaDisc &disc) {
@@ -159,6 +160,7 @@ void Simulation::add_disc(const maze::ArenaDisc &disc) {
   arena_world_->discs.push_back(disc);
   arena_.emplace(*arena_world_);
   free_centres_.reset();
+  for (DeviceState &state : states_) state.read_at_step = -1;  // the sensors see it at once
 }
 
 void Simulation::teleport(const maze::sim::Pose &pose, double z_m) {
