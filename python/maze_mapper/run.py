@@ -18,6 +18,7 @@ import argparse
 import math
 import os
 import random
+import re
 import runpy
 import sys
 import time
@@ -48,6 +49,8 @@ def _parse(argv):
                    help="the sensors' noise seed and Python's random seed, which draws the course's random start (default 42)")
     p.add_argument("--noise", type=float, help="lidar noise as a fraction of max range (0: exact sensors)")
     p.add_argument("--cell-size", type=float, help="cell size in m of a text or num world (default 1)")
+    p.add_argument("--start", help="a maze world's start: pos:N (its N-th start position) or random (one of them, "
+                                   "drawn with --seed), as `maze_mapper run --start`")
     p.add_argument("--max-steps", type=int, default=100_000,
                    help="basic time steps before Robot.step() returns -1 (default 100000)")
     p.add_argument("--time-limit", type=float,
@@ -67,6 +70,11 @@ def _parse(argv):
         args.max_steps = min(args.max_steps, max(1, math.ceil(args.time_limit * 1000 / _BASIC_STEP_MS - 1e-9)))
     if args.wall_limit is not None and not (args.wall_limit > 0 and math.isfinite(args.wall_limit)):
         p.error(f"--wall-limit must be a number of seconds above 0 (got {args.wall_limit})")
+    if args.start is not None:
+        if args.world is None:
+            p.error("--start needs --world (on the course's empty floor the controller chooses its start)")
+        if args.start != "random" and not re.fullmatch(r"pos:[1-9][0-9]*", args.start):
+            p.error(f"--start must be pos:N (N from 1) or random (got {args.start})")
     if args.seed < 0:
         p.error(f"--seed must be 0 or more (got {args.seed})")
     if not os.path.isfile(args.controller):
@@ -174,7 +182,9 @@ def _simulation(args):
     options = dict(robot=args.robot, seed=args.seed, noise=args.noise, max_steps=args.max_steps)
     if args.world is None:
         return None, _native.Simulation.empty_floor(**options)
-    world = _native.load_any_world(args.world, cell_size_m=args.cell_size)
+    start_position = int(args.start[4:]) if args.start and args.start.startswith("pos:") else None
+    world = _native.load_any_world(args.world, cell_size_m=args.cell_size, start_position=start_position,
+                                   random_start=args.start == "random", seed=args.seed)
     for warning in world.warnings:
         print(warning, file=sys.stderr)
     return world, _native.Simulation(world, **options)

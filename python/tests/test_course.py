@@ -213,3 +213,21 @@ def test_every_world_of_the_repository_runs_in_the_python_runner_mazes_and_arena
         status, out, err = run_controller(path, "--world", name)
         assert status == 0, (name, err)
         assert summary_of(out)["end"] == "controller finished", name
+
+
+def test_start_chooses_a_maze_worlds_start_position_as_run_does(controller_file):
+    source = ("from controller import Robot\nr = Robot()\ng = r.getDevice('gps')\ng.enable(32)\nr.step(32)\n"
+              "print('at', [round(v, 2) for v in g.getValues()[:2]])\n")
+    path = controller_file(source)
+    world = "tests/data/worlds/course_arena5_starts.xml"
+    seen = {}
+    for start in ("pos:1", "pos:2", "pos:7"):
+        status, out, err = run_controller(path, "--world", world, "--start", start)
+        assert status == 0, err
+        seen[start] = out.splitlines()[0]
+    assert seen == {"pos:1": "at [-2.0, -2.0]", "pos:2": "at [-1.0, -2.0]", "pos:7": "at [-1.0, -1.0]"}
+    status, out, err = run_controller(path, "--world", world, "--start", "pos:26")
+    assert status == 2 and err.startswith("error: --start pos:26")
+    status, out, err = run_controller(path, "--start", "random")
+    assert status == 2
+    assert err == "error: --start needs --world (on the course's empty floor the controller chooses its start)\n"
