@@ -250,15 +250,21 @@ void bind_simulator(py::module_ &m) {
       });
   m.def(
       "load_any_world",
-      [](const std::string &path, std::optional<double> cell_size_m) -> py::object {
+      [](const std::string &path, std::optional<double> cell_size_m, std::optional<int> start_position,
+         bool random_start, std::uint64_t seed) -> py::object {
         maze::WorldOverrides overrides;
         overrides.cell_size_m = cell_size_m;
+        overrides.start_position = start_position;
+        overrides.random_start = random_start;
+        overrides.random_start_seed = seed;
         maze::AnyWorld world = maze::load_any_world(path, overrides, {});
         if (maze::is_arena(world)) return py::cast(std::get<maze::ArenaWorld>(std::move(world)));
         return py::cast(std::get<maze::World>(std::move(world)));
       },
-      py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(),
-      "A World (a maze) or an ArenaWorld (an arena), as `maze_mapper run` reads the file.");
+      py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(), py::arg("start_position") = py::none(),
+      py::arg("random_start") = false, py::arg("seed") = common::kDefaultSeed,
+      "A World (a maze) or an ArenaWorld (an arena), as `maze_mapper run` reads the file; start_position (1-based) "
+      "or random_start (drawn with seed) choose a maze's start among its start positions (--start pos:N, random).");
 
   py::class_<PySimulation>(m, "Simulation",
                            "The embedded simulator: a world and one robot (a built-in profile or a FILE.json). "
