@@ -218,6 +218,7 @@ TEST_CASE("Simulation in an arena: lidar, GPS, IMU, bumpers, distance sensors an
   CHECK(sim.pose().x_m == doctest::Approx(4 - radius).epsilon(1e-9));
   CHECK(sim.pose().y_m == doctest::Approx(5).epsilon(1e-9));
   CHECK(front->getValue() == 1.0);
+  CHECK(sim.collisions() == 1);  // pressing on against the face is the same collision
   webots::PositionSensor *encoder = robot.getPositionSensor("left wheel encoder");
   encoder->enable(32);
   robot.step(32);

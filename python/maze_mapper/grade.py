@@ -11,8 +11,8 @@ With --controllers, runs a class's controllers instead (one folder a student, as
 each over every world (`own`: the course's empty floor, which the controller fills with its
 own load_environment) and start (seeds 1 to N: the course's random start and the sensors'
 noise), in parallel, each under python3 -m maze_mapper.run with the time limits; one CSV row a
-run (student, world, start, exit, end, simulated time, distance, final pose, and coverage and
-wall accuracy where the controller kept a grid), and a summary a student a line.
+run (student, world, start, exit, end, simulated time, distance, collisions, final pose, and
+coverage and wall accuracy where the controller kept a grid), and a summary a student a line.
 """
 
 import argparse
@@ -75,8 +75,8 @@ def grade(world, path):
 
 
 GRID_COLUMNS = ["file", "coverage", "wall_accuracy", "wrong", "first_wrong", "error"]
-RUN_COLUMNS = ["student", "world", "start", "exit", "end", "sim_time_s", "distance_m", "final_x", "final_y",
-               "final_yaw_deg", "coverage", "wall_accuracy", "error"]
+RUN_COLUMNS = ["student", "world", "start", "exit", "end", "sim_time_s", "distance_m", "collisions", "final_x",
+               "final_y", "final_yaw_deg", "coverage", "wall_accuracy", "error"]
 
 
 def write_csv(path, rows, columns=GRID_COLUMNS):
@@ -130,7 +130,7 @@ def run_once(student, controller, world, start, args):
     x, y, yaw = (summary.get("final_pose", "") + "  ").split(" ")[:3]
     errors = [line for line in done.stderr.splitlines() if line.strip()]
     return {**row, "exit": done.returncode, "end": summary.get("end", ""), "sim_time_s": summary.get("sim_time_s", ""),
-            "distance_m": summary.get("distance_m", ""), "final_x": x, "final_y": y, "final_yaw_deg": yaw,
+            "distance_m": summary.get("distance_m", ""), "collisions": summary.get("collisions", ""), "final_x": x, "final_y": y, "final_yaw_deg": yaw,
             "coverage": summary.get("coverage", ""), "wall_accuracy": summary.get("wall_accuracy", ""),
             "error": errors[-1] if done.returncode != 0 and errors else ""}
 

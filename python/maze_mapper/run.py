@@ -152,6 +152,7 @@ def _summary(args, world, the_scene, end, wall_time_ms):
         f"sim_time_s: {simulation.time_s:.3f}",
         f"final_pose: {x:.3f} {y:.3f} {math.degrees(yaw):.1f}",
         f"distance_m: {_distance_m(the_scene):.3f}",
+        f"collisions: {simulation.collisions}",
     ]
     if maze_mapper._kept is not None and not isinstance(world, maze_mapper.World):
         lines.append("grid: kept, not scored (the world is no maze)")

@@ -309,6 +309,8 @@ void bind_simulator(py::module_ &m) {
           },
           py::arg("x_m"), py::arg("y_m"), py::arg("z_m"), py::arg("yaw_rad"))
       .def("reset_world", [](PySimulation &s) { s.simulation().reset_world(); })
+      .def_property_readonly("collisions", [](const PySimulation &s) { return s.simulation().collisions(); },
+                             "Steps in which the body met a solid after a step in which it met none.")
       .def_property_readonly("pose",
                              [](const PySimulation &s) {
                                const maze::sim::Pose &p = s.simulation().pose();

@@ -82,6 +82,7 @@ def test_the_robot_collides_with_a_landmark_beyond_the_maze_edge_of_its_walls(co
     status, out, err = run_course(course_controller(controller_file, body), "--noise", "0")
     assert status == 0, err
     assert "stopped 2.84 -2.5" in out.splitlines()
+    assert summary_of(out)["collisions"] == "1"  # pressing on against it is the same collision
 
 
 def test_recognition_colours_and_distances_match_a_hand_worked_case_and_occluded_ones_are_absent(controller_file):

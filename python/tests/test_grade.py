@@ -68,6 +68,7 @@ def test_a_class_of_controllers_is_one_row_a_student_world_and_start(tmp_path):
     assert [(r["student"], r["world"], r["start"], r["exit"]) for r in rows] == [
         ("alice", "own", "1", "0"), ("alice", "own", "2", "0"), ("bob", "own", "1", "1"), ("bob", "own", "2", "1")]
     assert rows[0]["end"] == "controller finished" and 1.49 < float(rows[0]["distance_m"]) < 1.52
+    assert rows[0]["collisions"] == "0"
     assert rows[2]["error"] == "RuntimeError: lost"
     lines = done.stdout.splitlines()
     assert lines[0].startswith("alice: 2/2 runs finished, mean 2.0 s simulated")

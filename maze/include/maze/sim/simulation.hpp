@@ -109,6 +109,9 @@ class Simulation {
   std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
   // The next Robot::step returns -1 (as when Webots quits).
   void request_stop() { stop_requested_ = true; }
+  // Collisions so far: the steps in which the body met a solid (was held out of it) after a
+  // step in which it met none; pressing on against a wall is one collision.
+  std::int64_t collisions() const { return collisions_; }
 
   // ---- a supervisor's edits (Webots' Supervisor API; the composition root's, never a
   // robot-side controller's) ----
@@ -237,6 +240,9 @@ class Simulation {
   std::int64_t time_limit_ms_ = 0; // ms (0: none), computed once from the options
   std::int64_t lidar_beams_cast_ = 0;
   bool stop_requested_ = false;
+  bool touching_this_step_ = false;  // the body was held out of a solid during this step
+  bool touching_last_step_ = false;
+  std::int64_t collisions_ = 0;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
   std::vector<std::optional<maze::sim::LidarSweep>> lidar_sweeps_;  // likewise; rotating ones only
