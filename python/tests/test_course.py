@@ -52,7 +52,8 @@ def test_the_course_library_on_the_path_is_used_and_the_stand_in_where_it_is_abs
     source = "from fairis_lib.robot_lib import hambot\nprint('fixture', getattr(hambot, 'FROM_THE_FIXTURE', False))\n"
     path = controller_file(source)
     status, out, err = run_course(path)
-    assert status == 0, err and "fixture True" in out.splitlines()
+    assert status == 0, err
+    assert "fixture True" in out.splitlines()
     status, out, err = run_controller(path)
     assert status == 0, err
     assert "fixture False" in out.splitlines()
@@ -69,8 +70,8 @@ def test_the_landmarks_appear_in_the_first_range_image_where_geometry_puts_them(
     expected = round(1.5 * math.sqrt(2) - 0.25, 2)
     right = out.splitlines()[0].split()
     assert right[0] == "right45" and all(abs(float(v) - expected) <= 0.011 for v in right[1:])
-    left = out.splitlines()[1].split()  # the green one at (-1.5, 1.5) is behind the wall x = 0 ... no: beside it
-    assert all(abs(float(v) - expected) <= 0.011 for v in left[1:])
+    left = out.splitlines()[1].split()  # the green one at (-1.5, 1.5), 45 degrees left, the wall x = 0 beside the ray
+    assert left[0] == "left45" and all(abs(float(v) - expected) <= 0.011 for v in left[1:])
 
 
 def test_the_robot_collides_with_a_landmark_beyond_the_maze_edge_of_its_walls(controller_file):
