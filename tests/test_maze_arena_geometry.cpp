@@ -218,6 +218,7 @@ TEST_CASE("Simulation in an arena: lidar, GPS, IMU, bumpers, distance sensors an
   CHECK(sim.pose().x_m == doctest::Approx(4 - radius).epsilon(1e-9));
   CHECK(sim.pose().y_m == doctest::Approx(5).epsilon(1e-9));
   CHECK(front->getValue() == 1.0);
+  CHECK(sim.collisions() == 1);  // pressing on against the face is the same collision
   webots::PositionSensor *encoder = robot.getPositionSensor("left wheel encoder");
   encoder->enable(32);
   robot.step(32);
@@ -268,4 +269,75 @@ TEST_CASE("Simulation in an arena: a rotating lidar sweeps the arena's solids") 
   CHECK(image[n / 2] == doctest::Approx(1.0).epsilon(0.02));
   // Beam 0 looks back: the boundary 3 m behind, out of its 3 m range or at it.
   CHECK((std::isinf(image[0]) || image[0] == doctest::Approx(3.0).epsilon(0.02)));
+}
+
+TEST_CASE("arena geometry: a disc meets rays on its circle, holds bodies out and agrees with the brute force") {
+  maze::Arena a = maze::read_room("boundary 0 10 0 10\nstart 1 1 0\n", "f");
+  a.discs.push_back({5, 5, 0.25});
+  const maze::sim::ArenaGeometry g(a);
+  // East from (1, 5): the circle at x = 4.75, its outward normal (-1, 0).
+  Hit h = cast(g, 1, 5, 0);
+  CHECK(h.t == doctest::Approx(3.75));
+  CHECK(h.nx == doctest::Approx(-1.0));
+  CHECK(h.ny == doctest::Approx(0.0));
+  // East along y = 5.2: the chord's near end, x = 5 - sqrt(0.25^2 - 0.2^2) = 4.85.
+  CHECK(cast(g, 1, 5.2, 0).t == doctest::Approx(3.85));
+  // Along y = 5.3 the ray passes it: the boundary at x = 10. From inside: 0.
+  CHECK(cast(g, 1, 5.3, 0).t == doctest::Approx(9.0));
+  CHECK(g.cast(5.1, 5, 0, 50) == 0.0);
+  CHECK(g.inside_solid(5.17, 5.17));
+  CHECK(!g.inside_solid(5.18, 5.18));  // inside its bounding box, outside the circle
+  // A body of 0.1 m at (5.3, 5) is pushed out along the radius to 0.35 m from the centre.
+  double x = 5.3;
+  double y = 5.0;
+  CHECK(g.push_out(x, y, 0.1));
+  CHECK(x == doctest::Approx(5.35));
+  CHECK(y == doctest::Approx(5.0));
+  const std::vector<maze::sim::Contact> touching = g.contacts(5.35, 5, 0.1 + 1e-6);
+  REQUIRE(touching.size() == 1);
+  CHECK(touching[0].x_m == doctest::Approx(5.25));
+  common::Rng rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    const double ox = rng.uniform(0.5, 9.5);
+    const double oy = rng.uniform(0.5, 9.5);
+    const double angle = rng.uniform(-kPi, kPi);
+    CAPTURE(ox);
+    CAPTURE(oy);
+    CAPTURE(angle);
+    CHECK(g.cast(ox, oy, angle, 50) ==
+          doctest::Approx(g.cast_brute_force(ox, oy, std::cos(angle), std::sin(angle), 50)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("Simulation in an arena: a supervisor adds solids the sensors see at once, teleports and resets") {
+  const maze::Arena arena = maze::read_room("boundary 0 10 0 10\nstart 1 5 0\n", "f");
+  webots::embedded::Simulation sim(arena, test_robot(), at(1, 5, 0));
+  webots::Robot &robot = sim.robot();
+  webots::Lidar *lidar = robot.getLidar("lidar");
+  lidar->enable(32);
+  robot.step(32);
+  CHECK(lidar->getRangeImage()[180] == doctest::Approx(9.0 / std::cos(0.5 * kPi / 180)).epsilon(1e-6));
+  sim.add_disc({5, 5, 0.25});
+  sim.add_obstacle(maze::Obstacle::oriented(1, 7, 1, 0.006, 0));  // a wall along y = 7
+  // Read in the same step: the new solids are there at once.
+  CHECK(lidar->getRangeImage()[180] == doctest::Approx(3.75).epsilon(1e-3));
+  CHECK(lidar->getRangeImage()[90] == doctest::Approx(2.0 - 0.006).epsilon(1e-3));
+  webots::GPS *gps = robot.getGPS("gps");
+  gps->enable(32);
+  sim.teleport({8, 2, kPi / 2}, 0.02);
+  CHECK(gps->getValues()[0] == 8.0);
+  CHECK(gps->getValues()[2] == 0.02);
+  CHECK(sim.pose().yaw_rad == doctest::Approx(kPi / 2));
+  sim.reset_world();
+  CHECK(sim.pose().x_m == 1.0);
+  CHECK(gps->getValues()[2] == 0.0);
+  CHECK(lidar->getRangeImage()[180] == doctest::Approx(9.0 / std::cos(0.5 * kPi / 180)).epsilon(1e-6));
+  CHECK_THROWS_WITH_AS(sim.add_disc({kInf, 5, 0.25}), "a cylinder's x must be finite (got inf)", common::InputError);
+}
+
+TEST_CASE("Simulation in a maze: no solid can be added to the lattice") {
+  maze::Maze m(2, 2);
+  webots::embedded::Simulation sim(m, test_robot(), {});
+  CHECK_THROWS_WITH_AS(sim.add_disc({0.5, 0.5, 0.1}),
+                       "a solid cannot be added to a maze's world (its walls are on the lattice)", common::InputError);
 }

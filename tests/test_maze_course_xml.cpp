@@ -262,11 +262,20 @@ TEST_CASE("course XML: bad landmarks and start positions are located") {
         "f.xml:4:23: error: red must be 0 to 1, got 2");
   CHECK(diagnostic_of(frame + R"(<landmark x="1" y="1" height="0"/></world>)") ==
         "f.xml:4:23: error: height must be positive, got 0");
-  CHECK(diagnostic_of(frame + R"(<landmark x="3" y="1"/></world>)") ==
-        "f.xml:4:11: error: landmark (3, 1) is outside the maze, which spans x 0 to 2 m and y 0 to 2 m");
   CHECK(diagnostic_of(frame + R"(<landmark y="1"/></world>)") == "f.xml:4:1: error: <landmark> needs the attribute x");
   CHECK(diagnostic_of(frame + R"(<startPositions><pos x="0.5" y="0.5"/><pos x="0.5" y="9"/></startPositions></world>)") ==
         "f.xml:4:44: error: start (0.5, 9) is outside the maze, which spans x 0 to 2 m and y 0 to 2 m");
+}
+
+TEST_CASE("course XML: a landmark may stand on or beyond the maze's edge") {
+  const std::string text = R"(<world>
+<wall x1="0" y1="0" x2="2" y2="0"/><wall x1="0" y1="2" x2="2" y2="2"/>
+<wall x1="0" y1="0" x2="0" y2="2"/><wall x1="2" y1="0" x2="2" y2="2"/>
+<landmark x="-0.5" y="2.5"/><landmark x="2" y="0"/></world>)";
+  const maze::Maze m = maze::read_xml(text, "f.xml");
+  REQUIRE(m.landmarks().size() == 2);
+  CHECK(m.landmarks()[0].x_m == -0.5);
+  CHECK(m.landmarks()[0].y_m == 2.5);
 }
 
 TEST_CASE("course XML: landmarks and every start position survive a round trip") {

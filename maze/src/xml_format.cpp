@@ -350,13 +350,13 @@ double colour(const xml::Element &e, const char *name, const Source &src) {
   return v;
 }
 
-// <landmark x y [height] [red green blue]/>: x and y required, inside the maze; height
+// <landmark x y [height] [red green blue]/>: x and y required, anywhere (an object in the
+// world, not a cell: the course's stand at the arena's corners, on or beyond its edge); height
 // positive (the course's 1.5 m when left out).
-Landmark read_landmark(const xml::Element &e, const Grid &g, const Source &src) {
+Landmark read_landmark(const xml::Element &e, const Source &src) {
   Landmark l;
   l.x_m = *number(e, "x", src, true);
   l.y_m = *number(e, "y", src, true);
-  (void)cell_at(e, g, src, "landmark");
   l.height_m = number(e, "height", src, false).value_or(1.5);
   if (!(l.height_m > 0.0)) throw src.error(e, "height", fmt::format("height must be positive, got {}", l.height_m));
   l.red = colour(e, "red", src);
@@ -380,7 +380,7 @@ void read_start_and_goals(const xml::Element &world, const Grid &g, const Source
     raw.start_where = raw.start_positions_where.front();
   }
   for (const xml::Element &e : world.children("landmark")) {
-    raw.landmarks.push_back(read_landmark(e, g, src));
+    raw.landmarks.push_back(read_landmark(e, src));
   }
   for (const xml::Element &e : world.children("goal")) {
     raw.goals.push_back(cell_at(e, g, src, "goal"));

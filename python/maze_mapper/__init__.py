@@ -1,6 +1,7 @@
 """maze_mapper for Python: the lab's 4D occupancy grid, its models, the map renderer and the
 scorer, over the same C++ code as the `maze_mapper` program; and Webots' Python controller
-API over its embedded simulator (python3 -m maze_mapper.run CONTROLLER.py --world WORLD).
+API, the Supervisor included, over its embedded simulator (python3 -m maze_mapper.run
+CONTROLLER.py [--world WORLD]): the course's own controllers run unchanged (docs/course.md).
 
 The grid's layout, for the program's grids and for a student's own NumPy arrays alike:
 

@@ -1,27 +1,35 @@
-"""python3 -m maze_mapper.run CONTROLLER.py --world WORLD [options] [-- CONTROLLER ARGS...]
+"""python3 -m maze_mapper.run CONTROLLER.py [--world WORLD] [options] [-- CONTROLLER ARGS...]
 
 Runs a Webots Python controller against maze_mapper's embedded simulator, as Webots would
-start it: `from controller import Robot` imports maze_mapper's controller module, sys.argv is
-the controller's path and its arguments (Webots' controllerArgs), and Robot.step() returns -1
-once the simulation ends (--max-steps). The controller sees only its devices, never the maze.
-When it ends, the runner prints a summary; if the controller handed its grid to
-maze_mapper.keep_grid(), the summary scores it against the world's truth as `maze_mapper run`
+start it: in the controller's own folder (so the course's '../../worlds/...' paths resolve),
+`from controller import Robot` (or Supervisor) imports maze_mapper's controller module,
+sys.argv is the controller's path and its arguments (Webots' controllerArgs), and
+Robot.step() returns -1 once the simulation ends (--time-limit, --max-steps, --wall-limit).
+Without --world the world is the course's empty floor, which a supervisor controller fills
+(the course's load_environment); with it, a maze or an arena file. The course's own
+fairis_lib is used when it is importable; maze_mapper's stand-in serves where it is not.
+When the controller ends, the runner prints a summary; if the controller handed its grid to
+maze_mapper.keep_grid(), the summary scores it against a maze's truth as `maze_mapper run`
 scores its own map. Exit status: the controller's (1 for an uncaught exception), 2 for bad
 input to the runner.
 """
 
 import argparse
+import math
 import os
+import random
+import re
 import runpy
 import sys
 import time
 import traceback
 
 import maze_mapper
-from maze_mapper import _native
+from maze_mapper import _native, controller, scene
 from maze_mapper.controller import Robot, SimulationEnded
 
 EXIT_USAGE = 2
+_BASIC_STEP_MS = 32  # the simulator's basic time step
 
 
 class _Parser(argparse.ArgumentParser):
@@ -34,13 +42,21 @@ def _parse(argv):
     p = _Parser(prog="python3 -m maze_mapper.run",
                 description="Run a Webots Python controller against the embedded simulator.")
     p.add_argument("controller", help="the controller's .py file (it does `from controller import Robot`)")
-    p.add_argument("--world", required=True, help="a maze file: text map, mms num or wall-segment XML")
+    p.add_argument("--world", help="a maze or arena file (text map, mms num, XML, room); default: the course's "
+                                     "empty floor, which the controller's supervisor fills")
     p.add_argument("--robot", default="hambot", help="a built-in robot profile or a FILE.json (default hambot)")
-    p.add_argument("--seed", type=int, default=42, help="the sensors' noise seed (default 42)")
+    p.add_argument("--seed", type=int, default=42,
+                   help="the sensors' noise seed and Python's random seed, which draws the course's random start (default 42)")
     p.add_argument("--noise", type=float, help="lidar noise as a fraction of max range (0: exact sensors)")
     p.add_argument("--cell-size", type=float, help="cell size in m of a text or num world (default 1)")
+    p.add_argument("--start", help="a maze world's start: pos:N (its N-th start position) or random (one of them, "
+                                   "drawn with --seed), as `maze_mapper run --start`")
     p.add_argument("--max-steps", type=int, default=100_000,
                    help="basic time steps before Robot.step() returns -1 (default 100000)")
+    p.add_argument("--time-limit", type=float,
+                   help="simulated seconds before Robot.step() returns -1 (the earlier of this and --max-steps)")
+    p.add_argument("--wall-limit", type=float,
+                   help="wall-clock seconds after which Robot.step() returns -1 (a guard for a class's runs)")
     args, rest = p.parse_known_args(argv)
     if rest and rest[0] == "--":
         rest = rest[1:]
@@ -48,6 +64,17 @@ def _parse(argv):
         p.error(f"unrecognized arguments: {' '.join(rest)} (controller arguments follow --)")
     if args.max_steps < 1:
         p.error(f"--max-steps must be at least 1 (got {args.max_steps})")
+    if args.time_limit is not None:
+        if not (args.time_limit > 0 and math.isfinite(args.time_limit)):
+            p.error(f"--time-limit must be a number of seconds above 0 (got {args.time_limit})")
+        args.max_steps = min(args.max_steps, max(1, math.ceil(args.time_limit * 1000 / _BASIC_STEP_MS - 1e-9)))
+    if args.wall_limit is not None and not (args.wall_limit > 0 and math.isfinite(args.wall_limit)):
+        p.error(f"--wall-limit must be a number of seconds above 0 (got {args.wall_limit})")
+    if args.start is not None:
+        if args.world is None:
+            p.error("--start needs --world (on the course's empty floor the controller chooses its start)")
+        if args.start != "random" and not re.fullmatch(r"pos:[1-9][0-9]*", args.start):
+            p.error(f"--start must be pos:N (N from 1) or random (got {args.start})")
     if args.seed < 0:
         p.error(f"--seed must be 0 or more (got {args.seed})")
     if not os.path.isfile(args.controller):
@@ -56,13 +83,19 @@ def _parse(argv):
 
 
 def _run_controller(path, controller_args):
-    """Runs the controller's file as __main__ with Webots' `controller` module resolved to
-    ours; returns (how it ended, exit status)."""
+    """Runs the controller's file as __main__ in its own folder, Webots' `controller` module
+    resolved to ours, the course's fairis_lib before our stand-in; returns (how it ended, exit
+    status)."""
     here = os.path.dirname(os.path.abspath(__file__))
-    saved_argv, saved_path = sys.argv, list(sys.path)
+    path = os.path.abspath(path)
+    folder = os.path.dirname(path)
+    saved_argv, saved_path, saved_cwd = sys.argv, list(sys.path), os.getcwd()
+    saved_modules = set(sys.modules)
     sys.argv = [path] + list(controller_args)
-    sys.path[:0] = [os.path.join(here, "_webots"), os.path.dirname(os.path.abspath(path))]
+    sys.path[:0] = [os.path.join(here, "_webots"), folder]
+    sys.path.append(os.path.join(here, "_fairis"))
     sys.modules.pop("controller", None)
+    os.chdir(folder)
     try:
         runpy.run_path(path, run_name="__main__")
         return "controller finished", 0
@@ -79,25 +112,51 @@ def _run_controller(path, controller_args):
         traceback.print_exc()
         return "controller failed", 1
     finally:
+        os.chdir(saved_cwd)
         sys.argv, sys.path[:] = saved_argv, saved_path
+        for name in set(sys.modules) - saved_modules:  # the controller's own modules
+            if name.split(".")[0] in ("fairis_lib", "fairis_tools", "controller"):
+                del sys.modules[name]
 
 
 def _percent(value):
     return f"{value:.2f}%"
 
 
-def _summary(args, world, simulation, end, wall_time_ms):
-    lines = [
-        f"controller: {args.controller}",
-        f"world: {args.world}",
-        f"size: {world.width}x{world.height}",
+def _world_lines(args, world, the_scene):
+    if world is None:
+        imported = the_scene.root.getField("children").getCount() - 1  # all but the robot
+        return ["world: the course's empty floor (17 x 17 m)", f"imported_nodes: {imported}"]
+    if isinstance(world, maze_mapper.World):
+        return [f"world: {args.world}", f"size: {world.width}x{world.height}"]
+    return [f"world: {args.world}", f"arena: {world.name}", f"obstacles: {world.obstacles}"]
+
+
+def _distance_m(the_scene):
+    """The path the robot's body moved along, m (teleports left out)."""
+    robot = Robot.created
+    if robot is None or not hasattr(robot, "distance_m"):
+        return 0.0
+    robot._record_path(the_scene)  # the last step's move
+    return robot.distance_m
+
+
+def _summary(args, world, the_scene, end, wall_time_ms):
+    simulation = the_scene.simulation
+    x, y, _, yaw = simulation.pose
+    lines = [f"controller: {args.controller}"] + _world_lines(args, world, the_scene) + [
         f"robot: {simulation.robot_name}",
         f"seed: {args.seed}",
         f"end: {end}",
         f"steps: {simulation.steps}",
         f"sim_time_s: {simulation.time_s:.3f}",
+        f"final_pose: {x:.3f} {y:.3f} {math.degrees(yaw):.1f}",
+        f"distance_m: {_distance_m(the_scene):.3f}",
+        f"collisions: {simulation.collisions}",
     ]
-    if maze_mapper._kept is not None:
+    if maze_mapper._kept is not None and not isinstance(world, maze_mapper.World):
+        lines.append("grid: kept, not scored (the world is no maze)")
+    elif maze_mapper._kept is not None:
         grid, visited, initial = maze_mapper._kept
         result = maze_mapper.score(world, grid, visited, initial_log_odds=initial)
         shape = grid.array.shape if isinstance(grid, maze_mapper.OccupancyGrid) else getattr(grid, "shape", ())
@@ -119,32 +178,48 @@ def _summary(args, world, simulation, end, wall_time_ms):
     return "\n".join(lines)
 
 
+def _simulation(args):
+    """(the world read, or None for the empty floor; the simulation)."""
+    options = dict(robot=args.robot, seed=args.seed, noise=args.noise, max_steps=args.max_steps)
+    if args.world is None:
+        return None, _native.Simulation.empty_floor(**options)
+    start_position = int(args.start[4:]) if args.start and args.start.startswith("pos:") else None
+    world = _native.load_any_world(args.world, cell_size_m=args.cell_size, start_position=start_position,
+                                   random_start=args.start == "random", seed=args.seed)
+    for warning in world.warnings:
+        print(warning, file=sys.stderr)
+    return world, _native.Simulation(world, **options)
+
+
 def main(argv=None):
     args, controller_args = _parse(sys.argv[1:] if argv is None else argv)
     try:
-        world = maze_mapper.load_world(args.world, cell_size_m=args.cell_size)
-        for warning in world.warnings:
-            print(warning, file=sys.stderr)
-        simulation = _native.Simulation(world, robot=args.robot, seed=args.seed, noise=args.noise,
-                                        max_steps=args.max_steps)
+        world, simulation = _simulation(args)
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return EXIT_USAGE
     maze_mapper._kept = None
     simulation.make_current()
+    scene.current = scene.Scene(simulation, world_file=args.world)
+    random.seed(args.seed)
     started = time.perf_counter()
+    controller.wall_deadline = None if args.wall_limit is None else started + args.wall_limit
+    controller.wall_limit_reached = False
     try:
         end, status = _run_controller(args.controller, controller_args)
-    finally:
-        simulation.release_current()
-        Robot.created = None
-    wall_time_ms = (time.perf_counter() - started) * 1000.0
-    sys.stdout.flush()
-    try:
-        print("\n" + _summary(args, world, simulation, end, wall_time_ms))
+        wall_time_ms = (time.perf_counter() - started) * 1000.0
+        if controller.wall_limit_reached:
+            end = "wall-clock limit"
+        sys.stdout.flush()
+        print("\n" + _summary(args, world, scene.current, end, wall_time_ms))
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return status or EXIT_USAGE
+    finally:
+        simulation.release_current()
+        Robot.created = None
+        controller.wall_deadline = None
+        scene.current = None
     return status
 
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,8 @@
 #include "bindings.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
+#include "maze/arena.hpp"
+#include "maze/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
 
@@ -30,21 +33,37 @@ namespace maze_mapper_python {
 
 namespace {
 
-// A simulation of one world and one robot, owned by the runner.
+// A simulation of one world and one robot, owned by the runner: a maze, or an arena (a
+// course arena read from a file, or the course's empty floor that a supervisor fills).
 class PySimulation {
  public:
   // max_steps: basic time steps before Robot::step returns -1 (0: no limit).
   PySimulation(const maze::World &world, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
                std::int64_t max_steps)
       : truth_(world.maze), profile_(app::resolve_robot(robot)) {
-    if (max_steps < 0) throw common::InputError("--max-steps must be at least 1 (got " + std::to_string(max_steps) + ")");
-    maze::sim::SimulationOptions options;
-    options.seed = seed;
-    options.noise = noise;
-    options.time_limit_s = static_cast<double>(max_steps) * options.basic_time_step_ms / 1000.0;
-    options.validate();
-    simulation_ = std::make_unique<webots::embedded::Simulation>(truth_, profile_, options);
+    simulation_ = std::make_unique<webots::embedded::Simulation>(*truth_, profile_, options(seed, noise, max_steps));
   }
+  PySimulation(const maze::Arena &arena, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
+               std::int64_t max_steps)
+      : profile_(app::resolve_robot(robot)) {
+    simulation_ = std::make_unique<webots::embedded::Simulation>(arena, profile_, options(seed, noise, max_steps));
+  }
+
+  // The course's floor, kCourseFloorSide_m square centred on the origin, with nothing on it;
+  // the robot at the origin facing north (where a supervisor's load_environment begins).
+  static maze::Arena empty_floor() {
+    maze::Arena arena;
+    arena.name = "the course's empty floor";
+    const double half = maze::kCourseFloorSide_m / 2.0;
+    arena.x_min_m = -half;
+    arena.x_max_m = half;
+    arena.y_min_m = -half;
+    arena.y_max_m = half;
+    return arena;
+  }
+
+  webots::embedded::Simulation &simulation() { return *simulation_; }
+  const webots::embedded::Simulation &simulation() const { return *simulation_; }
 
   void make_current() {
     if (!current_) current_ = std::make_unique<webots::embedded::CurrentSimulation>(*simulation_);
@@ -71,7 +90,17 @@ class PySimulation {
   }
 
  private:
-  maze::Maze truth_;
+  static maze::sim::SimulationOptions options(std::uint64_t seed, std::optional<double> noise, std::int64_t max_steps) {
+    if (max_steps < 0) throw common::InputError("--max-steps must be at least 1 (got " + std::to_string(max_steps) + ")");
+    maze::sim::SimulationOptions o;
+    o.seed = seed;
+    o.noise = noise;
+    o.time_limit_s = static_cast<double>(max_steps) * o.basic_time_step_ms / 1000.0;
+    o.validate();
+    return o;
+  }
+
+  std::optional<maze::Maze> truth_;  // a maze's (the simulator keeps a reference)
   maze::sim::RobotProfile profile_;
   std::unique_ptr<webots::embedded::Simulation> simulation_;
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
@@ -208,12 +237,98 @@ void bind_devices(py::module_ &m) {
 void bind_simulator(py::module_ &m) {
   bind_devices(m);
 
+  py::class_<maze::ArenaWorld>(m, "ArenaWorld",
+                               "An arena read from a file (a room file, or the course's XML read as one): a "
+                               "boundary and solids in metres, on no lattice.")
+      .def_property_readonly("file", [](const maze::ArenaWorld &w) { return w.file; })
+      .def_property_readonly("warnings", [](const maze::ArenaWorld &w) { return w.warnings; })
+      .def_property_readonly("name", [](const maze::ArenaWorld &w) { return w.arena.name; })
+      .def_property_readonly("obstacles", [](const maze::ArenaWorld &w) { return w.arena.obstacles.size(); })
+      .def_property_readonly("boundary",
+                             [](const maze::ArenaWorld &w) {
+                               return py::make_tuple(w.arena.x_min_m, w.arena.x_max_m, w.arena.y_min_m,
+                                                     w.arena.y_max_m);
+                             })
+      .def_property_readonly("starts", [](const maze::ArenaWorld &w) {
+        std::vector<std::tuple<double, double, double>> starts;
+        for (const maze::ArenaPose &p : w.arena.starts) starts.emplace_back(p.x_m, p.y_m, p.yaw_rad);
+        return starts;
+      });
+  m.def(
+      "load_any_world",
+      [](const std::string &path, std::optional<double> cell_size_m, std::optional<int> start_position,
+         bool random_start, std::uint64_t seed) -> py::object {
+        maze::WorldOverrides overrides;
+        overrides.cell_size_m = cell_size_m;
+        overrides.start_position = start_position;
+        overrides.random_start = random_start;
+        overrides.random_start_seed = seed;
+        maze::AnyWorld world = maze::load_any_world(path, overrides, {});
+        if (maze::is_arena(world)) return py::cast(std::get<maze::ArenaWorld>(std::move(world)));
+        return py::cast(std::get<maze::World>(std::move(world)));
+      },
+      py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(), py::arg("start_position") = py::none(),
+      py::arg("random_start") = false, py::arg("seed") = common::kDefaultSeed,
+      "A World (a maze) or an ArenaWorld (an arena), as `maze_mapper run` reads the file; start_position (1-based) "
+      "or random_start (drawn with seed) choose a maze's start among its start positions (--start pos:N, random).");
+
   py::class_<PySimulation>(m, "Simulation",
                            "The embedded simulator: a world and one robot (a built-in profile or a FILE.json). "
                            "maze_mapper.run builds one; a controller only sees its Robot.")
       .def(py::init<const maze::World &, const std::string &, std::uint64_t, std::optional<double>, std::int64_t>(),
            py::arg("world"), py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
            py::arg("noise") = py::none(), py::arg("max_steps") = 0)
+      .def(py::init([](const maze::ArenaWorld &world, const std::string &robot, std::uint64_t seed,
+                       std::optional<double> noise, std::int64_t max_steps) {
+             return std::make_unique<PySimulation>(world.arena, robot, seed, noise, max_steps);
+           }),
+           py::arg("arena"), py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
+           py::arg("noise") = py::none(), py::arg("max_steps") = 0)
+      .def_static(
+          "empty_floor",
+          [](const std::string &robot, std::uint64_t seed, std::optional<double> noise, std::int64_t max_steps) {
+            return std::make_unique<PySimulation>(PySimulation::empty_floor(), robot, seed, noise, max_steps);
+          },
+          py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
+          py::arg("noise") = py::none(), py::arg("max_steps") = 0,
+          "The course's empty floor (17 x 17 m centred on the origin), the robot at the origin facing north: "
+          "the world a supervisor fills.")
+      .def_property_readonly("in_arena", [](const PySimulation &s) { return s.simulation().in_arena(); })
+      .def(
+          "add_box",
+          [](PySimulation &s, double cx, double cy, double half_length, double half_width, double angle) {
+            s.simulation().add_obstacle(maze::Obstacle::oriented(cx, cy, half_length, half_width, angle));
+          },
+          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("half_length_m"), py::arg("half_width_m"),
+          py::arg("angle_rad"), "A solid box (its long axis at angle_rad from east) added to an arena's world.")
+      .def(
+          "add_cylinder",
+          [](PySimulation &s, double cx, double cy, double radius) {
+            s.simulation().add_disc({cx, cy, radius});
+          },
+          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("radius_m"),
+          "A solid upright cylinder added to an arena's world.")
+      .def(
+          "teleport",
+          [](PySimulation &s, double x, double y, double z, double yaw) {
+            s.simulation().teleport({x, y, yaw}, z);
+          },
+          py::arg("x_m"), py::arg("y_m"), py::arg("z_m"), py::arg("yaw_rad"))
+      .def("reset_world", [](PySimulation &s) { s.simulation().reset_world(); })
+      .def_property_readonly("collisions", [](const PySimulation &s) { return s.simulation().collisions(); },
+                             "Steps in which the body met a solid after a step in which it met none.")
+      .def_property_readonly("pose",
+                             [](const PySimulation &s) {
+                               const maze::sim::Pose &p = s.simulation().pose();
+                               return py::make_tuple(p.x_m, p.y_m, s.simulation().height_m(), p.yaw_rad);
+                             },
+                             "The robot's true (x, y, z, yaw): the supervisor's view.")
+      .def(
+          "cast", [](const PySimulation &s, double x, double y, double angle, double max_range) {
+            return s.simulation().cast(x, y, angle, max_range);
+          },
+          py::arg("x_m"), py::arg("y_m"), py::arg("angle_rad"), py::arg("max_range_m"),
+          "The distance to the first solid along the ray, inf beyond max_range_m.")
       .def(
           "make_current",
           [](py::object self) {

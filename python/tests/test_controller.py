@@ -42,7 +42,7 @@ def test_a_webots_controller_runs_unchanged(controller_file):
     status, out, err = run_controller(controller_file(DEVICES), "--world", "worlds/lab4x4.txt")
     assert status == 0, err
     lines = out.splitlines()
-    assert "names hambot 7 lidar" in lines
+    assert "names hambot 9 lidar" in lines  # with the course HamBot's camera and display
     assert "lidar 360 1 6.283185" in lines
     assert "start 0.5 0.5 90" in lines
     assert "moved True True 0.672" in lines
@@ -53,10 +53,10 @@ def test_a_webots_controller_runs_unchanged(controller_file):
 
 
 def test_a_missing_device_gets_webots_message_and_a_non_zero_exit(controller_file):
-    source = 'from controller import Robot\nrobot = Robot()\ncam = robot.getDevice("camera")\ncam.enable(32)\n'
+    source = 'from controller import Robot\nrobot = Robot()\nspeaker = robot.getDevice("speaker")\nspeaker.enable(32)\n'
     status, out, err = run_controller(controller_file(source), "--world", "worlds/lab4x4.txt")
     assert status == 1
-    assert err.splitlines()[0] == 'Device "camera" was not found on robot "hambot"'
+    assert err.splitlines()[0] == 'Device "speaker" was not found on robot "hambot"'
     assert "AttributeError: 'NoneType' object has no attribute 'enable'" in err
     assert summary_of(out)["end"] == "controller failed"
 
@@ -72,11 +72,12 @@ def test_a_device_of_another_robot(controller_file):
 
 
 def test_what_webots_has_and_we_do_not_is_named(controller_file):
-    status, _, err = run_controller(controller_file("from controller import Supervisor\n"),
+    status, _, err = run_controller(controller_file("from controller import Keyboard\n"),
                                     "--world", "worlds/lab4x4.txt")
     assert status == 1
-    assert ("ImportError: maze_mapper's controller module has no Supervisor: the embedded simulator offers "
-            "Robot, Lidar, Motor, PositionSensor, InertialUnit, GPS, DistanceSensor, TouchSensor") in err
+    assert ("ImportError: maze_mapper's controller module has no Keyboard: the embedded simulator offers "
+            "Robot, Supervisor, Lidar, Motor, PositionSensor, InertialUnit, GPS, DistanceSensor, TouchSensor, "
+            "Camera, Display") in err
 
 
 def test_step_returns_minus_one_when_the_simulation_ends(controller_file):
@@ -108,7 +109,16 @@ def test_only_one_robot(controller_file):
     assert err == "Error: only one Robot instance can be created per controller process.\n"
 
 
+ARENA = '''<world>
+  <wall x1="-1" y1="-1" x2="1" y2="-1"/><wall x1="1" y1="-1" x2="1" y2="1"/>
+  <wall x1="1" y1="1" x2="-1" y2="1"/><wall x1="-1" y1="1" x2="-1" y2="-1"/>
+  <startPositions><pos x="0.25" y="0" theta="1.5707963267948966"/></startPositions>
+</world>
+'''
+
+
 def test_the_course_robots_helpers(controller_file):
+    controller_file(ARENA, "Lab1_Task1.xml")
     source = '''
 from fairis_lib.robot_lib.hambot import HamBot
 robot = HamBot()
@@ -122,15 +132,16 @@ for _ in range(10):
 print("turned", robot.get_compass_reading() > 90, robot.get_left_motor_encoder_reading() < 0)
 robot.stop()
 print("ranges", len(robot.get_lidar_range_image()), robot.max_motor_velocity, robot.wheel_radius, robot.axel_length)
+print("walls all round", max(robot.get_lidar_range_image()) < 1.6)
 '''
-    status, out, err = run_controller(controller_file(source), "--world", "worlds/lab4x4.txt")
+    status, out, err = run_controller(controller_file(source), "--noise", "0")
     assert status == 0, err
     lines = out.splitlines()
-    assert "compass 90 [0.0, 0.0]" in lines
+    assert "compass 90 [0.0, 0.0]" in lines  # the file's start, read from the controller's folder
     assert "turned True True" in lines
     assert "ranges 360 18.0 0.045 0.184" in lines
-    assert err == ("warning: load_environment('Lab1_Task1.xml') changes nothing: the maze is the runner's --world\n"
-                   "motor velocity -30 is beyond the maximum: set to -18.0\n")
+    assert "walls all round True" in lines  # the file's walls as solids: the farthest corner is 1.6 m away
+    assert err == "motor velocity -30 is beyond the maximum: set to -18.0\n"
 
 
 def test_bad_runner_input_is_one_error_line(controller_file, tmp_path):

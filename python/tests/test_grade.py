@@ -46,3 +46,30 @@ def test_bad_usage():
     assert status == 2 and out == "" and err.startswith("error: cannot read worlds/no_such.txt")
     status, out, err = grade("worlds/lab4x4.txt", "worlds")
     assert status == 2 and err == "error: no .npz or .npy files in worlds\n"
+
+
+def test_a_class_of_controllers_is_one_row_a_student_world_and_start(tmp_path):
+    import os
+    course = os.path.join(os.path.dirname(os.path.abspath(__file__)), "course_shape")
+    drive = os.path.join(course, "WebotsSim", "controllers", "drive", "drive.py")
+    source = open(drive).read().replace("'../../worlds/corners.xml'",
+                                        repr(os.path.join(course, "WebotsSim", "worlds", "corners.xml")))
+    (tmp_path / "class" / "alice").mkdir(parents=True)
+    (tmp_path / "class" / "alice" / "lab.py").write_text(source)
+    (tmp_path / "class" / "bob").mkdir()
+    (tmp_path / "class" / "bob" / "bob.py").write_text("from controller import Robot\nraise RuntimeError('lost')\n")
+    (tmp_path / "class" / "bob" / "helpers.py").write_text("")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.environ.get("PYTHONPATH", ""), course]))
+    done = subprocess.run([sys.executable, "-m", "maze_mapper.grade", "--controllers", str(tmp_path / "class"),
+                           "--starts", "2", "--csv", str(tmp_path / "runs.csv")],
+                          cwd=REPO, capture_output=True, text=True, timeout=300, env=env)
+    assert done.returncode == 0, done.stderr
+    rows = list(csv.DictReader(open(tmp_path / "runs.csv")))
+    assert [(r["student"], r["world"], r["start"], r["exit"]) for r in rows] == [
+        ("alice", "own", "1", "0"), ("alice", "own", "2", "0"), ("bob", "own", "1", "1"), ("bob", "own", "2", "1")]
+    assert rows[0]["end"] == "controller finished" and 1.49 < float(rows[0]["distance_m"]) < 1.52
+    assert rows[0]["collisions"] == "0"
+    assert rows[2]["error"] == "RuntimeError: lost"
+    lines = done.stdout.splitlines()
+    assert lines[0].startswith("alice: 2/2 runs finished, mean 2.0 s simulated")
+    assert lines[1] == "bob: 0/2 runs finished; first failure (own, start 1): RuntimeError: lost"

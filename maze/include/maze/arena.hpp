@@ -79,6 +79,14 @@ struct Obstacle {
   std::array<double, 5> centre_line() const;
 };
 
+// An upright cylinder standing on the floor, radius_m round its centre (the course's
+// landmarks, placed by a supervisor): as solid as an obstacle, and on no lattice either.
+struct ArenaDisc {
+  double centre_x_m = 0.0;
+  double centre_y_m = 0.0;
+  double radius_m = 0.0;
+};
+
 struct Arena {
   std::string name;    // from the file ("name ..."), or its file name
   std::string source;  // the file it was read from ("" when built in code)
@@ -88,6 +96,7 @@ struct Arena {
   double y_max_m = 0.0;
   common::SourceLocation boundary_where;
   std::vector<Obstacle> obstacles;
+  std::vector<ArenaDisc> discs;  // set in code only (a supervisor's landmarks): no file states them
   std::vector<ArenaPose> starts;  // the first is the start; may be empty (then the caller's)
   std::vector<common::SourceLocation> start_where;  // one per start
   std::vector<ArenaPoint> goals;

@@ -72,16 +72,22 @@ ArenaGeometry::ArenaGeometry(const Arena &arena)
     solids_.push_back({o.centre_x_m, o.centre_y_m, std::cos(o.angle_rad), std::sin(o.angle_rad), o.half_length_m,
                        o.half_width_m, b[0], b[1], b[2], b[3], o.axis_aligned()});
   }
-  // Two passes: count each bucket's obstacles, then fill (compressed rows).
+  for (const ArenaDisc &d : arena.discs) {
+    const double r = d.radius_m;
+    solids_.push_back({d.centre_x_m, d.centre_y_m, 1.0, 0.0, 0.0, 0.0, d.centre_x_m - r, d.centre_y_m - r,
+                       d.centre_x_m + r, d.centre_y_m + r, false, r, true});
+  }
+  // Two passes: count each bucket's solids, then fill (compressed rows). A disc is listed in
+  // every bucket its bounding box meets (a test too many at worst).
   std::vector<std::vector<std::uint32_t>> lists(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
-  for (std::size_t k = 0; k < arena.obstacles.size(); ++k) {
+  for (std::size_t k = 0; k < solids_.size(); ++k) {
     const Solid &sd = solids_[k];
     if (sd.x1 < x_min_m_ || sd.x0 > x_max_m_ || sd.y1 < y_min_m_ || sd.y0 > y_max_m_) continue;
     for (int by = bucket_of_y(sd.y0); by <= bucket_of_y(sd.y1); ++by) {
       for (int bx = bucket_of_x(sd.x0); bx <= bucket_of_x(sd.x1); ++bx) {
         const double x0 = x_min_m_ + bx * bucket_m_;
         const double y0 = y_min_m_ + by * bucket_m_;
-        if (touches(arena.obstacles[k], x0, y0, x0 + bucket_m_, y0 + bucket_m_)) {
+        if (sd.disc || touches(arena.obstacles[k], x0, y0, x0 + bucket_m_, y0 + bucket_m_)) {
           lists[bucket_index(bx, by)].push_back(static_cast<std::uint32_t>(k));
         }
       }
@@ -111,6 +117,10 @@ bool ArenaGeometry::inside_solid(double x_m, double y_m) const {
   const std::size_t b = bucket_index(bucket_of_x(x_m), bucket_of_y(y_m));
   for (std::uint32_t i = first_[b]; i < first_[b + 1]; ++i) {
     const Solid &k = solids_[items_[i]];
+    if (k.disc) {
+      if (std::hypot(x_m - k.cx, y_m - k.cy) <= k.r) return true;
+      continue;
+    }
     if (k.aligned) {
       if (x_m >= k.x0 && x_m <= k.x1 && y_m >= k.y0 && y_m <= k.y1) return true;
       continue;
@@ -126,8 +136,29 @@ ArenaGeometry::CastOrigin ArenaGeometry::cast_origin(double x_m, double y_m) con
   return {x_m, y_m, bucket_of_x(x_m), bucket_of_y(y_m), inside_bounds(x_m, y_m)};
 }
 
+double ArenaGeometry::disc_entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx,
+                                 double &ny) {
+  const double px = ox - k.cx;
+  const double py = oy - k.cy;
+  const double c = px * px + py * py - k.r * k.r;
+  if (c <= 0.0) {  // from inside or on the surface: 0, the normal away from the centre
+    const double d = std::hypot(px, py);
+    nx = d > 0.0 ? px / d : -dx;
+    ny = d > 0.0 ? py / d : -dy;
+    return 0.0;
+  }
+  const double b = px * dx + py * dy;
+  const double discriminant = b * b - c;
+  if (b > 0.0 || discriminant < 0.0) return kInfinity;
+  const double t = -b - std::sqrt(discriminant);
+  nx = (px + t * dx) / k.r;
+  ny = (py + t * dy) / k.r;
+  return t;
+}
+
 double ArenaGeometry::entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx,
                             double &ny) const {
+  if (k.disc) return disc_entry(k, ox, oy, dx, dy, nx, ny);
   double t_in = 0.0;
   double t_out = kInfinity;
   bool first_axis = false;
@@ -288,6 +319,15 @@ bool ArenaGeometry::push_out(double &x_m, double &y_m, double radius_m) const {
       const Solid &k = solids_[index];
       const double px = x_m - k.cx;
       const double py = y_m - k.cy;
+      if (k.disc) {
+        const double d = std::hypot(px, py);
+        const double reach = radius_m + k.r;
+        if (d >= reach - kSlop_m) continue;
+        x_m = d > 0.0 ? k.cx + px / d * reach : k.cx + reach;
+        y_m = d > 0.0 ? k.cy + py / d * reach : k.cy;
+        moved_this_pass = true;
+        continue;
+      }
       const double u = k.aligned ? px : k.c * px + k.s * py;
       const double v = k.aligned ? py : -k.s * px + k.c * py;
       const double hu = k.aligned ? (k.x1 - k.x0) / 2.0 : k.hl;
@@ -361,7 +401,11 @@ std::vector<Contact> ArenaGeometry::contacts(double x_m, double y_m, double reac
     const Solid &k = solids_[index];
     double qx = 0.0;
     double qy = 0.0;
-    if (k.aligned) {
+    if (k.disc) {
+      const double d = std::hypot(x_m - k.cx, y_m - k.cy);
+      qx = d > k.r ? k.cx + (x_m - k.cx) / d * k.r : x_m;
+      qy = d > k.r ? k.cy + (y_m - k.cy) / d * k.r : y_m;
+    } else if (k.aligned) {
       qx = std::clamp(x_m, k.x0, k.x1);
       qy = std::clamp(y_m, k.y0, k.y1);
     } else {

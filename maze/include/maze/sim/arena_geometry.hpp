@@ -2,7 +2,8 @@
 // An arena's solids for ray casting and collisions: the simulator's geometry for arenas, with
 // WallGrid's queries (wall_grid.hpp) so the same sensor and motion code runs on both.
 //
-// The solids are the arena's obstacles (closed oriented rectangles) and its boundary, walled
+// The solids are the arena's obstacles (closed oriented rectangles), its discs (closed
+// circles: upright cylinders) and its boundary, walled
 // all round: outside the boundary is solid, as the walls of a Webots RectangleArena make it.
 // A uniform grid of buckets covers the boundary, each listing the obstacles that touch it
 // (built once, O(obstacles x the buckets each covers)):
@@ -79,7 +80,11 @@ class ArenaGeometry {
     double cx, cy, c, s, hl, hw;        // centre, axis (cos, sin), half length and width
     double x0, y0, x1, y1;              // bounding box (exact for axis-aligned ones)
     bool aligned;
+    double r = 0.0;                     // a disc's radius (a disc: hl = hw = 0, not aligned)
+    bool disc = false;
   };
+  // A disc's entry distance along the unit ray, and the normal there (entry's, for discs).
+  static double disc_entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx, double &ny);
   // The entry distance of the ray into solid k, or +infinity; the entered face's normal.
   double entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx, double &ny) const;
   // The obstacle indices listed in the buckets meeting [x0, x1] x [y0, y1], each once.

@@ -109,6 +109,28 @@ class Simulation {
   std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
   // The next Robot::step returns -1 (as when Webots quits).
   void request_stop() { stop_requested_ = true; }
+  // Collisions so far: the steps in which the body met a solid (was held out of it) after a
+  // step in which it met none; pressing on against a wall is one collision.
+  std::int64_t collisions() const { return collisions_; }
+
+  // ---- a supervisor's edits (Webots' Supervisor API; the composition root's, never a
+  // robot-side controller's) ----
+  // Adds a solid to an arena's world, at once seen by the sensors and met by the body (a body
+  // it overlaps is pushed out as it next moves). Throws common::InputError on a maze's world
+  // (its walls are on the lattice), or for a solid with a non-finite or negative size.
+  void add_obstacle(const maze::Obstacle &obstacle);
+  void add_disc(const maze::ArenaDisc &disc);
+  // Moves the robot to pose, its origin z_m above the floor (Webots' translation and rotation
+  // fields set by a supervisor): the wheels keep their speeds and angles; every reading is
+  // taken afresh at the new pose. GPS z reads z_m from then on.
+  void teleport(const maze::sim::Pose &pose, double z_m);
+  double height_m() const { return height_m_; }
+  // Webots' simulationReset, as far as this world goes: the solids added since the start are
+  // gone, the robot stands at its start pose with its wheels at rest; time runs on.
+  void reset_world();
+  // The distance from (x, y) along angle_rad to the first solid, +infinity beyond max_range_m
+  // (what a supervisor checks a line of sight with).
+  double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
 
   // ---- plumbing for the webots:: device classes (maze/src/webots/) ----
   int step(int duration_ms);
@@ -200,6 +222,10 @@ class Simulation {
   maze::sim::SimulationOptions options_;
   std::optional<maze::sim::WallGrid> walls_;        // a maze's
   std::optional<maze::sim::ArenaGeometry> arena_;   // or an arena's
+  std::optional<maze::Arena> arena_world_;          // the arena arena_ is built from
+  std::optional<maze::Arena> initial_arena_;        // and as it was built first
+  maze::sim::Pose initial_pose_;
+  double height_m_ = 0.0;                           // the robot's origin above the floor
   maze::sim::Pose pose_;
   // Where the body's centre touches no wall (WallGrid::free_centres), computed when the
   // body last left the previous box: inside it, a physics substep needs no push_out. The
@@ -214,6 +240,9 @@ class Simulation {
   std::int64_t time_limit_ms_ = 0; // ms (0: none), computed once from the options
   std::int64_t lidar_beams_cast_ = 0;
   bool stop_requested_ = false;
+  bool touching_this_step_ = false;  // the body was held out of a solid during this step
+  bool touching_last_step_ = false;
+  std::int64_t collisions_ = 0;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
   std::vector<std::optional<maze::sim::LidarSweep>> lidar_sweeps_;  // likewise; rotating ones only

@@ -1,0 +1,377 @@
+"""The scene tree a Webots supervisor sees, over the embedded simulator: the root's children,
+the robot's node with its pose fields, and the nodes a supervisor imports as the course's
+environment writes them (`Obstacle` and `Landmark`, with DEF names). maze_mapper.run makes one
+Scene a run (`scene.current`); controller.Supervisor and the camera read it.
+
+An imported node becomes a solid of the simulated world at once, seen by the lidar and the
+camera and met by the body:
+
+    Obstacle { translation X Y Z rotation 0 0 1 A size SX SY SZ }
+        a box SX across (its local x) and SY along (its local y) turned A about the vertical,
+        centred on (X, Y); its height SZ only matters to no sensor here (walls stand taller
+        than every sensor)
+    Landmark { translation X Y Z color R G B recognitionColors [R G B] size H RADIUS _ }
+        an upright cylinder RADIUS round (X, Y), H tall (the course's Landmark PROTO reads
+        size.x as the height and size.y as the radius), recognised by the camera when
+        recognitionColors is not empty
+
+Any other node type, a field these types lack, or a rotation about another axis than the
+vertical raises SceneError naming it. With the runner's --world the world is that file: the
+nodes a controller imports are kept in the tree (getFromDef finds them) but add no solid, and
+the runner says so once.
+"""
+
+import math
+import re
+import sys
+
+
+class SceneError(ValueError):
+    """A node or field the embedded simulator cannot model; the message names it."""
+
+
+# The field types of the nodes a supervisor may import, and their defaults (the course's
+# PROTO files: WorldObjects/Obstacle.proto, WorldObjects/Landmark.proto).
+_NODE_FIELDS = {
+    "Obstacle": {
+        "translation": ("SFVec3f", [0.0, 0.0, 0.05]),
+        "rotation": ("SFRotation", [0.0, 0.0, 1.0, 0.0]),
+        "size": ("SFVec3f", [0.012, 0.18, 0.1]),
+        "name": ("SFString", "Obstacle"),
+        "contactMaterial": ("SFString", "default"),
+        "enableBoundingObject": ("SFBool", True),
+        "castShadows": ("SFBool", True),
+    },
+    "Landmark": {
+        "translation": ("SFVec3f", [0.0, 0.0, 0.75]),
+        "rotation": ("SFRotation", [0.0, 0.0, 1.0, 0.0]),
+        "size": ("SFVec3f", [1.5, 0.25, 0.249]),
+        "name": ("SFString", "Landmark"),
+        "color": ("SFColor", [1.0, 0.0, 0.0]),
+        "enableBoundingObject": ("SFBool", True),
+        "castShadows": ("SFBool", True),
+        "recognitionColors": ("MFColor", []),
+    },
+}
+_WIDTHS = {"SFVec3f": 3, "SFColor": 3, "SFRotation": 4}
+
+_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]|[^\s\[\]{},]+')
+
+
+def _tokens(text):
+    return _TOKEN.findall(text.replace(",", " "))
+
+
+def _number(token, what):
+    try:
+        value = float(token)
+    except ValueError:
+        raise SceneError(f"{what}: expected a number, got {token!r}") from None
+    if not math.isfinite(value):
+        raise SceneError(f"{what}: {token} is not a finite number")
+    return value
+
+
+def _read_value(tokens, at, kind, what):
+    """Reads one value of a field type from tokens[at:]; returns (value, next index)."""
+    if kind in _WIDTHS:
+        n = _WIDTHS[kind]
+        if at + n > len(tokens):
+            raise SceneError(f"{what}: expected {n} numbers")
+        return [_number(t, what) for t in tokens[at:at + n]], at + n
+    if kind == "SFString":
+        token = tokens[at] if at < len(tokens) else ""
+        if not (len(token) >= 2 and token[0] == token[-1] == '"'):
+            raise SceneError(f"{what}: expected a quoted string, got {token!r}")
+        return token[1:-1], at + 1
+    if kind == "SFBool":
+        token = tokens[at] if at < len(tokens) else ""
+        if token not in ("TRUE", "FALSE"):
+            raise SceneError(f"{what}: expected TRUE or FALSE, got {token!r}")
+        return token == "TRUE", at + 1
+    # MFColor: [r g b, r g b ...] or a single colour
+    if at < len(tokens) and tokens[at] == "[":
+        end = tokens.index("]", at) if "]" in tokens[at:] else -1
+        if end < 0:
+            raise SceneError(f"{what}: a '[' without its ']'")
+        numbers = [_number(t, what) for t in tokens[at + 1:end]]
+        if len(numbers) % 3:
+            raise SceneError(f"{what}: colours come in threes (got {len(numbers)} numbers)")
+        return [numbers[i:i + 3] for i in range(0, len(numbers), 3)], end + 1
+    colour, at = _read_value(tokens, at, "SFColor", what)
+    return [colour], at
+
+
+def parse_node(text):
+    """(def_name or '', type name, {field: value}) of one node in VRML syntax; SceneError for
+    a node type other than Obstacle and Landmark or a field it lacks."""
+    tokens = _tokens(text)
+    at = 0
+    def_name = ""
+    if tokens[:1] == ["DEF"]:
+        if len(tokens) < 2:
+            raise SceneError("DEF without a name")
+        def_name, at = tokens[1], 2
+    if at >= len(tokens):
+        raise SceneError("no node in the string")
+    type_name = tokens[at]
+    if type_name not in _NODE_FIELDS:
+        known = " and ".join(_NODE_FIELDS)
+        raise SceneError(f"node type {type_name} is not modelled by the embedded simulator (it builds {known} nodes)")
+    schema = _NODE_FIELDS[type_name]
+    if tokens[at + 1:at + 2] != ["{"]:
+        raise SceneError(f"{type_name}: expected '{{' after the type name")
+    at += 2
+    fields = {name: (list(default) if isinstance(default, list) else default)
+              for name, (_, default) in schema.items()}
+    while at < len(tokens) and tokens[at] != "}":
+        name = tokens[at]
+        if name not in schema:
+            raise SceneError(f"{type_name} has no field {name} here (its fields: {', '.join(schema)})")
+        fields[name], at = _read_value(tokens, at + 1, schema[name][0], f"{type_name}.{name}")
+    if at >= len(tokens):
+        raise SceneError(f"{type_name}: '{{' without its '}}'")
+    if at + 1 != len(tokens):
+        raise SceneError(f"text after the {type_name} node: {' '.join(tokens[at + 1:])}")
+    return def_name, type_name, fields
+
+
+def yaw_of_rotation(rotation, what):
+    """The angle about the vertical of an axis-angle rotation [x, y, z, angle]; SceneError for
+    a rotation that tips the node over (the simulator is flat)."""
+    x, y, z, angle = rotation
+    norm = math.sqrt(x * x + y * y + z * z)
+    if angle == 0.0 or norm == 0.0:
+        return 0.0
+    if abs(x) > 1e-9 * norm or abs(y) > 1e-9 * norm:
+        raise SceneError(f"{what}: a rotation about the axis ({x:g}, {y:g}, {z:g}) is not modelled: "
+                         "only turns about the vertical (0 0 1)")
+    return angle if z > 0 else -angle
+
+
+class Field:
+    """A field of a node (Webots' Field): its value read and, for the robot's translation and
+    rotation, set (a teleport)."""
+
+    def __init__(self, node, name, kind):
+        self._node = node
+        self._name = name
+        self._kind = kind
+
+    def getName(self):
+        return self._name
+
+    def getTypeName(self):
+        return self._kind
+
+    def getCount(self):
+        return len(self._node._values[self._name]) if self._kind.startswith("MF") else -1
+
+    def _get(self, kind):
+        if self._kind != kind:
+            raise SceneError(f"the field {self._name} is an {self._kind}, not an {kind}")
+        return self._node._value(self._name)
+
+    def getSFVec3f(self):
+        return list(self._get("SFVec3f"))
+
+    def getSFRotation(self):
+        return list(self._get("SFRotation"))
+
+    def getSFColor(self):
+        return list(self._get("SFColor"))
+
+    def getSFString(self):
+        return self._get("SFString")
+
+    def getSFBool(self):
+        return self._get("SFBool")
+
+    def getMFColor(self, index):
+        return list(self._get("MFColor")[index])
+
+    def getMFNode(self, index):
+        return self._get("MFNode")[index]
+
+    def setSFVec3f(self, values):
+        self._node._set(self._name, "SFVec3f", [float(v) for v in values])
+
+    def setSFRotation(self, values):
+        self._node._set(self._name, "SFRotation", [float(v) for v in values])
+
+    def importMFNodeFromString(self, position, node_string):
+        if self._kind != "MFNode":
+            raise SceneError(f"the field {self._name} is an {self._kind}, not an MFNode")
+        self._node._scene.import_node(self._node, position, node_string)
+
+
+class Node:
+    """A node of the scene tree (Webots' Node)."""
+
+    def __init__(self, scene, node_id, type_name, base_type, def_name, values, kinds):
+        self._scene = scene
+        self._id = node_id
+        self._type = type_name
+        self._base = base_type
+        self._def = def_name
+        self._values = values
+        self._kinds = kinds
+
+    def getId(self):
+        return self._id
+
+    def getDef(self):
+        return self._def
+
+    def getTypeName(self):
+        return self._type
+
+    def getBaseTypeName(self):
+        return self._base
+
+    def getField(self, name):
+        if name not in self._kinds:
+            print(f'Error: Node.getField(): field "{name}" not found in {self._type} node', file=sys.stderr)
+            return None
+        return Field(self, name, self._kinds[name])
+
+    def _value(self, name):
+        return self._values[name]
+
+    def _set(self, name, kind, value):
+        if self._kinds.get(name) != kind:
+            raise SceneError(f"the field {name} is an {self._kinds.get(name)}, not an {kind}")
+        raise SceneError(f"setting {self._type}.{name} after import is not modelled: the solid stays where it was built")
+
+    def getPosition(self):
+        return list(self._values["translation"])
+
+    def getOrientation(self):
+        yaw = yaw_of_rotation(self._values["rotation"], f"{self._type}.rotation")
+        c, s = math.cos(yaw), math.sin(yaw)
+        return [c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0]
+
+    def __repr__(self):
+        return f"<Node {self._def or self._type} id={self._id}>"
+
+
+class RobotNode(Node):
+    """The robot's own node (getSelf()): translation and rotation read the simulated pose, and
+    setting them teleports the robot."""
+
+    def _value(self, name):
+        x, y, z, yaw = self._scene.simulation.pose
+        if name == "translation":
+            return [x, y, z]
+        if name == "rotation":
+            return [0.0, 0.0, 1.0, yaw]
+        return self._values[name]
+
+    def _set(self, name, kind, value):
+        if self._kinds.get(name) != kind or name not in ("translation", "rotation"):
+            return super()._set(name, kind, value)
+        x, y, z, yaw = self._scene.simulation.pose
+        if name == "translation":
+            x, y, z = value
+        else:
+            yaw = yaw_of_rotation(value, "the robot's rotation")
+        self._scene.simulation.teleport(x, y, z, yaw)
+        self._scene.teleported = True
+
+    def getPosition(self):
+        return self._value("translation")
+
+    def getOrientation(self):
+        yaw = self._scene.simulation.pose[3]
+        c, s = math.cos(yaw), math.sin(yaw)
+        return [c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0]
+
+
+class Landmark:
+    """A landmark cylinder as the camera sees it (world frame, metres)."""
+
+    __slots__ = ("node", "x", "y", "z", "radius", "height", "yaw", "colors")
+
+    def __init__(self, node, x, y, z, radius, height, yaw, colors):
+        self.node, self.x, self.y, self.z = node, x, y, z
+        self.radius, self.height, self.yaw, self.colors = radius, height, yaw, colors
+
+
+class Scene:
+    """The world of one run: the simulation (maze_mapper._native.Simulation), the root's
+    children, DEF names, and the landmarks the camera can recognise. world_file: the runner's
+    --world (imports then add no solid), or None for the course's empty floor."""
+
+    def __init__(self, simulation, robot_type="HamBot", world_file=None):
+        self.simulation = simulation
+        self.world_file = world_file
+        self.landmarks = []
+        self.teleported = False  # since the last step (the path length leaves teleports out)
+        self._warned = False
+        self._next_id = 1
+        self.root = Node(self, 0, "Group", "Group", "", {"children": []}, {"children": "MFNode"})
+        self.robot = RobotNode(self, self._new_id(), robot_type, "Robot", "",
+                               {"name": robot_type}, {"translation": "SFVec3f", "rotation": "SFRotation",
+                                                      "name": "SFString"})
+        self.root._values["children"].append(self.robot)
+        self._initial_children = 1
+
+    def _new_id(self):
+        node_id = self._next_id
+        self._next_id += 1
+        return node_id
+
+    def from_def(self, name):
+        for node in self.root._values["children"]:
+            if node._def == name:
+                return node
+        return None
+
+    def from_id(self, node_id):
+        if node_id == 0:
+            return self.root
+        for node in self.root._values["children"]:
+            if node._id == node_id:
+                return node
+        return None
+
+    def import_node(self, parent, position, node_string):
+        if parent is not self.root:
+            raise SceneError(f"importing into a {parent._type} node is not modelled: only into the root's children")
+        def_name, type_name, fields = parse_node(node_string)
+        kinds = {name: kind for name, (kind, _) in _NODE_FIELDS[type_name].items()}
+        node = Node(self, self._new_id(), type_name, "Solid", def_name, fields, kinds)
+        yaw = yaw_of_rotation(fields["rotation"], f"{type_name}.rotation")
+        self._build(type_name, fields, yaw, node)
+        children = self.root._values["children"]
+        children.insert(len(children) if position == -1 or position >= len(children) else position, node)
+
+    def _build(self, type_name, fields, yaw, node):
+        """Adds the node's solid to the simulated world (with --world: nothing, said once)."""
+        if self.world_file is not None:
+            if not self._warned:
+                print(f"warning: the world is {self.world_file} (--world): the nodes the controller imports "
+                      "add no solid", file=sys.stderr)
+                self._warned = True
+            return
+        x, y, z = fields["translation"]
+        if type_name == "Obstacle":
+            across, along, _height = fields["size"]
+            self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
+        else:
+            height, radius, _ = fields["size"]
+            self.simulation.add_cylinder(x, y, radius)
+            colors = [c for colour in fields["recognitionColors"] for c in colour]
+            self.landmarks.append(Landmark(node, x, y, z, radius, height, yaw, colors))
+
+    def reset(self):
+        """Webots' simulationReset here: the imported nodes are gone and the robot is back at
+        its start (simulated time runs on)."""
+        del self.root._values["children"][self._initial_children:]
+        self.landmarks.clear()
+        self.simulation.reset_world()
+        self.teleported = True
+
+
+# The scene of the run in progress (maze_mapper.run sets it), else None.
+current = None
