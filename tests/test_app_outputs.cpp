@@ -150,7 +150,7 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   CHECK(json.at("options").at("simulation").at("noise") == 0.0);
   CHECK(json.at("options").at("sensor").at("p_occ") == 0.6);
   CHECK(json.at("options").at("sensor").at("clamp").is_null());
-  CHECK(json.at("options").at("world_overrides").dump() == R"({"cell_size_m":null,"centre_goals":false,"goals":null,"random_start":false,"start":null,"start_position":null})");
+  CHECK(json.at("options").at("world_overrides").dump() == R"({"cell_size_m":null,"centre_goals":false,"goals":null,"random_start":false,"start":null,"start_m":null,"start_position":null})");
 
   const std::vector<std::string> csv = lines_of(read_all(dir.path / "out" / "trace.csv"));
   REQUIRE(!csv.empty());

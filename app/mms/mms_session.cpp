@@ -232,6 +232,27 @@ robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandCont
   return reason;
 }
 
+// What the robot tells as it goes: the terminal's printer, the files' recorder, and the stop
+// signal's check; each may be absent.
+robot::RunHooks mms_hooks(std::optional<robot::ProgressPrinter> &printer, std::optional<FilesRecorder> &recorder,
+                          const RunControls &controls, const webots::embedded::Simulation &simulation) {
+  robot::RunHooks hooks;
+  if (printer || recorder) {
+    hooks.on_move = [&printer, &recorder](const robot::MoveReport &r) {
+      if (recorder) recorder->on_move(r);
+      if (printer) (*printer)(r);
+    };
+  }
+  if (controls.interrupted != nullptr || recorder) {
+    hooks.on_step = [&controls, &recorder, &simulation](const robot::StepReport &step) {
+      if (recorder) recorder->on_step(step, simulation.pose());
+      return controls.interrupted == nullptr || !controls.interrupted();
+    };
+  }
+  if (recorder) hooks.grid_changes = recorder->grid_changes();
+  return hooks;
+}
+
 }  // namespace
 
 MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maze &given, std::ostream &out,
@@ -262,20 +283,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   report.marks = MmsMarks(truth.width(), truth.height());
   std::optional<robot::ProgressPrinter> printer;
   if (!options.output.quiet) printer.emplace(out, style, truth.width() * truth.height());
-  robot::RunHooks hooks;
-  if (printer || recorder) {
-    hooks.on_move = [&printer, &recorder](const robot::MoveReport &r) {
-      if (recorder) recorder->on_move(r);
-      if (printer) (*printer)(r);
-    };
-  }
-  if (controls.interrupted != nullptr || recorder) {
-    hooks.on_step = [&controls, &recorder, &simulation](const robot::StepReport &step) {
-      if (recorder) recorder->on_step(step, simulation.pose());
-      return controls.interrupted == nullptr || !controls.interrupted();
-    };
-  }
-  if (recorder) hooks.grid_changes = recorder->grid_changes();
+  const robot::RunHooks hooks = mms_hooks(printer, recorder, controls, simulation);
 
   MmsMouse mouse(truth, mms, controller, controller_opts, report);
   ChildProcess child(mms.command);  // before the robot moves: a command that cannot start prints nothing

@@ -20,6 +20,7 @@
 #include "app/room/room_pictures.hpp"
 #include "app/room/room_replay.hpp"
 #include "app/room/room_report.hpp"
+#include "app/room/room_score.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
@@ -305,53 +306,6 @@ RoomSummary summary_of(const robot::RoomController &c, robot::RoomEnding ending,
   return summary;
 }
 
-// The thresholded map against the truth (every cell, the observed ones) and the reachable free
-// cells observed, into `summary`. Returns the first reachable free cell never observed
-// (map.size() when none).
-std::size_t score(const sensing::RoomMap &map, const maze::ArenaTruth &truth, double threshold, RoomSummary &summary) {
-  summary.cells_total = map.size();
-  for (std::size_t n = 0; n < map.size(); ++n) {
-    const bool says_occupied = map.log_odds_at(n) >= threshold;
-    const bool right = says_occupied == (truth.occupied[n] != 0);
-    summary.cells_right += right ? 1 : 0;
-    if (!map.unobserved_at(n)) {
-      ++summary.observed_cells;
-      summary.observed_cells_right += right ? 1 : 0;
-    }
-  }
-  std::size_t first_left = map.size();
-  for (std::size_t n = 0; n < map.size(); ++n) {
-    if (truth.reachable[n] == 0) continue;
-    ++summary.reachable_free;
-    if (!map.unobserved_at(n)) {
-      ++summary.reachable_free_observed;
-    } else if (first_left == map.size()) {
-      first_left = n;
-    }
-  }
-  return first_left;
-}
-
-// Frontier's ending checked against the truth (after score): `incomplete` with every reachable
-// free cell observed is `done`; `done` with one never observed (first_left) is `incomplete`.
-void settle_frontier_ending(const sensing::RoomMap &map, std::size_t first_left, RoomSummary &summary) {
-  const bool all_seen = summary.reachable_free_observed == summary.reachable_free;
-  if (summary.ending == robot::RoomEnding::incomplete && all_seen) {
-    // What the robot could not observe lies in obstacles or out of reach: the free space is mapped.
-    summary.ending = robot::RoomEnding::done;
-    summary.message += fmt::format(", none of them reachable free space: every one of the {} reachable free cells "
-                                   "is observed", summary.reachable_free);
-  }
-  if (summary.ending == robot::RoomEnding::done && !all_seen) {
-    // The controller found no frontier, yet reachable free space is unobserved: not done.
-    const Point p = map.centre_of(map.cell_of_index(first_left));
-    summary.ending = robot::RoomEnding::incomplete;
-    summary.message = fmt::format("{} of {} reachable free cells never observed (the first at {:.2f}, {:.2f})",
-                                  summary.reachable_free - summary.reachable_free_observed, summary.reachable_free,
-                                  p.x_m, p.y_m);
-  }
-}
-
 // After the run (not quiet): the missed snapshots, the map at the end, the trajectory every
 // second of simulated time and the thresholded map.
 void print_end(std::ostream &out, RoomLog &log, const robot::RoomController &c, int time_step_ms,
@@ -432,7 +386,7 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   }
 
   // ---- the score against the truth ----
-  const std::size_t first_left = score(map, truth, threshold, summary);
+  const std::size_t first_left = score_room_map(map, truth, threshold, summary);
   if (options.room.strategy == robot::RoomStrategy::frontier) settle_frontier_ending(map, first_left, summary);
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 

@@ -79,6 +79,34 @@ struct SimulationOptions {
 
 namespace webots::embedded {
 
+// The simulation's own bookkeeping of its wheels and devices (Simulation's private state).
+namespace simulation_detail {
+
+enum class DeviceKind { lidar, motor, encoder, imu, gps, touch, distance };
+struct Wheel {
+  double angle_rad = 0.0;
+  double target_rad = 0.0;  // +infinity: velocity control
+  double velocity_rad_s = 0.0;
+};
+// One entry per device, in creation order; `spec` indexes the profile's list of that kind
+// (for motors and encoders: 0 left, 1 right).
+struct DeviceState {
+  DeviceKind kind;
+  int spec = 0;
+  int sampling_period_ms = 0;
+  std::int64_t read_at_step = -1;  // the step whose reading `cache` holds
+  std::int64_t enabled_at_step = -1;  // when the sampling period last went from 0 (lidars)
+  std::vector<float> ranges;
+  // A rotating lidar's image, beam by beam: the step whose pose beam i's range was cast
+  // from (0: not swept yet, -1: never computed). A beam is cast again only when the head
+  // has passed it since; its range is a function of that step alone (pose, noise stream).
+  std::vector<std::int64_t> beam_steps;
+  std::vector<std::int64_t> last_pass;  // scratch: LidarSweep::last_pass_steps
+  double cache[3] = {0.0, 0.0, 0.0};
+};
+
+}  // namespace simulation_detail
+
 class Simulation {
  public:
   // Validates options and the start pose (inside the maze, the body clear of the walls);
@@ -156,28 +184,9 @@ class Simulation {
   const maze::sim::DistanceSensorSpec &distance_spec(int device) const;
 
  private:
-  enum class Kind { lidar, motor, encoder, imu, gps, touch, distance };
-  struct Wheel {
-    double angle_rad = 0.0;
-    double target_rad = 0.0;  // +infinity: velocity control
-    double velocity_rad_s = 0.0;
-  };
-  // One entry per device, in creation order; `spec` indexes the profile's list of that kind
-  // (for motors and encoders: 0 left, 1 right).
-  struct DeviceState {
-    Kind kind;
-    int spec = 0;
-    int sampling_period_ms = 0;
-    std::int64_t read_at_step = -1;  // the step whose reading `cache` holds
-    std::int64_t enabled_at_step = -1;  // when the sampling period last went from 0 (lidars)
-    std::vector<float> ranges;
-    // A rotating lidar's image, beam by beam: the step whose pose beam i's range was cast
-    // from (0: not swept yet, -1: never computed). A beam is cast again only when the head
-    // has passed it since; its range is a function of that step alone (pose, noise stream).
-    std::vector<std::int64_t> beam_steps;
-    std::vector<std::int64_t> last_pass;  // scratch: LidarSweep::last_pass_steps
-    double cache[3] = {0.0, 0.0, 0.0};
-  };
+  using Kind = simulation_detail::DeviceKind;
+  using Wheel = simulation_detail::Wheel;
+  using DeviceState = simulation_detail::DeviceState;
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);

@@ -1,0 +1,23 @@
+#pragma once
+// A room run's map scored against the truth at the map's resolution, and the frontier's ending
+// the truth settles.
+
+#include <cstddef>
+
+#include "app/room/room_run.hpp"
+#include "maze/arena_truth.hpp"
+#include "sensing/room_map.hpp"
+
+namespace app {
+
+// The thresholded map against the truth (every cell, the observed ones) and the reachable free
+// cells observed, into `summary`. Returns the first reachable free cell never observed
+// (map.size() when none).
+std::size_t score_room_map(const sensing::RoomMap &map, const maze::ArenaTruth &truth, double threshold,
+                           RoomSummary &summary);
+// Frontier's ending checked against the truth (after score_room_map): `incomplete` with every
+// reachable free cell observed is `done`; `done` with one never observed (first_left) is
+// `incomplete`.
+void settle_frontier_ending(const sensing::RoomMap &map, std::size_t first_left, RoomSummary &summary);
+
+}  // namespace app
