@@ -409,3 +409,29 @@ TEST_CASE("every file in worlds/ loads as a maze or an arena") {
   CHECK(arenas == 3);
   CHECK(mazes >= 8);
 }
+
+TEST_CASE("one load: the file's format told once, a world's geometry and its lattice view") {
+  const std::string worlds = WORLDS_DIR;
+  const maze::WorldText lab = maze::read_world_file(worlds + "/lab4x4.xml");
+  CHECK(lab.format == maze::Format::xml);
+  CHECK_FALSE(maze::holds_arena(lab.text, lab.format, "lab4x4.xml"));
+  const maze::WorldText room = maze::read_world_file(worlds + "/ir_room.room");
+  CHECK(room.format == maze::Format::room);
+  CHECK(maze::holds_arena(room.text, room.format, "ir_room.room"));
+  const maze::WorldText thick = maze::read_world_file(worlds + "/thick_arena.xml");
+  CHECK(maze::holds_arena(thick.text, thick.format, "thick_arena.xml"));
+
+  // A maze: its lattice is the maze, its geometry the walls as solids (arena_from_maze).
+  const maze::AnyWorld maze_world = maze::load_any_world(worlds + "/lab4x4.txt", {}, {});
+  REQUIRE(maze::lattice_view(maze_world) != nullptr);
+  CHECK(maze::lattice_view(maze_world)->width() == 4);
+  const maze::Arena maze_geometry = maze::world_geometry(maze_world);
+  CHECK(maze_geometry.obstacles.size() == maze::arena_from_maze(*maze::lattice_view(maze_world)).obstacles.size());
+  CHECK(maze_geometry.x_max_m == 4);
+  // An arena: no lattice, its geometry its own.
+  const maze::AnyWorld arena_world = maze::load_any_world(worlds + "/ir_room.room", {}, {});
+  CHECK(maze::lattice_view(arena_world) == nullptr);
+  CHECK(maze::world_geometry(arena_world).obstacles.size() ==
+        std::get<maze::ArenaWorld>(arena_world).arena.obstacles.size());
+  CHECK(maze::world_warnings(arena_world).empty());
+}

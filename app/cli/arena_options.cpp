@@ -1,7 +1,6 @@
 #include "app/cli/arena_options.hpp"
 
 #include <cstdio>
-#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
@@ -29,10 +28,7 @@ maze::ArenaOverrides arena_overrides(const std::string &boundary, double robot_r
 maze::AnyWorld load_any_world_reporting(const std::string &path, const maze::WorldOverrides &maze_overrides,
                                         const maze::ArenaOverrides &arena_overrides) {
   maze::AnyWorld world = maze::load_any_world(path, maze_overrides, arena_overrides);
-  const std::vector<std::string> &warnings = std::visit([](const auto &w) -> const std::vector<std::string> & {
-    return w.warnings;
-  }, world);
-  for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+  for (const std::string &warning : maze::world_warnings(world)) fmt::print(stderr, "{}\n", warning);
   return world;
 }
 

@@ -43,7 +43,7 @@ std::string shipped_world_line(const std::filesystem::path &file) {
     if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
       return fmt::format("{:<22} arena  {:g} x {:g} m", name, arena->arena.width_m(), arena->arena.height_m());
     }
-    const maze::Maze &m = std::get<maze::World>(world).maze;
+    const maze::Maze &m = *maze::lattice_view(world);
     return fmt::format("{:<22} maze   {} x {} cells", name, m.width(), m.height());
   } catch (const common::InputError &e) {
     return fmt::format("{:<22} ?      does not load: {}", name, e.what());

@@ -337,10 +337,7 @@ int room_exit_status(const RoomSummary &s) {
 
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
-  if (const auto *a = std::get_if<maze::ArenaWorld>(&world)) {
-    return run_room_in(a->arena, options, out, started, interrupted);
-  }
-  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started, interrupted);
+  return run_room_in(maze::world_geometry(world), options, out, started, interrupted);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,

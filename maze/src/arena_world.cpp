@@ -81,13 +81,22 @@ void apply_default_boundary(Arena &arena) {
   set_boundary(arena, open ? floor : std::array<double, 4>{box[0], box[2], box[1], box[3]});
 }
 
+bool holds_arena(std::string_view text, Format format, const std::string &file, std::optional<double> cell_size_m) {
+  return format == Format::room || (format == Format::xml && xml_world_is_arena(text, file, {cell_size_m}));
+}
+
 ArenaWorld read_arena_world(std::string_view text, const std::string &file, const ArenaOverrides &overrides) {
+  return read_arena_world(text, file, overrides, detect_format(text, file));
+}
+
+ArenaWorld read_arena_world(std::string_view text, const std::string &file, const ArenaOverrides &overrides,
+                            Format format) {
   ArenaWorld world;
   world.file = file;
-  world.format = detect_format(text, file);
+  world.format = format;
   if (world.format == Format::room) {
     world.arena = read_room(text, file);
-  } else if (world.format == Format::xml && xml_world_is_arena(text, file, {})) {
+  } else if (holds_arena(text, world.format, file)) {
     XmlArenaRead read = read_xml_arena(text, file);
     world.arena = std::move(read.arena);
     world.warnings = std::move(read.warnings);
@@ -113,21 +122,32 @@ ArenaWorld read_arena_world(std::string_view text, const std::string &file, cons
 
 AnyWorld load_any_world(const std::string &path, const WorldOverrides &maze_overrides,
                         const ArenaOverrides &arena_overrides) {
-  const std::string text = read_world_text(path);
-  const Format format = detect_format(text, path);
-  const bool arena = format == Format::room ||
-                     (format == Format::xml && xml_world_is_arena(text, path, {maze_overrides.cell_size_m}));
-  if (!arena) {
+  const WorldText file = read_world_file(path);
+  if (!holds_arena(file.text, file.format, path, maze_overrides.cell_size_m)) {
     if (arena_overrides.boundary_m) {
       throw common::InputError(fmt::format("--boundary applies to arenas; {} is a grid maze", path));
     }
-    return load_world_text(text, path, maze_overrides);
+    return load_world_text(file.text, path, maze_overrides, file.format);
   }
   refuse_maze_overrides(maze_overrides, path);
-  return read_arena_world(text, path, arena_overrides);
+  return read_arena_world(file.text, path, arena_overrides, file.format);
 }
 
 bool is_arena(const AnyWorld &world) { return std::holds_alternative<ArenaWorld>(world); }
+
+Arena world_geometry(const AnyWorld &world) {
+  if (const auto *arena = std::get_if<ArenaWorld>(&world)) return arena->arena;
+  return arena_from_maze(std::get<World>(world).maze);
+}
+
+const Maze *lattice_view(const AnyWorld &world) {
+  const auto *maze = std::get_if<World>(&world);
+  return maze == nullptr ? nullptr : &maze->maze;
+}
+
+const std::vector<std::string> &world_warnings(const AnyWorld &world) {
+  return std::visit([](const auto &w) -> const std::vector<std::string> & { return w.warnings; }, world);
+}
 
 std::string format_arena(const Arena &arena, Format format) {
   if (format == Format::room) return write_room(arena);

@@ -164,7 +164,11 @@ Format detect_format(std::string_view text, const std::string &file) {
 }
 
 Maze read_world(std::string_view text, const std::string &file) {
-  switch (detect_format(text, file)) {
+  return read_world(text, file, detect_format(text, file));
+}
+
+Maze read_world(std::string_view text, const std::string &file, Format format) {
+  switch (format) {
     case Format::text_map: return read_text_map(text, file);
     case Format::num: return read_num(text, file);
     case Format::xml: return read_xml(text, file);
@@ -192,7 +196,9 @@ common::SourceLocation location_of(std::string_view text, std::size_t offset, co
 
 }  // namespace
 
-std::string read_world_text(const std::string &path) {
+std::string read_world_text(const std::string &path) { return read_world_file(path).text; }
+
+WorldText read_world_file(const std::string &path) {
   common::InputFile file(path);  // a FIFO's wait for its writer ends on a stop signal
   std::string text;
   struct stat status {};
@@ -209,26 +215,31 @@ std::string read_world_text(const std::string &path) {
       format = detect_format(text, path);  // throws when the first bytes are no format at all
     }
     if (format == Format::maz) {
-      if (n == 0 || text.size() > kMazBytes) return text;  // read_maz says what is wrong with the size
+      if (n == 0 || text.size() > kMazBytes) return {std::move(text), *format};  // read_maz says what is wrong with the size
       continue;
     }
     if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
       throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
     }
-    if (n == 0) return text;
+    if (n == 0) return {std::move(text), format ? *format : detect_format(text, path)};
     if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
   }
 }
 
 World load_world(const std::string &path, const WorldOverrides &overrides) {
-  return load_world_text(read_world_text(path), path, overrides);
+  const WorldText file = read_world_file(path);
+  return load_world_text(file.text, path, overrides, file.format);
 }
 
 World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides) {
-  const Format format = detect_format(text, path);
+  return load_world_text(text, path, overrides, detect_format(text, path));
+}
+
+World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides,
+                      Format format) {
   std::vector<std::string> warnings;
   const auto read = [&]() -> Maze {
-    if (format != Format::xml) return read_world(text, path);
+    if (format != Format::xml) return read_world(text, path, format);
     XmlRead xml = read_xml(text, path, XmlReadOptions{overrides.cell_size_m});
     warnings = std::move(xml.warnings);
     return std::move(xml.maze);

@@ -41,6 +41,14 @@ void apply_default_boundary(Arena &arena);
 // boundary (the override, the file's, or the default) and validates it. Throws
 // common::InputError; a maze-only XML is "… is a grid maze, not an arena".
 ArenaWorld read_arena_world(std::string_view text, const std::string &file, const ArenaOverrides &overrides);
+// Likewise, its format already told (detect_format).
+ArenaWorld read_arena_world(std::string_view text, const std::string &file, const ArenaOverrides &overrides,
+                            Format format);
+
+// Whether text in `format` holds an arena: a room file does, an XML world by
+// xml_world_is_arena's rule (at cell_size_m when given), no other format.
+bool holds_arena(std::string_view text, Format format, const std::string &file,
+                 std::optional<double> cell_size_m = std::nullopt);
 
 using AnyWorld = std::variant<World, ArenaWorld>;
 
@@ -50,6 +58,13 @@ using AnyWorld = std::variant<World, ArenaWorld>;
 AnyWorld load_any_world(const std::string &path, const WorldOverrides &maze_overrides,
                         const ArenaOverrides &arena_overrides);
 bool is_arena(const AnyWorld &world);
+// A world's geometry, whatever it was read as: an arena's own, or a maze's walls as solids
+// (arena_from_maze), its start cell's centre and its goal cells' centres.
+Arena world_geometry(const AnyWorld &world);
+// The world's cell lattice view when its walls lie on one (a grid maze), else nullptr.
+const Maze *lattice_view(const AnyWorld &world);
+// What the user should hear about the world as it was read ("FILE: warning: ..." lines).
+const std::vector<std::string> &world_warnings(const AnyWorld &world);
 
 // The arena in `format`: room or xml. Others throw common::InputError "a FORMAT file holds a
 // grid maze; an arena is written as .room or .xml".

@@ -62,6 +62,8 @@ Format detect_format(std::string_view text, const std::string &file);
 
 // Reads a world from text in any input format, validated. Throws common::InputError.
 Maze read_world(std::string_view text, const std::string &file);
+// Likewise, the format already told (detect_format): a room file is refused as an arena.
+Maze read_world(std::string_view text, const std::string &file, Format format);
 
 // Reads, detects, validates; unreachable cells become a warning. Throws common::InputError
 // ("cannot read FILE: reason", or the fault's place in the file).
@@ -71,10 +73,21 @@ World load_world(const std::string &path);
 World load_world(const std::string &path, const WorldOverrides &overrides);
 // load_world on a file's text already read (read_world_text).
 World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides);
+// Likewise, its format already told (read_world_file): the format is detected once a load.
+World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides,
+                      Format format);
+
+// A world file's text and its format, told once, from its first bytes.
+struct WorldText {
+  std::string text;
+  Format format = Format::text_map;
+};
 // A world file's text, read in proportion: the format is told from the first bytes that are
 // not blank (so an image or /dev/zero fails at once), reading stops at a NUL byte (an
 // error: no text format holds one) and past a .maz's 256 bytes. Throws common::InputError;
 // common::Interrupted when a stop signal ends a wait (a FIFO's writer, common/input_file.hpp).
+WorldText read_world_file(const std::string &path);
+// read_world_file's text alone.
 std::string read_world_text(const std::string &path);
 
 // What writing the world in `format` would drop, as one line "FORMAT holds no ...: dropped

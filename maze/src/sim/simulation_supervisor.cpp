@@ -25,6 +25,12 @@ void require_finite_value(double value, const char *what) {
 
 }  // namespace
 
+void Simulation::rebuild_solids() {
+  arena_.emplace(*arena_world_);
+  free_centres_.reset();
+  for (DeviceState &state : states_) state.read_at_step = -1;  // the sensors see the change at once
+}
+
 void Simulation::add_obstacle(const maze::Obstacle &obstacle) {
   if (!arena_world_) throw common::InputError("a solid cannot be added to a maze's world (its walls are on the lattice)");
   require_finite_value(obstacle.centre_x_m, "an obstacle's x");
@@ -33,9 +39,7 @@ void Simulation::add_obstacle(const maze::Obstacle &obstacle) {
   require_solid_size(obstacle.half_length_m, "an obstacle's length");
   require_solid_size(obstacle.half_width_m, "an obstacle's width");
   arena_world_->obstacles.push_back(obstacle);
-  arena_.emplace(*arena_world_);
-  free_centres_.reset();
-  for (DeviceState &state : states_) state.read_at_step = -1;  // the sensors see it at once
+  rebuild_solids();
 }
 
 void Simulation::add_disc(const maze::ArenaDisc &disc) {
@@ -44,9 +48,7 @@ void Simulation::add_disc(const maze::ArenaDisc &disc) {
   require_finite_value(disc.centre_y_m, "a cylinder's y");
   require_solid_size(disc.radius_m, "a cylinder's radius");
   arena_world_->discs.push_back(disc);
-  arena_.emplace(*arena_world_);
-  free_centres_.reset();
-  for (DeviceState &state : states_) state.read_at_step = -1;  // the sensors see it at once
+  rebuild_solids();
 }
 
 void Simulation::teleport(const maze::sim::Pose &pose, double z_m) {

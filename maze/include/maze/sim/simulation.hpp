@@ -192,6 +192,8 @@ class Simulation {
   void add_device(const std::string &name, Kind kind, int spec);
   // The constructors' shared part, once the solids are set.
   void set_up();
+  // The arena's solids built again from arena_world_ after a supervisor's edit.
+  void rebuild_solids();
   // f(the solids): the one choice between a maze and an arena, made once per query.
   template <typename F>
   decltype(auto) with_solids(F &&f) const {
