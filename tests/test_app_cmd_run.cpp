@@ -146,7 +146,7 @@ TEST_CASE("steps_within: the control steps a time limit allows, at least one, sa
 TEST_CASE("a run stopped by --time-limit ends as planned and says so; a huge limit changes nothing") {
   const test_cli::Ran timed = test_cli::run({"run", std::string(WORLDS_DIR) + "/lab4x4.txt", "--quiet", "--time-limit", "2"});
   CHECK(timed.status == 0);
-  CHECK(timed.out.find("end: max steps (--time-limit 2 s of simulated time)\nsteps: 62\n") != std::string::npos);
+  CHECK(timed.out.find("end: time limit (2 s of simulated time)\nsteps: 62\n") != std::string::npos);
   const test_cli::Ran whole = test_cli::run({"run", std::string(WORLDS_DIR) + "/lab4x4.txt", "--quiet", "--time-limit", "inf"});
   CHECK(whole.status == 0);
   CHECK(whole.out.find("end: done\n") != std::string::npos);

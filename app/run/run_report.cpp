@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "app/run/step_limit.hpp"
+
 namespace app {
 namespace {
 
@@ -99,7 +101,7 @@ Report run_report(const RunOptions &o, const RunSummary &s) {
   e.both("strategy", std::string(explore::to_string(o.strategy)));
   e.both("robot", o.robot);
   e.both("seed", std::to_string(o.simulation.seed), Json(o.simulation.seed));
-  const std::string reason(robot::to_string(s.reason));
+  const std::string reason = end_reason_name(s);
   e.both("end", end_text(reason, s.message), Json(reason));
   e.json_only("end_message", s.message);
   e.both("steps", std::to_string(s.steps), Json(s.steps));

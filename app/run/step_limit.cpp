@@ -18,11 +18,16 @@ std::int64_t steps_within(double time_limit_s, int step_ms) {
 void name_step_limit(const RunOptions &options, RunSummary &summary) {
   if (summary.reason != robot::EndReason::max_steps) return;
   if (summary.time_limited) {
-    summary.message = fmt::format("--time-limit {:g} s of simulated time", *options.time_limit_s);
+    summary.message = fmt::format("{:g} s of simulated time", *options.time_limit_s);
   } else if (!summary.max_steps_asked) {
     // The default limit is a safety net far above what any set-up needs; reaching it is a failure.
     summary.message = fmt::format("the default limit of {} steps ran out; --max-steps N allows more", summary.max_steps);
   }
+}
+
+std::string end_reason_name(const RunSummary &summary) {
+  if (summary.time_limited && summary.reason == robot::EndReason::max_steps) return "time limit";
+  return std::string(robot::to_string(summary.reason));
 }
 
 StepLimit step_limit(const RunOptions &options, const maze::Maze &maze) {

@@ -3,6 +3,7 @@
 // seconds, turned into control steps, and the words a run stopped by it ends with.
 
 #include <cstdint>
+#include <string>
 
 #include "app/run/run.hpp"
 
@@ -19,8 +20,11 @@ struct StepLimit {
   bool time_limited = false;  // --time-limit's is the lower
 };
 StepLimit step_limit(const RunOptions &options, const maze::Maze &maze);
-// A run stopped by its step limit says which: `--time-limit S s of simulated time`, or the
+// A run stopped by its step limit says which: `S s of simulated time` (--time-limit's), or the
 // default limit (a failure); a --max-steps the user gave needs no words.
 void name_step_limit(const RunOptions &options, RunSummary &summary);
+// The summary's `end`: `time limit` for a run --time-limit stopped, else the controller's
+// reason (`done`, `max steps`, ...).
+std::string end_reason_name(const RunSummary &summary);
 
 }  // namespace app
