@@ -109,5 +109,4 @@ Demo1dOutput run_demo_1d(const Demo1dInput &input) {
   return {out, status};
 }
 
-
 }  // namespace app::course

@@ -161,5 +161,4 @@ std::string run_demo_cone(const DemoConeInput &input) {
   return out;
 }
 
-
 }  // namespace app::course

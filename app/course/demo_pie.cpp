@@ -150,5 +150,4 @@ std::string run_demo_pie(const DemoPieInput &input) {
   return out;
 }
 
-
 }  // namespace app::course

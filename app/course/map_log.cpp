@@ -359,5 +359,4 @@ std::string run_map_log(const MapLogInput &input) {
   return out;
 }
 
-
 }  // namespace app::course
