@@ -30,29 +30,6 @@ app::RunOptions parsed_run(std::vector<std::string> args) {
 
 }  // namespace
 
-TEST_CASE("a pose is X,Y,YAW with YAW in degrees, or with its unit") {
-  std::vector<std::string> warnings;
-  const app::PoseArgument degrees = app::parse_pose("0.5,1.5,90", "--pose", warnings);
-  CHECK(degrees.x_m == 0.5);
-  CHECK(degrees.y_m == 1.5);
-  CHECK(degrees.yaw_deg == 90.0);
-  CHECK(degrees.yaw_rad == doctest::Approx(1.5707963267948966));
-  CHECK(app::parse_pose("0.5,1.5,90deg", "--pose", warnings).yaw_deg == 90.0);
-  const app::PoseArgument radians = app::parse_pose("0.5,1.5,1.5707963267948966rad", "--pose", warnings);
-  CHECK(radians.yaw_rad == 1.5707963267948966);
-  CHECK(radians.yaw_deg == doctest::Approx(90.0));
-  CHECK(warnings.empty());
-  // 90 "radians" is 14 turns: it was meant as degrees.
-  (void)app::parse_pose("0.5,1.5,90rad", "--pose", warnings);
-  REQUIRE(warnings.size() == 1);
-  CHECK(warnings[0].find("more than a turn") != std::string::npos);
-  CHECK(warnings[0].find("--pose 0.5,1.5,90") != std::string::npos);
-  CHECK_THROWS_WITH_AS(app::parse_pose("0.5,1.5", "--pose", warnings), "--pose needs 3 numbers (got 2)",
-                       common::InputError);
-  CHECK_THROWS_WITH_AS(app::parse_pose("0.5,inf,0", "--pose", warnings), "--pose must be three finite numbers",
-                       common::InputError);
-}
-
 TEST_CASE("scan --pose X,Y,YAW prints what the old --pose X Y YAW (radians) printed") {
   const std::string world = std::string(WORLDS_DIR) + "/lab4x4.txt";
   const test_cli::Ran now = test_cli::run({"scan", world, "--pose", "0.5,0.5,90", "--noise", "0"});

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "app/cli/demo_commands.hpp"
+#include "app/run/option_values.hpp"
 
 namespace app {
 

@@ -16,7 +16,6 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
-#include "app/cli/demo_commands.hpp"
 #include "app/cli/option_binding.hpp"
 #include "app/run/shipped_worlds.hpp"
 
@@ -193,33 +192,6 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
       ->expected(1)
       ->allow_extra_args(false)  // --goal 3,3 WORLD: the world is not a goal
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-}
-
-PoseArgument parse_pose(const std::string &text, const std::string &option, std::vector<std::string> &warnings) {
-  std::string numbers = text;
-  bool radians = false;
-  if (numbers.ends_with("rad")) {
-    radians = true;
-    numbers.resize(numbers.size() - 3);
-  } else if (numbers.ends_with("deg")) {
-    numbers.resize(numbers.size() - 3);
-  }
-  const std::vector<double> values = parse_number_list(numbers, option, 3);
-  for (const double v : values) {
-    if (!std::isfinite(v)) throw common::InputError(fmt::format("{} must be three finite numbers", option));
-  }
-  PoseArgument pose{values[0], values[1], values[2], values[2]};
-  if (radians) {
-    pose.yaw_deg = values[2] * 180.0 / std::numbers::pi;
-    if (std::abs(values[2]) > 2.0 * std::numbers::pi) {
-      warnings.push_back(fmt::format("warning: {} YAW {}rad is {:g} degrees, more than a turn; for {} degrees write {} "
-                                     "{:g},{:g},{}",
-                                     option, values[2], pose.yaw_deg, values[2], option, values[0], values[1], values[2]));
-    }
-  } else {
-    pose.yaw_rad = values[2] * std::numbers::pi / 180.0;
-  }
-  return pose;
 }
 
 std::string old_spelling_warning(const std::string &old_spelling, const std::string &new_spelling) {

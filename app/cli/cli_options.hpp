@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/run/option_fields.hpp"  // robot_names()
+#include "app/run/option_values.hpp"  // parse_number_list(), parse_pose()
 #include "app/run/terminal.hpp"       // ColorChoice
 #include "mapping/grid_types.hpp"
 #include "maze/world.hpp"
@@ -44,20 +45,6 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides);
 // "Xm,Ym" -> the point in metres, each a finite number with the unit m; nothing for any other
 // text (a cell's "X,Y" among them).
 std::optional<std::array<double, 2>> metres_point(std::string_view text);
-
-// A pose as every command spells it: X,Y,YAW in one word (no quoting), X and Y in metres, YAW
-// in degrees counter-clockwise from east, or with its unit: 90deg, 1.5708rad. Both angles
-// are given; yaw_deg is exactly as typed when YAW was degrees, yaw_rad when radians.
-struct PoseArgument {
-  double x_m = 0.0;
-  double y_m = 0.0;
-  double yaw_deg = 0.0;
-  double yaw_rad = 0.0;
-};
-// Throws common::InputError naming `option`: "--pose needs 3 numbers (got 2)", "--pose must
-// be three finite numbers". A YAW in radians larger than 2 pi looks like degrees: a warning
-// line saying so is added to `warnings`.
-PoseArgument parse_pose(const std::string &text, const std::string &option, std::vector<std::string> &warnings);
 
 // The warning an old spelling gives (kept for one release): "warning: OLD is the old spelling;
 // write NEW (OLD goes in the next release)".

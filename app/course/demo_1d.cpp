@@ -1,4 +1,4 @@
-#include "mapping/demo_1d.hpp"
+#include "app/course/demo_1d.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -10,7 +10,7 @@
 #include "common/error.hpp"
 #include "common/random.hpp"
 
-namespace mapping {
+namespace app::course {
 namespace {
 
 // Cells that fit in [0, length]: floor(length / resolution) + 1, with a little slack so that
@@ -57,7 +57,7 @@ void validate_measurements(const std::vector<double> &measurements_cm) {
 }  // namespace
 
 void validate(const Demo1dOptions &options) {
-  validate(options.model);
+  mapping::validate(options.model);
   validate_geometry(options);
   validate_measurements(options.measurements_cm);
 }
@@ -79,7 +79,7 @@ CellUpdate classify(double cell_cm, double measurement_cm, double behind_cm) {
 
 std::vector<Demo1dCell> integrate(const Demo1dOptions &options,
                                   std::span<const double> measurements_cm) {
-  const SensorModel model(options.model);
+  const mapping::SensorModel model(options.model);
   std::vector<Demo1dCell> cells;
   for (const double x : cell_positions_cm(options)) {
     cells.push_back(Demo1dCell{.position_cm = x, .log_odds = model.prior_log_odds()});
@@ -120,4 +120,4 @@ double max_log_odds_difference(std::span<const Demo1dCell> a, std::span<const De
   return largest;
 }
 
-}  // namespace mapping
+}  // namespace app::course

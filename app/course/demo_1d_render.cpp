@@ -1,4 +1,4 @@
-#include "render/demo_1d_render.hpp"
+#include "app/course/demo_1d_render.hpp"
 
 #include <cassert>
 #include <cmath>
@@ -10,10 +10,8 @@
 #include "common/xml_text.hpp"
 #include "render/text_format.hpp"
 
-namespace render {
+namespace app::course {
 namespace {
-
-using mapping::Demo1dCell;
 
 constexpr std::size_t kYLabelWidth = 4;   // " 0.7"
 constexpr std::size_t kPlotLeft = 7;      // label, " +" or " |", one blank margin column
@@ -56,7 +54,7 @@ std::vector<std::string> plot_area(std::span<const Demo1dCell> cells) {
 std::string y_axis(int row_from_top) {
   const int row_from_bottom = kPlotRows - 1 - row_from_top;
   if (row_from_bottom % 2 != 0) return std::string(kYLabelWidth + 1, ' ') + "|";
-  return fmt::format("{:>{}} +", fixed(row_from_bottom / 20.0, 1), kYLabelWidth);
+  return fmt::format("{:>{}} +", render::fixed(row_from_bottom / 20.0, 1), kYLabelWidth);
 }
 
 std::string x_axis_line(double span_cm) {
@@ -71,7 +69,7 @@ std::string x_axis_line(double span_cm) {
 std::string x_labels(double span_cm) {
   std::string line;
   for (const double tick : ticks(span_cm)) {
-    const std::string label = short_number(tick);
+    const std::string label = render::short_number(tick);
     const std::size_t centre = kPlotLeft + static_cast<std::size_t>(column_of(tick, span_cm));
     const std::size_t start = centre - std::min(centre, (label.size() - 1) / 2);
     if (!line.empty() && start <= line.size()) continue;
@@ -102,14 +100,14 @@ std::string svg_axes(const SvgFrame &f, double span_cm) {
     out += fmt::format(R"(  <line x1="{:.2f}" y1="{:.2f}" x2="{:.2f}" y2="{:.2f}" stroke="#ddd"/>)"
                        "\n", f.left, y, f.left + f.width, y);
     out += fmt::format(R"(  <text x="{:.2f}" y="{:.2f}" text-anchor="end">{}</text>)" "\n",
-                       f.left - 8, y + 4, fixed(i / 10.0, 1));
+                       f.left - 8, y + 4, render::fixed(i / 10.0, 1));
   }
   for (const double tick : ticks(span_cm)) {
     const double x = f.x(tick, span_cm);
     out += fmt::format(R"(  <line x1="{:.2f}" y1="{:.2f}" x2="{:.2f}" y2="{:.2f}" stroke="#000"/>)"
                        "\n", x, f.top + f.height, x, f.top + f.height + 5);
     out += fmt::format(R"(  <text x="{:.2f}" y="{:.2f}" text-anchor="middle">{}</text>)" "\n",
-                       x, f.top + f.height + 20, short_number(tick));
+                       x, f.top + f.height + 20, render::short_number(tick));
   }
   out += fmt::format(R"(  <rect x="{:.2f}" y="{:.2f}" width="{:.2f}" height="{:.2f}" fill="none" stroke="#000"/>)"
                      "\n", f.left, f.top, f.width, f.height);
@@ -129,7 +127,7 @@ std::string svg_points(const SvgFrame &f, std::span<const Demo1dCell> cells) {
     const double y = f.y(cell.belief);
     polyline += fmt::format("{}{:.2f},{:.2f}", &cell == &cells.front() ? "" : " ", x, y);
     circles += fmt::format(R"(  <circle cx="{:.2f}" cy="{:.2f}" r="3.5" fill="#1f77b4"><title>{} cm: {}</title></circle>)"
-                           "\n", x, y, short_number(cell.position_cm), fixed(cell.belief, 4));
+                           "\n", x, y, render::short_number(cell.position_cm), render::fixed(cell.belief, 4));
   }
   return polyline + "\"/>\n" + circles;
 }
@@ -151,8 +149,8 @@ std::string demo_1d_table(std::span<const Demo1dCell> cells) {
   std::string out = fmt::format("{:>9}  {:>9}  {:>8}  {:>4}  {:>8}\n", "cell (cm)", "log-odds",
                                 "belief p", "free", "occupied");
   for (const Demo1dCell &cell : cells) {
-    out += fmt::format("{:>9}  {:>9}  {:>8}  {:>4}  {:>8}\n", short_number(cell.position_cm),
-                       fixed(cell.log_odds, 4), fixed(cell.belief, 4), cell.free_updates,
+    out += fmt::format("{:>9}  {:>9}  {:>8}  {:>4}  {:>8}\n", render::short_number(cell.position_cm),
+                       render::fixed(cell.log_odds, 4), render::fixed(cell.belief, 4), cell.free_updates,
                        cell.occupied_updates);
   }
   return out;
@@ -188,4 +186,4 @@ std::string svg_belief_plot(std::span<const Demo1dCell> cells, const std::string
   return out;
 }
 
-}  // namespace render
+}  // namespace app::course

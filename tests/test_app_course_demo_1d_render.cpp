@@ -10,15 +10,14 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
-#include "mapping/demo_1d.hpp"
-#include "render/demo_1d_render.hpp"
-#include "render/text_format.hpp"
+#include "app/course/demo_1d.hpp"
+#include "app/course/demo_1d_render.hpp"
 
 namespace {
 
-std::vector<mapping::Demo1dCell> default_cells() {
-  const mapping::Demo1dOptions o;
-  return mapping::integrate(o, o.measurements_cm);
+std::vector<app::course::Demo1dCell> default_cells() {
+  const app::course::Demo1dOptions o;
+  return app::course::integrate(o, o.measurements_cm);
 }
 
 std::size_t count_of(const std::string &text, const std::string &what) {
@@ -82,18 +81,8 @@ std::size_t entries_in(const std::filesystem::path &dir) {
 
 }  // namespace
 
-TEST_CASE("text_format: fixed never prints -0, short_number trims zeros") {
-  CHECK(render::fixed(-0.00001, 4) == "0.0000");
-  CHECK(render::fixed(-0.8473, 4) == "-0.8473");
-  CHECK(render::fixed(0.73819, 4) == "0.7382");
-  CHECK(render::short_number(200) == "200");
-  CHECK(render::short_number(2.5) == "2.5");
-  CHECK(render::short_number(0.1 * 3) == "0.3");
-  CHECK(render::short_number(-0.0) == "0");
-}
-
 TEST_CASE("demo 1d table: one line a cell, 4 decimals") {
-  const std::vector<std::string> lines = lines_of(render::demo_1d_table(default_cells()));
+  const std::vector<std::string> lines = lines_of(app::course::demo_1d_table(default_cells()));
   REQUIRE(lines.size() == 22);
   CHECK(lines[0] == "cell (cm)   log-odds  belief p  free  occupied");
   CHECK(lines[1] == "        0    -8.4730    0.0002    10         0");
@@ -102,18 +91,18 @@ TEST_CASE("demo 1d table: one line a cell, 4 decimals") {
 }
 
 TEST_CASE("tick_step: 1-2-5 steps with at most 10 intervals") {
-  CHECK(render::tick_step(200) == 20);
-  CHECK(render::tick_step(50) == 5);
-  CHECK(render::tick_step(30) == 5);
-  CHECK(render::tick_step(100) == 10);
-  CHECK(render::tick_step(10000) == 1000);
-  CHECK(render::tick_step(1) == doctest::Approx(0.1));
+  CHECK(app::course::tick_step(200) == 20);
+  CHECK(app::course::tick_step(50) == 5);
+  CHECK(app::course::tick_step(30) == 5);
+  CHECK(app::course::tick_step(100) == 10);
+  CHECK(app::course::tick_step(10000) == 1000);
+  CHECK(app::course::tick_step(1) == doctest::Approx(0.1));
 }
 
 TEST_CASE("ASCII plot: one point a cell, in the row of its belief") {
-  const std::string plot = render::ascii_belief_plot(default_cells());
+  const std::string plot = app::course::ascii_belief_plot(default_cells());
   const std::vector<std::string> lines = lines_of(plot);
-  REQUIRE(lines.size() == 1 + render::kPlotRows + 3);
+  REQUIRE(lines.size() == 1 + app::course::kPlotRows + 3);
   CHECK(count_of(plot, "*") == 21);
   CHECK(lines[0] == "belief p");
   CHECK(lines[1] == " 1.0 +");
@@ -126,15 +115,15 @@ TEST_CASE("ASCII plot: one point a cell, in the row of its belief") {
 }
 
 TEST_CASE("ASCII plot: a single cell still draws") {
-  mapping::Demo1dOptions o;
+  app::course::Demo1dOptions o;
   o.length_cm = 0;
-  const std::string plot = render::ascii_belief_plot(mapping::integrate(o, o.measurements_cm));
+  const std::string plot = app::course::ascii_belief_plot(app::course::integrate(o, o.measurements_cm));
   CHECK(count_of(plot, "*") == 1);
 }
 
 TEST_CASE("SVG plot: a well-formed <svg> document with one circle a cell") {
-  const std::vector<mapping::Demo1dCell> cells = default_cells();
-  const std::string svg = render::svg_belief_plot(cells, "belief <after> 10 & more");
+  const std::vector<app::course::Demo1dCell> cells = default_cells();
+  const std::string svg = app::course::svg_belief_plot(cells, "belief <after> 10 & more");
   CHECK(svg.rfind("<?xml", 0) == 0);
   CHECK(xml_root(svg) == "svg");
   CHECK(count_of(svg, "<circle ") == cells.size());
@@ -146,7 +135,7 @@ TEST_CASE("SVG plot: a well-formed <svg> document with one circle a cell") {
 TEST_CASE("write_file_atomically: the SVG file is written whole, nothing else is left") {
   const std::filesystem::path dir = fresh_directory("maze_mapper_test_svg");
   const std::filesystem::path file = dir / "plot.svg";
-  const std::string svg = render::svg_belief_plot(default_cells(), "exercise");
+  const std::string svg = app::course::svg_belief_plot(default_cells(), "exercise");
   common::write_file_atomically(file.string(), "old content");
   common::write_file_atomically(file.string(), svg);  // replaces an existing file
   const std::string written = read_file(file);

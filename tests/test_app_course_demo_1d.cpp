@@ -7,12 +7,12 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "mapping/demo_1d.hpp"
+#include "app/course/demo_1d.hpp"
 #include "validation_error.hpp"
 
-using mapping::CellUpdate;
-using mapping::Demo1dCell;
-using mapping::Demo1dOptions;
+using app::course::CellUpdate;
+using app::course::Demo1dCell;
+using app::course::Demo1dOptions;
 
 namespace {
 
@@ -26,28 +26,28 @@ const Demo1dCell &cell_at(const std::vector<Demo1dCell> &cells, double position_
 }  // namespace
 
 TEST_CASE("demo 1d: classify follows x < z free, z <= x <= z + behind occupied") {
-  CHECK(mapping::classify(100, 101, 20) == CellUpdate::free);
-  CHECK(mapping::classify(101, 101, 20) == CellUpdate::occupied);  // at the hit: occupied
-  CHECK(mapping::classify(121, 101, 20) == CellUpdate::occupied);  // 20 cm behind: still occupied
-  CHECK(mapping::classify(121.5, 101, 20) == CellUpdate::none);
-  CHECK(mapping::classify(0, 0, 0) == CellUpdate::occupied);
-  CHECK(mapping::classify(10, 0, 0) == CellUpdate::none);
+  CHECK(app::course::classify(100, 101, 20) == CellUpdate::free);
+  CHECK(app::course::classify(101, 101, 20) == CellUpdate::occupied);  // at the hit: occupied
+  CHECK(app::course::classify(121, 101, 20) == CellUpdate::occupied);  // 20 cm behind: still occupied
+  CHECK(app::course::classify(121.5, 101, 20) == CellUpdate::none);
+  CHECK(app::course::classify(0, 0, 0) == CellUpdate::occupied);
+  CHECK(app::course::classify(10, 0, 0) == CellUpdate::none);
 }
 
 TEST_CASE("demo 1d: cell positions 0, r, 2r, ... up to the length") {
   Demo1dOptions o;
-  std::vector<double> x = mapping::cell_positions_cm(o);
+  std::vector<double> x = app::course::cell_positions_cm(o);
   REQUIRE(x.size() == 21);
   CHECK(x.front() == 0.0);
   CHECK(x[11] == 110.0);
   CHECK(x.back() == 200.0);
   o.length_cm = 205;
-  CHECK(mapping::cell_positions_cm(o).size() == 21);
+  CHECK(app::course::cell_positions_cm(o).size() == 21);
   o.length_cm = 0;
-  CHECK(mapping::cell_positions_cm(o).size() == 1);
+  CHECK(app::course::cell_positions_cm(o).size() == 1);
   o.length_cm = 0.3;
   o.resolution_cm = 0.1;  // 0.3 / 0.1 = 2.9999999999999996 in doubles; still 4 cells
-  CHECK(mapping::cell_positions_cm(o).size() == 4);
+  CHECK(app::course::cell_positions_cm(o).size() == 4);
 }
 
 // The textbook exercise by hand. l(0.3) = ln(3/7) = -0.847298, l(0.6) = ln(3/2) = 0.405465,
@@ -63,7 +63,7 @@ TEST_CASE("demo 1d: cell positions 0, r, 2r, ... up to the length") {
 //   cell 180: nearer than no measurement and more than 20 cm behind all: l = 0, p = 0.5
 TEST_CASE("demo 1d: the default exercise, checked by hand") {
   const Demo1dOptions o;
-  const std::vector<Demo1dCell> cells = mapping::integrate(o, o.measurements_cm);
+  const std::vector<Demo1dCell> cells = app::course::integrate(o, o.measurements_cm);
   REQUIRE(cells.size() == 21);
 
   const Demo1dCell &c110 = cell_at(cells, 110);
@@ -87,7 +87,7 @@ TEST_CASE("demo 1d: free and occupied counts of every cell (the exercise as a ta
   const std::vector<int> free{10, 10, 10, 10, 10, 10, 10, 10, 10, 8, 4, 2, 1, 1, 1, 1, 0, 0, 0, 0, 0};
   const std::vector<int> occ{0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 6, 6, 3, 1, 0, 0, 1, 1, 0, 0, 0};
   const Demo1dOptions o;
-  const std::vector<Demo1dCell> cells = mapping::integrate(o, o.measurements_cm);
+  const std::vector<Demo1dCell> cells = app::course::integrate(o, o.measurements_cm);
   for (std::size_t i = 0; i < cells.size(); ++i) {
     CAPTURE(cells[i].position_cm);
     CHECK(cells[i].free_updates == free[i]);
@@ -99,8 +99,8 @@ TEST_CASE("demo 1d: free and occupied counts of every cell (the exercise as a ta
 TEST_CASE("demo 1d: base 10 gives the same beliefs and log-odds divided by ln 10") {
   Demo1dOptions o;
   o.model.base = mapping::LogBase::ten;
-  const std::vector<Demo1dCell> ten = mapping::integrate(o, o.measurements_cm);
-  const std::vector<Demo1dCell> e = mapping::integrate(Demo1dOptions{}, o.measurements_cm);
+  const std::vector<Demo1dCell> ten = app::course::integrate(o, o.measurements_cm);
+  const std::vector<Demo1dCell> e = app::course::integrate(Demo1dOptions{}, o.measurements_cm);
   // cell 110: 6 * log10(1.5) - 2 * log10(7/3) = 6 * 0.176091 - 2 * 0.367977 = 0.320593
   CHECK(cell_at(ten, 110).log_odds == doctest::Approx(0.320593).epsilon(1e-6));
   for (std::size_t i = 0; i < ten.size(); ++i) {
@@ -112,7 +112,7 @@ TEST_CASE("demo 1d: base 10 gives the same beliefs and log-odds divided by ln 10
 TEST_CASE("demo 1d: a measurement beyond the length frees every cell") {
   Demo1dOptions o;
   o.measurements_cm = {250};
-  for (const Demo1dCell &c : mapping::integrate(o, o.measurements_cm)) {
+  for (const Demo1dCell &c : app::course::integrate(o, o.measurements_cm)) {
     CHECK(c.free_updates == 1);
     CHECK(c.occupied_updates == 0);
   }
@@ -120,26 +120,26 @@ TEST_CASE("demo 1d: a measurement beyond the length frees every cell") {
 
 TEST_CASE("demo 1d: order independence over 1,000 random permutations") {
   const Demo1dOptions o;
-  const std::vector<Demo1dCell> original = mapping::integrate(o, o.measurements_cm);
+  const std::vector<Demo1dCell> original = app::course::integrate(o, o.measurements_cm);
   common::Rng rng(2024);
   std::vector<double> order = o.measurements_cm;
   for (int trial = 0; trial < 1000; ++trial) {
     rng.shuffle(std::span<double>(order));
-    const std::vector<Demo1dCell> permuted = mapping::integrate(o, order);
+    const std::vector<Demo1dCell> permuted = app::course::integrate(o, order);
     REQUIRE(permuted.size() == original.size());
     for (std::size_t i = 0; i < original.size(); ++i) {
       CHECK(permuted[i].free_updates == original[i].free_updates);
       CHECK(permuted[i].occupied_updates == original[i].occupied_updates);
     }
-    CHECK(mapping::max_log_odds_difference(original, permuted) <= mapping::kOrderTolerance);
+    CHECK(app::course::max_log_odds_difference(original, permuted) <= app::course::kOrderTolerance);
   }
 }
 
 TEST_CASE("demo 1d: shuffled is a seeded permutation") {
-  const std::vector<double> &given = mapping::kDemo1dMeasurementsCm;
-  const std::vector<double> a = mapping::shuffled(given, 7);
-  CHECK(a == mapping::shuffled(given, 7));
-  CHECK(a != mapping::shuffled(given, 8));
+  const std::vector<double> &given = app::course::kDemo1dMeasurementsCm;
+  const std::vector<double> a = app::course::shuffled(given, 7);
+  CHECK(a == app::course::shuffled(given, 7));
+  CHECK(a != app::course::shuffled(given, 8));
   std::vector<double> sorted_a = a;
   std::vector<double> sorted_given = given;
   std::sort(sorted_a.begin(), sorted_a.end());

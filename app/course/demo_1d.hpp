@@ -29,7 +29,7 @@
 
 #include "mapping/sensor_model.hpp"
 
-namespace mapping {
+namespace app::course {
 
 // The exercise's measurements, in cm, in the order they arrive.
 inline const std::vector<double> kDemo1dMeasurementsCm{101, 82, 91, 112, 99, 151, 96, 85, 99, 105};
@@ -43,7 +43,7 @@ struct Demo1dOptions {
   double resolution_cm = 10.0;  // spacing of the cells, > 0
   double length_cm = 200.0;     // position of the last cell at most, >= 0
   double behind_cm = 20.0;      // depth of the occupied stretch behind a hit, >= 0
-  SensorModelOptions model;     // p_free, p_occ, prior, base (clamp unused: it breaks order independence)
+  mapping::SensorModelOptions model;   // p_free, p_occ, prior, base (clamp unused: it breaks order independence)
 };
 
 // Throws common::InputError naming the option and its value when the options cannot be used
@@ -84,4 +84,4 @@ double max_log_odds_difference(std::span<const Demo1dCell> a, std::span<const De
 // this: floating-point addition is not associative, so another order may change the last bits.
 inline constexpr double kOrderTolerance = 1e-9;
 
-}  // namespace mapping
+}  // namespace app::course

@@ -1,0 +1,31 @@
+#pragma once
+// `maze_mapper demo cone`: the sensor-model lecture's cone sweep for the Khepera III's IR and
+// sonar (sensing/cone_sweep.hpp for the loop, docs/lab-cone.md for the exercise), from its
+// options as typed to the text it prints: the lecture's numbers, each radius's step, the
+// marked cells and how the maze run's cone model differs; on request the cells' CSV and a
+// picture with the beam's edges.
+
+#include <string>
+
+namespace app::course {
+
+// demo cone's options as typed; a range or resolution not given is the sensor's default
+// (0.2 m and 0.01 m for ir, 1 m and 0.05 m for sonar: the reading 20 cells away).
+struct DemoConeInput {
+  std::string sensor = "ir";  // ir or sonar
+  double range_m = 0.0;
+  double resolution_m = 0.0;
+  bool range_given = false;
+  bool resolution_given = false;
+  std::string pose;      // X,Y,YAW (app/run/option_values.hpp's parse_pose); empty: 0,0,90
+  std::string csv_path;  // i,j of the marked cells
+  std::string png_path;  // the picture; SVG or PDF when the name ends in .svg or .pdf
+};
+
+// Checks the input (common::InputError naming the option: "--sensor must be ir or sonar (got
+// x)", "--range must be > 0 m (got 0)", a range over 10,000 cells, a pose more than 1e6 cells
+// from 0,0), prints a pose's warning on standard error, writes the files asked for and
+// returns the text.
+std::string run_demo_cone(const DemoConeInput &input);
+
+}  // namespace app::course

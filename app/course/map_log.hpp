@@ -1,0 +1,40 @@
+#pragma once
+// `maze_mapper map-log LOG.csv`: a pose + bump/depth log mapped onto a numCells grid, the
+// Cornell-style homework (sensing/log_map.hpp for the rule, docs/lab-map-log.md), from its
+// options as typed to the text it prints: the set-up, the final log-odds (north row first)
+// and the thresholded map; with --out the grids and pictures, the final ones and snapshots.
+//
+// The log is a CSV file: a header line naming t,x,y,theta and bump_right,bump_left,bump_front
+// or depth_1 ... depth_9, in any order among other columns (run --out's trace.csv names do
+// too: time_s, gps_x_m, gps_y_m, imu_yaw_rad, depth_N_m), then one line a time step.
+
+#include <string>
+
+#include "sensing/log_map.hpp"
+
+namespace app::course {
+
+// map-log's options as typed: the numbers in `options`, the lists as text.
+struct MapLogInput {
+  std::string log_path;
+  std::string sensor;          // bump or depth; empty: from the log's columns
+  std::string cells = "25,25";  // X,Y
+  std::string boundary;        // XS,XE,YS,YE, m (required)
+  std::string base = "10";     // e or 10
+  std::string depth_angles;    // A1,...,A9, deg, left positive
+  std::string depth_reading = "range";  // range or axial
+  std::string depth_origin;    // X,Y in the robot's frame, m
+  std::string snapshots;       // F1,F2,...: fractions of the log (needs out_dir)
+  std::string out_dir;         // empty: no files
+  double threshold = -0.5;     // log-odds at or above which a cell is drawn W
+  sensing::LogMapOptions options;
+  bool bump_options_given = false;   // --bump-radius
+  bool depth_options_given = false;  // --depth-angles, --depth-max, --depth-reading, --depth-origin
+};
+
+// Checks the options and the log (common::InputError naming the option, or the log's
+// FILE:LINE:COL for a bad line), refuses an option of the other sensor, warns on standard
+// error about poses outside the boundary, writes --out's files and returns the text.
+std::string run_map_log(const MapLogInput &input);
+
+}  // namespace app::course
