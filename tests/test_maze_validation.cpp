@@ -16,7 +16,7 @@ struct Case {
   const char *diagnostic;  // after the path
 };
 
-std::string diagnostic_of(const std::string &path) {
+std::string load_diagnostic_of(const std::string &path) {
   try {
     maze::load_world(path);
   } catch (const common::InputError &e) {
@@ -78,13 +78,13 @@ TEST_CASE("validation: every fault is named, with its place, to the letter") {
   };
   for (const Case &c : cases) {
     CAPTURE(c.file);
-    CHECK(diagnostic_of(world_fixture(c.file)) == world_fixture(c.file) + c.diagnostic);
+    CHECK(load_diagnostic_of(world_fixture(c.file)) == world_fixture(c.file) + c.diagnostic);
   }
 }
 
 TEST_CASE("validation: a file that cannot be read says why") {
-  CHECK(diagnostic_of("/nonexistent/lab.txt") == "error: cannot read /nonexistent/lab.txt: No such file or directory");
-  CHECK(diagnostic_of(TEST_DATA_DIR) == std::string("error: cannot read ") + TEST_DATA_DIR + ": Is a directory");
+  CHECK(load_diagnostic_of("/nonexistent/lab.txt") == "error: cannot read /nonexistent/lab.txt: No such file or directory");
+  CHECK(load_diagnostic_of(TEST_DATA_DIR) == std::string("error: cannot read ") + TEST_DATA_DIR + ": Is a directory");
 }
 
 TEST_CASE("validation: unreachable cells are a warning, not an error") {
