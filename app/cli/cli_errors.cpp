@@ -149,6 +149,16 @@ const CLI::Option *short_of_values(const CLI::App &cli, const std::vector<std::s
   return nullptr;
 }
 
+// An option of the chosen command given more values than it takes (CLI11 hands it every
+// word up to the next option), or none.
+const CLI::Option *past_its_values(const CLI::App &cli) {
+  for (const CLI::Option *o : chosen(cli).get_options()) {
+    const int most = o->get_items_expected_max();
+    if (most > 0 && o->results().size() > static_cast<std::size_t>(most)) return o;
+  }
+  return nullptr;
+}
+
 // The value a numeric option's type asks for, in words; "" for another type.
 std::string wanted_number(const std::string &type_name) {
   if (type_name == "INT") return "a whole number";
@@ -222,6 +232,10 @@ std::string describe_usage_error(const CLI::App &cli, const CLI::ParseError &err
     if (!extras.empty()) return unexpected(cli, extras);
   }
   if (dynamic_cast<const CLI::ArgumentMismatch *>(&error) != nullptr) {
+    if (const CLI::Option *o = past_its_values(cli)) {
+      const auto &values = o->results();
+      return unexpected(cli, {values.begin() + o->get_items_expected_max(), values.end()});
+    }
     if (const CLI::Option *o = short_of_values(cli, words)) {
       const int needed = o->get_items_expected_min();
       const std::size_t got = o->results().size();

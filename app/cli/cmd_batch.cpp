@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "app/cli/cli_options.hpp"
 #include "app/cli/mms_options.hpp"
 #include "app/cli/run_cli.hpp"
+#include "app/run/progress_line.hpp"
 #include "app/run/terminal.hpp"
 #include "app/cli/commands.hpp"
 #include "common/atomic_file.hpp"
@@ -35,16 +37,6 @@ struct BatchInput {
   std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
   std::string merge_out;                // batch merge -o FILE
 };
-
-// "[#########           ] 9/20" on one line of stderr, redrawn in place.
-void draw_progress(std::size_t done, std::size_t total) {
-  constexpr std::size_t kWidth = 30;
-  const std::size_t filled = total == 0 ? kWidth : done * kWidth / total;
-  fmt::print(stderr, "\r[{}{}] {}/{}", std::string(filled, '#'), std::string(kWidth - filled, ' '),
-             done, total);
-  if (done == total) fmt::print(stderr, "\r\x1b[K");
-  std::fflush(stderr);
-}
 
 // batch merge: the parts' rows joined into one CSV (-o FILE, else stdout), and the totals
 // recomputed from them (stdout with -o, else stderr).
@@ -122,13 +114,17 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
       return;
     }
     const auto started = std::chrono::steady_clock::now();
+    std::optional<BatchProgressLine> progress_line;
     std::function<void(std::size_t, std::size_t)> progress;
-    if (is_terminal(STDERR_FILENO)) progress = draw_progress;
+    if (is_terminal(STDERR_FILENO)) {
+      progress_line.emplace(STDERR_FILENO);
+      progress = [&progress_line](std::size_t done, std::size_t total) { progress_line->update(done, total); };
+    }
     const common::SignalsStopWork stop_signals;  // until the CSV holds the finished runs
     const std::vector<BatchJob> batch_jobs = batch->each_start ? each_start_jobs(list.worlds, options.world_overrides)
                                                                : plain_jobs(list.worlds);
     const std::vector<BatchItem> items = run_batch(options, batch_jobs, jobs, progress, &common::interrupted);
-    if (progress) fmt::print(stderr, "\r\x1b[K");
+    progress_line.reset();  // cleared before the table
     const double elapsed_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     for (const BatchItem &item : items) {

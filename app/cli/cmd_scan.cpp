@@ -1,7 +1,8 @@
 // maze_mapper scan WORLD --pose X,Y,YAW [--robot NAME] [--noise X] [--seed N]
 // Prints one lidar range image at a pose: `index angle_rad range_m` a line, `inf` for no return.
 // The pose is spelled as everywhere (app/cli/cli_options.hpp: YAW in degrees, or 1.5708rad); the
-// old `--pose X Y YAW` (three words, YAW in radians or 90deg) still works, with a warning.
+// old `--pose X Y YAW` (three words, YAW in radians within a turn, or 90deg) still works, with
+// a warning, for one release.
 
 #include <charconv>
 #include <cmath>
@@ -70,31 +71,38 @@ double yaw_rad(const std::string &text) {
       "--pose YAW must be a finite number of radians, or of degrees with a deg suffix like 90deg (got '{}')", text));
 }
 
-// The pose from --pose's words: one word X,Y,YAW (the words after it, when WORLD was not given
-// before, are WORLD: CLI11 gives --pose up to three), or the old three words X Y YAW.
+// The old spelling's YAW: radians (kept for one release), or degrees with a deg suffix. A
+// YAW in radians beyond a turn is refused: written as `--pose 0.5 0.5 90` it is meant as
+// degrees, and 90 radians would scan another way without a word.
+double old_spelling_yaw_rad(const std::string &x, const std::string &y, const std::string &yaw) {
+  const double value = yaw_rad(yaw);
+  if (!yaw.ends_with("deg") && std::abs(value) > 2.0 * std::numbers::pi) {
+    throw common::InputError(fmt::format("--pose {} {} {}: this old spelling's YAW is in radians, and {} radians is more "
+                                         "than a turn; for {} degrees write --pose {},{},{}",
+                                         x, y, yaw, yaw, yaw, x, y, yaw));
+  }
+  return value;
+}
+
+// The pose from --pose's words: one word X,Y,YAW, or the old three words X Y YAW; the word
+// after them, when WORLD was not given before, is WORLD (CLI11 gives --pose up to four).
 maze::sim::Pose scan_pose(ScanArgs &args, std::vector<std::string> &warnings) {
   const std::vector<std::string> &words = args.pose;
-  if (words.size() == 3 && words[0].find(',') == std::string::npos) {
-    if (args.world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
-    const double x = metres(words[0], "X");
-    const double y = metres(words[1], "Y");
-    const double yaw = yaw_rad(words[2]);
-    const bool in_degrees = words[2].ends_with("deg");
-    const double degrees = yaw * 180.0 / std::numbers::pi;
-    warnings.push_back(old_spelling_warning(fmt::format("--pose {} {} {}", words[0], words[1], words[2]),
-                                            fmt::format("--pose {:g},{:g},{:g} (YAW in degrees)", x, y, degrees)));
-    if (!in_degrees && std::abs(yaw) > 2.0 * std::numbers::pi) {
-      warnings.push_back(fmt::format("warning: --pose YAW {} is taken as radians ({:g} degrees); for {} degrees write "
-                                     "--pose {:g},{:g},{}",
-                                     words[2], degrees, words[2], x, y, words[2]));
-    }
-    return {x, y, yaw};
-  }
-  for (std::size_t i = 1; i < words.size(); ++i) {
+  const bool old_spelling = words.size() >= 3 && words[0].find(',') == std::string::npos;
+  for (std::size_t i = old_spelling ? 3 : 1; i < words.size(); ++i) {
     if (!args.world.empty()) throw common::InputError(fmt::format("scan: unexpected argument '{}'", words[i]));
     args.world = world_argument(words[i]);
   }
   if (args.world.empty()) throw common::InputError("scan needs a WORLD (a maze file) before or after --pose");
+  if (old_spelling) {
+    const double x = metres(words[0], "X");
+    const double y = metres(words[1], "Y");
+    const double yaw = old_spelling_yaw_rad(words[0], words[1], words[2]);
+    warnings.push_back(old_spelling_warning(fmt::format("--pose {} {} {}", words[0], words[1], words[2]),
+                                            fmt::format("--pose {:g},{:g},{:g} (YAW in degrees)", x, y,
+                                                        yaw * 180.0 / std::numbers::pi)));
+    return {x, y, yaw};
+  }
   const PoseArgument pose = parse_pose(words[0], "--pose", warnings);
   return {pose.x_m, pose.y_m, pose.yaw_rad};
 }
@@ -111,7 +119,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   CLI::Option *pose = scan->add_option("--pose", args->pose,
                                        "X,Y,YAW: position in metres (world frame) and heading in degrees, "
                                        "counter-clockwise from east (1.5708rad: in radians)");
-  pose->expected(1, 3)->required();
+  pose->expected(1, 4)->required();
   show_as_required(*pose);
   scan->add_option("--robot", args->robot,
                    fmt::format("NAME or FILE.json: robot profile with a lidar, one of {} (default {})", robot_names(),

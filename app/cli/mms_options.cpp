@@ -7,11 +7,13 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "app/batch/mms_batch.hpp"
+#include "app/run/progress_line.hpp"
 #include "app/run/terminal.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -85,18 +87,17 @@ int run_mms_batch_command(const CLI::App &command, const RunOptions &options, Mm
   check_mms_command_line(command);
   mms.command = child_command;
   validate(mms);
+  std::optional<BatchProgressLine> progress_line;
   std::function<void(std::size_t, std::size_t)> progress;
   if (is_terminal(STDERR_FILENO)) {
-    progress = [](std::size_t done, std::size_t total) {
-      fmt::print(stderr, "\r{}/{}", done, total);
-      if (done == total) fmt::print(stderr, "\r\x1b[K");
-      std::fflush(stderr);
-    };
+    progress_line.emplace(STDERR_FILENO);
+    progress = [&progress_line](std::size_t done, std::size_t total) { progress_line->update(done, total); };
   }
   const auto started = std::chrono::steady_clock::now();
   const common::SignalsStopWork stop_signals;  // the children are ended and reaped first
   const std::vector<MmsBatchItem> items =
       run_mms_batch(options, mms, list.worlds, jobs, progress, &common::interrupted);
+  progress_line.reset();  // cleared before the table
   const double elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   for (const MmsBatchItem &item : items) {
     if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);

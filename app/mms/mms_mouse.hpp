@@ -10,9 +10,10 @@
 //   wallFrontLeft and the other diagonals: true, as from any cell centre in mms (they aim
 //                   at a corner post)
 //   moveForward N   crash when N < 1, N > kMaxMoveCells or a wall is right ahead (nothing
-//                   moves, nothing counted); else the robot
-//                   drives cell by cell, looking at each side before crossing it, and stops
-//                   before a wall on the way (crash), else ack
+//                   moves, nothing counted); else the robot drives the straight in legs
+//                   over the cells known open (each leg accelerating and decelerating once,
+//                   with the robot's speed profile), looking at each side not known before
+//                   crossing it, and stops before a wall on the way (crash), else ack
 //   turns           the robot turns in place; ack
 //   wasReset        false (there is no reset button); ackReset drives the robot back to the
 //                   start on the known way (mms lifts it there), the 15-point penalty; ack

@@ -1,5 +1,6 @@
 #include "app/run/evaluation.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 namespace app {
@@ -41,6 +42,11 @@ void for_each_scored_side_in_row(const maze::Maze &truth, const std::vector<bool
 void for_each_scored_side(const maze::Maze &truth, const std::vector<bool> &reachable,
                           const std::function<void(maze::Cell, maze::Side)> &scored) {
   for (int y = 0; y < truth.height(); ++y) for_each_scored_side_in_row(truth, reachable, y, scored);
+}
+
+int count_reachable_cells(const maze::Maze &truth) {
+  const std::vector<bool> reachable = truth.reachable_from_start();
+  return static_cast<int>(std::count(reachable.begin(), reachable.end(), true));
 }
 
 MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,

@@ -68,6 +68,9 @@ struct WrongSides {
 WrongSides wrong_sides_where_looked(const maze::Maze &truth, const std::vector<bool> &looked,
                                     const std::function<LearnedSide(maze::Cell, maze::Side)> &learned);
 
+// The cells reachable from the start: the most a run can visit, coverage's denominator.
+int count_reachable_cells(const maze::Maze &truth);
+
 // visited[y * W + x] says whether the robot stood in cell (x, y); learned(cell, side) is the
 // controller's belief about that side. Costs O(W * H).
 MapScore score_map(const maze::Maze &truth, const std::vector<bool> &visited,

@@ -30,6 +30,7 @@
 #include "app/run/plan_path.hpp"
 #include "app/run/step_limit.hpp"
 #include "app/run/profile_json.hpp"
+#include "app/run/progress_line.hpp"
 #include "app/run/terminal.hpp"
 
 namespace app {
@@ -305,7 +306,7 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
                                       style.subcell_columns));
   }
   std::optional<ProgressLine> progress;
-  if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, truth.width() * truth.height());
+  if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, count_reachable_cells(truth));
   RunRecorder *const recorder = controls.recorder;
   if (printer || animator || o.step || recorder || progress) {
     hooks.on_move = [&](const robot::MoveReport &report) {

@@ -16,38 +16,8 @@
 #include "common/error.hpp"
 
 namespace app {
-namespace {
-
-// Writes all of text to fd; a terminal that refuses is left alone (progress is a courtesy).
-void write_all(int fd, const std::string &text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n <= 0) return;
-    done += static_cast<std::size_t>(n);
-  }
-}
-
-}  // namespace
 
 bool is_terminal(int fd) { return ::isatty(fd) == 1; }
-
-ProgressLine::ProgressLine(int fd, int maze_cells)
-    : fd_(fd), maze_cells_(maze_cells), started_(std::chrono::steady_clock::now()), next_draw_(started_) {}
-
-ProgressLine::~ProgressLine() {
-  if (drawn_) write_all(fd_, "\r\x1b[K");
-}
-
-void ProgressLine::update(int moves, int visited, double sim_time_s) {
-  const auto now = std::chrono::steady_clock::now();
-  if (now < next_draw_) return;
-  next_draw_ = now + std::chrono::milliseconds(100);
-  const double elapsed_s = std::chrono::duration<double>(now - started_).count();
-  write_all(fd_, fmt::format("\r\x1b[Kmoves {}  visited {}/{} cells  sim {:.1f} s  elapsed {:.1f} s", moves, visited,
-                             maze_cells_, sim_time_s, elapsed_s));
-  drawn_ = true;
-}
 
 int progress_fd(bool quiet, bool animate) {
   if (animate || !is_terminal(STDERR_FILENO)) return -1;

@@ -40,27 +40,6 @@ int subcell_columns(std::optional<int> asked, int fd, int map_subcells_wide);
 // saying how to see the map whole (a file, --animate's window, --out's pictures).
 void note_if_too_wide(int fd, int map_subcells_wide, int columns);
 
-// A long run's one-line progress on a terminal (fd), as batch has: moves, cells visited of the
-// maze's, simulated and elapsed seconds, redrawn in place at most ten times a second and
-// cleared when destroyed. Only where nothing else draws on that terminal: never in pipes,
-// files or goldens (progress_fd says where).
-class ProgressLine {
- public:
-  ProgressLine(int fd, int maze_cells);
-  ~ProgressLine();
-  ProgressLine(const ProgressLine &) = delete;
-  ProgressLine &operator=(const ProgressLine &) = delete;
-
-  void update(int moves, int visited, double sim_time_s);
-
- private:
-  int fd_;
-  int maze_cells_;
-  std::chrono::steady_clock::time_point started_;
-  std::chrono::steady_clock::time_point next_draw_;
-  bool drawn_ = false;
-};
-
 // The terminal `run` draws its progress line on: standard error when it is a terminal and
 // the map does not go to that screen (--quiet, or standard output redirected) and --animate
 // is off; -1 (none) otherwise.

@@ -73,7 +73,7 @@ struct CellController::Impl {
     return Motion::ok;
   }
 
-  bool ramped() const { return body.options.motion.ramp_acceleration_m_s2 > 0.0 && body.options.motion.ramp_top_speed_m_s > 0.0; }
+  bool ramped() const { return has_ramp(body.options.motion); }
 
   // Drives a route cell by cell, without mapping; counts the cells driven.
   Motion follow(const std::vector<Heading> &route, int &cells) {

@@ -63,14 +63,15 @@ Motion CommandController::move(Heading h) {
 
 Motion CommandController::move_straight(Heading h, int cells) {
   CellRobot &b = *body_;
-  if (cells <= 1) return cells == 1 ? move(h) : Motion::ok;
+  const bool ramped = has_ramp(b.options.motion);
+  if (cells < 1) return Motion::ok;
+  if (cells == 1 && !ramped) return move(h);
   if (const Motion s = turn_to(h); s != Motion::ok) return s;
   Cell last = b.cell;
   for (int i = 0; i < cells; ++i) last = mapping::neighbour(last, h);
   const mapping::Point target = b.grid.centre_of(last);
   const double distance_m = cells * b.options.geometry.cell_size_m;
   const std::string what = fmt::format("cell ({},{})", last.x, last.y);
-  const bool ramped = b.options.motion.ramp_acceleration_m_s2 > 0.0 && b.options.motion.ramp_top_speed_m_s > 0.0;
   if (const Motion s = ramped ? b.drive.drive_ramped(target, h, distance_m, what) : b.drive.drive_to(target, h, distance_m, what);
       s != Motion::ok) {
     return s;

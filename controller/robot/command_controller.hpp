@@ -53,8 +53,8 @@ class CommandController {
   // last (scan, the set-up's arrival; the cells passed are recorded as visited, no stop or
   // scan in them). The leg accelerates once, cruises and decelerates once: with the robot's
   // speed-run profile (ControllerOptions::motion's ramp) its trapezoid, as the speed run's
-  // straights, else the drive's own speed law to the last cell. One cell is move(). The
-  // caller checks every side on the way is open.
+  // straights, one cell too; else the drive's own speed law to the last cell (one cell is
+  // then move()). The caller checks every side on the way is open.
   Motion move_straight(mapping::Heading h, int cells);
   // Drives back to the start cell on the shortest route through sides known open (without
   // mapping) and turns to the start heading; `found` false (nothing driven) when there is

@@ -69,6 +69,11 @@ struct MotionOptions {
   double ramp_top_speed_m_s = 0.0;
 };
 
+// Whether straights are ramped legs (the robot's description gives a ramp).
+inline bool has_ramp(const MotionOptions &options) {
+  return options.ramp_acceleration_m_s2 > 0.0 && options.ramp_top_speed_m_s > 0.0;
+}
+
 // Throws common::InputError when a number is unusable: positive sizes, speeds and
 // tolerances, gains in (0, 1], stall_steps and max_steps >= 1, time_step_ms >= 0.
 void validate(const MotionOptions &options);

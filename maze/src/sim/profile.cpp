@@ -22,6 +22,11 @@ constexpr double kDeg = kPi / 180.0;
 // (RotationalMotor maxVelocity), axle 0.184 m (the wheel joints at +-0.092 m). The body
 // radius is not in the course material: 0.09 m is our choice (the bounding box is
 // 0.15 x 0.14 m).
+// The straights a robot drives in one leg (the speed run's, mms's moveForward) ramp: the
+// proto sets no acceleration on its motors (Webots' default, unlimited), while a real
+// robot's wheels speed up at a finite rate. 1 m/s^2 is our choice: its motors' top speed,
+// 18 rad/s x 0.045 m = 0.81 m/s, is then reached in 0.81 s over a third of a 1 m cell, so a
+// move of one cell speeds up and slows down visibly, as the real robot's does.
 RobotProfile base_robot(std::string name, std::string description) {
   RobotProfile p;
   p.name = std::move(name);
@@ -36,6 +41,7 @@ RobotProfile base_robot(std::string name, std::string description) {
   p.right_encoder = "right wheel encoder";
   p.imu = "imu";
   p.gps = "gps";
+  p.speed_run = SpeedRunProfile{1.0, 0.81};
   return p;
 }
 

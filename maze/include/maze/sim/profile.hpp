@@ -104,9 +104,10 @@ struct BumperSpec {
   bool operator==(const BumperSpec &) const = default;
 };
 
-// How a robot built for racing drives the micromouse speed run: each straight of the known
-// path as one leg, speeding up at acceleration_m_s2 to top_speed_m_s and slowing down to stop
-// at its end (a trapezoidal speed profile), instead of stopping in every cell.
+// How the robot drives a straight in one leg (each straight of the speed run's known path,
+// each mms moveForward): speeding up at acceleration_m_s2 to top_speed_m_s (capped by the
+// motors) and slowing down to stop at its end (a trapezoidal speed profile), instead of
+// stopping in every cell. The search drives cell by cell at the cruise speed either way.
 struct SpeedRunProfile {
   double acceleration_m_s2 = 0.0;
   double top_speed_m_s = 0.0;
@@ -126,7 +127,7 @@ struct RobotProfile {
   std::vector<LidarSpec> lidars;
   std::vector<DistanceSensorSpec> distance_sensors;
   std::vector<BumperSpec> bumpers;
-  std::optional<SpeedRunProfile> speed_run;  // none: the speed run drives cell by cell
+  std::optional<SpeedRunProfile> speed_run;  // none: straights are driven cell by cell
   bool operator==(const RobotProfile &) const = default;
 };
 

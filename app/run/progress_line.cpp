@@ -1,0 +1,91 @@
+#include "app/run/progress_line.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <fmt/format.h>
+
+namespace app {
+namespace {
+
+constexpr const char *kClearLine = "\r\x1b[K";
+
+// Writes all of text to fd; a terminal that refuses is left alone (progress is a courtesy).
+void write_progress(int fd, const std::string &text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+std::string format_clock(double seconds) {
+  const auto whole = std::isfinite(seconds) && seconds > 0.0 ? static_cast<std::int64_t>(std::llround(seconds)) : 0;
+  const std::int64_t h = whole / 3600;
+  const std::int64_t m = whole / 60 % 60;
+  const std::int64_t s = whole % 60;
+  if (h > 0) return fmt::format("{}:{:02}:{:02}", h, m, s);
+  return fmt::format("{}:{:02}", m, s);
+}
+
+int percent_done(std::size_t done, std::size_t total) {
+  if (total == 0 || done >= total) return 100;
+  return static_cast<int>(done * 100 / total);
+}
+
+std::string format_run_progress(int moves, int visited, int reachable_cells, double sim_time_s, double elapsed_s) {
+  const auto percent = percent_done(static_cast<std::size_t>(std::max(visited, 0)),
+                                    static_cast<std::size_t>(std::max(reachable_cells, 0)));
+  return fmt::format("moves {}  visited {}/{} reachable cells ({}%)  sim {:.1f} s  elapsed {:.1f} s", moves, visited,
+                     reachable_cells, percent, sim_time_s, elapsed_s);
+}
+
+std::string format_batch_progress(std::size_t done, std::size_t total, double elapsed_s) {
+  constexpr std::size_t kWidth = 30;
+  const std::size_t filled = total == 0 || done >= total ? kWidth : done * kWidth / total;
+  std::string line = fmt::format("[{}{}] {:3}%  {}/{} worlds", std::string(filled, '#'), std::string(kWidth - filled, ' '),
+                                 percent_done(done, total), done, total);
+  if (done > 0 && done < total) {
+    const double left_s = elapsed_s / static_cast<double>(done) * static_cast<double>(total - done);
+    line += fmt::format("  {} left", format_clock(left_s));
+  }
+  return line;
+}
+
+ProgressLine::ProgressLine(int fd, int reachable_cells)
+    : fd_(fd), reachable_cells_(reachable_cells), started_(std::chrono::steady_clock::now()), next_draw_(started_) {}
+
+ProgressLine::~ProgressLine() {
+  if (drawn_) write_progress(fd_, kClearLine);
+}
+
+void ProgressLine::update(int moves, int visited, double sim_time_s) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_draw_) return;
+  next_draw_ = now + std::chrono::milliseconds(100);
+  write_progress(fd_, kClearLine + format_run_progress(moves, visited, reachable_cells_, sim_time_s, seconds_since(started_)));
+  drawn_ = true;
+}
+
+BatchProgressLine::BatchProgressLine(int fd) : fd_(fd), started_(std::chrono::steady_clock::now()) {}
+
+BatchProgressLine::~BatchProgressLine() {
+  if (drawn_) write_progress(fd_, kClearLine);
+}
+
+void BatchProgressLine::update(std::size_t done, std::size_t total) {
+  write_progress(fd_, kClearLine + format_batch_progress(done, total, seconds_since(started_)));
+  drawn_ = true;
+}
+
+}  // namespace app

@@ -1,0 +1,41 @@
+// The progress lines a long run and a batch draw on a terminal: the percentage of a known
+// end and, for a batch, the time left at the rate so far.
+
+#include <doctest/doctest.h>
+
+#include <limits>
+
+#include "app/run/progress_line.hpp"
+
+TEST_CASE("progress: a clock reads m:ss under an hour, h:mm:ss from one, whole seconds rounded") {
+  CHECK(app::format_clock(0.0) == "0:00");
+  CHECK(app::format_clock(7.4) == "0:07");
+  CHECK(app::format_clock(59.6) == "1:00");
+  CHECK(app::format_clock(760.0) == "12:40");
+  CHECK(app::format_clock(3725.0) == "1:02:05");
+  CHECK(app::format_clock(-3.0) == "0:00");
+  CHECK(app::format_clock(std::numeric_limits<double>::infinity()) == "0:00");
+}
+
+TEST_CASE("progress: the percentage is rounded down, so 100% only when all is done") {
+  CHECK(app::percent_done(0, 20) == 0);
+  CHECK(app::percent_done(6, 20) == 30);
+  CHECK(app::percent_done(199, 200) == 99);
+  CHECK(app::percent_done(20, 20) == 100);
+  CHECK(app::percent_done(0, 0) == 100);
+}
+
+TEST_CASE("progress: a batch shows its bar, the worlds done of all, and the time left at the rate so far") {
+  // 6 worlds in 18 s: 3 s a world, 14 to go: 42 s.
+  CHECK(app::format_batch_progress(6, 20, 18.0) == "[#########                     ]  30%  6/20 worlds  0:42 left");
+  CHECK(app::format_batch_progress(1, 3, 100.0) == "[##########                    ]  33%  1/3 worlds  3:20 left");
+  // No rate before the first world, nothing left after the last.
+  CHECK(app::format_batch_progress(0, 4, 5.0) == "[                              ]   0%  0/4 worlds");
+  CHECK(app::format_batch_progress(4, 4, 5.0) == "[##############################] 100%  4/4 worlds");
+}
+
+TEST_CASE("progress: a run shows the cells visited of the reachable ones, as a percentage") {
+  CHECK(app::format_run_progress(41, 30, 36, 96.43, 1.24) ==
+        "moves 41  visited 30/36 reachable cells (83%)  sim 96.4 s  elapsed 1.2 s");
+  CHECK(app::format_run_progress(0, 1, 1, 0.0, 0.0) == "moves 0  visited 1/1 reachable cells (100%)  sim 0.0 s  elapsed 0.0 s");
+}
