@@ -4,7 +4,7 @@
 // none does. About 2 s of CPU (the sonar's sweeps 0.5 s, its wavefront 0.4 s), besides the
 // acceptance suite's (optimised builds only): the generated arenas with the lidar (20 runs,
 // 3 s), the sonar and IR cones (40 runs, 3 s) and the IR pie (40 runs, 9 s), and the sonar in
-// the two floor-bounded shipped arenas (3 s).
+// the two walled shipped arenas (3 s).
 
 #include <doctest/doctest.h>
 
@@ -131,26 +131,22 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the lidar") {
   }
 }
 
-TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone; the IR cone never says done falsely") {
-  // The sonar maps every arena to 99 % (its walls at the edge answer; sweep legs do the rest). The IR
-  // cone stops short on seeds 11 and 13 (97.78 %, 98.59 %: a slanted reading's arc across the
-  // mouth of a 0.4 m corridor) and says so. About 3 s for the 40 runs.
+TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone and the IR cone") {
+  // The sonar maps every arena to 99 % (its walls at the edge answer; sweep legs do the rest).
+  // The IR cone maps all 20: where a slanted reading's arc closes the mouth of a 0.4 m corridor
+  // (seeds 11, 13 and 19), frontier no longer sets every frontier cell aside when none has a
+  // target, but probes through the arc, and ends only when the map no longer changes. About
+  // 4 s for the 40 runs.
   for (const char *robot_name : {"sonar-ring", "ir-ring"}) {
     for (int seed = 1; seed <= 20; ++seed) {
       std::ostringstream out;
       app::RoomRunOptions o = frontier_options(kSetUps[1]);
       o.robot = robot_name;
       const app::RoomSummary s = app::run_room_in(generated_arena(seed), o, out);
-      INFO("seed ", seed, " ", robot_name, ": ", robot::to_string(s.ending), ": ", s.message);
-      if (std::string(robot_name) == "sonar-ring") {
-        check_mapped(s, "seed " + std::to_string(seed) + " sonar cone");
-        CHECK(s.sweep.has_value());
-      } else {
-        CHECK(!s.sweep.has_value());  // an IR's nothing-seen frees its cone: no sweep
-      }
-      CHECK(s.observed_share() >= 0.97);
-      if (s.ending == robot::MetricEnding::done) CHECK(s.reachable_free_observed == s.reachable_free);
-      CHECK((s.ending == robot::MetricEnding::done || s.ending == robot::MetricEnding::incomplete));
+      const std::string what = "seed " + std::to_string(seed) + " " + robot_name + " cone";
+      check_mapped(s, what);
+      CHECK(s.sweep.has_value() == (std::string(robot_name) == "sonar-ring"));  // an IR's nothing-seen frees its cone
+      CHECK(s.ending == robot::MetricEnding::done);
     }
   }
 }

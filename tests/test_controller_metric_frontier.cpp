@@ -94,8 +94,8 @@ TEST_CASE("metric frontier: the target is the nearest cell reached that sees a f
   CHECK(!explore::frontier_target(m.map, 0.6, aims, 5, visits, nowhere).has_value());
 }
 
-TEST_CASE("metric frontier: a cell left unobserved by three visits is set aside by itself, and tried again once "
-          "the map progressed") {
+TEST_CASE("metric frontier: a cell left unobserved by three visits, or without a target, is set aside by itself, and "
+          "tried again once the map progressed") {
   explore::FrontierVisits visits(4);
   const explore::MapProgress before{10, 20};
   visits.visited(1, true, before);
@@ -115,6 +115,13 @@ TEST_CASE("metric frontier: a cell left unobserved by three visits is set aside 
   CHECK(visits.retry(1, explore::MapProgress{11, 20}));
   CHECK(visits.retry(1, explore::MapProgress{10, 21}));
   CHECK(!visits.retry(0, explore::MapProgress{11, 21}));
+  // A cell without a target in a round where none had one: set aside alone, with no visit.
+  visits.set_aside(3, before);
+  CHECK(visits.aside(3));
+  CHECK(visits.attempts(3) == 0);
+  CHECK(!visits.aside(0));
+  CHECK(!visits.retry(3, before));
+  CHECK(visits.retry(3, explore::MapProgress{12, 20}));
 }
 
 TEST_CASE("metric frontier: the map's progress only grows") {

@@ -94,10 +94,12 @@ std::vector<bool> frontier_cells(const sensing::MetricMap &map) {
 
 void FrontierVisits::visited(std::size_t cell, bool still_unobserved, const MapProgress &now) {
   attempts_[cell] = static_cast<std::uint8_t>(std::min(attempts_[cell] + 1, 255));
-  if (still_unobserved && attempts_[cell] >= kMaxFrontierAttempts) {
-    aside_[cell] = true;
-    aside_at_[cell] = now;
-  }
+  if (still_unobserved && attempts_[cell] >= kMaxFrontierAttempts) set_aside(cell, now);
+}
+
+void FrontierVisits::set_aside(std::size_t cell, const MapProgress &now) {
+  aside_[cell] = true;
+  aside_at_[cell] = now;
 }
 
 std::optional<FrontierTarget> frontier_target(const sensing::MetricMap &map, double free_below_p,

@@ -9,10 +9,10 @@
 //              it: no cell seen occupied (p >= free_below_p) on the line between the centres.
 //              Each visit that left its frontier cell unobserved halves the view it is aimed
 //              at from (at least one cell), so the robot comes closer each time.
-//   set aside  a frontier cell aimed at kMaxFrontierAttempts times and still unobserved, by
-//              itself: the others are still aimed at. It is aimed at again only when no other
-//              frontier cell has a target and the map has progressed since it was set aside
-//              (MapProgress); a frontier cell with no target this round is not set aside.
+//   set aside  by itself, never with the rest: a frontier cell aimed at kMaxFrontierAttempts
+//              times and still unobserved, or one that had no target in a round where no
+//              frontier cell had one. It is aimed at again only when no other frontier cell
+//              has a target and the map has progressed since it was set aside (MapProgress).
 //
 // Cost: O(cells) a round (one breadth-first spread, one sort of the candidates).
 
@@ -52,6 +52,8 @@ class FrontierVisits {
   bool retry(std::size_t cell, const MapProgress &now) const { return aside_[cell] && !(aside_at_[cell] == now); }
   // A visit aimed at `cell` ended; still_unobserved: it left the cell as it was.
   void visited(std::size_t cell, bool still_unobserved, const MapProgress &now);
+  // The cell had no target: set aside until the map has progressed past `now`.
+  void set_aside(std::size_t cell, const MapProgress &now);
 
  private:
   std::vector<std::uint8_t> attempts_;

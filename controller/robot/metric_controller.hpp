@@ -21,9 +21,9 @@
 //              robot's centre has driven through) to the frontier's target
 //              (explore/metric_frontier.hpp: the nearest cell within view_m of a frontier
 //              cell that sees it), drive the path, then turn a full turn there scanning. A
-//              frontier cell still unobserved after visits that aimed at it is set aside by
-//              itself, and tried again once the map has progressed; one with no target this
-//              round is only skipped. When no frontier cell has a target, a probe drives
+//              frontier cell still unobserved after visits that aimed at it, or left without
+//              a target in a round where none had one, is set aside by itself, and tried again
+//              once the map has progressed. When no frontier cell has a target, a probe drives
 //              through the cells the map closes (explore/metric_sweep.hpp). Ends `done` when
 //              no frontier is left, `incomplete` (with how many cells, and why) when frontier
 //              cells are left and no target, retry or probe remains: the map no longer changes.

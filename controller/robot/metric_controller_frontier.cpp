@@ -139,20 +139,27 @@ MetricEnding MetricController::run_frontier() {
   for (;;) {
     const std::vector<bool> frontier = explore::frontier_cells(map_);
     frontier_left_ = count_of(frontier);
-    if (frontier_left_ == 0) {
-      message_ = "no frontier left";
-      return MetricEnding::done;
-    }
     const std::vector<bool> blocked = obstacles(true);
     const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, map_.index(robot_cell()));
     // Sweep the frontier the body can cover before looking from afar: a look observes only
-    // what echoes, a sweep every cell the body goes over.
+    // what echoes, a sweep every cell the body goes over (and probes past arcs that hide
+    // unobserved ground, frontier or not).
     std::optional<explore::SweepLeg> leg;
     if (body_observes_) leg = next_sweep_leg(steps, swept, false);
+    if (!leg && frontier_left_ == 0) {
+      message_ = "no frontier left";
+      return MetricEnding::done;
+    }
     std::optional<explore::FrontierTarget> target;
     if (!leg) target = next_frontier_target(frontier, view_cells, visits, steps, progress);
-    // No frontier cell has a target: a probe through the cells the map closes, whatever the set-up.
-    if (!leg && !target) leg = next_sweep_leg(steps, swept, true);
+    if (!leg && !target) {
+      // No frontier cell has a target: each is set aside by itself, tried again once the map
+      // progresses; a probe through the cells the map closes (whatever the set-up) may make it.
+      for (std::size_t n = 0; n < map_.size(); ++n) {
+        if (frontier[n] && !visits.aside(n)) visits.set_aside(n, progress);
+      }
+      leg = next_sweep_leg(steps, swept, true);
+    }
     if (leg) {
       if (const Motion m = sweep(*leg, blocked); m != Motion::ok) return finish(m);
       if (!covered_or_seen_free(leg->aim)) swept[leg->aim] = true;
@@ -160,9 +167,11 @@ MetricEnding MetricController::run_frontier() {
       if (const Motion m = visit_frontier(*target, blocked); m != Motion::ok) return finish(m);
       visits.visited(target->aim, map_.unobserved_at(target->aim), progress_now(progress));
     } else {
-      std::size_t aside = 0;
-      for (std::size_t n = 0; n < map_.size(); ++n) aside += frontier[n] && visits.aside(n) ? 1U : 0U;
-      message_ = frontier_left_message(frontier_left_ - aside, aside);
+      std::size_t visited = 0;  // set aside after visits; the others had no target
+      for (std::size_t n = 0; n < map_.size(); ++n) {
+        visited += frontier[n] && visits.attempts(n) >= explore::kMaxFrontierAttempts ? 1U : 0U;
+      }
+      message_ = frontier_left_message(frontier_left_ - visited, visited);
       return MetricEnding::incomplete;
     }
     progress = progress_now(progress);
