@@ -52,6 +52,7 @@ void read_start(const std::string &text, RoomRunOptions &o) {
 // The options in the order the help shows them (app/cli/help_format.hpp groups them).
 void add_room_options(CLI::App &cmd, RoomInput &in) {
   RoomRunOptions &o = in.options;
+  o.model.kind = sensing::ModelKind::ray;  // a room's default: the lidar's rays (a maze's is cell)
   accept_shipped_world_names(cmd.add_option("WORLD", o.world, "the world file, or a shipped world's name"))->required();
   add_field_options(cmd, o, {"--strategy", "--model", "--robot", "--cells"});
   add_resolution_option(cmd, o.resolution_m, "0.1");
