@@ -14,16 +14,16 @@ namespace {
 
 struct Made {
   app::RoomRunOptions options;
-  sensing::RoomGridSpec spec;
+  sensing::MetricGridSpec spec;
   app::RoomSummary summary;
 };
 
 Made made() {
   Made m;
   m.options.world = "worlds/ir_room.room";
-  m.options.room.strategy = robot::RoomStrategy::waypoints;
-  m.spec = sensing::room_grid_from_resolution({0.0, 5.0, 0.0, 3.0}, 0.1);
-  m.summary.ending = robot::RoomEnding::arrived;
+  m.options.room.strategy = robot::MetricStrategy::waypoints;
+  m.spec = sensing::metric_grid_from_resolution({0.0, 5.0, 0.0, 3.0}, 0.1);
+  m.summary.ending = robot::MetricEnding::arrived;
   m.summary.message = "reached all 8 waypoints";
   m.summary.steps = 1096;
   m.summary.sim_time_s = 35.072;

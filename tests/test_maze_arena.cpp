@@ -364,8 +364,8 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
     std::size_t obstacles;
   };
   // ir-ring's and the homework's bumper robot's bodies (0.09 m; the Create's bump radius 0.16 m).
-  for (const Shipped &s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 6},
-                          Shipped{"thick_arena.xml", 0.09, 5}}) {
+  for (const Shipped &s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 10},
+                          Shipped{"thick_arena.xml", 0.09, 9}}) {
     CAPTURE(s.file);
     maze::ArenaOverrides robot;
     robot.robot_radius_m = s.robot_radius_m;
@@ -390,7 +390,8 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
   CHECK(room.height_m() == 3);
   CHECK(room.starts[0].x_m == 0.3);
   CHECK(room.goals[0].x_m == 4.7);
-  // The course-style arena has no enclosing walls: the 17 x 17 m floor.
+  // The course-style arena is walled all round, the walls' outer faces on the course's 17 x 17 m
+  // floor, so their box is its boundary.
   const maze::Arena thick = std::get<maze::ArenaWorld>(
       maze::load_any_world(std::string(WORLDS_DIR) + "/thick_arena.xml", {}, {})).arena;
   CHECK(thick.x_min_m == -8.5);

@@ -1,11 +1,15 @@
 #include "app/cli/arena_options.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "app/run/option_values.hpp"
+#include "common/error.hpp"
 
 namespace app {
 
@@ -30,6 +34,22 @@ maze::AnyWorld load_any_world_reporting(const std::string &path, const maze::Wor
   maze::AnyWorld world = maze::load_any_world(path, maze_overrides, arena_overrides);
   for (const std::string &warning : maze::world_warnings(world)) fmt::print(stderr, "{}\n", warning);
   return world;
+}
+
+CLI::Option *add_resolution_option(CLI::App &command, std::optional<double> &resolution_m,
+                                   const std::string &default_text) {
+  return command
+      .add_option_function<std::string>(
+          "--resolution",
+          [&resolution_m](const std::string &text) {
+            const double m = parse_number_list(text, "--resolution", 1)[0];
+            if (!(m > 0.0) || !std::isfinite(m)) {
+              throw common::InputError(fmt::format("--resolution must be > 0 m (got {})", text));
+            }
+            resolution_m = m;
+          },
+          fmt::format("M: a cell's side, m (default {})", default_text))
+      ->type_name("M");
 }
 
 }  // namespace app

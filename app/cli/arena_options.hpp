@@ -13,6 +13,10 @@ namespace app {
 
 // --boundary XS,XE,YS,YE (m): an arena's floor, over the file's or the default one.
 void add_boundary_option(CLI::App &cmd, std::string &boundary);
+// --resolution M: a cell's side in metres, a finite number > 0 (else common::InputError
+// "--resolution must be > 0 m (got 0)"), for every command that lays a grid over an arena
+// (room, show); `default_text` ends the help: "(default <it>)".
+CLI::Option *add_resolution_option(CLI::App &cmd, std::optional<double> &resolution_m, const std::string &default_text);
 // The arena overrides of a --boundary text ("" for none) and the robot's body radius.
 // Throws common::InputError naming --boundary for a text that is not four numbers.
 maze::ArenaOverrides arena_overrides(const std::string &boundary, double robot_radius_m = 0.0);

@@ -79,9 +79,8 @@ void add_show_command(CLI::App &cli, CommandContext &context) {
       cmd->add_option("WORLD", args->world,
                       "maze or arena file: text map, num, XML, .maz or room (detected by content), or a shipped world's name"))
       ->required();
-  cmd->add_option("--resolution", args->resolution_m,
-                  "M: an arena's drawing, metres a cell (default the finest of 0.05, 0.1, 0.2, 0.25, 0.5, 1 ... m "
-                  "that draws it in at most 60 cells a side)");
+  add_resolution_option(*cmd, args->resolution_m,
+                        "the finest of 0.05, 0.1, 0.2, 0.25, 0.5, 1 ... m that draws an arena in at most 60 cells a side");
   add_boundary_option(*cmd, args->boundary);
   cmd->callback([args, &context] {
     const maze::AnyWorld world = load_any_world_reporting(args->world, {}, arena_overrides(args->boundary));

@@ -24,8 +24,8 @@ char arrow_of(double yaw_rad) {
 
 }  // namespace
 
-std::string room_ascii_map(const robot::RoomController &c, double threshold) {
-  const sensing::RoomMap &map = c.map();
+std::string room_ascii_map(const robot::MetricController &c, double threshold) {
+  const sensing::MetricMap &map = c.map();
   std::vector<char> on_path(map.size(), 0);
   for (const std::size_t p : c.path()) on_path[p] = 1;
   const auto robot = map.cell_at(c.position());
@@ -49,7 +49,7 @@ std::string room_ascii_map(const robot::RoomController &c, double threshold) {
   return out;
 }
 
-std::string room_binary_map(const sensing::RoomMap &map, double threshold) {
+std::string room_binary_map(const sensing::MetricMap &map, double threshold) {
   std::string out;
   for (int j = map.cells_y() - 1; j >= 0; --j) {
     for (int i = 0; i < map.cells_x(); ++i) out += map.log_odds({i, j}) >= threshold ? '1' : '0';
@@ -58,7 +58,7 @@ std::string room_binary_map(const sensing::RoomMap &map, double threshold) {
   return out;
 }
 
-std::string room_wave_numbers(const sensing::RoomMap &map, const std::vector<std::int32_t> &wave) {
+std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<std::int32_t> &wave) {
   if (wave.empty()) return "";
   const std::int32_t top = *std::max_element(wave.begin(), wave.end());
   const int width = static_cast<int>(fmt::format("{}", top).size()) + 1;
@@ -75,7 +75,7 @@ std::vector<std::string> room_output_names() {
           "map.png",   "wave.png",    "replay.html",     "snapshots/"};
 }
 
-void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
+void write_room_outputs(const std::string &dir, const sensing::MetricMap &map, const std::string &trace,
                         const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures) {
   std::ostringstream csv;
   for (int j = map.cells_y() - 1; j >= 0; --j) {

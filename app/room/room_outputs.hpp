@@ -7,19 +7,19 @@
 #include <vector>
 
 #include "app/room/room_run.hpp"
-#include "robot/room_controller.hpp"
-#include "sensing/room_map.hpp"
+#include "robot/metric_controller.hpp"
+#include "sensing/metric_map.hpp"
 #include "sensing/setups.hpp"
 
 namespace app {
 
 // The ASCII map, north row first: W at or above the threshold, . below, blank never observed,
 // * the last planned path, the robot's arrow.
-std::string room_ascii_map(const robot::RoomController &c, double threshold);
+std::string room_ascii_map(const robot::MetricController &c, double threshold);
 // 1 at or above the threshold, else 0, north row first.
-std::string room_binary_map(const sensing::RoomMap &map, double threshold);
+std::string room_binary_map(const sensing::MetricMap &map, double threshold);
 // The wave's numbers, north row first, right-aligned; "" for an empty wave.
-std::string room_wave_numbers(const sensing::RoomMap &map, const std::vector<std::int32_t> &wave);
+std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<std::int32_t> &wave);
 // A file the run made, by its name in the output folder (e.g. "snapshots/t15s.png").
 struct RoomFile {
   std::string name;
@@ -31,7 +31,7 @@ std::vector<std::string> room_output_names();
 
 // Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json and the
 // pictures (map.png, wave.png, snapshots/...) into dir, each atomically.
-void write_room_outputs(const std::string &dir, const sensing::RoomMap &map, const std::string &trace,
+void write_room_outputs(const std::string &dir, const sensing::MetricMap &map, const std::string &trace,
                         const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures);
 
 }  // namespace app

@@ -10,7 +10,7 @@
 
 #include "app/picture/figure.hpp"
 #include "app/picture/plain_grid_picture.hpp"
-#include "plan/room_wavefront.hpp"
+#include "plan/metric_wavefront.hpp"
 
 namespace app {
 namespace {
@@ -25,8 +25,8 @@ constexpr Rgb kPhantomTone{200, 40, 200};
 constexpr Rgb kUnreachableFreeTone{205, 205, 205};
 
 // A cell's verdict: the map's state (never observed, or thresholded) against the truth's.
-Rgb truth_tone(const sensing::RoomMap &map, const maze::ArenaTruth &truth, double threshold, std::size_t n) {
-  const sensing::RoomCell cell = map.cell_of_index(n);
+Rgb truth_tone(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold, std::size_t n) {
+  const sensing::MetricCell cell = map.cell_of_index(n);
   const bool occupied = truth.is_occupied(cell.i, cell.j);
   if (map.unobserved_at(n)) return kUnknownTone;
   const bool mapped_occupied = map.log_odds_at(n) >= threshold;
@@ -37,7 +37,7 @@ Rgb truth_tone(const sensing::RoomMap &map, const maze::ArenaTruth &truth, doubl
 
 // The map's cells as a plain grid, each in `tone_of(flat index)`.
 template <typename ToneOf>
-PlainGrid room_grid(const sensing::RoomMap &map, ToneOf tone_of) {
+PlainGrid room_grid(const sensing::MetricMap &map, ToneOf tone_of) {
   PlainGrid g;
   g.cells_x = map.cells_x();
   g.cells_y = map.cells_y();
@@ -50,7 +50,7 @@ PlainGrid room_grid(const sensing::RoomMap &map, ToneOf tone_of) {
 }
 
 // The last plan's cells' centres, in pixels.
-std::vector<PointPx> plan_px(const robot::RoomController &c, const PlainGridFrame &frame) {
+std::vector<PointPx> plan_px(const robot::MetricController &c, const PlainGridFrame &frame) {
   std::vector<PointPx> points;
   for (const std::size_t n : c.path()) {
     const mapping::Point p = c.map().centre_of(c.map().cell_of_index(n));
@@ -68,7 +68,7 @@ void draw_goal(Drawing &page, const PlainGridFrame &frame, const RoomPictureMark
   page.stroke_rect({g.x - side / 2, g.y - side / 2, side, side}, std::max(1.5, side / 6), kGoalColour);
 }
 
-void draw_robot(Drawing &page, const PlainGridFrame &frame, const robot::RoomController &c) {
+void draw_robot(Drawing &page, const PlainGridFrame &frame, const robot::MetricController &c) {
   const PointPx at = frame.at(c.position().x_m, c.position().y_m);
   const double r = mark_px(frame) / 2;
   page.ringed_disc(at, r, kEndColour, std::max(1.0, r / 4), kWhite);
@@ -77,14 +77,14 @@ void draw_robot(Drawing &page, const PlainGridFrame &frame, const robot::RoomCon
                 kWhite);
 }
 
-void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::RoomController &c) {
+void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::MetricController &c) {
   const std::vector<PointPx> plan = plan_px(c, frame);
   if (plan.size() >= 2) page.polyline(plan, std::max(1.5, frame.cell_w_px / 5), kPlannedColour);
 }
 
 }  // namespace
 
-MapTones room_map_tones(const sensing::RoomMap &map, const sensing::MarkProbabilities &p, double threshold) {
+MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold) {
   MapTones tones;
   tones.initial_log_odds = static_cast<float>(map.model().prior_log_odds());
   tones.threshold = static_cast<float>(threshold);
@@ -93,9 +93,9 @@ MapTones room_map_tones(const sensing::RoomMap &map, const sensing::MarkProbabil
   return tones;
 }
 
-std::string room_map_picture(const robot::RoomController &c, const MapTones &tones, const RoomPictureMarks &marks,
+std::string room_map_picture(const robot::MetricController &c, const MapTones &tones, const RoomPictureMarks &marks,
                              PictureFormat format) {
-  const sensing::RoomMap &map = c.map();
+  const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
   Figure legend;
   legend.lines = {marks.caption};
@@ -118,9 +118,9 @@ std::string room_map_picture(const robot::RoomController &c, const MapTones &ton
   return plain_grid_picture(g, legend, overlay, format).encode();
 }
 
-std::string room_truth_picture(const robot::RoomController &c, const maze::ArenaTruth &truth, double threshold,
+std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
                                const RoomPictureMarks &marks, const RoomTruthScores &scores, PictureFormat format) {
-  const sensing::RoomMap &map = c.map();
+  const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
   Figure legend;
   legend.lines = {marks.caption, "cell_accuracy " + scores.cell_accuracy, "coverage " + scores.coverage};
@@ -155,7 +155,7 @@ Rgb wave_tone(std::int32_t value, std::int32_t top) {
   return Rgb{mix(kNearTone.r, kFarTone.r), mix(kNearTone.g, kFarTone.g), mix(kNearTone.b, kFarTone.b)};
 }
 
-std::string room_wave_picture(const robot::RoomController &c, const RoomPictureMarks &marks, PictureFormat format) {
+std::string room_wave_picture(const robot::MetricController &c, const RoomPictureMarks &marks, PictureFormat format) {
   const std::vector<std::int32_t> &wave = c.wave();
   const std::int32_t top = wave.empty() ? plan::kWaveGoal : *std::max_element(wave.begin(), wave.end());
   const PlainGrid g = room_grid(c.map(), [&](std::size_t n) { return wave_tone(wave[n], top); });

@@ -25,8 +25,8 @@
 #include "app/picture/map_picture.hpp"
 #include "maze/arena_truth.hpp"
 #include "mapping/grid_types.hpp"
-#include "robot/room_controller.hpp"
-#include "sensing/room_map.hpp"
+#include "robot/metric_controller.hpp"
+#include "sensing/metric_map.hpp"
 
 namespace app {
 
@@ -38,14 +38,14 @@ struct RoomPictureMarks {
 };
 
 // The map tones of a room run: the map's prior and the set-up's increments, --threshold.
-MapTones room_map_tones(const sensing::RoomMap &map, const sensing::MarkProbabilities &p, double threshold);
+MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold);
 
 // The map as the controller holds it now: tones, trajectory, last plan, start, goal, robot.
-std::string room_map_picture(const robot::RoomController &c, const MapTones &tones, const RoomPictureMarks &marks,
+std::string room_map_picture(const robot::MetricController &c, const MapTones &tones, const RoomPictureMarks &marks,
                              PictureFormat format = PictureFormat::png);
 
 // The wave the controller planned on last (non-empty), with the path and the robot.
-std::string room_wave_picture(const robot::RoomController &c, const RoomPictureMarks &marks,
+std::string room_wave_picture(const robot::MetricController &c, const RoomPictureMarks &marks,
                               PictureFormat format = PictureFormat::png);
 
 // What the truth picture's legend prints: the summary's scores, as it words them.
@@ -55,11 +55,11 @@ struct RoomTruthScores {
 };
 
 // The map scored against `truth` (the same grid), cells at or above `threshold` occupied.
-std::string room_truth_picture(const robot::RoomController &c, const maze::ArenaTruth &truth, double threshold,
+std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
                                const RoomPictureMarks &marks, const RoomTruthScores &scores,
                                PictureFormat format = PictureFormat::png);
 
-// The tone of a wave number (plan/room_wavefront.hpp's): `top` the largest in the wave.
+// The tone of a wave number (plan/metric_wavefront.hpp's): `top` the largest in the wave.
 Rgb wave_tone(std::int32_t value, std::int32_t top);
 
 }  // namespace app

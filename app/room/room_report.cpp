@@ -16,8 +16,8 @@ double share_percent(std::size_t part, std::size_t whole) {
 }
 double two_decimals(double percent) { return std::round(percent * 100.0) / 100.0; }
 
-void add_grid(Report &e, const sensing::RoomGridSpec &spec) {
-  const sensing::RoomBoundary &b = spec.boundary;
+void add_grid(Report &e, const sensing::MetricGridSpec &spec) {
+  const sensing::MetricBoundary &b = spec.boundary;
   e.both("grid",
          fmt::format("{} x {} cells of {:g} m over {:g},{:g},{:g},{:g}", spec.cells_x, spec.cells_y, spec.cell_m,
                      b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m),
@@ -71,7 +71,7 @@ void add_score(Report &e, const RoomSummary &s) {
 }  // namespace
 
 Report room_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
-                   const sensing::RoomGridSpec &spec, const RoomSummary &summary) {
+                   const sensing::MetricGridSpec &spec, const RoomSummary &summary) {
   Report e;
   e.both("world", options.world);
   add_grid(e, spec);

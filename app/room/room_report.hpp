@@ -15,12 +15,12 @@
 
 #include "app/room/room_run.hpp"
 #include "app/run/report.hpp"
-#include "sensing/room_map.hpp"
+#include "sensing/metric_map.hpp"
 #include "sensing/setups.hpp"
 
 namespace app {
 
 Report room_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
-                   const sensing::RoomGridSpec &spec, const RoomSummary &summary);
+                   const sensing::MetricGridSpec &spec, const RoomSummary &summary);
 
 }  // namespace app

@@ -31,13 +31,13 @@
 #include "maze/arena_truth.hpp"
 #include "maze/arena_world.hpp"
 #include "maze/maze.hpp"
-#include "plan/room_wavefront.hpp"
+#include "plan/metric_wavefront.hpp"
 
 namespace app {
 namespace {
 
 using mapping::Point;
-using sensing::RoomCell;
+using sensing::MetricCell;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -51,12 +51,10 @@ double threshold_of(const RoomRunOptions &o) {
 
 // --depth-reading and --depth-origin: the depth rays leave one origin in the robot's frame
 // and, axial, report the depth along the heading (a depth camera, the homework's simulator).
+// Another set-up's range sensors keep their own (the command warns that the options do nothing).
 void with_depth_convention(maze::sim::RobotProfile &profile, const RoomRunOptions &options) {
   if (options.depth_reading == sensing::DepthReading::range && !options.depth_origin) return;
-  if (options.model.kind != sensing::ModelKind::depth) {
-    throw common::InputError(fmt::format("--depth-reading and --depth-origin apply to --model depth only (got --model {})",
-                                         sensing::setup(options.model.kind).name));
-  }
+  if (options.model.kind != sensing::ModelKind::depth) return;
   const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
   if (!(std::isfinite(o.x_m) && std::isfinite(o.y_m) && std::hypot(o.x_m, o.y_m) <= profile.body_radius_m)) {
     throw common::InputError(fmt::format("--depth-origin must lie on the robot, within its {:g} m radius (got {:g},{:g})",
@@ -93,18 +91,18 @@ maze::ArenaPose start_pose_of(const maze::Arena &arena, const RoomRunOptions &op
 }
 
 // The map's grid over the arena's extent: --cells, else --resolution (0.1 m); checked.
-sensing::RoomGridSpec grid_of(const maze::Arena &arena, const RoomRunOptions &options) {
-  const sensing::RoomBoundary boundary{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
-  const sensing::RoomGridSpec spec =
-      options.cells_x ? sensing::room_grid_from_cells(boundary, *options.cells_x, *options.cells_y)
-                      : sensing::room_grid_from_resolution(boundary, options.resolution_m.value_or(0.1));
+sensing::MetricGridSpec grid_of(const maze::Arena &arena, const RoomRunOptions &options) {
+  const sensing::MetricBoundary boundary{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
+  const sensing::MetricGridSpec spec =
+      options.cells_x ? sensing::metric_grid_from_cells(boundary, *options.cells_x, *options.cells_y)
+                      : sensing::metric_grid_from_resolution(boundary, options.resolution_m.value_or(0.1));
   sensing::validate(spec);
   return spec;
 }
 
 // Refuses, in this order: a start outside the grid, a start touching a solid, a goal outside
 // the grid, a waypoint outside it.
-void check_places(const maze::Arena &arena, const RoomRunOptions &options, const sensing::RoomGridSpec &spec,
+void check_places(const maze::Arena &arena, const RoomRunOptions &options, const sensing::MetricGridSpec &spec,
                   const maze::ArenaPose &start_pose, double body_radius_m) {
   const auto inside = [&spec](Point p) {
     return p.x_m >= spec.boundary.x_start_m && p.x_m < spec.boundary.x_end_m && p.y_m >= spec.boundary.y_start_m &&
@@ -144,10 +142,10 @@ robot::ControllerOptions room_controller_options(const RoomRunOptions &options,
 // The strategy's options, from the start, stopping no nearer than the body's radius + 8 cm.
 // The room options as the run uses them: wavefront without --goal heads for the world's
 // first goal, when its file gives one.
-robot::RoomOptions room_options_of(const RoomRunOptions &options, const maze::Arena &arena, Point start,
+robot::MetricOptions room_options_of(const RoomRunOptions &options, const maze::Arena &arena, Point start,
                                    double body_radius_m) {
-  robot::RoomOptions room = options.room;
-  if (room.strategy == robot::RoomStrategy::wavefront && !room.goal && !arena.goals.empty()) {
+  robot::MetricOptions room = options.room;
+  if (room.strategy == robot::MetricStrategy::wavefront && !room.goal && !arena.goals.empty()) {
     room.goal = Point{arena.goals.front().x_m, arena.goals.front().y_m};
   }
   room.start = start;
@@ -159,7 +157,7 @@ robot::RoomOptions room_options_of(const RoomRunOptions &options, const maze::Ar
 // The truth at the map's resolution, over the map's extent (a --resolution that does not
 // divide the boundary reaches past it by less than a cell): reachable where a body clear of
 // the occupied cells can go, the frontier planner's rule on a perfect map.
-maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::RoomGridSpec &spec,
+maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::MetricGridSpec &spec,
                                const maze::ArenaPose &start_pose, double body_radius_m) {
   maze::Arena on_grid = arena;
   on_grid.x_max_m = spec.boundary.x_end_m;
@@ -189,7 +187,7 @@ class RoomLog {
   }
 
   // Each control step: its trace line, then the snapshots due by its time, then by its step.
-  void on_step(const robot::RoomController &c) {
+  void on_step(const robot::MetricController &c) {
     const sensing::LogStep &s = c.senses().log_step();
     std::string line = fmt::format("{},{},{},{}", s.t, s.x_m, s.y_m, s.theta_rad);
     if (options_.model.kind == sensing::ModelKind::bump) {
@@ -216,23 +214,23 @@ class RoomLog {
 
   // With --out: the map's picture now as MAP.png (and the wave's, when there is one, as
   // WAVE.png), kept until the run's files are written.
-  void draw(const robot::RoomController &c, const std::string &map, const std::string &wave) {
+  void draw(const robot::MetricController &c, const std::string &map, const std::string &wave) {
     if (options_.out_dir.empty()) return;
     RoomPictureMarks marks = marks_;
     marks.caption += fmt::format(", step {}, {:.1f} s", c.steps(), c.time_s());
     pictures_.push_back({map + ".png", room_map_picture(c, tones_, marks)});
-    if (options_.room.strategy == robot::RoomStrategy::wavefront && !c.wave().empty()) {
+    if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
       pictures_.push_back({wave + ".png", room_wave_picture(c, marks)});
     }
   }
 
   // The map now (and the wave), headed by `when`; nothing when quiet.
-  void snapshot(const robot::RoomController &c, const std::string &when) const {
+  void snapshot(const robot::MetricController &c, const std::string &when) const {
     if (options_.quiet) return;
     out_ << fmt::format("--- {}: step {}, {:.1f} s, at ({:.2f}, {:.2f}) ---\n", when, c.steps(), c.time_s(),
                         c.position().x_m, c.position().y_m);
     out_ << room_ascii_map(c, threshold_);
-    if (options_.room.strategy == robot::RoomStrategy::wavefront && !c.wave().empty()) {
+    if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
       out_ << "wavefront (obstacles 1, goal 2):\n" << room_wave_numbers(c.map(), c.wave());
     }
     out_ << '\n' << std::flush;  // seen as the run goes, also through a pipe or in a file
@@ -267,7 +265,7 @@ class RoomLog {
 
 // What the pictures mark besides the controller's state: the start, the goal, the caption.
 RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::SetUp &setup,
-                               const robot::RoomOptions &room) {
+                               const robot::MetricOptions &room) {
   RoomPictureMarks marks;
   marks.start = room.start;
   marks.goal = room.goal;
@@ -277,7 +275,7 @@ RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::Set
 }
 
 // What replay.html shows besides the frames: the pictures' caption, the summary's lines.
-RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::RoomOptions &room,
+RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::MetricOptions &room,
                            const Report &report) {
   const RoomPictureMarks marks = picture_marks(options, setup, room);
   RoomReplayText text;
@@ -293,7 +291,7 @@ RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &
 }
 
 // What the controller says of its run, on the grid `spec`.
-RoomSummary summary_of(const robot::RoomController &c, robot::RoomEnding ending, const sensing::RoomGridSpec &spec) {
+RoomSummary summary_of(const robot::MetricController &c, robot::MetricEnding ending, const sensing::MetricGridSpec &spec) {
   RoomSummary summary;
   summary.ending = ending;
   summary.message = c.message();
@@ -308,7 +306,7 @@ RoomSummary summary_of(const robot::RoomController &c, robot::RoomEnding ending,
 
 // After the run (not quiet): the missed snapshots, the map at the end, the trajectory every
 // second of simulated time and the thresholded map.
-void print_end(std::ostream &out, RoomLog &log, const robot::RoomController &c, int time_step_ms,
+void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c, int time_step_ms,
                double threshold, const RoomSummary &summary) {
   log.say_missed(summary);
   log.snapshot(c, "end");
@@ -327,33 +325,33 @@ void print_end(std::ostream &out, RoomLog &log, const robot::RoomController &c, 
 int room_exit_status(const RoomSummary &s) {
   if (s.interrupted) return common::interrupted_exit_status();
   switch (s.ending) {
-    case robot::RoomEnding::done:
-    case robot::RoomEnding::goal_reached:
-    case robot::RoomEnding::arrived:
-    case robot::RoomEnding::time_up: return 0;
+    case robot::MetricEnding::done:
+    case robot::MetricEnding::goal_reached:
+    case robot::MetricEnding::arrived:
+    case robot::MetricEnding::time_up: return 0;
     default: return 1;
   }
 }
 
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
+                     std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted) {
   return run_room_in(maze::world_geometry(world), options, out, started, interrupted);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
+                        std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
   const maze::ArenaPose start_pose = start_pose_of(arena, options);
-  const robot::RoomOptions room =
+  const robot::MetricOptions room =
       room_options_of(options, arena, {start_pose.x_m, start_pose.y_m}, profile.body_radius_m);
   robot::validate(room);
-  const sensing::RoomGridSpec spec = grid_of(arena, options);
+  const sensing::MetricGridSpec spec = grid_of(arena, options);
   check_places(arena, options, spec, start_pose, profile.body_radius_m);
   const robot::ControllerOptions controller = room_controller_options(options, profile);
   const mapping::SensorModel model(options.sensor);
-  sensing::RoomMap map(spec, model);
+  sensing::MetricMap map(spec, model);
   if (!options.out_dir.empty()) {
     prepare_output_dir(options.out_dir);
     refuse_outputs_over_inputs(options.out_dir, room_output_names(),
@@ -370,21 +368,21 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
   std::optional<RoomReplay> replay;
   if (!options.out_dir.empty()) replay.emplace(map, tones);
-  robot::RoomController controller_loop(simulation.robot(), controller, room, map,
-                                        [&log, &replay](const robot::RoomController &c) {
+  robot::MetricController controller_loop(simulation.robot(), controller, room, map,
+                                        [&log, &replay](const robot::MetricController &c) {
                                           log.on_step(c);
                                           if (replay) replay->on_step(c);
                                         },
                                         interrupted);
   RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
-  if (summary.ending == robot::RoomEnding::stopped && interrupted != nullptr && interrupted()) {
+  if (summary.ending == robot::MetricEnding::stopped && interrupted != nullptr && interrupted()) {
     summary.interrupted = true;
     summary.message = "interrupted by " + common::interrupt_name();
   }
 
   // ---- the score against the truth ----
   const std::size_t first_left = score_room_map(map, truth, threshold, summary);
-  if (options.room.strategy == robot::RoomStrategy::frontier) settle_frontier_ending(map, first_left, summary);
+  if (options.room.strategy == robot::MetricStrategy::frontier) settle_frontier_ending(map, first_left, summary);
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   if (!options.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);

@@ -1,6 +1,6 @@
 #pragma once
-// `maze_mapper room WORLD`: a robot in a room (robot/room_controller.hpp) mapping onto a
-// numCells grid (sensing/room_map.hpp) in the embedded simulator, and what people look at:
+// `maze_mapper room WORLD`: a robot in a room (robot/metric_controller.hpp) mapping onto a
+// numCells grid (sensing/metric_map.hpp) in the embedded simulator, and what people look at:
 // the ASCII map (W occupied, . free, blank never observed, * the last planned path, the
 // robot's arrow), snapshots at simulated times and at control steps, the wavefront's numbers,
 // the trajectory, the thresholded binary map and the summary, which scores the map against
@@ -23,17 +23,17 @@
 #include "maze/arena.hpp"
 #include "maze/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
-#include "robot/room_controller.hpp"
+#include "robot/metric_controller.hpp"
 #include "sensing/log_map.hpp"
 #include "sensing/range_models.hpp"
-#include "sensing/room_map.hpp"
+#include "sensing/metric_map.hpp"
 #include "sensing/setups.hpp"
 
 namespace app {
 
 struct RoomRunOptions {
   std::string world;
-  robot::RoomOptions room;
+  robot::MetricOptions room;
   std::optional<int> cells_x, cells_y;        // --cells X,Y
   std::optional<double> resolution_m;         // --resolution M (default 0.1)
   std::string robot;                          // --robot (default: the set-up's robot)
@@ -56,7 +56,7 @@ struct RoomRunOptions {
 };
 
 struct RoomSummary {
-  robot::RoomEnding ending = robot::RoomEnding::done;
+  robot::MetricEnding ending = robot::MetricEnding::done;
   bool interrupted = false;  // stopped by a signal
   std::string message;
   std::int64_t steps = 0;
@@ -84,11 +84,11 @@ struct RoomSummary {
 // ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                     robot::RoomStopPoll interrupted = nullptr);
+                     robot::MetricStopPoll interrupted = nullptr);
 // The same in an arena given in code.
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                        robot::RoomStopPoll interrupted = nullptr);
+                        robot::MetricStopPoll interrupted = nullptr);
 // 0: done, goal reached, every waypoint reached, wander's time up; 128 + the signal when
 // interrupted; 1 otherwise.
 int room_exit_status(const RoomSummary &summary);

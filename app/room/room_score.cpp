@@ -6,7 +6,7 @@
 
 namespace app {
 
-std::size_t score_room_map(const sensing::RoomMap &map, const maze::ArenaTruth &truth, double threshold,
+std::size_t score_room_map(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold,
                            RoomSummary &summary) {
   summary.cells_total = map.size();
   for (std::size_t n = 0; n < map.size(); ++n) {
@@ -31,18 +31,18 @@ std::size_t score_room_map(const sensing::RoomMap &map, const maze::ArenaTruth &
   return first_left;
 }
 
-void settle_frontier_ending(const sensing::RoomMap &map, std::size_t first_left, RoomSummary &summary) {
+void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, RoomSummary &summary) {
   const bool all_seen = summary.reachable_free_observed == summary.reachable_free;
-  if (summary.ending == robot::RoomEnding::incomplete && all_seen) {
+  if (summary.ending == robot::MetricEnding::incomplete && all_seen) {
     // What the robot could not observe lies in obstacles or out of reach: the free space is mapped.
-    summary.ending = robot::RoomEnding::done;
+    summary.ending = robot::MetricEnding::done;
     summary.message += fmt::format(", none of them reachable free space: every one of the {} reachable free cells "
                                    "is observed", summary.reachable_free);
   }
-  if (summary.ending == robot::RoomEnding::done && !all_seen) {
+  if (summary.ending == robot::MetricEnding::done && !all_seen) {
     // The controller found no frontier, yet reachable free space is unobserved: not done.
     const mapping::Point p = map.centre_of(map.cell_of_index(first_left));
-    summary.ending = robot::RoomEnding::incomplete;
+    summary.ending = robot::MetricEnding::incomplete;
     summary.message = fmt::format("{} of {} reachable free cells never observed (the first at {:.2f}, {:.2f})",
                                   summary.reachable_free - summary.reachable_free_observed, summary.reachable_free,
                                   p.x_m, p.y_m);

@@ -6,18 +6,18 @@
 
 #include "app/room/room_run.hpp"
 #include "maze/arena_truth.hpp"
-#include "sensing/room_map.hpp"
+#include "sensing/metric_map.hpp"
 
 namespace app {
 
 // The thresholded map against the truth (every cell, the observed ones) and the reachable free
 // cells observed, into `summary`. Returns the first reachable free cell never observed
 // (map.size() when none).
-std::size_t score_room_map(const sensing::RoomMap &map, const maze::ArenaTruth &truth, double threshold,
+std::size_t score_room_map(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold,
                            RoomSummary &summary);
 // Frontier's ending checked against the truth (after score_room_map): `incomplete` with every
 // reachable free cell observed is `done`; `done` with one never observed (first_left) is
 // `incomplete`.
-void settle_frontier_ending(const sensing::RoomMap &map, std::size_t first_left, RoomSummary &summary);
+void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, RoomSummary &summary);
 
 }  // namespace app

@@ -53,20 +53,13 @@ void validate_run(const RunOptions &o) {
   }
 }
 
-// One row a rule: `option` does nothing unless applies(options); `without` says what it needs.
-struct OptionUse {
-  const char *option;
-  const char *without;
-  bool (*applies)(const RunOptions &);
-};
-
 bool animating(const RunOptions &o) { return o.output.animate; }
 bool not_animating(const RunOptions &o) { return !o.output.animate; }
 bool planning(const RunOptions &o) { return o.plan.to.has_value() || o.plan.only; }
 bool writing_files(const RunOptions &o) { return !o.output.out_dir.empty(); }
 
 // The run's own rules; the model's are the set-up table's (model_given_options below).
-constexpr OptionUse kOptionUses[] = {
+constexpr OptionUse<RunOptions> kOptionUses[] = {
     {"--fps", "without --animate", animating},
     {"--speed", "without --animate", animating},
     {"--quiet", "with --animate", not_animating},
@@ -210,15 +203,18 @@ const maze::sim::RobotProfile &robot_profile(const RunOptions &options) {
 
 std::string_view default_robot(sensing::ModelKind model) { return sensing::setup(model).default_robot; }
 
+std::string no_effect_warning(std::string_view option, std::string_view without) {
+  return fmt::format("warning: {} has no effect{}{}", option, without.starts_with(':') ? "" : " ", without);
+}
+
 std::vector<std::string> check_options_apply(const GivenOptions &given, const RunOptions &options) {
   std::vector<std::string> warnings;
-  for (const OptionUse &use : kOptionUses) {
+  for (const OptionUse<RunOptions> &use : kOptionUses) {
     if (!given.given(use.option) || use.applies(options)) continue;
     // compare and batch plan no path: --dilate never applies there.
     const bool plans_nothing = std::string_view(use.option) == "--dilate" && given.command != "run";
-    warnings.push_back(plans_nothing ? fmt::format("warning: {} has no effect: {} plans no path", use.option,
-                                                   given.command)
-                                     : fmt::format("warning: {} has no effect {}", use.option, use.without));
+    warnings.push_back(plans_nothing ? no_effect_warning(use.option, fmt::format(": {} plans no path", given.command))
+                                     : no_effect_warning(use.option, use.without));
   }
   // The options the set-up's model does not read (app/run/model_rules.hpp).
   for (std::string &warning : check_model_options(sensing::setup(options.model.kind), model_given_options(given))) {

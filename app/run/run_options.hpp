@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -119,12 +120,33 @@ void validate_unknown(std::string_view text);
 // The robot a model runs on when --robot is not given: its set-up's (sensing/setups.hpp).
 std::string_view default_robot(sensing::ModelKind model);
 
-// Which command the options were given to ("run", "plan", "compare", "batch") and whether
-// the user typed an option (by its long name, e.g. "--fps").
+// Which command the options were given to ("run", "plan", "compare", "batch", "room") and
+// whether the user typed an option (by its long name, e.g. "--fps").
 struct GivenOptions {
   std::string_view command;
   std::function<bool(std::string_view option)> given;
 };
+
+// One rule of a command's options: `option` does nothing unless applies(options); `without`
+// says what it needs ("without --animate"). Every command's table of them warns alike.
+template <typename Options>
+struct OptionUse {
+  const char *option;
+  const char *without;
+  bool (*applies)(const Options &);
+};
+
+// "warning: OPTION has no effect WITHOUT": the one spelling of an option that does nothing.
+std::string no_effect_warning(std::string_view option, std::string_view without);
+
+// One no_effect_warning a rule whose option was given and does not apply, in the table's order.
+template <typename Options>
+void add_no_effect_warnings(const GivenOptions &given, std::span<const OptionUse<Options>> uses,
+                            const Options &options, std::vector<std::string> &warnings) {
+  for (const OptionUse<Options> &use : uses) {
+    if (given.given(use.option) && !use.applies(options)) warnings.push_back(no_effect_warning(use.option, use.without));
+  }
+}
 
 // The one place that tells options given that do nothing for what was asked: one
 // "warning: --fps has no effect without --animate" line each, the run's own rules (the

@@ -1,4 +1,4 @@
-#include "robot/room_senses.hpp"
+#include "robot/metric_senses.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,36 +15,36 @@
 namespace robot {
 namespace {
 
-sensing::RoomMarks marks_for(RoomSensing s, const mapping::SensorModelOptions &sensor) {
-  if (s == RoomSensing::pie) return {sensing::kPieOccupiedP, sensing::kPieFreeP};
+sensing::MetricMarks marks_for(MetricSensing s, const mapping::SensorModelOptions &sensor) {
+  if (s == MetricSensing::pie) return {sensing::kPieOccupiedP, sensing::kPieFreeP};
   return {sensor.p_occ, sensor.p_free};
 }
 
 }  // namespace
 
-RoomSensing room_sensing_for(sensing::ModelKind kind) {
+MetricSensing metric_sensing_for(sensing::ModelKind kind) {
   switch (kind) {
     case sensing::ModelKind::cell:
-    case sensing::ModelKind::ray: return RoomSensing::lidar;
-    case sensing::ModelKind::pie: return RoomSensing::pie;
-    case sensing::ModelKind::cone: return RoomSensing::cone;
-    case sensing::ModelKind::bump: return RoomSensing::bump;
-    case sensing::ModelKind::depth: return RoomSensing::depth;
+    case sensing::ModelKind::ray: return MetricSensing::lidar;
+    case sensing::ModelKind::pie: return MetricSensing::pie;
+    case sensing::ModelKind::cone: return MetricSensing::cone;
+    case sensing::ModelKind::bump: return MetricSensing::bump;
+    case sensing::ModelKind::depth: return MetricSensing::depth;
   }
-  return RoomSensing::lidar;
+  return MetricSensing::lidar;
 }
 
-RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, sensing::RoomMap &map)
+MetricSenses::MetricSenses(webots::Robot &robot, const ControllerOptions &options, sensing::MetricMap &map)
     : options_(options),
       map_(map),
-      sensing_(room_sensing_for(options.model.kind)),
+      sensing_(metric_sensing_for(options.model.kind)),
       log_options_(map.log_options()),
       devices_(robot, options, sensing::setup(options.model.kind)),
       filter_(options.scan_filter),
       marks_(marks_for(sensing_, options.sensor)) {
   switch (sensing_) {
-    case RoomSensing::lidar: break;
-    case RoomSensing::bump: {
+    case MetricSensing::lidar: break;
+    case MetricSensing::bump: {
       const auto &mounts = options.sensing.bumpers;
       for (std::size_t i = 0; i < mounts.size(); ++i) {
         const double a = mounts[i].angle_rad;
@@ -59,15 +59,15 @@ RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, s
       }
       break;
     }
-    case RoomSensing::depth:
+    case MetricSensing::depth:
       if (options.sensing.ranges.size() != sensing::kLogDepthRays) {
         throw common::InputError(fmt::format("the depth set-up in a room needs {} depth rays; the robot has {}",
                                              sensing::kLogDepthRays, options.sensing.ranges.size()));
       }
       [[fallthrough]];
-    case RoomSensing::pie:
-    case RoomSensing::cone:
-      if (sensing_ == RoomSensing::depth) read_depth_mounts(options.sensing.ranges);
+    case MetricSensing::pie:
+    case MetricSensing::cone:
+      if (sensing_ == MetricSensing::depth) read_depth_mounts(options.sensing.ranges);
       break;
   }
 }
@@ -75,7 +75,7 @@ RoomSenses::RoomSenses(webots::Robot &robot, const ControllerOptions &options, s
 // map-log's depth options for these rays: their angles, and either the range from the centre
 // (rays on the rim: the reading plus the rim's offset) or, from a common origin, the reading
 // itself as the rays say it (range or axial); map-log ignores a reading at depth_max.
-void RoomSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts) {
+void MetricSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts) {
   const RangeSensorMount &first = mounts.front();
   for (std::size_t i = 0; i < mounts.size(); ++i) {
     const RangeSensorMount &m = mounts[i];
@@ -94,16 +94,16 @@ void RoomSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts) 
   }
 }
 
-void RoomSenses::enable(int time_step_ms) { devices_.enable(time_step_ms); }
+void MetricSenses::enable(int time_step_ms) { devices_.enable(time_step_ms); }
 
-bool RoomSenses::nothing_seen_marks_nothing() const {
-  if (sensing_ != RoomSensing::cone) return false;
+bool MetricSenses::nothing_seen_marks_nothing() const {
+  if (sensing_ != MetricSensing::cone) return false;
   return std::any_of(devices_.range_sensors.begin(), devices_.range_sensors.end(), [](const webots::DistanceSensor *d) {
     return d->getType() == webots::DistanceSensor::SONAR;
   });
 }
 
-void RoomSenses::read_ranges(mapping::Point centre, double yaw_rad) {
+void MetricSenses::read_ranges(mapping::Point centre, double yaw_rad) {
   read_range_sensors(devices_.range_sensors, options_.sensing.ranges, centre, yaw_rad, readings_);
   clearance_ahead_m_ = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < readings_.size(); ++i) {
@@ -119,14 +119,14 @@ void RoomSenses::read_ranges(mapping::Point centre, double yaw_rad) {
   }
 }
 
-std::size_t RoomSenses::scan(mapping::Point centre, double yaw_rad, double time_s) {
+std::size_t MetricSenses::scan(mapping::Point centre, double yaw_rad, double time_s) {
   log_step_ = {};
   log_step_.t = time_s;
   log_step_.x_m = centre.x_m;
   log_step_.y_m = centre.y_m;
   log_step_.theta_rad = yaw_rad;
   switch (sensing_) {
-    case RoomSensing::lidar: {
+    case MetricSensing::lidar: {
       const sensing::LidarScan filtered = filter_.apply(lidar_scan(*devices_.lidar, centre, yaw_rad));
       clearance_ahead_m_ = std::numeric_limits<double>::infinity();
       for (int n = 0; n < filtered.beam_count(); ++n) {
@@ -134,25 +134,25 @@ std::size_t RoomSenses::scan(mapping::Point centre, double yaw_rad, double time_
         if (std::abs(common::wrap_angle_rad(filtered.beam_angle_rad(n))) > kAheadHalfAngle_rad) continue;
         clearance_ahead_m_ = std::min(clearance_ahead_m_, static_cast<double>(filtered.ranges[static_cast<std::size_t>(n)]));
       }
-      sensing::mark_room_lidar(map_, filtered, marks_);
+      sensing::mark_metric_lidar(map_, filtered, marks_);
       return marks_.apply(map_);
     }
-    case RoomSensing::pie:
+    case MetricSensing::pie:
       read_ranges(centre, yaw_rad);
-      sensing::mark_room_pie(map_, options_.sensing.range_model, readings_, marks_);
+      sensing::mark_metric_pie(map_, options_.sensing.range_model, readings_, marks_);
       return marks_.apply(map_);
-    case RoomSensing::cone:
+    case MetricSensing::cone:
       read_ranges(centre, yaw_rad);
-      sensing::mark_room_cone(map_, readings_, marks_);
+      sensing::mark_metric_cone(map_, readings_, marks_);
       return marks_.apply(map_);
-    case RoomSensing::bump:
+    case MetricSensing::bump:
       log_step_.bump_right = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
       log_step_.bump_left = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
       log_step_.bump_front = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
       bumped_ = log_step_.bump_right || log_step_.bump_left || log_step_.bump_front;
       sensing::apply_log_step(log_options_, sensing::LogSensor::bump, log_step_, map_.log_grid());
       return 1;
-    case RoomSensing::depth:
+    case MetricSensing::depth:
       read_ranges(centre, yaw_rad);
       for (std::size_t i = 0; i < readings_.size(); ++i) {
         // map-log's depth: from the centre along the ray, or from the rays' origin as the device says it

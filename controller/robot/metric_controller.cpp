@@ -1,4 +1,4 @@
-#include "robot/room_controller.hpp"
+#include "robot/metric_controller.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,13 +14,13 @@
 #include "common/cell_clearance.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "plan/room_wavefront.hpp"
+#include "plan/metric_wavefront.hpp"
 
 namespace robot {
 namespace {
 
 using mapping::Point;
-using sensing::RoomCell;
+using sensing::MetricCell;
 
 // A planned leg (on the grown map) stops only when a return ahead is this close to the body.
 constexpr double kTouchMargin_m = 0.03;
@@ -33,11 +33,11 @@ int time_step_of(webots::Robot &robot, const MotionOptions &m) {
 
 }  // namespace
 
-RoomController::RoomController(webots::Robot &robot, const ControllerOptions &options, const RoomOptions &room,
-                               sensing::RoomMap &map, RoomStepHook on_step, RoomStopPoll stop_requested)
+MetricController::MetricController(webots::Robot &robot, const ControllerOptions &options, const MetricOptions &metric,
+                                   sensing::MetricMap &map, MetricStepHook on_step, MetricStopPoll stop_requested)
     : robot_(robot),
       options_(options),
-      room_(room),
+      metric_(metric),
       map_(map),
       on_step_(std::move(on_step)),
       stop_requested_(stop_requested),
@@ -45,15 +45,15 @@ RoomController::RoomController(webots::Robot &robot, const ControllerOptions &op
       chassis_(robot, options.devices),
       drive_(chassis_, options.motion, time_step_ms_, [this](Action a) { return step(a); }),
       senses_(robot, options, map),
-      position_(room.start) {
+      position_(metric.start) {
   chassis_.enable(time_step_ms_);
   senses_.enable(time_step_ms_);
   body_observes_ = senses_.nothing_seen_marks_nothing();
 }
 
-double RoomController::time_s() const { return robot_.getTime(); }
+double MetricController::time_s() const { return robot_.getTime(); }
 
-void RoomController::update_pose() {
+void MetricController::update_pose() {
   const WheelAngles now = chassis_.wheel_angles();
   if (const std::optional<Point> gps = chassis_.gps()) {
     position_ = *gps;
@@ -66,10 +66,10 @@ void RoomController::update_pose() {
   last_wheels_ = now;
 }
 
-Motion RoomController::step(Action) {
+Motion MetricController::step(Action) {
   if (steps_ >= options_.motion.max_steps) return Motion::max_steps;
   if (stop_requested_ != nullptr && stop_requested_()) return Motion::stopped;
-  if (room_.time_limit_s > 0.0 && robot_.getTime() >= room_.time_limit_s) {
+  if (metric_.time_limit_s > 0.0 && robot_.getTime() >= metric_.time_limit_s) {
     time_up_ = true;
     return Motion::stopped;
   }
@@ -83,30 +83,30 @@ Motion RoomController::step(Action) {
   return Motion::ok;
 }
 
-bool RoomController::seen_occupied(std::size_t flat) const {
+bool MetricController::seen_occupied(std::size_t flat) const {
   // Where the body has touched (a frontier sweep leg, a wavefront leg) or frontier's body has
   // been, its own observation stands over the echoes'.
   if (flat < contact_.size() && contact_[flat]) return true;
-  if (body_observes_ && room_.strategy == RoomStrategy::frontier && flat < under_body_.size() && under_body_[flat]) {
+  if (body_observes_ && metric_.strategy == MetricStrategy::frontier && flat < under_body_.size() && under_body_[flat]) {
     return false;
   }
-  return map_.probability_at(flat) >= room_.free_below_p - 1e-9;
+  return map_.probability_at(flat) >= metric_.free_below_p - 1e-9;
 }
 
-void RoomController::cover(std::size_t flat) {
+void MetricController::cover(std::size_t flat) {
   if (under_body_[flat]) return;
   under_body_[flat] = true;
   if (body_observes_) map_.observe_by_body(flat);
 }
 
-void RoomController::mark_under_body() {
+void MetricController::mark_under_body() {
   if (under_body_.size() != map_.size()) under_body_.assign(map_.size(), false);
-  const double r = room_.body_radius_m;
+  const double r = metric_.body_radius_m;
   const auto lo = map_.cell_at({position_.x_m - r, position_.y_m - r});
   const auto hi = map_.cell_at({position_.x_m + r, position_.y_m + r});
-  const RoomCell here = robot_cell();
-  const RoomCell a = lo.value_or(here);
-  const RoomCell b = hi.value_or(here);
+  const MetricCell here = robot_cell();
+  const MetricCell a = lo.value_or(here);
+  const MetricCell b = hi.value_or(here);
   for (int j = std::min(a.j, here.j); j <= std::max(b.j, here.j); ++j) {
     for (int i = std::min(a.i, here.i); i <= std::max(b.i, here.i); ++i) {
       const Point c = map_.centre_of({i, j});
@@ -124,15 +124,15 @@ void RoomController::mark_under_body() {
   if (std::hypot(c.x_m - position_.x_m, c.y_m - position_.y_m) <= map_.cell_m() / 4) driven_[map_.index(here)] = true;
 }
 
-bool RoomController::blocked_ahead() const {
-  return senses_.bumped() || senses_.clearance_ahead_m() < room_.stop_distance_m;
+bool MetricController::blocked_ahead() const {
+  return senses_.bumped() || senses_.clearance_ahead_m() < metric_.stop_distance_m;
 }
 
-bool RoomController::touching_ahead() const {
-  return senses_.bumped() || senses_.clearance_ahead_m() < room_.body_radius_m + kTouchMargin_m;
+bool MetricController::touching_ahead() const {
+  return senses_.bumped() || senses_.clearance_ahead_m() < metric_.body_radius_m + kTouchMargin_m;
 }
 
-RoomCell RoomController::robot_cell() const {
+MetricCell MetricController::robot_cell() const {
   const auto c = map_.cell_at(position_);
   if (c) return *c;
   const auto clampi = [](double v, int n) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
@@ -141,7 +141,7 @@ RoomCell RoomController::robot_cell() const {
           clampi((position_.y_m - b.y_start_m) / map_.cell_m(), map_.cells_y())};
 }
 
-Motion RoomController::go_to(Point p, StopWhen when, bool *stopped) {
+Motion MetricController::go_to(Point p, StopWhen when, bool *stopped) {
   *stopped = false;
   const double ex = p.x_m - position_.x_m;
   const double ey = p.y_m - position_.y_m;
@@ -161,7 +161,7 @@ Motion RoomController::go_to(Point p, StopWhen when, bool *stopped) {
   return m;
 }
 
-Motion RoomController::look_around() {
+Motion MetricController::look_around() {
   const double start = drive_.yaw_rad();
   for (int quarter = 1; quarter <= 4; ++quarter) {
     if (const Motion m = drive_.turn_to_yaw(common::wrap_angle_rad(start + quarter * std::numbers::pi / 2));
@@ -172,26 +172,11 @@ Motion RoomController::look_around() {
   return Motion::ok;
 }
 
-bool RoomController::sees(std::size_t from, std::size_t to) const {
-  const Point a = map_.centre_of(map_.cell_of_index(from));
-  const Point b = map_.centre_of(map_.cell_of_index(to));
-  const double length = std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
-  const int samples = static_cast<int>(std::ceil(length / (map_.cell_m() / 4)));
-  for (int k = 1; k < samples; ++k) {
-    const double f = static_cast<double>(k) / samples;
-    const auto c = map_.cell_at({a.x_m + f * (b.x_m - a.x_m), a.y_m + f * (b.y_m - a.y_m)});
-    if (!c) return false;
-    const std::size_t n = map_.index(*c);
-    if (n != to && map_.probability_at(n) >= room_.free_below_p - 1e-9) return false;
-  }
-  return true;
-}
-
-std::vector<bool> RoomController::grown_obstacles(const std::vector<bool> &occupied) const {
+std::vector<bool> MetricController::grown_obstacles(const std::vector<bool> &occupied) const {
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
-  if (room_.strategy != RoomStrategy::frontier) return plan::dilated(g, occupied, room_.dilate);
+  if (metric_.strategy != MetricStrategy::frontier) return plan::dilated(g, occupied, metric_.dilate);
   const std::vector<std::uint8_t> near = common::cells_without_clearance(
-      g.cells_x, g.cells_y, map_.cell_m(), room_.body_radius_m, [&occupied](std::size_t n) { return occupied[n]; });
+      g.cells_x, g.cells_y, map_.cell_m(), metric_.body_radius_m, [&occupied](std::size_t n) { return occupied[n]; });
   std::vector<bool> grown(map_.size(), false);
   for (std::size_t n = 0; n < map_.size(); ++n) {
     grown[n] = occupied[n] || (near[n] != 0 && !(n < driven_.size() && driven_[n]));
@@ -199,7 +184,7 @@ std::vector<bool> RoomController::grown_obstacles(const std::vector<bool> &occup
   return grown;
 }
 
-std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
+std::vector<bool> MetricController::obstacles(bool unknown_blocked) const {
   std::vector<bool> out(map_.size(), false);
   for (std::size_t n = 0; n < map_.size(); ++n) {
     out[n] = seen_occupied(n);
@@ -214,41 +199,41 @@ std::vector<bool> RoomController::obstacles(bool unknown_blocked) const {
   return grown;
 }
 
-RoomEnding RoomController::finish(Motion m) {
+MetricEnding MetricController::finish(Motion m) {
   switch (m) {
-    case Motion::ok: return RoomEnding::done;
-    case Motion::max_steps: message_ = "the step limit was reached"; return RoomEnding::max_steps;
-    case Motion::no_progress: message_ = drive_.failure(); return RoomEnding::no_progress;
-    case Motion::ended: message_ = "the simulation ended"; return RoomEnding::simulation_ended;
+    case Motion::ok: return MetricEnding::done;
+    case Motion::max_steps: message_ = "the step limit was reached"; return MetricEnding::max_steps;
+    case Motion::no_progress: message_ = drive_.failure(); return MetricEnding::no_progress;
+    case Motion::ended: message_ = "the simulation ended"; return MetricEnding::simulation_ended;
     case Motion::stopped:
       if (time_up_) {
-        message_ = fmt::format("the time limit of {:g} s was reached", room_.time_limit_s);
-        return RoomEnding::time_up;
+        message_ = fmt::format("the time limit of {:g} s was reached", metric_.time_limit_s);
+        return MetricEnding::time_up;
       }
       message_ = "stopped";
-      return RoomEnding::stopped;
+      return MetricEnding::stopped;
   }
-  return RoomEnding::stopped;
+  return MetricEnding::stopped;
 }
 
-RoomEnding RoomController::run() {
+MetricEnding MetricController::run() {
   update_pose();
   if (const Motion m = step(Action::start); m != Motion::ok) return finish(m);
-  switch (room_.strategy) {
-    case RoomStrategy::waypoints: return run_waypoints();
-    case RoomStrategy::wavefront: return run_wavefront();
-    case RoomStrategy::frontier: return run_frontier();
-    case RoomStrategy::wander: return run_wander();
+  switch (metric_.strategy) {
+    case MetricStrategy::waypoints: return run_waypoints();
+    case MetricStrategy::wavefront: return run_wavefront();
+    case MetricStrategy::frontier: return run_frontier();
+    case MetricStrategy::wander: return run_wander();
   }
-  return RoomEnding::stopped;
+  return MetricEnding::stopped;
 }
 
-RoomEnding RoomController::run_waypoints() {
-  const std::size_t count = room_.waypoints.size();
-  for (int lap = 1; room_.laps == 0 || lap <= room_.laps; ++lap) {
+MetricEnding MetricController::run_waypoints() {
+  const std::size_t count = metric_.waypoints.size();
+  for (int lap = 1; metric_.laps == 0 || lap <= metric_.laps; ++lap) {
     const std::int64_t lap_began = steps_;
     for (std::size_t n = 0; n < count; ++n) {
-      const Point p = room_.waypoints[n];
+      const Point p = metric_.waypoints[n];
       bool stopped = false;
       if (const Motion m = go_to(p, StopWhen::obstacle_ahead, &stopped); m != Motion::ok) return finish(m);
       if (stopped) {
@@ -257,7 +242,7 @@ RoomEnding RoomController::run_waypoints() {
                                position_.x_m, position_.y_m,
                                senses_.bumped() ? std::string("a bumper is pressed")
                                                 : fmt::format("a return {:.2f} m ahead", senses_.clearance_ahead_m()));
-        return RoomEnding::blocked;
+        return MetricEnding::blocked;
       }
     }
     // A lap with every point where the robot stands takes no step: it rests there a step,
@@ -266,16 +251,16 @@ RoomEnding RoomController::run_waypoints() {
       if (const Motion m = drive_.come_to_rest(); m != Motion::ok) return finish(m);
     }
   }
-  message_ = room_.laps == 1 ? fmt::format("reached all {} waypoints", count)
-                             : fmt::format("reached all {} waypoints {} times", count, room_.laps);
-  return RoomEnding::arrived;
+  message_ = metric_.laps == 1 ? fmt::format("reached all {} waypoints", count)
+                             : fmt::format("reached all {} waypoints {} times", count, metric_.laps);
+  return MetricEnding::arrived;
 }
 
-RoomEnding RoomController::run_wavefront() {
-  const auto goal_cell = map_.cell_at(*room_.goal);
+MetricEnding MetricController::run_wavefront() {
+  const auto goal_cell = map_.cell_at(*metric_.goal);
   if (!goal_cell) {
-    message_ = fmt::format("the goal ({:g}, {:g}) is outside the map", room_.goal->x_m, room_.goal->y_m);
-    return RoomEnding::unreachable;
+    message_ = fmt::format("the goal ({:g}, {:g}) is outside the map", metric_.goal->x_m, metric_.goal->y_m);
+    return MetricEnding::unreachable;
   }
   const std::size_t goal = map_.index(*goal_cell);
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
@@ -284,9 +269,9 @@ RoomEnding RoomController::run_wavefront() {
     const std::size_t here = map_.index(robot_cell());
     if (here == goal) {
       bool stopped = false;
-      if (const Motion m = go_to(*room_.goal, StopWhen::never, &stopped); m != Motion::ok) return finish(m);
-      message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", room_.goal->x_m, room_.goal->y_m, steps_);
-      return RoomEnding::goal_reached;
+      if (const Motion m = go_to(*metric_.goal, StopWhen::never, &stopped); m != Motion::ok) return finish(m);
+      message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", metric_.goal->x_m, metric_.goal->y_m, steps_);
+      return MetricEnding::goal_reached;
     }
     std::vector<bool> blocked = obstacles(false);
     // The growth keeps the way clear of the body; like the robot's own cell, the goal's is an
@@ -297,8 +282,8 @@ RoomEnding RoomController::run_wavefront() {
     if (!path) {
       path_.clear();
       message_ = fmt::format("no path to the goal ({:g}, {:g}) on the map with obstacles grown by {} cell{}",
-                             room_.goal->x_m, room_.goal->y_m, room_.dilate, room_.dilate == 1 ? "" : "s");
-      return RoomEnding::unreachable;
+                             metric_.goal->x_m, metric_.goal->y_m, metric_.dilate, metric_.dilate == 1 ? "" : "s");
+      return MetricEnding::unreachable;
     }
     path_ = *path;
     // The closest point of the path ahead: its next cell.
@@ -317,15 +302,15 @@ RoomEnding RoomController::run_wavefront() {
     if (bare_stops >= kMaxBareStops) {
       message_ = fmt::format("no progress to the goal ({:g}, {:g}): stopped by a touch {} times at ({:.2f}, {:.2f}) "
                              "and learned nothing new",
-                             room_.goal->x_m, room_.goal->y_m, bare_stops, position_.x_m, position_.y_m);
-      return RoomEnding::no_progress;
+                             metric_.goal->x_m, metric_.goal->y_m, bare_stops, position_.x_m, position_.y_m);
+      return MetricEnding::no_progress;
     }
     if (const Motion b = back_off(); b != Motion::ok && b != Motion::no_progress) return finish(b);
   }
 }
 
-RoomEnding RoomController::run_wander() {
-  common::Rng rng(room_.seed);
+MetricEnding MetricController::run_wander() {
+  common::Rng rng(metric_.seed);
   const std::function<void()> none;
   const std::function<bool()> never = [] { return false; };
   for (;;) {
@@ -340,8 +325,8 @@ RoomEnding RoomController::run_wander() {
         return finish(m);
       }
     }
-    const Point back{position_.x_m - room_.back_off_m * std::cos(yaw), position_.y_m - room_.back_off_m * std::sin(yaw)};
-    if (const Motion m = drive_.drive_along(back, yaw, -room_.back_off_m, "backing off", none, never);
+    const Point back{position_.x_m - metric_.back_off_m * std::cos(yaw), position_.y_m - metric_.back_off_m * std::sin(yaw)};
+    if (const Motion m = drive_.drive_along(back, yaw, -metric_.back_off_m, "backing off", none, never);
         m != Motion::ok && m != Motion::no_progress) {
       return finish(m);
     }

@@ -8,18 +8,18 @@
 
 #include "common/error.hpp"
 #include "mapping/sensor_model.hpp"
-#include "plan/room_wavefront.hpp"
+#include "plan/metric_wavefront.hpp"
 #include "sensing/pie_demo.hpp"
-#include "sensing/room_map.hpp"
+#include "sensing/metric_map.hpp"
 
-using sensing::RoomCell;
-using sensing::RoomMap;
-using sensing::RoomMarks;
+using sensing::MetricCell;
+using sensing::MetricMap;
+using sensing::MetricMarks;
 
 namespace {
 
 // '#' occupied (l > 0), '.' free (l < 0), ' ' untouched; north row first.
-std::string picture(const RoomMap &map) {
+std::string picture(const MetricMap &map) {
   std::string out;
   for (int j = map.cells_y() - 1; j >= 0; --j) {
     for (int i = 0; i < map.cells_x(); ++i) {
@@ -34,34 +34,34 @@ std::string picture(const RoomMap &map) {
 }  // namespace
 
 TEST_CASE("room grid: --cells must make square cells, --resolution covers the boundary") {
-  const sensing::RoomBoundary room{0.0, 5.0, 0.0, 3.0};
-  const auto spec = sensing::room_grid_from_resolution(room, 0.1);
+  const sensing::MetricBoundary room{0.0, 5.0, 0.0, 3.0};
+  const auto spec = sensing::metric_grid_from_resolution(room, 0.1);
   CHECK(spec.cells_x == 50);
   CHECK(spec.cells_y == 30);
-  const auto coarse = sensing::room_grid_from_resolution(room, 0.4);  // 12.5 x 7.5: rounded up
+  const auto coarse = sensing::metric_grid_from_resolution(room, 0.4);  // 12.5 x 7.5: rounded up
   CHECK(coarse.cells_x == 13);
   CHECK(coarse.cells_y == 8);
   CHECK(coarse.boundary.x_end_m == doctest::Approx(5.2));
-  CHECK(sensing::room_grid_from_cells(room, 50, 30).cell_m == doctest::Approx(0.1));
-  CHECK_THROWS_WITH_AS(sensing::room_grid_from_cells(room, 25, 25),
+  CHECK(sensing::metric_grid_from_cells(room, 50, 30).cell_m == doctest::Approx(0.1));
+  CHECK_THROWS_WITH_AS(sensing::metric_grid_from_cells(room, 25, 25),
                        doctest::Contains("cells are square (try --cells 25,15 or --resolution 0.2)"),
                        common::InputError);
-  auto huge = sensing::room_grid_from_resolution(room, 0.001);
+  auto huge = sensing::metric_grid_from_resolution(room, 0.001);
   CHECK_THROWS_WITH_AS(sensing::validate(huge, 1u << 20), doctest::Contains("would take"), common::InputError);
-  CHECK_THROWS_AS(sensing::room_grid_from_resolution({0, 0, 0, 1}, 0.1), common::InputError);
+  CHECK_THROWS_AS(sensing::metric_grid_from_resolution({0, 0, 0, 1}, 0.1), common::InputError);
 }
 
 TEST_CASE("room marks: one update a cell a scan, occupied wins, the classroom numbers") {
   mapping::SensorModelOptions o;
   o.base = mapping::LogBase::ten;
   const mapping::SensorModel model(o);
-  RoomMap map(sensing::room_grid_from_cells({0, 3, 0, 3}, 3, 3), model);
-  RoomMarks marks(0.99999, 0.3);
-  marks.mark(map, RoomCell{1, 1}, sensing::kRoomFree);
-  marks.mark(map, RoomCell{1, 1}, sensing::kRoomFree);
-  marks.mark(map, RoomCell{2, 2}, sensing::kRoomFree);
-  marks.mark(map, RoomCell{2, 2}, sensing::kRoomOccupied);
-  marks.mark(map, RoomCell{7, 7}, sensing::kRoomOccupied);  // outside: ignored
+  MetricMap map(sensing::metric_grid_from_cells({0, 3, 0, 3}, 3, 3), model);
+  MetricMarks marks(0.99999, 0.3);
+  marks.mark(map, MetricCell{1, 1}, sensing::kMetricFree);
+  marks.mark(map, MetricCell{1, 1}, sensing::kMetricFree);
+  marks.mark(map, MetricCell{2, 2}, sensing::kMetricFree);
+  marks.mark(map, MetricCell{2, 2}, sensing::kMetricOccupied);
+  marks.mark(map, MetricCell{7, 7}, sensing::kMetricOccupied);  // outside: ignored
   CHECK(marks.apply(map) == 2);
   CHECK(map.log_odds({1, 1}) == doctest::Approx(-0.368).epsilon(0.001));
   CHECK(map.log_odds({2, 2}) == doctest::Approx(5.0).epsilon(0.001));
@@ -70,7 +70,7 @@ TEST_CASE("room marks: one update a cell a scan, occupied wins, the classroom nu
 
 TEST_CASE("room lidar: cells before the hit free, the hit occupied, no return frees to max range") {
   const mapping::SensorModel model;
-  RoomMap map(sensing::room_grid_from_resolution({0, 1, 0, 0.5}, 0.1), model);
+  MetricMap map(sensing::metric_grid_from_resolution({0, 1, 0, 0.5}, 0.1), model);
   // Two beams from (0.05, 0.25): ahead (east) hits at 0.6 m, the other (north) sees nothing
   // and frees to the grid's edge.
   const std::vector<float> ranges{INFINITY, 0.6f};
@@ -81,8 +81,8 @@ TEST_CASE("room lidar: cells before the hit free, the hit occupied, no return fr
   scan.min_range_m = 0.0;
   scan.max_range_m = 1.0;
   scan.ranges = ranges;
-  RoomMarks marks(model.options().p_occ, model.options().p_free);
-  sensing::mark_room_lidar(map, scan, marks);
+  MetricMarks marks(model.options().p_occ, model.options().p_free);
+  sensing::mark_metric_lidar(map, scan, marks);
   marks.apply(map);
   CHECK(picture(map) ==
         ".         \n"
@@ -98,7 +98,7 @@ TEST_CASE("room pie: the same verdicts as demo pie on the same cells") {
   mapping::SensorModelOptions so;
   so.prior = 0.5;
   const mapping::SensorModel model(so);
-  RoomMap map(sensing::room_grid_from_resolution({0, 4, 0, 4}, 0.1), model);
+  MetricMap map(sensing::metric_grid_from_resolution({0, 4, 0, 4}, 0.1), model);
   std::vector<sensing::RangeReading> readings;
   for (std::size_t n = 0; n < demo.readings_m.size(); ++n) {
     sensing::RangeReading r;
@@ -111,8 +111,8 @@ TEST_CASE("room pie: the same verdicts as demo pie on the same cells") {
   sensing::RangeModelOptions ro;
   ro.pie_half_angle_rad = demo.half_angle_deg * 3.14159265358979323846 / 180.0;
   ro.pie_contact_m = demo.contact_m;
-  RoomMarks marks(sensing::kPieOccupiedP, sensing::kPieFreeP);
-  sensing::mark_room_pie(map, ro, readings, marks);
+  MetricMarks marks(sensing::kPieOccupiedP, sensing::kPieFreeP);
+  sensing::mark_metric_pie(map, ro, readings, marks);
   marks.apply(map);
   int compared = 0;
   for (const sensing::PieDemoCell &c : sensing::pie_demo_update(demo)) {
@@ -132,7 +132,7 @@ TEST_CASE("room pie: the same verdicts as demo pie on the same cells") {
 // sweep ends at 9.7 - 0.25 cells, in cell 9.
 TEST_CASE("room cone: the arc occupied, the cone inside free; a sonar's nothing-seen marks nothing") {
   const mapping::SensorModel model;
-  RoomMap map(sensing::room_grid_from_resolution({0, 2, 0, 0.3}, 0.1), model);
+  MetricMap map(sensing::metric_grid_from_resolution({0, 2, 0, 0.3}, 0.1), model);
   sensing::RangeReading ir;
   ir.origin = {0.05, 0.15};
   ir.angle_rad = 0.0;
@@ -140,18 +140,18 @@ TEST_CASE("room cone: the arc occupied, the cone inside free; a sonar's nothing-
   ir.max_range_m = 1.5;
   ir.aperture_rad = 0.03;
   ir.range_error = 0.03;
-  RoomMarks marks(model.options().p_occ, model.options().p_free);
-  sensing::mark_room_cone(map, std::span(&ir, 1), marks);
+  MetricMarks marks(model.options().p_occ, model.options().p_free);
+  sensing::mark_metric_cone(map, std::span(&ir, 1), marks);
   marks.apply(map);
   CHECK(picture(map) ==
         "                    \n"
         "..........#         \n"
         "                    \n");
-  RoomMap other(map.spec(), model);
+  MetricMap other(map.spec(), model);
   sensing::RangeReading sonar = ir;
   sonar.range_m = 1.5;
   sonar.echo_can_be_lost = true;
-  sensing::mark_room_cone(other, std::span(&sonar, 1), marks);
+  sensing::mark_metric_cone(other, std::span(&sonar, 1), marks);
   CHECK(marks.empty());
 }
 

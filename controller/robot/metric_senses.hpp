@@ -1,5 +1,5 @@
 #pragma once
-// What a robot in a room senses with, read into the room map (sensing/room_map.hpp): its
+// What a robot in a room senses with, read into the room map (sensing/metric_map.hpp): its
 // lidar, its IR or sonar ring, its bumpers or its depth rays, as its set-up says (--model:
 // cell and ray read the lidar with the room's ray marks; pie, cone, bump and depth their own).
 // One scan reads every device at the pose the robot's own devices give, marks and applies.
@@ -14,22 +14,22 @@
 #include "robot/options.hpp"
 #include "robot/sensor_devices.hpp"
 #include "sensing/log_map.hpp"
-#include "sensing/room_map.hpp"
+#include "sensing/metric_map.hpp"
 #include "sensing/scan_filter.hpp"
 
 namespace robot {
 
-enum class RoomSensing { lidar, pie, cone, bump, depth };
-RoomSensing room_sensing_for(sensing::ModelKind kind);
+enum class MetricSensing { lidar, pie, cone, bump, depth };
+MetricSensing metric_sensing_for(sensing::ModelKind kind);
 
 // A return within this angle of the heading counts as ahead.
 inline constexpr double kAheadHalfAngle_rad = 0.35;
 
-class RoomSenses {
+class MetricSenses {
  public:
   // Finds the devices (common::InputError naming one the robot lacks; bump needs three
   // bumpers at 0 and +-45 deg, depth nine range sensors, as the homework's log has).
-  RoomSenses(webots::Robot &robot, const ControllerOptions &options, sensing::RoomMap &map);
+  MetricSenses(webots::Robot &robot, const ControllerOptions &options, sensing::MetricMap &map);
   void enable(int time_step_ms);
 
   // Reads every device at the robot's pose, marks and applies; returns the cells updated.
@@ -40,7 +40,7 @@ class RoomSenses {
   bool bumped() const { return bumped_; }
   // The last scan as map-log reads it (bump and depth set-ups).
   const sensing::LogStep &log_step() const { return log_step_; }
-  RoomSensing sensing() const { return sensing_; }
+  MetricSensing sensing() const { return sensing_; }
   // Whether a reading of nothing seen marks nothing (the cone set-up with a sonar, whose echo
   // may be lost at a slant): then the ground the body covers is what observes open floor.
   bool nothing_seen_marks_nothing() const;
@@ -50,13 +50,13 @@ class RoomSenses {
   void read_depth_mounts(const std::vector<RangeSensorMount> &mounts);
 
   const ControllerOptions &options_;
-  sensing::RoomMap &map_;
-  RoomSensing sensing_;
+  sensing::MetricMap &map_;
+  MetricSensing sensing_;
   sensing::LogMapOptions log_options_;
   SensorDevices devices_;
   int bumper_of_side_[3] = {-1, -1, -1};  // right, left, front: index into devices_.bumpers
   sensing::ScanFilter filter_;
-  sensing::RoomMarks marks_;
+  sensing::MetricMarks marks_;
   std::vector<sensing::RangeReading> readings_;
   sensing::LogStep log_step_;
   double clearance_ahead_m_ = std::numeric_limits<double>::infinity();

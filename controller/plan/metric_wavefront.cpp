@@ -1,6 +1,6 @@
-// The wavefront on a plain grid (plan/room_wavefront.hpp).
+// The wavefront on a plain grid (plan/metric_wavefront.hpp).
 
-#include "plan/room_wavefront.hpp"
+#include "plan/metric_wavefront.hpp"
 
 #include <algorithm>
 #include <deque>

@@ -1,5 +1,5 @@
 #pragma once
-// The wavefront on a plain grid of cells (the room map's: sensing/room_map.hpp), as the
+// The wavefront on a plain grid of cells (the room map's: sensing/metric_map.hpp), as the
 // wavefront labs grade it: the blocked cells (obstacles, grown by `dilate` cells in every
 // direction: a square, Chebyshev distance) are 1, the goal 2, and the wave spreads from the
 // goal over free cells, 4 neighbours, each cell one more than the cell it came from; a free

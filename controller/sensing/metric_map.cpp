@@ -1,6 +1,6 @@
-// The room map and its marks (sensing/room_map.hpp).
+// The room map and its marks (sensing/metric_map.hpp).
 
-#include "sensing/room_map.hpp"
+#include "sensing/metric_map.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kSquareTolerance = 1e-9;
 
-void require_boundary(const RoomBoundary &b) {
+void require_boundary(const MetricBoundary &b) {
   for (const double v : {b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m}) {
     common::require_input(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
   }
@@ -32,11 +32,11 @@ void require_boundary(const RoomBoundary &b) {
 
 }  // namespace
 
-RoomGridSpec room_grid_from_cells(const RoomBoundary &b, int cells_x, int cells_y) {
+MetricGridSpec metric_grid_from_cells(const MetricBoundary &b, int cells_x, int cells_y) {
   require_boundary(b);
   common::require_input(
-      cells_x >= 1 && cells_y >= 1 && cells_x <= kMaxRoomCellsPerSide && cells_y <= kMaxRoomCellsPerSide,
-      fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxRoomCellsPerSide, cells_x, cells_y));
+      cells_x >= 1 && cells_y >= 1 && cells_x <= kMaxMetricCellsPerSide && cells_y <= kMaxMetricCellsPerSide,
+      fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxMetricCellsPerSide, cells_x, cells_y));
   const double w = b.width_m() / cells_x;
   const double h = b.height_m() / cells_y;
   common::require_input(
@@ -45,21 +45,21 @@ RoomGridSpec room_grid_from_cells(const RoomBoundary &b, int cells_x, int cells_
                   "map's cells are square (try --cells {},{} or --resolution {:g})",
                   cells_x, cells_y, b.width_m(), b.height_m(), w, h, cells_x,
                   std::max(1, static_cast<int>(std::lround(b.height_m() / w))), w));
-  RoomGridSpec s{b, cells_x, cells_y, w};
+  MetricGridSpec s{b, cells_x, cells_y, w};
   return s;
 }
 
-RoomGridSpec room_grid_from_resolution(const RoomBoundary &b, double cell_m) {
+MetricGridSpec metric_grid_from_resolution(const MetricBoundary &b, double cell_m) {
   require_boundary(b);
   common::require_input(std::isfinite(cell_m) && cell_m > 0.0,
                         fmt::format("--resolution must be > 0 m (got {})", cell_m));
   const double nx = std::ceil(b.width_m() / cell_m - 1e-9);
   const double ny = std::ceil(b.height_m() / cell_m - 1e-9);
   common::require_input(
-      nx <= kMaxRoomCellsPerSide && ny <= kMaxRoomCellsPerSide,
+      nx <= kMaxMetricCellsPerSide && ny <= kMaxMetricCellsPerSide,
       fmt::format("--resolution {:g} m over a {:g} x {:g} m boundary makes {:g} x {:g} cells; at most {} a side",
-                  cell_m, b.width_m(), b.height_m(), nx, ny, kMaxRoomCellsPerSide));
-  RoomGridSpec s;
+                  cell_m, b.width_m(), b.height_m(), nx, ny, kMaxMetricCellsPerSide));
+  MetricGridSpec s;
   s.cells_x = std::max(1, static_cast<int>(nx));
   s.cells_y = std::max(1, static_cast<int>(ny));
   s.cell_m = cell_m;
@@ -67,21 +67,21 @@ RoomGridSpec room_grid_from_resolution(const RoomBoundary &b, double cell_m) {
   return s;
 }
 
-std::uint64_t room_map_bytes(const RoomGridSpec &s) {
+std::uint64_t metric_map_bytes(const MetricGridSpec &s) {
   // a double per cell, a level byte and a marked index for a scan's marks
   const auto cells = static_cast<std::uint64_t>(s.cells_x) * static_cast<std::uint64_t>(s.cells_y);
   return cells * (sizeof(double) + 1 + sizeof(std::size_t));
 }
 
-void validate(const RoomGridSpec &s, std::uint64_t max_bytes) {
+void validate(const MetricGridSpec &s, std::uint64_t max_bytes) {
   require_boundary(s.boundary);
   common::require_input(
-      s.cells_x >= 1 && s.cells_y >= 1 && s.cells_x <= kMaxRoomCellsPerSide && s.cells_y <= kMaxRoomCellsPerSide,
-      fmt::format("the room map must have 1 to {} cells a side (got {} x {})", kMaxRoomCellsPerSide, s.cells_x,
+      s.cells_x >= 1 && s.cells_y >= 1 && s.cells_x <= kMaxMetricCellsPerSide && s.cells_y <= kMaxMetricCellsPerSide,
+      fmt::format("the room map must have 1 to {} cells a side (got {} x {})", kMaxMetricCellsPerSide, s.cells_x,
                   s.cells_y));
   common::require_input(std::isfinite(s.cell_m) && s.cell_m > 0.0,
                         fmt::format("the room map's cells must be > 0 m (got {})", s.cell_m));
-  const std::uint64_t bytes = room_map_bytes(s);
+  const std::uint64_t bytes = metric_map_bytes(s);
   common::require_input(bytes <= max_bytes,
                         fmt::format("a {} x {} room map would take {:.1f} MiB, more than {:.0f} MiB: use a coarser "
                                     "--resolution or fewer --cells",
@@ -89,7 +89,7 @@ void validate(const RoomGridSpec &s, std::uint64_t max_bytes) {
                                     static_cast<double>(max_bytes) / 1048576.0));
 }
 
-RoomMap::RoomMap(const RoomGridSpec &spec, const mapping::SensorModel &model) : spec_(spec), model_(model) {
+MetricMap::MetricMap(const MetricGridSpec &spec, const mapping::SensorModel &model) : spec_(spec), model_(model) {
   validate(spec_);
   geometry_.width_cells = spec_.cells_x;
   geometry_.height_cells = spec_.cells_y;
@@ -102,18 +102,18 @@ RoomMap::RoomMap(const RoomGridSpec &spec, const mapping::SensorModel &model) : 
                         model_.prior_log_odds());
 }
 
-std::optional<RoomCell> RoomMap::cell_at(mapping::Point p) const {
+std::optional<MetricCell> MetricMap::cell_at(mapping::Point p) const {
   const double fx = std::floor((p.x_m - spec_.boundary.x_start_m) / spec_.cell_m);
   const double fy = std::floor((p.y_m - spec_.boundary.y_start_m) / spec_.cell_m);
   if (!(fx >= 0 && fy >= 0 && fx < spec_.cells_x && fy < spec_.cells_y)) return std::nullopt;
-  return RoomCell{static_cast<int>(fx), static_cast<int>(fy)};
+  return MetricCell{static_cast<int>(fx), static_cast<int>(fy)};
 }
 
-mapping::Point RoomMap::centre_of(RoomCell c) const {
+mapping::Point MetricMap::centre_of(MetricCell c) const {
   return {spec_.boundary.x_start_m + (c.i + 0.5) * spec_.cell_m, spec_.boundary.y_start_m + (c.j + 0.5) * spec_.cell_m};
 }
 
-LogMapOptions RoomMap::log_options() const {
+LogMapOptions MetricMap::log_options() const {
   LogMapOptions o;
   o.cells_x = spec_.cells_x;
   o.cells_y = spec_.cells_y;
@@ -126,7 +126,7 @@ LogMapOptions RoomMap::log_options() const {
   return o;
 }
 
-void RoomMarks::mark(const RoomMap &map, RoomCell c, int level) {
+void MetricMarks::mark(const MetricMap &map, MetricCell c, int level) {
   if (!map.contains(c)) return;
   if (level_.size() != map.size()) level_.assign(map.size(), kUnmarked);
   const std::size_t flat = map.index(c);
@@ -135,24 +135,24 @@ void RoomMarks::mark(const RoomMap &map, RoomCell c, int level) {
   level_[flat] = std::min(level_[flat], l);
 }
 
-void RoomMarks::mark(const RoomMap &map, mapping::Point p, int level) {
+void MetricMarks::mark(const MetricMap &map, mapping::Point p, int level) {
   if (const auto c = map.cell_at(p)) mark(map, *c, level);
 }
 
-int RoomMarks::level_of(const RoomMap &map, RoomCell c) const {
+int MetricMarks::level_of(const MetricMap &map, MetricCell c) const {
   if (!map.contains(c) || level_.size() != map.size()) return -1;
   const std::uint8_t l = level_[map.index(c)];
   return l == kUnmarked ? -1 : l;
 }
 
-void RoomMap::observe_by_body(std::size_t flat) {
+void MetricMap::observe_by_body(std::size_t flat) {
   if (unobserved_at(flat)) ++body_observed_;
   grid_.log_odds[flat] = model_.update_free(grid_.log_odds[flat]);
 }
 
-void RoomMap::observe_contact(std::size_t flat) { grid_.log_odds[flat] = model_.update_occupied(grid_.log_odds[flat]); }
+void MetricMap::observe_contact(std::size_t flat) { grid_.log_odds[flat] = model_.update_occupied(grid_.log_odds[flat]); }
 
-std::size_t RoomMarks::apply(RoomMap &map) {
+std::size_t MetricMarks::apply(MetricMap &map) {
   const mapping::SensorModel &model = map.model();
   const double increments[2] = {model.increment_for(level_p_[0]), model.increment_for(level_p_[1])};
   std::vector<double> &values = map.log_grid().log_odds;
@@ -165,7 +165,7 @@ std::size_t RoomMarks::apply(RoomMap &map) {
   return count;
 }
 
-void mark_room_lidar(const RoomMap &map, const LidarScan &scan, RoomMarks &marks) {
+void mark_metric_lidar(const MetricMap &map, const LidarScan &scan, MetricMarks &marks) {
   for (int n = 0; n < scan.beam_count(); ++n) {
     const ReadingKind kind = scan.kind(n);
     if (kind == ReadingKind::invalid) continue;
@@ -176,16 +176,16 @@ void mark_room_lidar(const RoomMap &map, const LidarScan &scan, RoomMarks &marks
     const double dy = std::sin(a);
     mapping::trace_ray(map.geometry(), scan.origin, dx, dy, [&](mapping::SubCell s, double exit_m) {
       if (exit_m >= reach) return false;
-      marks.mark(map, RoomCell{s.x, s.y}, kRoomFree);
+      marks.mark(map, MetricCell{s.x, s.y}, kMetricFree);
       return true;
     });
     const mapping::Point end{scan.origin.x_m + reach * dx, scan.origin.y_m + reach * dy};
-    marks.mark(map, end, hit ? kRoomOccupied : kRoomFree);
+    marks.mark(map, end, hit ? kMetricOccupied : kMetricFree);
   }
 }
 
-void mark_room_pie(const RoomMap &map, const RangeModelOptions &options, std::span<const RangeReading> readings,
-                   RoomMarks &marks) {
+void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std::span<const RangeReading> readings,
+                   MetricMarks &marks) {
   const double r = map.cell_m();
   const double x0 = map.spec().boundary.x_start_m;
   const double y0 = map.spec().boundary.y_start_m;
@@ -220,13 +220,13 @@ void mark_room_pie(const RoomMap &map, const RangeModelOptions &options, std::sp
         }
         const PieVerdict v = pie_demo_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
         if (v == PieVerdict::outside) continue;
-        marks.mark(map, RoomCell{i, j}, v == PieVerdict::contact ? kRoomOccupied : kRoomFree);
+        marks.mark(map, MetricCell{i, j}, v == PieVerdict::contact ? kMetricOccupied : kMetricFree);
       }
     }
   }
 }
 
-void mark_room_cone(const RoomMap &map, std::span<const RangeReading> readings, RoomMarks &marks) {
+void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readings, MetricMarks &marks) {
   const double r = map.cell_m();
   for (const RangeReading &reading : readings) {
     if (!(reading.range_m >= 0.0)) continue;
@@ -241,14 +241,14 @@ void mark_room_cone(const RoomMap &map, std::span<const RangeReading> readings, 
       if (reading.echo_can_be_lost) continue;
       const double reach_cells = reading.max_range_m * kConeNoReturnReach / r;
       in.d_cells = reach_cells;
-      for (const auto &[i, j] : cone_sweep_between(in, 0.0, reach_cells).cells) marks.mark(map, RoomCell{i, j}, kRoomFree);
+      for (const auto &[i, j] : cone_sweep_between(in, 0.0, reach_cells).cells) marks.mark(map, MetricCell{i, j}, kMetricFree);
       continue;
     }
     in.d_cells = reading.range_m / r;
     const double inner = in.d_cells * (1.0 - in.eps);
-    for (const auto &[i, j] : cone_sweep(in).cells) marks.mark(map, RoomCell{i, j}, kRoomOccupied);
+    for (const auto &[i, j] : cone_sweep(in).cells) marks.mark(map, MetricCell{i, j}, kMetricOccupied);
     for (const auto &[i, j] : cone_sweep_between(in, 0.0, inner - kConeSweepInc).cells) {
-      marks.mark(map, RoomCell{i, j}, kRoomFree);
+      marks.mark(map, MetricCell{i, j}, kMetricFree);
     }
   }
 }

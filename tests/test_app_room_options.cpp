@@ -1,0 +1,88 @@
+// The room command's options: described once in their table (app/cli/room_options.hpp), an
+// option that does nothing for the room run asked warned about as `run` warns, and the run
+// going on.
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli/commands.hpp"
+#include "app/cli/room_options.hpp"
+#include "cli_runner.hpp"
+#include "common/error.hpp"
+
+namespace {
+
+std::vector<std::string> room_warnings(std::set<std::string> typed, const app::RoomRunOptions &o) {
+  const app::GivenOptions given{"room", [&typed](std::string_view option) { return typed.count(std::string(option)) > 0; }};
+  return app::check_room_options_apply(given, o);
+}
+
+app::RoomRunOptions with(robot::MetricStrategy strategy, sensing::ModelKind model = sensing::ModelKind::ray) {
+  app::RoomRunOptions o;
+  o.room.strategy = strategy;
+  o.model.kind = model;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("room options: one that does nothing for the strategy or model asked is warned about as run warns") {
+  using robot::MetricStrategy;
+  CHECK(room_warnings({"--goal", "--dilate"}, with(MetricStrategy::frontier)) ==
+        std::vector<std::string>{"warning: --goal has no effect without --strategy wavefront",
+                                 "warning: --dilate has no effect without --strategy wavefront (frontier keeps the "
+                                 "body's radius clear)"});
+  CHECK(room_warnings({"--goal", "--dilate"}, with(MetricStrategy::wavefront)).empty());
+  CHECK(room_warnings({"--waypoints", "--laps"}, with(MetricStrategy::wander)) ==
+        std::vector<std::string>{"warning: --waypoints has no effect without --strategy waypoints",
+                                 "warning: --laps has no effect without --strategy waypoints"});
+  CHECK(room_warnings({"--waypoints", "--laps"}, with(MetricStrategy::waypoints)).empty());
+  CHECK(room_warnings({"--depth-reading", "--depth-origin"}, with(MetricStrategy::frontier, sensing::ModelKind::pie)) ==
+        std::vector<std::string>{"warning: --depth-reading has no effect with the pie model (read by depth)",
+                                 "warning: --depth-origin has no effect with the pie model (read by depth)"});
+  CHECK(room_warnings({"--depth-reading"}, with(MetricStrategy::frontier, sensing::ModelKind::depth)).empty());
+  CHECK(room_warnings({}, with(MetricStrategy::frontier)).empty());
+}
+
+TEST_CASE("room options: an option that does not apply warns and the run goes on") {
+  // --laps with wavefront: a warning on standard error, the run to the goal as without it.
+  const test_cli::Ran ran = test_cli::run({"room", std::string(WORLDS_DIR) + "/ir_room.room", "--strategy", "wavefront",
+                                           "--laps", "2", "--quiet"});
+  CHECK(ran.status == 0);
+  CHECK(ran.out.find("end: goal reached") != std::string::npos);
+}
+
+TEST_CASE("room options: every flag of the table is an option of room, and --resolution reads as in show") {
+  CLI::App cli{"maze_mapper", "maze_mapper"};
+  app::CommandContext context;
+  app::add_commands(cli, context);
+  const CLI::App *room = cli.get_subcommand("room");
+  for (const app::OptionField<app::RoomRunOptions> &field : app::option_fields<app::RoomRunOptions>()) {
+    CAPTURE(field.flag);
+    CHECK(room->get_option_no_throw(std::string(field.flag)) != nullptr);
+  }
+  const std::string resolution = room->get_option("--resolution")->get_description();
+  CHECK(resolution == "M: a cell's side, m (default 0.1)");
+  CHECK(cli.get_subcommand("show")->get_option("--resolution")->get_description().starts_with("M: a cell's side, m"));
+  // CLI11 takes the words last first.
+  std::vector<std::string> words{"0", "--resolution", "x.room", "room"};
+  CHECK_THROWS_WITH_AS(cli.parse(words), "--resolution must be > 0 m (got 0)", common::InputError);
+}
+
+TEST_CASE("room options: --cells with --resolution, and a threshold not finite, are refused") {
+  app::RoomRunOptions o;
+  o.cells_x = 10;
+  o.cells_y = 10;
+  o.resolution_m = 0.1;
+  CHECK_THROWS_WITH_AS(app::check_room_options(o), "give --cells or --resolution, not both", common::InputError);
+  app::RoomRunOptions t;
+  t.threshold = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_WITH_AS(app::check_room_options(t), doctest::Contains("--threshold must be a finite"), common::InputError);
+}

@@ -1,0 +1,135 @@
+// Frontier exploration over a metric map (explore/metric_frontier.hpp): which cells are
+// frontier, which one the robot drives to, and when a frontier cell is set aside (by itself,
+// tried again once the map has progressed).
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "explore/metric_frontier.hpp"
+#include "mapping/sensor_model.hpp"
+#include "plan/metric_wavefront.hpp"
+#include "sensing/metric_map.hpp"
+
+namespace {
+
+// A map from rows, north first: '.' seen free (p 0.1), '#' seen occupied (p 0.9), ' ' never
+// observed. The model and the map live as long as the fixture.
+struct PictureMap {
+  mapping::SensorModel model{mapping::SensorModelOptions{}};
+  sensing::MetricMap map;
+  explicit PictureMap(const std::vector<std::string> &rows)
+      : map(sensing::metric_grid_from_cells({0.0, 0.1 * static_cast<double>(rows[0].size()), 0.0,
+                                             0.1 * static_cast<double>(rows.size())},
+                                            static_cast<int>(rows[0].size()), static_cast<int>(rows.size())),
+            model) {
+    sensing::MetricMarks marks(0.9, 0.1);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      for (std::size_t i = 0; i < rows[r].size(); ++i) {
+        const sensing::MetricCell c{static_cast<int>(i), static_cast<int>(rows.size() - 1 - r)};
+        if (rows[r][i] == '.') marks.mark(map, c, sensing::kMetricFree);
+        if (rows[r][i] == '#') marks.mark(map, c, sensing::kMetricOccupied);
+      }
+    }
+    marks.apply(map);
+  }
+  std::size_t at(int i, int j) const { return map.index({i, j}); }
+  // Steps from (i, j) over cells seen free.
+  std::vector<std::int32_t> steps_from(int i, int j) const {
+    std::vector<bool> blocked(map.size());
+    for (std::size_t n = 0; n < map.size(); ++n) blocked[n] = map.unobserved_at(n) || map.probability_at(n) >= 0.5;
+    return plan::steps_from({map.cells_x(), map.cells_y()}, blocked, at(i, j));
+  }
+};
+
+// The flags as rows, north first: 'F' a flagged cell, '-' not.
+std::vector<std::string> rows_of(const sensing::MetricMap &map, const std::vector<bool> &flags) {
+  std::vector<std::string> rows;
+  for (int j = map.cells_y() - 1; j >= 0; --j) {
+    std::string row;
+    for (int i = 0; i < map.cells_x(); ++i) row += flags[map.index({i, j})] ? 'F' : '-';
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("metric frontier: the cells never observed beside one seen free") {
+  const PictureMap m({"  #   ",
+                      "..#   ",
+                      "...   ",
+                      "..#   "});
+  CHECK(rows_of(m.map, explore::frontier_cells(m.map)) == std::vector<std::string>{"FF----",
+                                                                                   "------",
+                                                                                   "---F--",
+                                                                                   "------"});
+}
+
+TEST_CASE("metric frontier: the target is the nearest cell reached that sees a frontier cell") {
+  // Two frontier cells: (3, 1) east of the room, and (0, 3) behind the wall in the north.
+  const PictureMap m({" #####",
+                      "#....#",
+                      "#.... ",
+                      "######"});
+  const explore::FrontierVisits visits(m.map.size());
+  const std::vector<std::int32_t> steps = m.steps_from(1, 1);
+  std::vector<bool> aims = explore::frontier_cells(m.map);
+  REQUIRE(aims[m.at(5, 1)]);
+  REQUIRE(aims[m.at(0, 3)] == false);  // beside no cell seen free
+  const auto t = explore::frontier_target(m.map, 0.6, aims, 5, visits, steps);
+  REQUIRE(t.has_value());
+  CHECK(t->aim == m.at(5, 1));
+  CHECK(t->target == m.at(1, 1));  // the robot's own cell sees it along the row
+  // Each visit that left it unobserved halves the view it is aimed at from: two cells, not five.
+  explore::FrontierVisits visited(m.map.size());
+  visited.visited(m.at(5, 1), true, {});
+  const auto nearer = explore::frontier_target(m.map, 0.6, aims, 5, visited, steps);
+  REQUIRE(nearer.has_value());
+  CHECK(nearer->target == m.at(3, 1));
+  // No cell reached: no target this round.
+  const std::vector<std::int32_t> nowhere(m.map.size(), -1);
+  CHECK(!explore::frontier_target(m.map, 0.6, aims, 5, visits, nowhere).has_value());
+}
+
+TEST_CASE("metric frontier: a cell left unobserved by three visits, or without a target, is set aside by itself, and "
+          "tried again once the map progressed") {
+  explore::FrontierVisits visits(4);
+  const explore::MapProgress before{10, 20};
+  visits.visited(1, true, before);
+  visits.visited(1, true, before);
+  CHECK(!visits.aside(1));
+  visits.visited(2, false, before);  // a visit that observed its cell
+  visits.visited(2, false, before);
+  visits.visited(2, false, before);
+  CHECK(!visits.aside(2));
+  visits.visited(1, true, before);
+  CHECK(visits.aside(1));
+  CHECK(visits.attempts(1) == explore::kMaxFrontierAttempts);
+  CHECK(!visits.aside(0));
+  CHECK(!visits.aside(3));
+  // Not again while the map stands still; again once it has progressed.
+  CHECK(!visits.retry(1, before));
+  CHECK(visits.retry(1, explore::MapProgress{11, 20}));
+  CHECK(visits.retry(1, explore::MapProgress{10, 21}));
+  CHECK(!visits.retry(0, explore::MapProgress{11, 21}));
+  // A cell without a target in a round where none had one: set aside alone, with no visit.
+  visits.set_aside(3, before);
+  CHECK(visits.aside(3));
+  CHECK(visits.attempts(3) == 0);
+  CHECK(!visits.aside(0));
+  CHECK(!visits.retry(3, before));
+  CHECK(visits.retry(3, explore::MapProgress{12, 20}));
+}
+
+TEST_CASE("metric frontier: the map's progress only grows") {
+  const PictureMap m({"..  ",
+                      "#.  "});
+  const explore::MapProgress first = explore::progress_of(m.map, 3, {});
+  CHECK(first == explore::MapProgress{4, 3});
+  // Fewer cells free for planning than before: the high-water mark stays.
+  CHECK(explore::progress_of(m.map, 2, first) == first);
+  CHECK(explore::progress_of(m.map, 5, first) == explore::MapProgress{4, 5});
+}
