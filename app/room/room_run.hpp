@@ -89,7 +89,7 @@ RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options,
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                         robot::MetricStopPoll interrupted = nullptr);
-// 0: done, goal reached, every waypoint reached, wander's time up; 128 + the signal when
+// 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.
 int room_exit_status(const RoomSummary &summary);
 

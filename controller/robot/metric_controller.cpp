@@ -207,7 +207,7 @@ MetricEnding MetricController::finish(Motion m) {
     case Motion::ended: message_ = "the simulation ended"; return MetricEnding::simulation_ended;
     case Motion::stopped:
       if (time_up_) {
-        message_ = fmt::format("the time limit of {:g} s was reached", metric_.time_limit_s);
+        message_ = fmt::format("{:g} s of simulated time", metric_.time_limit_s);
         return MetricEnding::time_up;
       }
       message_ = "stopped";

@@ -43,7 +43,7 @@ std::string_view to_string(MetricEnding e) {
     case MetricEnding::blocked: return "blocked";
     case MetricEnding::unreachable: return "unreachable";
     case MetricEnding::incomplete: return "incomplete";
-    case MetricEnding::time_up: return "time up";
+    case MetricEnding::time_up: return "time limit";
     case MetricEnding::no_progress: return "no progress";
     case MetricEnding::max_steps: return "max steps";
     case MetricEnding::simulation_ended: return "simulation ended";
