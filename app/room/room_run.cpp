@@ -336,15 +336,18 @@ int room_exit_status(const RoomSummary &s) {
 }
 
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
+                     std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted,
+                     Report *report) {
   if (const auto *a = std::get_if<maze::ArenaWorld>(&world)) {
-    return run_room_in(a->arena, options, out, started, interrupted);
+    return run_room_in(a->arena, options, out, started, interrupted, report);
   }
-  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started, interrupted);
+  return run_room_in(maze::arena_from_maze(std::get<maze::World>(world).maze), options, out, started, interrupted,
+                     report);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted) {
+                        std::chrono::steady_clock::time_point started, robot::RoomStopPoll interrupted,
+                        Report *report_out) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
@@ -406,6 +409,7 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
     }
     write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
   }
+  if (report_out != nullptr) *report_out = report;
   return summary;
 }
 
