@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The rows batch merge reads from these parts' texts, written to a scratch folder.
-std::vector<app::BatchRow> merged(const test_cli::TempDir &dir, const std::vector<std::string> &texts) {
+std::vector<app::BatchRow> merge_parts(const test_cli::TempDir &dir, const std::vector<std::string> &texts) {
   fs::create_directories(dir.path);
   std::vector<std::string> files;
   for (std::size_t i = 0; i < texts.size(); ++i) {
@@ -35,14 +35,14 @@ std::string totals_of(const std::vector<app::BatchRow> &rows) {
   return app::format_totals(totals);
 }
 
-const std::string kHeader =
+const std::string kRowHeader =
     "world,kind,robot,model,strategy,seed,size,end,end_message,steps,moves,sim_time_s,wall_time_ms,coverage,"
     "wall_accuracy,cell_accuracy,goal,speed_run,score,error";
 
 }  // namespace
 
 TEST_CASE("batch row: the columns are summary.json's core keys, then each kind's scores") {
-  CHECK(app::batch_csv_header() == kHeader);
+  CHECK(app::batch_csv_header() == kRowHeader);
   app::BatchRow row;
   row.world = "a,b.txt";
   row.kind = app::RunKind::room;
@@ -69,17 +69,17 @@ TEST_CASE("batch row: the columns are summary.json's core keys, then each kind's
 
 TEST_CASE("batch merge: maze, room and mms parts join into one CSV; the totals are a line a kind") {
   const test_cli::TempDir dir("merge_kinds");
-  const std::string maze_part = kHeader + "\n" +
+  const std::string maze_part = kRowHeader + "\n" +
                                 "a.txt,maze,hambot,cell,dfs,42,4x4,done,,2000,29,60.000,3,100.00,100.00,,,,,\n"
                                 "b.txt,maze,hambot,cell,dfs,42,4x4,incomplete,3 cells,900,12,30.000,2,50.00,75.00,,,,,"
                                 "ended: incomplete (3 cells)\n";
-  const std::string room_part = kHeader + "\n" +
+  const std::string room_part = kRowHeader + "\n" +
                                 "r.room,room,ir-fan,pie,frontier,42,,done,,2464,,78.848,2994,100.00,,86.47,,,,\n"
                                 "s.room,room,,,,,,,,,,,,,,,,,,error: cannot read s.room\n";
-  const std::string mms_part = kHeader + "\n" +
+  const std::string mms_part = kRowHeader + "\n" +
                                "m.txt,mms,hambot,cell,python3 f.py,42,4x4,exited,,700,20,20.000,5,100.00,100.00,,"
-                               "reached,,,1200,\n";
-  const std::vector<app::BatchRow> rows = merged(dir, {maze_part, room_part, mms_part});
+                               "reached,,1200,\n";
+  const std::vector<app::BatchRow> rows = merge_parts(dir, {maze_part, room_part, mms_part});
   REQUIRE(rows.size() == 5);
   CHECK(rows[0].kind == app::RunKind::maze);
   CHECK(rows[0].ok);
@@ -95,8 +95,8 @@ TEST_CASE("batch merge: maze, room and mms parts join into one CSV; the totals a
   // Joined, each row is written back as it was read.
   std::string joined;
   for (const app::BatchRow &row : rows) joined += app::format_batch_csv_row(row);
-  CHECK(kHeader + "\n" + joined ==
-        maze_part + room_part.substr(kHeader.size() + 1) + mms_part.substr(kHeader.size() + 1));
+  CHECK(kRowHeader + "\n" + joined ==
+        maze_part + room_part.substr(kRowHeader.size() + 1) + mms_part.substr(kRowHeader.size() + 1));
   CHECK(totals_of(rows) ==
         "total maze: 2 worlds, 1 ok, 1 failed; moves 41; mean coverage 75.00%; mean wall_accuracy 87.50%; run time 5 ms\n"
         "total room: 2 worlds, 1 ok, 1 failed; mean coverage 100.00%; mean cell_accuracy 86.47%; run time 2994 ms\n"
@@ -108,9 +108,9 @@ TEST_CASE("batch merge: maze, room and mms parts join into one CSV; the totals a
 TEST_CASE("batch merge: a room row that ended incomplete, or an mms row that missed its goal, is failed") {
   const test_cli::TempDir dir("merge_kind_ends");
   const std::vector<app::BatchRow> rows =
-      merged(dir, {kHeader + "\n" + "r.room,room,ir-fan,pie,frontier,42,,incomplete,,10,,1.000,3,50.00,,80.00,,,,\n" +
+      merge_parts(dir, {kRowHeader + "\n" + "r.room,room,ir-fan,pie,frontier,42,,incomplete,,10,,1.000,3,50.00,,80.00,,,,\n" +
                    "t.room,room,ir-fan,pie,wander,42,,time up,,10,,1.000,3,50.00,,80.00,,,,\n" +
-                   "m.txt,mms,hambot,cell,f,42,4x4,exited,,7,2,1.000,5,10.00,90.00,,not reached,,,0,\n"});
+                   "m.txt,mms,hambot,cell,f,42,4x4,exited,,7,2,1.000,5,10.00,90.00,,not reached,,0,\n"});
   REQUIRE(rows.size() == 3);
   CHECK_FALSE(rows[0].ok);
   CHECK(rows[1].ok);  // a room run's time limit is its planned end
@@ -127,7 +127,7 @@ TEST_CASE("batch merge: parts of the older maze and mms batches read as those ki
       "best_run_turns,best_run_effective_distance,score,ms,error\n"
       "m.txt,4x4,exited,40,20,reached,20,9,14.5,6,3,4.5,130.5,8,\n"
       "n.txt,,failed,,,,,,,,,,,,\"error: cannot read n.txt\"\n";
-  const std::vector<app::BatchRow> rows = merged(dir, {maze_part, mms_part});
+  const std::vector<app::BatchRow> rows = merge_parts(dir, {maze_part, mms_part});
   REQUIRE(rows.size() == 4);
   CHECK(app::format_batch_csv_row(rows[0]) == "a.txt,maze,,,,,4x4,done,,,29,,3,100.00,97.50,,reached,14,,\n");
   CHECK(rows[0].ok);
@@ -145,7 +145,7 @@ TEST_CASE("batch merge: a header that is none of the batches' names the one to w
   const std::string file = (dir.path / "x.csv").string();
   common::write_file_atomically(file, "world,size\na,4x4\n");
   CHECK_THROWS_WITH_AS(app::read_batch_csvs({file}),
-                       fmt::format("not a batch CSV (the first line must be '{}')", kHeader).c_str(),
+                       fmt::format("not a batch CSV (the first line must be '{}')", kRowHeader).c_str(),
                        common::InputError);
 }
 
@@ -182,7 +182,7 @@ TEST_CASE("batch: a folder's arenas run as room runs, their rows the room's scor
   CHECK(row.strategy == "frontier");
   CHECK(row.steps == 300);
   CHECK(row.end == "max steps");
-  CHECK(row.error == "ended: max steps");
+  CHECK(row.error == "ended: max steps (the step limit was reached)");
   CHECK(row.cell_accuracy_percent.has_value());
   CHECK(row.coverage_percent.has_value());
   CHECK_FALSE(row.wall_accuracy_percent);
@@ -194,7 +194,7 @@ TEST_CASE("batch: a folder's arenas run as room runs, their rows the room's scor
 
   // The batch's CSV merges back to the same rows.
   const std::string csv = app::format_batch_csv(items);
-  const std::vector<app::BatchRow> rows = merged(dir, {csv});
+  const std::vector<app::BatchRow> rows = merge_parts(dir, {csv});
   REQUIRE(rows.size() == 2);
   CHECK(app::format_batch_csv_row(rows[0]) == app::format_batch_csv_row(row));
   CHECK_FALSE(rows[0].ok);

@@ -108,8 +108,9 @@ TEST_CASE("batch merge: three parts of worlds/ with floodfill and a speed run eq
       CHECK(row.speed_run == "14");
     }
   }
-  CHECK(totals.worlds == static_cast<int>(list.worlds.size()));
-  CHECK(totals.with_goal == totals.goal_reached);
+  const app::KindTotals &mazes = totals.of(app::RunKind::maze);
+  CHECK(mazes.worlds == static_cast<int>(list.worlds.size()));
+  CHECK(mazes.with_goal == mazes.goal_reached);
 }
 
 TEST_CASE("batch merge: a file that is no batch CSV says where") {
@@ -201,11 +202,11 @@ TEST_CASE("batch merge: a number out of its column's range says where, to the co
 
 TEST_CASE("batch merge: a row that ended incomplete, wrong or without progress is failed in the merged totals") {
   const fs::path file = fs::temp_directory_path() / fmt::format("maze_mapper_merge_ends_{}.csv", ::getpid());
-  std::string rows;
+  std::string text;
   for (const char *end : {"done", "wrong map", "incomplete", "no progress"}) {
-    rows += maze_row(fmt::format("\"{}.txt\"", end), "29", "100.00", "97.50", "3", end);
+    text += maze_row(fmt::format("\"{}.txt\"", end), "29", "100.00", "97.50", "3", end);
   }
-  common::write_file_atomically(file.string(), part(rows));
+  common::write_file_atomically(file.string(), part(text));
   const std::vector<app::BatchRow> rows = app::read_batch_csvs({file.string()});
   REQUIRE(rows.size() == 4);
   CHECK(rows[0].ok);

@@ -226,14 +226,17 @@ std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, co
   std::vector<BatchJob> jobs;
   for (const std::string &w : worlds) {
     const RunKind kind = run_kind_of(w, choice);
+    if (kind == RunKind::room) {
+      jobs.push_back({w, std::nullopt, kind});  // a room run starts where its world says
+      continue;
+    }
     std::size_t count = 0;
     try {
-      if (kind == RunKind::room) throw common::InputError("a room run starts where its world says");
       maze::WorldOverrides size_only;
       size_only.cell_size_m = overrides.cell_size_m;
       count = maze::load_world(w, size_only).maze.start_positions().size();
     } catch (const common::InputError &) {
-      jobs.push_back({w, std::nullopt, kind});  // its run says why, or runs from the world's start
+      jobs.push_back({w, std::nullopt, kind});  // its run says why
       continue;
     }
     for (std::size_t n = 1; n <= count; ++n) jobs.push_back({w, static_cast<int>(n), kind});
@@ -263,6 +266,12 @@ RoomRunOptions room_options_for(const RunOptions &options, const std::function<b
   const bool ranges_only = room.model.kind == sensing::ModelKind::bump || room.model.kind == sensing::ModelKind::depth;
   if (ranges_only && !given("--log-base")) room.sensor.base = mapping::LogBase::ten;
   return room;
+}
+
+std::vector<BatchItem> run_batch(const BatchOptions &options, const std::vector<std::string> &worlds,
+                                 int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
+                                 bool (*interrupted)()) {
+  return run_batch(options, plain_jobs(worlds), jobs, progress, interrupted);
 }
 
 void for_each_in_pool(std::size_t count, int jobs, const std::function<void(std::size_t)> &run,
