@@ -100,7 +100,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   auto batch = std::make_shared<BatchInput>();
   CLI::App *command = cli.add_subcommand(
       "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
-  accept_shipped_world_names(command->add_option("WORLD", batch->worlds, "maze files or folders, or shipped worlds' names"));
+  accept_shipped_world_names(command->add_option("WORLD", batch->worlds, "world files (mazes, arenas) or folders, or shipped worlds' names"));
   command->add_option("--jobs", batch->jobs, "N: parallel runs (default all cores)");
   command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
   command->add_option("--shard", batch->shard,
@@ -118,7 +118,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   add_mms_options(*command, *mms);
   command->callback([command, parsed, batch, mms, &context] {
     if (command->got_subcommand("merge")) return;
-    if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (maze files or folders), or: batch merge CSV...");
+    if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (world files or folders), or: batch merge CSV...");
     RunOptions options = checked_run_options(*command, *parsed, false);
     options.output.quiet = true;
     print_warnings(options_not_applying(*command, options));
@@ -141,7 +141,8 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     if (list.worlds.empty() && !batch->shard.empty()) {
       fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch->shard);
     } else if (list.worlds.empty()) {
-      throw common::InputError(fmt::format("no world to run: the folders hold no maze file ({} other file{} skipped)",
+      throw common::InputError(fmt::format("no world to run: the folders hold no {} file ({} other file{} skipped)",
+                                           choice == KindChoice::maze || mms_batch ? "maze" : "world",
                                            list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
     }
     if (mms_batch) {
