@@ -80,10 +80,10 @@ std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, co
                                       KindChoice choice = KindChoice::maze);
 std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds, KindChoice choice = KindChoice::maze);
 
-// What a batch gives each run: a maze run's options, and a room run's (room_options_for). A
-// RunOptions alone converts, its room runs those of no option given.
+// What a batch gives each run: a maze run's options, and a room run's (room_options_for).
 struct BatchOptions {
-  BatchOptions(RunOptions run_options);  // NOLINT(google-explicit-constructor): a maze batch's options are a batch's
+  // Not explicit: a maze run's options are a batch's, its room runs those of no option given.
+  BatchOptions(RunOptions run_options);
   BatchOptions(RunOptions run_options, RoomRunOptions room_options);
   RunOptions run;
   RoomRunOptions room;
