@@ -63,54 +63,80 @@ RunKind kind_in(const CellIn &in) {
   throw cell_error(in, "must be maze, room or mms");
 }
 
-// A column: its name (summary.json's key), how a row writes it and reads it back.
+// A column: its name (summary.json's key), how a row writes it, reads it back, and takes it
+// from a run report's value of that key (null where the report has none; nullptr: not a key
+// of the report).
 struct Column {
   std::string_view name;
   std::string (*write)(const BatchRow &);
   void (*read)(BatchRow &, const CellIn &);
+  void (*take)(BatchRow &, const Json &) = nullptr;
 };
+
+std::string json_text(const Json &j) { return j.is_string() ? j.get<std::string>() : std::string(); }
+template <typename Number>
+std::optional<Number> json_number(const Json &j) {
+  return j.is_number() ? std::optional<Number>(j.get<Number>()) : std::nullopt;
+}
 
 constexpr double kMostMs = 1e12;   // 30 years of one run
 constexpr double kMostSimS = 1e12;
 
 const std::array kColumns{
-    Column{"world", [](const BatchRow &r) { return r.world; }, [](BatchRow &r, const CellIn &in) { r.world = in.field.text; }},
+    Column{"world", [](const BatchRow &r) { return r.world; }, [](BatchRow &r, const CellIn &in) { r.world = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.world = json_text(j); }},
     Column{"kind", [](const BatchRow &r) { return std::string(to_string(r.kind)); },
            [](BatchRow &r, const CellIn &in) { r.kind = kind_in(in); }},
-    Column{"robot", [](const BatchRow &r) { return r.robot; }, [](BatchRow &r, const CellIn &in) { r.robot = in.field.text; }},
-    Column{"model", [](const BatchRow &r) { return r.model; }, [](BatchRow &r, const CellIn &in) { r.model = in.field.text; }},
+    Column{"robot", [](const BatchRow &r) { return r.robot; }, [](BatchRow &r, const CellIn &in) { r.robot = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.robot = json_text(j); }},
+    Column{"model", [](const BatchRow &r) { return r.model; }, [](BatchRow &r, const CellIn &in) { r.model = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.model = json_text(j); }},
     Column{"strategy", [](const BatchRow &r) { return r.strategy; },
-           [](BatchRow &r, const CellIn &in) { r.strategy = in.field.text; }},
+           [](BatchRow &r, const CellIn &in) { r.strategy = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.strategy = json_text(j); }},
     Column{"seed", [](const BatchRow &r) { return whole_text(r.seed); },
            [](BatchRow &r, const CellIn &in) {
              r.seed = number_in<std::uint64_t>(in, 0, std::numeric_limits<std::uint64_t>::max(),
                                                "must be a whole number from 0");
-           }},
-    Column{"size", [](const BatchRow &r) { return r.size; }, [](BatchRow &r, const CellIn &in) { r.size = in.field.text; }},
-    Column{"end", [](const BatchRow &r) { return r.end; }, [](BatchRow &r, const CellIn &in) { r.end = in.field.text; }},
+           },
+           [](BatchRow &r, const Json &j) { r.seed = json_number<std::uint64_t>(j); }},
+    Column{"size", [](const BatchRow &r) { return r.size; }, [](BatchRow &r, const CellIn &in) { r.size = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.size = json_text(j); }},
+    Column{"end", [](const BatchRow &r) { return r.end; }, [](BatchRow &r, const CellIn &in) { r.end = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.end = json_text(j); }},
     Column{"end_message", [](const BatchRow &r) { return r.end_message; },
-           [](BatchRow &r, const CellIn &in) { r.end_message = in.field.text; }},
+           [](BatchRow &r, const CellIn &in) { r.end_message = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.end_message = json_text(j); }},
     Column{"steps", [](const BatchRow &r) { return whole_text(r.steps); },
-           [](BatchRow &r, const CellIn &in) { r.steps = count_in(in); }},
+           [](BatchRow &r, const CellIn &in) { r.steps = count_in(in); },
+           [](BatchRow &r, const Json &j) { r.steps = json_number<std::int64_t>(j); }},
     Column{"moves", [](const BatchRow &r) { return whole_text(r.moves); },
-           [](BatchRow &r, const CellIn &in) { r.moves = count_in(in); }},
+           [](BatchRow &r, const CellIn &in) { r.moves = count_in(in); },
+           [](BatchRow &r, const Json &j) { r.moves = json_number<std::int64_t>(j); }},
     Column{"sim_time_s", [](const BatchRow &r) { return fixed_text(r.sim_time_s, 3); },
            [](BatchRow &r, const CellIn &in) {
              r.sim_time_s = number_in(in, 0.0, kMostSimS, "must be a number of seconds from 0");
-           }},
+           },
+           [](BatchRow &r, const Json &j) { r.sim_time_s = json_number<double>(j); }},
     Column{"wall_time_ms", [](const BatchRow &r) { return fixed_text(r.wall_time_ms, 0); },
            [](BatchRow &r, const CellIn &in) {
              r.wall_time_ms = number_in(in, 0.0, kMostMs, "must be a number of milliseconds from 0");
-           }},
+           },
+           [](BatchRow &r, const Json &j) { r.wall_time_ms = json_number<double>(j); }},
     Column{"coverage", [](const BatchRow &r) { return percent_text(r.coverage_percent); },
-           [](BatchRow &r, const CellIn &in) { r.coverage_percent = percent_in(in); }},
+           [](BatchRow &r, const CellIn &in) { r.coverage_percent = percent_in(in); },
+           [](BatchRow &r, const Json &j) { r.coverage_percent = json_number<double>(j); }},
     Column{"wall_accuracy", [](const BatchRow &r) { return percent_text(r.wall_accuracy_percent); },
-           [](BatchRow &r, const CellIn &in) { r.wall_accuracy_percent = percent_in(in); }},
+           [](BatchRow &r, const CellIn &in) { r.wall_accuracy_percent = percent_in(in); },
+           [](BatchRow &r, const Json &j) { r.wall_accuracy_percent = json_number<double>(j); }},
     Column{"cell_accuracy", [](const BatchRow &r) { return percent_text(r.cell_accuracy_percent); },
-           [](BatchRow &r, const CellIn &in) { r.cell_accuracy_percent = percent_in(in); }},
-    Column{"goal", [](const BatchRow &r) { return r.goal; }, [](BatchRow &r, const CellIn &in) { r.goal = in.field.text; }},
+           [](BatchRow &r, const CellIn &in) { r.cell_accuracy_percent = percent_in(in); },
+           [](BatchRow &r, const Json &j) { r.cell_accuracy_percent = json_number<double>(j); }},
+    Column{"goal", [](const BatchRow &r) { return r.goal; }, [](BatchRow &r, const CellIn &in) { r.goal = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.goal = json_text(j); }},
     Column{"speed_run", [](const BatchRow &r) { return r.speed_run; },
-           [](BatchRow &r, const CellIn &in) { r.speed_run = in.field.text; }},
+           [](BatchRow &r, const CellIn &in) { r.speed_run = in.field.text; },
+           [](BatchRow &r, const Json &j) { r.speed_run = j.is_object() ? j["cells"].dump() : std::string(); }},
     Column{"score", [](const BatchRow &r) { return r.score ? mms_number(*r.score) : std::string(); },
            [](BatchRow &r, const CellIn &in) {
              r.score = number_in(in, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
@@ -133,17 +159,6 @@ const Json &json_of(const Report &report, std::string_view key) {
   static const Json kNull;
   const ReportEntry *entry = report.find(key);
   return entry != nullptr ? entry->json : kNull;
-}
-
-std::string text_of(const Report &report, std::string_view key) {
-  const Json &j = json_of(report, key);
-  return j.is_string() ? j.get<std::string>() : std::string();
-}
-
-template <typename Number>
-std::optional<Number> number_of(const Report &report, std::string_view key) {
-  const Json &j = json_of(report, key);
-  return j.is_number() ? std::optional<Number>(j.get<Number>()) : std::nullopt;
 }
 
 bool one_of(std::string_view end, std::initializer_list<std::string_view> ends) {
@@ -197,24 +212,9 @@ std::string_view to_string(RunKind kind) {
 BatchRow row_from_report(const Report &report) {
   BatchRow row;
   row.ran = true;
-  row.world = text_of(report, "world");
-  row.robot = text_of(report, "robot");
-  row.model = text_of(report, "model");
-  row.strategy = text_of(report, "strategy");
-  row.seed = number_of<std::uint64_t>(report, "seed");
-  row.size = text_of(report, "size");
-  row.end = text_of(report, "end");
-  row.end_message = text_of(report, "end_message");
-  row.steps = number_of<std::int64_t>(report, "steps");
-  row.moves = number_of<std::int64_t>(report, "moves");
-  row.sim_time_s = number_of<double>(report, "sim_time_s");
-  row.wall_time_ms = number_of<double>(report, "wall_time_ms");
-  row.coverage_percent = number_of<double>(report, "coverage");
-  row.wall_accuracy_percent = number_of<double>(report, "wall_accuracy");
-  row.cell_accuracy_percent = number_of<double>(report, "cell_accuracy");
-  row.goal = text_of(report, "goal");
-  const Json &speed_run = json_of(report, "speed_run");
-  if (speed_run.is_object()) row.speed_run = speed_run["cells"].dump();
+  for (const Column &c : kColumns) {
+    if (c.take != nullptr) c.take(row, json_of(report, c.name));
+  }
   return row;
 }
 

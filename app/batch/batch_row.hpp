@@ -67,10 +67,11 @@ struct BatchRow {
   std::string error;      // why the row failed: it did not run, or did not end as planned
 };
 
-// The core columns of a run's report (summary.json's values): world, robot, model, strategy,
-// seed, size, end, end_message, steps, moves, coverage, wall_accuracy, cell_accuracy, goal,
-// speed_run's cells, sim_time_s, wall_time_ms; `ran` set. The caller sets the row's name,
-// kind, ok and error.
+// The row of a run's report: every column but kind, score and error takes the report's
+// summary.json value of its own key (world, robot, model, strategy, seed, size, end,
+// end_message, steps, moves, sim_time_s, wall_time_ms, coverage, wall_accuracy, cell_accuracy,
+// goal, speed_run's cells), empty where the report has none; `ran` set. The caller sets the
+// row's name, kind, ok and error.
 BatchRow row_from_report(const Report &report);
 
 // Whether a row read back from a CSV ran as its kind counts a success: no error, and an end
