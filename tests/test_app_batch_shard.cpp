@@ -25,14 +25,24 @@ std::vector<std::string> names(int n) {
   return list;
 }
 
-// The CSV with every row's ms column zeroed (the one column that differs between runs).
+// The CSV without every row's wall_time_ms (the one column that differs between runs).
 std::string without_times(std::vector<app::BatchRow> rows) {
   std::string csv;
   for (app::BatchRow &row : rows) {
-    row.ms = 0.0;
+    row.wall_time_ms.reset();
     csv += app::format_batch_csv_row(row);
   }
   return csv;
+}
+
+// A part: the header, then the rows.
+std::string part(const std::string &rows) { return app::batch_csv_header() + "\n" + rows; }
+
+// A maze row that ran: its moves, coverage, wall_accuracy and wall_time_ms cells as given.
+std::string maze_row(const std::string &world, const std::string &moves, const std::string &coverage,
+                     const std::string &wall_accuracy, const std::string &ms, const std::string &end = "done") {
+  return fmt::format("{},maze,hambot,cell,dfs,42,4x4,{},,120,{},12.000,{},{},{},,,,,\n", world, end, moves, ms,
+                     coverage, wall_accuracy);
 }
 
 }  // namespace
@@ -98,20 +108,21 @@ TEST_CASE("batch merge: three parts of worlds/ with floodfill and a speed run eq
       CHECK(row.speed_run == "14");
     }
   }
-  CHECK(totals.worlds == static_cast<int>(list.worlds.size()));
-  CHECK(totals.with_goal == totals.goal_reached);
+  const app::KindTotals &mazes = totals.of(app::RunKind::maze);
+  CHECK(mazes.worlds == static_cast<int>(list.worlds.size()));
+  CHECK(mazes.with_goal == mazes.goal_reached);
 }
 
 TEST_CASE("batch merge: a file that is no batch CSV says where") {
   const fs::path file = fs::temp_directory_path() / fmt::format("maze_mapper_merge_{}.csv", ::getpid());
-  common::write_file_atomically(file.string(), std::string(app::kBatchCsvHeader) + "\n\"a\",4x4,x,1,1,,,1,done,\"\"\n");
+  common::write_file_atomically(file.string(), part("\"a\",maze,hambot,cell,dfs,42,4x4,done,,120,x,12.000,1,100.00,100.00,,,,,\"\"\n"));
   std::string diagnostic;
   try {
     app::read_batch_csvs({file.string()});
   } catch (const common::InputError &e) {
     diagnostic = e.diagnostic();
   }
-  CHECK(diagnostic == fmt::format("{}:2:9: error: moves must be a whole number from 0 (got 'x')", file.string()));
+  CHECK(diagnostic == fmt::format("{}:2:43: error: moves must be a whole number from 0 (got 'x')", file.string()));
   fs::remove(file);
 }
 
@@ -132,11 +143,11 @@ std::string merge_error(const std::vector<std::string> &parts) {
 TEST_CASE("batch merge: a part saved with a byte order mark and CRLF line ends reads as the plain one") {
   const test_cli::TempDir dir("merge_crlf");
   fs::create_directories(dir.path);
-  const std::string rows = "\"a.txt\",4x4,29,100.00,97.50,,,3,done,\n\"b\nc.txt\",4x4,12,50.00,75.00,,,4,done,\n";
+  const std::string rows = maze_row("\"a.txt\"", "29", "100.00", "97.50", "3") + maze_row("\"b\nc.txt\"", "12", "50.00", "75.00", "4");
   const std::string plain = (dir.path / "plain.csv").string();
   const std::string windows = (dir.path / "windows.csv").string();
-  common::write_file_atomically(plain, std::string(app::kBatchCsvHeader) + "\n" + rows);
-  std::string crlf = "\xEF\xBB\xBF" + std::string(app::kBatchCsvHeader) + "\n" + rows;
+  common::write_file_atomically(plain, part(rows));
+  std::string crlf = "\xEF\xBB\xBF" + part(rows);
   for (std::size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2)) crlf.insert(at, "\r");
   common::write_file_atomically(windows, crlf);
   const std::vector<app::BatchRow> want = app::read_batch_csvs({plain});
@@ -154,11 +165,10 @@ TEST_CASE("batch merge: a part given twice is refused, by its real path or its r
   const std::string link = (dir.path / "link.csv").string();
   const std::string empty1 = (dir.path / "empty1.csv").string();
   const std::string empty2 = (dir.path / "empty2.csv").string();
-  const std::string header = std::string(app::kBatchCsvHeader) + "\n";
-  common::write_file_atomically(a, header + "\"a.txt\",4x4,29,100.00,97.50,,,3,done,\n");
-  common::write_file_atomically(copy, header + "\"a.txt\",4x4,29,100.00,97.50,,,3,done,\n");
-  common::write_file_atomically(empty1, header);
-  common::write_file_atomically(empty2, header);
+  common::write_file_atomically(a, part(maze_row("a.txt", "29", "100.00", "97.50", "3")));
+  common::write_file_atomically(copy, part(maze_row("a.txt", "29", "100.00", "97.50", "3")));
+  common::write_file_atomically(empty1, part(""));
+  common::write_file_atomically(empty2, part(""));
   fs::create_symlink(a, link);
   CHECK(merge_error({a, a}) == fmt::format("{}: error: is {} again (the same file): its rows would count twice", a, a));
   CHECK(merge_error({a, link}) ==
@@ -172,26 +182,31 @@ TEST_CASE("batch merge: a number out of its column's range says where, to the co
   fs::create_directories(dir.path);
   const std::string file = (dir.path / "part.csv").string();
   const auto error_for = [&](const std::string &row) {
-    common::write_file_atomically(file, std::string(app::kBatchCsvHeader) + "\n" + row + "\n");
+    common::write_file_atomically(file, part(row));
     return merge_error({file});
   };
-  CHECK(error_for("a.txt,4x4,29,250,97.50,,,3,done,") ==
-        file + ":2:14: error: coverage must be a percentage from 0 to 100 (got '250')");
-  CHECK(error_for("a.txt,4x4,29,100,-1,,,3,done,") ==
-        file + ":2:18: error: wall_accuracy must be a percentage from 0 to 100 (got '-1')");
-  CHECK(error_for("a.txt,4x4,-3,100,100,,,3,done,") == file + ":2:11: error: moves must be a whole number from 0 (got '-3')");
-  CHECK(error_for("a.txt,4x4,3,100,100,,,inf,done,") ==
-        file + ":2:23: error: ms must be a number of milliseconds from 0 (got 'inf')");
-  CHECK(error_for("a.txt,4x4,3,100,100,,,0,done,").empty());
+  CHECK(error_for(maze_row("a.txt", "29", "250", "97.50", "3")) ==
+        file + ":2:57: error: coverage must be a percentage from 0 to 100 (got '250')");
+  CHECK(error_for(maze_row("a.txt", "29", "100", "-1", "3")) ==
+        file + ":2:61: error: wall_accuracy must be a percentage from 0 to 100 (got '-1')");
+  CHECK(error_for(maze_row("a.txt", "-3", "100", "100", "3")) ==
+        file + ":2:45: error: moves must be a whole number from 0 (got '-3')");
+  CHECK(error_for(maze_row("a.txt", "3", "100", "100", "inf")) ==
+        file + ":2:54: error: wall_time_ms must be a number of milliseconds from 0 (got 'inf')");
+  CHECK(error_for("a.txt,room,ir-fan,pie,frontier,42,,done,,120,,12.000,3,100,,101,,,,\n") ==
+        file + ":2:61: error: cell_accuracy must be a percentage from 0 to 100 (got '101')");
+  CHECK(error_for("a.txt,rooms,ir-fan,pie,frontier,42,,done,,120,,12.000,3,100,,99,,,,\n") ==
+        file + ":2:7: error: kind must be maze, room or mms (got 'rooms')");
+  CHECK(error_for(maze_row("a.txt", "3", "100", "100", "0")).empty());
 }
 
 TEST_CASE("batch merge: a row that ended incomplete, wrong or without progress is failed in the merged totals") {
   const fs::path file = fs::temp_directory_path() / fmt::format("maze_mapper_merge_ends_{}.csv", ::getpid());
-  std::string csv = std::string(app::kBatchCsvHeader) + "\n";
+  std::string text;
   for (const char *end : {"done", "wrong map", "incomplete", "no progress"}) {
-    csv += fmt::format("\"{}.txt\",4x4,29,100.00,97.50,,,3,{},\n", end, end);
+    text += maze_row(fmt::format("\"{}.txt\"", end), "29", "100.00", "97.50", "3", end);
   }
-  common::write_file_atomically(file.string(), csv);
+  common::write_file_atomically(file.string(), part(text));
   const std::vector<app::BatchRow> rows = app::read_batch_csvs({file.string()});
   REQUIRE(rows.size() == 4);
   CHECK(rows[0].ok);

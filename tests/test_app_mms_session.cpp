@@ -25,6 +25,8 @@
 #include "app/batch/batch.hpp"
 #include "app/batch/mms_batch.hpp"
 #include "app/mms/mms_session.hpp"
+#include "cli_runner.hpp"
+#include "common/atomic_file.hpp"
 #include "common/deadline.hpp"
 #include "common/error.hpp"
 #include "maze/sim/profile.hpp"
@@ -228,8 +230,23 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
   const std::string table = app::format_mms_batch_table(items, 0.0, list.skipped);
   CHECK(table.find("total: 8 worlds, 1 ok, 7 failed; goal reached 1 of 8") != std::string::npos);
   const std::string csv = app::format_mms_batch_csv(items);
-  CHECK(csv.starts_with(std::string(app::kMmsBatchCsvHeader) + "\n"));
+  CHECK(csv.starts_with(app::batch_csv_header() + "\n"));
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
+  // The rows are the one batch row's: batch merge reads them back as mms rows, the same.
+  const test_cli::TempDir dir("mms_batch_csv");
+  fs::create_directories(dir.path);
+  const std::string file = (dir.path / "mms.csv").string();
+  common::write_file_atomically(file, csv);
+  const std::vector<app::BatchRow> rows = app::read_batch_csvs({file});
+  REQUIRE(rows.size() == items.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    CAPTURE(rows[i].world);
+    CHECK(rows[i].kind == app::RunKind::mms);
+    CHECK(rows[i].ok == items[i].ok);
+    CHECK(rows[i].strategy == "sh " + kScripts + "by_size.sh");
+    CHECK(rows[i].score.has_value());
+    CHECK(app::format_batch_csv_row(rows[i]) == app::format_batch_csv_row(items[i].row));
+  }
 }
 
 TEST_CASE("mms batch: an interrupted row is marked and left out of the totals and the CSV") {

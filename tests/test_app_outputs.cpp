@@ -397,11 +397,13 @@ TEST_CASE("batch: a run that ends incomplete or without progress is a failed row
   done.world = "a.txt";
   done.ran = done.ok = true;
   done.summary.width = done.summary.height = 4;
+  done.report = app::run_report(lab_options(), done.summary);
   app::BatchItem incomplete = done;
   incomplete.world = "b.txt";
   incomplete.ok = false;
   incomplete.summary.reason = robot::EndReason::incomplete;
   incomplete.summary.message = "3 of 16 reachable cells never visited";
+  incomplete.report = app::run_report(lab_options(), incomplete.summary);
   const std::vector<std::string> table = lines_of(app::format_batch_table({done, incomplete}, 1.0));
   CHECK(table[2].ends_with("  incomplete (3 of 16 reachable cells never visited)"));
   CHECK(table[3].find("total: 2 worlds, 1 ok, 1 failed;") == 0);
@@ -427,7 +429,7 @@ TEST_CASE("batch: Ctrl-C stops the run in flight and starts no other; the CSV ho
   CHECK_FALSE(items[1].ran);
   CHECK(items[1].error == "not run (interrupted by Ctrl-C)");
   CHECK(app::batch_exit_status(items) == 130);
-  CHECK(app::format_batch_csv(items) == "world,size,moves,coverage,wall_accuracy,goal,speed_run,ms,end,error\n");
+  CHECK(app::format_batch_csv(items) == app::batch_csv_header() + "\n");
   const std::string table = app::format_batch_table(items, 1.0);
   CHECK(table.find("total: 3 worlds, 0 ok, 0 failed, 3 interrupted;") != std::string::npos);
 }

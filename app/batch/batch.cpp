@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -15,6 +16,7 @@
 
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "maze/arena_world.hpp"
 #include "maze/world.hpp"
 #include "maze/xml_arena.hpp"
 
@@ -30,37 +32,49 @@ class NullBuffer : public std::streambuf {
   std::streamsize xsputn(const char *, std::streamsize n) override { return n; }
 };
 
-// Whether the first bytes are a format at all (a broken maze file is still run, to say why).
-bool format_only(const std::string &head, const fs::path &path) {
-  try {
-    (void)maze::detect_format(head, path.string());
-    return true;
-  } catch (const common::InputError &) {
-    return false;
-  }
-}
-
-// Whether a file's content is one of the maze formats (its first bytes decide; an XML file,
-// its walls: the course's arenas are not mazes).
-bool looks_like_maze(const fs::path &path) {
+// The first bytes of a file (enough for maze::detect_format).
+std::string head_of(const fs::path &path) {
   std::ifstream file(path, std::ios::binary);
   std::string head(4096, '\0');
   file.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(file.gcount()));
+  return head;
+}
+
+// What a file's content is: no world, a maze, or an arena (a room file, the course's XML of
+// obstacles). A file whose format is known but does not read is the format's kind (it is run,
+// to say why).
+enum class Content { none, maze, arena };
+
+Content content_of(const fs::path &path) {
+  const std::string head = head_of(path);
+  maze::Format format{};
   try {
-    // An arena (a room file, the course's XML of obstacles) is not a maze to run.
-    const maze::Format format = maze::detect_format(head, path.string());
-    if (format == maze::Format::room) return false;
-    if (format == maze::Format::xml) return !maze::xml_world_is_arena(maze::read_file(path.string()), path.string(), {});
-    return true;
+    format = maze::detect_format(head, path.string());
   } catch (const common::InputError &) {
-    return format_only(head, path);
+    return Content::none;
+  }
+  if (format == maze::Format::room) return Content::arena;
+  if (format != maze::Format::xml) return Content::maze;
+  try {
+    return maze::xml_world_is_arena(maze::read_file(path.string()), path.string(), {}) ? Content::arena : Content::maze;
+  } catch (const common::InputError &) {
+    return Content::maze;
   }
 }
 
-BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()) {
-  BatchItem item;
-  item.world = job_name(job);
+// Whether `choice` runs a folder's file of this content.
+bool runs(KindChoice choice, Content content) {
+  if (content == Content::none) return false;
+  return choice != KindChoice::maze || content == Content::maze;
+}
+
+// The run's "end" line as a failed row says it: "ended: incomplete (3 cells unvisited)".
+std::string ended_error(std::string_view ending, const std::string &message) {
+  return fmt::format("ended: {}", end_text(ending, message));
+}
+
+void run_maze(RunOptions options, const BatchJob &job, const RunControls &controls, BatchItem &item) {
   options.world = job.world;
   if (job.start_position) {
     options.world_overrides.start.reset();
@@ -69,24 +83,41 @@ BatchItem run_one(RunOptions options, const BatchJob &job, bool (*interrupted)()
   }
   NullBuffer buffer;
   std::ostream sink(&buffer);
+  item.summary = run_and_write(options, sink, controls);
+  item.report = run_report(options, item.summary);
+  item.ran = true;
+  item.interrupted = item.summary.interrupted;
+  item.ok = exit_status(item.summary) == 0;
+  if (!item.ok) item.error = ended_error(robot::to_string(item.summary.reason), item.summary.message);
+}
+
+void run_room_job(RoomRunOptions options, const BatchJob &job, bool (*interrupted)(), BatchItem &item) {
+  const auto started = std::chrono::steady_clock::now();
+  options.world = job.world;
+  const maze::AnyWorld world = maze::load_any_world(job.world, {}, {});
+  NullBuffer buffer;
+  std::ostream sink(&buffer);
+  Report report;
+  const RoomSummary summary = run_room(world, options, sink, started, interrupted, &report);
+  item.report = std::move(report);
+  item.ran = true;
+  item.interrupted = summary.interrupted;
+  item.ok = room_exit_status(summary) == 0;
+  if (!item.ok) item.error = ended_error(robot::to_string(summary.ending), summary.message);
+}
+
+BatchItem run_one(const BatchOptions &options, const BatchJob &job, bool (*interrupted)()) {
+  BatchItem item;
+  item.world = job_name(job);
+  item.kind = job.kind;
   RunControls controls;
   controls.interrupted = interrupted;
   run_row(item, [&] {
-    item.summary = run_and_write(options, sink, controls);
-    item.report = run_report(options, item.summary);
-    item.ran = true;
-    item.interrupted = item.summary.interrupted;
-    item.ok = exit_status(item.summary) == 0;
-    if (!item.ok) {
-      item.error = item.summary.message.empty()
-                       ? fmt::format("ended: {}", robot::to_string(item.summary.reason))
-                       : fmt::format("ended: {} ({})", robot::to_string(item.summary.reason), item.summary.message);
-    }
+    if (job.kind == RunKind::room) run_room_job(options.room, job, interrupted, item);
+    else run_maze(options.run, job, controls, item);
   });
   return item;
 }
-
-std::string percent(double v) { return fmt::format("{:.2f}%", v); }
 
 }  // namespace
 
@@ -138,8 +169,16 @@ std::string kind_of(const fs::path &entry) {
 
 }  // namespace
 
-WorldList expand_worlds(const std::vector<std::string> &paths) {
+KindChoice parse_kind_choice(const std::string &text) {
+  if (text == "auto") return KindChoice::automatic;
+  if (text == "maze") return KindChoice::maze;
+  if (text == "room") return KindChoice::room;
+  throw common::InputError(fmt::format("--kind must be auto, maze or room (got '{}')", text));
+}
+
+WorldList expand_worlds(const std::vector<std::string> &paths, KindChoice choice) {
   WorldList list;
+  if (choice != KindChoice::maze) list.skipped_as = "not worlds";
   for (const std::string &path : paths) {
     std::error_code ec;
     if (!fs::is_directory(path, ec)) {
@@ -156,7 +195,7 @@ WorldList expand_worlds(const std::vector<std::string> &paths) {
     std::sort(files.begin(), files.end(),
               [](const fs::path &a, const fs::path &b) { return natural_less(a.string(), b.string()); });
     for (const fs::path &file : files) {
-      (looks_like_maze(file) ? list.worlds : list.skipped).push_back(file.string());
+      (runs(choice, content_of(file)) ? list.worlds : list.skipped).push_back(file.string());
     }
     std::sort(others.begin(), others.end(),
               [](const fs::path &a, const fs::path &b) { return natural_less(a.string(), b.string()); });
@@ -169,30 +208,67 @@ std::string job_name(const BatchJob &job) {
   return job.start_position ? fmt::format("{} pos:{}", job.world, *job.start_position) : job.world;
 }
 
-std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds) {
+RunKind run_kind_of(const std::string &path, KindChoice choice) {
+  if (choice == KindChoice::room) return RunKind::room;
+  if (choice == KindChoice::maze) return RunKind::maze;
+  std::error_code ec;
+  return fs::is_regular_file(path, ec) && content_of(path) == Content::arena ? RunKind::room : RunKind::maze;
+}
+
+std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds, KindChoice choice) {
   std::vector<BatchJob> jobs;
-  for (const std::string &w : worlds) jobs.push_back({w, std::nullopt});
+  for (const std::string &w : worlds) jobs.push_back({w, std::nullopt, run_kind_of(w, choice)});
   return jobs;
 }
 
-std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, const maze::WorldOverrides &overrides) {
+std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, const maze::WorldOverrides &overrides,
+                                      KindChoice choice) {
   std::vector<BatchJob> jobs;
   for (const std::string &w : worlds) {
+    const RunKind kind = run_kind_of(w, choice);
+    if (kind == RunKind::room) {
+      jobs.push_back({w, std::nullopt, kind});  // a room run starts where its world says
+      continue;
+    }
     std::size_t count = 0;
     try {
       maze::WorldOverrides size_only;
       size_only.cell_size_m = overrides.cell_size_m;
       count = maze::load_world(w, size_only).maze.start_positions().size();
     } catch (const common::InputError &) {
-      jobs.push_back({w, std::nullopt});  // its run says why
+      jobs.push_back({w, std::nullopt, kind});  // its run says why
       continue;
     }
-    for (std::size_t n = 1; n <= count; ++n) jobs.push_back({w, static_cast<int>(n)});
+    for (std::size_t n = 1; n <= count; ++n) jobs.push_back({w, static_cast<int>(n), kind});
   }
   return jobs;
 }
 
-std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<std::string> &worlds,
+BatchOptions::BatchOptions(RunOptions run_options)
+    : run(std::move(run_options)), room(room_options_for(run, [](std::string_view) { return false; })) {}
+
+BatchOptions::BatchOptions(RunOptions run_options, RoomRunOptions room_options)
+    : run(std::move(run_options)), room(std::move(room_options)) {}
+
+RoomRunOptions room_options_for(const RunOptions &options, const std::function<bool(std::string_view)> &given) {
+  RoomRunOptions room;
+  room.quiet = true;
+  room.simulation = options.simulation;
+  room.room.seed = options.simulation.seed;
+  room.max_steps = options.max_steps;
+  if (options.time_limit_s) room.room.time_limit_s = *options.time_limit_s;
+  room.threshold = options.threshold;
+  room.sensor = options.sensor;
+  room.range_model = options.range_model;
+  room.model.kind = sensing::ModelKind::ray;  // the room command's default
+  if (given("--model") && options.model.kind != sensing::ModelKind::cell) room.model = options.model;
+  if (given("--robot")) room.robot = options.robot;
+  const bool ranges_only = room.model.kind == sensing::ModelKind::bump || room.model.kind == sensing::ModelKind::depth;
+  if (ranges_only && !given("--log-base")) room.sensor.base = mapping::LogBase::ten;
+  return room;
+}
+
+std::vector<BatchItem> run_batch(const BatchOptions &options, const std::vector<std::string> &worlds,
                                  int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
                                  bool (*interrupted)()) {
   return run_batch(options, plain_jobs(worlds), jobs, progress, interrupted);
@@ -222,7 +298,7 @@ void for_each_in_pool(std::size_t count, int jobs, const std::function<void(std:
   work();
 }
 
-std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<BatchJob> &worlds,
+std::vector<BatchItem> run_batch(const BatchOptions &options, const std::vector<BatchJob> &worlds,
                                  int jobs, const std::function<void(std::size_t, std::size_t)> &progress,
                                  bool (*interrupted)()) {
   std::vector<BatchItem> items(worlds.size());
@@ -230,6 +306,7 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<Ba
       worlds.size(), jobs, [&](std::size_t i) { items[i] = run_one(options, worlds[i], interrupted); },
       [&](std::size_t i) {
         items[i].world = job_name(worlds[i]);
+        items[i].kind = worlds[i].kind;
         items[i].interrupted = true;
         items[i].error = "not run (interrupted by " + common::interrupt_name() + ")";
       },
@@ -237,108 +314,90 @@ std::vector<BatchItem> run_batch(const RunOptions &options, const std::vector<Ba
   return items;
 }
 
+BatchRow row_of(const BatchItem &item) {
+  BatchRow row;
+  if (item.ran && item.report) row = row_from_report(*item.report);
+  row.world = item.world;
+  row.kind = item.kind;
+  row.ok = item.ok;
+  row.interrupted = item.interrupted;
+  row.error = item.error;
+  return row;
+}
+
 namespace {
 
-// The goal column: the report's "goal" ("reached", "not reached"), or nothing when the run
-// was not asked to reach one.
-std::string goal_cell(const BatchItem &item) { return item.report ? item.report->text("goal") : ""; }
+std::string dash(const std::string &text) { return text.empty() ? std::string("-") : text; }
+std::string percent_cell(const std::optional<double> &v) { return v ? fmt::format("{:.2f}%", *v) : "-"; }
 
-// The speed-run column: the report's speed run's cells, or nothing when none was made.
-std::string speed_run_cell(const BatchItem &item) {
-  const ReportEntry *run = item.report ? item.report->find("speed_run") : nullptr;
-  return run != nullptr && run->json.is_object() ? run->json["cells"].dump() : "";
+// The table's cells of a row that ran, in kTableColumns' order (cell_accuracy's only when
+// `rooms`).
+std::vector<std::string> table_cells(const BatchRow &row, bool rooms) {
+  std::vector<std::string> cells{dash(row.size), row.moves ? std::to_string(*row.moves) : "-",
+                                 percent_cell(row.coverage_percent), percent_cell(row.wall_accuracy_percent)};
+  if (rooms) cells.push_back(percent_cell(row.cell_accuracy_percent));
+  cells.insert(cells.end(), {dash(row.goal), dash(row.speed_run),
+                             row.wall_time_ms ? fmt::format("{:.0f}", *row.wall_time_ms) : "-"});
+  return cells;
+}
+
+// The right-aligned columns between world and end: name and width.
+struct TableColumn {
+  std::string_view name;
+  int width;
+};
+constexpr TableColumn kTableColumns[] = {{"size", 9},          {"moves", 6},        {"coverage", 8},
+                                         {"wall_accuracy", 13}, {"cell_accuracy", 13}, {"goal", 11},
+                                         {"speed_run", 9},     {"ms", 7}};
+
+std::string table_line(const std::string &world, std::size_t world_width, const std::vector<std::string> &cells,
+                       bool rooms, const std::string &end) {
+  std::string line = fmt::format("{:<{}}", world, world_width);
+  std::size_t cell = 0;
+  for (const TableColumn &column : kTableColumns) {
+    if (column.name == "cell_accuracy" && !rooms) continue;
+    line += fmt::format("  {:>{}}", cells[cell++], column.width);
+  }
+  return line + "  " + end + "\n";
 }
 
 }  // namespace
 
-void add_to_totals(BatchTotals &t, const BatchRow &row) {
-  ++t.worlds;
-  if (row.interrupted) ++t.interrupted;
-  if (row.ok) ++t.ok;
-  if (!row.ran) return;
-  ++t.ran;
-  t.moves += row.moves;
-  t.coverage_sum += row.coverage_percent;
-  t.accuracy_sum += row.wall_accuracy_percent;
-  t.run_ms += row.ms;
-  if (!row.goal.empty()) ++t.with_goal;
-  if (row.goal == "reached") ++t.goal_reached;
-}
-
-std::string format_totals(const BatchTotals &t) {
-  const int failed = t.worlds - t.ok - t.interrupted;
-  std::string out = fmt::format("total: {} worlds, {} ok, {} failed", t.worlds, t.ok, failed);
-  if (t.interrupted > 0) out += fmt::format(", {} interrupted", t.interrupted);
-  const double ran = static_cast<double>(t.ran);
-  out += fmt::format("; moves {}; mean coverage {}; mean wall_accuracy {}", t.moves,
-                     percent(t.ran ? t.coverage_sum / ran : 0.0), percent(t.ran ? t.accuracy_sum / ran : 0.0));
-  if (t.with_goal > 0) out += fmt::format("; goal reached {} of {}", t.goal_reached, t.with_goal);
-  return out + fmt::format("; run time {:.0f} ms", t.run_ms);
-}
-
-BatchRow row_of(const BatchItem &item) {
-  BatchRow row;
-  row.world = item.world;
-  row.ran = item.ran;
-  row.ok = item.ok;
-  row.interrupted = item.interrupted;
-  row.error = item.error;
-  if (!item.ran) return row;
-  const RunSummary &s = item.summary;
-  row.size = fmt::format("{}x{}", s.width, s.height);
-  row.moves = s.moves;
-  row.coverage_percent = s.score.coverage_percent();
-  row.wall_accuracy_percent = s.score.wall_accuracy_percent();
-  row.goal = goal_cell(item);
-  row.speed_run = speed_run_cell(item);
-  row.ms = s.wall_time_ms;
-  row.end = std::string(robot::to_string(s.reason));
-  return row;
-}
-
 std::string format_batch_table(const std::vector<BatchItem> &items, double elapsed_ms,
-                               const std::vector<std::string> &skipped) {
+                               const std::vector<std::string> &skipped, std::string_view skipped_as) {
   std::size_t width = 5;
-  for (const BatchItem &item : items) width = std::max(width, item.world.size());
-  std::string out = fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>11}  {:>9}  {:>7}  {}\n", "world", width,
-                                "size", "moves", "coverage", "wall_accuracy", "goal", "speed_run", "ms", "end");
+  bool rooms = false;
+  for (const BatchItem &item : items) {
+    width = std::max(width, item.world.size());
+    rooms = rooms || item.kind == RunKind::room;
+  }
+  std::vector<std::string> names;
+  for (const TableColumn &column : kTableColumns) names.emplace_back(column.name);
+  if (!rooms) names.erase(names.begin() + 4);
+  std::string out = table_line("world", width, names, rooms, "end");
   BatchTotals totals;
   for (const BatchItem &item : items) {
-    add_to_totals(totals, row_of(item));
+    const BatchRow row = row_of(item);
+    add_to_totals(totals, row);
     if (!item.ran) {
       out += fmt::format("{:<{}}  {}\n", item.world, width, item.error);
       continue;
     }
-    const RunSummary &s = item.summary;
-    const auto dash = [](const std::string &text) { return text.empty() ? std::string("-") : text; };
-    const std::string end = s.message.empty() ? std::string(robot::to_string(s.reason))
-                                              : fmt::format("{} ({})", robot::to_string(s.reason), s.message);
-    out += fmt::format("{:<{}}  {:>9}  {:>6}  {:>8}  {:>13}  {:>11}  {:>9}  {:>7.0f}  {}\n", item.world, width,
-                       fmt::format("{}x{}", s.width, s.height), s.moves,
-                       percent(s.score.coverage_percent()), percent(s.score.wall_accuracy_percent()),
-                       dash(goal_cell(item)), dash(speed_run_cell(item)), s.wall_time_ms, end);
+    out += table_line(item.world, width, table_cells(row, rooms), rooms, end_text(row.end, row.end_message));
   }
   out += format_totals(totals) + fmt::format("; elapsed {:.0f} ms", elapsed_ms);
   if (!skipped.empty()) {
     constexpr std::size_t kNamed = 3;
-    std::string names;
-    for (std::size_t i = 0; i < std::min(kNamed, skipped.size()); ++i) names += (i ? ", " : "") + skipped[i];
-    if (skipped.size() > kNamed) names += fmt::format(" and {} more", skipped.size() - kNamed);
-    out += fmt::format("; {} skipped, not mazes: {}", skipped.size(), names);
+    std::string names_text;
+    for (std::size_t i = 0; i < std::min(kNamed, skipped.size()); ++i) names_text += (i ? ", " : "") + skipped[i];
+    if (skipped.size() > kNamed) names_text += fmt::format(" and {} more", skipped.size() - kNamed);
+    out += fmt::format("; {} skipped, {}: {}", skipped.size(), skipped_as, names_text);
   }
   return out + "\n";
 }
 
-std::string format_batch_csv_row(const BatchRow &row) {
-  if (!row.ran) return fmt::format("{},,,,,,,,,{}\n", common::csv_field(row.world), common::csv_field(row.error));
-  return fmt::format("{},{},{},{:.2f},{:.2f},{},{},{:.0f},{},{}\n", common::csv_field(row.world), row.size, row.moves,
-                     row.coverage_percent, row.wall_accuracy_percent, row.goal, row.speed_run, row.ms, row.end,
-                     common::csv_field(row.error));
-}
-
 std::string format_batch_csv(const std::vector<BatchItem> &items) {
-  std::string out(kBatchCsvHeader);
-  out += '\n';
+  std::string out = batch_csv_header() + '\n';
   for (const BatchItem &item : items) {
     if (!item.interrupted) out += format_batch_csv_row(row_of(item));
   }

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -11,8 +10,8 @@
 
 #include <fmt/format.h>
 
-#include "common/parse_number.hpp"
 #include "common/csv.hpp"
+#include "common/parse_number.hpp"
 #include "app/batch/batch.hpp"
 #include "common/error.hpp"
 
@@ -21,47 +20,52 @@ namespace {
 
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
-// Where a field of a part is: the file, the line its record starts on.
-struct RowPlace {
-  const std::string &file;
-  int line = 0;
+// The headers of the maze batch and the mms batch before every kind wrote one row: their rows
+// are read as that kind's, by their columns' names, a column the row has no place for dropped
+// (mms's lines, distances and turns); a row ran when its size is given.
+struct OlderHeader {
+  std::string_view text;
+  RunKind kind;
+};
+constexpr OlderHeader kOlderHeaders[] = {
+    {"world,size,moves,coverage,wall_accuracy,goal,speed_run,ms,end,error", RunKind::maze},
+    {"world,size,end,lines,moves,goal,total_distance,total_turns,total_effective_distance,best_run_distance,"
+     "best_run_turns,best_run_effective_distance,score,ms,error",
+     RunKind::mms},
 };
 
-common::InputError field_error(const RowPlace &at, const common::CsvField &field, const std::string &what) {
-  return common::InputError(common::SourceLocation{at.file, at.line, field.column},
-                            fmt::format("{} (got '{}')", what, field.text));
+// How a part's rows read: its header's columns, and the older header it is, if one.
+struct PartLayout {
+  std::vector<std::string> names;
+  const OlderHeader *older = nullptr;
+};
+
+std::vector<std::string> split_names(std::string_view header) {
+  std::vector<std::string> names;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = header.find(',', start);
+    names.emplace_back(header.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) return names;
+    start = comma + 1;
+  }
 }
 
-// A number of the row within [least, most]; a located error names the column otherwise.
-template <typename Number>
-Number field_number(const RowPlace &at, const common::CsvField &field, Number least, Number most,
-                    const std::string &what) {
-  const std::optional<Number> v = common::parse_number<Number>(field.text);
-  if (!v || *v < least || *v > most) throw field_error(at, field, what);
-  return *v;
+PartLayout layout_of(const std::string &file, const std::string &header) {
+  if (header == batch_csv_header()) return {split_names(header), nullptr};
+  for (const OlderHeader &older : kOlderHeaders) {
+    if (header == older.text) return {split_names(header), &older};
+  }
+  throw common::InputError(common::SourceLocation{file, 1, 0},
+                           fmt::format("not a batch CSV (the first line must be '{}')", batch_csv_header()));
 }
 
-// One row from its fields (kBatchCsvHeader's columns).
-BatchRow row_from(const RowPlace &at, const std::vector<common::CsvField> &f) {
-  BatchRow row;
-  row.world = f[0].text;
-  row.error = f[9].text;
-  row.ran = !f[1].text.empty();
-  row.ok = row.ran && row.error.empty();
-  if (!row.ran) return row;
-  // As exit_status: a run that ended other than done (or at a step limit, which the CSV does
-  // not say was the user's) did not map its maze, whatever part it was merged from.
-  row.ok = row.ok && (f[8].text == robot::to_string(robot::EndReason::done) ||
-                      f[8].text == robot::to_string(robot::EndReason::max_steps));
-  constexpr double kMostMs = 1e12;  // 30 years of one run
-  row.size = f[1].text;
-  row.moves = field_number<long>(at, f[2], 0, std::numeric_limits<int>::max(), "moves must be a whole number from 0");
-  row.coverage_percent = field_number(at, f[3], 0.0, 100.0, "coverage must be a percentage from 0 to 100");
-  row.wall_accuracy_percent = field_number(at, f[4], 0.0, 100.0, "wall_accuracy must be a percentage from 0 to 100");
-  row.goal = f[5].text;
-  row.speed_run = f[6].text;
-  row.ms = field_number(at, f[7], 0.0, kMostMs, "ms must be a number of milliseconds from 0");
-  row.end = f[8].text;
+BatchRow row_in(const PartLayout &layout, const std::vector<common::CsvField> &fields, const RowPlace &at) {
+  BatchRow row = parse_batch_row(layout.names, fields, layout.older ? layout.older->kind : RunKind::maze, at);
+  if (layout.older) {
+    row.ran = !row.size.empty();
+    if (!row.ran) row.end.clear();  // an mms row that did not run said "failed" there
+    row.ok = batch_row_ok(row);
+  }
   return row;
 }
 
@@ -85,10 +89,8 @@ std::string part_text(const std::string &file) {
 void read_rows(const std::string &file, const std::string &text, std::vector<BatchRow> &rows) {
   std::istringstream in(text);
   std::string line;
-  if (!std::getline(in, line) || line != kBatchCsvHeader) {
-    throw common::InputError(common::SourceLocation{file, 1, 0},
-                             fmt::format("not a batch CSV (the first line must be '{}')", kBatchCsvHeader));
-  }
+  if (!std::getline(in, line)) line.clear();
+  const PartLayout layout = layout_of(file, line);
   for (int number = 2; std::getline(in, line); ++number) {
     // A quoted field may hold a newline (a path with one): the record goes on on the next line.
     const RowPlace at{file, number};
@@ -100,11 +102,12 @@ void read_rows(const std::string &file, const std::string &text, std::vector<Bat
       line += more;
       fields = common::csv_fields(line);
     }
-    if (!fields || fields->size() != 10) {
+    if (!fields || fields->size() != layout.names.size()) {
       throw common::InputError(common::SourceLocation{file, at.line, 0},
-                               fmt::format("not a batch CSV row (10 fields: {})", kBatchCsvHeader));
+                               fmt::format("not a batch CSV row ({} fields: {})", layout.names.size(),
+                                           layout.older ? layout.older->text : std::string_view(batch_csv_header())));
     }
-    rows.push_back(row_from(at, *fields));
+    rows.push_back(row_in(layout, *fields, at));
   }
 }
 

@@ -8,11 +8,24 @@
 #include <fmt/format.h>
 
 #include "app/batch/batch.hpp"
+#include "app/run/run_report.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 
 namespace app {
 namespace {
+
+// The row of a run that ended: the robot's run as a maze run's report has it, with the
+// algorithm as its strategy, mms's ending and its score.
+BatchRow mms_row(const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
+  BatchRow row = row_from_report(run_report(options, run.summary));
+  row.strategy = command_line(mms.command);
+  row.end = std::string(to_string(run.mms.end));
+  row.end_message = run.mms.end == MmsEnd::interrupted ? std::string() : run.mms.message;
+  row.goal = run.summary.reached_goal ? "reached" : "not reached";
+  row.score = run.mms.stats.score();
+  return row;
+}
 
 MmsBatchItem run_one(RunOptions options, const MmsOptions &mms, const std::string &world, bool (*interrupted)()) {
   MmsBatchItem item;
@@ -24,6 +37,7 @@ MmsBatchItem run_one(RunOptions options, const MmsOptions &mms, const std::strin
   std::ostringstream sink;
   run_row(item, [&] {
     item.run = run_mms_world(options, mms, sink, controls);
+    item.row = mms_row(options, mms, item.run);
     item.ran = true;
     item.interrupted = item.run.mms.end == MmsEnd::interrupted;
     item.ok = exit_status(item.run) == 0;
@@ -38,6 +52,12 @@ MmsBatchItem run_one(RunOptions options, const MmsOptions &mms, const std::strin
       }
     }
   });
+  item.row.world = item.world;
+  item.row.kind = RunKind::mms;
+  item.row.ran = item.ran;
+  item.row.ok = item.ok;
+  item.row.interrupted = item.interrupted;
+  item.row.error = item.error;
   return item;
 }
 
@@ -133,16 +153,9 @@ std::string format_mms_batch_table(const std::vector<MmsBatchItem> &items, doubl
 }
 
 std::string format_mms_batch_csv(const std::vector<MmsBatchItem> &items) {
-  std::string out(kMmsBatchCsvHeader);
-  out += '\n';
+  std::string out = batch_csv_header() + '\n';
   for (const MmsBatchItem &item : items) {
-    if (item.interrupted) continue;
-    std::string line;
-    for (const std::string &cell : cells_of(item)) {
-      if (!line.empty()) line += ',';
-      line += common::csv_field(cell);
-    }
-    out += line + '\n';
+    if (!item.interrupted) out += format_batch_csv_row(item.row);
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/batch/batch_row.hpp"
 #include "app/mms/mms_session.hpp"
 
 namespace app {
@@ -24,6 +25,7 @@ struct MmsBatchItem {
   bool interrupted = false;  // stopped by Ctrl-C / SIGTERM, or never started because of it
   std::string error;         // why it failed
   MmsRun run;
+  BatchRow row;              // its row of the CSV (batch_row.hpp): the robot's run, with mms's end and score
 };
 
 std::vector<MmsBatchItem> run_mms_batch(const RunOptions &options, const MmsOptions &mms,
@@ -37,10 +39,8 @@ std::vector<MmsBatchItem> run_mms_batch(const RunOptions &options, const MmsOpti
 std::string format_mms_batch_table(const std::vector<MmsBatchItem> &items, double elapsed_ms,
                                    const std::vector<std::string> &skipped);
 
-inline constexpr std::string_view kMmsBatchCsvHeader =
-    "world,size,end,lines,moves,goal,total_distance,total_turns,total_effective_distance,best_run_distance,"
-    "best_run_turns,best_run_effective_distance,score,ms,error";
-// The same as CSV (interrupted worlds left out), kMmsBatchCsvHeader first.
+// The rows as CSV in the one batch row's columns (batch_row.hpp: kind mms, strategy the
+// algorithm's command line, end mms's ending, score mms's score), interrupted worlds left out.
 std::string format_mms_batch_csv(const std::vector<MmsBatchItem> &items);
 
 // 128 + the signal when interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 0 when every run

@@ -2,7 +2,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
+#include <string_view>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -34,6 +37,7 @@ struct BatchInput {
   std::string csv;
   std::string shard;                  // --shard K/N
   bool each_start = false;            // --each-start
+  std::string kind = "auto";          // --kind auto|maze|room
   std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
   std::string merge_out;                // batch merge -o FILE
 };
@@ -48,8 +52,7 @@ void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput
   merge->callback([batch] {
     if (!batch->merge_out.empty()) common::refuse_output_over_input("-o", batch->merge_out, batch->merge_csvs);
     const std::vector<BatchRow> rows = read_batch_csvs(batch->merge_csvs);
-    std::string csv(kBatchCsvHeader);
-    csv += '\n';
+    std::string csv = batch_csv_header() + '\n';
     BatchTotals totals;
     for (const BatchRow &row : rows) {
       csv += format_batch_csv_row(row);
@@ -66,6 +69,22 @@ void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput
   });
 }
 
+// A room run explores with frontier from the world's start: a maze strategy, a speed run or a
+// start in cells given to a batch that holds room runs says so, once.
+void warn_maze_only_options(const std::vector<BatchJob> &jobs, const RunOptions &options,
+                            const std::function<bool(std::string_view)> &given) {
+  if (std::none_of(jobs.begin(), jobs.end(), [](const BatchJob &job) { return job.kind == RunKind::room; })) return;
+  for (const char *name : {"--strategy", "--speed-run", "--start", "--goal", "--subcells"}) {
+    if (given(name)) {
+      fmt::print(stderr, "warning: {} applies to the maze runs only: a room run explores with frontier from its "
+                         "world's start\n", name);
+    }
+  }
+  if (given("--model") && options.model.kind == sensing::ModelKind::cell) {
+    fmt::print(stderr, "warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
+  }
+}
+
 }  // namespace
 
 void add_batch_command(CLI::App &cli, CommandContext &context) {
@@ -73,7 +92,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   auto batch = std::make_shared<BatchInput>();
   CLI::App *command = cli.add_subcommand(
       "batch", "run many worlds (files, or folders of them) in parallel; print a table and totals");
-  accept_shipped_world_names(command->add_option("WORLD", batch->worlds, "maze files or folders, or shipped worlds' names"));
+  accept_shipped_world_names(command->add_option("WORLD", batch->worlds, "world files (mazes, arenas) or folders, or shipped worlds' names"));
   command->add_option("--jobs", batch->jobs, "N: parallel runs (default all cores)");
   command->add_option("--csv", batch->csv, "FILE: also write the table as CSV");
   command->add_option("--shard", batch->shard,
@@ -81,6 +100,9 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
                       "parts' CSVs with batch merge)");
   command->add_flag("--each-start", batch->each_start,
                     "run each world once per start position it states (XML <pos>), a row each");
+  command->add_option("--kind", batch->kind,
+                      "auto, maze or room: run each world as what it is (a maze as a maze run, an arena as a room "
+                      "run), mazes only (arenas skipped), or every world as a room run (default auto)");
   add_merge_command(*command, batch);
   add_mapping_run_options(*command, *parsed);
   add_speed_run_option(*command, *parsed);
@@ -88,7 +110,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   add_mms_options(*command, *mms);
   command->callback([command, parsed, batch, mms, &context] {
     if (command->got_subcommand("merge")) return;
-    if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (maze files or folders), or: batch merge CSV...");
+    if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (world files or folders), or: batch merge CSV...");
     RunOptions options = checked_run_options(*command, *parsed, false);
     options.output.quiet = true;
     print_warnings(options_not_applying(*command, options));
@@ -100,16 +122,22 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     const int jobs = batch->jobs > 0 ? batch->jobs
                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (!batch->csv.empty()) common::check_writable(batch->csv);  // before the runs, not after
-    WorldList list = expand_worlds(batch->worlds);
+    const bool mms_batch = !context.child_command.empty() || mms_options_given(*command);
+    const KindChoice choice = parse_kind_choice(batch->kind);
+    if (mms_batch && choice == KindChoice::room) {
+      throw common::InputError("--kind room: an mms algorithm runs in mazes (--kind maze or auto)");
+    }
+    WorldList list = expand_worlds(batch->worlds, mms_batch ? KindChoice::maze : choice);
     if (!batch->csv.empty()) common::refuse_output_over_input("--csv", batch->csv, list.worlds);
     if (!batch->shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch->shard));
     if (list.worlds.empty() && !batch->shard.empty()) {
       fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch->shard);
     } else if (list.worlds.empty()) {
-      throw common::InputError(fmt::format("no world to run: the folders hold no maze file ({} other file{} skipped)",
+      throw common::InputError(fmt::format("no world to run: the folders hold no {} file ({} other file{} skipped)",
+                                           choice == KindChoice::maze || mms_batch ? "maze" : "world",
                                            list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
     }
-    if (!context.child_command.empty() || mms_options_given(*command)) {
+    if (mms_batch) {
       context.status = run_mms_batch_command(*command, options, *mms, context.child_command, list, jobs, batch->csv);
       return;
     }
@@ -121,16 +149,23 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
       progress = [&progress_line](std::size_t done, std::size_t total) { progress_line->update(done, total); };
     }
     const common::SignalsStopWork stop_signals;  // until the CSV holds the finished runs
-    const std::vector<BatchJob> batch_jobs = batch->each_start ? each_start_jobs(list.worlds, options.world_overrides)
-                                                               : plain_jobs(list.worlds);
-    const std::vector<BatchItem> items = run_batch(options, batch_jobs, jobs, progress, &common::interrupted);
+    const std::vector<BatchJob> batch_jobs = batch->each_start
+                                                 ? each_start_jobs(list.worlds, options.world_overrides, choice)
+                                                 : plain_jobs(list.worlds, choice);
+    const auto given = [command](std::string_view name) {
+      const CLI::Option *option = command->get_option_no_throw(std::string(name));
+      return option != nullptr && option->count() > 0;
+    };
+    warn_maze_only_options(batch_jobs, options, given);
+    const BatchOptions batch_options(options, room_options_for(options, given));
+    const std::vector<BatchItem> items = run_batch(batch_options, batch_jobs, jobs, progress, &common::interrupted);
     progress_line.reset();  // cleared before the table
     const double elapsed_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     for (const BatchItem &item : items) {
       if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
     }
-    std::cout << format_batch_table(items, elapsed_ms, list.skipped) << std::flush;
+    std::cout << format_batch_table(items, elapsed_ms, list.skipped, list.skipped_as) << std::flush;
     if (!batch->csv.empty()) common::write_file_atomically(batch->csv, format_batch_csv(items));
     context.status = batch_exit_status(items);
   });

@@ -223,8 +223,8 @@ const std::map<std::string, std::string, std::less<>> &examples() {
       {"plan", "  maze_mapper plan                        # the default world, start to goal\n"
                "  maze_mapper plan maze.txt --from 0,0 --to 3,3 --dilate 1"},
       {"batch", "  maze_mapper batch mazes/ --jobs 2 --csv results.csv\n"
-                "  maze_mapper batch a.txt b.txt --model ray --strategy frontier\n"
-                "  maze_mapper batch mazes/ --shard 1/4 --csv part1.csv"},
+                "  maze_mapper batch mazes/ --shard 1/4 --csv part1.csv\n"
+                "  maze_mapper batch arenas/ --kind room --model pie --csv rooms.csv"},
       {"batch merge", "  maze_mapper batch merge part1.csv part2.csv -o all.csv"},
       {"demo", "  maze_mapper demo 1d\n"
                "  maze_mapper demo pie --pose 1.5,2.5,270"},

@@ -334,12 +334,14 @@ int room_exit_status(const RoomSummary &s) {
 }
 
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted) {
-  return run_room_in(maze::world_geometry(world), options, out, started, interrupted);
+                     std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                     Report *report) {
+  return run_room_in(maze::world_geometry(world), options, out, started, interrupted, report);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted) {
+                        std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                        Report *report_out) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
@@ -401,6 +403,7 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
     }
     write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
   }
+  if (report_out != nullptr) *report_out = report;
   return summary;
 }
 

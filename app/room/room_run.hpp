@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run/report.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/arena.hpp"
 #include "maze/arena_world.hpp"
@@ -82,13 +83,15 @@ struct RoomSummary {
 // as the arena of its walls; options.world names it): checks everything (common::InputError,
 // before anything runs), runs, prints on `out`. `interrupted`, polled every control step,
 // ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
+// `report`, when not null, receives the run's report (the summary block's and summary.json's
+// entries: a batch row's columns).
 RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                     robot::MetricStopPoll interrupted = nullptr);
+                     robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
 // The same in an arena given in code.
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                        robot::MetricStopPoll interrupted = nullptr);
+                        robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
 // 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.
 int room_exit_status(const RoomSummary &summary);
