@@ -225,15 +225,12 @@ class Robot:
         return result
 
     def _record_path(self, scene):
-        """Keeps the pose before this step, adds the last step's move to distance_m and notes
-        whether the robot is at the goal."""
+        """Keeps the pose before this step and adds the last step's move to distance_m."""
         pose = scene.simulation.pose
         if self._before is not None and not scene.teleported:
             self.distance_m += math.hypot(pose[0] - self._before[0], pose[1] - self._before[1])
         scene.teleported = False
         self._before = pose
-        if not scene.goal.reached:
-            scene.goal.check(self, pose[0], pose[1])
 
     def getBasicTimeStep(self):
         return self._handle.getBasicTimeStep()

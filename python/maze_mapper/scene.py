@@ -278,6 +278,7 @@ class RobotNode(Node):
             yaw = yaw_of_rotation(value, "the robot's rotation")
         self._scene.simulation.teleport(x, y, z, yaw)
         self._scene.teleported = True
+        self._scene.goal.look_for_controller_goals(None, self._scene.simulation)
 
     def getPosition(self):
         return self._value("translation")
@@ -305,30 +306,38 @@ GOAL_RADIUS_M = 0.5
 
 
 class Goal:
-    """The run's goal and whether the robot has reached it: a maze's goal cells (reached when
-    the robot's centre is in one), or goal points (reached within GOAL_RADIUS_M of one): an
-    arena file's, or on the course's empty floor the ones the controller's library read with
-    its world (the course's HamBot keeps them as maze.goal_locations, maze_mapper's stand-in as
-    goal_locations: items with x and y)."""
+    """The run's goal: a maze's goal cells (reached when the robot's centre is in one), or goal
+    points (reached within GOAL_RADIUS_M of one): an arena file's, or on the course's empty
+    floor the ones the controller's library read with its world (the course's HamBot keeps them
+    as maze.goal_locations, maze_mapper's stand-in as goal_locations: items with x and y),
+    looked for when the controller imports a node or teleports the robot, and at the end. The
+    simulation checks it after every control step."""
 
     def __init__(self, cells=(), cell_size_m=1.0, origin=(0.0, 0.0), points=(), from_controller=False):
-        self.cells = set(cells)
+        self.cells = list(cells)
         self.cell_size_m = cell_size_m
-        self.origin = origin
+        self.origin = tuple(origin)
         self.points = list(points)
         self.from_controller = from_controller
         self.namespace = {}  # the controller's globals (controller.Robot sets them)
-        self._holder = None
-        self.reached = False
 
-    def _points(self, robot):
-        if not self.from_controller:
-            return self.points
-        if self._holder is None:
-            self._holder = self._find_holder(robot)
-        if self._holder is None:
-            return []
-        return [(g.x, g.y) for g in self._holder.goal_locations]
+    def attach(self, simulation):
+        """Hands the goal to the simulation, which checks it every step."""
+        if self.cells or self.points:
+            simulation.set_goal(cells=self.cells, cell_size_m=self.cell_size_m, origin=self.origin,
+                                points=self.points, radius_m=GOAL_RADIUS_M)
+
+    def look_for_controller_goals(self, robot, simulation):
+        """On the empty floor: the goals of the world the controller's library read, once found."""
+        if not self.from_controller or self.points:
+            return
+        holder = self._find_holder(robot)
+        if holder is not None:
+            self.points = [(g.x, g.y) for g in holder.goal_locations]
+            self.attach(simulation)
+
+    def exists(self):
+        return bool(self.cells or self.points)
 
     def _find_holder(self, robot):
         """The object whose goal_locations (non-empty) are the world's goals: the robot, or
@@ -343,17 +352,6 @@ class Goal:
                     return candidate
         return None
 
-    def exists(self, robot):
-        return bool(self.cells) or bool(self._points(robot))
-
-    def check(self, robot, x, y):
-        """Notes whether the robot's centre at (x, y) m is at the goal."""
-        if self.cells:
-            cell = (math.floor((x - self.origin[0]) / self.cell_size_m), math.floor((y - self.origin[1]) / self.cell_size_m))
-            self.reached = cell in self.cells
-            return
-        self.reached = any(math.hypot(x - gx, y - gy) <= GOAL_RADIUS_M for gx, gy in self._points(robot))
-
 
 class Scene:
     """The world of one run: the simulation (maze_mapper._native.Simulation), the root's
@@ -364,6 +362,7 @@ class Scene:
         self.simulation = simulation
         self.world_file = world_file
         self.goal = goal if goal is not None else Goal()
+        self.goal.attach(simulation)
         self.landmarks = []
         self.teleported = False  # since the last step (the path length leaves teleports out)
         self.reset_requested = False  # Supervisor.simulationReset, done at the end of the next step
@@ -403,6 +402,7 @@ class Scene:
         node = Node(self, self._new_id(), type_name, "Solid", def_name, fields, kinds)
         yaw = yaw_of_rotation(fields["rotation"], f"{type_name}.rotation")
         self._build(type_name, fields, yaw, node)
+        self.goal.look_for_controller_goals(None, self.simulation)
         children = self.root._values["children"]
         children.insert(len(children) if position == -1 or position >= len(children) else position, node)
 

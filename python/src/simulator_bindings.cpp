@@ -2,6 +2,8 @@
 // Simulation and makes it current; the controller's Robot attaches to it and sees only the
 // webots:: devices (the Webots method names), never the maze.
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -106,10 +108,20 @@ class PySimulation {
     trace_ = &files.cast<RunFiles &>().trace();
     trace_owner_ = std::move(files);
   }
-  // After a control step: its row, when a trace is recorded.
+  // After a control step: its row, when a trace is recorded; whether the robot is at the goal.
   void after_step() {
     if (trace_ != nullptr) trace_->record(steps(), time_s(), simulation_->pose());
+    if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation_->pose());
   }
+
+  // The run's goal: the cells of a lattice (cell_size_m, origin) the robot's centre reaches
+  // one of, or points it comes within radius_m of. Replaces the goal set before.
+  void set_goal(std::vector<std::pair<int, int>> cells, double cell_size_m, std::pair<double, double> origin,
+                std::vector<std::pair<double, double>> points, double radius_m) {
+    goal_ = Goal{std::move(cells), cell_size_m, origin, std::move(points), radius_m};
+    goal_reached_ = goal_reached_ || at_goal(simulation_->pose());
+  }
+  bool goal_reached() const { return goal_reached_; }
 
   // The device names of the robot, in the order Webots' Robot lists a robot's devices here:
   // motors, encoders, IMU, GPS, lidars, distance sensors, bumpers.
@@ -141,6 +153,24 @@ class PySimulation {
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
   PoseTrace *trace_ = nullptr;  // trace_owner_'s
   py::object trace_owner_;
+
+  struct Goal {
+    std::vector<std::pair<int, int>> cells;
+    double cell_size_m = 1.0;
+    std::pair<double, double> origin;
+    std::vector<std::pair<double, double>> points;
+    double radius_m = 0.0;
+  };
+  bool at_goal(const maze::sim::Pose &p) const {
+    const std::pair<int, int> cell{static_cast<int>(std::floor((p.x_m - goal_->origin.first) / goal_->cell_size_m)),
+                                   static_cast<int>(std::floor((p.y_m - goal_->origin.second) / goal_->cell_size_m))};
+    if (std::find(goal_->cells.begin(), goal_->cells.end(), cell) != goal_->cells.end()) return true;
+    return std::any_of(goal_->points.begin(), goal_->points.end(), [&](const std::pair<double, double> &g) {
+      return std::hypot(p.x_m - g.first, p.y_m - g.second) <= goal_->radius_m;
+    });
+  }
+  std::optional<Goal> goal_;
+  bool goal_reached_ = false;
 };
 
 // The Python simulation object made current last (kept alive by the robots attached to it).
@@ -390,6 +420,11 @@ void bind_simulator(py::module_ &m) {
             current_simulation_object() = py::none();
           })
       .def("request_stop", &PySimulation::request_stop, "The controller's next step returns -1.")
+      .def("set_goal", &PySimulation::set_goal, py::kw_only(), py::arg("cells"), py::arg("cell_size_m"),
+           py::arg("origin"), py::arg("points"), py::arg("radius_m"),
+           "The run's goal, checked after every control step: goal cells of a lattice, or points within radius_m.")
+      .def_property_readonly("goal_reached", &PySimulation::goal_reached,
+                             "Whether the robot's centre has been at the goal after a control step.")
       .def("record_trace", &PySimulation::record_to, py::arg("files"),
            "From now on a row of the RunFiles' trace.csv after every control step.")
       .def_property_readonly("time_s", &PySimulation::time_s)
