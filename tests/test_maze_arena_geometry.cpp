@@ -335,6 +335,29 @@ TEST_CASE("Simulation in an arena: a supervisor adds solids the sensors see at o
   CHECK_THROWS_WITH_AS(sim.add_disc({kInf, 5, 0.25}), "a cylinder's x must be finite (got inf)", common::InputError);
 }
 
+TEST_CASE("Simulation: a supervisor's reset puts the time back at 0 and the time limit still counts the whole run") {
+  const maze::Arena arena = maze::read_room("boundary 0 10 0 10\nstart 1 5 0\n", "f");
+  maze::sim::SimulationOptions options = at(1, 5, 0);
+  options.time_limit_s = 0.32;  // ten basic steps
+  webots::embedded::Simulation sim(arena, test_robot(), options);
+  webots::Robot &robot = sim.robot();
+  webots::PositionSensor *encoder = robot.getPositionSensor(test_robot().left_encoder);
+  encoder->enable(32);
+  webots::Motor *left = robot.getMotor(test_robot().left_motor);
+  left->setPosition(INFINITY);
+  left->setVelocity(5.0);
+  for (int i = 0; i < 6; ++i) REQUIRE(robot.step(32) == 0);
+  CHECK(robot.getTime() == doctest::Approx(0.192));
+  CHECK(encoder->getValue() > 0.5);
+  sim.reset_world();
+  CHECK(robot.getTime() == 0.0);
+  CHECK(sim.steps() == 6);
+  CHECK(encoder->getValue() == 0.0);
+  for (int i = 0; i < 3; ++i) REQUIRE(robot.step(32) == 0);
+  CHECK(robot.getTime() == doctest::Approx(0.096));
+  CHECK(robot.step(32) == -1);  // the tenth step of the run
+}
+
 TEST_CASE("Simulation in a maze: no solid can be added to the lattice") {
   maze::Maze m(2, 2);
   webots::embedded::Simulation sim(m, test_robot(), {});

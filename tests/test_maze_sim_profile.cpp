@@ -13,7 +13,7 @@ TEST_CASE("profiles: hambot is the default and is the course robot exactly") {
   CHECK(p.name == "hambot");
   CHECK(p.wheel_radius_m == 0.045);
   CHECK(p.axle_m == 0.184);
-  CHECK(p.max_wheel_velocity_rad_s == 18.0);
+  CHECK(p.max_wheel_velocity_rad_s == 20.0);
   CHECK(p.left_motor == "left motor");
   CHECK(p.right_motor == "right motor");
   CHECK(p.left_encoder == "left wheel encoder");
@@ -31,20 +31,22 @@ TEST_CASE("profiles: hambot is the default and is the course robot exactly") {
   CHECK(p.lidars[0].resolution_m == 0.01);
   CHECK(p.axle_m == 0.184);
   CHECK(p.wheel_radius_m == 0.045);
-  CHECK(p.max_wheel_velocity_rad_s == 18.0);
+  CHECK(p.max_wheel_velocity_rad_s == 20.0);
   CHECK(p.bumpers.empty());
   CHECK(p.distance_sensors.empty());
 }
 
-TEST_CASE("profiles: hambot-2025 is last year's robot; hambot-12m its rotating lidar reaching 12 m") {
+TEST_CASE("profiles: hambot-2025 is last year's robot, motors of 18 rad/s; hambot-12m its rotating lidar reaching 12 m") {
   maze::sim::RobotProfile last_year = maze::sim::find_profile("hambot-2025");
   REQUIRE(last_year.lidars.size() == 1);
   CHECK(last_year.lidars[0].min_range_m == 0.07);
   CHECK(last_year.lidars[0].max_range_m == 3.0);
   CHECK(last_year.lidars[0].frequency_hz == 12.0);
   CHECK(last_year.lidars[0].resolution_m == 0.0);
-  // The same wheels and devices as this term's robot: only the lidar differs.
+  CHECK(last_year.max_wheel_velocity_rad_s == 18.0);
+  // The same wheels and devices as this term's robot: only the lidar and the motors' maximum differ.
   maze::sim::RobotProfile as_today = last_year;
+  as_today.max_wheel_velocity_rad_s = maze::sim::default_profile().max_wheel_velocity_rad_s;
   as_today.name = "hambot";
   as_today.description = maze::sim::default_profile().description;
   as_today.lidars = maze::sim::default_profile().lidars;

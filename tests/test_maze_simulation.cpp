@@ -79,7 +79,7 @@ TEST_CASE("Simulation: devices by name and kind, as Webots' Robot::get*") {
   CHECK(robot.getLidar("gps") == nullptr);  // wrong kind
   CHECK(robot.getMotor("no such motor") == nullptr);
   CHECK(robot.getDevice("gps")->getName() == "gps");
-  CHECK(robot.getMotor("left motor")->getMaxVelocity() == 18.0);
+  CHECK(robot.getMotor("left motor")->getMaxVelocity() == 20.0);
 }
 
 TEST_CASE("Robot(): attaches to the current simulation, and fails without one") {
@@ -266,9 +266,9 @@ TEST_CASE("Driving: the velocity is clamped to the maximum") {
   Simulation sim(maze::Maze(2, 2), hambot(), exact());
   webots::Motor *m = sim.robot().getMotor("left motor");
   m->setVelocity(100.0);
-  CHECK(m->getVelocity() == 18.0);
+  CHECK(m->getVelocity() == 20.0);
   m->setVelocity(-100.0);
-  CHECK(m->getVelocity() == -18.0);
+  CHECK(m->getVelocity() == -20.0);
 }
 
 TEST_CASE("Driving into a wall stops at the wall and presses the bumpers touching it") {

@@ -131,20 +131,27 @@ bool trace_every_step(const RunOptions &options) {
   return options.output.trace_steps || !sensing::setup(options.model.kind).reads_lidar();
 }
 
+std::string_view pose_trace_columns() { return "step,time_s,true_x_m,true_y_m,true_yaw_rad"; }
+
 std::string trace_header(const std::string &sensor_columns) {
-  return "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated" + sensor_columns + "\n";
+  return std::string(pose_trace_columns()) + ",cell_x,cell_y,action,subcells_updated" + sensor_columns + "\n";
 }
 
-void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
-                      double yaw_rad, const std::string &sensor_values) {
-  // As "{},{:.3f},{:.4f},{:.4f},{:.4f},{},{},{},{}{}\n" (the same bytes; common/fixed_decimal.hpp).
-  common::append_int(csv, step.step);
+void append_pose_trace_values(std::string &csv, std::int64_t step, double time_s, double x_m, double y_m,
+                              double yaw_rad) {
+  // As "{},{:.3f},{:.4f},{:.4f},{:.4f}" (the same bytes; common/fixed_decimal.hpp).
+  common::append_int(csv, step);
   csv += ',';
-  common::append_fixed(csv, step.sim_time_s, 3);
+  common::append_fixed(csv, time_s, 3);
   for (const double v : {x_m, y_m, yaw_rad}) {
     csv += ',';
     common::append_fixed(csv, v, 4);
   }
+}
+
+void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
+                      double yaw_rad, const std::string &sensor_values) {
+  append_pose_trace_values(csv, step.step, step.sim_time_s, x_m, y_m, yaw_rad);
   csv += ',';
   common::append_int(csv, step.cell.x);
   csv += ',';

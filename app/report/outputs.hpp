@@ -35,8 +35,10 @@
 // to the temporary as the run goes, so its memory is a buffer, not the whole trace).
 
 #include <functional>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/report/grid_history.hpp"
@@ -80,6 +82,13 @@ std::string trace_header(const std::string &sensor_columns = "");
 // differs from the step before or a scan updated the grid, and the first and last steps: a
 // 256 x 256 maze's trace is then megabytes, not a gigabyte.
 bool trace_every_step(const RunOptions &options);
+// The columns every trace.csv starts with, a maze run's and a Python controller's:
+// "step,time_s,true_x_m,true_y_m,true_yaw_rad" (no line end).
+std::string_view pose_trace_columns();
+// Those columns' values of one row: the step, simulated seconds to 3 decimals, the true pose
+// to 4 (no line end).
+void append_pose_trace_values(std::string &csv, std::int64_t step, double time_s, double x_m, double y_m,
+                              double yaw_rad);
 // One row; `sensor_values` are the sensor columns' values (",..."), as the header has them.
 void append_trace_row(std::string &csv, const robot::StepReport &step, double x_m, double y_m,
                       double yaw_rad, const std::string &sensor_values = "");

@@ -7,7 +7,7 @@
 //     "name": "hambot",
 //     "description": "...",
 //     "wheel_radius_m": 0.045, "axle_m": 0.184, "body_radius_m": 0.09,
-//     "max_wheel_velocity_rad_s": 18.0,
+//     "max_wheel_velocity_rad_s": 20.0,
 //     "left_motor": "left motor", "right_motor": "right motor",
 //     "left_encoder": "left wheel encoder", "right_encoder": "right wheel encoder",
 //     "imu": "imu", "gps": "gps",                       ("" : the robot has none)

@@ -199,6 +199,8 @@ class Robot:
             self.devices["camera"] = Camera("camera")
             self.devices["User Display"] = Display("User Display")
         self._names = list(self.devices)
+        if _scene.current is not None:  # where the goals of the controller's own world are found
+            _scene.current.goal.namespace = vars(sys.modules["__main__"])
 
     # ---- time ----
 
@@ -218,6 +220,8 @@ class Robot:
         result = self._handle.step(time_step)
         if result == -1:
             self._ended = True
+        elif _scene.current is not None and _scene.current.reset_requested:
+            _scene.current.reset()
         return result
 
     def _record_path(self, scene):
@@ -329,7 +333,10 @@ class Supervisor(Robot):
         return self._scene().from_id(node_id)
 
     def simulationReset(self):
-        self._scene().reset()
+        """Webots' reset from a supervisor, at the end of the next step: the imported nodes
+        removed, the robot at its start with its motors and encoders at 0, the simulated time
+        back at 0 (getTime()); the controller goes on (scene.Scene.reset)."""
+        self._scene().reset_requested = True
 
     def simulationResetPhysics(self):
         """The body has no momentum here: nothing to reset."""

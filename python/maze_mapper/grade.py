@@ -8,20 +8,25 @@ wrong. A file that cannot be read or has the wrong shape is a row with its error
 status: 0 when every file was graded, 1 when one could not be, 2 for a bad world or usage.
 
 With --controllers, runs a class's controllers instead (one folder a student, as handed in):
-each over every world (`own`: the course's empty floor, which the controller fills with its
-own load_environment) and start (seeds 1 to N: the course's random start and the sensors'
-noise), in parallel, each under python3 -m maze_mapper.run with the time limits; one CSV row a
-run (student, world, start, exit, end, simulated time, distance, collisions, final pose, and
-coverage and wall accuracy where the controller kept a grid), and a summary a student a line.
+each over every world and start (a world file's start positions 1 to N; on `own`, the course's
+empty floor that the controller fills with its own load_environment, seeds 1 to N drawing the
+course's random start), students in parallel, a student's runs one after another in the
+controller's own folder, each under python3 -m maze_mapper.run with the time limits. One CSV
+row a run: student, world, start, exit, end, simulated time, distance, collisions, final pose,
+whether the goal was reached (where the world has one), and the map score (coverage, wall
+accuracy) of the grid the controller kept (maze_mapper.keep_grid) or saved in its folder as
+.npy/.npz during the run, on a maze world; then a table a line a student.
 """
 
 import argparse
 import concurrent.futures
 import csv
+import json
 import os
 import subprocess
 import sys
 import tempfile
+import time
 
 import maze_mapper
 
@@ -76,7 +81,7 @@ def grade(world, path):
 
 GRID_COLUMNS = ["file", "coverage", "wall_accuracy", "wrong", "first_wrong", "error"]
 RUN_COLUMNS = ["student", "world", "start", "exit", "end", "sim_time_s", "distance_m", "collisions", "final_x",
-               "final_y", "final_yaw_deg", "coverage", "wall_accuracy", "error"]
+               "final_y", "final_yaw_deg", "goal", "grid", "coverage", "wall_accuracy", "error"]
 
 
 def write_csv(path, rows, columns=GRID_COLUMNS):
@@ -110,49 +115,124 @@ def student_controller(folder, name):
     raise ValueError(f"{folder}: {len(scripts)} .py files and none named {own} (--controller NAME chooses)")
 
 
-def run_once(student, controller, world, start, args):
-    """One run under maze_mapper.run: its CSV row."""
+def saved_grids(folder, since):
+    """The .npy and .npz files the run wrote in the controller's folder (modified at or after
+    `since`, a time.time()), in name order."""
+    return sorted(os.path.join(folder, f) for f in os.listdir(folder)
+                  if f.endswith((".npz", ".npy")) and os.path.getmtime(os.path.join(folder, f)) >= since)
+
+
+def _text(mapping, key):
+    value = mapping.get(key)
+    return "" if value is None else str(value)
+
+
+def _percent_text(summary, key):
+    value = summary.get(key)
+    return "" if value is None else f"{value:.2f}%"
+
+
+def _summary_values(summary):
+    """The row's columns from the run's summary.json."""
+    pose = summary.get("final_pose") or {}
+    kept = summary.get("grid") not in (None, "none")
+    return {"end": _text(summary, "end"),
+            "sim_time_s": f"{summary['sim_time_s']:.3f}" if summary.get("sim_time_s") is not None else "",
+            "distance_m": _text(summary, "distance_m"), "collisions": _text(summary, "collisions"),
+            "final_x": _text(pose, "x_m"), "final_y": _text(pose, "y_m"), "final_yaw_deg": _text(pose, "yaw_deg"),
+            "goal": _text(summary, "goal"), "grid": "kept" if kept else "",
+            "coverage": _percent_text(summary, "coverage"), "wall_accuracy": _percent_text(summary, "wall_accuracy")}
+
+
+def _score_saved_grid(row, truth, folder, since):
+    """Where the controller kept no grid but saved one (.npy/.npz in its folder during the
+    run), the row's map score is that file's against the world's truth."""
+    if row.get("grid") or truth is None:
+        return
+    files = saved_grids(folder, since)
+    if not files:
+        return
+    graded = grade(truth, files[0])
+    row["grid"] = os.path.basename(files[0])
+    if graded["error"]:
+        row["error"] = row.get("error") or graded["error"]
+    else:
+        row["coverage"], row["wall_accuracy"] = graded["coverage"], graded["wall_accuracy"]
+
+
+def run_once(student, controller, world, start, args, truth=None):
+    """One run under maze_mapper.run, in the controller's own folder, with --out into a
+    temporary folder: its CSV row. On a world file, start N is the file's N-th start position;
+    on `own`, seed N draws the course's random start."""
     row = {"student": student, "world": world, "start": start}
-    command = [sys.executable, "-m", "maze_mapper.run", os.path.abspath(controller), "--seed", str(start),
-               "--time-limit", str(args.time_limit), "--wall-limit", str(args.wall_limit)]
-    if world != "own":
-        command += ["--world", os.path.abspath(world)]
-    try:
-        done = subprocess.run(command, capture_output=True, text=True, timeout=args.wall_limit + 60,
-                              stdin=subprocess.DEVNULL)
-    except subprocess.TimeoutExpired:
-        return {**row, "exit": "", "end": "killed", "error": "no summary within the wall-clock limit"}
-    summary = {}
-    block = done.stdout.rstrip("\n").split("\n\n")[-1]
-    for line in block.splitlines():
-        key, _, value = line.partition(": ")
-        summary[key] = value
-    x, y, yaw = (summary.get("final_pose", "") + "  ").split(" ")[:3]
-    errors = [line for line in done.stderr.splitlines() if line.strip()]
-    return {**row, "exit": done.returncode, "end": summary.get("end", ""), "sim_time_s": summary.get("sim_time_s", ""),
-            "distance_m": summary.get("distance_m", ""), "collisions": summary.get("collisions", ""), "final_x": x, "final_y": y, "final_yaw_deg": yaw,
-            "coverage": summary.get("coverage", ""), "wall_accuracy": summary.get("wall_accuracy", ""),
-            "error": errors[-1] if done.returncode != 0 and errors else ""}
+    folder = os.path.dirname(os.path.abspath(controller))
+    with tempfile.TemporaryDirectory(prefix="maze_mapper_grade_") as out:
+        command = [sys.executable, "-m", "maze_mapper.run", os.path.abspath(controller), "--seed", str(start),
+                   "--time-limit", str(args.time_limit), "--wall-limit", str(args.wall_limit),
+                   "--out", os.path.join(out, "run")]
+        if world != "own":
+            command += ["--world", os.path.abspath(world), "--start", f"pos:{start}"]
+        since = time.time() - 1.0  # file times may be coarser than the clock
+        try:
+            done = subprocess.run(command, capture_output=True, text=True, timeout=args.wall_limit + 60,
+                                  stdin=subprocess.DEVNULL)
+        except subprocess.TimeoutExpired:
+            return {**row, "exit": "", "end": "killed", "error": "no summary within the wall-clock limit"}
+        summary_path = os.path.join(out, "run", "summary.json")
+        summary = json.load(open(summary_path)) if os.path.isfile(summary_path) else {}
+    errors = [line for line in done.stderr.splitlines() if line.strip() and not line.startswith("wrote ")]
+    row = {**row, "exit": done.returncode, **_summary_values(summary),
+           "error": errors[-1] if done.returncode != 0 and errors else ""}
+    _score_saved_grid(row, truth, folder, since)
+    return row
+
+
+def _mean(values, form):
+    return form.format(sum(values) / len(values)) if values else "-"
+
+
+def _student_line(student, mine):
+    finished = [r for r in mine if r.get("exit") == 0]
+    with_goal = [r for r in mine if r.get("goal")]
+    reached = sum(1 for r in with_goal if r["goal"] == "reached")
+    failed = [r for r in mine if r.get("exit") != 0]
+    return [student, f"{len(finished)}/{len(mine)}", f"{reached}/{len(with_goal)}" if with_goal else "-",
+            _mean([float(r["sim_time_s"]) for r in finished if r.get("sim_time_s")], "{:.1f} s"),
+            _mean([float(r["coverage"].rstrip("%")) for r in mine if r.get("coverage")], "{:.1f}%"),
+            _mean([float(r["wall_accuracy"].rstrip("%")) for r in mine if r.get("wall_accuracy")], "{:.1f}%"),
+            str(sum(int(r["collisions"]) for r in mine if r.get("collisions"))),
+            f"{failed[0]['world']}, start {failed[0]['start']}: {failed[0].get('error') or failed[0].get('end')}"
+            if failed else ""]
 
 
 def class_summary(rows):
-    """A line a student: runs, finished runs, mean simulated time and coverage."""
-    lines = []
-    for student in sorted({r["student"] for r in rows}):
-        mine = [r for r in rows if r["student"] == student]
-        finished = [r for r in mine if r.get("exit") == 0]
-        times = [float(r["sim_time_s"]) for r in finished if r.get("sim_time_s")]
-        coverage = [float(r["coverage"].rstrip("%")) for r in finished if r.get("coverage")]
-        line = f"{student}: {len(finished)}/{len(mine)} runs finished"
-        if times:
-            line += f", mean {sum(times) / len(times):.1f} s simulated"
-        if coverage:
-            line += f", mean coverage {sum(coverage) / len(coverage):.1f}%"
-        failed = [r for r in mine if r.get("exit") != 0]
-        if failed:
-            line += f"; first failure ({failed[0]['world']}, start {failed[0]['start']}): {failed[0].get('error') or failed[0].get('end')}"
-        lines.append(line)
-    return lines
+    """A table a teacher reads, a line a student: runs finished, goals reached (of the runs
+    whose world has a goal), mean simulated time of the finished runs, mean map scores, the
+    collisions, and the first failed run with its reason."""
+    header = ["student", "finished", "goal reached", "mean time", "coverage", "wall accuracy", "collisions",
+              "first failure"]
+    table = [header] + [_student_line(s, [r for r in rows if r["student"] == s])
+                        for s in sorted({r["student"] for r in rows})]
+    widths = [max(len(line[i]) for line in table) for i in range(len(header) - 1)]
+    return ["  ".join([cell.ljust(widths[i]) if i == 0 else cell.rjust(widths[i])
+                       for i, cell in enumerate(line[:-1])] + [line[-1]]).rstrip() for line in table]
+
+
+def _truth(world):
+    """The world's maze, to score the grids the controllers save, read as the runner reads it;
+    None for `own`, an arena (no lattice to score a grid on) or a file the runs will refuse."""
+    if world == "own":
+        return None
+    try:
+        read = maze_mapper._native.load_any_world(world)
+    except maze_mapper.Error:
+        return None
+    return read if isinstance(read, maze_mapper.World) else None
+
+
+def _student_runs(student, controller, worlds, args, truths):
+    """A student's runs, one after another (a run may save its grid in the student's folder)."""
+    return [run_once(student, controller, w, s, args, truths[w]) for w in worlds for s in range(1, args.starts + 1)]
 
 
 def class_main(argv):
@@ -162,10 +242,11 @@ def class_main(argv):
     p.add_argument("--controller", help="the controller's file name in each student's folder")
     p.add_argument("--world", action="append", default=[],
                    help="a world file (repeatable); own: the controller loads its own (default)")
-    p.add_argument("--starts", type=int, default=1, help="runs a world, seeds 1 to N (default 1)")
+    p.add_argument("--starts", type=int, default=1,
+                   help="runs a world: a world file's start positions 1 to N, or on `own` seeds 1 to N (default 1)")
     p.add_argument("--time-limit", type=float, default=300.0, help="simulated seconds a run (default 300)")
     p.add_argument("--wall-limit", type=float, default=120.0, help="wall-clock seconds a run (default 120)")
-    p.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="runs at once (default: the cores)")
+    p.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="students run at once (default: the cores)")
     p.add_argument("--csv", default="grades.csv", help="the rows' CSV file (default grades.csv)")
     args = p.parse_args(argv)
     if not os.path.isdir(args.controllers):
@@ -176,25 +257,27 @@ def class_main(argv):
     for w in worlds:
         if w != "own" and not os.path.isfile(w):
             p.error(f"cannot read {w}: no such file")
-    runs, rows = [], []
+    truths = {w: _truth(w) for w in worlds}
+    students, rows = [], []
     for student in sorted(os.listdir(args.controllers)):
         folder = os.path.join(args.controllers, student)
         if not os.path.isdir(folder):
             continue
         try:
-            controller = student_controller(folder, args.controller)
+            students.append((student, student_controller(folder, args.controller)))
         except ValueError as e:
             rows += [{"student": student, "world": w, "start": s, "end": "not run", "error": str(e)}
                      for w in worlds for s in range(1, args.starts + 1)]
-            continue
-        runs += [(student, controller, w, s) for w in worlds for s in range(1, args.starts + 1)]
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        rows += list(pool.map(lambda run: run_once(*run, args), runs))
-    rows.sort(key=lambda r: (r["student"], r["world"], r["start"]))
+        for runs in pool.map(lambda sc: _student_runs(*sc, worlds, args, truths), students):
+            rows += runs
+    rows.sort(key=lambda r: (r["student"], worlds.index(r["world"]), r["start"]))
     write_csv(args.csv, rows, RUN_COLUMNS)
     for line in class_summary(rows):
         print(line)
-    print(f"total: {len(rows)} runs, {sum(1 for r in rows if r.get('exit') == 0)} finished; rows in {args.csv}")
+    finished = sum(1 for r in rows if r.get("exit") == 0)
+    reached = sum(1 for r in rows if r.get("goal") == "reached")
+    print(f"total: {len(rows)} runs, {finished} finished, {reached} reached the goal; rows in {args.csv}")
     return 0
 
 

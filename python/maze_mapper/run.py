@@ -10,11 +10,12 @@ Without --world the world is the course's empty floor, which a supervisor contro
 fairis_lib is used when it is importable; maze_mapper's stand-in serves where it is not.
 When the controller ends, the runner prints a summary; if the controller handed its grid to
 maze_mapper.keep_grid(), the summary scores it against a maze's truth as `maze_mapper run`
-scores its own map. Exit status: the controller's (1 for an uncaught exception), 2 for bad
+scores its own map. With --out DIR it writes the run's files there (docs/course.md). Exit status: the controller's (1 for an uncaught exception), 2 for bad
 input to the runner.
 """
 
 import argparse
+import json
 import math
 import os
 import random
@@ -49,14 +50,17 @@ def _parse(argv):
                    help="the sensors' noise seed and Python's random seed, which draws the course's random start (default 42)")
     p.add_argument("--noise", type=float, help="lidar noise as a fraction of max range (0: exact sensors)")
     p.add_argument("--cell-size", type=float, help="cell size in m of a text or num world (default 1)")
-    p.add_argument("--start", help="a maze world's start: pos:N (its N-th start position) or random (one of them, "
-                                   "drawn with --seed), as `maze_mapper run --start`")
+    p.add_argument("--start", help="the world's start: pos:N (its N-th start position) or random (one of them, "
+                                   "drawn with --seed), as `maze_mapper run --start`; on an arena too")
     p.add_argument("--max-steps", type=int, default=100_000,
                    help="basic time steps before Robot.step() returns -1 (default 100000)")
     p.add_argument("--time-limit", type=float,
                    help="simulated seconds before Robot.step() returns -1 (the earlier of this and --max-steps)")
     p.add_argument("--wall-limit", type=float,
                    help="wall-clock seconds after which Robot.step() returns -1 (a guard for a class's runs)")
+    p.add_argument("--out", metavar="DIR",
+                   help="write the run's files into DIR, as `maze_mapper run --out`: summary.json, trace.csv, and "
+                        "for a maze truth.png, replay.html and map.png (of a kept grid)")
     args, rest = p.parse_known_args(argv)
     if rest and rest[0] == "--":
         rest = rest[1:]
@@ -119,17 +123,38 @@ def _run_controller(path, controller_args):
                 del sys.modules[name]
 
 
-def _percent(value):
-    return f"{value:.2f}%"
+class _Entries:
+    """The runner's report as the program's Report takes it: (key, printed value or None, the
+    value as JSON text); the C++ side prints the block and writes summary.json from it."""
+
+    def __init__(self):
+        self.items = []
+
+    def both(self, key, text, value=None):
+        self.items.append((key, text, json.dumps(text if value is None else value)))
+
+    def json_only(self, key, value):
+        self.items.append((key, None, json.dumps(value)))
 
 
-def _world_lines(args, world, the_scene):
+def _two_decimals(percent):
+    return round(percent * 100.0) / 100.0
+
+
+def _world_entries(e, args, world, the_scene):
     if world is None:
-        imported = the_scene.root.getField("children").getCount() - 1  # all but the robot
-        return ["world: the course's empty floor (17 x 17 m)", f"imported_nodes: {imported}"]
-    if isinstance(world, maze_mapper.World):
-        return [f"world: {args.world}", f"size: {world.width}x{world.height}"]
-    return [f"world: {args.world}", f"arena: {world.name}", f"obstacles: {world.obstacles}"]
+        e.both("world", "the course's empty floor (17 x 17 m)")
+        e.both("imported_nodes", str(the_scene.root.getField("children").getCount() - 1),  # all but the robot
+               the_scene.root.getField("children").getCount() - 1)
+    elif isinstance(world, maze_mapper.World):
+        e.both("world", args.world)
+        e.both("size", f"{world.width}x{world.height}")
+        e.json_only("width", world.width)
+        e.json_only("height", world.height)
+    else:
+        e.both("world", args.world)
+        e.both("arena", world.name)
+        e.both("obstacles", str(world.obstacles), world.obstacles)
 
 
 def _distance_m(the_scene):
@@ -141,77 +166,148 @@ def _distance_m(the_scene):
     return robot.distance_m
 
 
-def _summary(args, world, the_scene, end, wall_time_ms):
-    simulation = the_scene.simulation
-    x, y, _, yaw = simulation.pose
-    lines = [f"controller: {args.controller}"] + _world_lines(args, world, the_scene) + [
-        f"robot: {simulation.robot_name}",
-        f"seed: {args.seed}",
-        f"end: {end}",
-        f"steps: {simulation.steps}",
-        f"sim_time_s: {simulation.time_s:.3f}",
-        f"final_pose: {x:.3f} {y:.3f} {math.degrees(yaw):.1f}",
-        f"distance_m: {_distance_m(the_scene):.3f}",
-        f"collisions: {simulation.collisions}",
-    ]
+def _grid_entries(e, world):
+    """coverage and wall accuracy of the grid the controller kept (maze_mapper.keep_grid)."""
     if maze_mapper._kept is not None and not isinstance(world, maze_mapper.World):
-        lines.append("grid: kept, not scored (the world is no maze)")
-    elif maze_mapper._kept is not None:
-        grid, visited, initial = maze_mapper._kept
-        result = maze_mapper.score(world, grid, visited, initial_log_odds=initial)
-        shape = grid.array.shape if isinstance(grid, maze_mapper.OccupancyGrid) else getattr(grid, "shape", ())
-        lines += [
-            f"subcells: {shape[-1] if shape else '?'}",
-            f"visited: {result.visited_reachable_cells}",
-            f"reachable: {result.reachable_cells}",
-            f"coverage: {_percent(result.coverage_percent)}",
-            f"wall_accuracy: {_percent(result.wall_accuracy_percent)}",
-        ]
-        if result.wrong_where_looked:
-            named = ", ".join(repr(s) for s in result.first_wrong_where_looked)
-            more = ", ..." if result.wrong_where_looked > len(result.first_wrong_where_looked) else ""
-            n = result.wrong_where_looked
-            lines.append(f"wrong_sides: {n} side{'' if n == 1 else 's'} of visited cells learned wrong: {named}{more}")
+        e.both("grid", "kept, not scored (the world is no maze)", "kept")
+        return
+    if maze_mapper._kept is None:
+        e.both("grid", "none kept (maze_mapper.keep_grid scores a controller's grid)", "none")
+        return
+    grid, visited, initial = maze_mapper._kept
+    result = maze_mapper.score(world, grid, visited, initial_log_odds=initial)
+    shape = grid.array.shape if isinstance(grid, maze_mapper.OccupancyGrid) else getattr(grid, "shape", ())
+    e.both("subcells", str(shape[-1]) if shape else "?", shape[-1] if shape else None)
+    e.both("visited", str(result.visited_reachable_cells), result.visited_reachable_cells)
+    e.both("reachable", str(result.reachable_cells), result.reachable_cells)
+    e.both("coverage", f"{result.coverage_percent:.2f}%", _two_decimals(result.coverage_percent))
+    e.both("wall_accuracy", f"{result.wall_accuracy_percent:.2f}%", _two_decimals(result.wall_accuracy_percent))
+    if result.wrong_where_looked:
+        named = ", ".join(repr(s) for s in result.first_wrong_where_looked)
+        more = ", ..." if result.wrong_where_looked > len(result.first_wrong_where_looked) else ""
+        n = result.wrong_where_looked
+        e.both("wrong_sides", f"{n} side{'' if n == 1 else 's'} of visited cells learned wrong: {named}{more}", n)
+
+
+def _report(args, world, the_scene, end, wall_time_ms):
+    """The run's report entries, in the order every run reports its core keys."""
+    simulation = the_scene.simulation
+    e = _Entries()
+    e.both("controller", args.controller)
+    _world_entries(e, args, world, the_scene)
+    e.json_only("model", None)  # the controller's own
+    e.json_only("strategy", None)
+    e.both("robot", simulation.robot_name)
+    e.both("seed", str(args.seed), args.seed)
+    e.both("end", end)
+    e.json_only("end_message", "")
+    e.both("steps", str(simulation.steps), simulation.steps)
+    e.both("sim_time_s", f"{simulation.time_s:.3f}", simulation.time_s)
+    x, y, _, yaw = simulation.pose
+    e.both("final_pose", f"{x:.3f} {y:.3f} {math.degrees(yaw):.1f}",
+           {"x_m": round(x, 3), "y_m": round(y, 3), "yaw_deg": round(math.degrees(yaw), 1)})
+    distance = _distance_m(the_scene)
+    e.both("distance_m", f"{distance:.3f}", round(distance, 3))
+    e.both("collisions", str(simulation.collisions), simulation.collisions)
+    the_scene.goal.look_for_controller_goals(Robot.created, simulation)
+    if the_scene.goal.exists():
+        e.both("goal", "reached" if simulation.goal_reached else "not reached")
     else:
-        lines.append("grid: none kept (maze_mapper.keep_grid scores a controller's grid)")
-    lines.append(f"wall_time_ms: {wall_time_ms:.0f}")
-    return "\n".join(lines)
+        e.json_only("goal", None)
+    _grid_entries(e, world)
+    e.both("wall_time_ms", f"{wall_time_ms:.0f}", wall_time_ms)
+    return e.items
+
+
+def _arena_start(args, world):
+    """The arena's start pose --start chooses (x, y, yaw), or None for its first: pos:N its
+    N-th start position, random one drawn with --seed."""
+    starts = world.starts
+    if args.start is None or not starts:
+        return None
+    if args.start == "random":
+        return starts[random.Random(args.seed).randrange(len(starts))]
+    n = int(args.start[4:])
+    if n > len(starts):
+        raise maze_mapper.Error(f"error: --start {args.start}: {args.world} has {len(starts)} start "
+                                f"position{'' if len(starts) == 1 else 's'}")
+    return starts[n - 1]
 
 
 def _simulation(args):
-    """(the world read, or None for the empty floor; the simulation)."""
+    """(the world read, or None for the empty floor; the simulation). --start chooses a maze's
+    or an arena's start position."""
     options = dict(robot=args.robot, seed=args.seed, noise=args.noise, max_steps=args.max_steps)
     if args.world is None:
         return None, _native.Simulation.empty_floor(**options)
-    start_position = int(args.start[4:]) if args.start and args.start.startswith("pos:") else None
-    world = _native.load_any_world(args.world, cell_size_m=args.cell_size, start_position=start_position,
-                                   random_start=args.start == "random", seed=args.seed)
+    world = _native.load_any_world(args.world, cell_size_m=args.cell_size)
+    if isinstance(world, maze_mapper.World) and args.start is not None:
+        start_position = int(args.start[4:]) if args.start.startswith("pos:") else None
+        world = _native.load_any_world(args.world, cell_size_m=args.cell_size, start_position=start_position,
+                                       random_start=args.start == "random", seed=args.seed)
     for warning in world.warnings:
         print(warning, file=sys.stderr)
-    return world, _native.Simulation(world, **options)
+    simulation = _native.Simulation(world, **options)
+    if not isinstance(world, maze_mapper.World):
+        start = _arena_start(args, world)
+        if start is not None:
+            simulation.teleport(start[0], start[1], 0.0, start[2])
+    return world, simulation
+
+
+def _goal(world):
+    """The run's goal (scene.Goal): the maze's goal cells, the arena's goal points, or on the
+    empty floor the ones the controller's library reads with its world."""
+    if world is None:
+        return scene.Goal(from_controller=True)
+    if isinstance(world, maze_mapper.World):
+        return scene.Goal(cells=world.goals, cell_size_m=world.cell_size_m, origin=world.origin)
+    return scene.Goal(points=world.goals)
+
+
+def _run_files(args):
+    """--out DIR prepared and checked against the run's inputs (as `maze_mapper run --out`), or
+    None without --out; raises maze_mapper.Error when DIR cannot take the files."""
+    if args.out is None:
+        return None
+    inputs = [("the controller", args.controller)]
+    if args.world is not None:
+        inputs.append(("the world", args.world))
+    if os.path.isfile(args.robot):
+        inputs.append(("--robot", args.robot))
+    return _native.RunFiles(args.out, inputs)
 
 
 def main(argv=None):
     args, controller_args = _parse(sys.argv[1:] if argv is None else argv)
     try:
         world, simulation = _simulation(args)
+        files = _run_files(args)
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return EXIT_USAGE
     maze_mapper._kept = None
     simulation.make_current()
-    scene.current = scene.Scene(simulation, world_file=args.world)
+    if files is not None:
+        simulation.record_trace(files)
+    scene.current = scene.Scene(simulation, world_file=args.world, goal=_goal(world))
     random.seed(args.seed)
     started = time.perf_counter()
     controller.wall_deadline = None if args.wall_limit is None else started + args.wall_limit
     controller.wall_limit_reached = False
+    status = EXIT_USAGE
     try:
         end, status = _run_controller(args.controller, controller_args)
         wall_time_ms = (time.perf_counter() - started) * 1000.0
         if controller.wall_limit_reached:
             end = "wall-clock limit"
         sys.stdout.flush()
-        print("\n" + _summary(args, world, scene.current, end, wall_time_ms))
+        entries = _report(args, world, scene.current, end, wall_time_ms)
+        sys.stdout.write("\n" + _native.format_entries(entries))
+        sys.stdout.flush()
+        if files is not None:
+            kept = maze_mapper._kept
+            files.finish(entries, world, None if kept is None else kept[0], None if kept is None else kept[2])
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return status or EXIT_USAGE

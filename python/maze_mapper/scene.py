@@ -24,6 +24,7 @@ the runner says so once.
 import math
 import re
 import sys
+import types
 
 
 class SceneError(ValueError):
@@ -277,6 +278,7 @@ class RobotNode(Node):
             yaw = yaw_of_rotation(value, "the robot's rotation")
         self._scene.simulation.teleport(x, y, z, yaw)
         self._scene.teleported = True
+        self._scene.goal.look_for_controller_goals(None, self._scene.simulation)
 
     def getPosition(self):
         return self._value("translation")
@@ -297,16 +299,73 @@ class Landmark:
         self.radius, self.height, self.yaw, self.colors = radius, height, yaw, colors
 
 
+# How near the robot's centre comes to a goal point for the goal to count as reached, m: a
+# landmark standing on the point (the course's cylinders, 0.25 m round) is then within 0.16 m
+# of HamBot's body (0.09 m round).
+GOAL_RADIUS_M = 0.5
+
+
+class Goal:
+    """The run's goal: a maze's goal cells (reached when the robot's centre is in one), or goal
+    points (reached within GOAL_RADIUS_M of one): an arena file's, or on the course's empty
+    floor the ones the controller's library read with its world (the course's HamBot keeps them
+    as maze.goal_locations, maze_mapper's stand-in as goal_locations: items with x and y),
+    looked for when the controller imports a node or teleports the robot, and at the end. The
+    simulation checks it after every control step."""
+
+    def __init__(self, cells=(), cell_size_m=1.0, origin=(0.0, 0.0), points=(), from_controller=False):
+        self.cells = list(cells)
+        self.cell_size_m = cell_size_m
+        self.origin = tuple(origin)
+        self.points = list(points)
+        self.from_controller = from_controller
+        self.namespace = {}  # the controller's globals (controller.Robot sets them)
+
+    def attach(self, simulation):
+        """Hands the goal to the simulation, which checks it every step."""
+        if self.cells or self.points:
+            simulation.set_goal(cells=self.cells, cell_size_m=self.cell_size_m, origin=self.origin,
+                                points=self.points, radius_m=GOAL_RADIUS_M)
+
+    def look_for_controller_goals(self, robot, simulation):
+        """On the empty floor: the goals of the world the controller's library read, once found."""
+        if not self.from_controller or self.points:
+            return
+        holder = self._find_holder(robot)
+        if holder is not None:
+            self.points = [(g.x, g.y) for g in holder.goal_locations]
+            self.attach(simulation)
+
+    def exists(self):
+        return bool(self.cells or self.points)
+
+    def _find_holder(self, robot):
+        """The object whose goal_locations (non-empty) are the world's goals: the robot, or
+        among the controller's globals (the course's HamBot is not the Supervisor it steps
+        with), itself or its maze."""
+        for value in [robot, *self.namespace.values()]:
+            if callable(value) or isinstance(value, types.ModuleType):
+                continue  # functions, classes, modules: no world's goals
+            for candidate in (value, getattr(value, "maze", None)):
+                goals = getattr(candidate, "goal_locations", None)
+                if isinstance(goals, list) and goals:
+                    return candidate
+        return None
+
+
 class Scene:
     """The world of one run: the simulation (maze_mapper._native.Simulation), the root's
     children, DEF names, and the landmarks the camera can recognise. world_file: the runner's
     --world (imports then add no solid), or None for the course's empty floor."""
 
-    def __init__(self, simulation, robot_type="HamBot", world_file=None):
+    def __init__(self, simulation, robot_type="HamBot", world_file=None, goal=None):
         self.simulation = simulation
         self.world_file = world_file
+        self.goal = goal if goal is not None else Goal()
+        self.goal.attach(simulation)
         self.landmarks = []
         self.teleported = False  # since the last step (the path length leaves teleports out)
+        self.reset_requested = False  # Supervisor.simulationReset, done at the end of the next step
         self._warned = False
         self._next_id = 1
         self.root = Node(self, 0, "Group", "Group", "", {"children": []}, {"children": "MFNode"})
@@ -343,6 +402,7 @@ class Scene:
         node = Node(self, self._new_id(), type_name, "Solid", def_name, fields, kinds)
         yaw = yaw_of_rotation(fields["rotation"], f"{type_name}.rotation")
         self._build(type_name, fields, yaw, node)
+        self.goal.look_for_controller_goals(None, self.simulation)
         children = self.root._values["children"]
         children.insert(len(children) if position == -1 or position >= len(children) else position, node)
 
@@ -365,12 +425,15 @@ class Scene:
             self.landmarks.append(Landmark(node, x, y, z, radius, height, yaw, colors))
 
     def reset(self):
-        """Webots' simulationReset here: the imported nodes are gone and the robot is back at
-        its start (simulated time runs on)."""
+        """Webots' reset from a supervisor (its Supervisor reference's reset matrix): the nodes
+        imported since the start are gone, the robot is back at its start with its motors and
+        encoders at 0, and the simulated time is 0 again. The controller is not restarted, and
+        the run's limits count its whole time."""
         del self.root._values["children"][self._initial_children:]
         self.landmarks.clear()
         self.simulation.reset_world()
         self.teleported = True
+        self.reset_requested = False
 
 
 # The scene of the run in progress (maze_mapper.run sets it), else None.

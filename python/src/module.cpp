@@ -28,5 +28,6 @@ PYBIND11_MODULE(_native, m) {
   maze_mapper_python::bind_models(m);
   maze_mapper_python::bind_render(m);
   maze_mapper_python::bind_world(m);
+  maze_mapper_python::bind_run_files(m);
   maze_mapper_python::bind_simulator(m);
 }

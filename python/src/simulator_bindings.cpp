@@ -2,6 +2,8 @@
 // Simulation and makes it current; the controller's Robot attaches to it and sees only the
 // webots:: devices (the Webots method names), never the maze.
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,26 +24,48 @@
 
 #include "app/run/profile_json.hpp"
 #include "bindings.hpp"
+#include "run_files.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "maze/arena.hpp"
 #include "maze/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world.hpp"
+#include "maze/xml_arena.hpp"
 
 namespace maze_mapper_python {
 
 namespace {
+
+// The pose, as the file states it (m, rad), of the start position a maze read from the
+// course's XML starts at: the <pos> its start cell and heading came from, a lattice node of
+// 0.5 m cells included (the maze itself keeps cells). nullopt for another format.
+std::optional<maze::sim::Pose> xml_start_pose(const maze::World &world) {
+  if (world.format != maze::Format::xml) return std::nullopt;
+  const maze::XmlArenaRead read = maze::read_xml_arena(maze::read_file(world.file), world.file);
+  const std::vector<maze::StartPosition> positions = world.maze.start_positions();
+  const maze::StartPosition start{world.maze.start(), world.maze.start_heading()};
+  for (std::size_t i = 0; i < positions.size() && i < read.arena.starts.size(); ++i) {
+    if (positions[i] == start) {
+      const maze::ArenaPose &p = read.arena.starts[i];
+      return maze::sim::Pose{p.x_m, p.y_m, p.yaw_rad};
+    }
+  }
+  return std::nullopt;
+}
 
 // A simulation of one world and one robot, owned by the runner: a maze, or an arena (a
 // course arena read from a file, or the course's empty floor that a supervisor fills).
 class PySimulation {
  public:
   // max_steps: basic time steps before Robot::step returns -1 (0: no limit).
+  // The robot starts where Webots puts it: on a course XML world, exactly on the file's pose.
   PySimulation(const maze::World &world, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
                std::int64_t max_steps)
       : truth_(world.maze), profile_(app::resolve_robot(robot)) {
-    simulation_ = std::make_unique<webots::embedded::Simulation>(*truth_, profile_, options(seed, noise, max_steps));
+    maze::sim::SimulationOptions o = options(seed, noise, max_steps);
+    o.start = xml_start_pose(world);
+    simulation_ = std::make_unique<webots::embedded::Simulation>(*truth_, profile_, o);
   }
   PySimulation(const maze::Arena &arena, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
                std::int64_t max_steps)
@@ -71,10 +95,33 @@ class PySimulation {
   void release_current() { current_.reset(); }
   bool is_current() const { return webots::embedded::current_simulation() == simulation_.get(); }
 
-  double time_s() const { return static_cast<double>(simulation_->time_ms()) / 1000.0; }
-  std::int64_t steps() const { return simulation_->time_ms() / simulation_->basic_time_step_ms(); }
+  // The run's simulated time and basic steps, resets included (Robot.getTime() restarts at a reset).
+  double time_s() const {
+    return static_cast<double>(simulation_->steps() * simulation_->basic_time_step_ms()) / 1000.0;
+  }
+  std::int64_t steps() const { return simulation_->steps(); }
   const maze::sim::RobotProfile &profile() const { return profile_; }
   void request_stop() { simulation_->request_stop(); }
+
+  // From now on a row of `files`' trace.csv after every control step (record_trace).
+  void record_to(py::object files) {
+    trace_ = &files.cast<RunFiles &>().trace();
+    trace_owner_ = std::move(files);
+  }
+  // After a control step: its row, when a trace is recorded; whether the robot is at the goal.
+  void after_step() {
+    if (trace_ != nullptr) trace_->record(steps(), time_s(), simulation_->pose());
+    if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation_->pose());
+  }
+
+  // The run's goal: the cells of a lattice (cell_size_m, origin) the robot's centre reaches
+  // one of, or points it comes within radius_m of. Replaces the goal set before.
+  void set_goal(std::vector<std::pair<int, int>> cells, double cell_size_m, std::pair<double, double> origin,
+                std::vector<std::pair<double, double>> points, double radius_m) {
+    goal_ = Goal{std::move(cells), cell_size_m, origin, std::move(points), radius_m};
+    goal_reached_ = goal_reached_ || at_goal(simulation_->pose());
+  }
+  bool goal_reached() const { return goal_reached_; }
 
   // The device names of the robot, in the order Webots' Robot lists a robot's devices here:
   // motors, encoders, IMU, GPS, lidars, distance sensors, bumpers.
@@ -104,6 +151,26 @@ class PySimulation {
   maze::sim::RobotProfile profile_;
   std::unique_ptr<webots::embedded::Simulation> simulation_;
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
+  PoseTrace *trace_ = nullptr;  // trace_owner_'s
+  py::object trace_owner_;
+
+  struct Goal {
+    std::vector<std::pair<int, int>> cells;
+    double cell_size_m = 1.0;
+    std::pair<double, double> origin;
+    std::vector<std::pair<double, double>> points;
+    double radius_m = 0.0;
+  };
+  bool at_goal(const maze::sim::Pose &p) const {
+    const std::pair<int, int> cell{static_cast<int>(std::floor((p.x_m - goal_->origin.first) / goal_->cell_size_m)),
+                                   static_cast<int>(std::floor((p.y_m - goal_->origin.second) / goal_->cell_size_m))};
+    if (std::find(goal_->cells.begin(), goal_->cells.end(), cell) != goal_->cells.end()) return true;
+    return std::any_of(goal_->points.begin(), goal_->points.end(), [&](const std::pair<double, double> &g) {
+      return std::hypot(p.x_m - g.first, p.y_m - g.second) <= goal_->radius_m;
+    });
+  }
+  std::optional<Goal> goal_;
+  bool goal_reached_ = false;
 };
 
 // The Python simulation object made current last (kept alive by the robots attached to it).
@@ -121,14 +188,17 @@ class PyRobot {
           "no simulation is running: run the controller with python3 -m maze_mapper.run CONTROLLER.py --world WORLD");
     }
     robot_ = std::make_unique<webots::Robot>();
-    names_ = simulation_.cast<const PySimulation &>().device_names();
+    owner_ = &simulation_.cast<PySimulation &>();
+    names_ = owner_->device_names();
   }
   // Webots' Robot.step: a negative duration is a mistake (raised); 0 passes no time.
   int step(int duration_ms) {
     if (duration_ms < 0) {
       throw common::InputError("Robot.step: the duration must be 0 or more ms (got " + std::to_string(duration_ms) + ")");
     }
-    return robot_->step(duration_ms);
+    const int result = robot_->step(duration_ms);
+    owner_->after_step();
+    return result;
   }
   double time_s() const { return robot_->getTime(); }
   double basic_time_step_ms() const { return robot_->getBasicTimeStep(); }
@@ -138,6 +208,7 @@ class PyRobot {
 
  private:
   py::object simulation_;
+  PySimulation *owner_ = nullptr;  // simulation_'s
   std::unique_ptr<webots::Robot> robot_;
   std::vector<std::string> names_;
 };
@@ -249,6 +320,12 @@ void bind_simulator(py::module_ &m) {
                                return py::make_tuple(w.arena.x_min_m, w.arena.x_max_m, w.arena.y_min_m,
                                                      w.arena.y_max_m);
                              })
+      .def_property_readonly("goals",
+                             [](const maze::ArenaWorld &w) {
+                               std::vector<std::pair<double, double>> goals;
+                               for (const maze::ArenaPoint &g : w.arena.goals) goals.emplace_back(g.x_m, g.y_m);
+                               return goals;
+                             })
       .def_property_readonly("starts", [](const maze::ArenaWorld &w) {
         std::vector<std::tuple<double, double, double>> starts;
         for (const maze::ArenaPose &p : w.arena.starts) starts.emplace_back(p.x_m, p.y_m, p.yaw_rad);
@@ -343,6 +420,13 @@ void bind_simulator(py::module_ &m) {
             current_simulation_object() = py::none();
           })
       .def("request_stop", &PySimulation::request_stop, "The controller's next step returns -1.")
+      .def("set_goal", &PySimulation::set_goal, py::kw_only(), py::arg("cells"), py::arg("cell_size_m"),
+           py::arg("origin"), py::arg("points"), py::arg("radius_m"),
+           "The run's goal, checked after every control step: goal cells of a lattice, or points within radius_m.")
+      .def_property_readonly("goal_reached", &PySimulation::goal_reached,
+                             "Whether the robot's centre has been at the goal after a control step.")
+      .def("record_trace", &PySimulation::record_to, py::arg("files"),
+           "From now on a row of the RunFiles' trace.csv after every control step.")
       .def_property_readonly("time_s", &PySimulation::time_s)
       .def_property_readonly("steps", &PySimulation::steps)
       .def_property_readonly("robot_name", [](const PySimulation &s) { return s.profile().name; })

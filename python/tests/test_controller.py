@@ -139,9 +139,9 @@ print("walls all round", max(robot.get_lidar_range_image()) < 1.6)
     lines = out.splitlines()
     assert "compass 90 [0.0, 0.0]" in lines  # the file's start, read from the controller's folder
     assert "turned True True" in lines
-    assert "ranges 360 18.0 0.045 0.184" in lines
+    assert "ranges 360 20.0 0.045 0.184" in lines
     assert "walls all round True" in lines  # the file's walls as solids: the farthest corner is 1.6 m away
-    assert err == "motor velocity -30 is beyond the maximum: set to -18.0\n"
+    assert err == "motor velocity -30 is beyond the maximum: set to -20.0\n"
 
 
 def test_bad_runner_input_is_one_error_line(controller_file, tmp_path):

@@ -233,3 +233,36 @@ def test_start_chooses_a_maze_worlds_start_position_as_run_does(controller_file)
     status, out, err = run_controller(path, "--start", "random")
     assert status == 2
     assert err == "error: --start needs --world (on the course's empty floor the controller chooses its start)\n"
+
+
+def test_a_supervisor_reset_puts_time_back_at_0_at_the_end_of_the_next_step_and_the_run_counts_its_whole_time(
+        controller_file):
+    body = ("robot.move_to_start()\n"
+            "for _ in range(10):\n    sup.step(robot.timestep)\n"
+            "robot.set_velocities(10, 10)\n"
+            "for _ in range(10):\n    sup.step(robot.timestep)\n"
+            "print('before', round(sup.getTime(), 3), robot.left_encoder.getValue() > 1)\n"
+            "sup.simulationReset()\n"
+            "print('requested', round(sup.getTime(), 3), sup.getFromDef('Obstacle_4') is not None)\n"
+            "sup.step(robot.timestep)\n"
+            "print('after', round(sup.getTime(), 3), sup.getFromDef('Obstacle_4'), robot.left_encoder.getValue(),\n"
+            "      [round(v, 3) for v in robot.gps.getValues()])\n")
+    status, out, err = run_course(course_controller(controller_file, body), "--noise", "0")
+    assert status == 0, err
+    lines = out.splitlines()
+    assert "before 0.704 True" in lines  # 2 calibration steps, 20 of the loops
+    assert "requested 0.704 True" in lines
+    assert "after 0.0 None 0.0 [0.0, 0.0, 0.0]" in lines
+    assert summary_of(out)["sim_time_s"] == "0.736"
+
+
+def test_the_robot_starts_exactly_at_the_file_s_start_on_a_world_read_on_half_metre_cells(controller_file):
+    source = ("from controller import Robot\nrobot = Robot()\ngps = robot.getDevice('gps')\ngps.enable(32)\n"
+              "robot.step(32)\nprint('gps', [round(v, 4) for v in gps.getValues()[:2]])\n")
+    lattice = os.path.join(COURSE, "WebotsSim", "worlds", "lattice_maze.xml")
+    for start, where in (("pos:1", "[-0.5, -0.5]"), ("pos:2", "[0.75, -0.75]")):
+        status, out, err = run_controller(controller_file(source), "--world", lattice, "--start", start,
+                                          "--noise", "0")
+        assert status == 0, err
+        assert f"gps {where}" in out.splitlines()
+        assert summary_of(out)["size"] == "4x4"  # 0.5 m cells: the start is a lattice node, not a cell centre

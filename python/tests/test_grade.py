@@ -1,6 +1,7 @@
 """A teacher's grading of a folder of students' grids (python3 -m maze_mapper.grade)."""
 
 import csv
+import os
 import subprocess
 import sys
 
@@ -48,28 +49,87 @@ def test_bad_usage():
     assert status == 2 and err == "error: no .npz or .npy files in worlds\n"
 
 
-def test_a_class_of_controllers_is_one_row_a_student_world_and_start(tmp_path):
-    import os
-    course = os.path.join(os.path.dirname(os.path.abspath(__file__)), "course_shape")
-    drive = os.path.join(course, "WebotsSim", "controllers", "drive", "drive.py")
-    source = open(drive).read().replace("'../../worlds/corners.xml'",
-                                        repr(os.path.join(course, "WebotsSim", "worlds", "corners.xml")))
+COURSE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "course_shape")
+WORLDS = os.path.join(COURSE, "WebotsSim", "worlds")
+
+# Hand-ins: alice drives ahead 1.43 m at 18 rad/s and saves her grid (a wall west of cell (0,0))
+# where her controller runs; bob's controller raises; carol spins in place and steps on past
+# the time limit.
+ALICE = """from controller import Robot
+import math
+import numpy as np
+robot = Robot()
+motors = [robot.getDevice('left motor'), robot.getDevice('right motor')]
+for m in motors:
+    m.setPosition(math.inf)
+    m.setVelocity(18.0)
+for _ in range(55):
+    robot.step(32)
+for m in motors:
+    m.setVelocity(0.0)
+robot.step(32)
+grid = np.zeros((4, 4, 3, 3))
+grid[0, 0, 1, 0] = 1.0
+np.save('grid.npy', grid)
+"""
+CAROL = """from controller import Robot
+import math
+robot = Robot()
+left, right = robot.getDevice('left motor'), robot.getDevice('right motor')
+for m, v in ((left, -3.0), (right, 3.0)):
+    m.setPosition(math.inf)
+    m.setVelocity(v)
+while True:  # never looks at step's -1
+    robot.step(32)
+"""
+
+
+def test_a_class_of_students_runs_over_worlds_and_starts_with_goal_and_map_columns_and_a_table(tmp_path):
+    hand_ins = tmp_path / "class"
+    for student, name, source in (("alice", "lab.py", ALICE), ("bob", "bob.py", "raise RuntimeError('lost')\n"),
+                                  ("carol", "carol.py", CAROL)):
+        (hand_ins / student).mkdir(parents=True)
+        (hand_ins / student / name).write_text(source)
+    (hand_ins / "bob" / "helpers.py").write_text("")
+    maze, arena = os.path.join(WORLDS, "lattice_maze.xml"), os.path.join(REPO, "worlds", "thick_arena.xml")
+    done = subprocess.run([sys.executable, "-m", "maze_mapper.grade", "--controllers", str(hand_ins),
+                           "--world", maze, "--world", arena, "--starts", "2", "--time-limit", "2",
+                           "--csv", str(tmp_path / "runs.csv")],
+                          cwd=REPO, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    rows = list(csv.DictReader(open(tmp_path / "runs.csv")))
+    assert [(r["student"], os.path.basename(r["world"]), r["start"], r["exit"]) for r in rows] == [
+        (s, w, n, e) for s, e in (("alice", "0"), ("bob", "1"), ("carol", "0"))
+        for w in ("lattice_maze.xml", "thick_arena.xml") for n in ("1", "2")]
+    alice = rows[:4]
+    assert [r["goal"] for r in alice] == ["not reached", "reached", "not reached", "not reached"]
+    assert [r["grid"] for r in alice] == ["grid.npy", "grid.npy", "", ""]  # the arena has no lattice to score on
+    assert alice[0]["coverage"] == "0.00%" and alice[0]["wall_accuracy"] != ""  # a bare .npy names no visited cell
+    assert 0.6 < float(alice[1]["final_y"]) < 0.75  # from (0.75, -0.75) into the goal cell (3,3)
+    assert rows[4]["error"] == "RuntimeError: lost"
+    carol = rows[8:]
+    assert {r["end"] for r in carol} == {"simulation ended"} and {r["sim_time_s"] for r in carol} == {"2.016"}
+    lines = done.stdout.splitlines()
+    assert lines[0].split() == ["student", "finished", "goal", "reached", "mean", "time", "coverage", "wall",
+                                "accuracy", "collisions", "first", "failure"]
+    assert lines[1].split()[:4] == ["alice", "4/4", "1/4", "1.8"]
+    assert lines[2].split()[:3] == ["bob", "0/4", "0/4"]
+    assert lines[2].endswith(f"{maze}, start 1: RuntimeError: lost")
+    assert lines[-1] == f"total: 12 runs, 8 finished, 1 reached the goal; rows in {tmp_path / 'runs.csv'}"
+
+
+def test_a_class_on_the_course_s_own_worlds_draws_the_random_start_from_the_seed(tmp_path):
+    drive = os.path.join(COURSE, "WebotsSim", "controllers", "drive", "drive.py")
+    source = open(drive).read().replace("'../../worlds/corners.xml'", repr(os.path.join(WORLDS, "corners.xml")))
     (tmp_path / "class" / "alice").mkdir(parents=True)
     (tmp_path / "class" / "alice" / "lab.py").write_text(source)
-    (tmp_path / "class" / "bob").mkdir()
-    (tmp_path / "class" / "bob" / "bob.py").write_text("from controller import Robot\nraise RuntimeError('lost')\n")
-    (tmp_path / "class" / "bob" / "helpers.py").write_text("")
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.environ.get("PYTHONPATH", ""), course]))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.environ.get("PYTHONPATH", ""), COURSE]))
     done = subprocess.run([sys.executable, "-m", "maze_mapper.grade", "--controllers", str(tmp_path / "class"),
                            "--starts", "2", "--csv", str(tmp_path / "runs.csv")],
                           cwd=REPO, capture_output=True, text=True, timeout=300, env=env)
     assert done.returncode == 0, done.stderr
     rows = list(csv.DictReader(open(tmp_path / "runs.csv")))
     assert [(r["student"], r["world"], r["start"], r["exit"]) for r in rows] == [
-        ("alice", "own", "1", "0"), ("alice", "own", "2", "0"), ("bob", "own", "1", "1"), ("bob", "own", "2", "1")]
+        ("alice", "own", "1", "0"), ("alice", "own", "2", "0")]
     assert rows[0]["end"] == "controller finished" and 1.49 < float(rows[0]["distance_m"]) < 1.52
-    assert rows[0]["collisions"] == "0"
-    assert rows[2]["error"] == "RuntimeError: lost"
-    lines = done.stdout.splitlines()
-    assert lines[0].startswith("alice: 2/2 runs finished, mean 2.0 s simulated")
-    assert lines[1] == "bob: 0/2 runs finished; first failure (own, start 1): RuntimeError: lost"
+    assert {r["goal"] for r in rows} == {"not reached"}  # corners.xml's goal (1.5, 0), as the library read it

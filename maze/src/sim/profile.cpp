@@ -18,15 +18,18 @@ constexpr double kDeg = kPi / 180.0;
 
 // The wheels, motors, encoders, IMU and GPS of FAIRIS-Lite's HamBot (docs/simulator.md, Robots), as
 // biorobaw/FAIRIS-Lite WebotsSim/protos/HamBot/HamBot.proto defines them since the Spring
-// 2026 course update: wheel radius 0.045 m (the wheels' Cylinder), max wheel speed 18 rad/s
-// (RotationalMotor maxVelocity), axle 0.184 m (the wheel joints at +-0.092 m). The body
-// radius is not in the course material: 0.09 m is our choice (the bounding box is
-// 0.15 x 0.14 m).
+// 2026 course update: wheel radius 0.045 m (the wheels' Cylinder), max wheel speed 20 rad/s
+// (both RotationalMotors' maxVelocity), axle 0.184 m (the wheel joints at +-0.092 m). The
+// body radius is not in the course material: 0.09 m is our choice (the bounding box is
+// 0.19 x 0.15 m).
 // The straights a robot drives in one leg (the speed run's, mms's moveForward) ramp: the
 // proto sets no acceleration on its motors (Webots' default, unlimited), while a real
-// robot's wheels speed up at a finite rate. 1 m/s^2 is our choice: its motors' top speed,
-// 18 rad/s x 0.045 m = 0.81 m/s, is then reached in 0.81 s over a third of a 1 m cell, so a
-// move of one cell speeds up and slows down visibly, as the real robot's does.
+// robot's wheels speed up at a finite rate. 1 m/s^2 is our choice: the motors' top speed at
+// the wheel's rim, 20 rad/s x 0.045 m = 0.9 m/s, is then reached in 0.9 s over 0.405 m, under
+// half of a 1 m cell, so a move of one cell speeds up and slows down visibly, as the real
+// robot's does.
+constexpr double kHambotAcceleration_m_s2 = 1.0;
+
 RobotProfile base_robot(std::string name, std::string description) {
   RobotProfile p;
   p.name = std::move(name);
@@ -34,20 +37,29 @@ RobotProfile base_robot(std::string name, std::string description) {
   p.wheel_radius_m = 0.045;
   p.axle_m = 0.184;
   p.body_radius_m = 0.09;
-  p.max_wheel_velocity_rad_s = 18.0;
+  p.max_wheel_velocity_rad_s = 20.0;
   p.left_motor = "left motor";
   p.right_motor = "right motor";
   p.left_encoder = "left wheel encoder";
   p.right_encoder = "right wheel encoder";
   p.imu = "imu";
   p.gps = "gps";
-  p.speed_run = SpeedRunProfile{1.0, 0.81};
+  p.speed_run = SpeedRunProfile{kHambotAcceleration_m_s2, 0.9};  // 20 rad/s x 0.045 m
   return p;
 }
 
 // HamBot's Lidar node this term: 360 beams, fieldOfView 2 pi, near and minRange 0.05,
 // maxRange 12, noise 0.000833, resolution 0.01, type "fixed".
 LidarSpec hambot_lidar() { return {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0, 0.01}; }
+
+// Last year's (2025) RotationalMotors: maxVelocity 18 rad/s.
+constexpr double kHambot2025MaxWheelVelocity_rad_s = 18.0;
+
+// Last year's motors: their top speed bounds the speed run's too.
+void use_2025_motors(RobotProfile &p) {
+  p.max_wheel_velocity_rad_s = kHambot2025MaxWheelVelocity_rad_s;
+  p.speed_run = SpeedRunProfile{kHambotAcceleration_m_s2, 0.81};  // 18 rad/s x 0.045 m
+}
 
 // Last year's (2025) Lidar node: minRange 0.07, maxRange 3, noise 0.000833, no resolution,
 // type "rotating" at defaultFrequency 12 Hz.
@@ -78,6 +90,7 @@ RobotProfile hambot() {
 // tested and last year's results can be reproduced.
 RobotProfile hambot_2025() {
   RobotProfile p = base_robot("hambot-2025", "last year's HamBot: rotating 360-beam lidar (3 m, 12 Hz), IMU, GPS");
+  use_2025_motors(p);
   p.lidars.push_back(hambot_2025_lidar(3.0));
   return p;
 }
@@ -86,6 +99,7 @@ RobotProfile hambot_2025() {
 // views together (a rotating image mixes the poses of a turn over far walls too).
 RobotProfile hambot_12m() {
   RobotProfile p = base_robot("hambot-12m", "hambot-2025 with its rotating lidar reaching 12 m");
+  use_2025_motors(p);
   p.lidars.push_back(hambot_2025_lidar(12.0));
   return p;
 }

@@ -203,7 +203,7 @@ int Simulation::step(int duration_ms) {
       if (history_.size() == history_steps_) history_.erase(history_.begin());
       history_.push_back({steps_, pose_});
     }
-    if (limit_ms > 0 && time_ms_ >= limit_ms) {
+    if (limit_ms > 0 && steps_ * basic >= limit_ms) {  // the run's whole time: a reset leaves it
       ended_ = true;
       return -1;
     }

@@ -73,6 +73,7 @@ void Simulation::reset_world() {
     wheel.velocity_rad_s = 0.0;
     if (std::isfinite(wheel.target_rad)) wheel.target_rad = 0.0;
   }
+  time_ms_ = 0;
 }
 
 double Simulation::cast(double x_m, double y_m, double angle_rad, double max_range_m) const {

@@ -131,7 +131,10 @@ class Simulation {
 
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
+  // Simulated time (Robot::getTime), back to 0 at reset_world().
   std::int64_t time_ms() const { return time_ms_; }
+  // Basic time steps since the simulation began, resets included: what the time limit bounds.
+  std::int64_t steps() const { return steps_; }
   // Lidar beams cast so far, every lidar together: a fixed lidar's whole image each step it
   // is read, a rotating lidar's beams swept since they were last cast (bench/'s unit of work).
   std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
@@ -153,8 +156,11 @@ class Simulation {
   // taken afresh at the new pose. GPS z reads z_m from then on.
   void teleport(const maze::sim::Pose &pose, double z_m);
   double height_m() const { return height_m_; }
-  // Webots' simulationReset, as far as this world goes: the solids added since the start are
-  // gone, the robot stands at its start pose with its wheels at rest; time runs on.
+  // Webots' simulationReset (its Supervisor reference, "Reset from Supervisor"), as far as this
+  // world goes: the solids added since the start are gone, the robot stands at its start pose
+  // with its wheels at rest and its encoders at 0, and the simulated time is back at 0. The
+  // time limit counts every step since the simulation began (steps()), so a controller that
+  // resets still ends there.
   void reset_world();
   // The distance from (x, y) along angle_rad to the first solid, +infinity beyond max_range_m
   // (what a supervisor checks a line of sight with).

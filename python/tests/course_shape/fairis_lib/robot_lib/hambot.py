@@ -2,6 +2,7 @@
 scene's fields read as the course's library reads them, node strings in its format."""
 
 import math
+import types
 import random
 import xml.etree.ElementTree as ET
 
@@ -55,6 +56,9 @@ class HamBot(Supervisor):
         root = ET.parse(maze_file).getroot()
         self.starts = [(float(p.get('x')), float(p.get('y')), float(p.get('theta')))
                        for p in root.find('startPositions').findall('pos')]
+        # The course keeps its world's goals as maze.goal_locations, points with x and y.
+        self.maze = types.SimpleNamespace(goal_locations=[
+            types.SimpleNamespace(x=float(g.get('x')), y=float(g.get('y'))) for g in root.findall('goal')])
         for i, w in enumerate(root.findall('wall')):
             x1, y1, x2, y2 = (float(w.get(k)) for k in ('x1', 'y1', 'x2', 'y2'))
             length = math.dist((x1, y1), (x2, y2))

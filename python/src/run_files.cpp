@@ -1,0 +1,247 @@
+#include "run_files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <span>
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include "app/picture/map_picture.hpp"
+#include "app/report/grid_history.hpp"
+#include "app/report/output_dir.hpp"
+#include "app/report/outputs.hpp"
+#include "app/report/replay.hpp"
+#include "app/report/truth_picture.hpp"
+#include "app/run/evaluation.hpp"
+#include "app/run/report.hpp"
+#include "common/error.hpp"
+#include "mapping/walls.hpp"
+
+namespace maze_mapper_python {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+app::Report report_of(const std::vector<EntryTuple> &entries) {
+  app::Report report;
+  for (const auto &[key, text, json] : entries) {
+    if (text) report.both(key, *text, Json::parse(json));
+    else report.json_only(key, Json::parse(json));
+  }
+  return report;
+}
+
+// The compass point nearest a yaw (0 east, counter-clockwise).
+mapping::Heading heading_of(double yaw_rad) {
+  const long quarter = std::lround(yaw_rad / (std::numbers::pi / 2.0));
+  constexpr mapping::Heading kByQuarter[] = {mapping::Heading::east, mapping::Heading::north, mapping::Heading::west,
+                                            mapping::Heading::south};
+  return kByQuarter[((quarter % 4) + 4) % 4];
+}
+
+// What the pictures of a maze run show: the grid (the controller's, or one never observed),
+// and the cells the robot's centre passed through, in order, with the step and heading of
+// each arrival.
+struct MazeRun {
+  mapping::OccupancyGrid grid;
+  float initial_log_odds = 0.0F;
+  bool kept = false;
+  std::vector<mapping::Cell> path;
+  std::vector<app::GridHistory::Arrival> arrivals;
+};
+
+mapping::GridGeometry maze_geometry(const maze::Maze &truth, int subcells) {
+  return {truth.width(), truth.height(), subcells, truth.cell_size_m(), {truth.origin_x_m(), truth.origin_y_m()}};
+}
+
+// The controller's kept grid on the maze's cells; throws common::InputError when its cells
+// are not the maze's.
+mapping::OccupancyGrid kept_grid(const py::object &grid, const maze::Maze &truth, float initial_log_odds) {
+  const mapping::OccupancyGrid own =
+      py::isinstance<PyGrid>(grid) ? grid.cast<const PyGrid &>().grid : grid_from_array(grid, initial_log_odds);
+  if (own.width() != truth.width() || own.height() != truth.height()) {
+    throw common::InputError(fmt::format("the kept grid is {}x{} cells, the world {}x{}", own.width(), own.height(),
+                                         truth.width(), truth.height()));
+  }
+  mapping::OccupancyGrid placed(maze_geometry(truth, own.k()), initial_log_odds);
+  for (std::size_t i = 0; i < own.size(); ++i) placed.at_index(i) = own.at_index(i);
+  return placed;
+}
+
+MazeRun maze_run(const maze::Maze &truth, const py::object &grid, std::optional<float> initial_log_odds,
+                 const std::vector<PoseTrace::Visit> &visits) {
+  MazeRun run{mapping::OccupancyGrid(maze_geometry(truth, mapping::kMinSubcells), 0.0F), 0.0F, false, {}, {}};
+  if (!grid.is_none()) {
+    run.initial_log_odds = initial_log_odds.value_or(
+        py::isinstance<PyGrid>(grid) ? grid.cast<const PyGrid &>().initial_log_odds() : 0.0F);
+    run.grid = kept_grid(grid, truth, run.initial_log_odds);
+    run.kept = true;
+  }
+  for (const PoseTrace::Visit &v : visits) {
+    const mapping::Cell c{static_cast<int>(std::floor((v.x_m - truth.origin_x_m()) / truth.cell_size_m())),
+                          static_cast<int>(std::floor((v.y_m - truth.origin_y_m()) / truth.cell_size_m()))};
+    if (!run.grid.contains(c) || (!run.path.empty() && run.path.back() == c)) continue;
+    run.path.push_back(c);
+    run.arrivals.push_back({v.step, c, heading_of(v.yaw_rad)});
+  }
+  return run;
+}
+
+std::vector<bool> visited_of(const maze::Maze &truth, const std::vector<mapping::Cell> &path) {
+  std::vector<bool> visited(static_cast<std::size_t>(truth.width()) * static_cast<std::size_t>(truth.height()));
+  for (const mapping::Cell c : path) visited[static_cast<std::size_t>(c.y * truth.width() + c.x)] = true;
+  return visited;
+}
+
+// map.png's tones for a grid whose never-observed value is initial_log_odds (the classroom
+// model's increments).
+app::MapTones tones_of(const MazeRun &run) {
+  app::MapTones tones;
+  tones.initial_log_odds = run.initial_log_odds;
+  return tones;
+}
+
+std::string grid_caption(const MazeRun &run) {
+  return run.kept ? fmt::format("the controller's grid, K {}", run.grid.k()) : std::string("no grid kept");
+}
+
+std::vector<mapping::Cell> goals_of(const maze::Maze &truth) {
+  std::vector<mapping::Cell> goals;
+  for (const maze::Cell g : truth.goals()) goals.push_back({g.x, g.y});
+  return goals;
+}
+
+std::string truth_file(const maze::Maze &truth, const MazeRun &run) {
+  const std::vector<bool> visited = visited_of(truth, run.path);
+  const auto learned = [&run](maze::Cell c, maze::Side s) {
+    return run.kept ? mapping::side_state(run.grid, run.initial_log_odds, {c.x, c.y}, s) : mapping::SideState::unknown;
+  };
+  const app::TruthInput input{&truth, &visited, learned, run.grid.k(), fmt::format("truth: {}", grid_caption(run))};
+  return app::truth_picture(input).encode();
+}
+
+std::optional<app::Replay> replay_page(const maze::World &world, const MazeRun &run, const app::Report &report,
+                                       std::int64_t steps) {
+  app::GridHistory history(run.grid.geometry(), run.initial_log_odds);
+  for (const auto &a : run.arrivals) history.arrived(a.step, a.cell, a.heading);
+  if (run.kept) history.record(steps, run.grid);
+  app::ReplayInput input;
+  input.history = &history;
+  input.tones = tones_of(run);
+  input.goals = goals_of(world.maze);
+  input.landmarks = app::landmark_marks(world.maze);
+  input.title = world.file;
+  input.caption = grid_caption(run);
+  input.steps = steps;
+  const std::vector<bool> reachable = world.maze.reachable_from_start();
+  input.reachable_cells = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), true));
+  input.summary = app::summary_pairs(report);
+  return app::replay_html(input);
+}
+
+// map.png (a kept grid) and truth.png of a maze run.
+void write_maze_pictures(const fs::path &dir, const maze::World &world, const MazeRun &run,
+                         std::vector<std::string> &written) {
+  if (run.kept) {
+    const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(world.maze), {},
+                              app::landmark_marks(world.maze)};
+    common::write_file_atomically((dir / "map.png").string(),
+                                  app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
+    written.emplace_back("map.png");
+  }
+  common::write_file_atomically((dir / "truth.png").string(), truth_file(world.maze, run));
+  written.emplace_back("truth.png");
+}
+
+// replay.html of a maze run, or a warning when even its final map is too large.
+void write_maze_replay(const fs::path &dir, const maze::World &world, const MazeRun &run, const app::Report &report,
+                       std::int64_t steps, std::vector<std::string> &written) {
+  if (const std::optional<app::Replay> replay = replay_page(world, run, report, steps)) {
+    common::write_file_atomically((dir / "replay.html").string(), replay->html);
+    written.emplace_back("replay.html");
+  } else {
+    fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
+               app::kReplayMaxBytes >> 20);
+  }
+}
+
+}  // namespace
+
+PoseTrace::PoseTrace(const std::string &dir) : file_((fs::path(dir) / "trace.csv").string()) {
+  file_.write(std::string(app::pose_trace_columns()) + "\n");
+}
+
+void PoseTrace::record(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
+  if (!visits_.empty() && visits_.back().step == step) return;  // a step that passed no time
+  row_.clear();
+  app::append_pose_trace_values(row_, step, time_s, pose.x_m, pose.y_m, pose.yaw_rad);
+  row_ += '\n';
+  file_.write(row_);
+  visits_.push_back({step, pose.x_m, pose.y_m, pose.yaw_rad});
+}
+
+std::string format_entries(const std::vector<EntryTuple> &entries) { return app::format_summary(report_of(entries)); }
+
+const std::vector<std::string> &RunFiles::names() {
+  static const std::vector<std::string> names{"map.png", "truth.png", "summary.json", "trace.csv", "replay.html"};
+  return names;
+}
+
+RunFiles::RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs)
+    : dir_(std::move(dir)) {
+  app::prepare_output_dir(dir_);
+  std::vector<app::NamedInput> named;
+  for (const auto &[what, path] : inputs) named.push_back({what, path});
+  app::refuse_outputs_over_inputs(dir_, names(), named);
+}
+
+PoseTrace &RunFiles::trace() {
+  if (!trace_) trace_.emplace(dir_);
+  return *trace_;
+}
+
+void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World *maze, const py::object &grid,
+                      std::optional<float> initial_log_odds) {
+  const app::Report report = report_of(entries);
+  const fs::path d(dir_);
+  std::vector<std::string> written;
+  const std::vector<PoseTrace::Visit> none;
+  const std::vector<PoseTrace::Visit> &visits = trace_ ? trace_->visits() : none;
+  // In `run --out`'s order: the pictures, summary.json, trace.csv, replay.html.
+  const std::optional<MazeRun> run =
+      maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze, grid, initial_log_odds, visits)) : std::nullopt;
+  if (run) write_maze_pictures(d, *maze, *run, written);
+  common::write_file_atomically((d / "summary.json").string(), app::report_json(report).dump(2) + "\n");
+  written.emplace_back("summary.json");
+  if (trace_) {
+    trace_->commit();
+    written.emplace_back("trace.csv");
+  }
+  if (run) write_maze_replay(d, *maze, *run, report, visits.empty() ? 0 : visits.back().step, written);
+  app::remove_stale_outputs(dir_, written);
+  fmt::print(stderr, "{}\n", app::wrote_line(dir_, written, written.size(), 0));
+}
+
+void bind_run_files(py::module_ &m) {
+  m.def("format_entries", &format_entries, py::arg("entries"),
+        "The summary block of report entries (key, printed value or None, JSON text), as every run prints it.");
+  py::class_<RunFiles>(m, "RunFiles",
+                       "The files of a Python controller's run (--out DIR): trace.csv as it goes, the rest at its end.")
+      .def(py::init<std::string, const std::vector<std::pair<std::string, std::string>> &>(), py::arg("dir"),
+           py::arg("inputs"))
+      .def(
+          "finish",
+          [](RunFiles &files, const std::vector<EntryTuple> &entries, const py::object &world, const py::object &grid,
+             std::optional<float> initial_log_odds) {
+            const maze::World *maze = py::isinstance<maze::World>(world) ? &world.cast<const maze::World &>() : nullptr;
+            files.finish(entries, maze, grid, initial_log_odds);
+          },
+          py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"));
+}
+
+}  // namespace maze_mapper_python
