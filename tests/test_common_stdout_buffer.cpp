@@ -84,7 +84,7 @@ TEST_CASE("stdout buffer: a full pipe never read ends the process 2 s after a st
   if (child == 0) {
     ::dup2(errors[1], STDERR_FILENO);
     common::simulate_interrupt_for_tests(SIGTERM);
-    common::write_all(ends[1], "held\n", 5, true);
+    common::write_all_interruptible(ends[1], "held\n", 5, true);
     ::_exit(0);  // not reached: the wait ends the process
   }
   ::close(errors[1]);
@@ -106,7 +106,7 @@ TEST_CASE("stdout buffer: without a stop signal, a full pipe's write waits for i
   REQUIRE(::pipe(ends) == 0);
   fill_pipe(ends[1]);
   bool written = false;
-  std::thread writer([&ends, &written] { written = common::write_all(ends[1], "after\n", 6, true); });
+  std::thread writer([&ends, &written] { written = common::write_all_interruptible(ends[1], "after\n", 6, true); });
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the writer waits meanwhile
   std::string got;
   char chunk[4096];

@@ -63,7 +63,7 @@ inline void wait_writable(int fd) {
 
 // Writes all of data[0, size) to `fd`; `may_block`: detail::may_block(fd). False (errno
 // set) when a write fails (ENOSPC, EPIPE with SIGPIPE ignored, ...).
-inline bool write_all(int fd, const char *data, std::size_t size, bool may_block) {
+inline bool write_all_interruptible(int fd, const char *data, std::size_t size, bool may_block) {
   while (size > 0) {
     if (may_block) detail::wait_writable(fd);
     const std::size_t chunk = may_block ? std::min<std::size_t>(size, PIPE_BUF) : size;
@@ -78,8 +78,8 @@ inline bool write_all(int fd, const char *data, std::size_t size, bool may_block
   return true;
 }
 
-// A stream buffer over a file descriptor written with write_all: 64 KiB buffered, flushed at
-// each newline on a terminal (as stdio's line buffering). A failed write makes the stream
+// A stream buffer over a file descriptor written with write_all_interruptible: 64 KiB
+// buffered, flushed at each newline on a terminal (as stdio's line buffering). A failed write makes the stream
 // bad (errno kept for the caller's message).
 class StdoutBuffer final : public std::streambuf {
  public:
@@ -103,7 +103,7 @@ class StdoutBuffer final : public std::streambuf {
     const auto size = static_cast<std::size_t>(count);
     if (size > static_cast<std::size_t>(epptr() - pptr())) {
       if (!flush_buffer()) return 0;
-      if (size >= buffer_.size()) return write_all(fd_, data, size, may_block_) ? count : 0;
+      if (size >= buffer_.size()) return write_all_interruptible(fd_, data, size, may_block_) ? count : 0;
     }
     std::memcpy(pptr(), data, size);
     pbump(static_cast<int>(size));
@@ -119,7 +119,7 @@ class StdoutBuffer final : public std::streambuf {
   bool flush_buffer() {
     const auto size = static_cast<std::size_t>(pptr() - pbase());
     setp(buffer_.data(), buffer_.data() + buffer_.size());
-    return size == 0 || write_all(fd_, buffer_.data(), size, may_block_);
+    return size == 0 || write_all_interruptible(fd_, buffer_.data(), size, may_block_);
   }
 
   int fd_;
