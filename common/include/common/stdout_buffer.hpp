@@ -79,8 +79,8 @@ inline bool write_all_interruptible(int fd, const char *data, std::size_t size, 
 }
 
 // A stream buffer over a file descriptor written with write_all_interruptible: 64 KiB
-// buffered, flushed at each newline on a terminal (as stdio's line buffering). A failed write makes the stream
-// bad (errno kept for the caller's message).
+// buffered, flushed at each newline on a terminal (as stdio's line buffering). A failed
+// write makes the stream bad (errno kept for the caller's message).
 class StdoutBuffer final : public std::streambuf {
  public:
   explicit StdoutBuffer(int fd)
