@@ -12,7 +12,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 cmake --preset fuzz >/dev/null
 targets="text_map num xml room robot_json mms_protocol run_cli"
-# shellcheck disable=SC2086 # one word a target
+# shellcheck disable=SC2046 # one word a target
 cmake --build --preset fuzz --target $(for t in $targets; do printf 'fuzz_%s ' "$t"; done)
 artifacts="$root/build/fuzz/artifacts"
 mkdir -p "$artifacts"

@@ -62,11 +62,12 @@ while [ "$i" -lt "$runs" ]; do
   for f in "$dir"/out/*.png "$dir"/out/snapshots/*.png; do
     [ ! -e "$f" ] || png_whole "$f" || { cut=$((cut + 1)); fault "$f cut"; }
   done
-  for f in $(find "$dir/out" -name '.*.tmp.*' 2>/dev/null); do
-    left=$((left + 1))
-    fault "temporary left: $f"
-    rm -f "$f"
-  done
+  found=$(find "$dir/out" -name '.*.tmp.*' 2>/dev/null)
+  if [ -n "$found" ]; then
+    left=$((left + $(printf '%s\n' "$found" | wc -l)))
+    fault "temporaries left: $found"
+    find "$dir/out" -name '.*.tmp.*' -exec rm -f {} +
+  fi
 done
 echo "soak: $runs runs (seed ${3:-1}): $interrupted interrupted, $finished ended first, $odd other exits; $left temporaries left, $cut outputs cut"
 [ "$((left + cut + odd))" -eq 0 ]
