@@ -42,7 +42,9 @@ void MmsMarks::set_wall(int x, int y, char side, bool on) {
 
 void MmsMarks::apply(const MmsCommand &c) {
   const bool in = inside(c.x, c.y);
-  const std::size_t i = in ? static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(c.x) : 0;
+  // The index only inside: y * width + x of a cell outside may overflow an int.
+  const std::size_t i =
+      in ? static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(c.x) : 0;
   switch (c.verb) {
     case MmsVerb::set_wall:
     case MmsVerb::clear_wall: set_wall(c.x, c.y, c.side, c.verb == MmsVerb::set_wall); break;

@@ -90,7 +90,10 @@ long long whole_number_of(std::string_view flag, const std::string &text) {
 
 double real_number_of(std::string_view flag, const std::string &text) {
   const std::optional<double> x = common::parse_real(text);
-  if (!x) throw common::InputError(fmt::format("{} needs a number (got '{}'{})", flag, text, common::range_note<double>(text)));
+  if (!x) {
+    throw common::InputError(
+        fmt::format("{} needs a number (got '{}'{})", flag, text, common::range_note<double>(text)));
+  }
   return *x;
 }
 
