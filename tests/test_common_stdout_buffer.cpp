@@ -20,7 +20,7 @@
 namespace {
 
 // Fills the pipe whose write end is `fd` until it takes no more.
-void fill_pipe(int fd) {
+void fill_pipe_full(int fd) {
   const int flags = ::fcntl(fd, F_GETFL);
   ::fcntl(fd, F_SETFL, flags | O_NONBLOCK);
   const std::string block(4096, 'x');
@@ -30,7 +30,7 @@ void fill_pipe(int fd) {
 }
 
 // Reads `fd` to its end.
-std::string read_all(int fd) {
+std::string read_to_end(int fd) {
   std::string text;
   char chunk[4096];
   for (;;) {
@@ -65,7 +65,7 @@ TEST_CASE("stdout buffer: a pipe gets every byte in order, small and large write
     }
     ::close(ends[1]);
   });
-  const std::string got = read_all(ends[0]);
+  const std::string got = read_to_end(ends[0]);
   writer.join();
   ::close(ends[0]);
   CHECK(got.size() == expected.size());
@@ -77,7 +77,7 @@ TEST_CASE("stdout buffer: a full pipe never read ends the process 2 s after a st
   REQUIRE(::pipe(ends) == 0);
   int errors[2];
   REQUIRE(::pipe(errors) == 0);
-  fill_pipe(ends[1]);
+  fill_pipe_full(ends[1]);
   const auto started = std::chrono::steady_clock::now();
   const pid_t child = ::fork();
   REQUIRE(child >= 0);
@@ -91,7 +91,7 @@ TEST_CASE("stdout buffer: a full pipe never read ends the process 2 s after a st
   int status = 0;
   REQUIRE(::waitpid(child, &status, 0) == child);
   const double waited_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const std::string said = read_all(errors[0]);
+  const std::string said = read_to_end(errors[0]);
   ::close(errors[0]);
   ::close(ends[0]);
   ::close(ends[1]);
@@ -104,7 +104,7 @@ TEST_CASE("stdout buffer: a full pipe never read ends the process 2 s after a st
 TEST_CASE("stdout buffer: without a stop signal, a full pipe's write waits for its reader and goes on") {
   int ends[2];
   REQUIRE(::pipe(ends) == 0);
-  fill_pipe(ends[1]);
+  fill_pipe_full(ends[1]);
   bool written = false;
   std::thread writer([&ends, &written] { written = common::write_all_interruptible(ends[1], "after\n", 6, true); });
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the writer waits meanwhile
