@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <string>
+#include <vector>
 
 #include "app/mms/mms_marks.hpp"
 #include "app/mms/mms_protocol.hpp"
@@ -121,4 +122,28 @@ TEST_CASE("mms marks: a wall on both sides, text before colour, mms's colour as 
   CHECK(app::render_marks(m, true).find("\x1b[48;2;204;0;0m\x1b[97mr  \x1b[0m") != std::string::npos);
   m.set_wall(0, 0, 'e', false);
   CHECK(m.walls[1] == 0);
+}
+
+TEST_CASE("mms marks: a cell outside the maze is ignored, its neighbour inside too, whatever its number") {
+  app::MmsMarks m(2, 2);
+  const std::vector<unsigned char> none(4, 0);
+  // The west wall of (0,0) is the east wall of (-1,0): mms sets neither, as (-1,0) is outside.
+  m.apply(*parse_mms_line("setWall -1 0 e").command);
+  m.apply(*parse_mms_line("setWall 0 2 s").command);
+  CHECK(m.walls == none);
+  // The largest and smallest ints: no index computed, no neighbour's number overflowed.
+  for (const char *line : {"setWall 2147483647 0 e", "setWall -2147483648 0 w", "setWall 0 2147483647 n",
+                           "setWall 0 -2147483648 s", "setColor 2147483647 2147483647 r", "setText -2147483648 1 x",
+                           "clearColor 2147483647 -2147483648", "clearText 1 2147483647"}) {
+    m.apply(*parse_mms_line(line).command);
+  }
+  CHECK(m.walls == none);
+  CHECK(m.colors == std::vector<char>(4, 0));
+  CHECK(m.texts == std::vector<std::string>(4));
+  m.apply(*parse_mms_line("setWall 1 1 S").command);
+  CHECK(m.walls == std::vector<unsigned char>{0, 1, 0, 4});
+  m.apply(*parse_mms_line("setColor 1 0 g").command);
+  CHECK(m.colors[1] == 'g');
+  m.apply(*parse_mms_line("clearAllColor").command);
+  CHECK(m.colors[1] == 0);
 }

@@ -175,6 +175,14 @@ bool reads_as(const std::string &type_name, const std::string &text) {
   return common::parse_real(text).has_value();
 }
 
+// ", out of range" when `text` is a number of the type's form past its range ("1e999" for a
+// FLOAT: not a finite double; 2^63 for an INT), else "".
+std::string_view range_note_of(const std::string &type_name, const std::string &text) {
+  if (type_name == "INT") return common::range_note<long long>(text);
+  if (type_name == "UINT") return common::range_note<unsigned long long>(text);
+  return common::range_note<double>(text);
+}
+
 }  // namespace
 
 std::vector<std::string> close_names(std::string_view typed, const std::vector<std::string> &names) {
@@ -218,7 +226,9 @@ void check_values_ourselves(CLI::App &command) {
     const std::string number = wanted_number(type);
     option->check(usage_check(name, [type, number](const std::string &value) {
       if (value.empty()) return std::string("must not be empty");
-      if (!number.empty() && !reads_as(type, value)) return fmt::format("needs {} (got '{}')", number, value);
+      if (!number.empty() && !reads_as(type, value)) {
+        return fmt::format("needs {} (got '{}'{})", number, value, range_note_of(type, value));
+      }
       return std::string();
     }));
   }

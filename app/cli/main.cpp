@@ -18,6 +18,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "common/stdout_buffer.hpp"
 
 namespace {
 
@@ -53,6 +54,7 @@ int main(int argc, char **argv) {
   app::CommandContext context;
   app::add_commands(cli, context, argc <= 1 ? std::string_view("run") : std::string_view(argv[1]));
   common::install_signal_handlers();
+  const common::CoutThroughStdoutBuffer cout_through;  // a write a full pipe holds still ends on a signal
 
   std::vector<std::string> words;  // the command line as parsed, for a usage error
   try {

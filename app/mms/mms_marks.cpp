@@ -1,5 +1,8 @@
 #include "app/mms/mms_marks.hpp"
 
+#include <algorithm>
+#include <cstddef>
+
 #include <fmt/format.h>
 
 #include "app/mms/mms_protocol.hpp"
@@ -27,12 +30,41 @@ void MmsMarks::set_wall(int x, int y, char side, bool on) {
     unsigned char &cell = walls[static_cast<std::size_t>(cy * width + cx)];
     cell = on ? static_cast<unsigned char>(cell | bit(s)) : static_cast<unsigned char>(cell & ~bit(s));
   };
+  if (!inside(x, y)) return;  // the neighbour of a cell outside is outside or on the edge: ignored too
   apply(x, y, side);
   switch (side) {
     case 'n': apply(x, y + 1, 's'); break;
     case 'e': apply(x + 1, y, 'w'); break;
     case 's': apply(x, y - 1, 'n'); break;
     default: apply(x - 1, y, 'e'); break;
+  }
+}
+
+void MmsMarks::apply(const MmsCommand &c) {
+  const bool in = inside(c.x, c.y);
+  // The index only inside: y * width + x of a cell outside may overflow an int.
+  const std::size_t i =
+      in ? static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(c.x) : 0;
+  switch (c.verb) {
+    case MmsVerb::set_wall:
+    case MmsVerb::clear_wall: set_wall(c.x, c.y, c.side, c.verb == MmsVerb::set_wall); break;
+    case MmsVerb::set_color:
+      if (in) colors[i] = c.color;
+      break;
+    case MmsVerb::clear_color:
+      if (in) colors[i] = 0;
+      break;
+    case MmsVerb::set_text:
+      if (in) texts[i] = c.text;
+      break;
+    case MmsVerb::clear_text:
+      if (in) texts[i].clear();
+      break;
+    case MmsVerb::clear_all_color: std::fill(colors.begin(), colors.end(), 0); break;
+    case MmsVerb::clear_all_text:
+      for (std::string &t : texts) t.clear();
+      break;
+    default: break;
   }
 }
 

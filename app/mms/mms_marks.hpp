@@ -7,6 +7,8 @@
 
 namespace app {
 
+struct MmsCommand;
+
 // What the algorithm showed on the maze: walls it set, colours, texts (mms's display).
 struct MmsMarks {
   int width = 0;
@@ -17,8 +19,13 @@ struct MmsMarks {
 
   MmsMarks(int w, int h);
   bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
-  // setWall / clearWall: the side and the neighbour's side facing it, as mms does.
+  // setWall / clearWall: the side and the neighbour's side facing it, as mms does. Any x, y
+  // (INT_MIN, INT_MAX too): a cell outside the maze is left alone.
   void set_wall(int x, int y, char side, bool on);
+  // A display command (setWall, clearWall, setColor, clearColor, setText, clearText,
+  // clearAllColor, clearAllText) applied as mms applies it: a cell outside the maze is
+  // ignored. Any other command changes nothing.
+  void apply(const MmsCommand &c);
 };
 
 // The algorithm's marks drawn as a text map (o---o posts and walls, as `show` prints a

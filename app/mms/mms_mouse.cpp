@@ -67,32 +67,7 @@ MmsOutcome MmsMouse::execute(const MmsCommand &c) {
 }
 
 MmsOutcome MmsMouse::mark(const MmsCommand &c) {
-  MmsMarks &m = report_.marks;
-  const auto i = static_cast<std::size_t>(c.y * m.width + c.x);
-  const bool inside = m.inside(c.x, c.y);
-  switch (c.verb) {
-    case MmsVerb::set_wall:
-    case MmsVerb::clear_wall:
-      if (inside) m.set_wall(c.x, c.y, c.side, c.verb == MmsVerb::set_wall);
-      break;
-    case MmsVerb::set_color:
-      if (inside) m.colors[i] = c.color;
-      break;
-    case MmsVerb::clear_color:
-      if (inside) m.colors[i] = 0;
-      break;
-    case MmsVerb::set_text:
-      if (inside) m.texts[i] = c.text;
-      break;
-    case MmsVerb::clear_text:
-      if (inside) m.texts[i].clear();
-      break;
-    case MmsVerb::clear_all_color: std::fill(m.colors.begin(), m.colors.end(), 0); break;
-    case MmsVerb::clear_all_text:
-      for (std::string &t : m.texts) t.clear();
-      break;
-    default: break;
-  }
+  report_.marks.apply(c);
   return {};
 }
 

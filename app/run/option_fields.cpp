@@ -81,13 +81,19 @@ Json cell_or_null(const std::optional<Cell> &c) {
 // trusting it.
 long long whole_number_of(std::string_view flag, const std::string &text) {
   const std::optional<long long> n = common::parse_number<long long>(text);
-  if (!n) throw common::InputError(fmt::format("{} needs a whole number (got '{}')", flag, text));
+  if (!n) {
+    throw common::InputError(
+        fmt::format("{} needs a whole number (got '{}'{})", flag, text, common::range_note<long long>(text)));
+  }
   return *n;
 }
 
 double real_number_of(std::string_view flag, const std::string &text) {
   const std::optional<double> x = common::parse_real(text);
-  if (!x) throw common::InputError(fmt::format("{} needs a number (got '{}')", flag, text));
+  if (!x) {
+    throw common::InputError(
+        fmt::format("{} needs a number (got '{}'{})", flag, text, common::range_note<double>(text)));
+  }
   return *x;
 }
 

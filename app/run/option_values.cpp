@@ -19,7 +19,8 @@ std::vector<double> parse_number_list(std::string_view text, const std::string &
     item = common::trim_blanks(item);
     const std::optional<double> value = common::parse_real(item);  // finite: checked by each option
     if (!value) {
-      throw common::InputError(fmt::format("{} item {} is not a number (got '{}')", option, values.size() + 1, item));
+      throw common::InputError(fmt::format("{} item {} is not a number (got '{}'{})", option, values.size() + 1, item,
+                                           common::range_note<double>(item)));
     }
     values.push_back(*value);
     if (comma == std::string_view::npos) break;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -216,8 +217,10 @@ std::string write_room(const Arena &arena) {
                      metres_text(b[2]), metres_text(b[3]));
     } else {
       const auto l = o.centre_line();
-      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", metres_text(l[0]), metres_text(l[1]),
-                     metres_text(l[2]), metres_text(l[3]), metres_text(l[4]));
+      const double scale_m = std::max({std::abs(l[0]), std::abs(l[1]), std::abs(l[2]), std::abs(l[3])});
+      const auto end = [scale_m](double v) { return metres_text_on_scale(v, scale_m); };
+      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", end(l[0]), end(l[1]), end(l[2]), end(l[3]),
+                     metres_text(l[4]));
     }
   }
   for (const ArenaPose &s : arena.starts) {

@@ -400,6 +400,55 @@ grep -q "^end: " "$dir/got" || fail "the summary was lost"
 png_whole "$dir/out/map.png" || fail "map.png cut"
 no_temporaries
 
+# Waits (at most ~20 s) until process $1 has used the CPU and then none for a second: it
+# waits on something (here: a full pipe).
+wait_idle() {
+  tries=0
+  last=-1
+  still=0
+  while [ "$tries" -lt 400 ]; do
+    ticks=$(awk '{ print $14 + $15 }' "/proc/$1/stat" 2>/dev/null) || return 1
+    if [ "$ticks" = "$last" ] && [ "$ticks" -gt 0 ]; then still=$((still + 1)); else still=0; fi
+    [ "$still" -lt 20 ] || return 0
+    last=$ticks
+    tries=$((tries + 1))
+    sleep 0.05
+  done
+  return 1
+}
+
+# `COMMAND | (sleep 100)`: standard output a pipe its reader has filled and never reads, so
+# every write waits. SIGTERM once the command waits there ends it (else the watchdog's
+# SIGKILL after 60 s): exit 143, said once, no temporary left.
+begin "SIGTERM while standard output waits on a full pipe: run, mms, room, plan, compare, batch exit 143"
+for cmd in run mms room plan compare batch; do
+  rm -f "$dir/stdout"
+  mkfifo "$dir/stdout"
+  exec 3<>"$dir/stdout"  # the reader that never reads
+  dd if=/dev/zero of="$dir/stdout" bs=4096 count=1024 oflag=nonblock 2>/dev/null  # fills the pipe
+  case $cmd in
+    run) "$program" run "$scratch/maze64.txt" --out "$dir/out-run" >"$dir/stdout" 2>"$dir/err" 3<&- & ;;
+    mms) "$program" mms "$scratch/maze64.txt" -- sh -c 'while :; do echo turnLeft; read a; echo moveForward; read a; done' \
+      >"$dir/stdout" 2>"$dir/err" 3<&- & ;;
+    room) "$program" room worlds/ir_room.room --strategy wander --time-limit 100000 --snapshot-steps 1 \
+      >"$dir/stdout" 2>"$dir/err" 3<&- & ;;
+    plan) "$program" plan "$lab" >"$dir/stdout" 2>"$dir/err" 3<&- & ;;
+    compare) "$program" compare "$lab" >"$dir/stdout" 2>"$dir/err" 3<&- & ;;
+    batch) "$program" batch "$lab" --csv "$dir/rows.csv" >"$dir/stdout" 2>"$dir/err" 3<&- & ;;
+  esac
+  pid=$!
+  guard=$(watchdog "$pid" 60)
+  wait_idle "$pid" || fail "$cmd: never waited"
+  kill -TERM "$pid"
+  status=0
+  wait "$pid" || status=$?
+  kill "$guard" 2>/dev/null
+  exec 3<&-
+  [ "$status" = 143 ] || fail "$cmd: exit $status, expected 143"
+  [ "$(grep -c "interrupted by SIGTERM" "$dir/err")" = 1 ] || fail "$cmd: message: $(cat "$dir/err")"
+done
+no_temporaries
+
 # $1 signal name, $2 expected status: an mms program that waits, signalled once it started.
 signal_in_mms() {
   begin "SIG$1 while mms waits on its program: exit $2, said once, the program ended"
@@ -440,34 +489,9 @@ fi
 
 # --- The soak: random runs interrupted at random moments (seeded; ~20 s) -----------------
 
-seed=${MAZE_MAPPER_SOAK_SEED:-1}
-i=0
-while [ "$i" -lt 8 ]; do
-  i=$((i + 1))
-  seed=$(((seed * 1103515245 + 12345) % 2147483648))
-  size=$((8 + seed % 24))
-  delay_ms=$(((seed / 64) % 600))
-  case $(((seed / 8) % 3)) in 0) sig=INT want=130 ;; 1) sig=TERM want=143 ;; *) sig=HUP want=129 ;; esac
-  snapshots=$(((seed / 16) % 4))
-  begin "soak $i: ${size}x${size}, SIG$sig after ${delay_ms} ms"
-  "$program" generate "${size}x${size}" --seed "$seed" -o "$dir/maze.txt" || fail "generate"
-  if [ "$snapshots" -gt 0 ]; then extra="--snapshots $snapshots"; else extra=""; fi
-  # shellcheck disable=SC2086
-  "$program" run "$dir/maze.txt" --out "$dir/out" $extra >/dev/null 2>"$dir/err" &
-  pid=$!
-  sleep "$(printf '%d.%03d' $((delay_ms / 1000)) $((delay_ms % 1000)))"
-  kill -"$sig" "$pid" 2>/dev/null
-  status=0
-  wait "$pid" || status=$?
-  case $status in 0 | 1 | "$want") ;; *) fail "exit $status" ;; esac
-  for f in "$dir"/out/*.csv "$dir"/out/*.json "$dir"/out/*.yaml; do
-    [ ! -e "$f" ] || ends_whole "$f" || fail "$f cut"
-  done
-  for f in "$dir"/out/*.png "$dir"/out/snapshots/*.png; do
-    [ ! -e "$f" ] || png_whole "$f" || fail "$f cut"
-  done
-  no_temporaries
-done
+begin "soak: 8 runs of random mazes, each interrupted at a random moment: outputs whole, no temporary"
+sh "$source_dir/tests/faults/soak.sh" "$program" 8 "${MAZE_MAPPER_SOAK_SEED:-1}" "$dir" >"$dir/soak.log" 2>&1 ||
+  fail "$(cat "$dir/soak.log")"
 
 begin ""
 echo "$((count - 1)) fault and signal cases, $failures failed"

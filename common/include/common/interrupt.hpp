@@ -60,10 +60,10 @@ inline void write_stderr(const char *text) {
   (void)ignored;
 }
 
-extern "C" inline void on_stop_signal(int signal_number) {
-  int none = 0;
-  g_signal.compare_exchange_strong(none, signal_number);
-  if (g_stop_work_depth.load() > 0) return;
+// Removes every registered temporary, says why on standard error and exits with 128 + the
+// signal: the handler's default, and what a wait that cannot end on its own does once a stop
+// signal is recorded (common/stdout_buffer.hpp). Async-signal-safe.
+[[noreturn]] inline void end_process_for(int signal_number) {
   bool removed = false;
   for (TemporarySlot &slot : g_temporaries) {
     if (slot.state.load() == 2 && ::unlink(slot.path.data()) == 0) removed = true;
@@ -74,13 +74,21 @@ extern "C" inline void on_stop_signal(int signal_number) {
   ::_exit(128 + signal_number);
 }
 
+extern "C" inline void on_stop_signal(int signal_number) {
+  int none = 0;
+  g_signal.compare_exchange_strong(none, signal_number);
+  if (g_stop_work_depth.load() > 0) return;
+  end_process_for(signal_number);
+}
+
 }  // namespace detail
 
 // The signals that stop the program.
 inline constexpr std::array<int, 3> kStopSignals{SIGINT, SIGTERM, SIGHUP};
 
 // Installs the handler above for the three signals, with SA_RESTART (a write to standard
-// output that a recorded signal interrupts goes on). Once, at the start of main.
+// output that a recorded signal interrupts goes on; common/stdout_buffer.hpp bounds how long
+// it may then wait on a reader). Once, at the start of main.
 inline void install_signal_handlers() {
   struct sigaction action {};
   action.sa_handler = detail::on_stop_signal;
@@ -101,6 +109,10 @@ inline std::string interrupt_name() {
   const int s = interrupt_signal();
   return s == SIGINT || s == 0 ? "Ctrl-C" : detail::signal_word(s);
 }
+// Ends the process for the recorded stop signal as the handler does when no work polls
+// (temporaries removed, one `error: interrupted by SIGTERM` line, exit 128 + the signal).
+// Only once a signal is recorded: for a wait that would otherwise never end.
+[[noreturn]] inline void end_process_for_recorded_signal() { detail::end_process_for(interrupted_exit_status() - 128); }
 // Forgets a recorded signal (tests only).
 inline void clear_interrupt_for_tests() { detail::g_signal.store(0); }
 // Records `signal_number` as if it had arrived while work polls (tests only).

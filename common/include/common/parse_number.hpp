@@ -40,6 +40,24 @@ std::optional<Number> parse_number(std::string_view text) {
 // The same rule for a double, but "inf", "-inf" and "nan" read as themselves.
 inline std::optional<double> parse_real(std::string_view text) { return detail::parse_whole_text<double>(text); }
 
+// Whether `text` has the form of a Number but lies past its range: "1e999" or "1e-999" for a
+// double (what strtod would turn into inf or 0), 2^63 for a long long. A reader says "out of
+// range" for it rather than "not a number".
+template <typename Number>
+bool out_of_range(std::string_view text) {
+  Number value{};
+  const char *end = text.data() + text.size();
+  const auto [at, ec] = std::from_chars(text.data(), end, value);
+  return !text.empty() && ec == std::errc::result_out_of_range && at == end;
+}
+
+// How a reader names what it wanted when `text` is no Number: "a number" becomes
+// "a number (got '1e999', out of range)" or "a number (got 'abc')".
+template <typename Number>
+std::string_view range_note(std::string_view text) {
+  return out_of_range<Number>(text) ? ", out of range" : "";
+}
+
 // Spaces and tabs at both ends removed.
 inline std::string_view trim_blanks(std::string_view text) {
   const std::size_t first = text.find_first_not_of(" \t");

@@ -42,8 +42,9 @@ Arena read_room(std::string_view text, const std::string &file);
 
 // The canonical room file: name, boundary, each obstacle (`rect` when axis-aligned, else
 // `wall` along its long axis with its width), starts, goals; lengths to 12 significant digits
-// (the last bits of sums and halves left out), yaws in the fewest degrees' digits that read
-// back exactly. Read back: the same arena.
+// (the last bits of sums and halves left out), a wall's ends to the 12th digit of its largest
+// coordinate (an end at 0 is written 0, not 1.9e-15), yaws in the fewest degrees' digits that
+// read back exactly. Read back: the same arena, which writes the same text again.
 std::string write_room(const Arena &arena);
 
 }  // namespace maze
