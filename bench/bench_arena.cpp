@@ -14,7 +14,7 @@
 #include <webots/Robot.hpp>
 
 #include "common/random.hpp"
-#include "maze/arena_generator.hpp"
+#include "maze/generate/arena_generator.hpp"
 #include "maze/sim/arena_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"

@@ -35,7 +35,7 @@
 
 #include "app/run/run.hpp"
 #include "app/run/run_options.hpp"
-#include "maze/generator.hpp"
+#include "maze/generate/generator.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"

@@ -14,7 +14,7 @@
 #include <webots/Robot.hpp>
 
 #include "common/random.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_world.hpp"
-#include "maze/num_format.hpp"
+#include "maze/formats/num_format.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   return fuzz::read_world_bytes(data, size, maze::read_num, maze::write_num);

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_world.hpp"
-#include "maze/text_map.hpp"
+#include "maze/formats/text_map.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   return fuzz::read_world_bytes(data, size, maze::read_text_map, maze::write_text_map);

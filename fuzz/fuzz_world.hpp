@@ -11,8 +11,8 @@
 #include <string_view>
 
 #include "common/error.hpp"
-#include "maze/maze.hpp"
-#include "maze/world.hpp"
+#include "maze/world/maze.hpp"
+#include "maze/world/world.hpp"
 
 namespace fuzz {
 

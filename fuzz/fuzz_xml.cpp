@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "fuzz_world.hpp"
-#include "maze/xml_format.hpp"
+#include "maze/formats/xml_format.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   return fuzz::read_world_bytes(

@@ -16,7 +16,7 @@
 #include "app/run/run.hpp"
 #include "app/run/step_limit.hpp"
 #include "common/error.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 #include "cli_runner.hpp"
 #include "test_values.hpp"
 

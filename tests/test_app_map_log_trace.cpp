@@ -16,7 +16,7 @@
 #include "png_reader.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/run/run.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "app/cli/option_binding.hpp"
 #include "app/run/run.hpp"
 #include "common/error.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 #include "robot/controller_args.hpp"
 
 namespace {

@@ -15,9 +15,9 @@
 
 #include "app/room/room_run.hpp"
 #include "common/error.hpp"
-#include "maze/arena.hpp"
-#include "maze/arena_generator.hpp"
-#include "maze/arena_world.hpp"
+#include "maze/world/arena.hpp"
+#include "maze/generate/arena_generator.hpp"
+#include "maze/world/arena_world.hpp"
 #include "maze/sim/profile.hpp"
 #include "sensing/pie_demo.hpp"
 

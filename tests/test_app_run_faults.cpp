@@ -14,7 +14,7 @@
 
 #include "app/run/run.hpp"
 #include "trust.hpp"
-#include "maze/generator.hpp"
+#include "maze/generate/generator.hpp"
 
 namespace {
 

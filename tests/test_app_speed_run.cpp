@@ -12,8 +12,8 @@
 
 #include "true_shortest.hpp"
 #include "app/run/run.hpp"
-#include "maze/generator.hpp"
-#include "maze/maze.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/world/maze.hpp"
 
 namespace {
 

@@ -16,9 +16,9 @@
 #include "app/run/run.hpp"
 #include "app/report/webots_export.hpp"
 #include "maze/sim/simulation.hpp"
-#include "maze/text_map.hpp"
-#include "maze/wbt_format.hpp"
-#include "maze/world.hpp"
+#include "maze/formats/text_map.hpp"
+#include "maze/formats/wbt_format.hpp"
+#include "maze/world/world.hpp"
 #include "robot/console_main.hpp"
 #include "robot/controller_args.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "common/error.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
 #include "mapping/walls.hpp"

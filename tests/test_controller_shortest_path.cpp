@@ -11,8 +11,8 @@
 #include "true_shortest.hpp"
 #include "explore/shortest_path.hpp"
 #include "explore/strategies.hpp"
-#include "maze/generator.hpp"
-#include "maze/maze.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/world/maze.hpp"
 #include "synthetic_world.hpp"
 
 using explore::ShortestPathProof;

@@ -11,8 +11,8 @@
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
 #include "mapping/walls.hpp"
-#include "maze/generator.hpp"
-#include "maze/maze.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/world/maze.hpp"
 #include "plan/wavefront.hpp"
 
 namespace {

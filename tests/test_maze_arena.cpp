@@ -10,13 +10,13 @@
 #include <variant>
 
 #include "common/error.hpp"
-#include "maze/arena.hpp"
-#include "maze/arena_generator.hpp"
-#include "maze/arena_truth.hpp"
-#include "maze/arena_world.hpp"
-#include "maze/room_format.hpp"
-#include "maze/world.hpp"
-#include "maze/xml_arena.hpp"
+#include "maze/world/arena.hpp"
+#include "maze/generate/arena_generator.hpp"
+#include "maze/world/arena_truth.hpp"
+#include "maze/world/arena_world.hpp"
+#include "maze/formats/room_format.hpp"
+#include "maze/world/world.hpp"
+#include "maze/formats/xml_arena.hpp"
 #include "test_values.hpp"
 
 namespace {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "maze/text_map.hpp"
-#include "maze/world.hpp"
-#include "maze/xml_format.hpp"
+#include "maze/formats/text_map.hpp"
+#include "maze/world/world.hpp"
+#include "maze/formats/xml_format.hpp"
 #include "test_values.hpp"
 
 namespace {

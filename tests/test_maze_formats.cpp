@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "maze/generator.hpp"
-#include "maze/num_format.hpp"
-#include "maze/text_map.hpp"
-#include "maze/wbt_format.hpp"
-#include "maze/world.hpp"
-#include "maze/xml_arena.hpp"
-#include "maze/xml_format.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/formats/num_format.hpp"
+#include "maze/formats/text_map.hpp"
+#include "maze/formats/wbt_format.hpp"
+#include "maze/world/world.hpp"
+#include "maze/formats/xml_arena.hpp"
+#include "maze/formats/xml_format.hpp"
 
 namespace {
 

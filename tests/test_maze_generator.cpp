@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "maze/generator.hpp"
-#include "maze/text_map.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/formats/text_map.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 namespace {
 

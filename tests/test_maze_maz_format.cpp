@@ -6,8 +6,8 @@
 #include <string>
 
 #include "common/error.hpp"
-#include "maze/maz_format.hpp"
-#include "maze/world.hpp"
+#include "maze/formats/maz_format.hpp"
+#include "maze/world/world.hpp"
 
 namespace {
 

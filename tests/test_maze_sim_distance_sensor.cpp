@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "common/random.hpp"
-#include "maze/generator.hpp"
-#include "maze/maze.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/wall_grid.hpp"

@@ -16,7 +16,7 @@
 #include <webots/TouchSensor.hpp>
 
 #include "common/error.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/simulation.hpp"
 
 namespace {

@@ -10,7 +10,7 @@
 #include <webots/Lidar.hpp>
 #include <webots/Robot.hpp>
 
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/scan.hpp"
 #include "maze/sim/sensors.hpp"

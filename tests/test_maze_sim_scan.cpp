@@ -10,7 +10,7 @@
 #include <webots/Robot.hpp>
 
 #include "common/error.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/scan.hpp"
 #include "maze/sim/simulation.hpp"
 

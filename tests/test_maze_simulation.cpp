@@ -18,7 +18,7 @@
 #include <webots/TouchSensor.hpp>
 
 #include "common/error.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
 #include "test_values.hpp"

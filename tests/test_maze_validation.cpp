@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "maze/validate.hpp"
-#include "maze/world.hpp"
+#include "maze/world/validate.hpp"
+#include "maze/world/world.hpp"
 #include "test_values.hpp"
 
 namespace {

@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "common/random.hpp"
-#include "maze/generator.hpp"
-#include "maze/maze.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/wall_grid.hpp"
 #include "test_values.hpp"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 
 inline constexpr double kPi = std::numbers::pi;
 inline constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 
 namespace test_maze {
 

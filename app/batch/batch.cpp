@@ -1,5 +1,3 @@
-#include "common/csv.hpp"
-#include "app/report/files_recorder.hpp"
 #include "app/batch/batch.hpp"
 
 #include <algorithm>
@@ -14,11 +12,12 @@
 
 #include <fmt/format.h>
 
+#include "app/report/files_recorder.hpp"
+#include "common/csv.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
-#include "maze/arena_world.hpp"
-#include "maze/world.hpp"
-#include "maze/xml_arena.hpp"
+#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 
 namespace app {
 namespace {
@@ -54,10 +53,9 @@ Content content_of(const fs::path &path) {
   } catch (const common::InputError &) {
     return Content::none;
   }
-  if (format == maze::Format::room) return Content::arena;
-  if (format != maze::Format::xml) return Content::maze;
   try {
-    return maze::xml_world_is_arena(maze::read_file(path.string()), path.string(), {}) ? Content::arena : Content::maze;
+    const std::string text = format == maze::Format::xml ? maze::read_file(path.string()) : head;  // XML: the whole
+    return maze::holds_arena(text, format, path.string()) ? Content::arena : Content::maze;
   } catch (const common::InputError &) {
     return Content::maze;
   }

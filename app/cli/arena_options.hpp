@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "maze/arena_world.hpp"
+#include "maze/world/arena_world.hpp"
 
 namespace app {
 

@@ -13,7 +13,7 @@
 #include "app/run/option_values.hpp"  // parse_number_list(), parse_pose()
 #include "app/run/terminal.hpp"       // ColorChoice
 #include "mapping/grid_types.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 namespace app {
 

@@ -21,7 +21,7 @@
 #include "app/cli/commands.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 namespace app {
 namespace {

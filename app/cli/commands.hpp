@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 // CLI11 is header-only and its code is generated again in every file that includes it (about
 // 10 s a file under the sanitizer build): this header names its App only, so the files that

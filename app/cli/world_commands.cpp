@@ -18,11 +18,11 @@
 #include "app/run/shipped_worlds.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "maze/arena_text.hpp"
-#include "maze/generator.hpp"
-#include "maze/text_map.hpp"
-#include "maze/world.hpp"
-#include "maze/xml_format.hpp"
+#include "maze/formats/arena_text.hpp"
+#include "maze/generate/generator.hpp"
+#include "maze/formats/text_map.hpp"
+#include "maze/world/world.hpp"
+#include "maze/formats/xml_format.hpp"
 
 namespace app {
 

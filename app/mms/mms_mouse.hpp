@@ -25,7 +25,7 @@
 #include <string>
 
 #include "app/mms/mms_session.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "robot/command_controller.hpp"
 
 namespace app {

@@ -26,7 +26,7 @@
 #include "mapping/walls.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 #include "render/ascii_map.hpp"
 #include "robot/command_controller.hpp"
 #include "robot/progress_printer.hpp"

@@ -23,7 +23,7 @@
 #include "app/mms/mms_marks.hpp"
 #include "app/mms/mms_protocol.hpp"
 #include "app/run/run.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 
 namespace app {
 

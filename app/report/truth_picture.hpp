@@ -26,7 +26,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/picture/map_picture.hpp"
 #include "app/picture/drawing.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 
 namespace app {
 

@@ -1,7 +1,7 @@
 #include "app/report/webots_export.hpp"
 
 #include "app/run/run.hpp"
-#include "maze/wbt_format.hpp"
+#include "maze/formats/wbt_format.hpp"
 #include "robot/controller_args.hpp"
 
 namespace app {

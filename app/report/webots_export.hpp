@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 
 namespace app {

@@ -23,7 +23,7 @@
 
 #include "app/picture/drawing.hpp"
 #include "app/picture/map_picture.hpp"
-#include "maze/arena_truth.hpp"
+#include "maze/world/arena_truth.hpp"
 #include "mapping/grid_types.hpp"
 #include "robot/metric_controller.hpp"
 #include "sensing/metric_map.hpp"

@@ -27,10 +27,10 @@
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "maze/sim/profile.hpp"
-#include "maze/arena.hpp"
-#include "maze/arena_truth.hpp"
-#include "maze/arena_world.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/arena.hpp"
+#include "maze/world/arena_truth.hpp"
+#include "maze/world/arena_world.hpp"
+#include "maze/world/maze.hpp"
 #include "plan/metric_wavefront.hpp"
 
 namespace app {

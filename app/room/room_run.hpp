@@ -21,8 +21,8 @@
 
 #include "app/run/report.hpp"
 #include "mapping/sensor_model.hpp"
-#include "maze/arena.hpp"
-#include "maze/arena_world.hpp"
+#include "maze/world/arena.hpp"
+#include "maze/world/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/metric_controller.hpp"
 #include "sensing/log_map.hpp"

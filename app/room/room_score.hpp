@@ -5,7 +5,7 @@
 #include <cstddef>
 
 #include "app/room/room_run.hpp"
-#include "maze/arena_truth.hpp"
+#include "maze/world/arena_truth.hpp"
 #include "sensing/metric_map.hpp"
 
 namespace app {

@@ -15,7 +15,7 @@
 
 #include "explore/visits.hpp"
 #include "mapping/walls.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 
 namespace app {
 

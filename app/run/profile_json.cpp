@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 namespace app {
 namespace {

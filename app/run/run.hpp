@@ -17,7 +17,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/run/run_options.hpp"
 #include "app/run/run_recorder.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "robot/cell_controller.hpp"
 

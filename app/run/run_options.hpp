@@ -21,7 +21,7 @@
 #include "sensing/range_models.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/sim/simulation.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 #include "plan/wavefront.hpp"
 
 namespace app {

@@ -11,7 +11,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/run/run_options.hpp"
 #include "mapping/sensor_model.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/sensors.hpp"
 #include "robot/cell_controller.hpp"
 #include "robot/options.hpp"

@@ -15,7 +15,7 @@
 #include "bindings.hpp"
 #include "common/atomic_file.hpp"
 #include "maze/sim/sensors.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 
 namespace maze_mapper_python {
 

@@ -27,11 +27,11 @@
 #include "run_files.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "maze/arena.hpp"
-#include "maze/arena_world.hpp"
+#include "maze/world/arena.hpp"
+#include "maze/world/arena_world.hpp"
 #include "maze/sim/simulation.hpp"
-#include "maze/world.hpp"
-#include "maze/xml_arena.hpp"
+#include "maze/world/world.hpp"
+#include "maze/formats/xml_arena.hpp"
 
 namespace maze_mapper_python {
 

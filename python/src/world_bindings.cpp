@@ -16,7 +16,7 @@
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "mapping/walls.hpp"
-#include "maze/world.hpp"
+#include "maze/world/world.hpp"
 #include "robot/cell_controller.hpp"
 
 namespace maze_mapper_python {

@@ -21,7 +21,7 @@
 #include <optional>
 #include <vector>
 
-#include "maze/arena.hpp"
+#include "maze/world/arena.hpp"
 #include "maze/sim/wall_grid.hpp"
 
 namespace maze::sim {

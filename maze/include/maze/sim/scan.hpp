@@ -7,7 +7,7 @@
 #include <string>
 
 #include "common/random.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 

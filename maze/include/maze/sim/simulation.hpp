@@ -34,8 +34,8 @@
 #include <vector>
 
 #include "common/random.hpp"
-#include "maze/arena.hpp"
-#include "maze/maze.hpp"
+#include "maze/world/arena.hpp"
+#include "maze/world/maze.hpp"
 #include "maze/sim/arena_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/lidar_sweep.hpp"

@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-#include "maze/maze.hpp"
+#include "maze/world/maze.hpp"
 
 namespace maze::sim {
 
