@@ -250,9 +250,13 @@ bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geome
 
 std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
   ReplayInput input;
-  input.history = files.history;
+  add_history(input, *files.history, summary.steps);
   input.tones = map_tones(options, *files.model);
-  input.goals = files.goals;
+  const mapping::GridGeometry &g = input.grid;
+  for (const mapping::Cell c : files.goals) {
+    input.goals.push_back({g.origin.x_m + (c.x + 0.5) * g.cell_size_m, g.origin.y_m + (c.y + 0.5) * g.cell_size_m});
+  }
+  input.goal_side_m = 0.75 * g.cell_size_m;
   input.landmarks = files.landmarks;
   input.title = options.world;
   input.caption = map_caption(options);
