@@ -135,3 +135,18 @@ TEST_CASE("room --out: replay.html in metres, a frame at the start and a step on
   CHECK(free_value < 0);
   CHECK(free_value % 2 == 0);
 }
+
+TEST_CASE("room --out: map.png, truth.png and wave.png are one size") {
+  const test_cli::TempDir dir("room_pictures_same_size");
+  const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
+  REQUIRE(test_cli::run({"room", world, "--strategy", "wavefront", "--goal", "4.7,2.7", "--snapshot-steps", "50",
+                         "--quiet", "--out", dir.path.string()})
+              .status == 0);
+  const test_png::Png map = test_png::read_png(test_png::read_all(dir.path / "map.png"));
+  for (const char *name : {"truth.png", "wave.png", "snapshots/step50.png", "snapshots/step50_wave.png"}) {
+    const test_png::Png other = test_png::read_png(test_png::read_all(dir.path / name));
+    CAPTURE(name);
+    CHECK(other.width == map.width);
+    CHECK(other.height == map.height);
+  }
+}

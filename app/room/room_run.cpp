@@ -219,7 +219,7 @@ class RoomLog {
   void draw(const robot::RoomController &c, const std::string &map, const std::string &wave) {
     if (options_.out_dir.empty()) return;
     RoomPictureMarks marks = marks_;
-    marks.caption += fmt::format(", step {}, {:.1f} s", c.steps(), c.time_s());
+    marks.when = fmt::format("step {}, {:.1f} s", c.steps(), c.time_s());
     pictures_.push_back({map + ".png", room_map_picture(c, tones_, marks)});
     if (options_.room.strategy == robot::RoomStrategy::wavefront && !c.wave().empty()) {
       pictures_.push_back({wave + ".png", room_wave_picture(c, marks)});
