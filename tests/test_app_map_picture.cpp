@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -116,11 +117,13 @@ TEST_CASE("map.png, every model: each sub-cell's tone is map.pgm's class; start,
     CHECK(walls > 20);
     CHECK(png.at(left + 51, top + 10 * 34 + 17) == rgb(app::kStartColour));  // cell (0,0)
     CHECK(near(png.at(left + 3 * 102 + 15, top + 30), app::kGoalColour));    // the left of the frame in goal (3,3)
-    // The scale bar: 1 m = one cell = 102 px, from the legend's left padding (the font size).
-    const int x0 = 14;
+    // The scale bar: 1 m = one cell = 102 px, as many metres as a third of the page holds,
+    // from the legend's left padding (the font size).
+    const int x0 = static_cast<int>(app::layout_figure(app::map_figure(g, app::MapTones{}, {}, "")).font_px);
+    const int length = static_cast<int>(std::lround(app::scale_bar_length_m(102.0, png.width / 3.0) * 102.0));
     bool bar = false;
     for (int y = top + 408; y < png.height && !bar; ++y) {
-      bar = png.at(x0 + 1, y)[0] < 50 && png.at(x0 + 100, y)[0] < 50 && png.at(x0 + 104, y)[0] > 200 &&
+      bar = png.at(x0 + 1, y)[0] < 50 && png.at(x0 + length - 2, y)[0] < 50 && png.at(x0 + length + 2, y)[0] > 200 &&
             png.at(x0 + 50, y)[0] < 50;
     }
     CHECK(bar);

@@ -60,6 +60,7 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   grid.cells_x = 50;
   grid.cells_y = 30;
   grid.cell_w_m = grid.cell_h_m = 0.1;
+  grid.axes_in_metres = true;
   const app::PlainGridFrame frame = app::plain_grid_frame(grid, app::Figure{});
   REQUIRE(frame.cell_w_px == 12);
   const auto centre = [&frame](double x_m, double y_m) {
@@ -85,7 +86,7 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   CHECK(has_colour(map, app::kPathColour));
   CHECK(has_colour(wave, app::kGoalColour));
 
-  // truth.png: the shelf occupied and mapped so (near-black); the partition never observed.
+  // truth.png: the shelf occupied and mapped occupied (near-black); the partition never observed.
   const test_png::Png truth = test_png::read_png(test_png::read_all(dir.path / "truth.png"));
   CHECK(truth.at(shelf[0], shelf[1]) == std::vector<int>{25, 25, 25});
   CHECK(truth.at(partition[0], partition[1]) == rgb(app::kUnknownTone));

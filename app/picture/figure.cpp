@@ -277,11 +277,16 @@ double natural_height(const Figure &fig, double f, double width) {
 }  // namespace
 
 PageFrame shared_page(const std::vector<Figure> &figures) {
+  int map_h = 0;
   int map_side = 0;
-  for (const Figure &fig : figures) map_side = std::max({map_side, fig.map_w_px, fig.map_h_px});
-  // From a 24th of the map's longer side (a legend of up to 16 font sizes' height then keeps
-  // the text a 40th of the page) up, until the text is a 40th of the page's height.
-  for (double f = std::round(std::max(14.0, map_side / 24.0));; f += 1.0) {
+  for (const Figure &fig : figures) {
+    map_h = std::max(map_h, fig.map_h_px);
+    map_side = std::max({map_side, fig.map_w_px, fig.map_h_px});
+  }
+  // From an 18th of the map's height (a legend up to 22 font sizes tall then keeps the text a
+  // 40th of the page, so the font, and with it the map's place, depends on the map alone) and
+  // a 45th of its longer side, up until the text is a 40th of the page's height.
+  for (double f = std::round(std::max({14.0, map_h / 18.0, map_side / 45.0}));; f += 1.0) {
     PageFrame page{f, 0, 0};
     for (const Figure &fig : figures) page.width = std::max(page.width, static_cast<int>(natural_width(fig, f)));
     for (const Figure &fig : figures) {

@@ -99,7 +99,9 @@ struct PageFrame {
 };
 
 // The smallest page that holds each of `figures` (which must share their map area's size
-// and axes) in one font, that font at least 14 px and a 40th of the page's height.
+// and axes) in one font, that font at least 14 px and a 40th of the page's height: an 18th
+// of the map's height (and a 45th of its longer side) for a legend up to 22 font sizes tall,
+// larger for a taller one.
 PageFrame shared_page(const std::vector<Figure> &figures);
 
 // The figure on its own page (shared_page of it alone), or on `page` (made larger where the
