@@ -3,39 +3,40 @@
 # root; a virtual time budget for the page's script) loads it from the file, and the test
 # fails on a JavaScript error (the page's window.onerror writes data-js-error on <body>), on
 # a script that did not finish (data-replay-ready on <body> is set after the last frame is
-# drawn), on a DOM without the slider, the K x K matrix or the summary, on a page that loads
-# anything from elsewhere, and on a blank screenshot (png_spread). #frame=0 seeks back to the
-# start (the path that redraws from nothing).
+# drawn), on a DOM without the slider, the K x K matrix or the summary, on a page that does
+# not open at the start, on a page that loads anything from elsewhere, on a status line or key
+# help cut in a 1024 x 768 or a 1920 x 1080 window, and on a blank screenshot (png_spread).
+# #frame=N then #frame=0 seeks on and back (the path that redraws from nothing).
 # Skips (exit 77) when chromium is not installed, unless MAZE_MAPPER_REQUIRE_CHROMIUM is set
 # (.ci/run sets it): then a missing chromium fails.
-# Usage: replay_chromium.sh MAZE_MAPPER PNG_SPREAD WORLD [SCREENSHOT_COPY]
+# SCREENSHOT_DIR, when set, receives the screenshots (maze-1024x768.png, maze-1920x1080.png).
+# Usage: replay_chromium.sh MAZE_MAPPER PNG_SPREAD WORLD
 set -eu
 program=$1
 png_spread=$2
 world=$3
-copy=${4:-}
 
 . "$(dirname "$0")/chromium_page.sh"
 
 "$program" run "$world" --quiet --no-trace --out "$dir/out" > "$dir/run.out" || fail "the run failed"
 page="$dir/out/replay.html"
 self_contained "$page"
-load_page "file://$page" "at the end"
+load_page "file://$page" "at the start"
 grep -q '<button id="play"' "$dir/dom.html" || fail "no play button"
 coverage=$(sed -n 's/^coverage: //p' "$dir/run.out")
 grep -q "<dd id=\"summary-coverage\">$coverage</dd>" "$dir/dom.html" || fail "no summary coverage $coverage"
 grep -q '<dd id="summary-wall_accuracy">' "$dir/dom.html" || fail "no summary wall_accuracy"
 grep -q '<td class="occupied">+' "$dir/dom.html" || fail "no K x K matrix with an occupied sub-cell"
 moves=$(sed -n 's/^moves: //p' "$dir/run.out")
-grep -q "move $moves/$moves " "$dir/dom.html" || fail "the last frame is not move $moves/$moves"
+grep -q "move 0/$moves " "$dir/dom.html" || fail "the page does not open at move 0/$moves"
 
-load_page "file://$page#frame=0" "at #frame=0"
-grep -q "move 0/$moves " "$dir/dom.html" || fail "#frame=0 does not show move 0/$moves"
+load_page "file://$page#frame=$moves" "at #frame=$moves"
+grep -q "move $moves/$moves " "$dir/dom.html" || fail "#frame=$moves does not show move $moves/$moves"
+load_page "file://$page#frame=$moves&key=Home" "at #frame=$moves, then Home"
+grep -q "move 0/$moves " "$dir/dom.html" || fail "Home from the end does not show move 0/$moves"
 
-browser --window-size=1100,800 --hide-scrollbars --screenshot="$dir/shot.png" "file://$page" > /dev/null ||
-  fail "chromium --screenshot failed"
-"$png_spread" "$dir/shot.png" || fail "blank screenshot"
-[ -n "$copy" ] && cp "$dir/shot.png" "$copy"
+fits_window 1024x768 maze
+fits_window 1920x1080 maze
 # A 64 x 64 run in a 1280 x 900 window: the map fills the stage, the controls step and zoom
 # (clicked through #do=, pressed through #key=), and the panel shows the run at that move.
 "$program" generate 64x64 -o "$dir/m64.txt"

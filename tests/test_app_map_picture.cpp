@@ -6,9 +6,11 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/report/files_recorder.hpp"
@@ -16,6 +18,7 @@
 #include "app/report/outputs.hpp"
 #include "app/picture/drawing.hpp"
 #include "app/picture/figure.hpp"
+#include "app/picture/plain_grid_picture.hpp"
 #include "app/run/run.hpp"
 #include "png_reader.hpp"
 
@@ -114,11 +117,13 @@ TEST_CASE("map.png, every model: each sub-cell's tone is map.pgm's class; start,
     CHECK(walls > 20);
     CHECK(png.at(left + 51, top + 10 * 34 + 17) == rgb(app::kStartColour));  // cell (0,0)
     CHECK(near(png.at(left + 3 * 102 + 15, top + 30), app::kGoalColour));    // the left of the frame in goal (3,3)
-    // The scale bar: 1 m = one cell = 102 px, from the legend's left padding (the font size).
-    const int x0 = 14;
+    // The scale bar: 1 m = one cell = 102 px, as many metres as a third of the page holds,
+    // from the legend's left padding (the font size).
+    const int x0 = static_cast<int>(app::layout_figure(app::map_figure(g, app::MapTones{}, {}, "")).font_px);
+    const int length = static_cast<int>(std::lround(app::scale_bar_length_m(102.0, png.width / 3.0) * 102.0));
     bool bar = false;
     for (int y = top + 408; y < png.height && !bar; ++y) {
-      bar = png.at(x0 + 1, y)[0] < 50 && png.at(x0 + 100, y)[0] < 50 && png.at(x0 + 104, y)[0] > 200 &&
+      bar = png.at(x0 + 1, y)[0] < 50 && png.at(x0 + length - 2, y)[0] < 50 && png.at(x0 + length + 2, y)[0] > 200 &&
             png.at(x0 + 50, y)[0] < 50;
     }
     CHECK(bar);
@@ -215,6 +220,8 @@ TEST_CASE("the colour bar of map.png's tones: a tick at each knot, white to blac
   REQUIRE(bar.ticks.size() == 5);
   CHECK(bar.ticks.front().label == "-3.39");
   CHECK(bar.ticks[2].label == "0");
+  CHECK(bar.ticks[2].note == "prior, p 0.5");  // where the tones jump from free to occupied
+  CHECK(bar.ticks[1].note.empty());
   CHECK(bar.ticks.back().label == "+1.62");
   CHECK(bar.tones.front().r > 245);
   CHECK(bar.tones.back().r < 10);
@@ -233,4 +240,37 @@ TEST_CASE("scale bars are 1, 2 or 5 times a power of ten metres") {
   CHECK(app::scale_bar_length_m(102.0, 250) == 2.0);
   CHECK(app::scale_bar_length_m(10.0, 1365) == 100.0);
   CHECK(app::scale_bar_length_m(555.0, 160) == doctest::Approx(0.2));
+}
+
+TEST_CASE("text on a page is at least a 40th of its height, on one page or on a shared one") {
+  const app::MapTones tones;
+  for (const auto &[w, h] : std::vector<std::pair<int, int>>{{1, 1}, {4, 4}, {8, 8}, {64, 64}, {3, 40}, {200, 10}}) {
+    const mapping::GridGeometry g{w, h, 3, 0.18, {}};
+    const app::Figure map = app::map_figure(g, tones, {}, "maze8x8.txt, model cell, K 3");
+    const app::FigureLayout alone = app::layout_figure(map);
+    CAPTURE(w);
+    CAPTURE(h);
+    CHECK(alone.font_px * 40 >= alone.height);
+    app::Figure taller = map;
+    taller.lines = {"one", "two", "three", "four", "five"};
+    const app::PageFrame page = app::shared_page({map, taller});
+    CHECK(page.font_px * 40 >= page.height);
+    CHECK(app::layout_figure(map, page).height == app::layout_figure(taller, page).height);
+    CHECK(app::layout_figure(map, page).width == app::layout_figure(taller, page).width);
+  }
+}
+
+TEST_CASE("a plain grid in metres: the axes' ticks at round metres") {
+  app::PlainGrid g;
+  g.cells_x = 50;
+  g.cells_y = 30;
+  g.cell_w_m = g.cell_h_m = 0.1;
+  g.axes_in_metres = true;
+  g.tones.assign(1500, app::kWhite);
+  const app::Figure fig = app::plain_grid_figure(g, app::Figure{});
+  REQUIRE(fig.axes);
+  CHECK(fig.axes->px_per_m == doctest::Approx(120.0));  // 600 px over the longer side, 5 m
+  CHECK(fig.axes->x0_m == 0.0);
+  g.axes_in_metres = false;
+  CHECK(app::plain_grid_figure(g, app::Figure{}).axes->px_per_m == 0.0);
 }

@@ -51,7 +51,7 @@ app::GridHistory small_history() {
 
 app::ReplayInput input_of(const app::GridHistory &history) {
   app::ReplayInput input;
-  input.history = &history;
+  app::add_history(input, history, 7);
   input.title = "worlds/a</script>b.txt";
   input.caption = "model cell, K 3";
   input.steps = 7;
@@ -92,22 +92,53 @@ app::RunSummary run_into(const TempDir &dir, const std::string &world, bool repl
 TEST_CASE("replay data: one frame a move, changes as (gap, 2 * centi-log-odds + occupied), the last value wins") {
   const app::GridHistory history = small_history();
   const Json d = Json::parse(app::replay_data_json(input_of(history), 1));
+  CHECK(d["units"] == "cells");
   CHECK(d["width"] == 2);
   CHECK(d["k"] == 3);
   CHECK(d["initial"] == 0);
+  CHECK(d["frame_note"] == "");
   CHECK(d["path"]["steps"] == Json::array({1, 5}));
-  CHECK(d["path"]["cells"] == Json::array({0, 0, 1, 0}));
-  CHECK(d["path"]["headings"] == "NE");
-  CHECK(d["frames"]["arrival"] == Json::array({0, 1}));
+  // Cell centres in mm from the grid's corner (1 m cells), headings north and east in mrad.
+  CHECK(d["path"]["xy_mm"] == Json::array({500, 500, 1500, 500}));
+  CHECK(d["path"]["yaw_mrad"] == Json::array({1571, 0}));
+  CHECK(d["frames"]["pose"] == Json::array({0, 1}));
   CHECK(d["frames"]["step"] == Json::array({4, 7}));
+  CHECK(d["frames"]["t_ms"] == Json::array({-1, -1}));
   // Frame 0, steps 1 to 4: index 4 at -1.69 (free: 2 * -169 + 0), index 10 (gap 6) at 0.41, occupied.
   CHECK(d["frames"]["changes"][0] == Json::array({4, -338, 6, 83}));
   CHECK(d["frames"]["changes"][1] == Json::array({4, -508}));
   CHECK(d["summary"][1] == Json::array({"wall_accuracy", "97.50%"}));
   // Two moves a frame: one frame, everything in it.
   const Json one = Json::parse(app::replay_data_json(input_of(history), 2));
-  CHECK(one["frames"]["arrival"] == Json::array({1}));
+  CHECK(one["frames"]["pose"] == Json::array({1}));
   CHECK(one["frames"]["changes"][0] == Json::array({4, -508, 6, 83}));
+  CHECK(one["frame_note"] == "2 moves a frame");
+}
+
+TEST_CASE("replay data in metres: poses, goals and landmarks in mm from the grid's corner, a room's frames every N steps") {
+  app::ReplayInput input;
+  input.units = app::ReplayUnits::metres;
+  input.grid = mapping::GridGeometry{4, 2, 1, 0.25, {-1.0, 2.0}};
+  input.path = {{0, {-0.5, 2.25}, 0.0}, {15, {-0.25, 2.3}, 1.5708}};
+  input.changes = {{5, 0.405f}};
+  input.frames = {{0, 0, 0.0, 0}, {1, 15, 0.48, 1}};
+  input.steps_per_frame = 15;
+  input.goals = {{-0.125, 2.375}};
+  input.body_radius_m = 0.05;
+  input.landmarks = {{{0.0, 2.5}, app::Rgb{255, 0, 0}, 0.1}};
+  const Json d = Json::parse(app::replay_data_json(input, 1));
+  CHECK(d["units"] == "metres");
+  CHECK(d["k"] == 1);
+  CHECK(d["origin"] == Json::array({-1.0, 2.0}));
+  CHECK(d["path"]["xy_mm"] == Json::array({500, 250, 750, 300}));
+  CHECK(d["path"]["yaw_mrad"] == Json::array({0, 1571}));
+  CHECK(d["frames"]["t_ms"] == Json::array({0, 480}));
+  CHECK(d["frames"]["changes"][1] == Json::array({5, 83}));
+  CHECK(d["goals"] == Json::array({875, 375}));
+  CHECK(d["landmarks"] == Json::array({1000, 500, 100, 255, 0, 0}));
+  CHECK(d["body_mm"] == 50);
+  CHECK(d["frame_note"] == "a frame every 15 steps");
+  CHECK(Json::parse(app::replay_data_json(input, 2))["frame_note"] == "a frame every 30 steps");
 }
 
 TEST_CASE("replay page: self-contained, the data's \"</\" escaped; over the size limit more moves a frame, then none") {
@@ -115,7 +146,7 @@ TEST_CASE("replay page: self-contained, the data's \"</\" escaped; over the size
   app::ReplayInput input = input_of(history);
   const std::optional<app::Replay> page = app::replay_html(input);
   REQUIRE(page);
-  CHECK(page->moves_per_frame == 1);
+  CHECK(page->frames_merged == 1);
   CHECK(page->html.find("worlds/a<\\/script>b.txt") != std::string::npos);
   CHECK(page->html.find("a</script>") == std::string::npos);
   CHECK(page->html.find("<input type=\"range\" id=\"step\"") != std::string::npos);
@@ -126,7 +157,7 @@ TEST_CASE("replay page: self-contained, the data's \"</\" escaped; over the size
   input.max_bytes = page->html.size() - 1;  // one frame fewer is smaller
   const std::optional<app::Replay> halved = app::replay_html(input);
   REQUIRE(halved);
-  CHECK(halved->moves_per_frame == 2);
+  CHECK(halved->frames_merged == 2);
   input.max_bytes = 100;
   CHECK_FALSE(app::replay_html(input));
 }
@@ -135,8 +166,8 @@ TEST_CASE("run --out: replay.html has a frame a move, and its changes replayed g
   const TempDir dir;
   const app::RunSummary summary = run_into(dir, "maze8x8.txt", true);
   const Json d = data_of(test_png::read_all(dir.path / "replay.html"));
-  CHECK(d["frames"]["arrival"].size() == static_cast<std::size_t>(summary.moves) + 1);
-  CHECK(d["moves_per_frame"] == 1);
+  CHECK(d["frames"]["pose"].size() == static_cast<std::size_t>(summary.moves) + 1);
+  CHECK(d["frame_note"] == "");
   CHECK(d["steps"] == summary.steps);
   const int k = d["k"], w = d["width"], h = d["height"];
   std::vector<int> value(static_cast<std::size_t>(w * h * k * k), -1);  // -1: never observed

@@ -60,6 +60,7 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   grid.cells_x = 50;
   grid.cells_y = 30;
   grid.cell_w_m = grid.cell_h_m = 0.1;
+  grid.axes_in_metres = true;
   const app::PlainGridFrame frame = app::plain_grid_frame(grid, app::Figure{});
   REQUIRE(frame.cell_w_px == 12);
   const auto centre = [&frame](double x_m, double y_m) {
@@ -85,7 +86,7 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   CHECK(has_colour(map, app::kPathColour));
   CHECK(has_colour(wave, app::kGoalColour));
 
-  // truth.png: the shelf occupied and mapped so (near-black); the partition never observed.
+  // truth.png: the shelf occupied and mapped occupied (near-black); the partition never observed.
   const test_png::Png truth = test_png::read_png(test_png::read_all(dir.path / "truth.png"));
   CHECK(truth.at(shelf[0], shelf[1]) == std::vector<int>{25, 25, 25});
   CHECK(truth.at(partition[0], partition[1]) == rgb(app::kUnknownTone));
@@ -98,7 +99,7 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   CHECK_FALSE(std::filesystem::exists(frontier.path / "wave.png"));
 }
 
-TEST_CASE("room --out: replay.html, a frame a step on the IR room's grid, the map at the end in map.png's tones") {
+TEST_CASE("room --out: replay.html in metres, a frame at the start and a step on the IR room's grid, the map at the end") {
   const test_cli::TempDir dir("room_replay");
   const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
   REQUIRE(test_cli::run({"room", world, "--strategy", "wavefront", "--goal", "4.7,2.7", "--quiet", "--out",
@@ -111,13 +112,18 @@ TEST_CASE("room --out: replay.html, a frame a step on the IR room's grid, the ma
   const std::size_t begin = from + open.size();
   const nlohmann::json data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
   const nlohmann::json summary = nlohmann::json::parse(test_png::read_all(dir.path / "summary.json"));
+  CHECK(data["units"] == "metres");
+  CHECK(data["k"] == 1);
   const auto &steps = data["frames"]["step"];
-  REQUIRE(steps.size() == summary["steps"].get<std::size_t>());  // 1500 cells: a frame every step
-  CHECK(steps.front() == 1);
+  REQUIRE(steps.size() == summary["steps"].get<std::size_t>() + 1);  // 1500 cells: the start and every step
+  CHECK(steps.front() == 0);
   CHECK(steps.back() == summary["steps"]);
-  CHECK(data["frames"]["pose"].size() == 3 * steps.size());
+  CHECK(data["frames"]["changes"][0].empty());  // nothing learned at the start
+  CHECK(data["path"]["xy_mm"].size() == 2 * steps.size());
+  CHECK(data["goals"].size() == 2);
   // Every frame's changes applied: the partition never observed, the open middle seen free.
-  std::vector<long> cells(50 * 30, data["initial"].get<long>());
+  const long initial = data["initial"].get<long>();
+  std::vector<long> cells(50 * 30, initial);
   for (const auto &frame : data["frames"]["changes"]) {
     long at = 0;
     for (std::size_t k = 0; k + 1 < frame.size(); k += 2) {
@@ -125,7 +131,23 @@ TEST_CASE("room --out: replay.html, a frame a step on the IR room's grid, the ma
       cells[static_cast<std::size_t>(at)] = frame[k + 1].get<long>();
     }
   }
-  const auto packed = [](app::Rgb c) { return (long{c.r} << 16) | (long{c.g} << 8) | long{c.b}; };
-  CHECK(cells[10 * 50 + 11] == packed(app::kUnknownTone));  // (1.15, 1.05)
-  CHECK((cells[6 * 50 + 20] >> 16) >= 215);                 // (2.05, 0.65)
+  CHECK(cells[10 * 50 + 11] == initial);  // (1.15, 1.05)
+  const long free_value = cells[6 * 50 + 20];  // (2.05, 0.65): 2 * centi-log-odds, not occupied
+  CHECK(free_value < 0);
+  CHECK(free_value % 2 == 0);
+}
+
+TEST_CASE("room --out: map.png, truth.png and wave.png are one size") {
+  const test_cli::TempDir dir("room_pictures_same_size");
+  const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
+  REQUIRE(test_cli::run({"room", world, "--strategy", "wavefront", "--goal", "4.7,2.7", "--snapshot-steps", "50",
+                         "--quiet", "--out", dir.path.string()})
+              .status == 0);
+  const test_png::Png map = test_png::read_png(test_png::read_all(dir.path / "map.png"));
+  for (const char *name : {"truth.png", "wave.png", "snapshots/step50.png", "snapshots/step50_wave.png"}) {
+    const test_png::Png other = test_png::read_png(test_png::read_all(dir.path / name));
+    CAPTURE(name);
+    CHECK(other.width == map.width);
+    CHECK(other.height == map.height);
+  }
 }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -19,6 +20,7 @@
 #include "app/picture/map_picture.hpp"
 #include "app/run/run.hpp"
 #include "app/report/truth_picture.hpp"
+#include "cli_runner.hpp"
 #include "png_reader.hpp"
 
 namespace {
@@ -81,6 +83,16 @@ struct Case {
   std::int64_t max_steps;
 };
 
+// The first pixel in colour c, row by row from the top: {x, y}, or {-1, -1}.
+std::pair<int, int> first_pixel_of(const test_png::Png &png, app::Rgb c) {
+  for (int y = 0; y < png.height; ++y) {
+    for (int x = 0; x < png.width; ++x) {
+      if (png.at(x, y) == test_png::rgb(c)) return {x, y};
+    }
+  }
+  return {-1, -1};
+}
+
 }  // namespace
 
 TEST_CASE("a side's verdict: right, missed, phantom or an unseen opening") {
@@ -128,5 +140,24 @@ TEST_CASE("truth.png: the sides' colours count to the summary's wall_accuracy, t
       CHECK(t.missed > 0);
     }
     if (c.strategy == explore::StrategyKind::floodfill) CHECK(json.at("coverage") == 93.75);
+  }
+}
+
+TEST_CASE("run --out: map.png, truth.png and the snapshots are one size, their map areas at one place") {
+  const test_cli::TempDir dir("truth_same_size");
+  for (const char *world : {"maze8x8.txt", "lab4x4.txt"}) {
+    REQUIRE(test_cli::run({"run", std::string(WORLDS_DIR) + "/" + world, "--quiet", "--no-trace", "--snapshots", "2",
+                           "--out", dir.path.string()})
+                .status == 0);
+    const test_png::Png map = test_png::read_png(test_png::read_all(dir.path / "map.png"));
+    const test_png::Png truth = test_png::read_png(test_png::read_all(dir.path / "truth.png"));
+    const test_png::Png snapshot = test_png::read_png(test_png::read_all(dir.path / "snapshots" / "01.png"));
+    CAPTURE(world);
+    CHECK(map.width == truth.width);
+    CHECK(map.height == truth.height);
+    CHECK(snapshot.width == map.width);
+    CHECK(snapshot.height == map.height);
+    // The start's green square at the same place in both: its top-left pixel.
+    CHECK(first_pixel_of(map, app::kStartColour) == first_pixel_of(truth, app::kStartColour));
   }
 }

@@ -12,7 +12,7 @@
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
 #include "robot/cell_controller.hpp"
-#include "robot/room_controller.hpp"
+#include "robot/metric_controller.hpp"
 
 namespace app {
 namespace {

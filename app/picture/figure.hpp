@@ -17,8 +17,11 @@
 //   |  |----| 1 m                               |
 //   +-------------------------------------------+
 //
-// The font size follows the map's size (about a 45th of its longer side, 14 px at least), so
-// a picture scaled to a screen or a projector keeps its text readable.
+// The font size is at least a 40th of the page's height (and 14 px), every text on the page
+// (axes and ticks too) in that size, so that a picture scaled to a projector's screen keeps
+// its text readable. Several pictures of one map area (a run's map.png, truth.png and
+// snapshots) share one page (shared_page): the same size, font and map origin, so that one
+// can be flipped to the next.
 
 #include <optional>
 #include <string>
@@ -31,6 +34,9 @@ namespace app {
 // The cell indices on the axes: column i's centre at offset_px + cell_px (i + 0.5) from the
 // map area's left edge, labelled first_x + i; row j (from the south) at offset_px + cell_px
 // (rows - j - 0.5) from its top, labelled first_y + j.
+// With px_per_m > 0 the axes are in metres instead: ticks at round metres (0.1, 0.2, 0.5,
+// 1, 2, 5 ... apart), the map area's left edge at x0_m and its bottom edge at y0_m (beyond
+// offset_px), the axes named "x (m)" and "y (m)".
 struct Axes {
   int columns = 0;
   int rows = 0;
@@ -38,6 +44,9 @@ struct Axes {
   int first_x = 0;
   int first_y = 0;
   double offset_px = 0.0;
+  double px_per_m = 0.0;
+  double x0_m = 0.0;
+  double y0_m = 0.0;
 };
 
 enum class Swatch { box, line, square, disc, frame, ring };
@@ -56,6 +65,7 @@ struct ColourBar {
   struct Tick {
     double at = 0.0;
     std::string label;
+    std::string note;  // under the label, on the row of left_word and right_word (e.g. "prior")
   };
   std::vector<Tick> ticks;
   std::string left_word;
@@ -81,7 +91,23 @@ struct FigureLayout {
   int height = 0;
 };
 
+// A page several figures share: the font and the size.
+struct PageFrame {
+  double font_px = 14.0;
+  int width = 0;
+  int height = 0;
+};
+
+// The smallest page that holds each of `figures` (which must share their map area's size
+// and axes) in one font, that font at least 14 px and a 40th of the page's height: an 18th
+// of the map's height (and a 45th of its longer side) for a legend up to 22 font sizes tall,
+// larger for a taller one.
+PageFrame shared_page(const std::vector<Figure> &figures);
+
+// The figure on its own page (shared_page of it alone), or on `page` (made larger where the
+// figure would not fit it at its font: nothing is cut).
 FigureLayout layout_figure(const Figure &figure);
+FigureLayout layout_figure(const Figure &figure, const PageFrame &page);
 
 // Draws all but the map area's content (axes, legend) on a page of layout's size.
 void draw_figure(Drawing &page, const Figure &figure, const FigureLayout &layout);

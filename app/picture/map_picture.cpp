@@ -19,14 +19,21 @@ bool occupied(double l, const MapTones &tones) { return tones.threshold ? l >= *
 // The evidence in updates beyond the first, 0 to 1 at three more.
 double strength(double l, double one_update) { return std::clamp((l / one_update - 1.0) / 3.0, 0.0, 1.0); }
 
-// The frame of the map area: its axes in cells, no legend yet.
-Figure map_figure(const mapping::GridGeometry &g) {
+// The frame of the map area: the sub-cells inside a margin of map_margin_px (where truth.png
+// draws its outer walls), its axes in cells, no legend yet.
+Figure map_frame(const mapping::GridGeometry &g) {
   const int scale = map_scale(g);
+  const int margin = map_margin_px(g);
   Figure fig;
-  fig.map_w_px = g.width_subcells() * scale;
-  fig.map_h_px = g.height_subcells() * scale;
-  fig.axes = Axes{g.width_cells, g.height_cells, static_cast<double>(g.subcells * scale), 0, 0};
+  fig.map_w_px = g.width_subcells() * scale + 2 * margin;
+  fig.map_h_px = g.height_subcells() * scale + 2 * margin;
+  fig.axes = Axes{g.width_cells, g.height_cells, static_cast<double>(g.subcells * scale), 0, 0, static_cast<double>(margin)};
   return fig;
+}
+
+// The sub-cells' top-left corner in a page whose map area is at `area`.
+PointPx inside_margin(const mapping::GridGeometry &g, PointPx area) {
+  return {area.x + map_margin_px(g), area.y + map_margin_px(g)};
 }
 
 PointPx cell_centre_at(const mapping::GridGeometry &g, PointPx origin, mapping::Cell c) {
@@ -126,7 +133,10 @@ ColourBar map_tone_bar(const MapTones &tones, const std::string &unknown_label) 
     for (int i = 0; i < per_segment; ++i) bar.tones.push_back(observed_tone(a + (b - a) * (i + 0.5) / per_segment, tones));
   }
   for (std::size_t k = 0; k < knots.size(); ++k) {
-    bar.ticks.push_back({segments == 0 ? 0.5 : static_cast<double>(k) / segments, signed_2(knots[k])});
+    // The prior's knot says so: where the tones jump from free to occupied by default.
+    const bool prior = std::abs(knots[k] - tones.initial_log_odds) < 1e-6;
+    bar.ticks.push_back({segments == 0 ? 0.5 : static_cast<double>(k) / segments, signed_2(knots[k]),
+                         prior ? (tones.initial_log_odds == 0.0f ? "prior, p 0.5" : "prior") : ""});
   }
   bar.left_word = "free";
   bar.right_word = "occupied";
@@ -141,29 +151,42 @@ int map_scale(const mapping::GridGeometry &geometry) {
   return std::clamp(4096 / side, 1, wanted);
 }
 
-PointPx map_origin_px(const mapping::GridGeometry &geometry) { return layout_figure(map_figure(geometry)).map_origin; }
+int map_margin_px(const mapping::GridGeometry &geometry) {
+  return std::max(2, geometry.subcells * map_scale(geometry) / 10);
+}
+
+PointPx map_origin_px(const mapping::GridGeometry &geometry) {
+  return inside_margin(geometry, layout_figure(map_frame(geometry)).map_origin);
+}
 
 PointPx cell_centre_px(const mapping::GridGeometry &g, mapping::Cell c) {
   return cell_centre_at(g, map_origin_px(g), c);
 }
 
-Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                    const std::string &caption, PictureFormat format) {
-  const mapping::GridGeometry &g = grid.geometry();
-  Figure fig = map_figure(g);
+Figure map_figure(const mapping::GridGeometry &g, const MapTones &tones, const MapMarks &marks,
+                  const std::string &caption) {
+  Figure fig = map_frame(g);
   fig.lines = {caption};
   fig.items = map_items(marks);
-  fig.bar = map_tone_bar(tones, "never observed");
+  fig.bar = map_tone_bar(tones, "never observed (prior)");
+  fig.px_per_m = map_scale(g) / g.subcell_size_m();
+  return fig;
+}
+
+Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                    const std::string &caption, PictureFormat format, const std::optional<PageFrame> &page) {
+  const mapping::GridGeometry &g = grid.geometry();
+  const Figure fig = map_figure(g, tones, marks, caption);
+  const FigureLayout layout = page ? layout_figure(fig, *page) : layout_figure(fig);
+  Drawing drawing(layout.width, layout.height, format);
   const int scale = map_scale(g);
-  fig.px_per_m = scale / g.subcell_size_m();
-  const FigureLayout layout = layout_figure(fig);
-  Drawing page(layout.width, layout.height, format);
   const int h = g.height_subcells();
-  page.blocks([&](int x, int row) { return tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones); },
-              g.width_subcells(), h, layout.map_origin, scale, scale);
-  draw_marks(page, g, layout.map_origin, marks, 0.6 * layout.font_px);
-  draw_figure(page, fig, layout);
-  return page;
+  const PointPx origin = inside_margin(g, layout.map_origin);
+  drawing.blocks([&](int x, int row) { return tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones); },
+                 g.width_subcells(), h, origin, scale, scale);
+  draw_marks(drawing, g, origin, marks, 0.6 * layout.font_px);
+  draw_figure(drawing, fig, layout);
+  return drawing;
 }
 
 }  // namespace app

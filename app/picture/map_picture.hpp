@@ -14,7 +14,9 @@
 //            gold frame; a planned path (plan.png) through its sub-cells' centres in
 //            magenta, its start a magenta disc and its end a magenta ring; each landmark a
 //            disc of its colour ringed in black
-//   axes     cell indices (x, y), as the messages name cells
+//   axes     cell indices (x, y), as the messages name cells; the sub-cells inside a margin
+//            (map_margin_px) as wide as truth.png's outer walls, so that a run's map.png and
+//            truth.png are one size and scale (shared_page) and can be flipped between
 //   legend   the caption ("model cell, K 3", and a note such as a snapshot's step), what
 //            each mark means, a colour bar of the tones by log-odds (map_tone_bar) with the
 //            never-observed swatch, and a scale bar in metres
@@ -53,7 +55,8 @@ Rgb observed_tone(double log_odds, const MapTones &tones);
 // The colour bar of these tones: log-odds from four free updates (left, "free") to four
 // occupied updates (right, "occupied"), each of the knots (four and one free update, the
 // occupied threshold, one and four occupied updates) a tick an equal part of the bar apart,
-// and `unknown_label` (e.g. "never observed") in kUnknownTone after it.
+// the knot at the prior's log-odds noted "prior, p 0.5" (the tones' jump from free to
+// occupied, by default), and `unknown_label` (e.g. "never observed") in kUnknownTone after it.
 ColourBar map_tone_bar(const MapTones &tones, const std::string &unknown_label);
 
 // A landmark of the world (maze::Landmark), where it stands in the world frame (m), its
@@ -77,12 +80,23 @@ struct MapMarks {
 // that the map stays within 4096 px a side where it can (never below 1).
 int map_scale(const mapping::GridGeometry &geometry);
 
-// The picture (app/figure.hpp's layout); `caption` is the legend's first line. The robot's
-// mark is at marks.path's last cell.
-Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                    const std::string &caption, PictureFormat format = PictureFormat::png);
+// The margin around the sub-cells inside the map area, in pixels (truth.png draws the maze's
+// outer walls there): a tenth of a cell, 2 px at least.
+int map_margin_px(const mapping::GridGeometry &geometry);
 
-// Where the map's top-left corner is in the picture of a grid of this geometry.
+// The figure map_picture draws: its map area, axes and legend (for shared_page).
+Figure map_figure(const mapping::GridGeometry &geometry, const MapTones &tones, const MapMarks &marks,
+                  const std::string &caption);
+
+// The picture (app/figure.hpp's layout) on its own page, or on `page` (a page shared with the
+// run's other pictures); `caption` is the legend's first line. The robot's mark is at
+// marks.path's last cell.
+Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
+                    const std::string &caption, PictureFormat format = PictureFormat::png,
+                    const std::optional<PageFrame> &page = std::nullopt);
+
+// Where the map's top-left sub-cell's top-left corner is in the picture of a grid of this
+// geometry on its own page.
 PointPx map_origin_px(const mapping::GridGeometry &geometry);
 // The pixel centre of a cell in that picture.
 PointPx cell_centre_px(const mapping::GridGeometry &geometry, mapping::Cell c);

@@ -22,12 +22,19 @@ Figure with_grid(const PlainGrid &g, Figure fig) {
   fig.map_h_px = static_cast<int>(g.cells_y * cell_h_px(g));
   if (cell_w_px(g) == cell_h_px(g)) {
     fig.axes = Axes{g.cells_x, g.cells_y, cell_w_px(g), g.first_i, g.first_j, 0.0};
+    if (g.axes_in_metres) {
+      fig.axes->px_per_m = cell_w_px(g) / g.cell_w_m;
+      fig.axes->x0_m = g.x0_m;
+      fig.axes->y0_m = g.y0_m;
+    }
   }
   fig.px_per_m = cell_w_px(g) / g.cell_w_m;
   return fig;
 }
 
 }  // namespace
+
+Figure plain_grid_figure(const PlainGrid &grid, Figure legend) { return with_grid(grid, std::move(legend)); }
 
 PointPx PlainGridFrame::at(double x_m, double y_m) const {
   const double col = (x_m - x0_m) / cell_w_m;
@@ -68,10 +75,12 @@ PlainGridFrame plain_grid_frame(const PlainGrid &g, const Figure &legend) {
   return frame;
 }
 
-Drawing plain_grid_picture(const PlainGrid &g, Figure legend, const PlainGridOverlay &overlay, PictureFormat format) {
+Drawing plain_grid_picture(const PlainGrid &g, Figure legend, const PlainGridOverlay &overlay, PictureFormat format,
+                           const std::optional<PageFrame> &shared) {
   const Figure fig = with_grid(g, std::move(legend));
-  const FigureLayout layout = layout_figure(fig);
-  const PlainGridFrame frame = plain_grid_frame(g, fig);
+  const FigureLayout layout = shared ? layout_figure(fig, *shared) : layout_figure(fig);
+  PlainGridFrame frame = plain_grid_frame(g, fig);
+  frame.origin = layout.map_origin;
   Drawing page(layout.width, layout.height, format);
   std::vector<Rgb> top_first;
   top_first.reserve(g.tones.size());

@@ -9,6 +9,7 @@
 //                    one pixel: a 25 x 25 grid is 24 px a cell, 50 x 50 12
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "app/picture/drawing.hpp"
@@ -26,6 +27,7 @@ struct PlainGrid {
   double cell_h_m = 1.0;
   int first_i = 0;  // the index the axes give the west column and the south row
   int first_j = 0;
+  bool axes_in_metres = false;  // the axes in metres (a room's map) instead of cell indices
   std::vector<Rgb> tones;  // cell (i, j), column i from the west, row j from the south: j * cells_x + i
 };
 
@@ -53,10 +55,14 @@ struct PlainGridFrame {
 // Draws over the grid (after the tones, before the legend).
 using PlainGridOverlay = std::function<void(Drawing &page, const PlainGridFrame &frame)>;
 
-// The picture: the grid with cell indices on its axes, the figure's legend under it
-// (`legend`'s lines, items and bar; its map size, axes and scale are set here).
+// The picture: the grid with cell indices (or metres) on its axes, the figure's legend under
+// it (`legend`'s lines, items and bar; its map size, axes and scale are set here), on its own
+// page or on `page` (shared with other pictures of the grid: shared_page of their figures).
 Drawing plain_grid_picture(const PlainGrid &grid, Figure legend, const PlainGridOverlay &overlay = {},
-                           PictureFormat format = PictureFormat::png);
+                           PictureFormat format = PictureFormat::png,
+                           const std::optional<PageFrame> &page = std::nullopt);
+// The figure plain_grid_picture draws `grid` in with this legend.
+Figure plain_grid_figure(const PlainGrid &grid, Figure legend);
 
 // The frame plain_grid_picture draws `grid` in with this legend.
 PlainGridFrame plain_grid_frame(const PlainGrid &grid, const Figure &legend);

@@ -77,19 +77,40 @@ MapTones map_tones(const RunOptions &options, const mapping::SensorModel &model)
 }
 
 std::string map_caption(const RunOptions &options) {
-  return fmt::format("model {}, K {}", sensing::to_string(options.model.kind), options.subcells);
+  return fmt::format("{}, model {}, K {}", fs::path(options.world).filename().string(),
+                     sensing::to_string(options.model.kind), options.subcells);
 }
 
 std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                     const std::string &caption, PictureFormat format) {
-  return map_picture(grid, tones, marks, caption, format).encode();
+                     const std::string &caption, PictureFormat format, const std::optional<PageFrame> &page) {
+  return map_picture(grid, tones, marks, caption, format, page).encode();
 }
 
-std::string truth_png_file(const RunOptions &options, const RunFiles &files, PictureFormat format) {
+namespace {
+
+TruthInput truth_input(const RunOptions &options, const RunFiles &files, const std::vector<bool> &visited) {
+  return {files.truth, &visited, files.learned, options.subcells, fmt::format("truth: {}", map_caption(options))};
+}
+
+}  // namespace
+
+std::string truth_png_file(const RunOptions &options, const RunFiles &files, PictureFormat format,
+                           const std::optional<PageFrame> &page) {
   const std::vector<bool> visited = visited_cells(*files.visits);
-  const TruthInput input{files.truth, &visited, files.learned, options.subcells,
-                         fmt::format("truth: {}", map_caption(options))};
-  return truth_picture(input, format).encode();
+  return truth_picture(truth_input(options, files, visited), format, page).encode();
+}
+
+PageFrame run_page(const RunOptions &options, const RunFiles &files, std::int64_t steps) {
+  const mapping::GridGeometry &g = files.grid->geometry();
+  const MapTones tones = map_tones(options, *files.model);
+  const std::vector<bool> visited = visited_cells(*files.visits);
+  const MapMarks marks{*files.path, files.goals, {}, files.landmarks};
+  std::vector<Figure> figures{map_figure(g, tones, marks, map_caption(options)),
+                              truth_figure(truth_input(options, files, visited))};
+  if (options.output.snapshots > 0) {  // the longest snapshot caption
+    figures.push_back(map_figure(g, tones, marks, fmt::format("{}, step {}/{}", map_caption(options), steps, steps)));
+  }
+  return shared_page(figures);
 }
 
 namespace {
@@ -167,7 +188,7 @@ void append_trace_row(std::string &csv, const robot::StepReport &step, double x_
 namespace {
 
 void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
-                     std::vector<std::string> &written) {
+                     const PageFrame &page, std::vector<std::string> &written) {
   std::error_code ec;
   fs::create_directory(dir, ec);
   if (ec) refuse_out_dir(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
@@ -182,7 +203,7 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
     for (const PictureFormat format : options.output.picture_formats) {
       const std::string name = fmt::format("{:0{}}.{}", i + 1, digits, to_string(format));
-      common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption, format));
+      common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption, format, page));
       written.push_back("snapshots/" + name);
     }
   }
@@ -210,7 +231,7 @@ void write_replay(const fs::path &dir, const RunOptions &options, const RunSumma
 // --plan-to / plan: plan.png (the learned map with the planned path) and plan.csv (its
 // sub-cells in order, with their centres in metres).
 void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummary &plan, const RunFiles &files,
-                std::vector<std::string> &written) {
+                const PageFrame &page, std::vector<std::string> &written) {
   std::string csv = "index,subcell_x,subcell_y,x_m,y_m\n";
   for (std::size_t i = 0; i < plan.path.size(); ++i) {
     const mapping::Point p = files.grid->centre_of(plan.path[i]);
@@ -221,7 +242,7 @@ void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummar
   for (const PictureFormat format : options.output.picture_formats) {
     const std::string name = fmt::format("plan.{}", to_string(format));
     common::write_file_atomically((dir / name).string(),
-                                  png_file(*files.grid, map_tones(options, *files.model), marks, caption, format));
+                                  png_file(*files.grid, map_tones(options, *files.model), marks, caption, format, page));
     written.push_back(name);
   }
   common::write_file_atomically((dir / "plan.csv").string(), csv);
@@ -257,9 +278,13 @@ bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geome
 
 std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
   ReplayInput input;
-  input.history = files.history;
+  add_history(input, *files.history, summary.steps);
   input.tones = map_tones(options, *files.model);
-  input.goals = files.goals;
+  const mapping::GridGeometry &g = input.grid;
+  for (const mapping::Cell c : files.goals) {
+    input.goals.push_back({g.origin.x_m + (c.x + 0.5) * g.cell_size_m, g.origin.y_m + (c.y + 0.5) * g.cell_size_m});
+  }
+  input.goal_side_m = 0.75 * g.cell_size_m;
   input.landmarks = files.landmarks;
   input.title = options.world;
   input.caption = map_caption(options);
@@ -277,13 +302,15 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
   common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
   common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
   const MapTones tones = map_tones(options, *files.model);
+  const PageFrame page = run_page(options, files, summary.steps);
   for (const PictureFormat format : options.output.picture_formats) {
     const std::string map = fmt::format("map.{}", to_string(format));
     const std::string truth = fmt::format("truth.{}", to_string(format));
     common::write_file_atomically(
         (d / map).string(),
-        png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options), format));
-    common::write_file_atomically((d / truth).string(), truth_png_file(options, files, format));
+        png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options), format,
+                 page));
+    common::write_file_atomically((d / truth).string(), truth_png_file(options, files, format, page));
     written.push_back(map);
     written.push_back(truth);
   }
@@ -295,11 +322,11 @@ void write_outputs(const std::string &dir, const RunOptions &options, const RunS
   }
   const std::size_t before_snapshots = written.size();
   if (options.output.snapshots > 0 && files.history != nullptr) {
-    write_snapshots(d / "snapshots", options, summary, files, written);
+    write_snapshots(d / "snapshots", options, summary, files, page, written);
   }
   const std::size_t snapshot_files = written.size() - before_snapshots;
   write_replay(d, options, summary, files, written);
-  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files, written);
+  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files, page, written);
   remove_stale_outputs(dir, written);
   fmt::print(stderr, "{}\n", wrote_line(dir, written, before_snapshots, snapshot_files));
 }

@@ -62,11 +62,12 @@ std::string map_yaml(const mapping::GridGeometry &geometry, const std::string &i
 // The tones of map.png for this run: its prior, --threshold and the set-up's own p_occ and
 // p_free as increments of `model` (the course's numbers for pie, bump and depth).
 MapTones map_tones(const RunOptions &options, const mapping::SensorModel &model);
-// "model cell, K 3": the legend's first line.
+// "maze8x8.txt, model cell, K 3": the legend's first line, the world's file name first.
 std::string map_caption(const RunOptions &options);
-// map.png's bytes (app/picture/map_picture.hpp), or map.svg's or map.pdf's.
+// map.png's bytes (app/picture/map_picture.hpp), or map.svg's or map.pdf's; on `page` when given.
 std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, const MapMarks &marks,
-                     const std::string &caption, PictureFormat format = PictureFormat::png);
+                     const std::string &caption, PictureFormat format = PictureFormat::png,
+                     const std::optional<PageFrame> &page = std::nullopt);
 
 std::string summary_json(const RunOptions &options, const RunSummary &summary);
 
@@ -114,8 +115,13 @@ bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geome
 // replay.html's bytes for this run, or nothing when it is too large (app/report/replay.hpp).
 std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &summary, const RunFiles &files);
 
-// truth.png's bytes (app/report/truth_picture.hpp) for this run, or truth.svg's or truth.pdf's.
-std::string truth_png_file(const RunOptions &options, const RunFiles &files, PictureFormat format = PictureFormat::png);
+// truth.png's bytes (app/report/truth_picture.hpp) for this run, or truth.svg's or truth.pdf's;
+// on `page` when given.
+std::string truth_png_file(const RunOptions &options, const RunFiles &files, PictureFormat format = PictureFormat::png,
+                           const std::optional<PageFrame> &page = std::nullopt);
+// The page every picture of this run is drawn on (map, truth, snapshots, plan): one size, one
+// font, one scale, so that they can be flipped between. `steps` is the run's last step.
+PageFrame run_page(const RunOptions &options, const RunFiles &files, std::int64_t steps);
 
 // "wrote DIR/: map.pgm, map.yaml, ..., snapshots/ (3 files, 01.png to 03.png), ...": the
 // names in `written` (relative to dir), the snapshot_files from first_snapshot on as one.

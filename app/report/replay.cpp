@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <iterator>
 #include <string_view>
 
@@ -18,10 +17,7 @@ namespace {
 
 std::string quoted(const std::string &text) { return nlohmann::json(text).dump(); }
 
-// 2 * round(100 * l) + 1 when occupied by the map's rule (see replay.hpp).
-long encoded(float l, const MapTones &tones) {
-  return 2 * std::lround(100.0 * static_cast<double>(l)) + (mapping::is_occupied(l, tones.threshold) ? 1 : 0);
-}
+long milli(double value) { return std::lround(value * 1000.0); }
 
 void append_ints(std::string &out, const std::vector<long> &values) {
   out += '[';
@@ -32,73 +28,89 @@ void append_ints(std::string &out, const std::vector<long> &values) {
   out += ']';
 }
 
-// The changes of log [first, last) as (gap, value) pairs, the last value of each sub-cell.
-std::vector<long> frame_changes(const std::deque<GridHistory::Change> &log, std::size_t first, std::size_t last,
+// The changes [first, last) as (gap, value) pairs, the last value of each sub-cell.
+std::vector<long> frame_changes(const std::vector<ReplayChange> &changes, std::size_t first, std::size_t last,
                                 const MapTones &tones) {
-  std::vector<GridHistory::Change> window(log.begin() + static_cast<std::ptrdiff_t>(first),
-                                          log.begin() + static_cast<std::ptrdiff_t>(last));
+  std::vector<ReplayChange> window(changes.begin() + static_cast<std::ptrdiff_t>(first),
+                                   changes.begin() + static_cast<std::ptrdiff_t>(last));
   std::stable_sort(window.begin(), window.end(), [](const auto &a, const auto &b) { return a.index < b.index; });
   std::vector<long> pairs;
   long previous = 0;
   for (std::size_t i = 0; i < window.size(); ++i) {
     if (i + 1 < window.size() && window[i + 1].index == window[i].index) continue;  // a later value wins
     pairs.push_back(static_cast<long>(window[i].index) - previous);
-    pairs.push_back(encoded(window[i].value, tones));
+    pairs.push_back(replay_value(window[i].log_odds, tones));
     previous = static_cast<long>(window[i].index);
   }
   return pairs;
 }
 
-// "path": every arrival; the headings as one letter each.
-void append_path(std::string &out, const GridHistory &history) {
+// "path": every pose, in mm from the grid's corner and mrad.
+void append_path(std::string &out, const ReplayInput &input) {
   std::vector<long> steps;
-  std::vector<long> cells;
-  std::string headings;
-  for (const GridHistory::Arrival &a : history.arrivals()) {
-    steps.push_back(static_cast<long>(a.step));
-    cells.push_back(a.cell.x);
-    cells.push_back(a.cell.y);
-    headings += mapping::to_char(a.heading);
+  std::vector<long> xy;
+  std::vector<long> yaw;
+  for (const ReplayPose &p : input.path) {
+    steps.push_back(static_cast<long>(p.step));
+    xy.push_back(milli(p.at.x_m - input.grid.origin.x_m));
+    xy.push_back(milli(p.at.y_m - input.grid.origin.y_m));
+    yaw.push_back(milli(p.yaw_rad));
   }
   out += "\"path\":{\"steps\":";
   append_ints(out, steps);
-  out += ",\"cells\":";
-  append_ints(out, cells);
-  out += fmt::format(",\"headings\":\"{}\"}}", headings);
+  out += ",\"xy_mm\":";
+  append_ints(out, xy);
+  out += ",\"yaw_mrad\":";
+  append_ints(out, yaw);
+  out += '}';
 }
 
-// "frames": for each, the last arrival it shows, its step and its changes (written straight
-// into `out`: they are most of the page).
-void append_frames(std::string &out, const ReplayInput &input, int moves_per_frame) {
-  const std::vector<GridHistory::Arrival> &arrivals = input.history->arrivals();
-  const std::deque<GridHistory::Change> &log = input.history->change_log();
-  const std::size_t per = static_cast<std::size_t>(moves_per_frame);
-  const std::size_t count = std::max<std::size_t>(1, (arrivals.size() + per - 1) / per);
-  std::vector<long> shows;
+// "frames": `merged` recorded frames into each, the last one's pose, step and time and the
+// group's changes (written straight into `out`: they are most of the page).
+void append_frames(std::string &out, const ReplayInput &input, std::size_t merged) {
+  std::vector<long> poses;
   std::vector<long> steps;
-  std::vector<std::size_t> ends;  // frame f's changes: log [ends[f - 1], ends[f])
-  std::size_t end = 0;
-  for (std::size_t f = 0; f < count; ++f) {
-    const std::size_t next = std::min((f + 1) * per, arrivals.size());  // the next frame's first arrival
-    const bool last_frame = f + 1 == count;
-    const std::int64_t until = last_frame ? input.steps + 1 : arrivals[next].step;
-    while (end < log.size() && log[end].step < until) ++end;
-    shows.push_back(static_cast<long>(next) - 1);
-    steps.push_back(static_cast<long>(last_frame ? input.steps : until - 1));
-    ends.push_back(end);
+  std::vector<long> times;
+  std::vector<std::size_t> ends;
+  for (std::size_t first = 0; first < input.frames.size(); first += merged) {
+    const ReplayFrame &f = input.frames[std::min(first + merged, input.frames.size()) - 1];
+    poses.push_back(static_cast<long>(f.last_pose));
+    steps.push_back(static_cast<long>(f.step));
+    times.push_back(f.time_s < 0.0 ? -1 : milli(f.time_s));
+    ends.push_back(f.changes_end);
   }
-  out += "\"frames\":{\"arrival\":";
-  append_ints(out, shows);
+  out += "\"frames\":{\"pose\":";
+  append_ints(out, poses);
   out += ",\"step\":";
   append_ints(out, steps);
+  out += ",\"t_ms\":";
+  append_ints(out, times);
   out += ",\"changes\":[";
   std::size_t first = 0;
-  for (std::size_t f = 0; f < count; ++f) {
+  for (std::size_t f = 0; f < ends.size(); ++f) {
     if (f > 0) out += ',';
-    append_ints(out, frame_changes(log, first, ends[f], input.tones));
+    append_ints(out, frame_changes(input.changes, first, ends[f], input.tones));
     first = ends[f];
   }
   out += "]}";
+}
+
+void append_marks(std::string &out, const ReplayInput &input) {
+  const mapping::Point o = input.grid.origin;
+  std::vector<long> goals;
+  for (const mapping::Point &g : input.goals) {
+    goals.push_back(milli(g.x_m - o.x_m));
+    goals.push_back(milli(g.y_m - o.y_m));
+  }
+  out += "\"goals\":";
+  append_ints(out, goals);
+  std::vector<long> landmarks;
+  for (const LandmarkMark &l : input.landmarks) {
+    landmarks.insert(landmarks.end(), {milli(l.at.x_m - o.x_m), milli(l.at.y_m - o.y_m), milli(l.radius_m),
+                                       long{l.colour.r}, long{l.colour.g}, long{l.colour.b}});
+  }
+  out += ",\"landmarks\":";
+  append_ints(out, landmarks);
 }
 
 void append_summary(std::string &out, const ReplayInput &input) {
@@ -110,7 +122,55 @@ void append_summary(std::string &out, const ReplayInput &input) {
   out += ']';
 }
 
+// What a frame of the page holds when `merged` recorded frames make one: "" for one move or step.
+std::string frame_note(const ReplayInput &input, int merged) {
+  if (input.steps_per_frame <= 0) return merged > 1 ? fmt::format("{} moves a frame", merged) : "";
+  const long steps = static_cast<long>(merged) * input.steps_per_frame;
+  return steps > 1 ? fmt::format("a frame every {} steps", steps) : "";
+}
+
+// `page` with its mark <!--REPLAY_DATA--> replaced by `data`.
+std::string page_with_data(std::string_view page, const std::string &data) {
+  constexpr std::string_view kMark = "<!--REPLAY_DATA-->";
+  const std::size_t at = page.find(kMark);
+  std::string html;
+  html.reserve(page.size() + data.size());
+  html += page.substr(0, at);
+  html += data;
+  html += page.substr(at + kMark.size());
+  return html;
+}
+
 }  // namespace
+
+long replay_value(float log_odds, const MapTones &tones) {
+  return 2 * std::lround(100.0 * static_cast<double>(log_odds)) + (mapping::is_occupied(log_odds, tones.threshold) ? 1 : 0);
+}
+
+void add_history(ReplayInput &input, const GridHistory &history, std::int64_t steps) {
+  const mapping::GridGeometry &g = history.geometry();
+  input.grid = g;
+  input.initial_log_odds = history.initial_log_odds();
+  input.path.clear();
+  for (const GridHistory::Arrival &a : history.arrivals()) {
+    const mapping::Point centre{g.origin.x_m + (a.cell.x + 0.5) * g.cell_size_m,
+                                g.origin.y_m + (a.cell.y + 0.5) * g.cell_size_m};
+    input.path.push_back({a.step, centre, mapping::yaw_rad(a.heading)});
+  }
+  const std::deque<GridHistory::Change> &log = history.change_log();
+  input.changes.clear();
+  input.changes.reserve(log.size());
+  for (const GridHistory::Change &c : log) input.changes.push_back({c.index, c.value});
+  input.frames.clear();
+  const std::size_t count = std::max<std::size_t>(1, input.path.size());
+  std::size_t end = 0;
+  for (std::size_t f = 0; f < count; ++f) {
+    const bool last = f + 1 >= input.path.size();
+    const std::int64_t until = last ? steps + 1 : input.path[f + 1].step;  // the next arrival's step
+    while (end < log.size() && log[end].step < until) ++end;
+    input.frames.push_back({f, last ? steps : until - 1, -1.0, end});
+  }
+}
 
 std::string escaped_for_script(std::string json) {
   std::size_t at = json.find("</");
@@ -127,49 +187,24 @@ std::string escaped_for_script(std::string json) {
   return out;
 }
 
-std::string page_with_data(std::string_view page, const std::string &data) {
-  constexpr std::string_view kMark = "<!--REPLAY_DATA-->";
-  const std::size_t at = page.find(kMark);
-  std::string html;
-  html.reserve(page.size() + data.size());
-  html += page.substr(0, at);
-  html += data;
-  html += page.substr(at + kMark.size());
-  return html;
-}
-
-std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
-  const GridHistory &h = *input.history;
-  const mapping::GridGeometry &g = h.geometry();
+std::string replay_data_json(const ReplayInput &input, int merged) {
+  const mapping::GridGeometry &g = input.grid;
   const MapTones &t = input.tones;
   std::string out = fmt::format(
-      "{{\"version\":1,\"title\":{},\"caption\":{},\"width\":{},\"height\":{},\"k\":{},\"cell_size_m\":{},"
-      "\"initial\":{},\"occupied_increment\":{:.4f},\"free_increment\":{:.4f},\"steps\":{},\"moves_per_frame\":{},"
-      "\"reachable\":{},",
-      quoted(input.title), quoted(input.caption), g.width_cells, g.height_cells, g.subcells, g.cell_size_m,
-      encoded(h.initial_log_odds(), t), t.occupied_increment, t.free_increment, input.steps, moves_per_frame,
-      input.reachable_cells);
-  // About 12 bytes a change and 24 an arrival: reserved, so that the data is not copied as it grows.
-  out.reserve(out.size() + 12 * h.change_log().size() + 24 * h.arrivals().size() + 4096);
-  std::vector<long> goals;
-  for (const mapping::Cell c : input.goals) {
-    goals.push_back(c.x);
-    goals.push_back(c.y);
-  }
-  out += "\"goals\":";
-  append_ints(out, goals);
-  out += ",\"landmarks\":[";
-  for (std::size_t i = 0; i < input.landmarks.size(); ++i) {
-    const LandmarkMark &l = input.landmarks[i];
-    fmt::format_to(std::back_inserter(out), "{}{:.4f},{:.4f},{:.4f},{},{},{}", i == 0 ? "" : ",",
-                   (l.at.x_m - g.origin.x_m) / g.cell_size_m, (l.at.y_m - g.origin.y_m) / g.cell_size_m,
-                   l.radius_m / g.cell_size_m, static_cast<int>(l.colour.r), static_cast<int>(l.colour.g),
-                   static_cast<int>(l.colour.b));
-  }
-  out += "],";
-  append_path(out, h);
+      "{{\"version\":2,\"units\":\"{}\",\"title\":{},\"caption\":{},\"frame_note\":{},\"width\":{},\"height\":{},"
+      "\"k\":{},\"cell_size_m\":{},\"origin\":[{},{}],\"initial\":{},\"occupied_increment\":{:.4f},"
+      "\"free_increment\":{:.4f},\"steps\":{},\"reachable\":{},\"body_mm\":{},\"goal_mm\":{},",
+      input.units == ReplayUnits::cells ? "cells" : "metres", quoted(input.title), quoted(input.caption),
+      quoted(frame_note(input, merged)), g.width_cells, g.height_cells, g.subcells, g.cell_size_m, g.origin.x_m,
+      g.origin.y_m, replay_value(input.initial_log_odds, t), t.occupied_increment, t.free_increment, input.steps,
+      input.reachable_cells, milli(input.body_radius_m), milli(input.goal_side_m));
+  // About 12 bytes a change and 24 a pose: reserved, so that the data is not copied as it grows.
+  out.reserve(out.size() + 12 * input.changes.size() + 24 * input.path.size() + 4096);
+  append_marks(out, input);
   out += ',';
-  append_frames(out, input, moves_per_frame);
+  append_path(out, input);
+  out += ',';
+  append_frames(out, input, static_cast<std::size_t>(std::max(1, merged)));
   out += ',';
   append_summary(out, input);
   out += '}';
@@ -177,11 +212,11 @@ std::string replay_data_json(const ReplayInput &input, int moves_per_frame) {
 }
 
 std::optional<Replay> replay_html(const ReplayInput &input) {
-  const int moves = std::max<int>(1, static_cast<int>(input.history->arrivals().size()));
-  for (int per = 1;; per = std::min(per * 2, moves)) {
+  const int all = std::max<int>(1, static_cast<int>(input.frames.size()));
+  for (int per = 1;; per = std::min(per * 2, all)) {
     std::string html = page_with_data(kReplayPage, escaped_for_script(replay_data_json(input, per)));
     if (html.size() <= input.max_bytes) return Replay{std::move(html), per};
-    if (per >= moves) return std::nullopt;
+    if (per >= all) return std::nullopt;
   }
 }
 

@@ -36,13 +36,13 @@ void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m) {
   }
 }
 
-Figure truth_figure(const TruthInput &in) {
+Figure truth_frame(const TruthInput &in) {
   mapping::GridGeometry g;
   g.width_cells = in.truth->width();
   g.height_cells = in.truth->height();
   g.subcells = in.subcells;
   const int cell_px = in.subcells * map_scale(g);
-  const int side_px = truth_side_px(cell_px);
+  const int side_px = map_margin_px(g);
   Figure fig;
   fig.map_w_px = in.truth->width() * cell_px + 2 * side_px;
   fig.map_h_px = in.truth->height() * cell_px + 2 * side_px;
@@ -51,7 +51,7 @@ Figure truth_figure(const TruthInput &in) {
 }
 
 TruthLayout layout_of(const TruthInput &in, PointPx origin) {
-  const Figure fig = truth_figure(in);
+  const Figure fig = truth_frame(in);
   TruthLayout l;
   l.origin = origin;
   l.cell_px = fig.axes->cell_px;
@@ -149,13 +149,13 @@ void truth_legend(Figure &fig, const TruthInput &in, const TruthCounts &counts, 
                                   score.sides_correct, score.sides));
   fig.lines.push_back(fmt::format("coverage {:.2f}% ({}/{} cells)", score.coverage_percent(),
                                   score.visited_reachable_cells, score.reachable_cells));
-  fig.items = {{Swatch::line, kRightWallColour, "wall right"},
-               {Swatch::line, kMissedColour, fmt::format("missed ({})", counts.missed)},
-               {Swatch::line, kPhantomColour, fmt::format("phantom ({})", counts.phantom)},
-               {Swatch::line, kUnseenColour, fmt::format("unseen opening ({})", counts.unseen_opening)},
-               {Swatch::box, kWhite, "visited"},
-               {Swatch::box, kUnvisitedTone, "not visited"},
-               {Swatch::box, kUnreachableTone, "unreachable"},
+  fig.items = {{Swatch::line, kRightWallColour, "wall, mapped correctly"},
+               {Swatch::line, kMissedColour, fmt::format("wall the map missed ({})", counts.missed)},
+               {Swatch::line, kPhantomColour, fmt::format("wall the map invented ({})", counts.phantom)},
+               {Swatch::line, kUnseenColour, fmt::format("opening never seen ({})", counts.unseen_opening)},
+               {Swatch::box, kWhite, "cell visited"},
+               {Swatch::box, kUnvisitedTone, "cell not visited"},
+               {Swatch::box, kUnreachableTone, "cell unreachable"},
                {Swatch::line, kUnscoredWallColour, "wall, not scored"},
                {Swatch::square, kStartColour, "start"},
                {Swatch::frame, kGoalColour, "goal"}};
@@ -184,7 +184,7 @@ std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth) {
   return marks;
 }
 
-int truth_side_px(int cell_px) { return std::max(2, cell_px / 10); }
+int truth_side_px(int cell_px) { return std::max(2, cell_px / 10); }  // map_margin_px's rule
 
 TruthCounts count_verdicts(const TruthInput &in) {
   const std::vector<bool> reachable = in.truth->reachable_from_start();
@@ -209,26 +209,30 @@ PointPx truth_origin_px(const maze::Maze &truth, int subcells) {
   TruthInput in;
   in.truth = &truth;
   in.subcells = subcells;
-  const TruthLayout l = layout_of(in, layout_figure(truth_figure(in)).map_origin);
+  const TruthLayout l = layout_of(in, layout_figure(truth_frame(in)).map_origin);
   return {l.origin.x + l.side_px, l.origin.y + l.side_px};
 }
 
-Drawing truth_picture(const TruthInput &in, PictureFormat format) {
+Figure truth_figure(const TruthInput &in) {
+  Figure fig = truth_frame(in);
+  truth_legend(fig, in, count_verdicts(in), layout_of(in, {}));
+  return fig;
+}
+
+Drawing truth_picture(const TruthInput &in, PictureFormat format, const std::optional<PageFrame> &page) {
   const maze::Maze &m = *in.truth;
   const std::vector<bool> reachable = m.reachable_from_start();
-  const TruthCounts counts = count_verdicts(in);
-  Figure fig = truth_figure(in);
-  truth_legend(fig, in, counts, layout_of(in, {}));
-  const FigureLayout layout = layout_figure(fig);
+  const Figure fig = truth_figure(in);
+  const FigureLayout layout = page ? layout_figure(fig, *page) : layout_figure(fig);
   const TruthLayout l = layout_of(in, layout.map_origin);
-  Drawing page(layout.width, layout.height, format);
-  draw_cells(page, l, in, reachable, 0.6 * layout.font_px);
-  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::right), kRightWallColour);
-  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::missed), kMissedColour);
-  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::phantom), kPhantomColour);
-  page.fill_rects(sides_judged(l, in, reachable, SideVerdict::unseen_opening), kUnseenColour);
-  draw_figure(page, fig, layout);
-  return page;
+  Drawing drawing(layout.width, layout.height, format);
+  draw_cells(drawing, l, in, reachable, 0.6 * layout.font_px);
+  drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::right), kRightWallColour);
+  drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::missed), kMissedColour);
+  drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::phantom), kPhantomColour);
+  drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::unseen_opening), kUnseenColour);
+  draw_figure(drawing, fig, layout);
+  return drawing;
 }
 
 }  // namespace app

@@ -1,25 +1,29 @@
 #pragma once
 // truth.png: the true maze with what the run learned of it (only the composition root holds
-// both). North up, each cell a square of K * map_scale() pixels (as in map.png), inside a
-// margin of one side's thickness:
+// both). North up, each cell a square of K * map_scale() pixels inside a margin of one side's
+// thickness, the same map area as map.png's (map_margin_px):
 //
 //   cell     visited: white; reachable but never visited: shaded kUnvisitedTone;
 //            unreachable from the start: kUnreachableTone
-//   side     each side wall_accuracy scores (app/run/evaluation.hpp), by its verdict:
-//              right wall      kRightWallColour (black)
+//   side     each side wall_accuracy scores (app/run/evaluation.hpp), by its verdict, and
+//            the legend's words for it:
+//              right wall      kRightWallColour (black), "wall, mapped correctly"
 //              right opening   nothing drawn
-//              missed          kMissedColour (red): a true wall the map lacks
-//              phantom         kPhantomColour (magenta): a wall the map invented
-//              unseen opening  kUnseenColour (blue-grey), the middle half of the side only
+//              missed          kMissedColour (red), "wall the map missed": a true wall the map lacks
+//              phantom         kPhantomColour (magenta), "wall the map invented"
+//              unseen opening  kUnseenColour (blue-grey), the middle half of the side only,
+//                              "opening never seen"
 //            the walls of unreachable cells, not scored, in kUnscoredWallColour
 //   marks    the start a green square, the goals gold frames (app/picture/map_picture.hpp), each
 //            landmark a disc of its colour ringed in black, as wide as the course's cylinder
 //   axes     cell indices (x, y)
-//   legend   the caption, "wall_accuracy 97.50% (156/160 sides)" and "coverage 93.75%
-//            (15/16 cells)", the numbers of the summary, then the colours with the counts
-//            ("missed (2)", ...) and a scale bar in metres.
+//   legend   the caption ("truth: maze8x8.txt, model cell, K 3"), "wall_accuracy 97.50%
+//            (156/160 sides)" and "coverage 93.75% (15/16 cells)", the numbers of the summary,
+//            then the colours with the counts ("wall the map missed (2)", ...) and a scale bar
+//            in metres.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,7 +67,12 @@ TruthCounts count_verdicts(const TruthInput &input);
 // The side's thickness and the margin, in pixels, for a cell `cell_px` wide.
 int truth_side_px(int cell_px);
 
-Drawing truth_picture(const TruthInput &input, PictureFormat format = PictureFormat::png);
+// The figure truth_picture draws: its map area (map.png's, app/picture/map_picture.hpp), axes
+// and legend (for shared_page).
+Figure truth_figure(const TruthInput &input);
+// The picture on its own page, or on `page` (shared with the run's other pictures).
+Drawing truth_picture(const TruthInput &input, PictureFormat format = PictureFormat::png,
+                      const std::optional<PageFrame> &page = std::nullopt);
 // Where cell (0, H - 1)'s top-left corner is in the picture of `truth` at K `subcells`.
 PointPx truth_origin_px(const maze::Maze &truth, int subcells);
 

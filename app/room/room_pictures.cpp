@@ -44,6 +44,7 @@ PlainGrid room_grid(const sensing::MetricMap &map, ToneOf tone_of) {
   g.x0_m = map.spec().boundary.x_start_m;
   g.y0_m = map.spec().boundary.y_start_m;
   g.cell_w_m = g.cell_h_m = map.cell_m();
+  g.axes_in_metres = true;
   g.tones.reserve(map.size());
   for (std::size_t n = 0; n < map.size(); ++n) g.tones.push_back(tone_of(n));
   return g;
@@ -82,6 +83,65 @@ void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::MetricCo
   if (plan.size() >= 2) page.polyline(plan, std::max(1.5, frame.cell_w_px / 5), kPlannedColour);
 }
 
+// The caption and, when the picture has one, the moment it shows.
+std::vector<std::string> caption_lines(const RoomPictureMarks &marks) {
+  std::vector<std::string> lines{marks.caption};
+  if (!marks.when.empty()) lines.push_back(marks.when);
+  return lines;
+}
+
+// A score as the picture prints it: its percentage, without the counts in brackets.
+std::string percentage(const std::string &score) { return score.substr(0, score.find(" (")); }
+
+Figure map_legend(const RoomPictureMarks &marks, const MapTones &tones, bool has_plan) {
+  Figure legend;
+  legend.lines = caption_lines(marks);
+  legend.items = {{Swatch::line, kPathColour, "trajectory"},
+                  {Swatch::square, kStartColour, "start"},
+                  {Swatch::disc, kEndColour, "robot"}};
+  if (has_plan) legend.items.push_back({Swatch::line, kPlannedColour, "last plan"});
+  if (marks.goal) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
+  legend.bar = map_tone_bar(tones, "never observed (prior)");
+  return legend;
+}
+
+Figure truth_legend(const RoomPictureMarks &marks, const RoomTruthScores &scores) {
+  Figure legend;
+  legend.lines = caption_lines(marks);
+  legend.lines.push_back(fmt::format("cell_accuracy {}, coverage {}", percentage(scores.cell_accuracy),
+                                     percentage(scores.coverage)));
+  legend.items = {{Swatch::box, kOccupiedRightTone, "occupied, mapped occupied"},
+                  {Swatch::box, kMissedTone, "occupied, mapped free"},
+                  {Swatch::box, kPhantomTone, "free, mapped occupied"},
+                  {Swatch::box, kUnknownTone, "never observed"},
+                  {Swatch::box, kUnreachableFreeTone, "free, not reachable"},
+                  {Swatch::line, kPathColour, "trajectory"},
+                  {Swatch::disc, kEndColour, "robot"}};
+  return legend;
+}
+
+Figure wave_legend(const RoomPictureMarks &marks, std::int32_t top, bool has_plan) {
+  Figure legend;
+  legend.lines = caption_lines(marks);
+  legend.lines.push_back(fmt::format("the wave's numbers: 1 blocked, 2 the goal, up to {} the farthest", top));
+  legend.items = {{Swatch::box, kBlockedTone, "1: obstacle, grown"}, {Swatch::box, kGoalColour, "2: goal"}};
+  if (has_plan) legend.items.push_back({Swatch::line, kPlannedColour, "path"});
+  legend.items.push_back({Swatch::disc, kEndColour, "robot"});
+  ColourBar bar;
+  bar.name = "wave";
+  const int samples = 60;
+  for (int k = 0; k < samples; ++k) {
+    bar.tones.push_back(wave_tone(plan::kWaveGoal + 1 + (top - plan::kWaveGoal - 1) * k / (samples - 1), top));
+  }
+  bar.ticks = {{0.0, fmt::format("{}", plan::kWaveGoal + 1), ""},
+               {1.0, fmt::format("{}", std::max(top, plan::kWaveGoal + 1)), ""}};
+  bar.left_word = "near the goal";
+  bar.right_word = "far";
+  bar.extra = LegendItem{Swatch::box, kUnreachedTone, "0: not reached"};
+  legend.bar = bar;
+  return legend;
+}
+
 }  // namespace
 
 MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold) {
@@ -97,14 +157,6 @@ std::string room_map_picture(const robot::MetricController &c, const MapTones &t
                              PictureFormat format) {
   const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
-  Figure legend;
-  legend.lines = {marks.caption};
-  legend.items = {{Swatch::line, kPathColour, "trajectory"},
-                  {Swatch::square, kStartColour, "start"},
-                  {Swatch::disc, kEndColour, "robot"}};
-  if (c.path().size() >= 2) legend.items.push_back({Swatch::line, kPlannedColour, "last plan"});
-  if (marks.goal) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
-  legend.bar = map_tone_bar(tones, "never observed");
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
     for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
@@ -115,22 +167,15 @@ std::string room_map_picture(const robot::MetricController &c, const MapTones &t
     draw_goal(page, frame, marks);
     draw_robot(page, frame, c);
   };
-  return plain_grid_picture(g, legend, overlay, format).encode();
+  return plain_grid_picture(g, map_legend(marks, tones, c.path().size() >= 2), overlay, format,
+                            room_page(map, marks))
+      .encode();
 }
 
 std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
                                const RoomPictureMarks &marks, const RoomTruthScores &scores, PictureFormat format) {
   const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
-  Figure legend;
-  legend.lines = {marks.caption, "cell_accuracy " + scores.cell_accuracy, "coverage " + scores.coverage};
-  legend.items = {{Swatch::box, kOccupiedRightTone, "occupied, mapped so"},
-                  {Swatch::box, kMissedTone, "occupied, mapped free"},
-                  {Swatch::box, kPhantomTone, "free, mapped occupied"},
-                  {Swatch::box, kUnknownTone, "never observed"},
-                  {Swatch::box, kUnreachableFreeTone, "free, not reachable"},
-                  {Swatch::line, kPathColour, "trajectory"},
-                  {Swatch::disc, kEndColour, "robot"}};
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
     for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
@@ -139,7 +184,7 @@ std::string room_truth_picture(const robot::MetricController &c, const maze::Are
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
     draw_robot(page, frame, c);
   };
-  return plain_grid_picture(g, legend, overlay, format).encode();
+  return plain_grid_picture(g, truth_legend(marks, scores), overlay, format, room_page(map, marks)).encode();
 }
 
 Rgb wave_tone(std::int32_t value, std::int32_t top) {
@@ -159,28 +204,27 @@ std::string room_wave_picture(const robot::MetricController &c, const RoomPictur
   const std::vector<std::int32_t> &wave = c.wave();
   const std::int32_t top = wave.empty() ? plan::kWaveGoal : *std::max_element(wave.begin(), wave.end());
   const PlainGrid g = room_grid(c.map(), [&](std::size_t n) { return wave_tone(wave[n], top); });
-  Figure legend;
-  legend.lines = {marks.caption, fmt::format("the wave's numbers: 1 blocked, 2 the goal, up to {} the farthest", top)};
-  legend.items = {{Swatch::box, kBlockedTone, "1: obstacle, grown"}, {Swatch::box, kGoalColour, "2: goal"}};
-  if (c.path().size() >= 2) legend.items.push_back({Swatch::line, kPlannedColour, "path"});
-  legend.items.push_back({Swatch::disc, kEndColour, "robot"});
-  ColourBar bar;
-  bar.name = "wave";
-  const int samples = 60;
-  for (int k = 0; k < samples; ++k) {
-    bar.tones.push_back(wave_tone(plan::kWaveGoal + 1 + (top - plan::kWaveGoal - 1) * k / (samples - 1), top));
-  }
-  bar.ticks = {{0.0, fmt::format("{}", plan::kWaveGoal + 1)}, {1.0, fmt::format("{}", std::max(top, plan::kWaveGoal + 1))}};
-  bar.left_word = "near the goal";
-  bar.right_word = "far";
-  bar.extra = LegendItem{Swatch::box, kUnreachedTone, "0: not reached"};
-  legend.bar = bar;
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     draw_plan(page, frame, c);
     draw_goal(page, frame, marks);
     draw_robot(page, frame, c);
   };
-  return plain_grid_picture(g, legend, overlay, format).encode();
+  return plain_grid_picture(g, wave_legend(marks, top, c.path().size() >= 2), overlay, format,
+                            room_page(c.map(), marks))
+      .encode();
+}
+
+PageFrame room_page(const sensing::MetricMap &map, const RoomPictureMarks &marks) {
+  const PlainGrid g = room_grid(map, [](std::size_t) { return kWhite; });
+  RoomPictureMarks widest = marks;
+  widest.when = "step 9999999, 99999.9 s";
+  widest.goal = mapping::Point{};
+  const RoomTruthScores scores{"100.00%", "100.00%"};
+  const auto most = static_cast<std::int32_t>(map.size()) + plan::kWaveGoal;
+  // The map's legend with the default tones: its colour bar is as wide whatever the set-up.
+  return shared_page({plain_grid_figure(g, map_legend(widest, MapTones{}, true)),
+                      plain_grid_figure(g, truth_legend(widest, scores)),
+                      plain_grid_figure(g, wave_legend(widest, most, true))});
 }
 
 }  // namespace app

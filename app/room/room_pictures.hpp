@@ -1,6 +1,7 @@
 #pragma once
 // The room run's pictures (app/picture's drawing and page layout, as the maze's map.png and
-// map-log's pictures), north up, one block a map cell, the cells' i and j on the axes:
+// map-log's pictures), north up, one block a map cell, the axes in metres, every picture of a
+// run on one page size (room_page):
 //
 //   map    the log-odds in map.png's tones (occupied dark, free light, graded by the
 //          set-up's own increments; never observed blue-grey), the trajectory in red from the
@@ -11,10 +12,10 @@
 //          tone from light (near the goal) to deep blue (the farthest), cells it never
 //          reached (0) white; the path and the robot over it.
 //   truth  the map scored against the truth at the map's resolution, as the summary's
-//          cell_accuracy and coverage count it: occupied cells learned right near-black,
-//          missed (mapped free) red, phantoms (occupied on the map, free in truth) magenta,
-//          free cells white where reachable and light grey where not, cells never observed
-//          blue-grey; the trajectory, start and robot over it.
+//          cell_accuracy and coverage count it (their percentages in the legend): occupied
+//          cells learned right near-black, missed (mapped free) red, phantoms (occupied on
+//          the map, free in truth) magenta, free cells white where reachable and light grey
+//          where not, cells never observed blue-grey; the trajectory, start and robot over it.
 
 #include <cstdint>
 #include <optional>
@@ -34,7 +35,8 @@ namespace app {
 struct RoomPictureMarks {
   mapping::Point start;
   std::optional<mapping::Point> goal;
-  std::string caption;  // the legend's first line
+  std::string caption;  // the legend's first line: the world, the strategy, the set-up
+  std::string when;     // the second line of the map's and the wave's: "step 50, 1.6 s" (may be empty)
 };
 
 // The map tones of a room run: the map's prior and the set-up's increments, --threshold.
@@ -58,6 +60,10 @@ struct RoomTruthScores {
 std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
                                const RoomPictureMarks &marks, const RoomTruthScores &scores,
                                PictureFormat format = PictureFormat::png);
+
+// The page every picture of a room run on this map is drawn on (map, wave, truth, their
+// snapshots): one size, one font and one scale, so that they can be flipped between.
+PageFrame room_page(const sensing::MetricMap &map, const RoomPictureMarks &marks);
 
 // The tone of a wave number (plan/metric_wavefront.hpp's): `top` the largest in the wave.
 Rgb wave_tone(std::int32_t value, std::int32_t top);

@@ -217,7 +217,7 @@ class RoomLog {
   void draw(const robot::MetricController &c, const std::string &map, const std::string &wave) {
     if (options_.out_dir.empty()) return;
     RoomPictureMarks marks = marks_;
-    marks.caption += fmt::format(", step {}, {:.1f} s", c.steps(), c.time_s());
+    marks.when = fmt::format("step {}, {:.1f} s", c.steps(), c.time_s());
     pictures_.push_back({map + ".png", room_map_picture(c, tones_, marks)});
     if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
       pictures_.push_back({wave + ".png", room_wave_picture(c, marks)});
@@ -281,7 +281,6 @@ RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &
   RoomReplayText text;
   text.title = options.world;
   text.caption = marks.caption;
-  text.start = marks.start;
   text.goal = marks.goal;
   text.body_radius_m = room.body_radius_m;
   for (auto &[key, value] : summary_pairs(report)) {
@@ -369,9 +368,9 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
   RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
   std::optional<RoomReplay> replay;
-  if (!options.out_dir.empty()) replay.emplace(map, tones);
+  if (!options.out_dir.empty()) replay.emplace(map, tones, ReplayPose{0, {start_pose.x_m, start_pose.y_m}, start_pose.yaw_rad});
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
-                                        [&log, &replay](const robot::MetricController &c) {
+                                          [&log, &replay](const robot::MetricController &c) {
                                           log.on_step(c);
                                           if (replay) replay->on_step(c);
                                         },
@@ -398,8 +397,8 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
     files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold,
                                                      picture_marks(options, setup, room), scores)});
     replay->finish(controller_loop);
-    if (std::optional<std::string> page = replay->html(replay_text(options, setup, room, report))) {
-      files.push_back({"replay.html", std::move(*page)});
+    if (std::optional<Replay> page = replay_html(replay->input(replay_text(options, setup, room, report)))) {
+      files.push_back({"replay.html", std::move(page->html)});
     }
     write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
   }
