@@ -109,7 +109,7 @@ TEST_CASE("batch merge: a room row that ended incomplete, or an mms row that mis
   const test_cli::TempDir dir("merge_kind_ends");
   const std::vector<app::BatchRow> rows =
       merge_parts(dir, {kRowHeader + "\n" + "r.room,room,ir-fan,pie,frontier,42,,incomplete,,10,,1.000,3,50.00,,80.00,,,,\n" +
-                   "t.room,room,ir-fan,pie,wander,42,,time up,,10,,1.000,3,50.00,,80.00,,,,\n" +
+                   "t.room,room,ir-fan,pie,wander,42,,time limit,,10,,1.000,3,50.00,,80.00,,,,\n" +
                    "m.txt,mms,hambot,cell,f,42,4x4,exited,,7,2,1.000,5,10.00,90.00,,not reached,,0,\n"});
   REQUIRE(rows.size() == 3);
   CHECK_FALSE(rows[0].ok);

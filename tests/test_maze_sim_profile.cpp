@@ -44,9 +44,14 @@ TEST_CASE("profiles: hambot-2025 is last year's robot, motors of 18 rad/s; hambo
   CHECK(last_year.lidars[0].frequency_hz == 12.0);
   CHECK(last_year.lidars[0].resolution_m == 0.0);
   CHECK(last_year.max_wheel_velocity_rad_s == 18.0);
-  // The same wheels and devices as this term's robot: only the lidar and the motors' maximum differ.
+  // The speed run's top speed is the motors' at the wheel's rim: 18 x 0.045 m/s, and this term's 20 x 0.045.
+  REQUIRE(last_year.speed_run);
+  CHECK(last_year.speed_run->top_speed_m_s == 0.81);
+  CHECK(maze::sim::default_profile().speed_run->top_speed_m_s == 0.9);
+  // The same wheels and devices as this term's robot: only the lidar and the motors' maximum (and the speed run's top speed with it) differ.
   maze::sim::RobotProfile as_today = last_year;
   as_today.max_wheel_velocity_rad_s = maze::sim::default_profile().max_wheel_velocity_rad_s;
+  as_today.speed_run = maze::sim::default_profile().speed_run;  // its top speed, the motors'
   as_today.name = "hambot";
   as_today.description = maze::sim::default_profile().description;
   as_today.lidars = maze::sim::default_profile().lidars;

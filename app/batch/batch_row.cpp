@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "app/run/step_limit.hpp"
 #include "app/mms/mms_session.hpp"
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
@@ -222,12 +223,13 @@ bool batch_row_ok(const BatchRow &row) {
   if (!row.ran || !row.error.empty()) return false;
   switch (row.kind) {
     case RunKind::maze:
-      // As exit_status: a run that ended other than done (or at a step limit, which the CSV
-      // does not say was the user's) did not map its maze.
-      return one_of(row.end, {robot::to_string(robot::EndReason::done), robot::to_string(robot::EndReason::max_steps)});
+      // As exit_status: a run that ended other than done (or at a step or time limit, which
+      // the CSV does not say was the user's) did not map its maze.
+      return one_of(row.end, {robot::to_string(robot::EndReason::done), robot::to_string(robot::EndReason::max_steps),
+                              kTimeLimitEnd});
     case RunKind::room:
-      return one_of(row.end, {robot::to_string(robot::RoomEnding::done), robot::to_string(robot::RoomEnding::goal_reached),
-                              robot::to_string(robot::RoomEnding::arrived), robot::to_string(robot::RoomEnding::time_up)});
+      return one_of(row.end, {robot::to_string(robot::MetricEnding::done), robot::to_string(robot::MetricEnding::goal_reached),
+                              robot::to_string(robot::MetricEnding::arrived), robot::to_string(robot::MetricEnding::time_up)});
     case RunKind::mms:
       return one_of(row.end, {to_string(MmsEnd::exited), to_string(MmsEnd::reached)}) && row.goal == "reached";
   }

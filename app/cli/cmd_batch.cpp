@@ -85,6 +85,54 @@ void warn_maze_only_options(const std::vector<BatchJob> &jobs, const RunOptions 
   }
 }
 
+// The worlds a batch runs (folders expanded, its shard taken), checked: --csv is none of
+// them, and an empty list is an error (an empty shard a warning).
+WorldList batch_world_list(const BatchInput &batch, KindChoice choice) {
+  WorldList list = expand_worlds(batch.worlds, choice);
+  if (!batch.csv.empty()) common::refuse_output_over_input("--csv", batch.csv, list.worlds);
+  if (!batch.shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch.shard));
+  if (list.worlds.empty() && !batch.shard.empty()) {
+    fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch.shard);
+  } else if (list.worlds.empty()) {
+    throw common::InputError(fmt::format("no world to run: the folders hold no {} file ({} other file{} skipped)",
+                                         choice == KindChoice::maze ? "maze" : "world", list.skipped.size(),
+                                         list.skipped.size() == 1 ? "" : "s"));
+  }
+  return list;
+}
+
+// A batch of maze and room runs: its progress line, the runs, the table, the CSV; the exit status.
+int run_world_batch(const CLI::App &command, const RunOptions &options, const BatchInput &batch,
+                    const WorldList &list, KindChoice choice, int jobs) {
+  const auto started = std::chrono::steady_clock::now();
+  std::optional<BatchProgressLine> progress_line;
+  std::function<void(std::size_t, std::size_t)> progress;
+  if (is_terminal(STDERR_FILENO)) {
+    progress_line.emplace(STDERR_FILENO);
+    progress = [&progress_line](std::size_t done, std::size_t total) { progress_line->update(done, total); };
+  }
+  const common::SignalsStopWork stop_signals;  // until the CSV holds the finished runs
+  const std::vector<BatchJob> batch_jobs = batch.each_start
+                                               ? each_start_jobs(list.worlds, options.world_overrides, choice)
+                                               : plain_jobs(list.worlds, choice);
+  const auto given = [&command](std::string_view name) {
+    const CLI::Option *option = command.get_option_no_throw(std::string(name));
+    return option != nullptr && option->count() > 0;
+  };
+  warn_maze_only_options(batch_jobs, options, given);
+  const BatchOptions batch_options(options, room_options_for(options, given));
+  const std::vector<BatchItem> items = run_batch(batch_options, batch_jobs, jobs, progress, &common::interrupted);
+  progress_line.reset();  // cleared before the table
+  const double elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  for (const BatchItem &item : items) {
+    if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
+  }
+  std::cout << format_batch_table(items, elapsed_ms, list.skipped, list.skipped_as) << std::flush;
+  if (!batch.csv.empty()) common::write_file_atomically(batch.csv, format_batch_csv(items));
+  return batch_exit_status(items);
+}
+
 }  // namespace
 
 void add_batch_command(CLI::App &cli, CommandContext &context) {
@@ -127,47 +175,12 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     if (mms_batch && choice == KindChoice::room) {
       throw common::InputError("--kind room: an mms algorithm runs in mazes (--kind maze or auto)");
     }
-    WorldList list = expand_worlds(batch->worlds, mms_batch ? KindChoice::maze : choice);
-    if (!batch->csv.empty()) common::refuse_output_over_input("--csv", batch->csv, list.worlds);
-    if (!batch->shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch->shard));
-    if (list.worlds.empty() && !batch->shard.empty()) {
-      fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch->shard);
-    } else if (list.worlds.empty()) {
-      throw common::InputError(fmt::format("no world to run: the folders hold no {} file ({} other file{} skipped)",
-                                           choice == KindChoice::maze || mms_batch ? "maze" : "world",
-                                           list.skipped.size(), list.skipped.size() == 1 ? "" : "s"));
-    }
+    const WorldList list = batch_world_list(*batch, mms_batch ? KindChoice::maze : choice);
     if (mms_batch) {
       context.status = run_mms_batch_command(*command, options, *mms, context.child_command, list, jobs, batch->csv);
       return;
     }
-    const auto started = std::chrono::steady_clock::now();
-    std::optional<BatchProgressLine> progress_line;
-    std::function<void(std::size_t, std::size_t)> progress;
-    if (is_terminal(STDERR_FILENO)) {
-      progress_line.emplace(STDERR_FILENO);
-      progress = [&progress_line](std::size_t done, std::size_t total) { progress_line->update(done, total); };
-    }
-    const common::SignalsStopWork stop_signals;  // until the CSV holds the finished runs
-    const std::vector<BatchJob> batch_jobs = batch->each_start
-                                                 ? each_start_jobs(list.worlds, options.world_overrides, choice)
-                                                 : plain_jobs(list.worlds, choice);
-    const auto given = [command](std::string_view name) {
-      const CLI::Option *option = command->get_option_no_throw(std::string(name));
-      return option != nullptr && option->count() > 0;
-    };
-    warn_maze_only_options(batch_jobs, options, given);
-    const BatchOptions batch_options(options, room_options_for(options, given));
-    const std::vector<BatchItem> items = run_batch(batch_options, batch_jobs, jobs, progress, &common::interrupted);
-    progress_line.reset();  // cleared before the table
-    const double elapsed_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    for (const BatchItem &item : items) {
-      if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
-    }
-    std::cout << format_batch_table(items, elapsed_ms, list.skipped, list.skipped_as) << std::flush;
-    if (!batch->csv.empty()) common::write_file_atomically(batch->csv, format_batch_csv(items));
-    context.status = batch_exit_status(items);
+    context.status = run_world_batch(*command, options, *batch, list, choice, jobs);
   });
 }
 

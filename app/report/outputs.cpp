@@ -280,11 +280,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   ReplayInput input;
   add_history(input, *files.history, summary.steps);
   input.tones = map_tones(options, *files.model);
-  const mapping::GridGeometry &g = input.grid;
-  for (const mapping::Cell c : files.goals) {
-    input.goals.push_back({g.origin.x_m + (c.x + 0.5) * g.cell_size_m, g.origin.y_m + (c.y + 0.5) * g.cell_size_m});
-  }
-  input.goal_side_m = 0.75 * g.cell_size_m;
+  add_goal_cells(input, files.goals);
   input.landmarks = files.landmarks;
   input.title = options.world;
   input.caption = map_caption(options);

@@ -187,6 +187,14 @@ std::string escaped_for_script(std::string json) {
   return out;
 }
 
+void add_goal_cells(ReplayInput &input, const std::vector<mapping::Cell> &cells) {
+  const mapping::GridGeometry &g = input.grid;
+  for (const mapping::Cell c : cells) {
+    input.goals.push_back({g.origin.x_m + (c.x + 0.5) * g.cell_size_m, g.origin.y_m + (c.y + 0.5) * g.cell_size_m});
+  }
+  input.goal_side_m = 0.75 * g.cell_size_m;
+}
+
 std::string replay_data_json(const ReplayInput &input, int merged) {
   const mapping::GridGeometry &g = input.grid;
   const MapTones &t = input.tones;

@@ -106,6 +106,9 @@ struct Replay {
 // the poses at the cells' centres facing their headings. Sets grid, initial_log_odds, path,
 // changes and frames of `input`.
 void add_history(ReplayInput &input, const GridHistory &history, std::int64_t steps);
+// A maze's goal cells as the page's goals: their centres on input.grid (add_history's), each
+// framed three quarters of a cell wide.
+void add_goal_cells(ReplayInput &input, const std::vector<mapping::Cell> &cells);
 
 // A sub-cell's value in the data: 2 * round(100 * log_odds) + (1 if occupied by the tones' rule).
 long replay_value(float log_odds, const MapTones &tones);

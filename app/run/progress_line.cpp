@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "app/run/terminal.hpp"
+
 namespace app {
 namespace {
 
@@ -21,6 +23,14 @@ void write_progress(int fd, const std::string &text) {
     if (n <= 0) return;
     done += static_cast<std::size_t>(n);
   }
+}
+
+// The line cut to one column less than the terminal's width, so that it never wraps (a
+// wrapped line is not cleared by kClearLine and scrolls what was printed before it away).
+std::string fitted_to_terminal(int fd, std::string line) {
+  const int columns = terminal_size(fd).columns;
+  if (columns > 1 && line.size() >= static_cast<std::size_t>(columns)) line.resize(static_cast<std::size_t>(columns - 1));
+  return line;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -73,7 +83,8 @@ void ProgressLine::update(int moves, int visited, double sim_time_s) {
   const auto now = std::chrono::steady_clock::now();
   if (now < next_draw_) return;
   next_draw_ = now + std::chrono::milliseconds(100);
-  write_progress(fd_, kClearLine + format_run_progress(moves, visited, reachable_cells_, sim_time_s, seconds_since(started_)));
+  write_progress(fd_, kClearLine + fitted_to_terminal(fd_, format_run_progress(moves, visited, reachable_cells_,
+                                                                               sim_time_s, seconds_since(started_))));
   drawn_ = true;
 }
 
@@ -84,7 +95,7 @@ BatchProgressLine::~BatchProgressLine() {
 }
 
 void BatchProgressLine::update(std::size_t done, std::size_t total) {
-  write_progress(fd_, kClearLine + format_batch_progress(done, total, seconds_since(started_)));
+  write_progress(fd_, kClearLine + fitted_to_terminal(fd_, format_batch_progress(done, total, seconds_since(started_))));
   drawn_ = true;
 }
 

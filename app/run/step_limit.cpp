@@ -26,7 +26,7 @@ void name_step_limit(const RunOptions &options, RunSummary &summary) {
 }
 
 std::string end_reason_name(const RunSummary &summary) {
-  if (summary.time_limited && summary.reason == robot::EndReason::max_steps) return "time limit";
+  if (summary.time_limited && summary.reason == robot::EndReason::max_steps) return std::string(kTimeLimitEnd);
   return std::string(robot::to_string(summary.reason));
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "app/run/run.hpp"
 
@@ -23,7 +24,9 @@ StepLimit step_limit(const RunOptions &options, const maze::Maze &maze);
 // A run stopped by its step limit says which: `S s of simulated time` (--time-limit's), or the
 // default limit (a failure); a --max-steps the user gave needs no words.
 void name_step_limit(const RunOptions &options, RunSummary &summary);
-// The summary's `end`: `time limit` for a run --time-limit stopped, else the controller's
+// The `end` of a run --time-limit stopped.
+inline constexpr std::string_view kTimeLimitEnd = "time limit";
+// The summary's `end`: kTimeLimitEnd for a run --time-limit stopped, else the controller's
 // reason (`done`, `max steps`, ...).
 std::string end_reason_name(const RunSummary &summary);
 

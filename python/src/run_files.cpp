@@ -131,9 +131,9 @@ std::optional<app::Replay> replay_page(const maze::World &world, const MazeRun &
   for (const auto &a : run.arrivals) history.arrived(a.step, a.cell, a.heading);
   if (run.kept) history.record(steps, run.grid);
   app::ReplayInput input;
-  input.history = &history;
+  app::add_history(input, history, steps);
+  app::add_goal_cells(input, goals_of(world.maze));
   input.tones = tones_of(run);
-  input.goals = goals_of(world.maze);
   input.landmarks = app::landmark_marks(world.maze);
   input.title = world.file;
   input.caption = grid_caption(run);

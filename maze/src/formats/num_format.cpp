@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "line_tokens.hpp"
 #include "maze/world/validate.hpp"
 
 namespace maze {
@@ -25,35 +26,7 @@ struct Entry {
   std::uint8_t walls;   // bit s: wall on side s
 };
 
-struct Token {
-  std::string_view text;
-  std::size_t column;  // from 0
-};
-
-// Up to seven blank-separated tokens of a line (a seventh means "too many").
-std::vector<Token> tokens_of(std::string_view line) {
-  std::vector<Token> tokens;
-  std::size_t i = 0;
-  while (i < line.size() && tokens.size() < 7) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    if (i == line.size()) break;
-    const std::size_t begin = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    tokens.push_back({line.substr(begin, i - begin), begin});
-  }
-  return tokens;
-}
-
-std::string shown(std::string_view token) {
-  std::string out;
-  for (const char c : token.substr(0, 20)) {
-    const auto u = static_cast<unsigned char>(c);
-    out += (u >= 0x20 && u < 0x7f) ? std::string(1, c) : fmt::format("\\x{:02x}", u);
-  }
-  return token.size() > 20 ? out + "..." : out;
-}
-
-struct Parser {
+struct NumParser {
   std::string_view text;
   const std::string &file;
 
@@ -61,23 +34,23 @@ struct Parser {
     return common::InputError(common::SourceLocation{file, line, static_cast<int>(column + 1)}, std::move(message));
   }
 
-  int field(const Token &t, int index, int line, int limit) const {
+  int field(const LineToken &t, int index, int line, int limit) const {
     int value = 0;
     const char *begin = t.text.data();
     const char *end = begin + t.text.size();
     const auto [stop, ec] = std::from_chars(begin, end, value);
     if (stop != end || ec == std::errc::invalid_argument) {
-      throw error(line, t.column, fmt::format("{} is not an integer: '{}'", kFieldNames[index], shown(t.text)));
+      throw error(line, t.column, fmt::format("{} is not an integer: '{}'", kFieldNames[index], shown_token(t.text)));
     }
     if (ec == std::errc() && value >= 0 && value < limit) return value;
     if (index < 2) {
-      throw error(line, t.column, fmt::format("{} must be 0 to {}, got {}", kFieldNames[index], limit - 1, shown(t.text)));
+      throw error(line, t.column, fmt::format("{} must be 0 to {}, got {}", kFieldNames[index], limit - 1, shown_token(t.text)));
     }
-    throw error(line, t.column, fmt::format("{} must be 0 or 1, got {}", kFieldNames[index], shown(t.text)));
+    throw error(line, t.column, fmt::format("{} must be 0 or 1, got {}", kFieldNames[index], shown_token(t.text)));
   }
 
   Entry entry(std::string_view line, std::size_t offset, int line_number) const {
-    const auto tokens = tokens_of(line);
+    const auto tokens = line_tokens(line, 7);
     Entry e{offset, 0, 0, 0};
     for (std::size_t i = 0; i < std::min<std::size_t>(tokens.size(), 6); ++i) {
       const int index = static_cast<int>(i);
@@ -123,7 +96,7 @@ struct Parser {
 bool before(const Entry &a, const Entry &b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
 
 // Rectangular: every cell of the W x H rectangle exactly once.
-void check_every_cell_once(const Parser &p, std::vector<Entry> &entries) {
+void check_every_cell_once(const NumParser &p, std::vector<Entry> &entries) {
   if (entries.empty()) throw common::InputError(common::SourceLocation{p.file, 0, 0}, "no cells: expected lines 'X Y N E S W'");
   std::stable_sort(entries.begin(), entries.end(), before);
   for (std::size_t i = 1; i < entries.size(); ++i) {
@@ -156,7 +129,7 @@ void check_every_cell_once(const Parser &p, std::vector<Entry> &entries) {
 
 Maze read_num(std::string_view text, const std::string &file) {
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 BOM, as the text map and XML take it
-  const Parser parser{text, file};
+  const NumParser parser{text, file};
   auto entries = std::make_shared<std::vector<Entry>>(parser.entries());
   check_every_cell_once(parser, *entries);
 
@@ -170,7 +143,7 @@ Maze read_num(std::string_view text, const std::string &file) {
   raw.where = [parser, entries, width](Cell c, Side s) {
     const Entry &e = (*entries)[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width) +
                                 static_cast<std::size_t>(c.x)];
-    const auto tokens = tokens_of(parser.line_at(e.offset));
+    const auto tokens = line_tokens(parser.line_at(e.offset), 7);
     return common::SourceLocation{parser.file, parser.line_of(e.offset),
                                   static_cast<int>(tokens[static_cast<std::size_t>(2 + static_cast<int>(s))].column + 1)};
   };

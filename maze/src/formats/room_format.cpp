@@ -13,6 +13,7 @@
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
 #include "maze/world/maze.hpp"
+#include "line_tokens.hpp"
 #include "metres_text.hpp"
 
 namespace maze {
@@ -21,29 +22,11 @@ namespace {
 
 constexpr std::string_view kKeywords[] = {"name", "boundary", "rect", "wall", "start", "goal"};
 
-struct Token {
-  std::string_view text;
-  std::size_t column;  // from 0
-};
-
 // The statement part of a line (before '#', without a trailing '\r').
 std::string_view statement_of(std::string_view line) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
   return line;
-}
-
-std::vector<Token> tokens_of(std::string_view line) {
-  std::vector<Token> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    if (i == line.size()) break;
-    const std::size_t begin = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    tokens.push_back({line.substr(begin, i - begin), begin});
-  }
-  return tokens;
 }
 
 bool is_keyword(std::string_view word) {
@@ -53,12 +36,7 @@ bool is_keyword(std::string_view word) {
   return false;
 }
 
-std::string shown(std::string_view token) {
-  const std::string head(token.substr(0, 20));
-  return token.size() > 20 ? head + "..." : head;
-}
-
-struct Parser {
+struct RoomParser {
   const std::string &file;
   int line = 0;
 
@@ -70,17 +48,17 @@ struct Parser {
   }
 
   // The project's one number rule (common/parse_number.hpp), and within 1e9 m.
-  double number(const Token &t) const {
+  double number(const LineToken &t) const {
     const std::optional<double> v = common::parse_real(t.text);
-    if (!v) throw error(t.column, fmt::format("'{}' is not a number", shown(t.text)));
+    if (!v) throw error(t.column, fmt::format("'{}' is not a number", shown_token(t.text)));
     if (!std::isfinite(*v) || std::abs(*v) > 1e9) {
-      throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown(t.text)));
+      throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown_token(t.text)));
     }
     return *v;
   }
 
   // The numbers after the keyword: at least `least`, at most `most`.
-  std::vector<double> numbers(const std::vector<Token> &tokens, std::size_t least, std::size_t most,
+  std::vector<double> numbers(const std::vector<LineToken> &tokens, std::size_t least, std::size_t most,
                               std::string_view usage) const {
     const std::size_t given = tokens.size() - 1;
     if (given < least || given > most) {
@@ -112,7 +90,7 @@ bool looks_like_room(std::string_view text) {
   while (!text.empty()) {
     const std::size_t end = text.find('\n');
     const std::string_view line = text.substr(0, end);
-    const std::vector<Token> tokens = tokens_of(statement_of(line));
+    const std::vector<LineToken> tokens = line_tokens(statement_of(line));
     if (!tokens.empty()) return is_keyword(tokens.front().text);
     if (end == std::string_view::npos) break;
     text.remove_prefix(end + 1);
@@ -122,9 +100,9 @@ bool looks_like_room(std::string_view text) {
 
 // One statement of a room file (its tokens, its line) into the arena; boundary_line is the
 // line of the boundary read so far (0: none yet).
-void read_statement(Parser &p, const std::vector<Token> &tokens, std::string_view line, Arena &arena,
+void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::string_view line, Arena &arena,
                     int &boundary_line) {
-  const Token &key = tokens.front();
+  const LineToken &key = tokens.front();
   if (key.text == "name") {
     const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
     if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
@@ -176,14 +154,14 @@ void read_statement(Parser &p, const std::vector<Token> &tokens, std::string_vie
   } else {
     throw p.error(key.column, fmt::format("unknown statement '{}': expected name, boundary, rect, wall, start or "
                                           "goal",
-                                          shown(key.text)));
+                                          shown_token(key.text)));
   }
 }
 
 Arena read_room(std::string_view text, const std::string &file) {
   Arena arena;
   arena.source = file;
-  Parser p{file};
+  RoomParser p{file};
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   int boundary_line = 0;
   std::size_t offset = 0;
@@ -192,10 +170,10 @@ Arena read_room(std::string_view text, const std::string &file) {
     const std::size_t end = std::min(text.find('\n', offset), text.size());
     const std::string_view line = text.substr(offset, end - offset);
     offset = end + 1;
-    const std::vector<Token> tokens = tokens_of(statement_of(line));
+    const std::vector<LineToken> tokens = line_tokens(statement_of(line));
     if (tokens.empty()) continue;
     read_statement(p, tokens, line, arena, boundary_line);
-    const Token &key = tokens.front();
+    const LineToken &key = tokens.front();
     if (arena.obstacles.size() > kMaxObstacles) {
       throw p.error(key.column, fmt::format("more than {} obstacles", kMaxObstacles));
     }

@@ -194,9 +194,9 @@ int Simulation::step(int duration_ms) {
   const std::int64_t limit_ms = time_limit_ms_;
   for (int i = 0; i < count; ++i) {
     advance(basic_step_s_);
-    if (touching_this_step_ && !touching_last_step_) ++collisions_;
-    touching_last_step_ = touching_this_step_;
-    touching_this_step_ = false;
+    if (collisions_.touching_this_step && !collisions_.touching_last_step) ++collisions_.count;
+    collisions_.touching_last_step = collisions_.touching_this_step;
+    collisions_.touching_this_step = false;
     time_ms_ += basic;
     ++steps_;
     if (history_steps_ > 0) {

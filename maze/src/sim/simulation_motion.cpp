@@ -106,7 +106,7 @@ void Simulation::keep_body_out_of_walls() {
   free_centres_ = with_solids([&](const auto &solids) { return solids.free_centres(pose_.x_m, pose_.y_m, radius); });
   if (free_centres_ && free_centres_->strictly_contains(pose_.x_m, pose_.y_m)) return;
   if (with_solids([&](const auto &solids) { return solids.push_out(pose_.x_m, pose_.y_m, radius); })) {
-    touching_this_step_ = true;
+    collisions_.touching_this_step = true;
   }
 }
 

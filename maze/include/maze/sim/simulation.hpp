@@ -105,6 +105,19 @@ struct DeviceState {
   double cache[3] = {0.0, 0.0, 0.0};
 };
 
+// The pose at the end of a step.
+struct PastPose {
+  std::int64_t step;
+  maze::sim::Pose pose;
+};
+
+// Collisions counted as the steps in which the body met a solid after a step in which it met none.
+struct Collisions {
+  bool touching_this_step = false;  // the body was held out of a solid during this step
+  bool touching_last_step = false;
+  std::int64_t count = 0;
+};
+
 }  // namespace simulation_detail
 
 class Simulation {
@@ -142,13 +155,12 @@ class Simulation {
   void request_stop() { stop_requested_ = true; }
   // Collisions so far: the steps in which the body met a solid (was held out of it) after a
   // step in which it met none; pressing on against a wall is one collision.
-  std::int64_t collisions() const { return collisions_; }
+  std::int64_t collisions() const { return collisions_.count; }
 
   // ---- a supervisor's edits (Webots' Supervisor API; the composition root's, never a
   // robot-side controller's) ----
-  // Adds a solid to an arena's world, at once seen by the sensors and met by the body (a body
-  // it overlaps is pushed out as it next moves). Throws common::InputError on a maze's world
-  // (its walls are on the lattice), or for a solid with a non-finite or negative size.
+  // Adds a solid to an arena's world, seen and met at once (a body it overlaps is pushed out as
+  // it moves). Throws common::InputError on a maze's world, or for a non-finite or negative size.
   void add_obstacle(const maze::Obstacle &obstacle);
   void add_disc(const maze::ArenaDisc &disc);
   // Moves the robot to pose, its origin z_m above the floor (Webots' translation and rotation
@@ -156,11 +168,9 @@ class Simulation {
   // taken afresh at the new pose. GPS z reads z_m from then on.
   void teleport(const maze::sim::Pose &pose, double z_m);
   double height_m() const { return height_m_; }
-  // Webots' simulationReset (its Supervisor reference, "Reset from Supervisor"), as far as this
-  // world goes: the solids added since the start are gone, the robot stands at its start pose
-  // with its wheels at rest and its encoders at 0, and the simulated time is back at 0. The
-  // time limit counts every step since the simulation began (steps()), so a controller that
-  // resets still ends there.
+  // Webots' simulationReset ("Reset from Supervisor"): the solids added since the start gone,
+  // the robot at its start pose, wheels at rest, encoders and simulated time at 0. The time
+  // limit counts steps(), resets included, so a controller that resets still ends there.
   void reset_world();
   // The distance from (x, y) along angle_rad to the first solid, +infinity beyond max_range_m
   // (what a supervisor checks a line of sight with).
@@ -193,6 +203,7 @@ class Simulation {
   using Kind = simulation_detail::DeviceKind;
   using Wheel = simulation_detail::Wheel;
   using DeviceState = simulation_detail::DeviceState;
+  using PastPose = simulation_detail::PastPose;
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
@@ -253,22 +264,16 @@ class Simulation {
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;
-  double basic_step_s_ = 0.0;      // the basic time step in seconds, and the time limit in
-  std::int64_t time_limit_ms_ = 0; // ms (0: none), computed once from the options
+  double basic_step_s_ = 0.0;       // computed once from the options
+  std::int64_t time_limit_ms_ = 0;  // 0: none
   std::int64_t lidar_beams_cast_ = 0;
   bool stop_requested_ = false;
-  bool touching_this_step_ = false;  // the body was held out of a solid during this step
-  bool touching_last_step_ = false;
-  std::int64_t collisions_ = 0;
+  simulation_detail::Collisions collisions_;
   bool ended_ = false;
   std::vector<maze::sim::LidarModel> lidar_models_;  // one per profile lidar
   std::vector<std::optional<maze::sim::LidarSweep>> lidar_sweeps_;  // likewise; rotating ones only
-  // The poses at the end of the last steps (the step number, the pose), oldest first: as
-  // many as a rotating lidar's image can still hold; empty without one.
-  struct PastPose {
-    std::int64_t step;
-    maze::sim::Pose pose;
-  };
+  // The poses at the end of the last steps, oldest first: as many as a rotating lidar's image
+  // can still hold; empty without one.
   std::vector<PastPose> history_;
   std::size_t history_steps_ = 0;
   std::vector<DeviceState> states_;
