@@ -244,7 +244,7 @@ TEST_CASE("scale bars are 1, 2 or 5 times a power of ten metres") {
 
 TEST_CASE("text on a page is at least a 40th of its height, on one page or on a shared one") {
   const app::MapTones tones;
-  for (const std::pair<int, int> size : std::vector<std::pair<int, int>>{{1, 1}, {4, 4}, {8, 8}, {64, 64}, {3, 40}, {200, 10}}) {
+  for (const std::pair<int, int> &size : std::vector<std::pair<int, int>>{{1, 1}, {4, 4}, {8, 8}, {64, 64}, {3, 40}, {200, 10}}) {
     const int w = size.first;  // named, not bound: CAPTURE's lambda cannot take a structured binding (C++17)
     const int h = size.second;
     const mapping::GridGeometry g{w, h, 3, 0.18, {}};
