@@ -71,17 +71,21 @@ void mark_depth(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
 
 }  // namespace
 
+void require_boundary_m(double x_start_m, double x_end_m, double y_start_m, double y_end_m) {
+  for (const double v : {x_start_m, x_end_m, y_start_m, y_end_m}) {
+    common::require_input(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
+  }
+  common::require_input(x_start_m < x_end_m,
+                        fmt::format("--boundary: XS must be less than XE (got {} and {})", x_start_m, x_end_m));
+  common::require_input(y_start_m < y_end_m,
+                        fmt::format("--boundary: YS must be less than YE (got {} and {})", y_start_m, y_end_m));
+}
+
 void validate(const LogMapOptions &o) {
   common::require_input(
       o.cells_x >= 1 && o.cells_x <= kMaxCells && o.cells_y >= 1 && o.cells_y <= kMaxCells,
       fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxCells, o.cells_x, o.cells_y));
-  for (const double v : {o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m}) {
-    common::require_input(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
-  }
-  common::require_input(o.x_start_m < o.x_end_m,
-                        fmt::format("--boundary: XS must be less than XE (got {} and {})", o.x_start_m, o.x_end_m));
-  common::require_input(o.y_start_m < o.y_end_m,
-                        fmt::format("--boundary: YS must be less than YE (got {} and {})", o.y_start_m, o.y_end_m));
+  require_boundary_m(o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m);
   common::require_input(o.prior > 0.0 && o.prior < 1.0, fmt::format("--prior must be in (0, 1) (got {})", o.prior));
   common::require_input(o.bump_radius_m > 0.0 && std::isfinite(o.bump_radius_m),
                         fmt::format("--bump-radius must be > 0 m (got {})", o.bump_radius_m));

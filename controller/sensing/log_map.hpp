@@ -58,6 +58,9 @@ struct LogMapOptions {
 // negative width or height, a prior not in (0, 1), a radius or depth max not > 0, a number
 // not finite, an axial reading's angle not within (-90, 90) degrees.
 void validate(const LogMapOptions &options);
+// A floor XS..XE, YS..YE (m) as --boundary gives it: four finite numbers, XS < XE and YS < YE;
+// throws common::InputError naming --boundary otherwise.
+void require_boundary_m(double x_start_m, double x_end_m, double y_start_m, double y_end_m);
 
 // One time step of the log: pose (m, rad) and the readings.
 struct LogStep {

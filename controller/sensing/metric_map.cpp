@@ -21,13 +21,7 @@ namespace {
 constexpr double kSquareTolerance = 1e-9;
 
 void require_boundary(const MetricBoundary &b) {
-  for (const double v : {b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m}) {
-    common::require_input(std::isfinite(v), "--boundary must be four finite numbers XS,XE,YS,YE");
-  }
-  common::require_input(b.x_start_m < b.x_end_m,
-                        fmt::format("--boundary: XS must be less than XE (got {} and {})", b.x_start_m, b.x_end_m));
-  common::require_input(b.y_start_m < b.y_end_m,
-                        fmt::format("--boundary: YS must be less than YE (got {} and {})", b.y_start_m, b.y_end_m));
+  require_boundary_m(b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m);
 }
 
 }  // namespace
