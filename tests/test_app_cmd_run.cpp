@@ -86,7 +86,7 @@ TEST_CASE("run command line: each model's default robot, and a profile file name
 }
 
 TEST_CASE("micromouse maps lab4x4 at 0.18 m cells with 12 mm walls (cell and ray models)") {
-  maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze();
   m.set_physical(0.18, 0.012, 0.0, 0.0);
   for (const sensing::ModelKind model : {sensing::ModelKind::cell, sensing::ModelKind::ray}) {
     app::RunOptions options;

@@ -106,7 +106,7 @@ TEST_CASE("map-log maps a depth run's trace.csv: the occupied cells lie on the m
                                    "--boundary", "0,4,0,4", "--depth-angles", "60,45,30,15,0,-15,-30,-45,-60",
                                    "--out", (dir.path / "log").string()});
   CHECK(out.find("sensor depth, 40 x 40 cells") != std::string::npos);
-  const maze::Maze truth = maze::load_world(world).maze;
+  const maze::Maze truth = maze::load_world(world).maze();
   const WallCheck c = check_walls(read_grid_csv(dir.path / "log" / "logodds.csv"), truth, 0.1);
   MESSAGE("occupied ", c.occupied, " on a wall ", c.occupied_on_wall, "; wall cells ", c.wall_cells, " occupied ",
           c.wall_cells_occupied, "; free ", c.free_cells);
@@ -126,7 +126,7 @@ TEST_CASE("map-log maps a bump run's trace.csv: pressed bumps lie on the maze's 
   // point's cell, and its steps there free it more than its presses mark it.
   run_cli({"map-log", run_dir + "/trace.csv", "--sensor", "bump", "--cells", "80,80", "--boundary", "0,4,0,4",
            "--bump-radius", "0.09", "--out", (dir.path / "log").string()});
-  const maze::Maze truth = maze::load_world(world).maze;
+  const maze::Maze truth = maze::load_world(world).maze();
   const WallCheck c = check_walls(read_grid_csv(dir.path / "log" / "logodds.csv"), truth, 0.05);
   MESSAGE("occupied ", c.occupied, " on a wall ", c.occupied_on_wall, "; free ", c.free_cells);
   CHECK(c.occupied >= 15);

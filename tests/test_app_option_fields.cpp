@@ -133,7 +133,7 @@ std::set<std::string> command_options(std::string_view name) {
 // The controllerArgs run gives a Webots controller for lab4x4.txt with these options (the
 // world's overrides applied as the world is read).
 std::vector<std::string> controller_args(const app::RunOptions &options) {
-  const maze::Maze lab4x4 = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt", options.world_overrides).maze;
+  const maze::Maze lab4x4 = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt", options.world_overrides).maze();
   return robot::format_controller_args(app::controller_options(options, lab4x4, app::robot_profile(options)));
 }
 

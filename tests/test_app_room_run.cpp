@@ -17,7 +17,7 @@
 #include "common/error.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/generate/arena_generator.hpp"
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 #include "maze/sim/profile.hpp"
 #include "sensing/pie_demo.hpp"
 
@@ -46,7 +46,7 @@ app::RoomRunOptions frontier_options(const SetUpCase &s) {
 
 // The run in the world file o.world, as the room command loads it.
 app::RoomSummary run_file(const app::RoomRunOptions &o, std::ostream &out) {
-  return app::run_room(maze::load_any_world(o.world, {}, {}), o, out);
+  return app::run_room(maze::load_world(o.world), o, out);
 }
 
 void check_mapped(const app::RoomSummary &s, const std::string &what) {
@@ -333,7 +333,7 @@ TEST_CASE("room: a stop request ends any strategy at its next control step, stop
   app::RoomRunOptions o = frontier_options(kSetUps[0]);
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   std::ostringstream out;
-  const app::RoomSummary s = app::run_room(maze::load_any_world(o.world, {}, {}), o, out,
+  const app::RoomSummary s = app::run_room(maze::load_world(o.world), o, out,
                                            std::chrono::steady_clock::now(), [] { return true; });
   CHECK(s.ending == robot::MetricEnding::stopped);
   CHECK(s.interrupted);

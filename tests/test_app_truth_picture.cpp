@@ -128,7 +128,7 @@ TEST_CASE("truth.png: the sides' colours count to the summary's wall_accuracy, t
     const int cell_px = 102;
     const int margin = app::truth_side_px(cell_px);
     CHECK(margin == 10);
-    const maze::Maze lab = maze::load_world(o.world).maze;
+    const maze::Maze lab = maze::load_world(o.world).maze();
     const app::PointPx origin = app::truth_origin_px(lab, 3);
     const Tally t = tally_sides(png, cell_px, margin, origin);
     CHECK(t.sides() == 40);

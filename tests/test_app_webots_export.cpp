@@ -62,7 +62,7 @@ std::vector<std::string> device_names(const maze::sim::RobotProfile &p) {
 }
 
 const maze::Maze &lab4x4() {
-  static const maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  static const maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze();
   return m;
 }
 

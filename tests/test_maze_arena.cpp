@@ -13,7 +13,7 @@
 #include "maze/world/arena.hpp"
 #include "maze/generate/arena_generator.hpp"
 #include "maze/world/arena_truth.hpp"
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 #include "maze/formats/room_format.hpp"
 #include "maze/world/world.hpp"
 #include "maze/formats/xml_arena.hpp"
@@ -40,9 +40,9 @@ std::string room_error(const std::string &text) {
   return "no error";
 }
 
-std::string arena_error(const std::string &text, const maze::ArenaOverrides &overrides = {}) {
+std::string arena_error(const std::string &text, const maze::WorldOverrides &overrides = {}) {
   try {
-    (void)maze::read_arena_world(text, "f.room", overrides);
+    (void)maze::load_world_text(text, "f.room", overrides);
   } catch (const common::InputError &e) {
     return e.diagnostic();
   }
@@ -176,26 +176,26 @@ TEST_CASE("arena validation: each check says what failed, at the element") {
 
 TEST_CASE("arena loader: the boundary is the file's, the user's, the walls' box when they enclose, else the floor") {
   // No boundary, obstacles not enclosing the start: the course's floor.
-  const maze::ArenaWorld open = maze::read_arena_world("rect 1 1 2 2\nstart 0 0\n", "f.room", {});
-  CHECK(open.arena.x_min_m == -8.5);
-  CHECK(open.arena.x_max_m == 8.5);
-  CHECK(open.arena.y_min_m == -8.5);
-  CHECK(open.arena.name == "f");
+  const maze::World open = maze::load_world_text("rect 1 1 2 2\nstart 0 0\n", "f.room", {});
+  CHECK(open.arena().x_min_m == -8.5);
+  CHECK(open.arena().x_max_m == 8.5);
+  CHECK(open.arena().y_min_m == -8.5);
+  CHECK(open.arena().name == "f");
   // No boundary, four walls round the start: their box.
-  const maze::ArenaWorld walled = maze::read_arena_world(
+  const maze::World walled = maze::load_world_text(
       "wall 0 0 4 0 0.2\nwall 0 2 4 2 0.2\nwall 0 0 0 2 0.2\nwall 4 0 4 2 0.2\nstart 1 1\n", "f.room", {});
-  CHECK(walled.arena.x_min_m == -0.1);
-  CHECK(walled.arena.x_max_m == 4.1);
-  CHECK(walled.arena.y_min_m == -0.1);
-  CHECK(walled.arena.y_max_m == 2.1);
+  CHECK(walled.arena().x_min_m == -0.1);
+  CHECK(walled.arena().x_max_m == 4.1);
+  CHECK(walled.arena().y_min_m == -0.1);
+  CHECK(walled.arena().y_max_m == 2.1);
   // --boundary wins over the file's.
-  maze::ArenaOverrides user;
+  maze::WorldOverrides user;
   user.boundary_m = std::array<double, 4>{-1, 6, -1, 4};
-  CHECK(maze::read_arena_world(kRoom, "f.room", user).arena.x_max_m == 6);
+  CHECK(maze::load_world_text(kRoom, "f.room", user).arena().x_max_m == 6);
   user.boundary_m = std::array<double, 4>{1, 0, 0, 1};
   CHECK(arena_error(kRoom, user) == "error: --boundary 1,0,0,1: XS < XE and YS < YE");
   // The start is checked against the robot's radius.
-  maze::ArenaOverrides robot;
+  maze::WorldOverrides robot;
   robot.robot_radius_m = 0.35;
   CHECK(arena_error(kRoom, robot) ==
         "f.room:6:1: error: a robot of radius 0.35 m at start (0.3, 0.3) touches the boundary x 0 to 5 m, y 0 to 3 m");
@@ -210,9 +210,9 @@ TEST_CASE("course XML: thick walls, diagonal walls and no walls are arenas; a ma
   CHECK(!maze::xml_world_is_arena(R"(<world cellSize="1"><wall x1="0" y1="0" x2="1" y2="1"/></world>)", "f.xml", {}));
   CHECK(!maze::xml_world_is_arena("<world/>", "f.xml", maze::XmlReadOptions{1.0}));
 
-  const maze::AnyWorld thick = maze::load_any_world(world_fixture("thick_obstacles.xml"), {}, {});
-  REQUIRE(maze::is_arena(thick));
-  const maze::Arena &a = std::get<maze::ArenaWorld>(thick).arena;
+  const maze::World thick = maze::load_world(world_fixture("thick_obstacles.xml"));
+  REQUIRE(!thick.on_lattice());
+  const maze::Arena &a = thick.arena();
   REQUIRE(a.obstacles.size() == 5);
   // The course's rule: a box as long as the segment, `width` across it.
   CHECK(a.obstacles[0].bounds() == std::array<double, 4>{-3, -3.5, 3, -2.5});
@@ -225,12 +225,15 @@ TEST_CASE("course XML: thick walls, diagonal walls and no walls are arenas; a ma
   CHECK(a.starts[0].x_m == -2);
   CHECK(a.starts[0].yaw_rad == 1.57079633);
 
-  const maze::AnyWorld lab = maze::load_any_world(std::string(WORLDS_DIR) + "/lab4x4.xml", {}, {});
-  REQUIRE(!maze::is_arena(lab));
-  CHECK(std::get<maze::World>(lab).maze == maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.xml").maze);
-  // The maze loader still refuses an arena, in its own words.
-  CHECK_THROWS_WITH_AS(maze::load_world(world_fixture("thick_obstacles.xml")),
-                       doctest::Contains("are obstacles in an arena, not a grid maze"), common::InputError);
+  const maze::World lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.xml");
+  REQUIRE(lab.on_lattice());
+  CHECK(lab.maze() == maze::read_world(maze::read_file(std::string(WORLDS_DIR) + "/lab4x4.xml"), "lab4x4.xml"));
+  // An arena's lattice view is refused, in the maze reader's own words and the command that maps it.
+  CHECK_THROWS_WITH_AS((void)thick.maze(),
+                       doctest::Contains("are obstacles in an arena, not a grid maze (its walls are thinner than a "
+                                         "quarter of a cell); it reads as an arena (a room of obstacles): map it with "
+                                         "`maze_mapper room "),
+                       common::InputError);
 }
 
 TEST_CASE("course XML arenas: written and read back; options that do not apply are refused") {
@@ -244,14 +247,14 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
         "  <wall x1=\"3\" y1=\"0\" x2=\"3\" y2=\"1.2\" width=\"0.1\"/>\n"
         "  <startPositions>\n    <pos x=\"0.3\" y=\"0.3\" theta=\"0\"/>\n  </startPositions>\n"
         "  <goal id=\"0\" x=\"4.7\" y=\"2.7\"/>\n</world>\n");
-  const maze::ArenaWorld back = maze::read_arena_world(xml, "b.xml", {});
+  const maze::World back = maze::load_world_text(xml, "b.xml", {});
   CHECK(back.format == maze::Format::xml);
-  REQUIRE(back.arena.obstacles.size() == 2);
-  CHECK(back.arena.obstacles[0].bounds() == a.obstacles[0].bounds());
-  CHECK(back.arena.obstacles[1].bounds() == a.obstacles[1].bounds());
-  CHECK(maze::write_room(back.arena) == maze::write_room(maze::read_room(maze::write_room(back.arena), "c")));
-  CHECK(back.arena.x_max_m == 5);
-  CHECK(back.arena.name == "test room");
+  REQUIRE(back.arena().obstacles.size() == 2);
+  CHECK(back.arena().obstacles[0].bounds() == a.obstacles[0].bounds());
+  CHECK(back.arena().obstacles[1].bounds() == a.obstacles[1].bounds());
+  CHECK(maze::write_room(back.arena()) == maze::write_room(maze::read_room(maze::write_room(back.arena()), "c")));
+  CHECK(back.arena().x_max_m == 5);
+  CHECK(back.arena().name == "test room");
   // A yaw at any angle goes through degrees and back exactly.
   maze::Arena turned = a;
   turned.starts[0].yaw_rad = 0.785398;
@@ -262,20 +265,20 @@ TEST_CASE("course XML arenas: written and read back; options that do not apply a
   maze::WorldOverrides cells;
   cells.cell_size_m = 1.0;
   // --cell-size asks for a maze: the XML is read as one (and fails as one).
-  CHECK_THROWS_WITH_AS(maze::load_any_world(world_fixture("thick_obstacles.xml"), cells, {}),
+  CHECK_THROWS_WITH_AS(maze::load_world(world_fixture("thick_obstacles.xml"), cells),
                        doctest::Contains("are obstacles in an arena, not a grid maze"), common::InputError);
   maze::WorldOverrides start;
   start.start = maze::Cell{1, 1};
-  CHECK_THROWS_WITH_AS(maze::load_any_world(world_fixture("thick_obstacles.xml"), start, {}),
+  CHECK_THROWS_WITH_AS(maze::load_world(world_fixture("thick_obstacles.xml"), start),
                        doctest::Contains("--start names cells of a grid maze"), common::InputError);
-  maze::ArenaOverrides boundary;
+  maze::WorldOverrides boundary;
   boundary.boundary_m = std::array<double, 4>{0, 1, 0, 1};
-  CHECK_THROWS_WITH_AS(maze::load_any_world(std::string(WORLDS_DIR) + "/lab4x4.txt", {}, boundary),
+  CHECK_THROWS_WITH_AS(maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt", boundary),
                        doctest::Contains("--boundary applies to arenas"), common::InputError);
 }
 
 TEST_CASE("a maze as an arena: capped walls, the start and goals at cell centres") {
-  const maze::Maze lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  const maze::Maze lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze();
   const maze::Arena a = maze::arena_from_maze(lab);
   CHECK(a.x_max_m == 4);
   CHECK(a.starts[0].x_m == 0.5);
@@ -378,15 +381,15 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
   for (const Shipped &s : {Shipped{"ir_room.room", 0.09, 4}, Shipped{"obstacle_field.room", 0.16, 10},
                           Shipped{"thick_arena.xml", 0.09, 9}}) {
     CAPTURE(s.file);
-    maze::ArenaOverrides robot;
+    maze::WorldOverrides robot;
     robot.robot_radius_m = s.robot_radius_m;
-    const maze::AnyWorld any = maze::load_any_world(std::string(WORLDS_DIR) + "/" + s.file, {}, robot);
-    REQUIRE(maze::is_arena(any));
-    const maze::ArenaWorld &w = std::get<maze::ArenaWorld>(any);
+    const maze::World any = maze::load_world(std::string(WORLDS_DIR) + "/" + s.file, robot);
+    REQUIRE(!any.on_lattice());
+    const maze::World &w = any;
     CHECK(w.warnings.empty());
-    CHECK(w.arena.obstacles.size() == s.obstacles);
-    REQUIRE(w.arena.goals.size() == 1);
-    const maze::Arena &a = w.arena;
+    CHECK(w.arena().obstacles.size() == s.obstacles);
+    REQUIRE(w.arena().goals.size() == 1);
+    const maze::Arena &a = w.arena();
     const maze::ArenaTruth t = maze::rasterise_arena(a, maze::cells_along(a.width_m(), 0.1),
                                                      maze::cells_along(a.height_m(), 0.1), s.robot_radius_m);
     const int gx = static_cast<int>((a.goals[0].x_m - a.x_min_m) / t.cell_x_m);
@@ -395,16 +398,14 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
     CHECK(t.reachable_count > t.free_count * 8 / 10);
   }
   // The IR room is the assignment's: 5 x 3 m, start [0.3, 0.3], goal [4.7, 2.7].
-  const maze::Arena room = std::get<maze::ArenaWorld>(
-      maze::load_any_world(std::string(WORLDS_DIR) + "/ir_room.room", {}, {})).arena;
+  const maze::Arena room = maze::load_world(std::string(WORLDS_DIR) + "/ir_room.room").arena();
   CHECK(room.width_m() == 5);
   CHECK(room.height_m() == 3);
   CHECK(room.starts[0].x_m == 0.3);
   CHECK(room.goals[0].x_m == 4.7);
   // The course-style arena is walled all round, the walls' outer faces on the course's 17 x 17 m
   // floor, so their box is its boundary.
-  const maze::Arena thick = std::get<maze::ArenaWorld>(
-      maze::load_any_world(std::string(WORLDS_DIR) + "/thick_arena.xml", {}, {})).arena;
+  const maze::Arena thick = maze::load_world(std::string(WORLDS_DIR) + "/thick_arena.xml").arena();
   CHECK(thick.x_min_m == -8.5);
   CHECK(thick.y_max_m == 8.5);
 }
@@ -415,8 +416,8 @@ TEST_CASE("every file in worlds/ loads as a maze or an arena") {
   for (const auto &entry : std::filesystem::directory_iterator(WORLDS_DIR)) {
     if (entry.path().filename() == "README.md") continue;
     CAPTURE(entry.path().string());
-    const maze::AnyWorld world = maze::load_any_world(entry.path().string(), {}, {});
-    (maze::is_arena(world) ? arenas : mazes) += 1;
+    const maze::World world = maze::load_world(entry.path().string());
+    (!world.on_lattice() ? arenas : mazes) += 1;
   }
   CHECK(arenas == 3);
   CHECK(mazes >= 8);
@@ -434,16 +435,15 @@ TEST_CASE("one load: the file's format told once, a world's geometry and its lat
   CHECK(maze::holds_arena(thick.text, thick.format, "thick_arena.xml"));
 
   // A maze: its lattice is the maze, its geometry the walls as solids (arena_from_maze).
-  const maze::AnyWorld maze_world = maze::load_any_world(worlds + "/lab4x4.txt", {}, {});
-  REQUIRE(maze::lattice_view(maze_world) != nullptr);
-  CHECK(maze::lattice_view(maze_world)->width() == 4);
-  const maze::Arena maze_geometry = maze::world_geometry(maze_world);
-  CHECK(maze_geometry.obstacles.size() == maze::arena_from_maze(*maze::lattice_view(maze_world)).obstacles.size());
+  const maze::World maze_world = maze::load_world(worlds + "/lab4x4.txt");
+  REQUIRE(maze_world.lattice() != nullptr);
+  CHECK(maze_world.lattice()->width() == 4);
+  const maze::Arena maze_geometry = maze_world.geometry();
+  CHECK(maze_geometry.obstacles.size() == maze::arena_from_maze(*maze_world.lattice()).obstacles.size());
   CHECK(maze_geometry.x_max_m == 4);
   // An arena: no lattice, its geometry its own.
-  const maze::AnyWorld arena_world = maze::load_any_world(worlds + "/ir_room.room", {}, {});
-  CHECK(maze::lattice_view(arena_world) == nullptr);
-  CHECK(maze::world_geometry(arena_world).obstacles.size() ==
-        std::get<maze::ArenaWorld>(arena_world).arena.obstacles.size());
-  CHECK(maze::world_warnings(arena_world).empty());
+  const maze::World arena_world = maze::load_world(worlds + "/ir_room.room");
+  CHECK(arena_world.lattice() == nullptr);
+  CHECK(arena_world.geometry().obstacles.size() == arena_world.arena().obstacles.size());
+  CHECK(arena_world.warnings.empty());
 }

@@ -358,9 +358,24 @@ TEST_CASE("Simulation: a supervisor's reset puts the time back at 0 and the time
   CHECK(robot.step(32) == -1);  // the tenth step of the run
 }
 
-TEST_CASE("Simulation in a maze: no solid can be added to the lattice") {
-  maze::Maze m(2, 2);
+TEST_CASE("Simulation in a maze: a solid added is seen at once, and gone after a reset") {
+  maze::Maze m(2, 2);  // 1 m cells, no inner wall: east of the start's centre the outer wall at 2 m
   webots::embedded::Simulation sim(m, test_robot(), {});
-  CHECK_THROWS_WITH_AS(sim.add_disc({0.5, 0.5, 0.1}),
-                       "a solid cannot be added to a maze's world (its walls are on the lattice)", common::InputError);
+  const double to_wall_m = 1.5 - maze::kDefaultWallThickness_m / 2;
+  CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(to_wall_m));
+  CHECK_FALSE(sim.in_arena());
+  sim.add_disc({1.5, 0.5, 0.1});
+  CHECK(sim.in_arena());  // the maze's geometry from then on
+  CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(0.9));
+  CHECK(sim.cast(0.5, 0.5, 1.5707963267948966, 10.0) == doctest::Approx(to_wall_m));  // the walls as ever
+  sim.reset_world();
+  CHECK_FALSE(sim.in_arena());
+  CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(to_wall_m));
+}
+
+TEST_CASE("Simulation in a maze: its landmarks are solid cylinders") {
+  maze::Maze m(2, 2);
+  m.set_landmarks({maze::Landmark{1.5, 0.5, 0.5, 1.0, 0.0, 0.0}});
+  webots::embedded::Simulation sim(m, test_robot(), {});
+  CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(1.0 - maze::kLandmarkRadius_m));
 }

@@ -46,7 +46,7 @@ TEST_CASE("course XML: a 5 x 5 m frame with inner walls on 0.5 m reads as 10 x 1
                                     ": warning: the start positions sit on the centres of 1 m cells, but the walls "
                                     "(-1.5, -1)-(2.5, -1) at line 14, (-2.5, 0.5)-(0, 0.5) at line 15, (0.5, -1)-(0.5, "
                                     "1.5) at line 16 and 2 more are off that lattice: read as 10x10 cells of 0.5 m"));
-  const maze::Maze &m = world.maze;
+  const maze::Maze &m = world.maze();
   CHECK(m.cell_size_m() == 0.5);
   CHECK(m.origin_x_m() == -2.5);
   CHECK(m.origin_y_m() == -2.5);
@@ -80,7 +80,7 @@ TEST_CASE("course XML: a 5 x 5 m frame with inner walls on 0.5 m reads as 10 x 1
 }
 
 TEST_CASE("course XML: a frame in 1 m pieces with 0.5 m inner walls, the start on a node facing west") {
-  const maze::Maze m = maze::load_world(world_fixture("course_frame_1m.xml")).maze;
+  const maze::Maze m = maze::load_world(world_fixture("course_frame_1m.xml")).maze();
   CHECK(m.cell_size_m() == 0.5);
   CHECK(m.start() == maze::Cell{5, 3});
   CHECK(m.start_heading() == maze::Side::west);
@@ -105,7 +105,7 @@ TEST_CASE("course XML: a frame in 1 m pieces with 0.5 m inner walls, the start o
 }
 
 TEST_CASE("course XML: written and read back, the 0.5 m maze is the same") {
-  const maze::Maze m = maze::load_world(world_fixture("course_lattice.xml")).maze;
+  const maze::Maze m = maze::load_world(world_fixture("course_lattice.xml")).maze();
   CHECK(maze::read_xml(maze::write_xml_keeping_origin(m), "again.xml") == m);
   // Centred (the default), the same maze with its centre on (0, 0): already so.
   CHECK(maze::read_xml(maze::write_xml(m), "again.xml") == m);
@@ -160,7 +160,7 @@ TEST_CASE("course XML: arenas are not grid mazes, and a wall end off every latti
 TEST_CASE("course XML: a walled open arena reads on the lattice of its start positions") {
   const maze::World arena = maze::load_world(world_fixture("course_arena11.xml"));
   CHECK(arena.warnings.empty());
-  const maze::Maze &m = arena.maze;
+  const maze::Maze &m = arena.maze();
   CHECK(m.width() == 11);
   CHECK(m.height() == 11);
   CHECK(m.cell_size_m() == 1.0);
@@ -171,7 +171,7 @@ TEST_CASE("course XML: a walled open arena reads on the lattice of its start pos
   REQUIRE(m.landmarks().size() == 1);
   CHECK(m.landmarks()[0] == maze::Landmark{-2.0, 3.0, 2.0, 0.0, 0.0, 1.0});
 
-  const maze::Maze five = maze::load_world(world_fixture("course_arena5_starts.xml")).maze;
+  const maze::Maze five = maze::load_world(world_fixture("course_arena5_starts.xml")).maze();
   CHECK(five.width() == 5);
   CHECK(five.height() == 5);
   CHECK(five.cell_size_m() == 1.0);
@@ -187,8 +187,8 @@ TEST_CASE("course XML: a walled open arena reads on the lattice of its start pos
 TEST_CASE("course XML: a half wall keeps the walls' finer lattice, with one warning that says how to choose") {
   const std::string file = world_fixture("course_half_wall.xml");
   const maze::World world = maze::load_world(file);
-  CHECK(world.maze.width() == 10);
-  CHECK(world.maze.cell_size_m() == 0.5);
+  CHECK(world.maze().width() == 10);
+  CHECK(world.maze().cell_size_m() == 0.5);
   REQUIRE(world.warnings.size() == 1);
   CHECK(world.warnings[0] ==
         file + ": warning: the start positions sit on the centres of 1 m cells, but the wall (-1, 1.5)-(1.5, 1.5) at "
@@ -196,19 +196,19 @@ TEST_CASE("course XML: a half wall keeps the walls' finer lattice, with one warn
                "keeps this reading without the warning, --cell-size 1 asks for 1 m cells (the walls off them are "
                "then errors)");
   // The 25 starts are lattice nodes of the 0.5 m cells: the cell north-east of each (facing north).
-  CHECK(world.maze.start() == maze::Cell{1, 1});
-  CHECK(world.maze.start_positions().size() == 25);
+  CHECK(world.maze().start() == maze::Cell{1, 1});
+  CHECK(world.maze().start_positions().size() == 25);
   // Exactly the file: the half wall runs from x = -1 (grid line 3) to 1.5 (line 8) at y = 1.5
   // (line 8): the south sides of cells (3,8) to (7,8), not (2,8).
-  CHECK(world.maze.has_wall({3, 8}, maze::Side::south));
-  CHECK(world.maze.has_wall({7, 8}, maze::Side::south));
-  CHECK_FALSE(world.maze.has_wall({2, 8}, maze::Side::south));
+  CHECK(world.maze().has_wall({3, 8}, maze::Side::south));
+  CHECK(world.maze().has_wall({7, 8}, maze::Side::south));
+  CHECK_FALSE(world.maze().has_wall({2, 8}, maze::Side::south));
 
   maze::WorldOverrides walls_lattice;
   walls_lattice.cell_size_m = 0.5;
   const maze::World chosen = maze::load_world(file, walls_lattice);
   CHECK(chosen.warnings.empty());
-  CHECK(chosen.maze == world.maze);
+  CHECK(chosen.maze() == world.maze());
   maze::WorldOverrides starts_lattice;
   starts_lattice.cell_size_m = 1.0;
   try {
@@ -223,7 +223,7 @@ TEST_CASE("course XML: --start pos:N and random pick among the start positions")
   const std::string file = world_fixture("course_arena5_starts.xml");
   maze::WorldOverrides third;
   third.start_position = 3;
-  CHECK(maze::load_world(file, third).maze.start() == maze::Cell{2, 0});
+  CHECK(maze::load_world(file, third).maze().start() == maze::Cell{2, 0});
   maze::WorldOverrides too_far;
   too_far.start_position = 26;
   CHECK_THROWS_WITH_AS(maze::load_world(file, too_far),
@@ -233,14 +233,14 @@ TEST_CASE("course XML: --start pos:N and random pick among the start positions")
   maze::WorldOverrides random;
   random.random_start = true;
   random.random_start_seed = 7;
-  const maze::Cell once = maze::load_world(file, random).maze.start();
-  CHECK(maze::load_world(file, random).maze.start() == once);
-  const std::vector<maze::StartPosition> starts = maze::load_world(file).maze.start_positions();
+  const maze::Cell once = maze::load_world(file, random).maze().start();
+  CHECK(maze::load_world(file, random).maze().start() == once);
+  const std::vector<maze::StartPosition> starts = maze::load_world(file).maze().start_positions();
   CHECK(once == starts[maze::random_start_index(7, 25)].cell);
   std::vector<maze::Cell> seen;
   for (std::uint64_t seed = 0; seed < 20; ++seed) {
     random.random_start_seed = seed;
-    const maze::Cell c = maze::load_world(file, random).maze.start();
+    const maze::Cell c = maze::load_world(file, random).maze().start();
     if (std::find(seen.begin(), seen.end(), c) == seen.end()) seen.push_back(c);
   }
   CHECK(seen.size() > 5);
@@ -281,7 +281,7 @@ TEST_CASE("course XML: a landmark may stand on or beyond the maze's edge") {
 TEST_CASE("course XML: landmarks and every start position survive a round trip") {
   for (const char *name : {"course_arena5_starts.xml", "course_half_wall.xml", "course_arena11.xml"}) {
     CAPTURE(name);
-    const maze::Maze m = maze::load_world(world_fixture(name)).maze;
+    const maze::Maze m = maze::load_world(world_fixture(name)).maze();
     const maze::Maze kept = maze::read_xml(maze::write_xml_keeping_origin(m), "x.xml");
     CHECK(kept == m);
   }

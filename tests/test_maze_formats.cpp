@@ -83,9 +83,9 @@ TEST_CASE("formats: every world in worlds/ reads, and round-trips through text, 
     CAPTURE(file);
     const maze::World world = maze::load_world(file);
     CHECK(world.warnings.empty());
-    CHECK(world.maze.reachable_count() ==
-          static_cast<std::size_t>(world.maze.width()) * static_cast<std::size_t>(world.maze.height()));
-    check_round_trips(world.maze);
+    CHECK(world.maze().reachable_count() ==
+          static_cast<std::size_t>(world.maze().width()) * static_cast<std::size_t>(world.maze().height()));
+    check_round_trips(world.maze());
   }
 }
 
@@ -100,9 +100,9 @@ TEST_CASE("formats: a canonical text map shows as the same bytes") {
 
 TEST_CASE("formats: lab4x4 is the same maze as text, num and XML") {
   const std::string dir = WORLDS_DIR;
-  const auto text = maze::load_world(dir + "/lab4x4.txt").maze;
-  CHECK(maze::load_world(dir + "/lab4x4.xml").maze == text);
-  CHECK(same_walls(maze::load_world(dir + "/lab4x4.num").maze, text));
+  const auto text = maze::load_world(dir + "/lab4x4.txt").maze();
+  CHECK(maze::load_world(dir + "/lab4x4.xml").maze() == text);
+  CHECK(same_walls(maze::load_world(dir + "/lab4x4.num").maze(), text));
   CHECK(text.width() == 4);
   CHECK(text.start() == maze::Cell{0, 0});
   CHECK(text.start_heading() == maze::Side::north);
@@ -200,7 +200,7 @@ TEST_CASE("formats: num lists every cell, X outer, Y inner") {
 }
 
 TEST_CASE("formats: the Webots world has the R2023b header, one Solid per wall run, and the start") {
-  const maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  const maze::Maze m = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze();
   const std::string wbt = maze::write_wbt(m, "lab4x4");
   CHECK(wbt.starts_with("#VRML_SIM R2023b utf8\n"));
   auto count = [&wbt](std::string_view what) {
@@ -264,12 +264,12 @@ TEST_CASE("formats: the output extension is read in any case") {
 }
 
 TEST_CASE("formats: dropped_by says what a format cannot hold, in one line") {
-  const maze::Maze lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze;
+  const maze::Maze lab = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze();
   CHECK(maze::dropped_by(lab, maze::Format::num) == "dropped the goal (3,3): a num file holds only the walls");
   CHECK(!maze::dropped_by(lab, maze::Format::text_map));
   CHECK(!maze::dropped_by(lab, maze::Format::xml));
   CHECK(!maze::dropped_by(lab, maze::Format::wbt));
-  const maze::Maze course = maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_frame_1m.xml").maze;
+  const maze::Maze course = maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_frame_1m.xml").maze();
   CHECK(maze::dropped_by(course, maze::Format::num) ==
         "dropped the start (5,3) facing west, the goal (1,6) and the size (cells of 0.5 m, walls 0.012 m thick, "
         "origin (0, 0)): a num file holds only the walls");
@@ -277,7 +277,7 @@ TEST_CASE("formats: dropped_by says what a format cannot hold, in one line") {
         "dropped the start's heading (west) and the size (cells of 0.5 m, walls 0.012 m thick, origin (0, 0)): a "
         "text map holds walls, start cell and goals; its start faces north");
   CHECK(!maze::dropped_by(course, maze::Format::xml));
-  const maze::Maze num = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.num").maze;
+  const maze::Maze num = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.num").maze();
   CHECK(!maze::dropped_by(num, maze::Format::num));
 }
 
@@ -289,17 +289,17 @@ TEST_CASE("formats: --cell-size, --start and --goal apply to the world loaded") 
   o.goals = std::vector<maze::Cell>{{2, 2}, {1, 1}};
   const maze::World w = maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.num", o);
   CHECK(w.format == maze::Format::num);
-  CHECK(w.maze.cell_size_m() == 0.18);
-  CHECK(w.maze.wall_thickness_m() == maze::kDefaultWallThickness_m);
-  CHECK(w.maze.start() == maze::Cell{3, 0});
-  CHECK(w.maze.start_heading() == maze::Side::west);
-  CHECK(w.maze.goals() == std::vector<maze::Cell>{{1, 1}, {2, 2}});
+  CHECK(w.maze().cell_size_m() == 0.18);
+  CHECK(w.maze().wall_thickness_m() == maze::kDefaultWallThickness_m);
+  CHECK(w.maze().start() == maze::Cell{3, 0});
+  CHECK(w.maze().start_heading() == maze::Side::west);
+  CHECK(w.maze().goals() == std::vector<maze::Cell>{{1, 1}, {2, 2}});
   // An XML world that states no cellSize reads on the lattice --cell-size chooses (its walls
   // on it); one written by convert states its own, and another is refused.
   maze::WorldOverrides same;
   same.cell_size_m = 0.5;
-  CHECK(maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_lattice.xml", same).maze.cell_size_m() == 0.5);
-  CHECK(maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.xml", same).maze.width() == 8);
+  CHECK(maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_lattice.xml", same).maze().cell_size_m() == 0.5);
+  CHECK(maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.xml", same).maze().width() == 8);
   const std::string stated = maze::read_file(std::string(WORLDS_DIR) + "/lab4x4.xml");
   try {
     (void)maze::read_xml(maze::write_xml(maze::read_xml(stated, "lab4x4.xml")), "w.xml", maze::XmlReadOptions{0.5});

@@ -11,7 +11,7 @@
 
 namespace {
 
-maze::Maze classic() { return maze::load_world(std::string(WORLDS_DIR) + "/classic16x16.txt").maze; }
+maze::Maze classic() { return maze::load_world(std::string(WORLDS_DIR) + "/classic16x16.txt").maze(); }
 
 std::string diagnostic_of(const std::string &bytes) {
   try {
@@ -62,6 +62,6 @@ TEST_CASE("maz: a broken file says where") {
   std::string open_edge = bytes;
   open_edge[0] = '\x06';  // the start cell without its west wall, on the maze's edge
   CHECK(diagnostic_of(open_edge).starts_with("m.maz:1:1: error: "));
-  CHECK_THROWS_WITH_AS(maze::write_maz(maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze),
+  CHECK_THROWS_WITH_AS(maze::write_maz(maze::load_world(std::string(WORLDS_DIR) + "/lab4x4.txt").maze()),
                        "a binary maze (.maz) holds a 16 x 16 maze; this one is 4x4", common::InputError);
 }

@@ -16,7 +16,7 @@
 #include "common/csv.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 #include "maze/world/world.hpp"
 
 namespace app {
@@ -92,7 +92,7 @@ void run_maze(RunOptions options, const BatchJob &job, const RunControls &contro
 void run_room_job(RoomRunOptions options, const BatchJob &job, bool (*interrupted)(), BatchItem &item) {
   const auto started = std::chrono::steady_clock::now();
   options.world = job.world;
-  const maze::AnyWorld world = maze::load_any_world(job.world, {}, {});
+  const maze::World world = maze::load_world(job.world);
   NullBuffer buffer;
   std::ostream sink(&buffer);
   Report report;
@@ -232,7 +232,7 @@ std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, co
     try {
       maze::WorldOverrides size_only;
       size_only.cell_size_m = overrides.cell_size_m;
-      count = maze::load_world(w, size_only).maze.start_positions().size();
+      count = maze::load_world(w, size_only).maze().start_positions().size();
     } catch (const common::InputError &) {
       jobs.push_back({w, std::nullopt, kind});  // its run says why
       continue;

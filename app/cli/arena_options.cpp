@@ -19,21 +19,14 @@ void add_boundary_option(CLI::App &cmd, std::string &boundary) {
                  "enclose the start, else the course's 17 x 17 m floor centred on the origin)");
 }
 
-maze::ArenaOverrides arena_overrides(const std::string &boundary, double robot_radius_m) {
-  maze::ArenaOverrides o;
+maze::WorldOverrides with_arena_overrides(maze::WorldOverrides o, const std::string &boundary,
+                                          double robot_radius_m) {
   o.robot_radius_m = robot_radius_m;
   if (!boundary.empty()) {
     const std::vector<double> b = parse_number_list(boundary, "--boundary", 4);
     o.boundary_m = std::array<double, 4>{b[0], b[1], b[2], b[3]};
   }
   return o;
-}
-
-maze::AnyWorld load_any_world_reporting(const std::string &path, const maze::WorldOverrides &maze_overrides,
-                                        const maze::ArenaOverrides &arena_overrides) {
-  maze::AnyWorld world = maze::load_any_world(path, maze_overrides, arena_overrides);
-  for (const std::string &warning : maze::world_warnings(world)) fmt::print(stderr, "{}\n", warning);
-  return world;
 }
 
 CLI::Option *add_resolution_option(CLI::App &command, std::optional<double> &resolution_m,

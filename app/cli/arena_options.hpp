@@ -1,13 +1,12 @@
 #pragma once
-// What a command line says about arenas: --boundary XS,XE,YS,YE and --resolution M, and the
-// loader that takes a maze or an arena (maze/arena_world.hpp), its warnings printed.
+// What a command line says about arenas: --boundary XS,XE,YS,YE and --resolution M.
 
 #include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 
 namespace app {
 
@@ -17,12 +16,9 @@ void add_boundary_option(CLI::App &cmd, std::string &boundary);
 // "--resolution must be > 0 m (got 0)"), for every command that lays a grid over an arena
 // (room, show); `default_text` ends the help: "(default <it>)".
 CLI::Option *add_resolution_option(CLI::App &cmd, std::optional<double> &resolution_m, const std::string &default_text);
-// The arena overrides of a --boundary text ("" for none) and the robot's body radius.
-// Throws common::InputError naming --boundary for a text that is not four numbers.
-maze::ArenaOverrides arena_overrides(const std::string &boundary, double robot_radius_m = 0.0);
-
-// maze::load_any_world, then its warnings on stderr.
-maze::AnyWorld load_any_world_reporting(const std::string &path, const maze::WorldOverrides &maze_overrides,
-                                        const maze::ArenaOverrides &arena_overrides);
+// `overrides` with the arena's ones set: a --boundary text ("" for none) and the robot's body
+// radius. Throws common::InputError naming --boundary for a text that is not four numbers.
+maze::WorldOverrides with_arena_overrides(maze::WorldOverrides overrides, const std::string &boundary,
+                                          double robot_radius_m = 0.0);
 
 }  // namespace app

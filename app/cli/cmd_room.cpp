@@ -98,7 +98,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
   cmd->callback([&context, in, cmd] {
     const auto started = std::chrono::steady_clock::now();
     finish_options(*in, *cmd);
-    const maze::AnyWorld world = load_any_world_reporting(in->options.world, {}, arena_overrides(in->boundary));
+    const maze::World world = load_world_reporting(in->options.world, with_arena_overrides({}, in->boundary));
     const common::SignalsStopWork stop_signals;  // a signal ends the run at its next control step
     const RoomSummary summary = run_room(world, in->options, std::cout, started, &common::interrupted);
     context.status = room_exit_status(summary);

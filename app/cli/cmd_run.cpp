@@ -116,10 +116,10 @@ void add_plan_command(CLI::App &cli, CommandContext &context) {
     options.plan.only = true;
     print_warnings(options_not_applying(*plan, options));
     const maze::World world = maze::load_world(options.world, options.world_overrides);
-    if (!options.plan.from) options.plan.from = mapping::Cell{world.maze.start().x, world.maze.start().y};
+    if (!options.plan.from) options.plan.from = mapping::Cell{world.maze().start().x, world.maze().start().y};
     if (!options.plan.to) {
-      if (world.maze.goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");
-      options.plan.to = mapping::Cell{world.maze.goals().front().x, world.maze.goals().front().y};
+      if (world.maze().goals().empty()) throw common::InputError("plan: the maze has no goal; give --to X,Y");
+      options.plan.to = mapping::Cell{world.maze().goals().front().x, world.maze().goals().front().y};
     }
     RunControls controls;
     controls.interrupted = &common::interrupted;

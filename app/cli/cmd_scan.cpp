@@ -131,7 +131,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   scan->callback([args, &context] {
     std::vector<std::string> warnings;
     const maze::sim::Pose at = scan_pose(*args, warnings);
-    const maze::Maze maze = load_world_reporting(args->world, args->world_overrides).maze;
+    const maze::Maze maze = load_world_reporting(args->world, args->world_overrides).maze();
     maze::sim::ScanRequest request;
     request.pose = at;
     request.robot = args->robot;

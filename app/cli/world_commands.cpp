@@ -39,11 +39,11 @@ namespace {
 std::string shipped_world_line(const std::filesystem::path &file) {
   const std::string name = file.filename().string();
   try {
-    const maze::AnyWorld world = maze::load_any_world(file.string(), {}, {});
-    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
-      return fmt::format("{:<22} arena  {:g} x {:g} m", name, arena->arena.width_m(), arena->arena.height_m());
+    const maze::World world = maze::load_world(file.string());
+    if (!world.on_lattice()) {
+      return fmt::format("{:<22} arena  {:g} x {:g} m", name, world.arena().width_m(), world.arena().height_m());
     }
-    const maze::Maze &m = *maze::lattice_view(world);
+    const maze::Maze &m = world.maze();
     return fmt::format("{:<22} maze   {} x {} cells", name, m.width(), m.height());
   } catch (const common::InputError &e) {
     return fmt::format("{:<22} ?      does not load: {}", name, e.what());
@@ -83,13 +83,13 @@ void add_show_command(CLI::App &cli, CommandContext &context) {
                         "the finest of 0.05, 0.1, 0.2, 0.25, 0.5, 1 ... m that draws an arena in at most 60 cells a side");
   add_boundary_option(*cmd, args->boundary);
   cmd->callback([args, &context] {
-    const maze::AnyWorld world = load_any_world_reporting(args->world, {}, arena_overrides(args->boundary));
-    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
-      const maze::Arena &a = arena->arena;
+    const maze::World world = load_world_reporting(args->world, with_arena_overrides({}, args->boundary));
+    if (!world.on_lattice()) {
+      const maze::Arena &a = world.arena();
       std::cout << maze::draw_arena(a, args->resolution_m.value_or(maze::default_arena_resolution_m(a)));
     } else {
       if (args->resolution_m) fmt::print(stderr, "warning: --resolution has no effect: {} is a grid maze\n", args->world);
-      std::cout << maze::write_text_map(std::get<maze::World>(world).maze);
+      std::cout << maze::write_text_map(world.maze());
     }
     context.status = 0;
   });
@@ -137,14 +137,14 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     if (format != maze::Format::xml && args->keep_origin) {
       fmt::print(stderr, "warning: --keep-origin has no effect: only an .xml world is centred\n");
     }
-    const maze::AnyWorld world = load_any_world_reporting(args->world, args->overrides, arena_overrides(args->boundary));
-    if (const auto *arena = std::get_if<maze::ArenaWorld>(&world)) {
-      maze::save_arena(arena->arena, args->out);  // .room or .xml; any other format is refused
+    const maze::World world = load_world_reporting(args->world, with_arena_overrides(args->overrides, args->boundary));
+    if (!world.on_lattice()) {
+      maze::save_arena(world.arena(), args->out);  // .room or .xml; any other format is refused
       if (args->keep_origin) fmt::print(stderr, "warning: --keep-origin has no effect: an arena keeps its coordinates\n");
       context.status = 0;
       return;
     }
-    const maze::Maze &maze = std::get<maze::World>(world).maze;
+    const maze::Maze &maze = world.maze();
     if (format == maze::Format::wbt) {
       maze::write_file_atomically(
           args->out, webots_world(maze, std::filesystem::path(args->out).stem().string(), args->wbt));

@@ -330,7 +330,7 @@ MmsRun run_mms_world(const RunOptions &options, const MmsOptions &mms, std::ostr
   if (!overrides.goals) overrides.centre_goals = true;
   const maze::World world = maze::load_world(options.world, overrides);
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
-  return run_mms(options, mms, world.maze, out, controls);
+  return run_mms(options, mms, world.maze(), out, controls);
 }
 
 std::string command_line(const std::vector<std::string> &command) {

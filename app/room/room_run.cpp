@@ -29,7 +29,7 @@
 #include "maze/sim/profile.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/world/arena_truth.hpp"
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 #include "maze/world/maze.hpp"
 #include "plan/metric_wavefront.hpp"
 
@@ -332,10 +332,10 @@ int room_exit_status(const RoomSummary &s) {
   }
 }
 
-RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
+RoomSummary run_room(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
                      Report *report) {
-  return run_room_in(maze::world_geometry(world), options, out, started, interrupted, report);
+  return run_room_in(world.geometry(), options, out, started, interrupted, report);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,

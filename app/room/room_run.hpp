@@ -22,7 +22,7 @@
 #include "app/run/report.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/world/arena.hpp"
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/metric_controller.hpp"
 #include "sensing/log_map.hpp"
@@ -79,13 +79,13 @@ struct RoomSummary {
   }
 };
 
-// The run in a loaded world (maze::load_any_world, --boundary already the arena's; a maze runs
-// as the arena of its walls; options.world names it): checks everything (common::InputError,
+// The run in a loaded world (maze::load_world, --boundary already the arena's; a maze runs on
+// its geometry; options.world names it): checks everything (common::InputError,
 // before anything runs), runs, prints on `out`. `interrupted`, polled every control step,
 // ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
 // `report`, when not null, receives the run's report (the summary block's and summary.json's
 // entries: a batch row's columns).
-RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
+RoomSummary run_room(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                      robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
 // The same in an arena given in code.

@@ -18,7 +18,6 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
-#include "maze/world/arena_world.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
@@ -227,33 +226,11 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
   return run_world(options, out, RunControls{});
 }
 
-namespace {
-
-// The maze of options.world. A file that does not read as a maze but as an arena (a room of
-// obstacles) says so and names the command that maps it.
-maze::World load_maze(const RunOptions &options) {
-  try {
-    return maze::load_world(options.world, options.world_overrides);
-  } catch (const common::InputError &e) {
-    bool arena = false;
-    try {
-      arena = maze::is_arena(maze::load_any_world(options.world, {}, {}));
-    } catch (const common::InputError &) {
-      // Neither a maze nor an arena: the maze's error stands.
-    }
-    if (!arena) throw;
-    throw common::InputError(e.where(), fmt::format("{}; it reads as an arena (a room of obstacles): map "
-                                                    "it with `maze_mapper room {}`",
-                                                    e.message(), options.world));
-  }
-}
-
-}  // namespace
-
 RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls) {
-  const maze::World world = load_maze(options);
+  const maze::World world = maze::load_world(options.world, options.world_overrides);
+  const maze::Maze &truth = world.maze();  // an arena is refused here, before its warnings
   for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
-  return run_maze(options, world.maze, out, controls);
+  return run_maze(options, truth, out, controls);
 }
 
 namespace {

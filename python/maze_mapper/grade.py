@@ -224,10 +224,10 @@ def _truth(world):
     if world == "own":
         return None
     try:
-        read = maze_mapper._native.load_any_world(world)
+        read = maze_mapper.load_world(world)
     except maze_mapper.Error:
         return None
-    return read if isinstance(read, maze_mapper.World) else None
+    return read if read.is_maze else None
 
 
 def _student_runs(student, controller, worlds, args, truths):

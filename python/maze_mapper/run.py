@@ -146,7 +146,7 @@ def _world_entries(e, args, world, the_scene):
         e.both("world", "the course's empty floor (17 x 17 m)")
         e.both("imported_nodes", str(the_scene.root.getField("children").getCount() - 1),  # all but the robot
                the_scene.root.getField("children").getCount() - 1)
-    elif isinstance(world, maze_mapper.World):
+    elif world.is_maze:
         e.both("world", args.world)
         e.both("size", f"{world.width}x{world.height}")
         e.json_only("width", world.width)
@@ -168,7 +168,7 @@ def _distance_m(the_scene):
 
 def _grid_entries(e, world):
     """coverage and wall accuracy of the grid the controller kept (maze_mapper.keep_grid)."""
-    if maze_mapper._kept is not None and not isinstance(world, maze_mapper.World):
+    if maze_mapper._kept is not None and not world.is_maze:
         e.both("grid", "kept, not scored (the world is no maze)", "kept")
         return
     if maze_mapper._kept is None:
@@ -240,15 +240,15 @@ def _simulation(args):
     options = dict(robot=args.robot, seed=args.seed, noise=args.noise, max_steps=args.max_steps)
     if args.world is None:
         return None, _native.Simulation.empty_floor(**options)
-    world = _native.load_any_world(args.world, cell_size_m=args.cell_size)
-    if isinstance(world, maze_mapper.World) and args.start is not None:
+    world = _native.load_world(args.world, cell_size_m=args.cell_size)
+    if world.is_maze and args.start is not None:
         start_position = int(args.start[4:]) if args.start.startswith("pos:") else None
-        world = _native.load_any_world(args.world, cell_size_m=args.cell_size, start_position=start_position,
+        world = _native.load_world(args.world, cell_size_m=args.cell_size, start_position=start_position,
                                        random_start=args.start == "random", seed=args.seed)
     for warning in world.warnings:
         print(warning, file=sys.stderr)
     simulation = _native.Simulation(world, **options)
-    if not isinstance(world, maze_mapper.World):
+    if not world.is_maze:
         start = _arena_start(args, world)
         if start is not None:
             simulation.teleport(start[0], start[1], 0.0, start[2])
@@ -260,9 +260,9 @@ def _goal(world):
     empty floor the ones the controller's library reads with its world."""
     if world is None:
         return scene.Goal(from_controller=True)
-    if isinstance(world, maze_mapper.World):
+    if world.is_maze:
         return scene.Goal(cells=world.goals, cell_size_m=world.cell_size_m, origin=world.origin)
-    return scene.Goal(points=world.goals)
+    return scene.Goal(points=world.goal_points)
 
 
 def _run_files(args):

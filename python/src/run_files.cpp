@@ -132,13 +132,13 @@ std::optional<app::Replay> replay_page(const maze::World &world, const MazeRun &
   if (run.kept) history.record(steps, run.grid);
   app::ReplayInput input;
   app::add_history(input, history, steps);
-  app::add_goal_cells(input, goals_of(world.maze));
+  app::add_goal_cells(input, goals_of(world.maze()));
   input.tones = tones_of(run);
-  input.landmarks = app::landmark_marks(world.maze);
+  input.landmarks = app::landmark_marks(world.maze());
   input.title = world.file;
   input.caption = grid_caption(run);
   input.steps = steps;
-  const std::vector<bool> reachable = world.maze.reachable_from_start();
+  const std::vector<bool> reachable = world.maze().reachable_from_start();
   input.reachable_cells = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), true));
   input.summary = app::summary_pairs(report);
   return app::replay_html(input);
@@ -148,13 +148,13 @@ std::optional<app::Replay> replay_page(const maze::World &world, const MazeRun &
 void write_maze_pictures(const fs::path &dir, const maze::World &world, const MazeRun &run,
                          std::vector<std::string> &written) {
   if (run.kept) {
-    const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(world.maze), {},
-                              app::landmark_marks(world.maze)};
+    const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(world.maze()), {},
+                              app::landmark_marks(world.maze())};
     common::write_file_atomically((dir / "map.png").string(),
                                   app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
     written.emplace_back("map.png");
   }
-  common::write_file_atomically((dir / "truth.png").string(), truth_file(world.maze, run));
+  common::write_file_atomically((dir / "truth.png").string(), truth_file(world.maze(), run));
   written.emplace_back("truth.png");
 }
 
@@ -214,7 +214,7 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   const std::vector<PoseTrace::Visit> &visits = trace_ ? trace_->visits() : none;
   // In `run --out`'s order: the pictures, summary.json, trace.csv, replay.html.
   const std::optional<MazeRun> run =
-      maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze, grid, initial_log_odds, visits)) : std::nullopt;
+      maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze(), grid, initial_log_odds, visits)) : std::nullopt;
   if (run) write_maze_pictures(d, *maze, *run, written);
   common::write_file_atomically((d / "summary.json").string(), app::report_json(report).dump(2) + "\n");
   written.emplace_back("summary.json");
@@ -239,6 +239,7 @@ void bind_run_files(py::module_ &m) {
           [](RunFiles &files, const std::vector<EntryTuple> &entries, const py::object &world, const py::object &grid,
              std::optional<float> initial_log_odds) {
             const maze::World *maze = py::isinstance<maze::World>(world) ? &world.cast<const maze::World &>() : nullptr;
+            if (maze != nullptr && !maze->on_lattice()) maze = nullptr;  // an arena: no cell pictures
             files.finish(entries, maze, grid, initial_log_odds);
           },
           py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"));

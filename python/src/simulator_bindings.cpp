@@ -28,7 +28,7 @@
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "maze/world/arena.hpp"
-#include "maze/world/arena_world.hpp"
+#include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world/world.hpp"
 #include "maze/formats/xml_arena.hpp"
@@ -43,8 +43,8 @@ namespace {
 std::optional<maze::sim::Pose> xml_start_pose(const maze::World &world) {
   if (world.format != maze::Format::xml) return std::nullopt;
   const maze::XmlArenaRead read = maze::read_xml_arena(maze::read_file(world.file), world.file);
-  const std::vector<maze::StartPosition> positions = world.maze.start_positions();
-  const maze::StartPosition start{world.maze.start(), world.maze.start_heading()};
+  const std::vector<maze::StartPosition> positions = world.maze().start_positions();
+  const maze::StartPosition start{world.maze().start(), world.maze().start_heading()};
   for (std::size_t i = 0; i < positions.size() && i < read.arena.starts.size(); ++i) {
     if (positions[i] == start) {
       const maze::ArenaPose &p = read.arena.starts[i];
@@ -62,20 +62,15 @@ class PySimulation {
   // The robot starts where Webots puts it: on a course XML world, exactly on the file's pose.
   PySimulation(const maze::World &world, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
                std::int64_t max_steps)
-      : truth_(world.maze), profile_(app::resolve_robot(robot)) {
-    maze::sim::SimulationOptions o = options(seed, noise, max_steps);
-    o.start = xml_start_pose(world);
-    simulation_ = std::make_unique<webots::embedded::Simulation>(*truth_, profile_, o);
-  }
-  PySimulation(const maze::Arena &arena, const std::string &robot, std::uint64_t seed, std::optional<double> noise,
-               std::int64_t max_steps)
       : profile_(app::resolve_robot(robot)) {
-    simulation_ = std::make_unique<webots::embedded::Simulation>(arena, profile_, options(seed, noise, max_steps));
+    maze::sim::SimulationOptions o = options(seed, noise, max_steps);
+    if (world.on_lattice()) o.start = xml_start_pose(world);
+    simulation_ = std::make_unique<webots::embedded::Simulation>(world, profile_, o);
   }
 
   // The course's floor, kCourseFloorSide_m square centred on the origin, with nothing on it;
   // the robot at the origin facing north (where a supervisor's load_environment begins).
-  static maze::Arena empty_floor() {
+  static maze::World empty_floor() {
     maze::Arena arena;
     arena.name = "the course's empty floor";
     const double half = maze::kCourseFloorSide_m / 2.0;
@@ -83,7 +78,7 @@ class PySimulation {
     arena.x_max_m = half;
     arena.y_min_m = -half;
     arena.y_max_m = half;
-    return arena;
+    return maze::World(std::move(arena), "", maze::Format::room);
   }
 
   webots::embedded::Simulation &simulation() { return *simulation_; }
@@ -147,7 +142,6 @@ class PySimulation {
     return o;
   }
 
-  std::optional<maze::Maze> truth_;  // a maze's (the simulator keeps a reference)
   maze::sim::RobotProfile profile_;
   std::unique_ptr<webots::embedded::Simulation> simulation_;
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
@@ -308,58 +302,11 @@ void bind_devices(py::module_ &m) {
 void bind_simulator(py::module_ &m) {
   bind_devices(m);
 
-  py::class_<maze::ArenaWorld>(m, "ArenaWorld",
-                               "An arena read from a file (a room file, or the course's XML read as one): a "
-                               "boundary and solids in metres, on no lattice.")
-      .def_property_readonly("file", [](const maze::ArenaWorld &w) { return w.file; })
-      .def_property_readonly("warnings", [](const maze::ArenaWorld &w) { return w.warnings; })
-      .def_property_readonly("name", [](const maze::ArenaWorld &w) { return w.arena.name; })
-      .def_property_readonly("obstacles", [](const maze::ArenaWorld &w) { return w.arena.obstacles.size(); })
-      .def_property_readonly("boundary",
-                             [](const maze::ArenaWorld &w) {
-                               return py::make_tuple(w.arena.x_min_m, w.arena.x_max_m, w.arena.y_min_m,
-                                                     w.arena.y_max_m);
-                             })
-      .def_property_readonly("goals",
-                             [](const maze::ArenaWorld &w) {
-                               std::vector<std::pair<double, double>> goals;
-                               for (const maze::ArenaPoint &g : w.arena.goals) goals.emplace_back(g.x_m, g.y_m);
-                               return goals;
-                             })
-      .def_property_readonly("starts", [](const maze::ArenaWorld &w) {
-        std::vector<std::tuple<double, double, double>> starts;
-        for (const maze::ArenaPose &p : w.arena.starts) starts.emplace_back(p.x_m, p.y_m, p.yaw_rad);
-        return starts;
-      });
-  m.def(
-      "load_any_world",
-      [](const std::string &path, std::optional<double> cell_size_m, std::optional<int> start_position,
-         bool random_start, std::uint64_t seed) -> py::object {
-        maze::WorldOverrides overrides;
-        overrides.cell_size_m = cell_size_m;
-        overrides.start_position = start_position;
-        overrides.random_start = random_start;
-        overrides.random_start_seed = seed;
-        maze::AnyWorld world = maze::load_any_world(path, overrides, {});
-        if (maze::is_arena(world)) return py::cast(std::get<maze::ArenaWorld>(std::move(world)));
-        return py::cast(std::get<maze::World>(std::move(world)));
-      },
-      py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(), py::arg("start_position") = py::none(),
-      py::arg("random_start") = false, py::arg("seed") = common::kDefaultSeed,
-      "A World (a maze) or an ArenaWorld (an arena), as `maze_mapper run` reads the file; start_position (1-based) "
-      "or random_start (drawn with seed) choose a maze's start among its start positions (--start pos:N, random).");
-
   py::class_<PySimulation>(m, "Simulation",
                            "The embedded simulator: a world and one robot (a built-in profile or a FILE.json). "
                            "maze_mapper.run builds one; a controller only sees its Robot.")
       .def(py::init<const maze::World &, const std::string &, std::uint64_t, std::optional<double>, std::int64_t>(),
            py::arg("world"), py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
-           py::arg("noise") = py::none(), py::arg("max_steps") = 0)
-      .def(py::init([](const maze::ArenaWorld &world, const std::string &robot, std::uint64_t seed,
-                       std::optional<double> noise, std::int64_t max_steps) {
-             return std::make_unique<PySimulation>(world.arena, robot, seed, noise, max_steps);
-           }),
-           py::arg("arena"), py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
            py::arg("noise") = py::none(), py::arg("max_steps") = 0)
       .def_static(
           "empty_floor",
@@ -377,14 +324,14 @@ void bind_simulator(py::module_ &m) {
             s.simulation().add_obstacle(maze::Obstacle::oriented(cx, cy, half_length, half_width, angle));
           },
           py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("half_length_m"), py::arg("half_width_m"),
-          py::arg("angle_rad"), "A solid box (its long axis at angle_rad from east) added to an arena's world.")
+          py::arg("angle_rad"), "A solid box (its long axis at angle_rad from east) added to the world (a maze's is simulated on its geometry from then on).")
       .def(
           "add_cylinder",
           [](PySimulation &s, double cx, double cy, double radius) {
             s.simulation().add_disc({cx, cy, radius});
           },
           py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("radius_m"),
-          "A solid upright cylinder added to an arena's world.")
+          "A solid upright cylinder added to the world (a maze's is simulated on its geometry from then on).")
       .def(
           "teleport",
           [](PySimulation &s, double x, double y, double z, double yaw) {

@@ -49,12 +49,17 @@ struct Score {
   std::vector<ScoredSide> first_wrong_where_looked;
 };
 
-// load_world(path, cell_size_m=...): the cell size checked as --cell-size checks it (its one rule).
-maze::World load(const std::string &path, std::optional<double> cell_size_m) {
+// load_world(path, cell_size_m=..., start_position=..., random_start=..., seed=...): the cell
+// size checked as --cell-size checks it (its one rule).
+maze::World load(const std::string &path, std::optional<double> cell_size_m, std::optional<int> start_position,
+                 bool random_start, std::uint64_t seed) {
   maze::WorldOverrides overrides;
   if (cell_size_m) {
     app::option_field<maze::WorldOverrides>("--cell-size").parse(overrides, fmt::format("{}", *cell_size_m));
   }
+  overrides.start_position = start_position;
+  overrides.random_start = random_start;
+  overrides.random_start_seed = seed;
   return maze::load_world(path, overrides);
 }
 
@@ -100,11 +105,11 @@ Score score(const maze::World &world, const py::object &grid, const py::object &
     const PyGrid &g = grid.cast<const PyGrid &>();
     const float initial = initial_log_odds.value_or(g.initial_log_odds());
     const explore::Visits visits = visited.is_none() ? g.visits : visits_from(visited, g.grid.width(), g.grid.height());
-    return score_grid(world.maze, g.grid, visits, initial, threshold);
+    return score_grid(world.maze(), g.grid, visits, initial, threshold);
   }
   const float initial = initial_log_odds.value_or(0.0f);
   const mapping::OccupancyGrid g = grid_from_array(grid, initial);
-  return score_grid(world.maze, g, visits_from(visited, g.width(), g.height()), initial, threshold);
+  return score_grid(world.maze(), g, visits_from(visited, g.width(), g.height()), initial, threshold);
 }
 
 // The program's own exploration of a world (`maze_mapper run`, without printing): its grid
@@ -121,8 +126,8 @@ py::tuple explore_world(const maze::World &world, const std::optional<std::strin
   app::validate(options);
   const maze::sim::RobotProfile profile = app::resolve_robot(options.robot);
   app::require_sensors(options, profile);
-  const robot::ControllerOptions controller_opts = app::controller_options(options, world.maze, profile);
-  webots::embedded::Simulation simulation(world.maze, profile, options.simulation);
+  const robot::ControllerOptions controller_opts = app::controller_options(options, world.maze(), profile);
+  webots::embedded::Simulation simulation(world.maze(), profile, options.simulation);
   robot::CellController controller(simulation.robot(), controller_opts);
   robot::RunResult result = controller.run();
   PyGrid grid(result.grid.geometry(), mapping::SensorModel(options.sensor));
@@ -140,40 +145,73 @@ py::tuple explore_world(const maze::World &world, const std::optional<std::strin
 }  // namespace
 
 void bind_world(py::module_ &m) {
-  py::class_<maze::World>(m, "World", "A maze read from a file (text map, mms num or wall-segment XML).")
+  py::class_<maze::World>(m, "World",
+                          "A world read from a file: a maze (walls on a cell lattice: text map, num, .maz, the "
+                          "course's XML) or an arena (solids in metres: a room file, the course's XML of thick "
+                          "walls). The cell properties (width ... has_wall, text) are a maze's and raise Error "
+                          "on an arena; the metric ones (name ... goal_points) are any world's.")
       .def_readonly("file", &maze::World::file)
       .def_readonly("warnings", &maze::World::warnings)
-      .def_property_readonly("width", [](const maze::World &w) { return w.maze.width(); })
-      .def_property_readonly("height", [](const maze::World &w) { return w.maze.height(); })
-      .def_property_readonly("cell_size_m", [](const maze::World &w) { return w.maze.cell_size_m(); })
+      .def_property_readonly("is_maze", &maze::World::on_lattice, "Whether its walls lie on a cell lattice.")
+      .def_property_readonly("name", &maze::World::name)
+      .def_property_readonly("obstacles", [](const maze::World &w) { return w.geometry().obstacles.size(); },
+                             "Its solids in metres, counted (a maze's walls as rectangles).")
+      .def_property_readonly("boundary",
+                             [](const maze::World &w) {
+                               const maze::Arena g = w.geometry();
+                               return py::make_tuple(g.x_min_m, g.x_max_m, g.y_min_m, g.y_max_m);
+                             },
+                             "(x_min, x_max, y_min, y_max), m: the floor the robot stays on.")
+      .def_property_readonly("goal_points",
+                             [](const maze::World &w) {
+                               std::vector<std::pair<double, double>> goals;
+                               for (const maze::ArenaPoint &g : w.geometry().goals) goals.emplace_back(g.x_m, g.y_m);
+                               return goals;
+                             },
+                             "The goals in metres (a maze's goal cells' centres).")
+      .def_property_readonly("starts",
+                             [](const maze::World &w) {
+                               std::vector<std::tuple<double, double, double>> starts;
+                               for (const maze::ArenaPose &p : w.geometry().starts) {
+                                 starts.emplace_back(p.x_m, p.y_m, p.yaw_rad);
+                               }
+                               return starts;
+                             },
+                             "The start poses (x_m, y_m, yaw_rad) the world states.")
+      .def_property_readonly("width", [](const maze::World &w) { return w.maze().width(); })
+      .def_property_readonly("height", [](const maze::World &w) { return w.maze().height(); })
+      .def_property_readonly("cell_size_m", [](const maze::World &w) { return w.maze().cell_size_m(); })
       .def_property_readonly("origin",
-                             [](const maze::World &w) { return std::make_pair(w.maze.origin_x_m(), w.maze.origin_y_m()); })
+                             [](const maze::World &w) { return std::make_pair(w.maze().origin_x_m(), w.maze().origin_y_m()); })
       .def_property_readonly("start",
-                             [](const maze::World &w) { return std::make_pair(w.maze.start().x, w.maze.start().y); })
+                             [](const maze::World &w) { return std::make_pair(w.maze().start().x, w.maze().start().y); })
       .def_property_readonly("start_heading",
-                             [](const maze::World &w) { return std::string(1, common::to_char(w.maze.start_heading())); })
+                             [](const maze::World &w) { return std::string(1, common::to_char(w.maze().start_heading())); })
       .def_property_readonly("goals",
                              [](const maze::World &w) {
                                std::vector<std::pair<int, int>> goals;
-                               for (const maze::Cell c : w.maze.goals()) goals.emplace_back(c.x, c.y);
+                               for (const maze::Cell c : w.maze().goals()) goals.emplace_back(c.x, c.y);
                                return goals;
                              })
       .def(
           "has_wall",
           [](const maze::World &w, int x, int y, const std::string &side) {
-            if (!w.maze.contains({x, y})) {
+            if (!w.maze().contains({x, y})) {
               throw common::InputError(
-                  fmt::format("cell ({},{}) is outside the {}x{} maze", x, y, w.maze.width(), w.maze.height()));
+                  fmt::format("cell ({},{}) is outside the {}x{} maze", x, y, w.maze().width(), w.maze().height()));
             }
-            return w.maze.has_wall({x, y}, parse_heading(side));
+            return w.maze().has_wall({x, y}, parse_heading(side));
           },
           py::arg("x"), py::arg("y"), py::arg("side"), "Whether side N, E, S or W of cell (x, y) is walled.")
       .def(
-          "text", [](const maze::World &w) { return maze::format_world(w.maze, maze::Format::text_map, w.file); },
+          "text", [](const maze::World &w) { return maze::format_world(w.maze(), maze::Format::text_map, w.file); },
           "The maze as a canonical text map (what `maze_mapper show` prints).");
   m.def("load_world", &load, py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(),
-        "Reads a world in any format (detected by content), validated. cell_size_m: for text and num "
-        "worlds (--cell-size), 1 m by default.");
+        py::arg("start_position") = py::none(), py::arg("random_start") = false,
+        py::arg("seed") = common::kDefaultSeed,
+        "Reads a world in any format (detected by content), validated, as `maze_mapper run` and `room` read it. "
+        "cell_size_m: for text and num worlds (--cell-size), 1 m by default; start_position (1-based) or "
+        "random_start (drawn with seed) choose a maze's start among its start positions (--start pos:N, random).");
 
   py::class_<ScoredSide>(m, "ScoredSide")
       .def_readonly("x", &ScoredSide::x)

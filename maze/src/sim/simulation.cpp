@@ -112,18 +112,29 @@ void Simulation::add_device(const std::string &name, Kind kind, int spec) {
   devices_.push_back(std::unique_ptr<Device>(new D(name, *this, index)));
 }
 
-Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
+Simulation::Simulation(const maze::World &world, const maze::sim::RobotProfile &profile,
                        const maze::sim::SimulationOptions &options)
-    : profile_(profile), options_(options), walls_(maze), pose_(options.start.value_or(start_pose(maze))) {
+    : profile_(profile), options_(options) {
+  const maze::Maze *lattice = world.lattice();
+  if (lattice != nullptr && lattice->landmarks().empty()) {
+    lattice_ = *lattice;
+    walls_.emplace(*lattice);
+    pose_ = options.start.value_or(start_pose(*lattice));
+  } else {
+    use_geometry(world.geometry());
+    initial_geometry_ = geometry_;
+    pose_ = options.start.value_or(start_pose(*geometry_));
+  }
   set_up();
 }
 
+Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
+                       const maze::sim::SimulationOptions &options)
+    : Simulation(maze::World(maze, "", maze::Format::text_map), profile, options) {}
+
 Simulation::Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &profile,
                        const maze::sim::SimulationOptions &options)
-    : profile_(profile), options_(options), arena_(arena), arena_world_(arena), initial_arena_(arena),
-      pose_(options.start.value_or(start_pose(arena))) {
-  set_up();
-}
+    : Simulation(maze::World(arena, "", maze::Format::room), profile, options) {}
 
 void Simulation::set_up() {
   initial_pose_ = pose_;

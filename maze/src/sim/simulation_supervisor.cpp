@@ -25,29 +25,34 @@ void require_finite_value(double value, const char *what) {
 
 }  // namespace
 
+void Simulation::use_geometry(maze::Arena geometry) {
+  arena_.emplace(geometry);
+  geometry_ = std::move(geometry);
+}
+
 void Simulation::rebuild_solids() {
-  arena_.emplace(*arena_world_);
+  use_geometry(std::move(*geometry_));
   free_centres_.reset();
   for (DeviceState &state : states_) state.read_at_step = -1;  // the sensors see the change at once
 }
 
 void Simulation::add_obstacle(const maze::Obstacle &obstacle) {
-  if (!arena_world_) throw common::InputError("a solid cannot be added to a maze's world (its walls are on the lattice)");
   require_finite_value(obstacle.centre_x_m, "an obstacle's x");
   require_finite_value(obstacle.centre_y_m, "an obstacle's y");
   require_finite_value(obstacle.angle_rad, "an obstacle's angle");
   require_solid_size(obstacle.half_length_m, "an obstacle's length");
   require_solid_size(obstacle.half_width_m, "an obstacle's width");
-  arena_world_->obstacles.push_back(obstacle);
+  if (!geometry_) geometry_ = maze::arena_from_maze(*lattice_);
+  geometry_->obstacles.push_back(obstacle);
   rebuild_solids();
 }
 
 void Simulation::add_disc(const maze::ArenaDisc &disc) {
-  if (!arena_world_) throw common::InputError("a solid cannot be added to a maze's world (its walls are on the lattice)");
   require_finite_value(disc.centre_x_m, "a cylinder's x");
   require_finite_value(disc.centre_y_m, "a cylinder's y");
   require_solid_size(disc.radius_m, "a cylinder's radius");
-  arena_world_->discs.push_back(disc);
+  if (!geometry_) geometry_ = maze::arena_from_maze(*lattice_);
+  geometry_->discs.push_back(disc);
   rebuild_solids();
 }
 
@@ -63,9 +68,11 @@ void Simulation::teleport(const maze::sim::Pose &pose, double z_m) {
 }
 
 void Simulation::reset_world() {
-  if (initial_arena_) {
-    arena_world_ = initial_arena_;
-    arena_.emplace(*arena_world_);
+  if (initial_geometry_) {
+    use_geometry(*initial_geometry_);
+  } else {
+    arena_.reset();
+    geometry_.reset();
   }
   teleport(initial_pose_, 0.0);
   for (Wheel &wheel : wheels_) {

@@ -1,44 +1,71 @@
 #include "maze/world/world.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
+#include <cassert>
 #include <cmath>
-#include <cstddef>
-#include <cstring>
 #include <filesystem>
-#include <optional>
-#include <vector>
+#include <utility>
 
 #include <fmt/format.h>
 
-#include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "common/input_file.hpp"
-#include "maze/world/arena_world.hpp"
-#include "maze/formats/maz_format.hpp"
 #include "common/random.hpp"
-#include "maze/formats/num_format.hpp"
 #include "maze/formats/room_format.hpp"
-#include "maze/formats/text_map.hpp"
-#include "maze/world/validate.hpp"
-#include "maze/formats/wbt_format.hpp"
+#include "maze/formats/xml_arena.hpp"
 #include "maze/formats/xml_format.hpp"
+#include "maze/world/arena_truth.hpp"
+#include "maze/world/validate.hpp"
 
 namespace maze {
 
+World::World(Maze maze, std::string file_path, Format file_format)
+    : file(std::move(file_path)), format(file_format), shape_(std::move(maze)) {}
+
+World::World(Arena arena, std::string file_path, Format file_format, std::optional<common::InputError> why_not_a_maze)
+    : file(std::move(file_path)), format(file_format), shape_(std::move(arena)), why_not_a_maze_(std::move(why_not_a_maze)) {}
+
 namespace {
 
-constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
-
-// Closes a file descriptor when it goes out of scope.
-common::InputError cannot(std::string_view what, const std::string &path, int error) {
-  return common::InputError(fmt::format("cannot {} {}: {}", what, path, std::strerror(error)));
+[[noreturn]] void refuse_arena_as_maze(const std::string &file, const std::optional<common::InputError> &why) {
+  const common::InputError reason =
+      why ? *why : common::InputError(common::SourceLocation{file, 0, 0}, "an arena (obstacles in metres), not a grid maze");
+  throw common::InputError(reason.where(), fmt::format("{}; it reads as an arena (a room of obstacles): map it with "
+                                                       "`maze_mapper room {}`",
+                                                       reason.message(), file));
 }
+
+}  // namespace
+
+const Maze &World::maze() const {
+  if (const Maze *m = lattice()) return *m;
+  refuse_arena_as_maze(file, why_not_a_maze_);
+}
+
+Maze &World::maze() {
+  if (Maze *m = std::get_if<Maze>(&shape_)) return *m;
+  refuse_arena_as_maze(file, why_not_a_maze_);
+}
+
+const Arena &World::arena() const {
+  assert(!on_lattice());
+  return std::get<Arena>(shape_);
+}
+
+Arena &World::arena() {
+  assert(!on_lattice());
+  return std::get<Arena>(shape_);
+}
+
+Arena World::geometry() const { return on_lattice() ? arena_from_maze(maze()) : arena(); }
+
+std::string World::name() const {
+  if (!on_lattice() && !arena().name.empty()) return arena().name;
+  return std::filesystem::path(file).stem().string();
+}
+
+namespace {
+
+constexpr double kEnclosureCell_m = 0.05;
 
 void require_inside(const Maze &maze, Cell c, std::string_view option) {
   if (!maze.contains(c)) {
@@ -49,11 +76,11 @@ void require_inside(const Maze &maze, Cell c, std::string_view option) {
 
 // An XML world reads --cell-size itself (read_xml's options).
 void apply_cell_size(World &world, double cell_size_m) {
-  if (world.format != Format::xml) world.maze.set_physical(cell_size_m, kDefaultWallThickness_m, 0.0, 0.0);
+  if (world.format != Format::xml) world.maze().set_physical(cell_size_m, kDefaultWallThickness_m, 0.0, 0.0);
 }
 
 void apply_start_position(World &world, const WorldOverrides &o) {
-  const std::vector<StartPosition> positions = world.maze.start_positions();
+  const std::vector<StartPosition> positions = world.maze().start_positions();
   std::size_t index = 0;
   if (o.start_position) {
     if (*o.start_position < 1 || static_cast<std::size_t>(*o.start_position) > positions.size()) {
@@ -67,18 +94,19 @@ void apply_start_position(World &world, const WorldOverrides &o) {
   } else {
     return;
   }
-  world.maze.set_start(positions[index].cell, positions[index].heading);
+  world.maze().set_start(positions[index].cell, positions[index].heading);
 }
 
 void apply(World &world, const WorldOverrides &o) {
   if (o.cell_size_m) apply_cell_size(world, *o.cell_size_m);
   apply_start_position(world, o);
+  Maze &maze = world.maze();
   if (o.start) {
-    require_inside(world.maze, *o.start, "--start");
-    world.maze.set_start(*o.start, o.start_heading);
+    require_inside(maze, *o.start, "--start");
+    maze.set_start(*o.start, o.start_heading);
   }
   if (o.start_m) {
-    const Maze &m = world.maze;
+    const Maze &m = maze;
     const double column = std::floor(((*o.start_m)[0] - m.origin_x_m()) / m.cell_size_m());
     const double row = std::floor(((*o.start_m)[1] - m.origin_y_m()) / m.cell_size_m());
     if (!(column >= 0 && column < m.width() && row >= 0 && row < m.height())) {
@@ -87,50 +115,41 @@ void apply(World &world, const WorldOverrides &o) {
                                            m.origin_x_m() + m.width() * m.cell_size_m(), m.origin_y_m(),
                                            m.origin_y_m() + m.height() * m.cell_size_m()));
     }
-    world.maze.set_start(Cell{static_cast<int>(column), static_cast<int>(row)}, o.start_heading);
+    maze.set_start(Cell{static_cast<int>(column), static_cast<int>(row)}, o.start_heading);
   }
   if (o.goals) {
-    for (const Cell g : *o.goals) require_inside(world.maze, g, "--goal");
-    world.maze.clear_goals();
-    for (const Cell g : *o.goals) world.maze.add_goal(g);
+    for (const Cell g : *o.goals) require_inside(maze, g, "--goal");
+    maze.clear_goals();
+    for (const Cell g : *o.goals) maze.add_goal(g);
   }
   if (o.centre_goals) {
-    world.maze.clear_goals();
-    const int w = world.maze.width();
-    const int h = world.maze.height();
+    maze.clear_goals();
+    const int w = maze.width();
+    const int h = maze.height();
     for (int y = (h - 1) / 2; y <= h / 2; ++y) {
-      for (int x = (w - 1) / 2; x <= w / 2; ++x) world.maze.add_goal({x, y});
+      for (int x = (w - 1) / 2; x <= w / 2; ++x) maze.add_goal({x, y});
     }
   }
 }
 
-bool default_physical(const Maze &m) {
-  return m.cell_size_m() == kDefaultCellSize_m && m.wall_thickness_m() == kDefaultWallThickness_m &&
-         m.origin_x_m() == 0.0 && m.origin_y_m() == 0.0;
+bool has_boundary(const Arena &a) { return a.x_min_m != a.x_max_m || a.y_min_m != a.y_max_m; }
+
+void set_boundary(Arena &a, const std::array<double, 4> &b) {
+  a.x_min_m = b[0];
+  a.x_max_m = b[1];
+  a.y_min_m = b[2];
+  a.y_max_m = b[3];
 }
 
-std::string physical_of(const Maze &m) {
-  return fmt::format("the size (cells of {} m, walls {} m thick, origin ({}, {}))", m.cell_size_m(),
-                     m.wall_thickness_m(), m.origin_x_m(), m.origin_y_m());
-}
-
-std::string goals_of(const Maze &m) {
-  constexpr std::size_t kShown = 4;
-  std::string text = m.goals().size() == 1 ? "the goal " : "the goals ";
-  for (std::size_t i = 0; i < std::min(kShown, m.goals().size()); ++i) {
-    text += fmt::format("{}({},{})", i == 0 ? "" : ", ", m.goals()[i].x, m.goals()[i].y);
+void refuse_maze_overrides(const WorldOverrides &o, const std::string &path) {
+  const char *option = o.cell_size_m                                ? "--cell-size"
+                       : (o.start || o.start_m || o.start_position || o.random_start) ? "--start"
+                       : (o.goals || o.centre_goals)                 ? "--goal"
+                                                                     : nullptr;
+  if (option != nullptr) {
+    throw common::InputError(fmt::format("{} names cells of a grid maze; {} is an arena (obstacles in metres)",
+                                         option, path));
   }
-  if (m.goals().size() > kShown) text += fmt::format(" and {} more", m.goals().size() - kShown);
-  return text;
-}
-
-std::string joined(const std::vector<std::string> &parts) {
-  std::string text;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    text += i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ";
-    text += parts[i];
-  }
-  return text;
 }
 
 }  // namespace
@@ -140,102 +159,9 @@ std::size_t random_start_index(std::uint64_t seed, std::size_t count) {
   return static_cast<std::size_t>(rng.next_u64() % count);
 }
 
-Format detect_format(std::string_view text, const std::string &file) {
-  if (text.empty()) throw common::InputError(common::SourceLocation{file, 0, 0}, "the file is empty; expected a maze");
-  if (looks_like_maz(text)) return Format::maz;
-  std::string_view body = text;
-  if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
-  if (!body.empty() && (body[0] == 'o' || body[0] == '+')) return Format::text_map;
-  if (looks_like_room(body)) return Format::room;
-  const std::size_t first = body.find_first_not_of(" \t\r\n");
-  if (first != std::string_view::npos) {
-    if (body[first] == '<') return Format::xml;
-    if (body[first] >= '0' && body[first] <= '9') return Format::num;
-  }
-  if (body.starts_with("#VRML_SIM")) {
-    throw common::InputError(common::SourceLocation{file, 1, 1},
-                             "a Webots .wbt world, which maze_mapper writes but does not read: use the text map, "
-                             "num or XML world it was made from");
-  }
-  throw common::InputError(common::SourceLocation{file, 1, 1},
-                           "cannot tell the format: expected a text map (first line 'o---o...'), num lines "
-                           "'X Y N E S W', XML '<world>', a room file ('boundary XS XE YS YE', 'rect ...') or a 256-byte "
-                           "binary .maz");
-}
-
-Maze read_world(std::string_view text, const std::string &file) {
-  return read_world(text, file, detect_format(text, file));
-}
-
-Maze read_world(std::string_view text, const std::string &file, Format format) {
-  switch (format) {
-    case Format::text_map: return read_text_map(text, file);
-    case Format::num: return read_num(text, file);
-    case Format::xml: return read_xml(text, file);
-    case Format::maz: return read_maz(text, file);
-    case Format::room:
-      throw common::InputError(common::SourceLocation{file, 0, 0},
-                               "a room file holds an arena (obstacles in metres), not a grid maze");
-    case Format::wbt: break;
-  }
-  throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read Webots worlds");
-}
-
-World load_world(const std::string &path) { return load_world(path, WorldOverrides{}); }
-
 namespace {
 
-// The location of byte `offset` of `text`, line and column from 1.
-common::SourceLocation location_of(std::string_view text, std::size_t offset, const std::string &file) {
-  const std::string_view before = text.substr(0, offset);
-  const auto line = static_cast<int>(std::count(before.begin(), before.end(), '\n')) + 1;
-  const std::size_t line_start = before.rfind('\n');
-  const std::size_t column = line_start == std::string_view::npos ? offset + 1 : offset - line_start;
-  return common::SourceLocation{file, line, static_cast<int>(column)};
-}
-
-}  // namespace
-
-std::string read_world_text(const std::string &path) { return read_world_file(path).text; }
-
-WorldText read_world_file(const std::string &path) {
-  common::InputFile file(path);  // a FIFO's wait for its writer ends on a stop signal
-  std::string text;
-  struct stat status {};
-  if (::fstat(file.fd(), &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0) {
-    text.reserve(std::min(static_cast<std::size_t>(status.st_size), kMaxFileBytes) + 1);  // no doubling
-  }
-  std::optional<Format> format;
-  char buffer[1 << 16];
-  for (;;) {
-    const std::size_t n = file.read(buffer, sizeof buffer);
-    const std::size_t start = text.size();
-    text.append(buffer, n);
-    if (!format && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {
-      format = detect_format(text, path);  // throws when the first bytes are no format at all
-    }
-    if (format == Format::maz) {
-      if (n == 0 || text.size() > kMazBytes) return {std::move(text), *format};  // read_maz says what is wrong with the size
-      continue;
-    }
-    if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
-      throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
-    }
-    if (n == 0) return {std::move(text), format ? *format : detect_format(text, path)};
-    if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
-  }
-}
-
-World load_world(const std::string &path, const WorldOverrides &overrides) {
-  const WorldText file = read_world_file(path);
-  return load_world_text(file.text, path, overrides, file.format);
-}
-
-World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides) {
-  return load_world_text(text, path, overrides, detect_format(text, path));
-}
-
-World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides,
+World read_maze_world(std::string_view text, const std::string &path, const WorldOverrides &overrides,
                       Format format) {
   std::vector<std::string> warnings;
   const auto read = [&]() -> Maze {
@@ -244,97 +170,108 @@ World load_world_text(const std::string &text, const std::string &path, const Wo
     warnings = std::move(xml.warnings);
     return std::move(xml.maze);
   };
-  World world{read(), path, std::move(warnings), format};
+  World world(read(), path, format);
+  world.warnings = std::move(warnings);
   apply(world, overrides);
-  if (const auto summary = unreachable_summary(world.maze)) {
+  if (const auto summary = unreachable_summary(world.maze())) {
     world.warnings.push_back(fmt::format("{}: warning: {}", path, *summary));
   }
   return world;
 }
 
-Format format_for_output(const std::string &path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char &c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".txt") return Format::text_map;
-  if (ext == ".num") return Format::num;
-  if (ext == ".xml") return Format::xml;
-  if (ext == ".wbt") return Format::wbt;
-  if (ext == ".maz") return Format::maz;
-  if (ext == ".room") return Format::room;
-  throw common::InputError(fmt::format(
-      "cannot tell the output format of '{}' from its extension: use .txt, .num, .xml, .wbt, .maz or .room", path));
+// What reading an arena's text as a grid maze says.
+std::optional<common::InputError> why_not_a_maze(std::string_view text, const std::string &path, Format format) {
+  try {
+    (void)read_world(text, path, format);
+  } catch (const common::InputError &e) {
+    return e;
+  }
+  return std::nullopt;
 }
 
-std::optional<std::string> dropped_by(const Maze &maze, Format format) {
-  std::vector<std::string> parts;
-  const char *holds = "";
-  if (format == Format::num || format == Format::maz) {
-    holds = format == Format::num ? "a num file holds only the walls" : "a .maz file holds only the walls";
-    if (maze.start() != Cell{0, 0} || maze.start_heading() != Side::north) {
-      parts.push_back(fmt::format("the start ({},{}) facing {}", maze.start().x, maze.start().y,
-                                  to_string(maze.start_heading())));
-    }
-    // A .maz maze's goal is the classic centre 2 x 2, which it keeps.
-    std::vector<Cell> centre;
-    for (const int x : {maze.width() / 2 - 1, maze.width() / 2}) {
-      for (const int y : {maze.height() / 2 - 1, maze.height() / 2}) centre.push_back({x, y});
-    }
-    std::vector<Cell> goals = maze.goals();
-    std::sort(goals.begin(), goals.end());
-    const bool kept = format == Format::maz && goals == centre;
-    if (!maze.goals().empty() && !kept) parts.push_back(goals_of(maze));
-  } else if (format == Format::room) {
-    holds = "a room file holds the walls as rectangles, the start and the goals";
-  } else if (format == Format::text_map) {
-    holds = "a text map holds walls, start cell and goals; its start faces north";
-    if (maze.start_heading() != Side::north) {
-      parts.push_back(fmt::format("the start's heading ({})", to_string(maze.start_heading())));
-    }
+World read_arena_world(std::string_view text, const std::string &path, const WorldOverrides &overrides,
+                       Format format) {
+  Arena arena;
+  std::vector<std::string> warnings;
+  if (format == Format::room) {
+    arena = read_room(text, path);
   } else {
-    return std::nullopt;
+    XmlArenaRead read = read_xml_arena(text, path);
+    arena = std::move(read.arena);
+    warnings = std::move(read.warnings);
   }
-  if (!default_physical(maze) && format != Format::room) parts.push_back(physical_of(maze));
-  if (const std::size_t n = maze.start_positions().size(); n > 1) {
-    parts.push_back(fmt::format("the other {} start position{}", n - 1, n == 2 ? "" : "s"));
+  if (arena.name.empty()) arena.name = std::filesystem::path(path).stem().string();
+  if (overrides.boundary_m) {
+    set_boundary(arena, *overrides.boundary_m);
+    arena.boundary_where = common::SourceLocation{};
+    if (const ArenaCheck failure = check_arena_boundary(arena)) {
+      throw common::InputError(fmt::format("--boundary {},{},{},{}: XS < XE and YS < YE", (*overrides.boundary_m)[0],
+                                           (*overrides.boundary_m)[1], (*overrides.boundary_m)[2],
+                                           (*overrides.boundary_m)[3]));
+    }
+  } else if (!has_boundary(arena)) {
+    apply_default_boundary(arena);
   }
-  if (const std::size_t n = maze.landmarks().size(); n > 0) {
-    parts.push_back(fmt::format("{} landmark{}", n, n == 1 ? "" : "s"));
-  }
-  if (parts.empty()) return std::nullopt;
-  return fmt::format("dropped {}: {}", joined(parts), holds);
+  validate_arena(arena, overrides.robot_radius_m);
+  World world(std::move(arena), path, format, why_not_a_maze(text, path, format));
+  world.warnings = std::move(warnings);
+  return world;
 }
 
-std::string format_world(const Maze &maze, Format format, std::string_view title) {
-  switch (format) {
-    case Format::text_map: return write_text_map(maze);
-    case Format::num: return write_num(maze);
-    case Format::xml: return write_xml(maze);
-    case Format::wbt: return write_wbt(maze, title);
-    case Format::maz: return write_maz(maze);
-    case Format::room: return write_room(arena_from_maze(maze));
+}  // namespace
+
+World load_world(const std::string &path, const WorldOverrides &overrides) {
+  const WorldText file = read_world_file(path);
+  return load_world_text(file.text, path, overrides, file.format);
+}
+
+World load_world_text(std::string_view text, const std::string &path, const WorldOverrides &overrides) {
+  return load_world_text(text, path, overrides, detect_format(text, path));
+}
+
+World load_world_text(std::string_view text, const std::string &path, const WorldOverrides &overrides,
+                      Format format) {
+  if (!holds_arena(text, format, path, overrides.cell_size_m)) {
+    if (overrides.boundary_m) {
+      throw common::InputError(fmt::format("--boundary applies to arenas; {} is a grid maze", path));
+    }
+    return read_maze_world(text, path, overrides, format);
   }
-  return {};
+  refuse_maze_overrides(overrides, path);
+  return read_arena_world(text, path, overrides, format);
 }
 
-void save_world(const Maze &maze, const std::string &path) {
-  const Format format = format_for_output(path);
-  write_file_atomically(path, format_world(maze, format, std::filesystem::path(path).stem().string()));
+bool holds_arena(std::string_view text, Format format, const std::string &file, std::optional<double> cell_size_m) {
+  return format == Format::room || (format == Format::xml && xml_world_is_arena(text, file, {cell_size_m}));
 }
 
-std::string read_file(const std::string &path) {
-  common::InputFile file(path);
-  std::string text;
-  char buffer[1 << 16];
-  for (;;) {
-    const std::size_t n = file.read(buffer, sizeof buffer);
-    if (n == 0) return text;
-    text.append(buffer, n);
-    if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
+void apply_default_boundary(Arena &arena) {
+  const double half = kCourseFloorSide_m / 2.0;
+  const std::array<double, 4> floor{-half, half, -half, half};
+  if (arena.obstacles.empty()) {
+    set_boundary(arena, floor);
+    return;
   }
-}
-
-void write_file_atomically(const std::string &path, std::string_view content) {
-  common::write_file_atomically(path, content);
+  std::array<double, 4> box = arena.obstacles.front().bounds();
+  for (const Obstacle &o : arena.obstacles) {
+    const auto b = o.bounds();
+    box = {std::min(box[0], b[0]), std::min(box[1], b[1]), std::max(box[2], b[2]), std::max(box[3], b[3])};
+  }
+  Arena enclosed = arena;
+  set_boundary(enclosed, {box[0], box[2], box[1], box[3]});
+  const ArenaPose start = arena.start();
+  if (!(enclosed.width_m() > 0.0 && enclosed.height_m() > 0.0) || !enclosed.inside_boundary(start.x_m, start.y_m) ||
+      enclosed.width_m() > kMaxArenaSide_m || enclosed.height_m() > kMaxArenaSide_m) {
+    set_boundary(arena, floor);
+    return;
+  }
+  const int nx = cells_along(enclosed.width_m(), kEnclosureCell_m);
+  const int ny = cells_along(enclosed.height_m(), kEnclosureCell_m);
+  const ArenaTruth truth = rasterise_arena(enclosed, nx, ny, 0.0);
+  bool open = false;
+  for (int x = 0; x < nx && !open; ++x) open = truth.is_reachable(x, 0) || truth.is_reachable(x, ny - 1);
+  for (int y = 0; y < ny && !open; ++y) open = truth.is_reachable(0, y) || truth.is_reachable(nx - 1, y);
+  set_boundary(arena, open ? floor : std::array<double, 4>{box[0], box[2], box[1], box[3]});
 }
 
 }  // namespace maze

@@ -13,7 +13,7 @@
 //
 //   - boundary XS XE YS YE: the floor, walled all round, in the homework's order; at most one.
 //     Without it: the obstacles' bounding box when they enclose the start, else the course's
-//     17 x 17 m floor centred on the origin (arena_world.hpp, default_boundary).
+//     17 x 17 m floor centred on the origin (world.hpp, apply_default_boundary).
 //   - rect X0 Y0 X1 Y1: an axis-aligned solid rectangle, corners in any order, of positive area.
 //   - wall X1 Y1 X2 Y2 [WIDTH]: a solid rectangle centred on the segment, WIDTH thick (default
 //     0.012 m, the course's) and exactly as long as the segment, as the course's XML walls are

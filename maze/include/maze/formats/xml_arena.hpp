@@ -19,7 +19,7 @@
 //     the course's tools ignore, as they ignore every element they do not know); without it
 //     the loader gives the obstacles' bounding box when they enclose the start, else the
 //     course's 17 x 17 m floor centred on the origin, unless the user gives one
-//     (arena_world.hpp).
+//     (world.hpp).
 //   - <world name="...">: the arena's name (maze_mapper's own attribute; else the file's name).
 //   - <pos x y theta>: start poses (theta in radians, default pi/2, any angle); <goal x y>:
 //     goal points; <landmark>s are not simulated (a warning says how many were left out);

@@ -36,6 +36,7 @@
 #include "common/random.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/world/maze.hpp"
+#include "maze/world/world.hpp"
 #include "maze/sim/arena_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/lidar_sweep.hpp"
@@ -122,22 +123,21 @@ struct Collisions {
 
 class Simulation {
  public:
-  // Validates options and the start pose (inside the maze, the body clear of the walls);
-  // throws common::InputError otherwise.
-  Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
-             const maze::sim::SimulationOptions &options);
-  // The same robot and devices in an arena (validated, with a boundary): its obstacles and
-  // walled boundary are the solids (ArenaGeometry); the start is options.start, else the
-  // arena's start(). Throws common::InputError as above (outside the arena, in an obstacle).
-  Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &profile,
-             const maze::sim::SimulationOptions &options);
+  // The robot in a world (a maze's, an arena's: the next two): a lattice without landmarks on
+  // its wall grid (WallGrid), any other world on its geometry (ArenaGeometry). Starts at
+  // options.start, else the world's; throws common::InputError for bad options or start.
+  using Profile = maze::sim::RobotProfile;
+  using Options = maze::sim::SimulationOptions;
+  Simulation(const maze::World &world, const Profile &profile, const Options &options);
+  Simulation(const maze::Maze &maze, const Profile &profile, const Options &options);
+  Simulation(const maze::Arena &arena, const Profile &profile, const Options &options);
   ~Simulation();
   Simulation(const Simulation &) = delete;
   Simulation &operator=(const Simulation &) = delete;
 
   Robot &robot() { return *robot_; }
   const maze::sim::RobotProfile &profile() const { return profile_; }
-  // A maze's walls (only for a simulation built from a maze), an arena's solids (only from an arena).
+  // The solids: a lattice's wall grid (only while not in_arena()), else the geometry's.
   bool in_arena() const { return arena_.has_value(); }
   const maze::sim::WallGrid &walls() const { return *walls_; }
   const maze::sim::ArenaGeometry &arena_solids() const { return *arena_; }
@@ -159,21 +159,19 @@ class Simulation {
 
   // ---- a supervisor's edits (Webots' Supervisor API; the composition root's, never a
   // robot-side controller's) ----
-  // Adds a solid to an arena's world, seen and met at once (a body it overlaps is pushed out as
-  // it moves). Throws common::InputError on a maze's world, or for a non-finite or negative size.
+  // Adds a solid, seen and met at once (a body it overlaps is pushed out as it moves); a lattice
+  // is simulated on its geometry from then on. Throws common::InputError for a bad size.
   void add_obstacle(const maze::Obstacle &obstacle);
   void add_disc(const maze::ArenaDisc &disc);
-  // Moves the robot to pose, its origin z_m above the floor (Webots' translation and rotation
-  // fields set by a supervisor): the wheels keep their speeds and angles; every reading is
-  // taken afresh at the new pose. GPS z reads z_m from then on.
+  // Moves the robot to pose, its origin z_m above the floor (a supervisor's translation and
+  // rotation): wheels as they were, every reading afresh, GPS z reading z_m from then on.
   void teleport(const maze::sim::Pose &pose, double z_m);
   double height_m() const { return height_m_; }
   // Webots' simulationReset ("Reset from Supervisor"): the solids added since the start gone,
   // the robot at its start pose, wheels at rest, encoders and simulated time at 0. The time
   // limit counts steps(), resets included, so a controller that resets still ends there.
   void reset_world();
-  // The distance from (x, y) along angle_rad to the first solid, +infinity beyond max_range_m
-  // (what a supervisor checks a line of sight with).
+  // The distance from (x, y) along angle_rad to the first solid, +infinity beyond max_range_m.
   double cast(double x_m, double y_m, double angle_rad, double max_range_m) const;
 
   // ---- plumbing for the webots:: device classes (maze/src/webots/) ----
@@ -209,12 +207,14 @@ class Simulation {
   void add_device(const std::string &name, Kind kind, int spec);
   // The constructors' shared part, once the solids are set.
   void set_up();
-  // The arena's solids built again from arena_world_ after a supervisor's edit.
+  // The solids from now on: the geometry's (ArenaGeometry), kept as geometry_.
+  void use_geometry(maze::Arena geometry);
+  // The arena's solids built again from geometry_ after a supervisor's edit.
   void rebuild_solids();
   // f(the solids): the one choice between a maze and an arena, made once per query.
   template <typename F>
   decltype(auto) with_solids(F &&f) const {
-    return walls_ ? f(*walls_) : f(*arena_);
+    return arena_ ? f(*arena_) : f(*walls_);
   }
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
@@ -248,10 +248,11 @@ class Simulation {
 
   maze::sim::RobotProfile profile_;
   maze::sim::SimulationOptions options_;
-  std::optional<maze::sim::WallGrid> walls_;        // a maze's
-  std::optional<maze::sim::ArenaGeometry> arena_;   // or an arena's
-  std::optional<maze::Arena> arena_world_;          // the arena arena_ is built from
-  std::optional<maze::Arena> initial_arena_;        // and as it was built first
+  std::optional<maze::Maze> lattice_;                // the world's lattice, simulated on walls_
+  std::optional<maze::sim::WallGrid> walls_;         // while arena_ is empty
+  std::optional<maze::sim::ArenaGeometry> arena_;    // the geometry's solids, when in use
+  std::optional<maze::Arena> geometry_;              // the geometry arena_ is built from
+  std::optional<maze::Arena> initial_geometry_;      // and as the world began (none: on walls_)
   maze::sim::Pose initial_pose_;
   double height_m_ = 0.0;                           // the robot's origin above the floor
   maze::sim::Pose pose_;

@@ -45,7 +45,7 @@ struct StartPosition {
 
 // A landmark of the course's worlds: a coloured cylinder standing at (x, y), in metres, of
 // the given height; red, green, blue in [0, 1]. Its radius is the course's,
-// kLandmarkRadius_m. The embedded simulator's sensors do not see landmarks.
+// kLandmarkRadius_m: a solid the robot's sensors see and its body meets (arena_from_maze).
 struct Landmark {
   double x_m = 0.0;
   double y_m = 0.0;

@@ -1,6 +1,16 @@
 #pragma once
-// Worlds as files: reading one whatever its format (detected by content), writing one by the
-// output's extension, safely.
+// A world: geometry in metres (walls with their thickness, boxes, landmark cylinders, the
+// floor's bounds) plus starts, goals and landmarks; and, when its walls lie on a cell lattice,
+// that lattice (what makes it a maze). The cell explorer, floodfill, mms and the micromouse
+// formats read the lattice view; the simulator, the room strategies and pictures in metres
+// read the geometry. Every reader produces a World, and a file's format is told once.
+//
+//     a file --read_world_file--> text, Format --load_world--> World
+//                                                               |-- lattice(): Maze (cells, sides)
+//                                                               `-- geometry(): Arena (metres)
+//
+// Which a file is: a room file is free geometry (an arena); an XML world is one by
+// xml_world_is_arena's rule (xml_arena.hpp), else a maze; every other format is a maze.
 
 #include <array>
 #include <cstddef>
@@ -8,25 +18,55 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
+#include "common/error.hpp"
+#include "maze/world/arena.hpp"
 #include "maze/world/maze.hpp"
+#include "maze/world/world_files.hpp"
 
 namespace maze {
 
-// room: an arena's plain format (room_format.hpp; arena_world.hpp reads arenas).
-enum class Format { text_map, num, xml, wbt, maz, room };
+class World {
+ public:
+  // A maze: walls on a lattice.
+  World(Maze maze, std::string file, Format format);
+  // Free geometry (an arena): validated by the caller (validate_arena). why_not_a_maze: what
+  // reading the file as a grid maze says (maze() repeats it), when it was read from one.
+  World(Arena arena, std::string file, Format format,
+        std::optional<common::InputError> why_not_a_maze = std::nullopt);
 
-// A maze read from a file, with what the user should hear about it.
-struct World {
-  Maze maze;
+  // Whether its walls lie on a cell lattice.
+  bool on_lattice() const { return std::holds_alternative<Maze>(shape_); }
+  // The lattice view, or nullptr when the walls lie on none.
+  const Maze *lattice() const { return std::get_if<Maze>(&shape_); }
+  // The lattice view. Throws common::InputError when the walls lie on none: why_not_a_maze's
+  // place and words, then "; it reads as an arena (a room of obstacles): map it with
+  // `maze_mapper room FILE`".
+  const Maze &maze() const;
+  Maze &maze();
+  // The free geometry of a world on no lattice; asserts !on_lattice().
+  const Arena &arena() const;
+  Arena &arena();
+  // The geometry, whatever the world: free geometry as it is; a lattice's as
+  // arena_from_maze(maze()), built on each call (O(walls)).
+  Arena geometry() const;
+  // The world's name: an arena's own, else the file's stem.
+  std::string name() const;
+
   std::string file;                   // the path as the user gave it
   std::vector<std::string> warnings;  // whole lines, "FILE: warning: ...", without '\n'
   Format format = Format::text_map;   // the format it was read in
+
+ private:
+  std::variant<Maze, Arena> shape_;
+  std::optional<common::InputError> why_not_a_maze_;
 };
 
-// What a command line supplies or overrides in the world it loads (--cell-size, --start,
-// --goal), checked where it is parsed; load_world applies it.
+// What a command line supplies or overrides in the world it loads, checked where it is
+// parsed; load_world applies it. The cell ones (--cell-size, --start, --goal) apply to a maze
+// and are refused on an arena; --boundary applies to an arena and is refused on a maze.
 struct WorldOverrides {
   // Text and num worlds: cells of this size (m), walls kDefaultWallThickness_m, origin (0, 0).
   // An XML world has its own size: one that differs by more than 1e-9 of it is an error.
@@ -45,6 +85,11 @@ struct WorldOverrides {
   // --goal centre: the goals are the maze's centre cells (the micromouse convention: 2 x 2 on
   // an even size, a row or column of 2 or one cell on odd ones), in place of the file's.
   bool centre_goals = false;
+
+  // --boundary XS,XE,YS,YE (m): replaces an arena file's boundary, or the default one.
+  std::optional<std::array<double, 4>> boundary_m;
+  // The robot's body radius: an arena's starts are checked clear by it (0: the points).
+  double robot_radius_m = 0.0;
 };
 
 // The 0-based index of the start position --start random picks among count (>= 1) with seed:
@@ -55,64 +100,26 @@ std::size_t random_start_index(std::uint64_t seed, std::size_t count);
 inline constexpr double kMinCellSize_m = 4 * kDefaultWallThickness_m;
 inline constexpr double kMaxCellSize_m = 1000.0;
 
-// The input format by content: '<' first (after blanks) is XML, 'o' or '+' first a text map,
-// a digit first a num file, a room statement first (after blank and '#' comment lines) a room
-// file. Throws common::InputError when it is none of these.
-Format detect_format(std::string_view text, const std::string &file);
-
-// Reads a world from text in any input format, validated. Throws common::InputError.
-Maze read_world(std::string_view text, const std::string &file);
-// Likewise, the format already told (detect_format): a room file is refused as an arena.
-Maze read_world(std::string_view text, const std::string &file, Format format);
-
-// Reads, detects, validates; unreachable cells become a warning. Throws common::InputError
-// ("cannot read FILE: reason", or the fault's place in the file).
-World load_world(const std::string &path);
-// Likewise, then applies the overrides (before the unreachable-cells warning, which follows
-// the start). Throws common::InputError "--start 9,9 is outside the 4x4 maze" and the like.
-World load_world(const std::string &path, const WorldOverrides &overrides);
-// load_world on a file's text already read (read_world_text).
-World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides);
-// Likewise, its format already told (read_world_file): the format is detected once a load.
-World load_world_text(const std::string &text, const std::string &path, const WorldOverrides &overrides,
+// Reads, detects the format once, validates, applies the overrides: a maze (an unreachable
+// cell a warning, after the start is set) or an arena (its boundary: the override, the
+// file's, or apply_default_boundary's). Throws common::InputError ("cannot read FILE:
+// reason", the fault's place in the file, "--start 9,9 is outside the 4x4 maze", "--start
+// names cells of a grid maze; FILE is an arena ...", "--boundary applies to arenas; ...").
+World load_world(const std::string &path, const WorldOverrides &overrides = {});
+// load_world on a file's text already read (read_world_file), its format told.
+World load_world_text(std::string_view text, const std::string &path, const WorldOverrides &overrides,
                       Format format);
+// Likewise, the format told from the text.
+World load_world_text(std::string_view text, const std::string &path, const WorldOverrides &overrides = {});
 
-// A world file's text and its format, told once, from its first bytes.
-struct WorldText {
-  std::string text;
-  Format format = Format::text_map;
-};
-// A world file's text, read in proportion: the format is told from the first bytes that are
-// not blank (so an image or /dev/zero fails at once), reading stops at a NUL byte (an
-// error: no text format holds one) and past a .maz's 256 bytes. Throws common::InputError;
-// common::Interrupted when a stop signal ends a wait (a FIFO's writer, common/input_file.hpp).
-WorldText read_world_file(const std::string &path);
-// read_world_file's text alone.
-std::string read_world_text(const std::string &path);
+// Whether text in `format` holds an arena: a room file does, an XML world by
+// xml_world_is_arena's rule (at cell_size_m when given), no other format.
+bool holds_arena(std::string_view text, Format format, const std::string &file,
+                 std::optional<double> cell_size_m = std::nullopt);
 
-// What writing the world in `format` would drop, as one line "FORMAT holds no ...: dropped
-// ...", or nothing when the format holds all of it (the text map keeps walls, start cell and
-// goals, not the heading of a start or the physical set-up; num keeps only the walls).
-std::optional<std::string> dropped_by(const Maze &maze, Format format);
-
-// The output format by extension, in any case (.txt, .TXT): .txt, .num, .xml, .wbt, .maz,
-// .room; throws common::InputError otherwise.
-Format format_for_output(const std::string &path);
-
-// The maze in `format` (any, wbt included; room: arena_from_maze's arena); `title` names the
-// world inside a .wbt.
-std::string format_world(const Maze &maze, Format format, std::string_view title);
-
-// Writes the maze to `path` in the format its extension names.
-void save_world(const Maze &maze, const std::string &path);
-
-// The whole file; throws common::InputError "cannot read FILE: reason" (also above 1 GiB),
-// common::Interrupted as read_world_text does.
-std::string read_file(const std::string &path);
-
-// common::write_file_atomically (common/atomic_file.hpp): a regular file through a temporary
-// renamed over it, a symbolic link's target likewise, a device or FIFO written directly. On
-// failure nothing is left behind and common::InputError "cannot write FILE: reason" is thrown.
-void write_file_atomically(const std::string &path, std::string_view content);
+// The boundary of an arena whose file states none: the obstacles' bounding box when they
+// enclose the start (at 0.05 m cells, no free cell 4-connected to the start's touches the
+// box's edge), else the course's floor, 17 x 17 m centred on the origin.
+void apply_default_boundary(Arena &arena);
 
 }  // namespace maze
