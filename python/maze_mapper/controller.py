@@ -195,9 +195,11 @@ class Robot:
         self.distance_m = 0.0  # the path the body has moved along, teleports left out
         self.devices = {name: self._handle.device(name) for name in self._handle.device_names()}
         if self._handle.getName().startswith("hambot"):
-            # The course HamBot's camera and display (camera.py).
+            # The course HamBot's camera and displays (camera.py): "User Display", and the
+            # "Place Cell Display" the course's earlier HamBot library opens.
             self.devices["camera"] = Camera("camera")
             self.devices["User Display"] = Display("User Display")
+            self.devices["Place Cell Display"] = Display("Place Cell Display", 800, 800)
         self._names = list(self.devices)
         if _scene.current is not None:  # where the goals of the controller's own world are found
             _scene.current.goal.namespace = vars(sys.modules["__main__"])

@@ -146,7 +146,9 @@ def test_webots_device_methods_the_course_uses_exist_as_webots_defines_them(cont
             "print('speed', round(robot.gps.getSpeed(), 3))\n"
             "imu = sup.getDevice('imu')\nimu.enable(robot.timestep)\n"
             "print('quaternion', [round(v, 3) for v in imu.getQuaternion()])\n"
-            "robot.left_motor.setAcceleration(5)\nprint('acceleration', robot.left_motor.getAcceleration())\n")
+            "robot.left_motor.setAcceleration(5)\nprint('acceleration', robot.left_motor.getAcceleration())\n"
+            "pc = sup.getDevice('Place Cell Display')\npc.setOpacity(1.0)\n"
+            "print('displays', sup.getDevice('User Display').getWidth(), pc.getWidth(), pc.getHeight())\n")
     source = course_controller(controller_file, body).read_text().replace("import math", "import math, json")
     status, out, err = run_course(controller_file(source, "device_check.py"), "--noise", "0")
     assert status == 0, err
@@ -157,6 +159,7 @@ def test_webots_device_methods_the_course_uses_exist_as_webots_defines_them(cont
     assert "speed 0.45" in lines  # 10 rad/s x 0.045 m
     assert "quaternion [0.0, 0.0, 0.0, 1.0]" in lines
     assert "acceleration 5.0" in lines
+    assert "displays 64 800 800" in lines  # the earlier course library opens 'Place Cell Display'
 
 
 def test_the_camera_image_shows_a_landmark_in_its_colour(controller_file):
