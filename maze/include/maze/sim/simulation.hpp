@@ -214,7 +214,7 @@ class Simulation {
   // f(the solids): the one choice between a maze and an arena, made once per query.
   template <typename F>
   decltype(auto) with_solids(F &&f) const {
-    return arena_ ? f(*arena_) : f(*walls_);
+    return !arena_ ? f(*walls_) : f(*arena_);
   }
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
