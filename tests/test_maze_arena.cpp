@@ -321,6 +321,13 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
   CHECK(body.is_reachable(0, 1));
   CHECK(!body.is_reachable(0, 0));
   CHECK(!body.is_reachable(5, 1));
+  // A landmark's cylinder, radius 0.25 m at (3.5, 1): it overlaps cells (3,0) and (3,1) only
+  // (it touches none of column 2), and cuts nothing off.
+  maze::Arena with_disc = a;
+  with_disc.discs.push_back({3.5, 1.0, 0.25});
+  const maze::ArenaTruth disc = maze::rasterise_arena(with_disc, 4, 2, 0.0);
+  CHECK(disc.occupied == std::vector<std::uint8_t>{0, 1, 1, 1, 0, 1, 1, 1});
+  CHECK(disc.reachable == t.reachable);
   CHECK_THROWS_WITH_AS(maze::rasterise_arena(a, 20000, 20000, 0.0),
                        "a grid of 20000 x 20000 cells is too fine: at most 67108864 cells", common::InputError);
 }

@@ -118,6 +118,21 @@ std::vector<std::uint8_t> mark_obstacles(const Arena &arena, ArenaTruth &t, doub
       }
     }
   }
+  for (const ArenaDisc &d : arena.discs) {
+    const double reach = d.radius_m + robot_radius_m;
+    const CellRange r = range_of(d.centre_x_m - reach, d.centre_y_m - reach, d.centre_x_m + reach, d.centre_y_m + reach);
+    for (int y = r.y_lo; y <= r.y_hi; ++y) {
+      for (int x = r.x_lo; x <= r.x_hi; ++x) {
+        const double x0 = t.x_min_m + x * t.cell_x_m;
+        const double y0 = t.y_min_m + y * t.cell_y_m;
+        // The cell's point nearest the axis strictly inside the disc: an overlap of positive area.
+        const double dx = std::max({x0 - d.centre_x_m, 0.0, d.centre_x_m - (x0 + t.cell_x_m)});
+        const double dy = std::max({y0 - d.centre_y_m, 0.0, d.centre_y_m - (y0 + t.cell_y_m)});
+        if (std::hypot(dx, dy) < d.radius_m) t.occupied[t.index(x, y)] = 1;
+        if (std::hypot(centre_x(x) - d.centre_x_m, centre_y(y) - d.centre_y_m) < reach) blocked[t.index(x, y)] = 1;
+      }
+    }
+  }
   for (int y = 0; y < cells_y; ++y) {
     for (int x = 0; x < cells_x; ++x) {
       const std::size_t i = t.index(x, y);

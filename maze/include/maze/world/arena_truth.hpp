@@ -4,12 +4,13 @@
 // The grid: cells_x x cells_y cells over the arena's boundary, cell (x, y) column x from the
 // west, row y from the south (the conventions), each (x_max - x_min) / cells_x by
 // (y_max - y_min) / cells_y metres.
-//   - occupied: a cell is occupied when an obstacle overlaps it with positive area (any
-//     overlap, not the cell's centre: a 0.012 m wall marks the cells it crosses at any
-//     resolution); touching along an edge or at a corner is no overlap. Else it is free.
+//   - occupied: a cell is occupied when an obstacle or a disc (a landmark's cylinder)
+//     overlaps it with positive area (any overlap, not the cell's centre: a 0.012 m wall
+//     marks the cells it crosses at any resolution); touching along an edge or at a corner
+//     is no overlap. Else it is free.
 //   - reachable: the free cells the robot's body can cover from the start. A cell is
 //     traversable when it is free and its centre is at least robot_radius_m from every
-//     obstacle and from the boundary; the start's cell is always traversable; the traversable
+//     obstacle, disc and the boundary; the start's cell is always traversable; the traversable
 //     cells 4-connected to the start's cell are where the robot's centre can go; a free cell
 //     is reachable when it is one of those, or when a walk over free cells (4-neighbours, so
 //     never through a wall) joins it to one of those, every cell of the walk within the reach
