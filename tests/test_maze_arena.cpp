@@ -454,3 +454,41 @@ TEST_CASE("one load: the file's format told once, a world's geometry and its lat
   CHECK(arena_world.geometry().obstacles.size() == arena_world.arena().obstacles.size());
   CHECK(arena_world.warnings.empty());
 }
+
+TEST_CASE("course XML arena: a landmark is a solid cylinder in its colour, written back as it was read") {
+  const std::string xml =
+      "<world><wall x1=\"0\" y1=\"0\" x2=\"3\" y2=\"1\" width=\"0.1\"/>"
+      "<landmark x=\"-2.5\" y=\"2.5\" height=\"1\" red=\"0\" green=\"1\" blue=\"0.5\"/>"
+      "<startPositions><pos x=\"0\" y=\"2\"/></startPositions></world>";
+  const maze::World world = maze::load_world_text(xml, "l.xml");
+  REQUIRE(!world.on_lattice());
+  CHECK(world.warnings.empty());
+  REQUIRE(world.arena().discs.size() == 1);
+  const maze::ArenaDisc &d = world.arena().discs[0];
+  CHECK(d.centre_x_m == -2.5);
+  CHECK(d.centre_y_m == 2.5);
+  CHECK(d.radius_m == maze::kLandmarkRadius_m);
+  REQUIRE(d.landmark.has_value());
+  CHECK(d.landmark->height_m == 1.0);
+  CHECK(d.landmark->green == 1.0);
+  CHECK(d.landmark->blue == 0.5);
+  const std::string written = maze::format_arena(world.arena(), maze::Format::xml);
+  CHECK(written.find("<landmark x=\"-2.5\" y=\"2.5\" height=\"1\" red=\"0\" green=\"1\" blue=\"0.5\"/>") !=
+        std::string::npos);
+  CHECK(maze::load_world_text(written, "back.xml").arena().discs.size() == 1);
+  CHECK(maze::dropped_by(world.arena(), maze::Format::room) ==
+        "dropped 1 landmark: a room file holds the walls as rectangles, the start and the goals");
+  CHECK(!maze::dropped_by(world.arena(), maze::Format::xml));
+}
+
+TEST_CASE("a maze's geometry holds its landmarks as cylinders in their colour") {
+  maze::Maze m(2, 2);
+  m.set_landmarks({maze::Landmark{1.5, 0.5, 0.5, 1.0, 0.0, 0.0}});
+  const maze::Arena g = maze::arena_from_maze(m);
+  REQUIRE(g.discs.size() == 1);
+  CHECK(g.discs[0].centre_x_m == 1.5);
+  CHECK(g.discs[0].radius_m == maze::kLandmarkRadius_m);
+  REQUIRE(g.discs[0].landmark.has_value());
+  CHECK(g.discs[0].landmark->red == 1.0);
+  CHECK(g.discs[0].landmark->green == 0.0);
+}

@@ -140,6 +140,9 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     const maze::World world = load_world_reporting(args->world, with_arena_overrides(args->overrides, args->boundary));
     if (!world.on_lattice()) {
       maze::save_arena(world.arena(), args->out);  // .room or .xml; any other format is refused
+      if (const auto dropped = maze::dropped_by(world.arena(), format)) {
+        fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+      }
       if (args->keep_origin) fmt::print(stderr, "warning: --keep-origin has no effect: an arena keeps its coordinates\n");
       context.status = 0;
       return;

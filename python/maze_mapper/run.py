@@ -291,6 +291,8 @@ def main(argv=None):
     if files is not None:
         simulation.record_trace(files)
     scene.current = scene.Scene(simulation, world_file=args.world, goal=_goal(world))
+    if world is not None:
+        scene.current.add_world_landmarks(world.landmarks)
     random.seed(args.seed)
     started = time.perf_counter()
     controller.wall_deadline = None if args.wall_limit is None else started + args.wall_limit

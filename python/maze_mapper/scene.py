@@ -26,6 +26,8 @@ import re
 import sys
 import types
 
+from . import _native
+
 
 class SceneError(ValueError):
     """A node or field the embedded simulator cannot model; the message names it."""
@@ -374,6 +376,7 @@ class Scene:
                                                       "name": "SFString"})
         self.root._values["children"].append(self.robot)
         self._initial_children = 1
+        self._initial_landmarks = []
 
     def _new_id(self):
         node_id = self._next_id
@@ -406,6 +409,24 @@ class Scene:
         children = self.root._values["children"]
         children.insert(len(children) if position == -1 or position >= len(children) else position, node)
 
+    def add_world_landmarks(self, landmarks):
+        """The landmarks the --world file states ((x, y, height, (r, g, b)) each): Landmark
+        nodes among the root's children from the start, recognised by the camera in their
+        colour; their cylinders are the world's solids already."""
+        schema = _NODE_FIELDS["Landmark"]
+        for x, y, height, colour in landmarks:
+            fields = {name: (list(default) if isinstance(default, list) else default)
+                      for name, (_, default) in schema.items()}
+            radius = _native.LANDMARK_RADIUS_M
+            fields.update(translation=[x, y, height / 2.0], size=[height, radius, radius], color=list(colour),
+                          recognitionColors=[list(colour)])
+            node = Node(self, self._new_id(), "Landmark", "Solid", "",
+                        fields, {name: kind for name, (kind, _) in schema.items()})
+            self.root._values["children"].append(node)
+            self.landmarks.append(Landmark(node, x, y, height / 2.0, radius, height, 0.0, list(colour)))
+        self._initial_children = len(self.root._values["children"])
+        self._initial_landmarks = list(self.landmarks)
+
     def _build(self, type_name, fields, yaw, node):
         """Adds the node's solid to the simulated world (with --world: nothing, said once)."""
         if self.world_file is not None:
@@ -430,7 +451,7 @@ class Scene:
         encoders at 0, and the simulated time is 0 again. The controller is not restarted, and
         the run's limits count its whole time."""
         del self.root._values["children"][self._initial_children:]
-        self.landmarks.clear()
+        self.landmarks[:] = self._initial_landmarks
         self.simulation.reset_world()
         self.teleported = True
         self.reset_requested = False

@@ -169,6 +169,17 @@ void bind_world(py::module_ &m) {
                                return goals;
                              },
                              "The goals in metres (a maze's goal cells' centres).")
+      .def_property_readonly("landmarks",
+                             [](const maze::World &w) {
+                               std::vector<std::tuple<double, double, double, std::tuple<double, double, double>>> out;
+                               for (const maze::ArenaDisc &d : w.geometry().discs) {
+                                 if (!d.landmark) continue;
+                                 out.emplace_back(d.centre_x_m, d.centre_y_m, d.landmark->height_m,
+                                                  std::make_tuple(d.landmark->red, d.landmark->green, d.landmark->blue));
+                               }
+                               return out;
+                             },
+                             "The landmark cylinders it states: (x_m, y_m, height_m, (red, green, blue)).")
       .def_property_readonly("starts",
                              [](const maze::World &w) {
                                std::vector<std::tuple<double, double, double>> starts;
@@ -206,6 +217,7 @@ void bind_world(py::module_ &m) {
       .def(
           "text", [](const maze::World &w) { return maze::format_world(w.maze(), maze::Format::text_map, w.file); },
           "The maze as a canonical text map (what `maze_mapper show` prints).");
+  m.attr("LANDMARK_RADIUS_M") = maze::kLandmarkRadius_m;  // the course's Landmark cylinders
   m.def("load_world", &load, py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(),
         py::arg("start_position") = py::none(), py::arg("random_start") = false,
         py::arg("seed") = common::kDefaultSeed,

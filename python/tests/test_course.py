@@ -207,6 +207,25 @@ def test_with_a_world_file_the_nodes_a_controller_imports_add_no_solid(controlle
                    "add no solid\n")
 
 
+def test_with_a_world_file_its_landmarks_are_nodes_the_camera_recognises_in_their_colour(controller_file):
+    # course_arena5_starts.xml: a 5 x 5 m frame, its four landmarks on the corners. From its
+    # third start, (0, -2) facing north, the two northern corners (blue at (2.5, 2.5), yellow
+    # at (-2.5, 2.5)) stand 29 degrees off the axis: outside the 45 degree field of view.
+    # Turned towards the north-west corner, the yellow one is recognised.
+    body = ("children = sup.getRoot().getField('children')\n"
+            "print('landmarks', sum(children.getMFNode(i).getTypeName() == 'Landmark' for i in range(children.getCount())))\n"
+            "robot.teleport_robot(0, -2, 0, math.atan2(4.5, -2.5))\n"
+            "print('seen', [o.getColors() for o in robot.camera.getRecognitionObjects()])\n")
+    controller = controller_file("from fairis_tools.my_robot import MyRobot\nimport math\nrobot = MyRobot()\n"
+                                 "sup = robot.experiment_supervisor\n" + body)
+    status, out, err = run_course(controller, "--world", "tests/data/worlds/course_arena5_starts.xml",
+                                  "--start", "pos:3", "--noise", "0")
+    assert status == 0, err
+    lines = out.splitlines()
+    assert "landmarks 4" in lines
+    assert "seen [[1.0, 1.0, 0.0]]" in lines
+
+
 def test_every_world_of_the_repository_runs_in_the_python_runner_mazes_and_arenas_alike(controller_file):
     from conftest import WORLDS
     path = controller_file("from controller import Robot\nr = Robot()\nr.step(32)\n")

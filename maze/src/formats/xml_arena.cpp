@@ -104,10 +104,9 @@ XmlArenaRead read_xml_arena(std::string_view text, const std::string &file) {
     arena.goals.push_back({*number(e, "x", src, true), *number(e, "y", src, true)});
     arena.goal_where.push_back(src.at(e, "x"));
   }
-  const std::size_t landmarks = world.children("landmark").size();
-  if (landmarks > 0) {
-    read.warnings.push_back(fmt::format("{}: warning: {} landmark{} left out: an arena's simulation has its walls only",
-                                        file, landmarks, landmarks == 1 ? "" : "s"));
+  for (const xml::Element &e : world.children("landmark")) {
+    const Landmark l = xml::read_landmark(e, src);
+    arena.discs.push_back({l.x_m, l.y_m, kLandmarkRadius_m, ArenaDisc::Look{l.height_m, l.red, l.green, l.blue}});
   }
   return read;
 }
@@ -133,6 +132,13 @@ std::string write_xml_arena(const Arena &arena) {
                      metres_text(s.y_m), s.yaw_rad);
     }
     text += "  </startPositions>\n";
+  }
+  for (const ArenaDisc &d : arena.discs) {
+    if (!d.landmark) continue;  // a supervisor's cylinder: no element of the course's holds it
+    fmt::format_to(std::back_inserter(text),
+                   "  <landmark x=\"{}\" y=\"{}\" height=\"{}\" red=\"{}\" green=\"{}\" blue=\"{}\"/>\n",
+                   metres_text(d.centre_x_m), metres_text(d.centre_y_m), metres_text(d.landmark->height_m),
+                   d.landmark->red, d.landmark->green, d.landmark->blue);
   }
   int id = 0;
   for (const ArenaPoint &g : arena.goals) {

@@ -26,6 +26,7 @@ constexpr double kHeadingTolerance_rad = 0.01;
 
 using xml::number;
 using xml::Source;
+using xml::read_landmark;
 
 struct Segment {
   xml::Element element;
@@ -341,28 +342,6 @@ Side heading_of(const xml::Element &pos, const Source &src) {
   constexpr Side kByQuarter[] = {Side::east, Side::north, Side::west, Side::south};
   const auto q = static_cast<long long>(quarters);
   return kByQuarter[((q % 4) + 4) % 4];
-}
-
-// A colour component of a <landmark>: a number in [0, 1], 1 when left out.
-double colour(const xml::Element &e, const char *name, const Source &src) {
-  const double v = number(e, name, src, false).value_or(1.0);
-  if (v < 0.0 || v > 1.0) throw src.error(e, name, fmt::format("{} must be 0 to 1, got {}", name, v));
-  return v;
-}
-
-// <landmark x y [height] [red green blue]/>: x and y required, anywhere (an object in the
-// world, not a cell: the course's stand at the arena's corners, on or beyond its edge); height
-// positive (the course's 1.5 m when left out).
-Landmark read_landmark(const xml::Element &e, const Source &src) {
-  Landmark l;
-  l.x_m = *number(e, "x", src, true);
-  l.y_m = *number(e, "y", src, true);
-  l.height_m = number(e, "height", src, false).value_or(1.5);
-  if (!(l.height_m > 0.0)) throw src.error(e, "height", fmt::format("height must be positive, got {}", l.height_m));
-  l.red = colour(e, "red", src);
-  l.green = colour(e, "green", src);
-  l.blue = colour(e, "blue", src);
-  return l;
 }
 
 void read_start_and_goals(const xml::Element &world, const Grid &g, const Source &src, RawMaze &raw) {

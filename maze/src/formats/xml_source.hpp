@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "maze/world/maze.hpp"
 #include "xml_document.hpp"
 
 namespace maze::xml {
@@ -99,6 +100,28 @@ inline Element world_of(const Document &doc, const Source &src) {
     throw src.error(root, nullptr, fmt::format("the root element is <{}>; expected <world>", root.name()));
   }
   return root;
+}
+
+// A colour component of a <landmark>: a number in [0, 1], 1 when left out.
+inline double colour(const xml::Element &e, const char *name, const Source &src) {
+  const double v = number(e, name, src, false).value_or(1.0);
+  if (v < 0.0 || v > 1.0) throw src.error(e, name, fmt::format("{} must be 0 to 1, got {}", name, v));
+  return v;
+}
+
+// <landmark x y [height] [red green blue]/>: x and y required, anywhere (an object in the
+// world, not a cell: the course's stand at the arena's corners, on or beyond its edge); height
+// positive (the course's 1.5 m when left out).
+inline Landmark read_landmark(const xml::Element &e, const Source &src) {
+  Landmark l;
+  l.x_m = *number(e, "x", src, true);
+  l.y_m = *number(e, "y", src, true);
+  l.height_m = number(e, "height", src, false).value_or(1.5);
+  if (!(l.height_m > 0.0)) throw src.error(e, "height", fmt::format("height must be positive, got {}", l.height_m));
+  l.red = colour(e, "red", src);
+  l.green = colour(e, "green", src);
+  l.blue = colour(e, "blue", src);
+  return l;
 }
 
 }  // namespace maze::xml

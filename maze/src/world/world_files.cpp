@@ -212,6 +212,14 @@ std::optional<std::string> dropped_by(const Maze &maze, Format format) {
   return fmt::format("dropped {}: {}", joined(parts), holds);
 }
 
+std::optional<std::string> dropped_by(const Arena &arena, Format format) {
+  const auto landmarks = std::count_if(arena.discs.begin(), arena.discs.end(),
+                                       [](const ArenaDisc &d) { return d.landmark.has_value(); });
+  if (format != Format::room || landmarks == 0) return std::nullopt;
+  return fmt::format("dropped {} landmark{}: a room file holds the walls as rectangles, the start and the goals",
+                     landmarks, landmarks == 1 ? "" : "s");
+}
+
 std::string format_world(const Maze &maze, Format format, std::string_view title) {
   switch (format) {
     case Format::text_map: return write_text_map(maze);
@@ -251,7 +259,9 @@ Arena arena_from_maze(const Maze &maze) {
     a.obstacles.push_back(
         Obstacle::from_segment(w.x1_m, w.y1_m, w.x2_m, w.y2_m, maze.wall_thickness_m(), WallEnds::capped));
   }
-  for (const Landmark &l : maze.landmarks()) a.discs.push_back({l.x_m, l.y_m, kLandmarkRadius_m});
+  for (const Landmark &l : maze.landmarks()) {
+    a.discs.push_back({l.x_m, l.y_m, kLandmarkRadius_m, ArenaDisc::Look{l.height_m, l.red, l.green, l.blue}});
+  }
   const auto centre = [&](Cell c) { return ArenaPoint{a.x_min_m + (c.x + 0.5) * s, a.y_min_m + (c.y + 0.5) * s}; };
   const ArenaPoint start = centre(maze.start());
   a.starts.push_back({start.x_m, start.y_m, common::compass_yaw_rad(static_cast<int>(maze.start_heading()))});

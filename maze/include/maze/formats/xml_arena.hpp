@@ -22,8 +22,9 @@
 //     (world.hpp).
 //   - <world name="...">: the arena's name (maze_mapper's own attribute; else the file's name).
 //   - <pos x y theta>: start poses (theta in radians, default pi/2, any angle); <goal x y>:
-//     goal points; <landmark>s are not simulated (a warning says how many were left out);
-//     other elements are ignored.
+//     goal points; <landmark x y [height] [red green blue]/>: a solid cylinder of the course's
+//     0.25 m radius (as in a maze's XML), written back as it was read; other elements are
+//     ignored.
 
 #include <string>
 #include <string_view>

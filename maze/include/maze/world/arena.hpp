@@ -80,11 +80,17 @@ struct Obstacle {
 };
 
 // An upright cylinder standing on the floor, radius_m round its centre (the course's
-// landmarks, placed by a supervisor): as solid as an obstacle, and on no lattice either.
+// landmarks, in a world file or placed by a supervisor): as solid as an obstacle, and on no
+// lattice either. A landmark's height and colour (red, green, blue in [0, 1]) come with it.
 struct ArenaDisc {
   double centre_x_m = 0.0;
   double centre_y_m = 0.0;
   double radius_m = 0.0;
+  struct Look {
+    double height_m = 0.0;
+    double red = 1.0, green = 1.0, blue = 1.0;
+  };
+  std::optional<Look> landmark = std::nullopt;  // a landmark's (a file's <landmark>, a maze's landmarks)
 };
 
 struct Arena {
@@ -96,7 +102,7 @@ struct Arena {
   double y_max_m = 0.0;
   common::SourceLocation boundary_where;
   std::vector<Obstacle> obstacles;
-  std::vector<ArenaDisc> discs;  // set in code only (a supervisor's landmarks): no file states them
+  std::vector<ArenaDisc> discs;  // the course XML's landmarks, a maze's, a supervisor's cylinders
   std::vector<ArenaPose> starts;  // the first is the start; may be empty (then the caller's)
   std::vector<common::SourceLocation> start_where;  // one per start
   std::vector<ArenaPoint> goals;

@@ -46,6 +46,10 @@ std::string read_world_text(const std::string &path);
 // goals, not the heading of a start or the physical set-up; num keeps only the walls).
 std::optional<std::string> dropped_by(const Maze &maze, Format format);
 
+// Likewise for an arena: a room file holds no landmark ("dropped 4 landmarks: a room file holds
+// the walls as rectangles, the start and the goals"); XML holds all of it.
+std::optional<std::string> dropped_by(const Arena &arena, Format format);
+
 // The output format by extension, in any case (.txt, .TXT): .txt, .num, .xml, .wbt, .maz,
 // .room; throws common::InputError otherwise.
 Format format_for_output(const std::string &path);
