@@ -47,13 +47,19 @@ struct BatchInput {
   RoomRunOptions room;                  // the room runs' own options (app/cli/room_options.hpp)
 };
 
-// The strategy words of both kinds of run; frontier is one of each.
-bool maze_strategy(const std::string &name) {
-  return name == "dfs" || name == "frontier" || name == "left-wall" || name == "right-wall" || name == "floodfill";
+// Whether a kind of run has the strategy `name` (its parser holds its names); frontier is one
+// of each.
+template <auto parse>
+bool names_strategy(const std::string &name) {
+  try {
+    parse(name);
+    return true;
+  } catch (const common::InputError &) {
+    return false;
+  }
 }
-bool room_strategy(const std::string &name) {
-  return name == "waypoints" || name == "wavefront" || name == "frontier" || name == "wander";
-}
+bool maze_strategy(const std::string &name) { return names_strategy<explore::parse_strategy>(name); }
+bool room_strategy(const std::string &name) { return names_strategy<robot::parse_metric_strategy>(name); }
 
 // --strategy NAME into the runs it names: a maze run's strategy, a room run's, or frontier, both.
 void read_strategy(const std::string &name, RunOptions &maze, RoomRunOptions &room) {
