@@ -12,20 +12,32 @@
 
 namespace app {
 
-std::vector<double> parse_number_list(std::string_view text, const std::string &option, std::size_t count) {
-  std::vector<double> values;
+namespace {
+
+// "a, b ,c" -> {"a", "b", "c"}, each trimmed.
+std::vector<std::string_view> comma_items(std::string_view text) {
+  std::vector<std::string_view> items;
   for (std::size_t start = 0;;) {
     const std::size_t comma = text.find(',', start);
-    std::string_view item = text.substr(start, comma == std::string_view::npos ? text.npos : comma - start);
-    item = common::trim_blanks(item);
-    const std::optional<double> value = common::parse_real(item);  // finite: checked by each option
-    if (!value) {
-      throw common::InputError(fmt::format("{} item {} is not a number (got '{}'{})", option, values.size() + 1, item,
-                                           common::range_note<double>(item)));
-    }
-    values.push_back(*value);
-    if (comma == std::string_view::npos) break;
+    items.push_back(common::trim_blanks(text.substr(start, comma == std::string_view::npos ? text.npos : comma - start)));
+    if (comma == std::string_view::npos) return items;
     start = comma + 1;
+  }
+}
+
+[[noreturn]] void throw_not_a_number(const std::string &option, std::size_t item, std::string_view text) {
+  throw common::InputError(fmt::format("{} item {} is not a number (got '{}'{})", option, item, text,
+                                       common::range_note<double>(text)));
+}
+
+}  // namespace
+
+std::vector<double> parse_number_list(std::string_view text, const std::string &option, std::size_t count) {
+  std::vector<double> values;
+  for (const std::string_view item : comma_items(text)) {
+    const std::optional<double> value = common::parse_real(item);  // finite: checked by each option
+    if (!value) throw_not_a_number(option, values.size() + 1, item);
+    values.push_back(*value);
   }
   if (count > 0 && values.size() != count) {
     throw common::InputError(fmt::format("{} needs {} numbers (got {})", option, count, values.size()));
@@ -59,22 +71,6 @@ double centimetres(const Length &length, LengthUnit bare) {
 }
 
 namespace {
-
-// "a, b ,c" -> {"a", "b", "c"}, each trimmed.
-std::vector<std::string_view> comma_items(std::string_view text) {
-  std::vector<std::string_view> items;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = text.find(',', start);
-    items.push_back(common::trim_blanks(text.substr(start, comma == std::string_view::npos ? text.npos : comma - start)));
-    if (comma == std::string_view::npos) return items;
-    start = comma + 1;
-  }
-}
-
-[[noreturn]] void throw_not_a_number(const std::string &option, std::size_t item, std::string_view text) {
-  throw common::InputError(fmt::format("{} item {} is not a number (got '{}'{})", option, item, text,
-                                       common::range_note<double>(text)));
-}
 
 // YAW: degrees, with or without the unit deg; radians with rad; or a heading letter.
 void read_yaw(std::string_view text, const std::string &option, PoseArgument &pose) {
