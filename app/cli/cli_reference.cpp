@@ -196,6 +196,22 @@ std::string quoted(const std::string &text) {
   return out + "'";
 }
 
+// What bash's and zsh's completions open with: the command path ("/batch/merge") read from the
+// words before the cursor (`loop` counts them, `word` is one), then a case on it of `branches`.
+std::string walk_to_command(std::string_view loop, std::string_view word, const std::string &paths,
+                            const std::string &branches) {
+  return fmt::format(R"(    for (({loop})); do
+        word=${{{word}}}
+        case "$cmdpath/$word" in
+            {paths}) cmdpath="$cmdpath/$word" ;;
+        esac
+    done
+    case "$cmdpath" in
+{branches}    esac
+)",
+                     fmt::arg("loop", loop), fmt::arg("word", word), fmt::arg("paths", paths), fmt::arg("branches", branches));
+}
+
 }  // namespace
 
 std::vector<CommandNode> visible_commands(const CLI::App &root) {
@@ -268,26 +284,6 @@ std::string man_page(const CLI::App &root, const std::string &version) {
   return out;
 }
 
-namespace {
-
-// What bash's and zsh's completions open with: the command path ("/batch/merge") read from the
-// words before the cursor (`loop` counts them, `word` is one), then a case on it of `branches`.
-std::string walk_to_command(std::string_view loop, std::string_view word, const std::string &paths,
-                            const std::string &branches) {
-  return fmt::format(R"(    for (({loop})); do
-        word=${{{word}}}
-        case "$cmdpath/$word" in
-            {paths}) cmdpath="$cmdpath/$word" ;;
-        esac
-    done
-    case "$cmdpath" in
-{branches}    esac
-)",
-                     fmt::arg("loop", loop), fmt::arg("word", word), fmt::arg("paths", paths),
-                     fmt::arg("branches", branches));
-}
-
-}  // namespace
 
 std::string bash_completion(const CLI::App &root) {
   const std::vector<CommandNode> nodes = visible_commands(root);
