@@ -34,8 +34,8 @@ void list_demos(const CLI::App &demo, std::ostream &out) {
 // (in metres), and is read so for one release, with a warning.
 double demo_1d_spacing_cm(const Length &spacing) {
   if (spacing.unit == LengthUnit::none) {
-    fmt::print(stderr, "{}\n", old_spelling_warning(fmt::format("--resolution {:g}", spacing.value),
-                                                    fmt::format("--resolution {:g}cm", spacing.value)));
+    fmt::print(stderr, "{}\n", old_spelling_warning(fmt::format("--resolution {}", spacing.value),
+                                                    fmt::format("--resolution {}cm", spacing.value)));
   }
   return centimetres(spacing, LengthUnit::cm);
 }
@@ -50,7 +50,8 @@ void add_demo_1d(CLI::App &demo, CommandContext &context) {
   add_model_options(*one_d, o.model);
   one_d->add_option("--behind", o.behind_cm, fmt::format("occupied stretch behind a hit, cm (default {})", o.behind_cm));
   add_resolution_option(*one_d, [&o](const Length &spacing) { o.resolution_cm = demo_1d_spacing_cm(spacing); },
-                        fmt::format("{}cm", o.resolution_cm));
+                        fmt::format("{}cm; a number without its unit is still cm in this release, with a warning",
+                                    o.resolution_cm));
   one_d->add_option("--length", o.length_cm, fmt::format("position of the last cell, cm (default {})", o.length_cm));
   one_d->add_option("--order", input->order, "integration order: given or shuffle (default given)");
   add_seed_option(*one_d, input->seed, "the shuffle");
