@@ -109,34 +109,36 @@ void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput
   });
 }
 
-// The options that apply to one kind of run only, given to a batch that holds none of that
-// kind or given where the other kind runs too, say so, once each; then the room options that
-// do nothing for the room strategy asked, in room's words.
-void warn_options_of_one_kind(const std::vector<BatchJob> &jobs, const BatchInput &batch, const RunOptions &options,
-                              const GivenOptions &given) {
-  const auto holds = [&jobs](RunKind kind) {
-    return std::any_of(jobs.begin(), jobs.end(), [kind](const BatchJob &job) { return job.kind == kind; });
-  };
-  const std::string &strategy = batch.strategy;
-  if (holds(RunKind::room)) {
-    for (const char *name : {"--speed-run", "--start", "--goal", "--subcells"}) {
-      if (given.given(name)) {
-        fmt::print(stderr, "warning: {} applies to the maze runs only: a room run starts from its world's start\n", name);
-      }
-    }
-    if (!strategy.empty() && !room_strategy(strategy)) {
-      fmt::print(stderr, "warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n", strategy,
-                 robot::to_string(batch.room.room.strategy));
-    }
-    if (given.given("--model") && options.model.kind == sensing::ModelKind::cell) {
-      fmt::print(stderr, "warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
+bool holds_kind(const std::vector<BatchJob> &jobs, RunKind kind) {
+  return std::any_of(jobs.begin(), jobs.end(), [kind](const BatchJob &job) { return job.kind == kind; });
+}
+
+// A batch that holds room runs: the maze runs' own options given to it say they apply to those
+// only, once each.
+void warn_maze_only_options(const BatchInput &batch, const RunOptions &options, const GivenOptions &given) {
+  for (const char *name : {"--speed-run", "--start", "--goal", "--subcells"}) {
+    if (given.given(name)) {
+      fmt::print(stderr, "warning: {} applies to the maze runs only: a room run starts from its world's start\n", name);
     }
   }
-  if (holds(RunKind::maze) && !strategy.empty() && !maze_strategy(strategy)) {
-    fmt::print(stderr, "warning: --strategy {} applies to the room runs only: the maze runs explore with {}\n", strategy,
-               explore::to_string(options.strategy));
+  if (!batch.strategy.empty() && !room_strategy(batch.strategy)) {
+    fmt::print(stderr, "warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n",
+               batch.strategy, robot::to_string(batch.room.room.strategy));
   }
-  if (holds(RunKind::room)) return;
+  if (given.given("--model") && options.model.kind == sensing::ModelKind::cell) {
+    fmt::print(stderr, "warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
+  }
+}
+
+// The room runs' own options given to a batch that holds maze runs (a room strategy) or no
+// room run (the rest) say so, once each.
+void warn_room_only_options(const BatchInput &batch, const RunOptions &options, const GivenOptions &given,
+                            const std::vector<BatchJob> &jobs) {
+  if (holds_kind(jobs, RunKind::maze) && !batch.strategy.empty() && !maze_strategy(batch.strategy)) {
+    fmt::print(stderr, "warning: --strategy {} applies to the room runs only: the maze runs explore with {}\n",
+               batch.strategy, explore::to_string(options.strategy));
+  }
+  if (holds_kind(jobs, RunKind::room)) return;
   for (const char *name : {"--waypoints", "--laps", "--cells", "--resolution", "--depth-reading", "--depth-origin"}) {
     if (given.given(name)) fmt::print(stderr, "warning: {} applies to the room runs only: this batch holds none\n", name);
   }
@@ -176,9 +178,10 @@ int run_world_batch(const CLI::App &command, const RunOptions &options, const Ba
                              const CLI::Option *option = command.get_option_no_throw(std::string(name));
                              return option != nullptr && option->count() > 0;
                            }};
-  warn_options_of_one_kind(batch_jobs, batch, options, given);
+  if (holds_kind(batch_jobs, RunKind::room)) warn_maze_only_options(batch, options, given);
+  warn_room_only_options(batch, options, given, batch_jobs);
   const BatchOptions batch_options(options, room_options_for(options, batch.room, given.given));
-  if (std::any_of(batch_jobs.begin(), batch_jobs.end(), [](const BatchJob &job) { return job.kind == RunKind::room; })) {
+  if (holds_kind(batch_jobs, RunKind::room)) {
     // --goal and --dilate are the maze runs' here (warned about above), not the room's.
     const GivenOptions room_given{given.command, [&given](std::string_view name) {
                                     return name != "--goal" && name != "--dilate" && given.given(name);
