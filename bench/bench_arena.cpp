@@ -5,15 +5,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
-#include <limits>
 #include <numbers>
 #include <vector>
 
-#include <webots/Lidar.hpp>
-#include <webots/Motor.hpp>
-#include <webots/Robot.hpp>
 
 #include "common/random.hpp"
+#include "driving_robot.hpp"
 #include "maze/generate/arena_generator.hpp"
 #include "maze/sim/arena_geometry.hpp"
 #include "maze/sim/profile.hpp"
@@ -89,17 +86,7 @@ BENCHMARK(BM_Scan360_Arena_BruteForce)
 // A control step through the webots:: API in the 40-obstacle arena: drive, step, read.
 void BM_StepAndRead_Arena(benchmark::State &state) {
   webots::embedded::Simulation sim(arena(40, true), maze::sim::default_profile(), {});
-  webots::Robot &robot = sim.robot();
-  webots::Lidar *lidar = robot.getLidar("lidar");
-  lidar->enable(32);
-  for (const char *name : {"left motor", "right motor"}) {
-    robot.getMotor(name)->setPosition(std::numeric_limits<double>::infinity());
-    robot.getMotor(name)->setVelocity(5.0);
-  }
-  for (auto _ : state) {
-    robot.step(32);
-    benchmark::DoNotOptimize(lidar->getRangeImage());
-  }
+  bench::step_and_read(state, sim.robot());
 }
 BENCHMARK(BM_StepAndRead_Arena)->Unit(benchmark::kMicrosecond);
 

@@ -5,15 +5,13 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
-#include <limits>
 #include <numbers>
 #include <vector>
 
-#include <webots/Lidar.hpp>
-#include <webots/Motor.hpp>
 #include <webots/Robot.hpp>
 
 #include "common/random.hpp"
+#include "driving_robot.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
@@ -110,17 +108,7 @@ BENCHMARK(BM_Scan360_Open)
 void BM_StepAndRead_Carved(benchmark::State &state) {
   const maze::Maze m = carved(static_cast<int>(state.range(0)), 42);
   webots::embedded::Simulation sim(m, maze::sim::default_profile(), {});
-  webots::Robot &robot = sim.robot();
-  webots::Lidar *lidar = robot.getLidar("lidar");
-  lidar->enable(32);
-  for (const char *name : {"left motor", "right motor"}) {
-    robot.getMotor(name)->setPosition(std::numeric_limits<double>::infinity());
-    robot.getMotor(name)->setVelocity(5.0);
-  }
-  for (auto _ : state) {
-    robot.step(32);
-    benchmark::DoNotOptimize(lidar->getRangeImage());
-  }
+  bench::step_and_read(state, sim.robot());
 }
 BENCHMARK(BM_StepAndRead_Carved)->Arg(16)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
@@ -129,12 +117,8 @@ void BM_StepOnly_Carved(benchmark::State &state) {
   const maze::Maze m = carved(static_cast<int>(state.range(0)), 42);
   webots::embedded::Simulation sim(m, maze::sim::default_profile(), {});
   webots::Robot &robot = sim.robot();
-  robot.getLidar("lidar")->enable(32);
-  for (const char *name : {"left motor", "right motor"}) {
-    robot.getMotor(name)->setPosition(std::numeric_limits<double>::infinity());
-    robot.getMotor(name)->setVelocity(5.0);
-  }
-  for (auto _ : state) benchmark::DoNotOptimize(robot.step(32));
+  bench::start_driving(robot);
+  for (auto _ : state) benchmark::DoNotOptimize(robot.step(bench::kStep_ms));
 }
 BENCHMARK(BM_StepOnly_Carved)->Arg(16)->Arg(1024)->Unit(benchmark::kMicrosecond);
 

@@ -65,7 +65,7 @@ add_golden_test(plan_lab4x4_dilate_no_path STATUS 1 ARGS plan worlds/lab4x4.txt 
 # cone sweep, default output and a sonar sweep off-axis.
 add_golden_test(demo_pie_default ARGS demo pie)
 add_golden_test(demo_cone_default ARGS demo cone)
-add_golden_test(demo_cone_sonar_pose ARGS demo cone --sensor sonar --pose 0.5,0.25,30 --range 0.8)
+add_golden_test(demo_cone_sonar_pose ARGS demo cone --sensor sonar --pose 0.5m,0.25m,30 --range 0.8)
 add_golden_test(demo_pie_bad_readings STATUS 2 STDERR ARGS demo pie --readings 1,2)
 add_golden_test(map_log_room_bump ARGS map-log tests/data/logs/room_bump.csv --cells 12,12 --boundary 0,6,0,6 --bump-radius 0.5)
 add_golden_test(map_log_room_depth ARGS map-log tests/data/logs/room_depth.csv --cells 12,12 --boundary 0,6,0,6)

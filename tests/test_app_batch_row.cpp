@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -198,4 +199,47 @@ TEST_CASE("batch: a folder's arenas run as room runs, their rows the room's scor
   REQUIRE(rows.size() == 2);
   CHECK(app::format_batch_csv_row(rows[0]) == app::format_batch_csv_row(row));
   CHECK_FALSE(rows[0].ok);
+}
+
+TEST_CASE("batch: --strategy names a maze run's strategy, a room run's, or frontier for both") {
+  const test_cli::TempDir dir("batch_strategy");
+  fs::create_directories(dir.path);
+  const std::string room = std::string(WORLDS_DIR) + "/ir_room.room";
+  const std::string lab = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  const std::string csv = (dir.path / "rows.csv").string();
+  const auto strategies = [&](const std::string &strategy) {
+    test_cli::run({"batch", room, lab, "--strategy", strategy, "--max-steps", "3000", "--csv", csv});
+    std::vector<std::string> names;
+    for (const app::BatchRow &row : app::read_batch_csvs({csv})) names.push_back(row.strategy);
+    return names;
+  };
+  CHECK(strategies("wavefront") == std::vector<std::string>{"wavefront", "dfs"});
+  CHECK(strategies("floodfill") == std::vector<std::string>{"frontier", "floodfill"});
+  CHECK(strategies("frontier") == std::vector<std::string>{"frontier", "frontier"});
+  CHECK_THROWS_WITH_AS(test_cli::run({"batch", lab, "--strategy", "zigzag"}),
+                       "unknown --strategy 'zigzag' (a maze run's dfs, frontier, left-wall, right-wall or floodfill; "
+                       "a room run's waypoints, wavefront, frontier or wander)",
+                       common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"batch", room, "--cells", "5,5", "--resolution", "0.1"}),
+                       "give --cells or --resolution, not both", common::InputError);
+}
+
+TEST_CASE("batch: a room run keeps the room options the batch read, with the batch's shared ones") {
+  app::RoomRunOptions room_only;
+  room_only.room.strategy = robot::MetricStrategy::waypoints;
+  room_only.room.waypoints = {{1.0, 2.0}};
+  room_only.room.laps = 2;
+  room_only.resolution_m = 0.2;
+  app::RunOptions options;
+  options.simulation.seed = 9;
+  options.time_limit_s = 30.0;
+  const app::RoomRunOptions room = app::room_options_for(options, room_only, [](std::string_view) { return false; });
+  CHECK(room.room.strategy == robot::MetricStrategy::waypoints);
+  CHECK(room.room.waypoints.size() == 1);
+  CHECK(room.room.laps == 2);
+  CHECK(room.resolution_m == 0.2);
+  CHECK(room.room.seed == 9);
+  CHECK(room.room.time_limit_s == 30.0);
+  CHECK(room.quiet);
+  CHECK(room.model.kind == sensing::ModelKind::ray);
 }

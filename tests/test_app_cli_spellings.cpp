@@ -42,6 +42,37 @@ TEST_CASE("scan --pose X,Y,YAW prints what the old --pose X Y YAW (radians) prin
                        "scan: unexpected argument 'other.txt'", common::InputError);
 }
 
+TEST_CASE("--resolution is one option in every command: metres, or with its unit m or cm") {
+  const std::string one_d = test_cli::run({"demo", "1d"}).out;
+  CHECK(test_cli::run({"demo", "1d", "--resolution", "10cm"}).out == one_d);
+  CHECK(test_cli::run({"demo", "1d", "--resolution", "0.1m"}).out == one_d);
+  CHECK(test_cli::run({"demo", "1d", "--resolution", "10"}).out == one_d);  // the old cm, with a warning
+  const std::string pie = test_cli::run({"demo", "pie", "--resolution", "0.2"}).out;
+  CHECK(pie.find("resolution 0.2 m\n") != std::string::npos);
+  CHECK(test_cli::run({"demo", "pie", "--resolution", "20cm"}).out == pie);
+  CHECK(test_cli::run({"demo", "cone", "--resolution", "2cm"}).out == test_cli::run({"demo", "cone", "--resolution", "0.02m"}).out);
+  CHECK_THROWS_WITH_AS(test_cli::run({"demo", "cone", "--resolution", "0cm"}), "--resolution must be > 0 m (got 0cm)",
+                       common::InputError);
+}
+
+TEST_CASE("a pose in metres is Xm,Ym[,YAW] in every command; X,Y without the unit is the old spelling") {
+  CHECK(test_cli::run({"demo", "pie", "--pose", "1.5m,2.5m,270"}).out == test_cli::run({"demo", "pie"}).out);
+  CHECK(test_cli::run({"demo", "cone", "--pose", "50cm,0m,90"}).out ==
+        test_cli::run({"demo", "cone", "--pose", "0.5,0,90"}).out);
+  const std::string world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  CHECK(test_cli::run({"scan", world, "--pose", "0.5m,0.5m,90", "--noise", "0"}).out ==
+        test_cli::run({"scan", world, "--pose", "0.5,0.5,90", "--noise", "0"}).out);
+  // run: a place in metres faces a side: a letter, or degrees on a quarter turn.
+  const app::RunOptions degrees = parsed_run({"--start", "0.5m,1.5m,270"});
+  REQUIRE(degrees.world_overrides.start_m.has_value());
+  CHECK(degrees.world_overrides.start_heading == maze::Side::south);
+  CHECK(parsed_run({"--start", "0.5m,1.5m,W"}).world_overrides.start_heading == maze::Side::west);
+  CHECK(parsed_run({"--start", "50cm,150cm,-90deg"}).world_overrides.start_heading == maze::Side::south);
+  CHECK(parsed_run({"--start", "1,2,E"}).world_overrides.start_heading == maze::Side::east);
+  CHECK_THROWS_AS(parsed_run({"--start", "0.5m,1.5m,45"}), common::InputError);
+  CHECK_THROWS_AS(parsed_run({"--start", "1,2,90"}), common::InputError);  // a cell's heading is a letter
+}
+
 TEST_CASE("goals: --goal repeated, the old X,Y;X,Y list the same, centre alone") {
   const app::RunOptions repeated = parsed_run({"--goal", "3,3", "--goal", "0,3"});
   const app::RunOptions old = parsed_run({"--goal", "3,3;0,3"});

@@ -59,7 +59,7 @@ TEST_CASE("room options: an option that does not apply warns and the run goes on
   CHECK(ran.out.find("end: goal reached") != std::string::npos);
 }
 
-TEST_CASE("room options: every flag of the table is an option of room, and --resolution reads as in show") {
+TEST_CASE("room options: every flag of the table is an option of room, and --resolution reads as in every command") {
   CLI::App cli{"maze_mapper", "maze_mapper"};
   app::CommandContext context;
   app::add_commands(cli, context);
@@ -69,8 +69,15 @@ TEST_CASE("room options: every flag of the table is an option of room, and --res
     CHECK(room->get_option_no_throw(std::string(field.flag)) != nullptr);
   }
   const std::string resolution = room->get_option("--resolution")->get_description();
-  CHECK(resolution == "M: a cell's side, m (default 0.1)");
-  CHECK(cli.get_subcommand("show")->get_option("--resolution")->get_description().starts_with("M: a cell's side, m"));
+  CHECK(resolution == "LENGTH: a cell's side, m, or with its unit: 0.1m, 10cm (default 0.1)");
+  // Every command that lays a grid declares it by the same function.
+  const CLI::App *demo = cli.get_subcommand("demo");
+  for (const CLI::App *command : {cli.get_subcommand("show"), cli.get_subcommand("batch"), demo->get_subcommand("1d"),
+                                  demo->get_subcommand("pie"), demo->get_subcommand("cone")}) {
+    CAPTURE(command->get_name());
+    CHECK(command->get_option("--resolution")->get_description().starts_with(
+        "LENGTH: a cell's side, m, or with its unit: 0.1m, 10cm (default "));
+  }
   // CLI11 takes the words last first.
   std::vector<std::string> words{"0", "--resolution", "x.room", "room"};
   CHECK_THROWS_WITH_AS(cli.parse(words), "--resolution must be > 0 m (got 0)", common::InputError);

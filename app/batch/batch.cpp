@@ -243,13 +243,14 @@ std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, co
 }
 
 BatchOptions::BatchOptions(RunOptions run_options)
-    : run(std::move(run_options)), room(room_options_for(run, [](std::string_view) { return false; })) {}
+    : run(std::move(run_options)), room(room_options_for(run, {}, [](std::string_view) { return false; })) {}
 
 BatchOptions::BatchOptions(RunOptions run_options, RoomRunOptions room_options)
     : run(std::move(run_options)), room(std::move(room_options)) {}
 
-RoomRunOptions room_options_for(const RunOptions &options, const std::function<bool(std::string_view)> &given) {
-  RoomRunOptions room;
+RoomRunOptions room_options_for(const RunOptions &options, RoomRunOptions room_only,
+                                const std::function<bool(std::string_view)> &given) {
+  RoomRunOptions room = std::move(room_only);
   room.quiet = true;
   room.simulation = options.simulation;
   room.room.seed = options.simulation.seed;

@@ -89,12 +89,14 @@ struct BatchOptions {
   RoomRunOptions room;
 };
 
-// The room run a batch makes: the room command's frontier exploration, quiet, with the batch's
+// The room run a batch makes, quiet: `room_only` as the batch read it (the room command's
+// --strategy, --waypoints, --laps, --cells, --resolution and depth rays), with the batch's
 // --seed and simulated faults, --max-steps, --time-limit, --threshold, the sensor model's
 // numbers (log base 10 for bump and depth unless --log-base is given, as the room command),
 // and the robot and model when given(NAME) says the user typed them (a room has no cell model:
 // ray unless another is given; the robot: the set-up's unless given).
-RoomRunOptions room_options_for(const RunOptions &options, const std::function<bool(std::string_view)> &given);
+RoomRunOptions room_options_for(const RunOptions &options, RoomRunOptions room_only,
+                                const std::function<bool(std::string_view)> &given);
 
 // The pool both batches run on: run(i) for every i in [0, count), on `jobs` threads (>= 1),
 // each index once, in any order. Once interrupted (may be null) returns true, skip(i) is

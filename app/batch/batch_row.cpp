@@ -80,34 +80,40 @@ std::optional<Number> json_number(const Json &j) {
   return j.is_number() ? std::optional<Number>(j.get<Number>()) : std::nullopt;
 }
 
+// A column of text as it stands, the report's JSON string.
+template <std::string BatchRow::*Field>
+Column text_column(std::string_view name) {
+  return {name, [](const BatchRow &r) { return r.*Field; }, [](BatchRow &r, const CellIn &in) { r.*Field = in.field.text; },
+          [](BatchRow &r, const Json &j) { r.*Field = json_text(j); }};
+}
+
+// A column of a percentage, "" for none.
+template <std::optional<double> BatchRow::*Field>
+Column percent_column(std::string_view name) {
+  return {name, [](const BatchRow &r) { return percent_text(r.*Field); },
+          [](BatchRow &r, const CellIn &in) { r.*Field = percent_in(in); },
+          [](BatchRow &r, const Json &j) { r.*Field = json_number<double>(j); }};
+}
+
 constexpr double kMostMs = 1e12;   // 30 years of one run
 constexpr double kMostSimS = 1e12;
 
 const std::array kColumns{
-    Column{"world", [](const BatchRow &r) { return r.world; }, [](BatchRow &r, const CellIn &in) { r.world = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.world = json_text(j); }},
+    text_column<&BatchRow::world>("world"),
     Column{"kind", [](const BatchRow &r) { return std::string(to_string(r.kind)); },
            [](BatchRow &r, const CellIn &in) { r.kind = kind_in(in); }},
-    Column{"robot", [](const BatchRow &r) { return r.robot; }, [](BatchRow &r, const CellIn &in) { r.robot = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.robot = json_text(j); }},
-    Column{"model", [](const BatchRow &r) { return r.model; }, [](BatchRow &r, const CellIn &in) { r.model = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.model = json_text(j); }},
-    Column{"strategy", [](const BatchRow &r) { return r.strategy; },
-           [](BatchRow &r, const CellIn &in) { r.strategy = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.strategy = json_text(j); }},
+    text_column<&BatchRow::robot>("robot"),
+    text_column<&BatchRow::model>("model"),
+    text_column<&BatchRow::strategy>("strategy"),
     Column{"seed", [](const BatchRow &r) { return whole_text(r.seed); },
            [](BatchRow &r, const CellIn &in) {
              r.seed = number_in<std::uint64_t>(in, 0, std::numeric_limits<std::uint64_t>::max(),
                                                "must be a whole number from 0");
            },
            [](BatchRow &r, const Json &j) { r.seed = json_number<std::uint64_t>(j); }},
-    Column{"size", [](const BatchRow &r) { return r.size; }, [](BatchRow &r, const CellIn &in) { r.size = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.size = json_text(j); }},
-    Column{"end", [](const BatchRow &r) { return r.end; }, [](BatchRow &r, const CellIn &in) { r.end = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.end = json_text(j); }},
-    Column{"end_message", [](const BatchRow &r) { return r.end_message; },
-           [](BatchRow &r, const CellIn &in) { r.end_message = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.end_message = json_text(j); }},
+    text_column<&BatchRow::size>("size"),
+    text_column<&BatchRow::end>("end"),
+    text_column<&BatchRow::end_message>("end_message"),
     Column{"steps", [](const BatchRow &r) { return whole_text(r.steps); },
            [](BatchRow &r, const CellIn &in) { r.steps = count_in(in); },
            [](BatchRow &r, const Json &j) { r.steps = json_number<std::int64_t>(j); }},
@@ -124,17 +130,10 @@ const std::array kColumns{
              r.wall_time_ms = number_in(in, 0.0, kMostMs, "must be a number of milliseconds from 0");
            },
            [](BatchRow &r, const Json &j) { r.wall_time_ms = json_number<double>(j); }},
-    Column{"coverage", [](const BatchRow &r) { return percent_text(r.coverage_percent); },
-           [](BatchRow &r, const CellIn &in) { r.coverage_percent = percent_in(in); },
-           [](BatchRow &r, const Json &j) { r.coverage_percent = json_number<double>(j); }},
-    Column{"wall_accuracy", [](const BatchRow &r) { return percent_text(r.wall_accuracy_percent); },
-           [](BatchRow &r, const CellIn &in) { r.wall_accuracy_percent = percent_in(in); },
-           [](BatchRow &r, const Json &j) { r.wall_accuracy_percent = json_number<double>(j); }},
-    Column{"cell_accuracy", [](const BatchRow &r) { return percent_text(r.cell_accuracy_percent); },
-           [](BatchRow &r, const CellIn &in) { r.cell_accuracy_percent = percent_in(in); },
-           [](BatchRow &r, const Json &j) { r.cell_accuracy_percent = json_number<double>(j); }},
-    Column{"goal", [](const BatchRow &r) { return r.goal; }, [](BatchRow &r, const CellIn &in) { r.goal = in.field.text; },
-           [](BatchRow &r, const Json &j) { r.goal = json_text(j); }},
+    percent_column<&BatchRow::coverage_percent>("coverage"),
+    percent_column<&BatchRow::wall_accuracy_percent>("wall_accuracy"),
+    percent_column<&BatchRow::cell_accuracy_percent>("cell_accuracy"),
+    text_column<&BatchRow::goal>("goal"),
     Column{"speed_run", [](const BatchRow &r) { return r.speed_run; },
            [](BatchRow &r, const CellIn &in) { r.speed_run = in.field.text; },
            [](BatchRow &r, const Json &j) { r.speed_run = j.is_object() ? j["cells"].dump() : std::string(); }},

@@ -2,14 +2,17 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "app/run/option_values.hpp"
 #include "common/error.hpp"
+#include "common/parse_number.hpp"
 
 namespace app {
 
@@ -29,20 +32,27 @@ maze::WorldOverrides with_arena_overrides(maze::WorldOverrides o, const std::str
   return o;
 }
 
-CLI::Option *add_resolution_option(CLI::App &command, std::optional<double> &resolution_m,
+CLI::Option *add_resolution_option(CLI::App &command, std::function<void(const Length &)> take,
                                    const std::string &default_text) {
   return command
       .add_option_function<std::string>(
           "--resolution",
-          [&resolution_m](const std::string &text) {
-            const double m = parse_number_list(text, "--resolution", 1)[0];
-            if (!(m > 0.0) || !std::isfinite(m)) {
+          [take = std::move(take)](const std::string &text) {
+            const std::optional<Length> length = length_of(common::trim_blanks(text));
+            if (!length) throw common::InputError(fmt::format("--resolution must be a length like 0.1m or 10cm (got '{}')", text));
+            if (!(length->value > 0.0) || !std::isfinite(length->value)) {
               throw common::InputError(fmt::format("--resolution must be > 0 m (got {})", text));
             }
-            resolution_m = m;
+            take(*length);
           },
-          fmt::format("M: a cell's side, m (default {})", default_text))
-      ->type_name("M");
+          fmt::format("LENGTH: a cell's side, m, or with its unit: 0.1m, 10cm (default {})", default_text))
+      ->type_name("LENGTH");
+}
+
+CLI::Option *add_resolution_option(CLI::App &command, std::optional<double> &resolution_m,
+                                   const std::string &default_text) {
+  return add_resolution_option(
+      command, [&resolution_m](const Length &length) { resolution_m = metres(length); }, default_text);
 }
 
 }  // namespace app

@@ -27,11 +27,9 @@ std::optional<std::array<double, 2>> metres_point(std::string_view text) {
   std::array<double, 2> point{};
   const std::string_view parts[2] = {text.substr(0, comma), text.substr(comma + 1)};
   for (std::size_t k = 0; k < 2; ++k) {
-    const std::string_view part = common::trim_blanks(parts[k]);
-    if (part.size() < 2 || part.back() != 'm') return std::nullopt;
-    const std::optional<double> value = common::parse_number<double>(part.substr(0, part.size() - 1));
-    if (!value) return std::nullopt;
-    point[k] = *value;
+    const std::optional<Length> length = length_of(common::trim_blanks(parts[k]));
+    if (!length || length->unit == LengthUnit::none || !std::isfinite(length->value)) return std::nullopt;
+    point[k] = metres(*length);
   }
   return point;
 }
@@ -64,8 +62,21 @@ std::optional<maze::Side> heading_of(std::string_view text) {
   return std::nullopt;
 }
 
-// --start X,Y[,HEADING]: the cell, and the heading (north unless given); pos:N, random: the
-// world's N-th start position, or one of them.
+// A metres start's YAW in a maze, where the robot faces a side: a heading letter, or degrees
+// from east (with or without deg) on a quarter turn.
+std::optional<maze::Side> side_of_yaw(std::string_view text) {
+  if (const std::optional<maze::Side> letter = heading_of(text)) return letter;
+  if (text.ends_with("deg")) text.remove_suffix(3);
+  const std::optional<double> degrees = common::parse_number<double>(text);
+  if (!degrees || std::fmod(*degrees, 90.0) != 0.0) return std::nullopt;
+  constexpr maze::Side kQuarters[] = {maze::Side::east, maze::Side::north, maze::Side::west, maze::Side::south};
+  const double quarter = std::fmod(*degrees / 90.0, 4.0);
+  return kQuarters[static_cast<int>(quarter < 0 ? quarter + 4.0 : quarter)];
+}
+
+// --start X,Y[,HEADING]: the cell, and the heading (north unless given); Xm,Ym[,YAW]: the
+// place in metres (app/run/option_values.hpp's lengths); pos:N, random: the world's N-th
+// start position, or one of them.
 void parse_start(const std::string &text, maze::WorldOverrides &o) {
   o.start.reset();
   o.start_position.reset();
@@ -86,7 +97,8 @@ void parse_start(const std::string &text, maze::WorldOverrides &o) {
   if (!o.start) o.start_m = metres_point(where);
   o.start_heading = maze::Side::north;
   if (second != std::string::npos) {
-    const std::optional<maze::Side> heading = heading_of(std::string_view(text).substr(second + 1));
+    const std::string_view after = std::string_view(text).substr(second + 1);
+    const std::optional<maze::Side> heading = o.start ? heading_of(after) : side_of_yaw(after);
     if (heading) {
       o.start_heading = *heading;
     } else {
@@ -96,7 +108,8 @@ void parse_start(const std::string &text, maze::WorldOverrides &o) {
   }
   if (!o.start && !o.start_m) {
     throw common::InputError(fmt::format(
-        "--start must be X,Y (a cell) or Xm,Ym (metres), then optionally ,HEADING with HEADING N, E, S or W (got '{}')",
+        "--start must be X,Y[,HEADING] (a cell, HEADING N, E, S or W) or Xm,Ym[,YAW] (metres, YAW N, E, S or W, or "
+        "degrees 0, 90, 180 or 270) (got '{}')",
         text));
   }
 }
@@ -162,8 +175,9 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
   add_cell_size_option(command, overrides);
   command.add_option_function<std::string>(
       "--start", [&overrides](const std::string &text) { parse_start(text, overrides); },
-      "X,Y[,HEADING], pos:N or random: start cell, facing N, E, S or W (default N); the world's N-th start "
-      "position; or one of them picked by --seed (default the world's start)");
+      "X,Y[,HEADING], Xm,Ym[,YAW], pos:N or random: start cell, facing N, E, S or W (default N); a place in "
+      "metres, YAW N, E, S, W or degrees from east; the world's N-th start position; or one of them picked by --seed "
+      "(default the world's start)");
   command
       .add_option_function<std::vector<std::string>>(
           "--goal",
@@ -192,11 +206,6 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
       ->expected(1)
       ->allow_extra_args(false)  // --goal 3,3 WORLD: the world is not a goal
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-}
-
-std::string old_spelling_warning(const std::string &old_spelling, const std::string &new_spelling) {
-  return fmt::format("warning: {} is the old spelling; write {} (the old one goes in the next release)", old_spelling,
-                     new_spelling);
 }
 
 CLI::Option *add_old_spelling(CLI::App &command, const std::string &old_name, const std::string &new_name,

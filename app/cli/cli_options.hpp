@@ -46,10 +46,6 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides);
 // text (a cell's "X,Y" among them).
 std::optional<std::array<double, 2>> metres_point(std::string_view text);
 
-// The warning an old spelling gives (kept for one release): "warning: OLD is the old spelling;
-// write NEW (OLD goes in the next release)".
-std::string old_spelling_warning(const std::string &old_spelling, const std::string &new_spelling);
-
 // `old_name` kept for one release as another name of an option with a value: hidden from
 // --help, the man page and the completions, it passes its value to `take` and warns on
 // standard error with old_spelling_warning(old_name, new_name).

@@ -196,6 +196,22 @@ std::string quoted(const std::string &text) {
   return out + "'";
 }
 
+// What bash's and zsh's completions open with: the command path ("/batch/merge") read from the
+// words before the cursor (`loop` counts them, `word` is one), then a case on it of `branches`.
+std::string walk_to_command(std::string_view loop, std::string_view word, const std::string &paths,
+                            const std::string &branches) {
+  return fmt::format(R"(    for (({loop})); do
+        word=${{{word}}}
+        case "$cmdpath/$word" in
+            {paths}) cmdpath="$cmdpath/$word" ;;
+        esac
+    done
+    case "$cmdpath" in
+{branches}    esac
+)",
+                     fmt::arg("loop", loop), fmt::arg("word", word), fmt::arg("paths", paths), fmt::arg("branches", branches));
+}
+
 }  // namespace
 
 std::vector<CommandNode> visible_commands(const CLI::App &root) {
@@ -268,6 +284,7 @@ std::string man_page(const CLI::App &root, const std::string &version) {
   return out;
 }
 
+
 std::string bash_completion(const CLI::App &root) {
   const std::vector<CommandNode> nodes = visible_commands(root);
   std::string paths;
@@ -285,15 +302,7 @@ std::string bash_completion(const CLI::App &root) {
 _maze_mapper() {{
     local cur=${{COMP_WORDS[COMP_CWORD]}} prev=${{COMP_WORDS[COMP_CWORD-1]}}
     local cmdpath="" word i commands options taking_value
-    for ((i = 1; i < COMP_CWORD; i++)); do
-        word=${{COMP_WORDS[i]}}
-        case "$cmdpath/$word" in
-            {paths}) cmdpath="$cmdpath/$word" ;;
-        esac
-    done
-    case "$cmdpath" in
-{branches}    esac
-    if [[ "$prev" == -* && "$taking_value" == *" $prev "* ]]; then
+{walk}    if [[ "$prev" == -* && "$taking_value" == *" $prev "* ]]; then
         COMPREPLY=($(compgen -f -- "$cur"))
     elif [[ "$cur" == -* ]]; then
         COMPREPLY=($(compgen -W "$options" -- "$cur"))
@@ -303,7 +312,8 @@ _maze_mapper() {{
 }}
 complete -o filenames -F _maze_mapper maze_mapper
 )",
-                     fmt::arg("ref", kReferenceCommand), fmt::arg("paths", paths), fmt::arg("branches", branches));
+                     fmt::arg("ref", kReferenceCommand),
+                     fmt::arg("walk", walk_to_command("i = 1; i < COMP_CWORD; i++", "COMP_WORDS[i]", paths, branches)));
 }
 
 std::string zsh_completion(const CLI::App &root) {
@@ -335,15 +345,7 @@ _maze_mapper() {{
     local cmdpath="" word i
     # Not commands, options: zsh's own (zsh/parameter) parameters.
     local -a subs opts valued
-    for ((i = 2; i < CURRENT; i++)); do
-        word=${{words[i]}}
-        case "$cmdpath/$word" in
-            {paths}) cmdpath="$cmdpath/$word" ;;
-        esac
-    done
-    case "$cmdpath" in
-{branches}    esac
-    if (( ${{valued[(Ie)${{words[CURRENT-1]}}]}} )); then
+{walk}    if (( ${{valued[(Ie)${{words[CURRENT-1]}}]}} )); then
         _files
     elif [[ $PREFIX == -* ]]; then
         _describe -t options option opts
@@ -354,7 +356,8 @@ _maze_mapper() {{
 }}
 _maze_mapper "$@"
 )",
-                     fmt::arg("ref", kReferenceCommand), fmt::arg("paths", paths), fmt::arg("branches", branches));
+                     fmt::arg("ref", kReferenceCommand),
+                     fmt::arg("walk", walk_to_command("i = 2; i < CURRENT; i++", "words[i]", paths, branches)));
 }
 
 std::string fish_completion(const CLI::App &root) {

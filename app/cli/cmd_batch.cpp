@@ -19,7 +19,10 @@
 
 #include "app/batch/batch.hpp"
 #include "app/cli/cli_options.hpp"
+#include "app/cli/arena_options.hpp"
 #include "app/cli/mms_options.hpp"
+#include "app/cli/option_binding.hpp"
+#include "app/cli/room_options.hpp"
 #include "app/cli/run_cli.hpp"
 #include "app/run/progress_line.hpp"
 #include "app/run/terminal.hpp"
@@ -40,7 +43,44 @@ struct BatchInput {
   std::string kind = "auto";          // --kind auto|maze|room
   std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
   std::string merge_out;                // batch merge -o FILE
+  std::string strategy;                 // --strategy: a maze run's, a room run's, or frontier for both
+  RoomRunOptions room;                  // the room runs' own options (app/cli/room_options.hpp)
 };
+
+// Whether a kind of run has the strategy `name` (its parser holds its names); frontier is one
+// of each.
+template <auto parse>
+bool names_strategy(const std::string &name) {
+  try {
+    parse(name);
+    return true;
+  } catch (const common::InputError &) {
+    return false;
+  }
+}
+bool maze_strategy(const std::string &name) { return names_strategy<explore::parse_strategy>(name); }
+bool room_strategy(const std::string &name) { return names_strategy<robot::parse_metric_strategy>(name); }
+
+// --strategy NAME into the runs it names: a maze run's strategy, a room run's, or frontier, both.
+void read_strategy(const std::string &name, RunOptions &maze, RoomRunOptions &room) {
+  if (!maze_strategy(name) && !room_strategy(name)) {
+    throw common::InputError(fmt::format("unknown --strategy '{}' (a maze run's dfs, frontier, left-wall, right-wall or "
+                                         "floodfill; a room run's waypoints, wavefront, frontier or wander)",
+                                         name));
+  }
+  if (maze_strategy(name)) maze.strategy = explore::parse_strategy(name);
+  if (room_strategy(name)) room.room.strategy = robot::parse_metric_strategy(name);
+}
+
+// The options of the room command a batch takes for its room runs, from room's one table.
+void add_room_run_options(CLI::App &command, BatchInput &batch) {
+  command.add_option("--strategy", batch.strategy,
+                     "NAME: a maze run's dfs, frontier, left-wall, right-wall or floodfill (default dfs); a room run's "
+                     "waypoints, wavefront, frontier or wander (default frontier); frontier is both");
+  add_field_options(command, batch.room, {"--waypoints", "--laps", "--cells"});
+  add_resolution_option(command, batch.room.resolution_m, "0.1");
+  add_field_options(command, batch.room, {"--depth-reading", "--depth-origin"});
+}
 
 // batch merge: the parts' rows joined into one CSV (-o FILE, else stdout), and the totals
 // recomputed from them (stdout with -o, else stderr).
@@ -69,19 +109,38 @@ void add_merge_command(CLI::App &batch_command, const std::shared_ptr<BatchInput
   });
 }
 
-// A room run explores with frontier from the world's start: a maze strategy, a speed run or a
-// start in cells given to a batch that holds room runs says so, once.
-void warn_maze_only_options(const std::vector<BatchJob> &jobs, const RunOptions &options,
-                            const std::function<bool(std::string_view)> &given) {
-  if (std::none_of(jobs.begin(), jobs.end(), [](const BatchJob &job) { return job.kind == RunKind::room; })) return;
-  for (const char *name : {"--strategy", "--speed-run", "--start", "--goal", "--subcells"}) {
-    if (given(name)) {
-      fmt::print(stderr, "warning: {} applies to the maze runs only: a room run explores with frontier from its "
-                         "world's start\n", name);
+bool holds_kind(const std::vector<BatchJob> &jobs, RunKind kind) {
+  return std::any_of(jobs.begin(), jobs.end(), [kind](const BatchJob &job) { return job.kind == kind; });
+}
+
+// A batch that holds room runs: the maze runs' own options given to it say they apply to those
+// only, once each.
+void warn_maze_only_options(const BatchInput &batch, const RunOptions &options, const GivenOptions &given) {
+  for (const char *name : {"--speed-run", "--start", "--goal", "--subcells"}) {
+    if (given.given(name)) {
+      fmt::print(stderr, "warning: {} applies to the maze runs only: a room run starts from its world's start\n", name);
     }
   }
-  if (given("--model") && options.model.kind == sensing::ModelKind::cell) {
+  if (!batch.strategy.empty() && !room_strategy(batch.strategy)) {
+    fmt::print(stderr, "warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n",
+               batch.strategy, robot::to_string(batch.room.room.strategy));
+  }
+  if (given.given("--model") && options.model.kind == sensing::ModelKind::cell) {
     fmt::print(stderr, "warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
+  }
+}
+
+// The room runs' own options given to a batch that holds maze runs (a room strategy) or no
+// room run (the rest) say so, once each.
+void warn_room_only_options(const BatchInput &batch, const RunOptions &options, const GivenOptions &given,
+                            const std::vector<BatchJob> &jobs) {
+  if (holds_kind(jobs, RunKind::maze) && !batch.strategy.empty() && !maze_strategy(batch.strategy)) {
+    fmt::print(stderr, "warning: --strategy {} applies to the room runs only: the maze runs explore with {}\n",
+               batch.strategy, explore::to_string(options.strategy));
+  }
+  if (holds_kind(jobs, RunKind::room)) return;
+  for (const char *name : {"--waypoints", "--laps", "--cells", "--resolution", "--depth-reading", "--depth-origin"}) {
+    if (given.given(name)) fmt::print(stderr, "warning: {} applies to the room runs only: this batch holds none\n", name);
   }
 }
 
@@ -115,12 +174,20 @@ int run_world_batch(const CLI::App &command, const RunOptions &options, const Ba
   const std::vector<BatchJob> batch_jobs = batch.each_start
                                                ? each_start_jobs(list.worlds, options.world_overrides, choice)
                                                : plain_jobs(list.worlds, choice);
-  const auto given = [&command](std::string_view name) {
-    const CLI::Option *option = command.get_option_no_throw(std::string(name));
-    return option != nullptr && option->count() > 0;
-  };
-  warn_maze_only_options(batch_jobs, options, given);
-  const BatchOptions batch_options(options, room_options_for(options, given));
+  const GivenOptions given{command.get_name(), [&command](std::string_view name) {
+                             const CLI::Option *option = command.get_option_no_throw(std::string(name));
+                             return option != nullptr && option->count() > 0;
+                           }};
+  if (holds_kind(batch_jobs, RunKind::room)) warn_maze_only_options(batch, options, given);
+  warn_room_only_options(batch, options, given, batch_jobs);
+  const BatchOptions batch_options(options, room_options_for(options, batch.room, given.given));
+  if (holds_kind(batch_jobs, RunKind::room)) {
+    // --goal and --dilate are the maze runs' here (warned about above), not the room's.
+    const GivenOptions room_given{given.command, [&given](std::string_view name) {
+                                    return name != "--goal" && name != "--dilate" && given.given(name);
+                                  }};
+    print_warnings(check_room_options_apply(room_given, batch_options.room));
+  }
   const std::vector<BatchItem> items = run_batch(batch_options, batch_jobs, jobs, progress, &common::interrupted);
   progress_line.reset();  // cleared before the table
   const double elapsed_ms =
@@ -152,6 +219,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
                       "auto, maze or room: run each world as what it is (a maze as a maze run, an arena as a room "
                       "run), mazes only (arenas skipped), or every world as a room run (default auto)");
   add_merge_command(*command, batch);
+  add_room_run_options(*command, *batch);
   add_mapping_run_options(*command, *parsed);
   add_speed_run_option(*command, *parsed);
   auto mms = std::make_shared<MmsOptions>();
@@ -159,6 +227,8 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
   command->callback([command, parsed, batch, mms, &context] {
     if (command->got_subcommand("merge")) return;
     if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (world files or folders), or: batch merge CSV...");
+    if (!batch->strategy.empty()) read_strategy(batch->strategy, *parsed, batch->room);
+    check_room_options(batch->room);
     RunOptions options = checked_run_options(*command, *parsed, false);
     options.output.quiet = true;
     print_warnings(options_not_applying(*command, options));

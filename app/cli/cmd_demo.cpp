@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/cli/arena_options.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/demo_commands.hpp"
@@ -29,6 +30,16 @@ void list_demos(const CLI::App &demo, std::ostream &out) {
   }
 }
 
+// demo 1d's --resolution in its cm; a bare number was cm before --resolution was declared once
+// (in metres), and is read so for one release, with a warning.
+double demo_1d_spacing_cm(const Length &spacing) {
+  if (spacing.unit == LengthUnit::none) {
+    fmt::print(stderr, "{}\n", old_spelling_warning(fmt::format("--resolution {}", spacing.value),
+                                                    fmt::format("--resolution {}cm", spacing.value)));
+  }
+  return centimetres(spacing, LengthUnit::cm);
+}
+
 void add_demo_1d(CLI::App &demo, CommandContext &context) {
   CLI::App *one_d = demo.add_subcommand("1d", "the textbook 1-D log-odds exercise");
   auto input = std::make_shared<course::Demo1dInput>();
@@ -38,7 +49,9 @@ void add_demo_1d(CLI::App &demo, CommandContext &context) {
       fmt::format("comma-separated ranges in cm (default {})", fmt::join(o.measurements_cm, ",")));
   add_model_options(*one_d, o.model);
   one_d->add_option("--behind", o.behind_cm, fmt::format("occupied stretch behind a hit, cm (default {})", o.behind_cm));
-  one_d->add_option("--resolution", o.resolution_cm, fmt::format("spacing of the cells, cm (default {})", o.resolution_cm));
+  add_resolution_option(*one_d, [&o](const Length &spacing) { o.resolution_cm = demo_1d_spacing_cm(spacing); },
+                        fmt::format("{}cm; a number without its unit is still cm in this release, with a warning",
+                                    o.resolution_cm));
   one_d->add_option("--length", o.length_cm, fmt::format("position of the last cell, cm (default {})", o.length_cm));
   one_d->add_option("--order", input->order, "integration order: given or shuffle (default given)");
   add_seed_option(*one_d, input->seed, "the shuffle");

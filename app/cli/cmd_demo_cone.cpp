@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/cli/arena_options.hpp"
 #include "app/cli/demo_commands.hpp"
 #include "app/course/demo_cone.hpp"
 
@@ -13,13 +14,12 @@ void add_demo_cone(CLI::App &demo, CommandContext &context) {
   auto input = std::make_shared<course::DemoConeInput>();
   cone->add_option("--sensor", input->sensor, "ir or sonar (default ir)");
   CLI::Option *range = cone->add_option("--range", input->range_m, "the reading D, m (default 0.2 for ir, 1 for sonar)");
-  cone->add_option("--pose", input->pose, "X,Y,YAW: the sensor, m and degrees (1.5708rad: radians) (default 0,0,90)");
-  CLI::Option *resolution = cone->add_option("--resolution", input->resolution_m, "a grid cell, m (default 0.01 for ir, 0.05 for sonar)");
+  cone->add_option("--pose", input->pose, "X,Y,YAW: the sensor, X and Y with their unit m, YAW in degrees (1.5708rad: radians) (default 0m,0m,90)");
+  add_resolution_option(*cone, [input](const Length &side) { input->resolution_m = metres(side); }, "0.01 for ir, 0.05 for sonar");
   cone->add_option("--csv", input->csv_path, "FILE: i,j of the marked cells");
   cone->add_option("--png", input->png_path, "FILE: the marked cells and the beam's edges as a PNG picture (SVG or PDF when FILE ends in .svg or .pdf)");
-  cone->callback([&context, input, range, resolution] {
+  cone->callback([&context, input, range] {
     input->range_given = range->count() > 0;
-    input->resolution_given = resolution->count() > 0;
     std::cout << course::run_demo_cone(*input);
     context.status = 0;
   });

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "app/cli/arena_options.hpp"
 #include "app/cli/demo_commands.hpp"
 #include "app/course/demo_pie.hpp"
 
@@ -16,10 +17,10 @@ void add_demo_pie(CLI::App &demo, CommandContext &context) {
   sensing::PieDemoOptions &o = input->options;
   pie->add_option("--readings", input->readings, "comma-separated IR readings in m, left to right (default 1,1.5,1.5,0.8,1.2,1.5)");
   pie->add_option("--mounts", input->mounts, "the sensors' directions from the heading, deg, left positive (default 75,45,15,-15,-45,-75)");
-  pie->add_option("--pose", input->pose, "X,Y,YAW: the robot, m and degrees (1.5708rad: radians) (default 1.5,2.5,270)");
+  pie->add_option("--pose", input->pose, "X,Y,YAW: the robot, X and Y with their unit m, YAW in degrees (1.5708rad: radians) (default 1.5m,2.5m,270)");
   pie->add_option("--beta", o.half_angle_deg, fmt::format("slice half-angle, deg (default {:g})", o.half_angle_deg));
   pie->add_option("--alpha", o.contact_m, fmt::format("contact depth, m (default {:g})", o.contact_m));
-  pie->add_option("--resolution", o.resolution_m, fmt::format("cell side, m (default {:g})", o.resolution_m));
+  add_resolution_option(*pie, [&o](const Length &side) { o.resolution_m = metres(side); }, fmt::format("{:g}", o.resolution_m));
   pie->add_option("--max-range", o.max_range_m, fmt::format("IR max range, m (default {:g})", o.max_range_m));
   pie->add_option("--csv", input->csv_path, "FILE: x_m,y_m,logodds of every updated cell, by its centre");
   pie->add_option("--svg", input->svg_path, "FILE: --png's picture as SVG");

@@ -1,7 +1,6 @@
 // maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/room/room_run.hpp);
 // its options are described in app/cli/room_options.hpp.
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -33,20 +32,14 @@ struct RoomInput {
   RoomRunOptions options;
 };
 
-// --start Xm,Ym[,DEG]: metres, as every command spells a point in metres; the old X,Y[,DEG]
-// (no unit) is read the same, with a warning.
+// --start Xm,Ym[,YAW]: a pose as every command spells it (app/run/option_values.hpp); the old
+// X,Y[,DEG] (no unit) is read the same, with a warning.
 void read_start(const std::string &text, RoomRunOptions &o) {
-  const std::size_t second = text.find(',', text.find(',') + 1);
-  const std::string where = text.substr(0, second);
-  std::optional<std::array<double, 2>> point = metres_point(where);
-  if (!point) {
-    const std::vector<double> bare = parse_number_list(where, "--start", 2);
-    point = std::array<double, 2>{bare[0], bare[1]};
-    fmt::print(stderr, "{}\n", old_spelling_warning(fmt::format("--start {}", where),
-                                                    fmt::format("--start {:g}m,{:g}m", bare[0], bare[1])));
-  }
-  o.start = mapping::Point{(*point)[0], (*point)[1]};
-  if (second != std::string::npos) o.start_yaw_deg = parse_number_list(text.substr(second + 1), "--start's DEG", 1)[0];
+  std::vector<std::string> warnings;
+  const PoseArgument pose = parse_pose(text, "--start", warnings, PoseYaw::optional);
+  print_warnings(warnings);
+  o.start = mapping::Point{pose.x_m, pose.y_m};
+  if (pose.yaw_given) o.start_yaw_deg = pose.yaw_deg;
 }
 
 // The options in the order the help shows them (app/cli/help_format.hpp groups them).
@@ -57,8 +50,8 @@ void add_room_options(CLI::App &cmd, RoomInput &in) {
   add_field_options(cmd, o, {"--strategy", "--model", "--robot", "--cells"});
   add_resolution_option(cmd, o.resolution_m, "0.1");
   add_boundary_option(cmd, in.boundary);
-  cmd.add_option("--start", in.start, "POINT[,DEG]: where the robot starts, in metres with the unit (0.5m,1.2m), and its "
-                                      "heading, degrees from east (default the world's start)");
+  cmd.add_option("--start", in.start, "X,Y[,YAW]: where the robot starts, X and Y with their unit m (0.5m,1.2m), and "
+                                      "its heading, degrees from east or N, E, S, W (default the world's start)");
   add_field_options(cmd, o, {"--waypoints", "--laps", "--goal", "--dilate", "--time-limit"});
   add_old_spelling(cmd, "--time", "--time-limit", [&o](const std::string &text) {
     o.room.time_limit_s = parse_number_list(text, "--time-limit", 1)[0];

@@ -78,13 +78,13 @@ double old_spelling_yaw_rad(const std::string &x, const std::string &y, const st
   const double value = yaw_rad(yaw);
   if (!yaw.ends_with("deg") && std::abs(value) > 2.0 * std::numbers::pi) {
     throw common::InputError(fmt::format("--pose {} {} {}: this old spelling's YAW is in radians, and {} radians is more "
-                                         "than a turn; for {} degrees write --pose {},{},{}",
+                                         "than a turn; for {} degrees write --pose {}m,{}m,{}",
                                          x, y, yaw, yaw, yaw, x, y, yaw));
   }
   return value;
 }
 
-// The pose from --pose's words: one word X,Y,YAW, or the old three words X Y YAW; the word
+// The pose from --pose's words: one word Xm,Ym,YAW, or the old three words X Y YAW; the word
 // after them, when WORLD was not given before, is WORLD (CLI11 gives --pose up to four).
 maze::sim::Pose scan_pose(ScanArgs &args, std::vector<std::string> &warnings) {
   const std::vector<std::string> &words = args.pose;
@@ -99,7 +99,7 @@ maze::sim::Pose scan_pose(ScanArgs &args, std::vector<std::string> &warnings) {
     const double y = metres(words[1], "Y");
     const double yaw = old_spelling_yaw_rad(words[0], words[1], words[2]);
     warnings.push_back(old_spelling_warning(fmt::format("--pose {} {} {}", words[0], words[1], words[2]),
-                                            fmt::format("--pose {:g},{:g},{:g} (YAW in degrees)", x, y,
+                                            fmt::format("--pose {:g}m,{:g}m,{:g} (YAW in degrees)", x, y,
                                                         yaw * 180.0 / std::numbers::pi)));
     return {x, y, yaw};
   }
@@ -117,7 +117,7 @@ void add_scan_command(CLI::App &cli, CommandContext &context) {
   // left out, and the error then blames --pose. scan_pose asks for it instead.
   show_as_required(*accept_shipped_world_names(scan->add_option("WORLD", args->world, "maze file or a shipped world's name")));
   CLI::Option *pose = scan->add_option("--pose", args->pose,
-                                       "X,Y,YAW: position in metres (world frame) and heading in degrees, "
+                                       "X,Y,YAW: position, X and Y with their unit m (world frame), heading YAW in degrees, "
                                        "counter-clockwise from east (1.5708rad: in radians)");
   pose->expected(1, 4)->required();
   show_as_required(*pose);

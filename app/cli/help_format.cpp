@@ -27,7 +27,7 @@ constexpr std::size_t kNameColumn = 28;  // where an option's description starts
 const std::map<std::string, std::string, std::less<>> &group_of_option() {
   static const std::map<std::string, std::string, std::less<>> groups = [] {
     std::map<std::string, std::string, std::less<>> table;
-    for (const char *name : {"--cell-size", "--start", "--goal", "--boundary", "--cells"}) table[name] = kWorldGroup;
+    for (const char *name : {"--cell-size", "--start", "--goal", "--boundary", "--cells", "--resolution"}) table[name] = kWorldGroup;
     for (const char *name : {"--robot", "--model", "--subcells", "--threshold", "--pie-beta", "--pie-alpha",
                              "--hit-depth", "--ignore-no-return", "--noise", "--seed", "--p-free", "--p-occ",
                              "--prior", "--log-base", "--clamp", "--sensor", "--bump-radius", "--depth-angles", "--depth-max",
@@ -35,7 +35,7 @@ const std::map<std::string, std::string, std::less<>> &group_of_option() {
       table[name] = kRobotGroup;
     }
     for (const char *name : {"--strategy", "--max-steps", "--time-limit", "--dilate", "--speed-run", "--plan-to", "--from", "--to",
-                             "--step"}) {
+                             "--step", "--waypoints", "--laps"}) {
       table[name] = kExplorationGroup;
     }
     for (const char *name : {"--dropout", "--spikes", "--stuck-bumper", "--wheel-slip"}) table[name] = kFaultsGroup;

@@ -27,7 +27,6 @@ void add_model_choice(CLI::App &command, RunOptions &o) {
   add_field_option(command, o, "--threshold");
   add_field_options(command, o.range_model, {"--pie-beta", "--pie-alpha"});
   add_field_options(command, o.model, {"--hit-depth", "--ignore-no-return"});
-  add_field_option(command, o, "--strategy");
 }
 
 void add_robot_and_faults(CLI::App &command, RunOptions &o) {
@@ -66,6 +65,7 @@ void add_picture_format_option(CLI::App &command, RunOptions &o) {
 void add_exploration_options(CLI::App &command, RunOptions &o) {
   accept_shipped_world_names(command.add_option(
       "WORLD", o.world, "maze file or a shipped world's name (default lab4x4.txt, from worlds/ here or the shipped worlds)"));
+  add_field_option(command, o, "--strategy");
   add_mapping_run_options(command, o);
   add_field_options(command, o.output, {"--ascii", "--unknown"});
 }

@@ -12,7 +12,7 @@
 namespace app {
 
 // The mapping options run, batch, compare and plan take: --subcells --model --threshold
-// --pie-beta --pie-alpha --hit-depth --ignore-no-return --strategy --robot --seed --noise
+// --pie-beta --pie-alpha --hit-depth --ignore-no-return --robot --seed --noise
 // --p-free --p-occ --prior --log-base --clamp --max-steps --dilate, the faults --dropout
 // --spikes --stuck-bumper --wheel-slip, and the world options --cell-size --start --goal.
 // A value that cannot be read throws common::InputError naming the option as typed.
@@ -24,7 +24,8 @@ void add_speed_run_option(CLI::App &command, RunOptions &options);
 // --picture-format LIST (run, plan): png, svg and/or pdf, comma-separated.
 void add_picture_format_option(CLI::App &command, RunOptions &options);
 
-// add_mapping_run_options, with WORLD, --ascii and --unknown (run, compare, plan).
+// add_mapping_run_options, with WORLD, --strategy (a maze run's; batch reads its own, for maze
+// and room runs), --ascii and --unknown (run, compare, plan).
 void add_exploration_options(CLI::App &command, RunOptions &options);
 
 // The options as parsed into `options` by `command`, made whole and checked once: the

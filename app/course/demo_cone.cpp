@@ -117,7 +117,7 @@ std::string run_demo_cone(const DemoConeInput &input) {
   const sensing::KheperaSensor &kind = ir ? sensing::kKheperaIr : sensing::kKheperaSonar;
   const ConeDefaults defaults = ir ? ConeDefaults{0.2, 0.01} : ConeDefaults{1.0, 0.05};
   const double range_m = input.range_given ? input.range_m : defaults.range_m;
-  const double resolution_m = input.resolution_given ? input.resolution_m : defaults.resolution_m;
+  const double resolution_m = input.resolution_m.value_or(defaults.resolution_m);
   if (!(range_m > 0.0) || !std::isfinite(range_m)) throw common::InputError(fmt::format("--range must be > 0 m (got {})", range_m));
   if (!(resolution_m > 0.0) || !std::isfinite(resolution_m)) {
     throw common::InputError(fmt::format("--resolution must be > 0 m (got {})", resolution_m));

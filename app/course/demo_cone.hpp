@@ -5,6 +5,7 @@
 // marked cells and how the maze run's cone model differs; on request the cells' CSV and a
 // picture with the beam's edges.
 
+#include <optional>
 #include <string>
 
 namespace app::course {
@@ -14,10 +15,9 @@ namespace app::course {
 struct DemoConeInput {
   std::string sensor = "ir";  // ir or sonar
   double range_m = 0.0;
-  double resolution_m = 0.0;
+  std::optional<double> resolution_m;  // m; none: the sensor's
   bool range_given = false;
-  bool resolution_given = false;
-  std::string pose;      // X,Y,YAW (app/run/option_values.hpp's parse_pose); empty: 0,0,90
+  std::string pose;      // Xm,Ym,YAW (app/run/option_values.hpp's parse_pose); empty: 0m,0m,90
   std::string csv_path;  // i,j of the marked cells
   std::string png_path;  // the picture; SVG or PDF when the name ends in .svg or .pdf
 };

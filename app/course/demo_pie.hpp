@@ -16,7 +16,7 @@ struct DemoPieInput {
   sensing::PieDemoOptions options;
   std::string readings;  // "1,1.5,...", m, left to right
   std::string mounts;    // "75,45,...", deg from the heading, left positive
-  std::string pose;      // X,Y,YAW (app/run/option_values.hpp's parse_pose)
+  std::string pose;      // Xm,Ym,YAW (app/run/option_values.hpp's parse_pose)
   std::string csv_path;  // x_m,y_m,logodds of every updated cell
   std::string svg_path;  // the picture as SVG
   std::string png_path;  // the picture; SVG or PDF when the name ends in .svg or .pdf

@@ -23,41 +23,34 @@ void for_neighbours(const FlatGrid &g, std::size_t flat, Visit &&visit) {
   }
 }
 
+// One line of the running window: the `count` cells `stride` apart from `first` are set in
+// `out` when a set cell of `in` on the line lies within `dilate` cells of them.
+void dilate_line(const std::vector<bool> &in, std::vector<bool> &out, std::size_t first, std::size_t stride, int count,
+                 int dilate) {
+  std::vector<int> next(static_cast<std::size_t>(count));  // the nearest set cell at or after each
+  int upcoming = 1'000'000;
+  for (int k = count - 1; k >= 0; --k) {
+    if (in[first + static_cast<std::size_t>(k) * stride]) upcoming = k;
+    next[static_cast<std::size_t>(k)] = upcoming;
+  }
+  int last = -1'000'000;  // the last set cell before
+  for (int k = 0; k < count; ++k) {
+    const std::size_t flat = first + static_cast<std::size_t>(k) * stride;
+    if (in[flat]) last = k;
+    out[flat] = k - last <= dilate || next[static_cast<std::size_t>(k)] - k <= dilate;
+  }
+}
+
 }  // namespace
 
 std::vector<bool> dilated(const FlatGrid &g, const std::vector<bool> &obstacles, int dilate) {
   if (dilate <= 0) return obstacles;
-  // Two passes of a running window: along rows, then along columns.
+  // Two passes of a running window: along rows, then along columns (a square grown by dilate).
+  const auto x = static_cast<std::size_t>(g.cells_x);
   std::vector<bool> rows(g.size(), false);
-  for (int j = 0; j < g.cells_y; ++j) {
-    int last = -1'000'000;  // the last obstacle's column
-    std::vector<int> next(static_cast<std::size_t>(g.cells_x), 1'000'000);
-    int upcoming = 1'000'000;
-    for (int i = g.cells_x - 1; i >= 0; --i) {
-      if (obstacles[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.cells_x) + static_cast<std::size_t>(i)]) upcoming = i;
-      next[static_cast<std::size_t>(i)] = upcoming;
-    }
-    for (int i = 0; i < g.cells_x; ++i) {
-      const std::size_t flat = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.cells_x) + static_cast<std::size_t>(i);
-      if (obstacles[flat]) last = i;
-      rows[flat] = i - last <= dilate || next[static_cast<std::size_t>(i)] - i <= dilate;
-    }
-  }
+  for (std::size_t j = 0; j < static_cast<std::size_t>(g.cells_y); ++j) dilate_line(obstacles, rows, j * x, 1, g.cells_x, dilate);
   std::vector<bool> out(g.size(), false);
-  for (int i = 0; i < g.cells_x; ++i) {
-    int last = -1'000'000;
-    std::vector<int> next(static_cast<std::size_t>(g.cells_y), 1'000'000);
-    int upcoming = 1'000'000;
-    for (int j = g.cells_y - 1; j >= 0; --j) {
-      if (rows[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.cells_x) + static_cast<std::size_t>(i)]) upcoming = j;
-      next[static_cast<std::size_t>(j)] = upcoming;
-    }
-    for (int j = 0; j < g.cells_y; ++j) {
-      const std::size_t flat = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.cells_x) + static_cast<std::size_t>(i);
-      if (rows[flat]) last = j;
-      out[flat] = j - last <= dilate || next[static_cast<std::size_t>(j)] - j <= dilate;
-    }
-  }
+  for (std::size_t i = 0; i < x; ++i) dilate_line(rows, out, i, x, g.cells_y, dilate);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cstring>
 #include <cmath>
+#include <string_view>
 #include <limits>
 #include <numbers>
 
@@ -33,37 +34,31 @@ enum BeamState : unsigned char {
 
 bool full_circle(const LidarScan &scan) { return scan.fov_rad >= 2.0 * std::numbers::pi - 1e-9; }
 
+// "scan filter: WHAT must be LOW to HIGH beams (got N)" for a count outside its range.
+void require_beams(int beams, int low, int high, std::string_view what) {
+  if (beams >= low && beams <= high) return;
+  throw common::InputError(fmt::format("scan filter: {} must be {} to {} beams (got {})", what, low, high, beams));
+}
+
+// "scan filter: WHAT must be a finite number of m >= 0 (got X)" for a length that is not.
+void require_metres(double length_m, std::string_view what) {
+  if (length_m >= 0.0 && std::isfinite(length_m)) return;
+  throw common::InputError(fmt::format("scan filter: {} must be a finite number of m >= 0 (got {})", what, length_m));
+}
+
 }  // namespace
 
 void validate(const ScanFilterOptions &options) {
-  if (!(options.range_noise_m >= 0.0 && std::isfinite(options.range_noise_m))) {
-    throw common::InputError(fmt::format("scan filter: range noise must be a finite number of m >= 0 (got {})",
-                                         options.range_noise_m));
-  }
-  if (options.neighbour_reach < 1 || options.neighbour_reach > 10) {
-    throw common::InputError(fmt::format("scan filter: neighbour reach must be 1 to 10 beams (got {})",
-                                         options.neighbour_reach));
-  }
-  if (options.max_see_through < 1 || options.max_see_through > 8) {
-    throw common::InputError(fmt::format("scan filter: see-through cluster must be 1 to 8 beams (got {})",
-                                         options.max_see_through));
-  }
+  require_metres(options.range_noise_m, "range noise");
+  require_beams(options.neighbour_reach, 1, 10, "neighbour reach");
+  require_beams(options.max_see_through, 1, 8, "see-through cluster");
   if (!(options.max_grazing_rad >= 0.0 && options.max_grazing_rad < std::numbers::pi / 2.0)) {
     throw common::InputError(fmt::format("scan filter: grazing angle must be at least 0 and below pi/2 rad (got {})",
                                          options.max_grazing_rad));
   }
-  if (options.max_dropout_run < 0 || options.max_dropout_run > 32) {
-    throw common::InputError(fmt::format("scan filter: dropout run must be 0 to 32 beams (got {})",
-                                         options.max_dropout_run));
-  }
-  if (options.min_repeated_view < 1 || options.min_repeated_view > 32) {
-    throw common::InputError(fmt::format("scan filter: repeated view must be 1 to 32 beams (got {})",
-                                         options.min_repeated_view));
-  }
-  if (!(options.same_pose_m >= 0.0 && std::isfinite(options.same_pose_m))) {
-    throw common::InputError(fmt::format("scan filter: same-pose distance must be a finite number of m >= 0 (got {})",
-                                         options.same_pose_m));
-  }
+  require_beams(options.max_dropout_run, 0, 32, "dropout run");
+  require_beams(options.min_repeated_view, 1, 32, "repeated view");
+  require_metres(options.same_pose_m, "same-pose distance");
 }
 
 // What every rule reads, in locals for the rules' loops: the beams as they stand in a round
