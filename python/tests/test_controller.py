@@ -42,7 +42,7 @@ def test_a_webots_controller_runs_unchanged(controller_file):
     status, out, err = run_controller(controller_file(DEVICES), "--world", "worlds/lab4x4.txt")
     assert status == 0, err
     lines = out.splitlines()
-    assert "names hambot 10 lidar" in lines  # with the course HamBot's camera and display
+    assert "names hambot 10 lidar" in lines  # with the course HamBot's camera and two displays
     assert "lidar 360 1 6.283185" in lines
     assert "start 0.5 0.5 90" in lines
     assert "moved True True 0.672" in lines
