@@ -15,6 +15,7 @@
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/room/room_pictures.hpp"
 #include "cli_runner.hpp"
+#include "common/error.hpp"
 #include "png_reader.hpp"
 
 #include <nlohmann/json.hpp>
@@ -182,6 +183,17 @@ TEST_CASE("room --out: replay.html records a cell seen every step a few dozen ti
       CHECK(std::abs(shown - map) <= std::max(0.41, 0.34 * std::abs(map)) + 0.01);
     }
   }
+}
+
+TEST_CASE("room --out: a world file named like an output of every run (truth.png) is refused, not overwritten") {
+  const test_cli::TempDir dir("room_out_over_world");
+  std::filesystem::create_directories(dir.path);
+  const std::filesystem::path world = dir.path / "truth.png";
+  std::filesystem::copy_file(std::string(WORLDS_DIR) + "/ir_room.room", world);
+  const std::string before = test_png::read_all(world);
+  CHECK_THROWS_WITH_AS(test_cli::run({"room", world.string(), "--quiet", "--out", dir.path.string()}),
+                       doctest::Contains("is also an input"), common::InputError);
+  CHECK(test_png::read_all(world) == before);
 }
 
 TEST_CASE("room --out: map.png, truth.png and wave.png are one size") {
