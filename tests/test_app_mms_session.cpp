@@ -304,6 +304,54 @@ TEST_CASE("mms --out: the files every run writes, summary.json with mms's stats 
 
 namespace {
 
+// The names of the files directly in dir, sorted.
+std::vector<std::string> file_names(const fs::path &dir) {
+  std::vector<std::string> names;
+  for (const fs::directory_entry &e : fs::directory_iterator(dir)) {
+    if (e.is_regular_file()) names.push_back(e.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("run, room and mms --out write the same core files, each kind adding its own") {
+  const std::vector<std::string> core{"map.pgm", "map.png",  "map.yaml",   "replay.html",
+                                      "summary.json", "trace.csv", "truth.png"};
+  const test_cli::TempDir run_dir("core_files_run");
+  REQUIRE(test_cli::run({"run", std::string(WORLDS_DIR) + "/open_room6x6.txt", "--quiet", "--out",
+                         run_dir.path.string()})
+              .status == 0);
+  CHECK(file_names(run_dir.path) == core);
+
+  const test_cli::TempDir room_dir("core_files_room");
+  REQUIRE(test_cli::run({"room", std::string(WORLDS_DIR) + "/ir_room.room", "--quiet", "--out",
+                         room_dir.path.string()})
+              .status == 0);
+  std::vector<std::string> room = core;
+  room.insert(room.end(), {"logodds.csv", "thresholded.txt"});
+  std::sort(room.begin(), room.end());
+  CHECK(file_names(room_dir.path) == room);
+
+  const test_cli::TempDir mms_dir("core_files_mms");
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+  options.output.quiet = true;
+  options.output.out_dir = mms_dir.path.string();
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "goal_then_loop.sh"};
+  mms.until = app::MmsUntil::goal;
+  std::ostringstream out;
+  (void)app::run_mms_world(options, mms, out);
+  std::vector<std::string> with_marks = core;
+  with_marks.emplace_back("marks.txt");
+  std::sort(with_marks.begin(), with_marks.end());
+  CHECK(file_names(mms_dir.path) == with_marks);
+}
+
+namespace {
+
 // Five cells north from the start of open_room6x6 with `robot` (empty: mms's default), as one
 // moveForward 5 and as five moveForward: each a ramped leg with the robot's speed profile.
 // --walls truth knows every side ahead open, so the five cells are one leg; in --walls sensed

@@ -1,10 +1,13 @@
 // The room run's pictures (app/room/room_pictures.hpp): the wave's tones, and what
 // `room --out` draws: map.png, wave.png and a picture per snapshot, with their tones at known
-// cells; replay.html's frames. About 0.7 s.
+// cells; replay.html's frames and their size; an output over the world refused. About 2 s.
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,7 @@
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/room/room_pictures.hpp"
 #include "cli_runner.hpp"
+#include "common/error.hpp"
 #include "png_reader.hpp"
 
 #include <nlohmann/json.hpp>
@@ -135,6 +139,61 @@ TEST_CASE("room --out: replay.html in metres, a frame at the start and a step on
   const long free_value = cells[6 * 50 + 20];  // (2.05, 0.65): 2 * centi-log-odds, not occupied
   CHECK(free_value < 0);
   CHECK(free_value % 2 == 0);
+}
+
+TEST_CASE("room --out: replay.html records a cell seen every step a few dozen times, the last near the map") {
+  // The IR room's frontier run: 1500 cells, a frame every step for some 2500 steps, its free
+  // cells' log-odds falling an update a step to about -1000.
+  const test_cli::TempDir dir("room_replay_size");
+  const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
+  REQUIRE(test_cli::run({"room", world, "--quiet", "--out", dir.path.string()}).status == 0);
+  const std::string page = test_png::read_all(dir.path / "replay.html");
+  const std::string open = "<script type=\"application/json\" id=\"replay-data\">";
+  const std::size_t begin = page.find(open) + open.size();
+  REQUIRE(begin > open.size());
+  const nlohmann::json data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
+  const auto steps = nlohmann::json::parse(test_png::read_all(dir.path / "summary.json"))["steps"].get<std::size_t>();
+  REQUIRE(data["frames"]["step"].size() == steps + 1);  // every step a frame still
+  const std::size_t width = 50, height = 30;
+  std::vector<long> cells(width * height, data["initial"].get<long>());
+  std::size_t changes = 0;
+  for (const auto &frame : data["frames"]["changes"]) {
+    long at = 0;
+    for (std::size_t k = 0; k + 1 < frame.size(); k += 2, ++changes) {
+      at += frame[k].get<long>();
+      cells[static_cast<std::size_t>(at)] = frame[k + 1].get<long>();
+    }
+  }
+  CHECK(changes <= 40 * cells.size());  // every cell every step would be some 800 a cell
+  CHECK(page.size() <= 300 * steps + (std::size_t{100} << 10));
+  // The last frame against logodds.csv (north row first): occupied alike, the log-odds within
+  // one update (the free increment, the smaller) or a quarter of the map's.
+  std::istringstream csv(test_png::read_all(dir.path / "logodds.csv"));
+  std::string row;
+  for (std::size_t j = height; j-- > 0 && std::getline(csv, row);) {
+    std::istringstream fields(row);
+    std::string field;
+    for (std::size_t i = 0; i < width && std::getline(fields, field, ','); ++i) {
+      const double map = std::stod(field);
+      const long value = cells[j * width + i];
+      const double shown = static_cast<double>(value >> 1) / 100.0;  // value = 2 * centi-log-odds + occupied
+      CAPTURE(i);
+      CAPTURE(j);
+      if (std::abs(map) >= 0.01) CHECK((value & 1) == (map > 0 ? 1 : 0));  // the csv's 6 decimals: 0 may be above
+      CHECK(std::abs(shown - map) <= std::max(0.41, 0.34 * std::abs(map)) + 0.01);
+    }
+  }
+}
+
+TEST_CASE("room --out: a world file named like an output of every run (truth.png) is refused, not overwritten") {
+  const test_cli::TempDir dir("room_out_over_world");
+  std::filesystem::create_directories(dir.path);
+  const std::filesystem::path world = dir.path / "truth.png";
+  std::filesystem::copy_file(std::string(WORLDS_DIR) + "/ir_room.room", world);
+  const std::string before = test_png::read_all(world);
+  CHECK_THROWS_WITH_AS(test_cli::run({"room", world.string(), "--quiet", "--out", dir.path.string()}),
+                       doctest::Contains("is also an input"), common::InputError);
+  CHECK(test_png::read_all(world) == before);
 }
 
 TEST_CASE("room --out: map.png, truth.png and wave.png are one size") {

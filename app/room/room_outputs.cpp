@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
 #include "common/atomic_file.hpp"
 
@@ -71,8 +72,9 @@ std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<s
 }
 
 std::vector<std::string> room_output_names() {
-  return {"trace.csv", "logodds.csv", "thresholded.txt", "map.pgm", "map.yaml", "summary.json",
-          "map.png",   "wave.png",    "replay.html",     "snapshots/"};
+  std::vector<std::string> names = run_output_names();
+  names.insert(names.end(), {"logodds.csv", "thresholded.txt", "wave.png"});
+  return names;
 }
 
 void write_room_outputs(const std::string &dir, const sensing::MetricMap &map, const std::string &trace,

@@ -26,7 +26,10 @@ struct RoomFile {
   std::string bytes;
 };
 
-// The names write_room_outputs may write in its dir; "snapshots/" stands for that folder's files.
+// The names a room run may write in its --out dir: every run's (run_output_names: the core
+// files, summary.json, trace.csv, map.png, truth.png, replay.html, snapshots/...) and the
+// room's own, logodds.csv, thresholded.txt and wave.png; "snapshots/" stands for that
+// folder's files.
 std::vector<std::string> room_output_names();
 
 // Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json and the
