@@ -32,7 +32,7 @@ void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m) {
   for (const LandmarkMark &mark : landmark_marks(m)) {
     const PointPx at{l.origin.x + l.side_px + (mark.at.x_m - m.origin_x_m()) * px_per_m,
                      l.origin.y + l.side_px + (m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m};
-    page.ringed_disc(at, std::max(2.0, mark.radius_m * px_per_m), mark.colour, 1.0, Rgb{0, 0, 0});
+    draw_landmark(page, mark, at, px_per_m);
   }
 }
 
@@ -159,7 +159,7 @@ void truth_legend(Figure &fig, const TruthInput &in, const TruthCounts &counts, 
                {Swatch::line, kUnscoredWallColour, "wall, not scored"},
                {Swatch::square, kStartColour, "start"},
                {Swatch::frame, kGoalColour, "goal"}};
-  if (!in.truth->landmarks().empty()) fig.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
+  for (LegendItem &item : landmark_items(landmark_marks(*in.truth))) fig.items.push_back(std::move(item));
   fig.px_per_m = l.cell_px / in.truth->cell_size_m();
 }
 

@@ -16,6 +16,7 @@
 
 #include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
+#include "app/report/truth_picture.hpp"
 #include "app/room/room_outputs.hpp"
 #include "app/room/room_pictures.hpp"
 #include "app/room/room_replay.hpp"
@@ -263,25 +264,36 @@ class RoomLog {
   std::string trace_;
 };
 
-// What the pictures mark besides the controller's state: the start, the goal, the caption.
+// The arena's cylinders (a supervisor's landmarks) as the pictures mark them: no colour given.
+std::vector<LandmarkMark> disc_marks(const maze::Arena &arena) {
+  std::vector<LandmarkMark> marks;
+  for (const maze::ArenaDisc &d : arena.discs) marks.push_back({{d.centre_x_m, d.centre_y_m}, std::nullopt, d.radius_m});
+  return marks;
+}
+
+// What the pictures mark besides the controller's state: the start, the goal, the arena's
+// boundary, the landmarks, the caption.
 RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::SetUp &setup,
-                               const robot::MetricOptions &room) {
+                               const robot::MetricOptions &room, const maze::Arena &arena,
+                               std::vector<LandmarkMark> landmarks) {
   RoomPictureMarks marks;
   marks.start = room.start;
   marks.goal = room.goal;
+  marks.boundary = PlainGridBounds{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
+  marks.landmarks = std::move(landmarks);
   marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
                               robot::to_string(room.strategy), setup.name);
   return marks;
 }
 
 // What replay.html shows besides the frames: the pictures' caption, the summary's lines.
-RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::MetricOptions &room,
+RoomReplayText replay_text(const RoomRunOptions &options, const RoomPictureMarks &marks, const robot::MetricOptions &room,
                            const Report &report) {
-  const RoomPictureMarks marks = picture_marks(options, setup, room);
   RoomReplayText text;
   text.title = options.world;
   text.caption = marks.caption;
   text.goal = marks.goal;
+  text.landmarks = marks.landmarks;
   text.body_radius_m = room.body_radius_m;
   for (auto &[key, value] : summary_pairs(report)) {
     if (key != "wall_time_ms") text.summary.emplace_back(key, value);
@@ -319,28 +331,10 @@ void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c
       << room_binary_map(c.map(), threshold) << '\n';
 }
 
-}  // namespace
-
-int room_exit_status(const RoomSummary &s) {
-  if (s.interrupted) return common::interrupted_exit_status();
-  switch (s.ending) {
-    case robot::MetricEnding::done:
-    case robot::MetricEnding::goal_reached:
-    case robot::MetricEnding::arrived:
-    case robot::MetricEnding::time_up: return 0;
-    default: return 1;
-  }
-}
-
-RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
-                     Report *report) {
-  return run_room_in(maze::world_geometry(world), options, out, started, interrupted, report);
-}
-
-RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
-                        Report *report_out) {
+// The run in `arena`, its pictures marking `landmarks` (run_room_in's contract).
+RoomSummary run_room_with(const maze::Arena &arena, std::vector<LandmarkMark> landmarks, const RoomRunOptions &options,
+                          std::ostream &out, std::chrono::steady_clock::time_point started,
+                          robot::MetricStopPoll interrupted, Report *report_out) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
@@ -366,7 +360,8 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   // ---- the run ----
   const double threshold = threshold_of(options);
   const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
-  RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
+  const RoomPictureMarks marks = picture_marks(options, setup, room, arena, std::move(landmarks));
+  RoomLog log(options, threshold, tones, marks, out);
   std::optional<RoomReplay> replay;
   if (!options.out_dir.empty()) replay.emplace(map, tones, ReplayPose{0, {start_pose.x_m, start_pose.y_m}, start_pose.yaw_rad});
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
@@ -394,16 +389,44 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
     log.draw(controller_loop, "map", "wave");
     std::vector<RoomFile> files = log.pictures();
     const RoomTruthScores scores{report.text("cell_accuracy"), report.text("coverage")};
-    files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold,
-                                                     picture_marks(options, setup, room), scores)});
+    files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold, marks, scores)});
     replay->finish(controller_loop);
-    if (std::optional<Replay> page = replay_html(replay->input(replay_text(options, setup, room, report)))) {
+    if (std::optional<Replay> page = replay_html(replay->input(replay_text(options, marks, room, report)))) {
       files.push_back({"replay.html", std::move(page->html)});
     }
     write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
   }
   if (report_out != nullptr) *report_out = report;
   return summary;
+}
+
+}  // namespace
+
+RoomSummary run_room(const maze::AnyWorld &world, const RoomRunOptions &options, std::ostream &out,
+                     std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                     Report *report) {
+  const maze::Arena arena = maze::world_geometry(world);
+  std::vector<LandmarkMark> landmarks;
+  if (const maze::Maze *maze = maze::lattice_view(world)) landmarks = landmark_marks(*maze);
+  for (LandmarkMark &l : disc_marks(arena)) landmarks.push_back(l);
+  return run_room_with(arena, std::move(landmarks), options, out, started, interrupted, report);
+}
+
+RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
+                        std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                        Report *report) {
+  return run_room_with(arena, disc_marks(arena), options, out, started, interrupted, report);
+}
+
+int room_exit_status(const RoomSummary &s) {
+  if (s.interrupted) return common::interrupted_exit_status();
+  switch (s.ending) {
+    case robot::MetricEnding::done:
+    case robot::MetricEnding::goal_reached:
+    case robot::MetricEnding::arrived:
+    case robot::MetricEnding::time_up: return 0;
+    default: return 1;
+  }
 }
 
 }  // namespace app
