@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -125,7 +126,7 @@ TEST_CASE("replay data in metres: poses, goals and landmarks in mm from the grid
   input.steps_per_frame = 15;
   input.goals = {{-0.125, 2.375}};
   input.body_radius_m = 0.05;
-  input.landmarks = {{{0.0, 2.5}, app::Rgb{255, 0, 0}, 0.1}};
+  input.landmarks = {{{0.0, 2.5}, app::Rgb{255, 0, 0}, 0.1}, {{-0.5, 3.0}, std::nullopt, 0.25}};
   const Json d = Json::parse(app::replay_data_json(input, 1));
   CHECK(d["units"] == "metres");
   CHECK(d["k"] == 1);
@@ -135,7 +136,8 @@ TEST_CASE("replay data in metres: poses, goals and landmarks in mm from the grid
   CHECK(d["frames"]["t_ms"] == Json::array({0, 480}));
   CHECK(d["frames"]["changes"][1] == Json::array({5, 83}));
   CHECK(d["goals"] == Json::array({875, 375}));
-  CHECK(d["landmarks"] == Json::array({1000, 500, 100, 255, 0, 0}));
+  // The second's colour not given: -1, -1, -1 (the page draws it neutral grey).
+  CHECK(d["landmarks"] == Json::array({1000, 500, 100, 255, 0, 0, 500, 1000, 250, -1, -1, -1}));
   CHECK(d["body_mm"] == 50);
   CHECK(d["frame_note"] == "a frame every 15 steps");
   CHECK(Json::parse(app::replay_data_json(input, 2))["frame_note"] == "a frame every 30 steps");

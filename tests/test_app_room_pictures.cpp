@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "app/picture/map_picture.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/room/room_pictures.hpp"
+#include "app/room/room_run.hpp"
+#include "maze/world/world.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
 #include "png_reader.hpp"
@@ -30,6 +33,45 @@ bool has_colour(const test_png::Png &png, app::Rgb c) {
     if (png.rgb[i] == c.r && png.rgb[i + 1] == c.g && png.rgb[i + 2] == c.b) return true;
   }
   return false;
+}
+
+// Where a room picture of a grid of cells_x x cells_y cells of cell_m from (x0, y0), walled
+// at its edge, puts its map (the page's layout: room_page's font follows the map's size).
+app::PlainGridFrame room_frame(int cells_x, int cells_y, double cell_m, double x0_m, double y0_m, int &band_px) {
+  app::PlainGrid grid;
+  grid.cells_x = cells_x;
+  grid.cells_y = cells_y;
+  grid.x0_m = x0_m;
+  grid.y0_m = y0_m;
+  grid.cell_w_m = grid.cell_h_m = cell_m;
+  grid.axes_in_metres = true;
+  grid.solid_boundary =
+      app::PlainGridBounds{x0_m, x0_m + cells_x * cell_m, y0_m, y0_m + cells_y * cell_m};
+  band_px = app::boundary_band_px(grid);
+  return app::plain_grid_frame(grid, app::Figure{});
+}
+
+// The pixel of a point in metres.
+std::vector<int> pixel_of(const test_png::Png &png, const app::PlainGridFrame &frame, double x_m, double y_m) {
+  const app::PointPx p = frame.at(x_m, y_m);
+  return png.at(static_cast<int>(p.x), static_cast<int>(p.y));
+}
+
+// The pixels off the map's colour c on the ring band_px / 2 outside the grid, all round.
+int ring_pixels_not(const test_png::Png &png, const app::PlainGridFrame &frame, int cells_x, int cells_y, int band_px,
+                    app::Rgb c) {
+  const int left = static_cast<int>(frame.origin.x) - band_px / 2 - 1;
+  const int top = static_cast<int>(frame.origin.y) - band_px / 2 - 1;
+  const int right = static_cast<int>(frame.origin.x + cells_x * frame.cell_w_px) + band_px / 2;
+  const int bottom = static_cast<int>(frame.origin.y + cells_y * frame.cell_h_px) + band_px / 2;
+  int off = 0;
+  for (int x = left; x <= right; ++x) {
+    off += (png.at(x, top) != rgb(c)) + (png.at(x, bottom) != rgb(c));
+  }
+  for (int y = top; y <= bottom; ++y) {
+    off += (png.at(left, y) != rgb(c)) + (png.at(right, y) != rgb(c));
+  }
+  return off;
 }
 
 }  // namespace
@@ -65,6 +107,7 @@ TEST_CASE("room --out: map.png, wave.png and the snapshots' pictures, tones at k
   grid.cells_y = 30;
   grid.cell_w_m = grid.cell_h_m = 0.1;
   grid.axes_in_metres = true;
+  grid.solid_boundary = app::PlainGridBounds{0.0, 5.0, 0.0, 3.0};
   const app::PlainGridFrame frame = app::plain_grid_frame(grid, app::Figure{});
   REQUIRE(frame.cell_w_px == 12);
   const auto centre = [&frame](double x_m, double y_m) {
@@ -209,4 +252,95 @@ TEST_CASE("room --out: map.png, truth.png and wave.png are one size") {
     CHECK(other.width == map.width);
     CHECK(other.height == map.height);
   }
+}
+
+TEST_CASE("room --out: the world's boundary drawn as a wall whole all round map.png, truth.png and the snapshots") {
+  // The IR room's boundary, 0 ... 5 x 0 ... 3 m, is the map's edge: the walls the lidar hits
+  // lie on the grid's boundary line, their cells outside the map.
+  const test_cli::TempDir dir("room_pictures_boundary");
+  REQUIRE(test_cli::run({"room", std::string(WORLDS_DIR) + "/ir_room.room", "--time-limit", "10", "--snapshot-steps",
+                         "50", "--quiet", "--out", dir.path.string()})
+              .status == 0);
+  int band = 0;
+  const app::PlainGridFrame frame = room_frame(50, 30, 0.1, 0.0, 0.0, band);
+  CHECK(band == 12);  // a cell wide
+  for (const char *name : {"map.png", "truth.png", "snapshots/step50.png"}) {
+    CAPTURE(name);
+    const test_png::Png png = test_png::read_png(test_png::read_all(dir.path / name));
+    CHECK(ring_pixels_not(png, frame, 50, 30, band, app::kBoundaryWallColour) == 0);
+  }
+  // At 0.15 m the grid (34 x 20 cells) reaches 0.1 m past the east wall at 5 m: the cells
+  // past it are wall too, the cells before it the map's.
+  const test_cli::TempDir coarse("room_pictures_boundary_coarse");
+  REQUIRE(test_cli::run({"room", std::string(WORLDS_DIR) + "/ir_room.room", "--time-limit", "10", "--resolution",
+                         "0.15", "--quiet", "--out", coarse.path.string()})
+              .status == 0);
+  const app::PlainGridFrame coarse_frame = room_frame(34, 20, 0.15, 0.0, 0.0, band);
+  const test_png::Png map = test_png::read_png(test_png::read_all(coarse.path / "map.png"));
+  CHECK(ring_pixels_not(map, coarse_frame, 34, 20, band, app::kBoundaryWallColour) == 0);
+  CHECK(pixel_of(map, coarse_frame, 5.05, 1.5) == rgb(app::kBoundaryWallColour));
+  CHECK(pixel_of(map, coarse_frame, 4.5, 0.75) != rgb(app::kBoundaryWallColour));  // free, seen from the start
+}
+
+TEST_CASE("room --out on a world with a landmark: a disc of its colour on map.png and truth.png, and in replay.html") {
+  // A walled 11 x 11 m course arena centred on the origin, a blue landmark at (-2, 3).
+  const test_cli::TempDir dir("room_pictures_landmark");
+  REQUIRE(test_cli::run({"room", std::string(TEST_DATA_DIR) + "/worlds/course_arena11.xml", "--time-limit", "5",
+                         "--quiet", "--out", dir.path.string()})
+              .status == 0);
+  int band = 0;
+  const app::PlainGridFrame frame = room_frame(110, 110, 0.1, -5.5, -5.5, band);
+  for (const char *name : {"map.png", "truth.png"}) {
+    CAPTURE(name);
+    const test_png::Png png = test_png::read_png(test_png::read_all(dir.path / name));
+    CHECK(pixel_of(png, frame, -2.0, 3.0) == std::vector<int>{0, 0, 255});
+    CHECK(pixel_of(png, frame, -2.0 + 0.2, 3.0) == std::vector<int>{0, 0, 255});  // inside its 0.25 m
+    CHECK(pixel_of(png, frame, -2.0 + 0.35, 3.0) != std::vector<int>{0, 0, 255});  // outside it
+    CHECK(ring_pixels_not(png, frame, 110, 110, band, app::kBoundaryWallColour) == 0);
+  }
+  const std::string page = test_png::read_all(dir.path / "replay.html");
+  const std::string open = "<script type=\"application/json\" id=\"replay-data\">";
+  const std::size_t begin = page.find(open) + open.size();
+  const nlohmann::json data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
+  // In mm from the grid's south-west corner (-5.5, -5.5): (3500, 8500), 250 round, blue.
+  CHECK(data["landmarks"] == nlohmann::json::array({3500, 8500, 250, 0, 0, 255}));
+}
+
+TEST_CASE("room run in an arena with a supervisor's cylinder: a neutral grey disc, its colour not given") {
+  const test_cli::TempDir dir("room_pictures_cylinder");
+  maze::Arena arena = maze::load_world(std::string(WORLDS_DIR) + "/ir_room.room").geometry();
+  arena.discs.push_back({0.6, 2.4, 0.25});
+  app::RoomRunOptions o;
+  o.world = "ir_room with a cylinder";
+  o.room.strategy = robot::MetricStrategy::frontier;
+  o.room.time_limit_s = 5.0;
+  o.quiet = true;
+  o.out_dir = dir.path.string();
+  std::ostringstream out;
+  app::run_room_in(arena, o, out);
+  int band = 0;
+  const app::PlainGridFrame frame = room_frame(50, 30, 0.1, 0.0, 0.0, band);
+  for (const char *name : {"map.png", "truth.png"}) {
+    CAPTURE(name);
+    const test_png::Png png = test_png::read_png(test_png::read_all(dir.path / name));
+    CHECK(pixel_of(png, frame, 0.6, 2.4) == rgb(app::kLandmarkNeutralTone));
+  }
+  const std::string page = test_png::read_all(dir.path / "replay.html");
+  CHECK(page.find("\"landmarks\":[600,2400,250,-1,-1,-1]") != std::string::npos);
+}
+
+TEST_CASE("landmarks' legend words: one for those of a given colour, one for those without") {
+  const app::LandmarkMark red{{0.0, 0.0}, app::Rgb{255, 0, 0}, 0.25};
+  const app::LandmarkMark unknown{{1.0, 0.0}, std::nullopt, 0.25};
+  const auto labels = [](const std::vector<app::LandmarkMark> &marks) {
+    std::vector<std::string> words;
+    for (const app::LegendItem &item : app::landmark_items(marks)) words.push_back(item.label);
+    return words;
+  };
+  CHECK(labels({}).empty());
+  CHECK(labels({red}) == std::vector<std::string>{"landmark (its colour)"});
+  CHECK(labels({unknown}) == std::vector<std::string>{"landmark, colour not given"});
+  CHECK(labels({red, unknown}) == std::vector<std::string>{"landmark (its colour)", "landmark, colour not given"});
+  CHECK(rgb(app::landmark_fill(unknown)) == rgb(app::kLandmarkNeutralTone));
+  CHECK(rgb(app::landmark_fill(red)) == std::vector<int>{255, 0, 0});
 }

@@ -57,7 +57,7 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
   for (const LandmarkMark &l : marks.landmarks) {
     const PointPx at{origin.x + (l.at.x_m - g.origin.x_m) * px_per_m,
                      origin.y + (g.height_cells * g.cell_size_m - (l.at.y_m - g.origin.y_m)) * px_per_m};
-    page.ringed_disc(at, std::max(2.0, l.radius_m * px_per_m), l.colour, 1.0, Rgb{0, 0, 0});
+    draw_landmark(page, l, at, px_per_m);
   }
   const double goal_line = std::max(1.0, cell_px / 14);
   for (const mapping::Cell goal : marks.goals) {
@@ -98,13 +98,31 @@ std::vector<LegendItem> map_items(const MapMarks &marks) {
     add(Swatch::disc, kPlannedColour, "plan start");
     add(Swatch::ring, kPlannedColour, "plan end");
   }
-  if (!marks.landmarks.empty()) add(Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)");
+  for (LegendItem &item : landmark_items(marks.landmarks)) items.push_back(std::move(item));
   return items;
 }
 
 std::string signed_2(double v) { return std::abs(v) < 0.005 ? "0" : fmt::format("{:+.2f}", v); }
 
 }  // namespace
+
+Rgb landmark_fill(const LandmarkMark &landmark) { return landmark.colour.value_or(kLandmarkNeutralTone); }
+
+void draw_landmark(Drawing &page, const LandmarkMark &landmark, PointPx at, double px_per_m) {
+  page.ringed_disc(at, std::max(2.0, landmark.radius_m * px_per_m), landmark_fill(landmark), 1.0, Rgb{0, 0, 0});
+}
+
+std::vector<LegendItem> landmark_items(const std::vector<LandmarkMark> &landmarks) {
+  const auto coloured = [](const LandmarkMark &l) { return l.colour.has_value(); };
+  std::vector<LegendItem> items;
+  if (std::any_of(landmarks.begin(), landmarks.end(), coloured)) {
+    items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
+  }
+  if (!std::all_of(landmarks.begin(), landmarks.end(), coloured)) {
+    items.push_back({Swatch::disc, kLandmarkNeutralTone, "landmark, colour not given"});
+  }
+  return items;
+}
 
 Rgb observed_tone(double log_odds, const MapTones &tones) {
   if (occupied(log_odds, tones)) return grey(70.0 - 70.0 * strength(log_odds, tones.occupied_increment));

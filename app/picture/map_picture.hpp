@@ -59,13 +59,23 @@ Rgb observed_tone(double log_odds, const MapTones &tones);
 // occupied, by default), and `unknown_label` (e.g. "never observed") in kUnknownTone after it.
 ColourBar map_tone_bar(const MapTones &tones, const std::string &unknown_label);
 
-// A landmark of the world (maze::Landmark), where it stands in the world frame (m), its
-// colour and radius.
+// A landmark of the world (maze::Landmark, or a cylinder a supervisor placed), where it
+// stands in the world frame (m), its colour (none when the world does not say it) and radius.
 struct LandmarkMark {
   mapping::Point at;
-  Rgb colour;
+  std::optional<Rgb> colour;
   double radius_m = 0.0;
 };
+// A landmark whose colour is not known is drawn in this neutral grey.
+inline constexpr Rgb kLandmarkNeutralTone{128, 128, 128};
+// The fill a landmark is drawn in: its colour, else kLandmarkNeutralTone.
+Rgb landmark_fill(const LandmarkMark &landmark);
+// Draws a landmark as a disc of its fill, its radius at `px_per_m` (2 px at least), ringed in
+// black, centred at `at`.
+void draw_landmark(Drawing &page, const LandmarkMark &landmark, PointPx at, double px_per_m);
+// The legend's words for these landmarks: "landmark (its colour)" when one has a colour,
+// "landmark, colour not given" (a neutral disc) when one has none; nothing for none.
+std::vector<LegendItem> landmark_items(const std::vector<LandmarkMark> &landmarks);
 
 // What is drawn over the map. The path is the caller's (a long run's is millions of cells):
 // it must outlive the marks.

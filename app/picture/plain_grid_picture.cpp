@@ -18,10 +18,11 @@ double cell_w_px(const PlainGrid &g) { return std::max(1.0, std::round(g.cell_w_
 double cell_h_px(const PlainGrid &g) { return std::max(1.0, std::round(g.cell_h_m * px_per_m(g))); }
 
 Figure with_grid(const PlainGrid &g, Figure fig) {
-  fig.map_w_px = static_cast<int>(g.cells_x * cell_w_px(g));
-  fig.map_h_px = static_cast<int>(g.cells_y * cell_h_px(g));
+  const int band = boundary_band_px(g);
+  fig.map_w_px = static_cast<int>(g.cells_x * cell_w_px(g)) + 2 * band;
+  fig.map_h_px = static_cast<int>(g.cells_y * cell_h_px(g)) + 2 * band;
   if (cell_w_px(g) == cell_h_px(g)) {
-    fig.axes = Axes{g.cells_x, g.cells_y, cell_w_px(g), g.first_i, g.first_j, 0.0};
+    fig.axes = Axes{g.cells_x, g.cells_y, cell_w_px(g), g.first_i, g.first_j, static_cast<double>(band)};
     if (g.axes_in_metres) {
       fig.axes->px_per_m = cell_w_px(g) / g.cell_w_m;
       fig.axes->x0_m = g.x0_m;
@@ -32,7 +33,29 @@ Figure with_grid(const PlainGrid &g, Figure fig) {
   return fig;
 }
 
+// Everything in the map area outside the solid boundary, as wall: the band round the grid
+// and the grid's cells past the boundary.
+void draw_boundary_wall(Drawing &page, const PlainGrid &g, const PlainGridFrame &frame, const RectPx &area) {
+  if (!g.solid_boundary) return;
+  const PlainGridBounds &b = *g.solid_boundary;
+  const PointPx south_west = frame.at(b.x_min_m, b.y_min_m);
+  const PointPx north_east = frame.at(b.x_max_m, b.y_max_m);
+  const double right = area.x + area.w;
+  const double bottom = area.y + area.h;
+  const auto wall = [&page](RectPx r) {
+    if (r.w > 0.0 && r.h > 0.0) page.fill_rect(r, kBoundaryWallColour);
+  };
+  wall({area.x, area.y, south_west.x - area.x, area.h});
+  wall({north_east.x, area.y, right - north_east.x, area.h});
+  wall({area.x, area.y, area.w, north_east.y - area.y});
+  wall({area.x, south_west.y, area.w, bottom - south_west.y});
+}
+
 }  // namespace
+
+int boundary_band_px(const PlainGrid &g) {
+  return g.solid_boundary ? static_cast<int>(std::clamp(cell_w_px(g), 4.0, 16.0)) : 0;
+}
 
 Figure plain_grid_figure(const PlainGrid &grid, Figure legend) { return with_grid(grid, std::move(legend)); }
 
@@ -64,7 +87,8 @@ void set_tone(PlainGrid &g, double x_m, double y_m, Rgb tone) {
 
 PlainGridFrame plain_grid_frame(const PlainGrid &g, const Figure &legend) {
   PlainGridFrame frame;
-  frame.origin = layout_figure(with_grid(g, legend)).map_origin;
+  const PointPx area = layout_figure(with_grid(g, legend)).map_origin;
+  frame.origin = {area.x + boundary_band_px(g), area.y + boundary_band_px(g)};
   frame.cell_w_px = cell_w_px(g);
   frame.cell_h_px = cell_h_px(g);
   frame.x0_m = g.x0_m;
@@ -80,14 +104,18 @@ Drawing plain_grid_picture(const PlainGrid &g, Figure legend, const PlainGridOve
   const Figure fig = with_grid(g, std::move(legend));
   const FigureLayout layout = shared ? layout_figure(fig, *shared) : layout_figure(fig);
   PlainGridFrame frame = plain_grid_frame(g, fig);
-  frame.origin = layout.map_origin;
+  const int band = boundary_band_px(g);
+  frame.origin = {layout.map_origin.x + band, layout.map_origin.y + band};
   Drawing page(layout.width, layout.height, format);
   std::vector<Rgb> top_first;
   top_first.reserve(g.tones.size());
   for (int j = g.cells_y - 1; j >= 0; --j) {
     for (int i = 0; i < g.cells_x; ++i) top_first.push_back(g.tones[static_cast<std::size_t>(j * g.cells_x + i)]);
   }
-  page.blocks(top_first, g.cells_x, g.cells_y, layout.map_origin, frame.cell_w_px, frame.cell_h_px);
+  page.blocks(top_first, g.cells_x, g.cells_y, frame.origin, frame.cell_w_px, frame.cell_h_px);
+  draw_boundary_wall(page, g, frame,
+                     {layout.map_origin.x, layout.map_origin.y, static_cast<double>(fig.map_w_px),
+                      static_cast<double>(fig.map_h_px)});
   if (overlay) overlay(page, frame);
   draw_figure(page, fig, layout);
   return page;

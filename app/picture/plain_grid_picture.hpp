@@ -7,6 +7,11 @@
 //
 //   pixels a metre   about 600 / the longer side in metres, so that each cell is at least
 //                    one pixel: a 25 x 25 grid is 24 px a cell, 50 x 50 12
+//   a solid boundary (a room's: walled all round, its walls on the grid's edge or past it)
+//                    everything outside it drawn as wall, in kBoundaryWallColour: a band a
+//                    cell wide (4 to 16 px) round the grid, and any cells the grid has past
+//                    the boundary, so that the outer wall reads whole whatever the map holds
+//                    in the cells along it
 
 #include <functional>
 #include <optional>
@@ -17,6 +22,17 @@
 #include "app/picture/map_picture.hpp"
 
 namespace app {
+
+// The colour of a solid boundary's wall.
+inline constexpr Rgb kBoundaryWallColour{0, 0, 0};
+
+// A rectangle in metres, x_min < x_max, y_min < y_max.
+struct PlainGridBounds {
+  double x_min_m = 0.0;
+  double x_max_m = 0.0;
+  double y_min_m = 0.0;
+  double y_max_m = 0.0;
+};
 
 struct PlainGrid {
   int cells_x = 0;
@@ -29,7 +45,13 @@ struct PlainGrid {
   int first_j = 0;
   bool axes_in_metres = false;  // the axes in metres (a room's map) instead of cell indices
   std::vector<Rgb> tones;  // cell (i, j), column i from the west, row j from the south: j * cells_x + i
+  // The world's solid boundary, inside the grid's extent (or on its edge): drawn as wall
+  // outside it (above). None: the grid alone, no band.
+  std::optional<PlainGridBounds> solid_boundary;
 };
+
+// The width of the band drawn round a grid with a solid boundary (0 without one), in pixels.
+int boundary_band_px(const PlainGrid &grid);
 
 // Square cells of side cell_m on a lattice from the origin: cell (i, j) covers
 // [i cell_m, (i + 1) cell_m] x [j cell_m, (j + 1) cell_m]; the grid holds i from i_min - 2 to
@@ -41,7 +63,7 @@ void set_tone(PlainGrid &grid, double x_m, double y_m, Rgb tone);
 
 // Where the grid is in the picture: the pixel of a point in metres, and a cell's size.
 struct PlainGridFrame {
-  PointPx origin;  // the grid's north-west corner
+  PointPx origin;  // the grid's north-west corner (inside the boundary's band, when there is one)
   double cell_w_px = 1.0;
   double cell_h_px = 1.0;
   double x0_m = 0.0;

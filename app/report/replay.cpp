@@ -106,8 +106,12 @@ void append_marks(std::string &out, const ReplayInput &input) {
   append_ints(out, goals);
   std::vector<long> landmarks;
   for (const LandmarkMark &l : input.landmarks) {
-    landmarks.insert(landmarks.end(), {milli(l.at.x_m - o.x_m), milli(l.at.y_m - o.y_m), milli(l.radius_m),
-                                       long{l.colour.r}, long{l.colour.g}, long{l.colour.b}});
+    landmarks.insert(landmarks.end(), {milli(l.at.x_m - o.x_m), milli(l.at.y_m - o.y_m), milli(l.radius_m)});
+    if (l.colour) {
+      landmarks.insert(landmarks.end(), {long{l.colour->r}, long{l.colour->g}, long{l.colour->b}});
+    } else {
+      landmarks.insert(landmarks.end(), {-1L, -1L, -1L});
+    }
   }
   out += ",\"landmarks\":";
   append_ints(out, landmarks);

@@ -15,7 +15,8 @@
 // "<\/"): "units" ("cells" or "metres": how the page names places), the grid's geometry and
 // tones, the path (each pose's step and x, y in mm from the grid's south-west corner, yaw in
 // mrad counter-clockwise from east), the goals (x, y in mm, a frame "goal_mm" wide), the
-// landmarks (x, y, radius in mm, red, green, blue 0 to 255: six numbers each), and the
+// landmarks (x, y, radius in mm, red, green, blue 0 to 255, or -1, -1, -1 when the world
+// does not give its colour and the page draws it neutral grey: six numbers each), and the
 // frames: each the last pose it shows, its step, its simulated time in ms (-1 when not
 // known) and the sub-cells that changed since the previous frame, as pairs (gap, value) in
 // ascending flat-index order (OccupancyGrid::index; the first gap is the index itself), the

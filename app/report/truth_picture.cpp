@@ -32,7 +32,7 @@ void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m) {
   for (const LandmarkMark &mark : landmark_marks(m)) {
     const PointPx at{l.origin.x + l.side_px + (mark.at.x_m - m.origin_x_m()) * px_per_m,
                      l.origin.y + l.side_px + (m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m};
-    page.ringed_disc(at, std::max(2.0, mark.radius_m * px_per_m), mark.colour, 1.0, Rgb{0, 0, 0});
+    draw_landmark(page, mark, at, px_per_m);
   }
 }
 
@@ -159,7 +159,7 @@ void truth_legend(Figure &fig, const TruthInput &in, const TruthCounts &counts, 
                {Swatch::line, kUnscoredWallColour, "wall, not scored"},
                {Swatch::square, kStartColour, "start"},
                {Swatch::frame, kGoalColour, "goal"}};
-  if (!in.truth->landmarks().empty()) fig.items.push_back({Swatch::disc, Rgb{0, 0, 0}, "landmark (its colour)"});
+  for (LegendItem &item : landmark_items(landmark_marks(*in.truth))) fig.items.push_back(std::move(item));
   fig.px_per_m = l.cell_px / in.truth->cell_size_m();
 }
 
@@ -174,12 +174,29 @@ MapScore TruthCounts::score() const {
   return s;
 }
 
-std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth) {
+namespace {
+
+Rgb landmark_rgb(double red, double green, double blue) {
   const auto channel = [](double v) { return static_cast<unsigned char>(std::lround(255.0 * v)); };
+  return Rgb{channel(red), channel(green), channel(blue)};
+}
+
+}  // namespace
+
+std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth) {
   std::vector<LandmarkMark> marks;
   for (const maze::Landmark &l : truth.landmarks()) {
-    marks.push_back({mapping::Point{l.x_m, l.y_m}, Rgb{channel(l.red), channel(l.green), channel(l.blue)},
-                     maze::kLandmarkRadius_m});
+    marks.push_back({mapping::Point{l.x_m, l.y_m}, landmark_rgb(l.red, l.green, l.blue), maze::kLandmarkRadius_m});
+  }
+  return marks;
+}
+
+std::vector<LandmarkMark> landmark_marks(const maze::Arena &geometry) {
+  std::vector<LandmarkMark> marks;
+  for (const maze::ArenaDisc &d : geometry.discs) {
+    std::optional<Rgb> colour;
+    if (d.landmark) colour = landmark_rgb(d.landmark->red, d.landmark->green, d.landmark->blue);
+    marks.push_back({mapping::Point{d.centre_x_m, d.centre_y_m}, colour, d.radius_m});
   }
   return marks;
 }

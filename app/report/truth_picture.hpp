@@ -30,6 +30,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/picture/map_picture.hpp"
 #include "app/picture/drawing.hpp"
+#include "maze/world/arena.hpp"
 #include "maze/world/maze.hpp"
 
 namespace app {
@@ -78,5 +79,7 @@ PointPx truth_origin_px(const maze::Maze &truth, int subcells);
 
 // The maze's landmarks as the pictures mark them.
 std::vector<LandmarkMark> landmark_marks(const maze::Maze &truth);
+// A geometry's cylinders: a landmark's in its colour, a supervisor's cylinder without one.
+std::vector<LandmarkMark> landmark_marks(const maze::Arena &geometry);
 
 }  // namespace app

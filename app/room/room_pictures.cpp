@@ -37,8 +37,9 @@ Rgb truth_tone(const sensing::MetricMap &map, const maze::ArenaTruth &truth, dou
 
 // The map's cells as a plain grid, each in `tone_of(flat index)`.
 template <typename ToneOf>
-PlainGrid room_grid(const sensing::MetricMap &map, ToneOf tone_of) {
+PlainGrid room_grid(const sensing::MetricMap &map, const RoomPictureMarks &marks, ToneOf tone_of) {
   PlainGrid g;
+  g.solid_boundary = marks.boundary;
   g.cells_x = map.cells_x();
   g.cells_y = map.cells_y();
   g.x0_m = map.spec().boundary.x_start_m;
@@ -83,6 +84,19 @@ void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::MetricCo
   if (plan.size() >= 2) page.polyline(plan, std::max(1.5, frame.cell_w_px / 5), kPlannedColour);
 }
 
+// Under every other mark: the landmarks, each a disc of its radius.
+void draw_room_landmarks(Drawing &page, const PlainGridFrame &frame, const RoomPictureMarks &marks) {
+  for (const LandmarkMark &l : marks.landmarks) {
+    draw_landmark(page, l, frame.at(l.at.x_m, l.at.y_m), frame.cell_w_px / frame.cell_w_m);
+  }
+}
+
+// The legend's items every room picture has after its own: the boundary's wall, the landmarks.
+void add_world_items(Figure &legend, const RoomPictureMarks &marks) {
+  if (marks.boundary) legend.items.push_back({Swatch::box, kBoundaryWallColour, "boundary wall"});
+  for (LegendItem &item : landmark_items(marks.landmarks)) legend.items.push_back(std::move(item));
+}
+
 // The caption and, when the picture has one, the moment it shows.
 std::vector<std::string> caption_lines(const RoomPictureMarks &marks) {
   std::vector<std::string> lines{marks.caption};
@@ -101,6 +115,7 @@ Figure map_legend(const RoomPictureMarks &marks, const MapTones &tones, bool has
                   {Swatch::disc, kEndColour, "robot"}};
   if (has_plan) legend.items.push_back({Swatch::line, kPlannedColour, "last plan"});
   if (marks.goal) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
+  add_world_items(legend, marks);
   legend.bar = map_tone_bar(tones, "never observed (prior)");
   return legend;
 }
@@ -117,6 +132,7 @@ Figure truth_legend(const RoomPictureMarks &marks, const RoomTruthScores &scores
                   {Swatch::box, kUnreachableFreeTone, "free, not reachable"},
                   {Swatch::line, kPathColour, "trajectory"},
                   {Swatch::disc, kEndColour, "robot"}};
+  add_world_items(legend, marks);
   return legend;
 }
 
@@ -127,6 +143,7 @@ Figure wave_legend(const RoomPictureMarks &marks, std::int32_t top, bool has_pla
   legend.items = {{Swatch::box, kBlockedTone, "1: obstacle, grown"}, {Swatch::box, kGoalColour, "2: goal"}};
   if (has_plan) legend.items.push_back({Swatch::line, kPlannedColour, "path"});
   legend.items.push_back({Swatch::disc, kEndColour, "robot"});
+  add_world_items(legend, marks);
   ColourBar bar;
   bar.name = "wave";
   const int samples = 60;
@@ -156,8 +173,9 @@ MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbab
 std::string room_map_picture(const robot::MetricController &c, const MapTones &tones, const RoomPictureMarks &marks,
                              PictureFormat format) {
   const sensing::MetricMap &map = c.map();
-  const PlainGrid g = room_grid(map, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
+  const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    draw_room_landmarks(page, frame, marks);
     std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
     for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
     page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
@@ -175,8 +193,9 @@ std::string room_map_picture(const robot::MetricController &c, const MapTones &t
 std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
                                const RoomPictureMarks &marks, const RoomTruthScores &scores, PictureFormat format) {
   const sensing::MetricMap &map = c.map();
-  const PlainGrid g = room_grid(map, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
+  const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    draw_room_landmarks(page, frame, marks);
     std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
     for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
     page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
@@ -203,8 +222,9 @@ Rgb wave_tone(std::int32_t value, std::int32_t top) {
 std::string room_wave_picture(const robot::MetricController &c, const RoomPictureMarks &marks, PictureFormat format) {
   const std::vector<std::int32_t> &wave = c.wave();
   const std::int32_t top = wave.empty() ? plan::kWaveGoal : *std::max_element(wave.begin(), wave.end());
-  const PlainGrid g = room_grid(c.map(), [&](std::size_t n) { return wave_tone(wave[n], top); });
+  const PlainGrid g = room_grid(c.map(), marks, [&](std::size_t n) { return wave_tone(wave[n], top); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
+    draw_room_landmarks(page, frame, marks);
     draw_plan(page, frame, c);
     draw_goal(page, frame, marks);
     draw_robot(page, frame, c);
@@ -215,7 +235,7 @@ std::string room_wave_picture(const robot::MetricController &c, const RoomPictur
 }
 
 PageFrame room_page(const sensing::MetricMap &map, const RoomPictureMarks &marks) {
-  const PlainGrid g = room_grid(map, [](std::size_t) { return kWhite; });
+  const PlainGrid g = room_grid(map, marks, [](std::size_t) { return kWhite; });
   RoomPictureMarks widest = marks;
   widest.when = "step 9999999, 99999.9 s";
   widest.goal = mapping::Point{};

@@ -1,7 +1,10 @@
 #pragma once
 // The room run's pictures (app/picture's drawing and page layout, as the maze's map.png and
 // map-log's pictures), north up, one block a map cell, the axes in metres, every picture of a
-// run on one page size (room_page):
+// run on one page size (room_page). On each: the world's boundary, solid all round, as a
+// black wall outside it (a band round the grid: plain_grid_picture.hpp), and the world's
+// landmarks as discs of their colour (neutral grey where the world does not give it), ringed
+// in black, under the other marks.
 //
 //   map    the log-odds in map.png's tones (occupied dark, free light, graded by the
 //          set-up's own increments; never observed blue-grey), the trajectory in red from the
@@ -24,6 +27,7 @@
 
 #include "app/picture/drawing.hpp"
 #include "app/picture/map_picture.hpp"
+#include "app/picture/plain_grid_picture.hpp"
 #include "maze/world/arena_truth.hpp"
 #include "mapping/grid_types.hpp"
 #include "robot/metric_controller.hpp"
@@ -35,6 +39,8 @@ namespace app {
 struct RoomPictureMarks {
   mapping::Point start;
   std::optional<mapping::Point> goal;
+  std::optional<PlainGridBounds> boundary;  // the world's boundary (solid all round), within the map's extent
+  std::vector<LandmarkMark> landmarks;
   std::string caption;  // the legend's first line: the world, the strategy, the set-up
   std::string when;     // the second line of the map's and the wave's: "step 50, 1.6 s" (may be empty)
 };

@@ -16,6 +16,7 @@
 
 #include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
+#include "app/report/truth_picture.hpp"
 #include "app/room/room_outputs.hpp"
 #include "app/room/room_pictures.hpp"
 #include "app/room/room_replay.hpp"
@@ -263,25 +264,29 @@ class RoomLog {
   std::string trace_;
 };
 
-// What the pictures mark besides the controller's state: the start, the goal, the caption.
+// What the pictures mark besides the controller's state: the start, the goal, the arena's
+// boundary, the landmarks, the caption.
 RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::SetUp &setup,
-                               const robot::MetricOptions &room) {
+                               const robot::MetricOptions &room, const maze::Arena &arena,
+                               std::vector<LandmarkMark> landmarks) {
   RoomPictureMarks marks;
   marks.start = room.start;
   marks.goal = room.goal;
+  marks.boundary = PlainGridBounds{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
+  marks.landmarks = std::move(landmarks);
   marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
                               robot::to_string(room.strategy), setup.name);
   return marks;
 }
 
 // What replay.html shows besides the frames: the pictures' caption, the summary's lines.
-RoomReplayText replay_text(const RoomRunOptions &options, const sensing::SetUp &setup, const robot::MetricOptions &room,
+RoomReplayText replay_text(const RoomRunOptions &options, const RoomPictureMarks &marks, const robot::MetricOptions &room,
                            const Report &report) {
-  const RoomPictureMarks marks = picture_marks(options, setup, room);
   RoomReplayText text;
   text.title = options.world;
   text.caption = marks.caption;
   text.goal = marks.goal;
+  text.landmarks = marks.landmarks;
   text.body_radius_m = room.body_radius_m;
   for (auto &[key, value] : summary_pairs(report)) {
     if (key != "wall_time_ms") text.summary.emplace_back(key, value);
@@ -366,7 +371,8 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   // ---- the run ----
   const double threshold = threshold_of(options);
   const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
-  RoomLog log(options, threshold, tones, picture_marks(options, setup, room), out);
+  const RoomPictureMarks marks = picture_marks(options, setup, room, arena, landmark_marks(arena));
+  RoomLog log(options, threshold, tones, marks, out);
   std::optional<RoomReplay> replay;
   if (!options.out_dir.empty()) replay.emplace(map, tones, ReplayPose{0, {start_pose.x_m, start_pose.y_m}, start_pose.yaw_rad});
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
@@ -394,10 +400,9 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
     log.draw(controller_loop, "map", "wave");
     std::vector<RoomFile> files = log.pictures();
     const RoomTruthScores scores{report.text("cell_accuracy"), report.text("coverage")};
-    files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold,
-                                                     picture_marks(options, setup, room), scores)});
+    files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold, marks, scores)});
     replay->finish(controller_loop);
-    if (std::optional<Replay> page = replay_html(replay->input(replay_text(options, setup, room, report)))) {
+    if (std::optional<Replay> page = replay_html(replay->input(replay_text(options, marks, room, report)))) {
       files.push_back({"replay.html", std::move(page->html)});
     }
     write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
