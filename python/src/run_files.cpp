@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include "app/picture/map_picture.hpp"
+#include "app/picture/plain_grid_picture.hpp"
 #include "app/report/grid_history.hpp"
 #include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
@@ -19,6 +20,7 @@
 #include "app/run/report.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
+#include "maze/world/arena_truth.hpp"
 
 namespace maze_mapper_python {
 
@@ -158,6 +160,43 @@ void write_maze_pictures(const fs::path &dir, const maze::World &world, const Ma
   written.emplace_back("truth.png");
 }
 
+// truth.png of a run in an arena: its solids on a grid of kArenaPictureCells on the longer
+// side (solid dark, free white, the boundary a wall all round), the landmarks in their colour,
+// the robot's path.
+void write_arena_truth(const fs::path &dir, const maze::World &world, const std::vector<PoseTrace::Visit> &visits,
+                       std::vector<std::string> &written) {
+  constexpr int kArenaPictureCells = 400;
+  const maze::Arena a = world.geometry();
+  const double cell_m = std::max(a.width_m(), a.height_m()) / kArenaPictureCells;
+  app::PlainGrid grid;
+  grid.cells_x = maze::cells_along(a.width_m(), cell_m);
+  grid.cells_y = maze::cells_along(a.height_m(), cell_m);
+  grid.x0_m = a.x_min_m;
+  grid.y0_m = a.y_min_m;
+  grid.cell_w_m = a.width_m() / grid.cells_x;
+  grid.cell_h_m = a.height_m() / grid.cells_y;
+  grid.axes_in_metres = true;
+  grid.solid_boundary = app::PlainGridBounds{a.x_min_m, a.x_max_m, a.y_min_m, a.y_max_m};
+  const maze::ArenaTruth truth = maze::rasterise_arena(a, grid.cells_x, grid.cells_y, 0.0);
+  grid.tones.resize(truth.occupied.size());
+  for (std::size_t i = 0; i < grid.tones.size(); ++i) grid.tones[i] = truth.occupied[i] != 0 ? app::kInk : app::kWhite;
+  const std::vector<app::LandmarkMark> landmarks = app::landmark_marks(a);
+  app::Figure legend;
+  legend.lines.push_back(fmt::format("{}: the world and the robot's path", world.name()));
+  legend.items = {{app::Swatch::box, app::kInk, "solid"},
+                  {app::Swatch::box, app::kWhite, "free"},
+                  {app::Swatch::line, app::kPathColour, "the robot's path"}};
+  for (app::LegendItem &item : app::landmark_items(landmarks)) legend.items.push_back(std::move(item));
+  app::Drawing page = app::plain_grid_picture(grid, legend, [&](app::Drawing &p, const app::PlainGridFrame &f) {
+    const double px_per_m = f.cell_w_px / f.cell_w_m;
+    for (const app::LandmarkMark &l : landmarks) app::draw_landmark(p, l, f.at(l.at.x_m, l.at.y_m), px_per_m);
+    const auto at = [&](std::size_t k) { return f.at(visits[k].x_m, visits[k].y_m); };
+    if (!visits.empty()) p.polyline(visits.size(), at, std::max(2.0, px_per_m * 0.02), app::kPathColour);
+  });
+  common::write_file_atomically((dir / "truth.png").string(), page.encode());
+  written.emplace_back("truth.png");
+}
+
 // replay.html of a maze run, or a warning when even its final map is too large.
 void write_maze_replay(const fs::path &dir, const maze::World &world, const MazeRun &run, const app::Report &report,
                        std::int64_t steps, std::vector<std::string> &written) {
@@ -205,8 +244,9 @@ PoseTrace &RunFiles::trace() {
   return *trace_;
 }
 
-void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World *maze, const py::object &grid,
+void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
                       std::optional<float> initial_log_odds) {
+  const maze::World *maze = world != nullptr && world->on_lattice() ? world : nullptr;
   const app::Report report = report_of(entries);
   const fs::path d(dir_);
   std::vector<std::string> written;
@@ -216,6 +256,7 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   const std::optional<MazeRun> run =
       maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze(), grid, initial_log_odds, visits)) : std::nullopt;
   if (run) write_maze_pictures(d, *maze, *run, written);
+  if (world != nullptr && !world->on_lattice()) write_arena_truth(d, *world, visits, written);
   common::write_file_atomically((d / "summary.json").string(), app::report_json(report).dump(2) + "\n");
   written.emplace_back("summary.json");
   if (trace_) {
@@ -238,9 +279,8 @@ void bind_run_files(py::module_ &m) {
           "finish",
           [](RunFiles &files, const std::vector<EntryTuple> &entries, const py::object &world, const py::object &grid,
              std::optional<float> initial_log_odds) {
-            const maze::World *maze = py::isinstance<maze::World>(world) ? &world.cast<const maze::World &>() : nullptr;
-            if (maze != nullptr && !maze->on_lattice()) maze = nullptr;  // an arena: no cell pictures
-            files.finish(entries, maze, grid, initial_log_odds);
+            files.finish(entries, py::isinstance<maze::World>(world) ? &world.cast<const maze::World &>() : nullptr,
+                         grid, initial_log_odds);
           },
           py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"));
 }

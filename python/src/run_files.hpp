@@ -63,12 +63,13 @@ class RunFiles {
   PoseTrace &trace();
 
   // Writes every file and removes what an earlier run left in DIR that this one did not
-  // write; names them on stderr ("wrote DIR/: ..."). `maze`: the world when it is a maze, else
-  // null; `grid`: the grid the controller kept (an OccupancyGrid or an array; None: none),
-  // `initial_log_odds` its never-observed value. The pictures mark the cells the robot's
-  // centre passed through as visited. Throws common::InputError when the kept grid's cells
-  // are not the maze's.
-  void finish(const std::vector<EntryTuple> &entries, const maze::World *maze, const py::object &grid,
+  // write; names them on stderr ("wrote DIR/: ..."). `world`: the world read (null: the
+  // course's empty floor); `grid`: the grid the controller kept (an OccupancyGrid or an array;
+  // None: none), `initial_log_odds` its never-observed value. A maze's pictures mark the cells
+  // the robot's centre passed through as visited; an arena's truth.png draws its solids,
+  // landmarks and the path. Throws common::InputError when the kept grid's cells are not the
+  // maze's.
+  void finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
               std::optional<float> initial_log_odds);
 
   // The names the run may write in DIR.

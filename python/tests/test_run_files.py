@@ -5,6 +5,7 @@ user pointed at."""
 import csv
 import json
 import os
+import struct
 
 from conftest import run_controller, summary_of, world
 
@@ -46,11 +47,15 @@ def test_a_maze_run_writes_the_core_files_with_the_core_keys_in_order(controller
     assert b'id="replay-data"' in (out / "replay.html").read_bytes()
 
 
-def test_an_arena_run_writes_the_summary_and_the_trace(controller_file, tmp_path):
+def test_an_arena_run_writes_the_summary_the_trace_and_a_truth_picture_of_its_solids_and_path(controller_file, tmp_path):
     out = tmp_path / "out"
     status, _, err = run_controller(controller_file(DRIVE), "--world", world("thick_arena.xml"), "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["summary.json", "trace.csv"]
+    assert sorted(os.listdir(out)) == ["summary.json", "trace.csv", "truth.png"]
+    png = (out / "truth.png").read_bytes()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    width, height = struct.unpack(">II", png[16:24])
+    assert width >= 400 and height >= 400  # 400 cells on the arena's longer side, and the legend
     summary = json.loads((out / "summary.json").read_text())
     assert summary["arena"] and summary["goal"] == "not reached" and summary["steps"] == 40
 
@@ -85,4 +90,4 @@ def test_a_second_run_into_the_same_out_leaves_only_its_own_files(controller_fil
     status, _, err = run_controller(controller_file(DRIVE, name="second.py"), "--world", world("thick_arena.xml"),
                                     "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["notes.txt", "summary.json", "trace.csv"]
+    assert sorted(os.listdir(out)) == ["notes.txt", "summary.json", "trace.csv", "truth.png"]
