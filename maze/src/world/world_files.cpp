@@ -75,8 +75,7 @@ common::SourceLocation location_of(std::string_view text, std::size_t offset, co
   return common::SourceLocation{file, line, static_cast<int>(column)};
 }
 
-}  // namespace
-
+// "text map", "num", "XML", "Webots .wbt", ".maz", "room".
 std::string format_name(Format format) {
   switch (format) {
     case Format::text_map: return "text map";
@@ -88,6 +87,9 @@ std::string format_name(Format format) {
   }
   return "";
 }
+
+}  // namespace
+
 
 Format detect_format(std::string_view text, const std::string &file) {
   if (text.empty()) throw common::InputError(common::SourceLocation{file, 0, 0}, "the file is empty; expected a maze");

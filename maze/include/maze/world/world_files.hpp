@@ -15,9 +15,6 @@ namespace maze {
 // room: an arena's plain format (room_format.hpp).
 enum class Format { text_map, num, xml, wbt, maz, room };
 
-// "text map", "num", "XML", "Webots .wbt", ".maz", "room".
-std::string format_name(Format format);
-
 // The input format by content: '<' first (after blanks) is XML, 'o' or '+' first a text map,
 // a digit first a num file, a room statement first (after blank and '#' comment lines) a room
 // file. Throws common::InputError when it is none of these.
