@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 
 #include "png_reader.hpp"
 #include "app/report/files_recorder.hpp"
+#include "app/report/output_dir.hpp"
 #include "app/batch/batch.hpp"
 #include "app/report/outputs.hpp"
 #include "app/run/run.hpp"
@@ -172,6 +174,49 @@ TEST_CASE("run --out writes the ROS map pair, PNG, JSON and CSV with the run's c
   // Nothing but the seven files (no temporaries).
   CHECK(fs::exists(dir.path / "out" / "replay.html"));
   CHECK(std::distance(fs::directory_iterator(dir.path / "out"), fs::directory_iterator()) == 7);
+}
+
+TEST_CASE("an output folder writes only the names it checked against the inputs, a folder's files in it") {
+  const TempDir dir;
+  app::OutputDir out(dir.path.string(), {}, {"marks.txt"});
+  CHECK(fs::is_directory(dir.path));
+  out.write("marks.txt", "marks\n");
+  out.write("snapshots/t5s.png", "png");
+  CHECK_THROWS_AS(out.write("notes.txt", "x"), std::logic_error);
+  CHECK_THROWS_AS(out.write("other/01.png", "x"), std::logic_error);
+  CHECK(read_all((dir.path / "marks.txt").string()) == "marks\n");
+  CHECK(read_all((dir.path / "snapshots" / "t5s.png").string()) == "png");
+  CHECK_FALSE(fs::exists(dir.path / "notes.txt"));
+  CHECK_FALSE(fs::exists(dir.path / "other"));
+}
+
+TEST_CASE("an output folder refuses a kind's own file that is an input, before writing anything") {
+  const TempDir dir;
+  fs::create_directories(dir.path);
+  const std::string program = (dir.path / "marks.txt").string();
+  common::write_file_atomically(program, "#!/bin/sh\n");
+  CHECK_THROWS_WITH_AS(app::OutputDir(dir.path.string(), {{"the program", program}}, {"marks.txt"}),
+                       ("--out " + program + " is also an input (the program " + program + "): refusing to overwrite it")
+                           .c_str(),
+                       common::InputError);
+  CHECK(read_all(program) == "#!/bin/sh\n");
+}
+
+TEST_CASE("finishing an output folder removes the core files an earlier run left and this one did not write") {
+  const TempDir dir;
+  fs::create_directories(dir.path / "snapshots");
+  for (const char *stale : {"replay.html", "map.svg", "snapshots/01.png"}) {
+    common::write_file_atomically((dir.path / stale).string(), "stale");
+  }
+  common::write_file_atomically((dir.path / "notes.txt").string(), "the user's");
+  app::OutputDir out(dir.path.string(), {});
+  out.write("summary.json", "{}\n");
+  out.finish();
+  CHECK(fs::exists(dir.path / "summary.json"));
+  CHECK_FALSE(fs::exists(dir.path / "replay.html"));
+  CHECK_FALSE(fs::exists(dir.path / "map.svg"));
+  CHECK_FALSE(fs::exists(dir.path / "snapshots"));
+  CHECK(read_all((dir.path / "notes.txt").string()) == "the user's");
 }
 
 TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -237,6 +238,20 @@ TEST_CASE("room --out: a world file named like an output of every run (truth.png
   CHECK_THROWS_WITH_AS(test_cli::run({"room", world.string(), "--quiet", "--out", dir.path.string()}),
                        doctest::Contains("is also an input"), common::InputError);
   CHECK(test_png::read_all(world) == before);
+}
+
+TEST_CASE("room --out: a core file an earlier run left and this one did not write is removed, the user's kept") {
+  const test_cli::TempDir dir("room_out_stale");
+  std::filesystem::create_directories(dir.path);
+  for (const char *name : {"map.svg", "plan.csv", "notes.txt"}) {
+    std::ofstream(dir.path / name) << "earlier\n";
+  }
+  REQUIRE(test_cli::run({"room", std::string(WORLDS_DIR) + "/ir_room.room", "--quiet", "--out", dir.path.string()})
+              .status == 0);
+  CHECK_FALSE(std::filesystem::exists(dir.path / "map.svg"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "plan.csv"));
+  CHECK(test_png::read_all(dir.path / "notes.txt") == "earlier\n");
+  CHECK(std::filesystem::exists(dir.path / "logodds.csv"));
 }
 
 TEST_CASE("room --out: map.png, truth.png and wave.png are one size") {

@@ -1,15 +1,10 @@
 #include "app/mms/mms_outputs.hpp"
 
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
-
-#include "common/atomic_file.hpp"
-#include "common/interrupt.hpp"
 
 namespace app {
 namespace {
@@ -51,28 +46,19 @@ std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, c
   return j.dump(2) + "\n";
 }
 
-std::vector<std::string> mms_output_names() {
-  std::vector<std::string> names = run_output_names();
-  names.emplace_back("marks.txt");
-  return names;
-}
-
-std::vector<NamedInput> mms_inputs(const RunOptions &options, const MmsOptions &mms) {
-  std::vector<NamedInput> inputs = run_inputs(options);
+std::vector<NamedInput> program_inputs(const MmsOptions &mms) {
+  std::vector<NamedInput> inputs;
   for (std::size_t i = 0; i < mms.command.size(); ++i) {
     inputs.push_back({i == 0 ? "the program" : "the program's argument", mms.command[i]});
   }
   return inputs;
 }
 
-void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
-  const common::SignalsEndProcess signals_end_process;  // each file whole or absent
-  const std::filesystem::path d(dir);
-  common::write_file_atomically((d / "summary.json").string(), mms_summary_json(options, mms, run));
-  common::write_file_atomically((d / "marks.txt").string(), render_marks(run.mms.marks, false));
-  // summary.json was named with the run's files; it now holds mms's stats too.
-  const std::vector<std::string> mms_files{"marks.txt"};
-  fmt::print(stderr, "{}\n", wrote_line(dir, mms_files, mms_files.size(), 0));
+const std::vector<std::string> &mms_own_names() {
+  static const std::vector<std::string> names{"marks.txt"};
+  return names;
 }
+
+std::vector<NamedFile> mms_own_files(const MmsRun &run) { return {{"marks.txt", render_marks(run.mms.marks, false)}}; }
 
 }  // namespace app

@@ -1,8 +1,8 @@
 #pragma once
 // `mms --out DIR`: what an algorithm's run adds to the files every run writes (report/'s
 // FilesRecorder: map.pgm + map.yaml, map.png, truth.png, trace.csv, replay.html, snapshots):
-// summary.json holding every key of the mms summary block (format_mms_summary) too, and
-// marks.txt, the algorithm's marks as the terminal shows them, without colour.
+// its summary.json holds every key of the mms summary block (format_mms_summary) too, and
+// marks.txt the algorithm's marks as the terminal shows them, without colour.
 
 #include <string>
 #include <vector>
@@ -17,15 +17,13 @@ namespace app {
 // best-run values null until a run has finished).
 std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
 
-// The names write_mms_outputs may write in its dir (run --out's and marks.txt).
-std::vector<std::string> mms_output_names();
+// The files an mms run reads besides the world and --robot's file, for the output folder's
+// check: the program and each of its arguments (any may name a file it reads: `python3
+// DIR/algo.py`).
+std::vector<NamedInput> program_inputs(const MmsOptions &mms);
 
-// The files an mms run reads, for refuse_outputs_over_inputs: the world, --robot's file, the
-// program and each of its arguments (any may name a file it reads: `python3 DIR/algo.py`).
-std::vector<NamedInput> mms_inputs(const RunOptions &options, const MmsOptions &mms);
-
-// Writes summary.json (replacing the recorder's) and marks.txt into dir, which the recorder
-// prepared and filled.
-void write_mms_outputs(const std::string &dir, const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
+// The files an mms run adds to the run's: marks.txt.
+const std::vector<std::string> &mms_own_names();
+std::vector<NamedFile> mms_own_files(const MmsRun &run);
 
 }  // namespace app

@@ -270,11 +270,9 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
 
   const std::string &out_dir = options.output.out_dir;
-  std::optional<FilesRecorder> recorder;  // the files every kind of run writes
+  std::optional<FilesRecorder> recorder;  // the files every kind of run writes, and marks.txt
   if (!out_dir.empty()) {
-    // The program's files and marks.txt too, before the recorder prepares the folder.
-    refuse_outputs_over_inputs(out_dir, mms_output_names(), mms_inputs(options, mms));
-    recorder.emplace();
+    recorder.emplace(program_inputs(mms), mms_own_names());
     recorder->start(RunStart{options, truth, simulation.robot(), controller_opts, style.initial_log_odds});
   }
   robot::CommandController controller(simulation.robot(), controller_opts);
@@ -302,8 +300,8 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   std::exception_ptr no_space;
   if (recorder) {
     try {
+      recorder->add_own_files(mms_summary_json(options, mms, run), mms_own_files(run));
       recorder->finish(RunEnd{options, truth, run.summary, result, model, learned_sides(result, style)});
-      write_mms_outputs(out_dir, options, mms, run);
     } catch (const common::NoSpaceError &) {
       no_space = std::current_exception();  // said after the summary, which the user still gets
     }

@@ -3,14 +3,17 @@
 #include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
 #include "app/report/truth_picture.hpp"
-#include "common/interrupt.hpp"
 
 namespace app {
 
+FilesRecorder::FilesRecorder(std::vector<NamedInput> program_inputs, std::vector<std::string> own_names)
+    : program_inputs_(std::move(program_inputs)), own_names_(std::move(own_names)) {}
+
 void FilesRecorder::start(const RunStart &start) {
   const std::string &dir = start.options.output.out_dir;
-  prepare_output_dir(dir);
-  refuse_outputs_over_inputs(dir, run_output_names(), run_inputs(start.options));
+  std::vector<NamedInput> inputs = run_inputs(start.options);
+  inputs.insert(inputs.end(), program_inputs_.begin(), program_inputs_.end());
+  dir_.emplace(dir, inputs, own_names_);
   if (start.options.output.trace) {
     trace_.emplace(dir, start.robot, start.controller, trace_every_step(start.options));
   }
@@ -32,15 +35,20 @@ void FilesRecorder::on_move(const robot::MoveReport &move) {
   history_->arrived(move.step, move.cell, move.heading);
 }
 
+void FilesRecorder::add_own_files(std::string summary_json, std::vector<NamedFile> files) {
+  own_summary_json_ = std::move(summary_json);
+  own_files_ = std::move(files);
+}
+
 void FilesRecorder::finish(const RunEnd &end) {
   if (trace_) trace_->finish();
   RunFiles files{&end.result.grid, &end.model, &end.result.path, trace_ ? &trace_->file() : nullptr, {},
                  &end.truth, &end.result.visits, end.learned, history_ ? &*history_ : nullptr,
-                 landmark_marks(end.truth)};
+                 landmark_marks(end.truth), own_summary_json_};
   for (const maze::Cell goal : end.truth.goals()) files.goals.push_back({goal.x, goal.y});
-  // From here a stop signal ends the process: each file whole or absent, none half-written.
-  const common::SignalsEndProcess signals_end_process;
-  write_outputs(end.options.output.out_dir, end.options, end.summary, files);
+  write_outputs(*dir_, end.options, end.summary, files);
+  for (const NamedFile &file : own_files_) dir_->write(file.name, file.bytes);
+  dir_->finish();
 }
 
 RunSummary run_and_write(const RunOptions &options, std::ostream &out, const RunControls &controls) {

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -160,6 +161,61 @@ void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::s
 
 void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written) {
   remove_stale_files(fs::path(dir), written);
+}
+
+std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
+                       std::size_t snapshot_files) {
+  std::vector<std::string> names(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot));
+  if (snapshot_files > 0) {
+    names.push_back(fmt::format("snapshots/ ({} files, {} to {})", snapshot_files,
+                                written[first_snapshot].substr(10), written[first_snapshot + snapshot_files - 1].substr(10)));
+  }
+  names.insert(names.end(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot + snapshot_files), written.end());
+  std::string line = "wrote " + (fs::path(dir) / "").string() + ":";
+  for (std::size_t i = 0; i < names.size(); ++i) line += (i == 0 ? " " : ", ") + names[i];
+  return line;
+}
+
+OutputDir::OutputDir(std::string dir, const std::vector<NamedInput> &inputs, const std::vector<std::string> &own_names)
+    : dir_(std::move(dir)), names_(run_output_names()) {
+  names_.insert(names_.end(), own_names.begin(), own_names.end());
+  prepare_output_dir(dir_);
+  refuse_outputs_over_inputs(dir_, names_, inputs);
+}
+
+void OutputDir::begin(const std::string &name) {
+  const fs::path relative(name);
+  const std::string folder = relative.has_parent_path() ? relative.parent_path().string() + "/" : name;
+  if (std::find(names_.begin(), names_.end(), folder) == names_.end()) {
+    throw std::logic_error(fmt::format("--out {}: {} is not among the names checked against the inputs", dir_, name));
+  }
+  if (!writing_) writing_.emplace();
+  if (!relative.has_parent_path()) return;
+  std::error_code ec;
+  fs::create_directory(fs::path(dir_) / relative.parent_path(), ec);
+  if (ec) refuse_out_dir(dir_, fmt::format("cannot create {}: {}", folder, ec.message()));
+}
+
+void OutputDir::write(const std::string &name, std::string_view bytes) {
+  begin(name);
+  common::write_file_atomically((fs::path(dir_) / name).string(), bytes);
+  written_.push_back(name);
+}
+
+void OutputDir::commit(const std::string &name, common::OutputFile &file) {
+  begin(name);
+  file.commit();
+  written_.push_back(name);
+}
+
+void OutputDir::finish() {
+  remove_stale_outputs(dir_, written_);
+  const auto is_snapshot = [](const std::string &name) { return name.starts_with("snapshots/"); };
+  const auto first = std::find_if(written_.begin(), written_.end(), is_snapshot);
+  const auto end = std::find_if_not(first, written_.end(), is_snapshot);
+  fmt::print(stderr, "{}\n", wrote_line(dir_, written_, static_cast<std::size_t>(first - written_.begin()),
+                                        static_cast<std::size_t>(end - first)));
+  writing_.reset();
 }
 
 void refuse_out_dir(const std::string &dir, const std::string &reason) {

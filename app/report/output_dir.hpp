@@ -1,10 +1,15 @@
 #pragma once
-// The directory of `run --out DIR`: made ready before the run, checked against the run's
-// inputs, and after writing rid of what an earlier run left there (app/report/outputs.hpp writes
-// the files).
+// The directory of `--out DIR`: made ready before the run, checked against the run's inputs,
+// and after writing rid of what an earlier run left there. OutputDir is the one writer of a
+// run's files, whatever its kind (app/report/outputs.hpp makes a maze run's files).
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "common/atomic_file.hpp"
+#include "common/interrupt.hpp"
 
 namespace app {
 
@@ -40,5 +45,53 @@ void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::s
 // write_outputs() writes (map.pgm ... plan.csv, snapshots/NN.png, snapshots/ when that
 // empties it), and only regular files and links; nothing else in DIR is touched.
 void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written);
+
+// "wrote DIR/: map.pgm, map.yaml, ..., snapshots/ (3 files, 01.png to 03.png), ...": the
+// names in `written` (relative to dir), the snapshot_files from first_snapshot on as one.
+std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
+                       std::size_t snapshot_files);
+
+// A file of a run's DIR: its name there ("summary.json", "snapshots/t15s.png") and its bytes.
+struct NamedFile {
+  std::string name;
+  std::string bytes;
+};
+
+// The --out DIR of one run of any kind (a maze run, a room run, an mms program's run): the one
+// writer of its files, the core ones (run_output_names: summary.json, trace.csv, map.pgm +
+// map.yaml, map.png, truth.png, replay.html, snapshots/...) and what the kind adds
+// (marks.txt, logodds.csv, ...).
+//   - Made ready once, before the run: prepare_output_dir, then refused (common::InputError)
+//     when a file it may write (the core names and `own_names`) is one of `inputs`.
+//   - Each file is written atomically under a name so declared (another name is a
+//     std::logic_error: what is written is what was checked against the inputs); a name in a
+//     folder ("snapshots/01.png") creates the folder. A full disk throws common::NoSpaceError.
+//   - From the first file written until finish(), a stop signal ends the process, each file
+//     whole or absent (common::SignalsEndProcess), even while the run's SignalsStopWork lives.
+//   - finish() removes what an earlier run left that this one did not write
+//     (remove_stale_outputs) and names the files written on stderr, one wrote_line().
+class OutputDir {
+ public:
+  OutputDir(std::string dir, const std::vector<NamedInput> &inputs, const std::vector<std::string> &own_names = {});
+  OutputDir(const OutputDir &) = delete;
+  OutputDir &operator=(const OutputDir &) = delete;
+
+  const std::string &path() const { return dir_; }
+  // DIR/name, written atomically.
+  void write(const std::string &name, std::string_view bytes);
+  // A file written during the run (trace.csv as the steps come): its temporary renamed into place.
+  void commit(const std::string &name, common::OutputFile &file);
+  void finish();
+
+ private:
+  // Checks that `name` was declared, creates its folder, and from the first file on lets a
+  // stop signal end the process.
+  void begin(const std::string &name);
+
+  std::string dir_;
+  std::vector<std::string> names_;  // what it may write; "snapshots/" every file of that folder
+  std::vector<std::string> written_;
+  std::optional<common::SignalsEndProcess> writing_;
+};
 
 }  // namespace app

@@ -187,11 +187,8 @@ void append_trace_row(std::string &csv, const robot::StepReport &step, double x_
 
 namespace {
 
-void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
-                     const PageFrame &page, std::vector<std::string> &written) {
-  std::error_code ec;
-  fs::create_directory(dir, ec);
-  if (ec) refuse_out_dir(options.output.out_dir, fmt::format("cannot create snapshots/: {}", ec.message()));
+void write_snapshots(OutputDir &out, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
+                     const PageFrame &page) {
   const MapTones tones = map_tones(options, *files.model);
   const int count = options.output.snapshots;
   const int digits = std::max(2, static_cast<int>(std::to_string(count).size()));
@@ -202,9 +199,8 @@ void write_snapshots(const fs::path &dir, const RunOptions &options, const RunSu
     const MapMarks marks{path, files.goals, {}, files.landmarks};
     const std::string caption = fmt::format("{}, step {}/{}", map_caption(options), steps[i], summary.steps);
     for (const PictureFormat format : options.output.picture_formats) {
-      const std::string name = fmt::format("{:0{}}.{}", i + 1, digits, to_string(format));
-      common::write_file_atomically((dir / name).string(), png_file(grid, tones, marks, caption, format, page));
-      written.push_back("snapshots/" + name);
+      const std::string name = fmt::format("snapshots/{:0{}}.{}", i + 1, digits, to_string(format));
+      out.write(name, png_file(grid, tones, marks, caption, format, page));
     }
   }
 }
@@ -215,8 +211,7 @@ std::size_t subcells_of(const mapping::GridGeometry &g) {
 
 bool replay_fits(const mapping::GridGeometry &g) { return subcells_of(g) <= kReplayMaxSubcells; }
 
-void write_replay(const fs::path &dir, const RunOptions &options, const RunSummary &summary, const RunFiles &files,
-                  std::vector<std::string> &written) {
+void write_replay(OutputDir &out, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
   if (!options.output.replay || files.history == nullptr || !replay_fits(files.grid->geometry())) return;
   const std::optional<Replay> replay = replay_file(options, summary, files);
   if (!replay) {
@@ -224,14 +219,13 @@ void write_replay(const fs::path &dir, const RunOptions &options, const RunSumma
                kReplayMaxBytes >> 20);
     return;
   }
-  common::write_file_atomically((dir / "replay.html").string(), replay->html);
-  written.push_back("replay.html");
+  out.write("replay.html", replay->html);
 }
 
 // --plan-to / plan: plan.png (the learned map with the planned path) and plan.csv (its
 // sub-cells in order, with their centres in metres).
-void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummary &plan, const RunFiles &files,
-                const PageFrame &page, std::vector<std::string> &written) {
+void write_plan(OutputDir &out, const RunOptions &options, const PlanSummary &plan, const RunFiles &files,
+                const PageFrame &page) {
   std::string csv = "index,subcell_x,subcell_y,x_m,y_m\n";
   for (std::size_t i = 0; i < plan.path.size(); ++i) {
     const mapping::Point p = files.grid->centre_of(plan.path[i]);
@@ -240,32 +234,16 @@ void write_plan(const fs::path &dir, const RunOptions &options, const PlanSummar
   MapMarks marks{{}, files.goals, plan.path, files.landmarks};
   const std::string caption = fmt::format("{}, plan to ({},{})", map_caption(options), plan.to.x, plan.to.y);
   for (const PictureFormat format : options.output.picture_formats) {
-    const std::string name = fmt::format("plan.{}", to_string(format));
-    common::write_file_atomically((dir / name).string(),
-                                  png_file(*files.grid, map_tones(options, *files.model), marks, caption, format, page));
-    written.push_back(name);
+    out.write(fmt::format("plan.{}", to_string(format)),
+              png_file(*files.grid, map_tones(options, *files.model), marks, caption, format, page));
   }
-  common::write_file_atomically((dir / "plan.csv").string(), csv);
-  written.emplace_back("plan.csv");
+  out.write("plan.csv", csv);
 }
 
 }  // namespace
 
 std::vector<NamedInput> run_inputs(const RunOptions &options) {
   return {{"the world", options.world}, {"--robot", options.robot}};
-}
-
-std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
-                       std::size_t snapshot_files) {
-  std::vector<std::string> names(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot));
-  if (snapshot_files > 0) {
-    names.push_back(fmt::format("snapshots/ ({} files, {} to {})", snapshot_files,
-                                written[first_snapshot].substr(10), written[first_snapshot + snapshot_files - 1].substr(10)));
-  }
-  names.insert(names.end(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot + snapshot_files), written.end());
-  std::string line = "wrote " + (fs::path(dir) / "").string() + ":";
-  for (std::size_t i = 0; i < names.size(); ++i) line += (i == 0 ? " " : ", ") + names[i];
-  return line;
 }
 
 bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geometry) {
@@ -290,41 +268,23 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   return replay_html(input);
 }
 
-void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
-                   const RunFiles &files) {
-  const fs::path d(dir);
-  std::vector<std::string> written{"map.pgm", "map.yaml"};
+void write_outputs(OutputDir &out, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
   const auto initial = static_cast<float>(files.model->prior_log_odds());
-  common::write_file_atomically((d / "map.pgm").string(), pgm_file(*files.grid, initial));
-  common::write_file_atomically((d / "map.yaml").string(), map_yaml(files.grid->geometry(), "map.pgm"));
+  out.write("map.pgm", pgm_file(*files.grid, initial));
+  out.write("map.yaml", map_yaml(files.grid->geometry(), "map.pgm"));
   const MapTones tones = map_tones(options, *files.model);
   const PageFrame page = run_page(options, files, summary.steps);
   for (const PictureFormat format : options.output.picture_formats) {
-    const std::string map = fmt::format("map.{}", to_string(format));
-    const std::string truth = fmt::format("truth.{}", to_string(format));
-    common::write_file_atomically(
-        (d / map).string(),
-        png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options), format,
-                 page));
-    common::write_file_atomically((d / truth).string(), truth_png_file(options, files, format, page));
-    written.push_back(map);
-    written.push_back(truth);
+    out.write(fmt::format("map.{}", to_string(format)),
+              png_file(*files.grid, tones, MapMarks{*files.path, files.goals, {}, files.landmarks}, map_caption(options),
+                       format, page));
+    out.write(fmt::format("truth.{}", to_string(format)), truth_png_file(options, files, format, page));
   }
-  common::write_file_atomically((d / "summary.json").string(), summary_json(options, summary));
-  written.emplace_back("summary.json");
-  if (files.trace != nullptr) {
-    files.trace->commit();
-    written.emplace_back("trace.csv");
-  }
-  const std::size_t before_snapshots = written.size();
-  if (options.output.snapshots > 0 && files.history != nullptr) {
-    write_snapshots(d / "snapshots", options, summary, files, page, written);
-  }
-  const std::size_t snapshot_files = written.size() - before_snapshots;
-  write_replay(d, options, summary, files, written);
-  if (summary.plan && summary.plan->found) write_plan(d, options, *summary.plan, files, page, written);
-  remove_stale_outputs(dir, written);
-  fmt::print(stderr, "{}\n", wrote_line(dir, written, before_snapshots, snapshot_files));
+  out.write("summary.json", files.summary_json ? *files.summary_json : summary_json(options, summary));
+  if (files.trace != nullptr) out.commit("trace.csv", *files.trace);
+  if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(out, options, summary, files, page);
+  write_replay(out, options, summary, files);
+  if (summary.plan && summary.plan->found) write_plan(out, options, *summary.plan, files, page);
 }
 
 }  // namespace app

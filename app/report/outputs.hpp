@@ -105,6 +105,9 @@ struct RunFiles {
   std::function<LearnedSide(maze::Cell, maze::Side)> learned;
   const GridHistory *history = nullptr;  // --snapshots, replay.html: the run as it went
   std::vector<LandmarkMark> landmarks;   // the world's landmarks, drawn on the pictures
+  // summary.json's text when the kind of run writes its own (mms: with the program's
+  // stats); else summary_json(options, summary).
+  std::optional<std::string> summary_json;
 };
 
 // Whether a run with --out records a GridHistory: for --snapshots, or for replay.html when
@@ -123,21 +126,12 @@ std::string truth_png_file(const RunOptions &options, const RunFiles &files, Pic
 // font, one scale, so that they can be flipped between. `steps` is the run's last step.
 PageFrame run_page(const RunOptions &options, const RunFiles &files, std::int64_t steps);
 
-// "wrote DIR/: map.pgm, map.yaml, ..., snapshots/ (3 files, 01.png to 03.png), ...": the
-// names in `written` (relative to dir), the snapshot_files from first_snapshot on as one.
-std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
-                       std::size_t snapshot_files);
-
 // The files a run reads, for refuse_outputs_over_inputs: the world and --robot's file.
 std::vector<NamedInput> run_inputs(const RunOptions &options);
 
-// Writes the files into dir (prepared by prepare_output_dir); then removes the files an
-// earlier run left there that this one did not write (of the names above only: trace.csv
-// after --no-trace, replay.html, plan.*, snapshots/NN.png beyond this run's N; nothing
-// else in DIR is touched), so that DIR holds one run's outputs. The pictures (map, truth,
-// snapshots, plan) are written in each of options.output.picture_formats. Names the files
-// written on stderr, one line ("wrote DIR/: map.pgm, map.yaml, ...").
-void write_outputs(const std::string &dir, const RunOptions &options, const RunSummary &summary,
-                   const RunFiles &files);
+// Writes the files into `out` (see above), in each of options.output.picture_formats for the
+// pictures (map, truth, snapshots, plan). The caller adds its kind's own files, if any, and
+// finishes `out` (which removes what an earlier run left and names the files on stderr).
+void write_outputs(OutputDir &out, const RunOptions &options, const RunSummary &summary, const RunFiles &files);
 
 }  // namespace app

@@ -4,15 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <sstream>
 
 #include <fmt/format.h>
 
-#include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
-#include "common/atomic_file.hpp"
 
 namespace app {
 namespace {
@@ -71,19 +68,21 @@ std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<s
   return out;
 }
 
-std::vector<std::string> room_output_names() {
-  std::vector<std::string> names = run_output_names();
-  names.insert(names.end(), {"logodds.csv", "thresholded.txt", "wave.png"});
+const std::vector<std::string> &room_own_names() {
+  static const std::vector<std::string> names{"logodds.csv", "thresholded.txt", "wave.png"};
   return names;
 }
 
-void write_room_outputs(const std::string &dir, const sensing::MetricMap &map, const std::string &trace,
-                        const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures) {
+std::string room_logodds_csv(const sensing::MetricMap &map) {
   std::ostringstream csv;
   for (int j = map.cells_y() - 1; j >= 0; --j) {
     for (int i = 0; i < map.cells_x(); ++i) csv << (i == 0 ? "" : ",") << fmt::format("{:.6f}", map.log_odds({i, j}));
     csv << '\n';
   }
+  return csv.str();
+}
+
+std::string room_pgm(const sensing::MetricMap &map) {
   std::string pgm = fmt::format("P5\n{} {}\n255\n", map.cells_x(), map.cells_y());
   const auto l0 = static_cast<float>(map.model().prior_log_odds());
   for (int j = map.cells_y() - 1; j >= 0; --j) {
@@ -91,18 +90,7 @@ void write_room_outputs(const std::string &dir, const sensing::MetricMap &map, c
       pgm += static_cast<char>(pgm_pixel(static_cast<float>(map.log_odds({i, j})), l0));
     }
   }
-  const std::filesystem::path d(dir);
-  common::write_file_atomically((d / "trace.csv").string(), trace);
-  common::write_file_atomically((d / "logodds.csv").string(), csv.str());
-  common::write_file_atomically((d / "thresholded.txt").string(), room_binary_map(map, threshold));
-  common::write_file_atomically((d / "map.pgm").string(), pgm);
-  common::write_file_atomically((d / "map.yaml").string(), map_yaml(map.geometry(), "map.pgm"));
-  for (const RoomFile &f : pictures) {
-    const std::filesystem::path path = d / f.name;
-    std::filesystem::create_directories(path.parent_path());
-    common::write_file_atomically(path.string(), f.bytes);
-  }
-  common::write_file_atomically((d / "summary.json").string(), summary_json);
+  return pgm;
 }
 
 }  // namespace app

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/room/room_run.hpp"
+#include "app/report/output_dir.hpp"
 #include "robot/metric_controller.hpp"
 #include "sensing/metric_map.hpp"
 #include "sensing/setups.hpp"
@@ -20,21 +21,13 @@ std::string room_ascii_map(const robot::MetricController &c, double threshold);
 std::string room_binary_map(const sensing::MetricMap &map, double threshold);
 // The wave's numbers, north row first, right-aligned; "" for an empty wave.
 std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<std::int32_t> &wave);
-// A file the run made, by its name in the output folder (e.g. "snapshots/t15s.png").
-struct RoomFile {
-  std::string name;
-  std::string bytes;
-};
+// The files a room run adds to the run's: logodds.csv, thresholded.txt, wave.png (and the
+// snapshots' NAME_wave.png).
+const std::vector<std::string> &room_own_names();
 
-// The names a room run may write in its --out dir: every run's (run_output_names: the core
-// files, summary.json, trace.csv, map.png, truth.png, replay.html, snapshots/...) and the
-// room's own, logodds.csv, thresholded.txt and wave.png; "snapshots/" stands for that
-// folder's files.
-std::vector<std::string> room_output_names();
-
-// Writes trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json and the
-// pictures (map.png, wave.png, snapshots/...) into dir, each atomically.
-void write_room_outputs(const std::string &dir, const sensing::MetricMap &map, const std::string &trace,
-                        const std::string &summary_json, double threshold, const std::vector<RoomFile> &pictures);
+// logodds.csv: every cell's log-odds to 6 decimals, comma-separated, north row first.
+std::string room_logodds_csv(const sensing::MetricMap &map);
+// map.pgm of the map: one pixel a cell, north up (pgm_pixel's tones).
+std::string room_pgm(const sensing::MetricMap &map);
 
 }  // namespace app

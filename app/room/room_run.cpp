@@ -201,28 +201,26 @@ class RoomLog {
     trace_ += '\n';
     while (next_time_ < times_.size() && c.time_s() >= times_[next_time_] - 1e-9) {
       snapshot(c, fmt::format("t = {:g} s", times_[next_time_]));
-      const std::string name = fmt::format("snapshots/t{:g}s", times_[next_time_]);
-      draw(c, name, name + "_wave");
+      keep(c, fmt::format("snapshots/t{:g}s", times_[next_time_]));
       ++next_time_;
     }
     while (next_step_ < steps_.size() && c.steps() >= steps_[next_step_]) {
       snapshot(c, fmt::format("step {}", steps_[next_step_]));
-      const std::string name = fmt::format("snapshots/step{}", steps_[next_step_]);
-      draw(c, name, name + "_wave");
+      keep(c, fmt::format("snapshots/step{}", steps_[next_step_]));
       ++next_step_;
     }
   }
 
-  // With --out: the map's picture now as MAP.png (and the wave's, when there is one, as
-  // WAVE.png), kept until the run's files are written.
-  void draw(const robot::MetricController &c, const std::string &map, const std::string &wave) {
-    if (options_.out_dir.empty()) return;
+  // The map's picture now as MAP.png (and the wave's, when there is one, as WAVE.png).
+  std::vector<NamedFile> pictures_now(const robot::MetricController &c, const std::string &map,
+                                      const std::string &wave) const {
     RoomPictureMarks marks = marks_;
     marks.when = fmt::format("step {}, {:.1f} s", c.steps(), c.time_s());
-    pictures_.push_back({map + ".png", room_map_picture(c, tones_, marks)});
+    std::vector<NamedFile> pictures{{map + ".png", room_map_picture(c, tones_, marks)}};
     if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
-      pictures_.push_back({wave + ".png", room_wave_picture(c, marks)});
+      pictures.push_back({wave + ".png", room_wave_picture(c, marks)});
     }
+    return pictures;
   }
 
   // The map now (and the wave), headed by `when`; nothing when quiet.
@@ -237,6 +235,12 @@ class RoomLog {
     out_ << '\n' << std::flush;  // seen as the run goes, also through a pipe or in a file
   }
 
+  // With --out: the snapshot NAME.png (and NAME_wave.png) now, kept until the run's files are written.
+  void keep(const robot::MetricController &c, const std::string &name) {
+    if (options_.out_dir.empty()) return;
+    for (NamedFile &picture : pictures_now(c, name, name + "_wave")) snapshots_.push_back(std::move(picture));
+  }
+
   // After the run: says of each snapshot it never reached that the run ended first.
   void say_missed(const RoomSummary &summary) {
     for (; next_time_ < times_.size(); ++next_time_) {
@@ -248,14 +252,14 @@ class RoomLog {
   }
 
   const std::string &trace() const { return trace_; }
-  const std::vector<RoomFile> &pictures() const { return pictures_; }
+  const std::vector<NamedFile> &snapshots() const { return snapshots_; }
 
  private:
   const RoomRunOptions &options_;
   double threshold_;
   const MapTones &tones_;
   RoomPictureMarks marks_;
-  std::vector<RoomFile> pictures_;  // (name in the output folder, bytes)
+  std::vector<NamedFile> snapshots_;  // with --out: snapshots/NAME.png and NAME_wave.png
   std::ostream &out_;
   std::vector<double> times_;  // sorted
   std::size_t next_time_ = 0;
@@ -324,6 +328,24 @@ void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c
       << room_binary_map(c.map(), threshold) << '\n';
 }
 
+// --out DIR's files: the core ones in the order every run writes them, then the room's own.
+void write_room_files(OutputDir &out, const robot::MetricController &c, const RoomLog &log, const NamedFile &truth_png,
+                      const std::optional<Replay> &replay, const Report &report, double threshold) {
+  const std::vector<NamedFile> last = log.pictures_now(c, "map", "wave");  // map.png, wave.png
+  out.write("map.pgm", room_pgm(c.map()));
+  out.write("map.yaml", map_yaml(c.map().geometry(), "map.pgm"));
+  out.write(last.front().name, last.front().bytes);
+  out.write(truth_png.name, truth_png.bytes);
+  out.write("summary.json", report_json(report).dump(2) + "\n");
+  out.write("trace.csv", log.trace());
+  for (const NamedFile &snapshot : log.snapshots()) out.write(snapshot.name, snapshot.bytes);
+  if (replay) out.write("replay.html", replay->html);
+  out.write("logodds.csv", room_logodds_csv(c.map()));
+  out.write("thresholded.txt", room_binary_map(c.map(), threshold));
+  for (std::size_t i = 1; i < last.size(); ++i) out.write(last[i].name, last[i].bytes);
+  out.finish();
+}
+
 }  // namespace
 
 int room_exit_status(const RoomSummary &s) {
@@ -358,10 +380,10 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const robot::ControllerOptions controller = room_controller_options(options, profile);
   const mapping::SensorModel model(options.sensor);
   sensing::MetricMap map(spec, model);
+  std::optional<OutputDir> files;
   if (!options.out_dir.empty()) {
-    prepare_output_dir(options.out_dir);
-    refuse_outputs_over_inputs(options.out_dir, room_output_names(),
-                               {{"the world", options.world}, {"--robot", options.robot}});
+    files.emplace(options.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
+                  room_own_names());
   }
   maze::sim::SimulationOptions sim = options.simulation;
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
@@ -374,7 +396,7 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const RoomPictureMarks marks = picture_marks(options, setup, room, arena, landmark_marks(arena));
   RoomLog log(options, threshold, tones, marks, out);
   std::optional<RoomReplay> replay;
-  if (!options.out_dir.empty()) replay.emplace(map, tones, ReplayPose{0, {start_pose.x_m, start_pose.y_m}, start_pose.yaw_rad});
+  if (files) replay.emplace(map, tones, ReplayPose{0, {start_pose.x_m, start_pose.y_m}, start_pose.yaw_rad});
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
                                           [&log, &replay](const robot::MetricController &c) {
                                           log.on_step(c);
@@ -396,16 +418,12 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const Report report = room_report(options, profile.name, setup, spec, summary);
   if (!options.quiet) out << '\n';
   out << format_summary(report);
-  if (!options.out_dir.empty()) {
-    log.draw(controller_loop, "map", "wave");
-    std::vector<RoomFile> files = log.pictures();
+  if (files) {
     const RoomTruthScores scores{report.text("cell_accuracy"), report.text("coverage")};
-    files.push_back({"truth.png", room_truth_picture(controller_loop, truth, threshold, marks, scores)});
+    const NamedFile truth_png{"truth.png", room_truth_picture(controller_loop, truth, threshold, marks, scores)};
     replay->finish(controller_loop);
-    if (std::optional<Replay> page = replay_html(replay->input(replay_text(options, marks, room, report)))) {
-      files.push_back({"replay.html", std::move(page->html)});
-    }
-    write_room_outputs(options.out_dir, map, log.trace(), report_json(report).dump(2) + "\n", threshold, files);
+    write_room_files(*files, controller_loop, log, truth_png, replay_html(replay->input(replay_text(options, marks, room, report))),
+                     report, threshold);
   }
   if (report_out != nullptr) *report_out = report;
   return summary;
