@@ -1,10 +1,11 @@
-// The room run's pictures (app/room/room_pictures.hpp): the wave's tones, and what
+// The room run's pictures (app/picture/metric_map_pictures.hpp): the wave's tones, and what
 // `room --out` draws: map.png, wave.png and a picture per snapshot, with their tones at known
 // cells; replay.html's frames and their size; an output over the world refused. About 2 s.
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,8 +16,9 @@
 
 #include "app/picture/map_picture.hpp"
 #include "app/picture/plain_grid_picture.hpp"
-#include "app/room/room_pictures.hpp"
-#include "app/room/room_run.hpp"
+#include "app/picture/metric_map_pictures.hpp"
+#include "app/report/metric_files_recorder.hpp"
+#include "app/run/metric_run.hpp"
 #include "maze/world/world.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
@@ -37,7 +39,7 @@ bool has_colour(const test_png::Png &png, app::Rgb c) {
 }
 
 // Where a room picture of a grid of cells_x x cells_y cells of cell_m from (x0, y0), walled
-// at its edge, puts its map (the page's layout: room_page's font follows the map's size).
+// at its edge, puts its map (the page's layout: metric_page's font follows the map's size).
 app::PlainGridFrame room_frame(int cells_x, int cells_y, double cell_m, double x0_m, double y0_m, int &band_px) {
   app::PlainGrid grid;
   grid.cells_x = cells_x;
@@ -332,7 +334,8 @@ TEST_CASE("room run in an arena with a supervisor's cylinder: a neutral grey dis
   o.quiet = true;
   o.out_dir = dir.path.string();
   std::ostringstream out;
-  app::run_room_in(arena, o, out);
+  app::MetricFilesRecorder recorder;
+  app::run_room_in(arena, o, out, std::chrono::steady_clock::now(), nullptr, nullptr, &recorder);
   int band = 0;
   const app::PlainGridFrame frame = room_frame(50, 30, 0.1, 0.0, 0.0, band);
   for (const char *name : {"map.png", "truth.png"}) {

@@ -1,4 +1,4 @@
-// The room run's report (app/room/room_report.hpp): one list of entries, rendered to the
+// The room run's report (app/run/metric_run_report.hpp): one list of entries, rendered to the
 // printed summary and to summary.json.
 
 #include <doctest/doctest.h>
@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/room/room_report.hpp"
+#include "app/run/metric_run_report.hpp"
 #include "app/run/report.hpp"
 
 namespace {
@@ -42,7 +42,7 @@ Made made() {
 TEST_CASE("room report: the summary block is the run's key: value lines, end: included, in order") {
   const Made m = made();
   const app::Report report =
-      app::room_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
+      app::metric_run_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
   CHECK(app::format_summary(report) ==
         "world: worlds/ir_room.room\n"
         "grid: 50 x 30 cells of 0.1 m over 0,5,0,3\n"
@@ -61,7 +61,7 @@ TEST_CASE("room report: the summary block is the run's key: value lines, end: in
 TEST_CASE("room report: summary.json has every entry in order, with the core keys of every kind of run") {
   const Made m = made();
   const app::Report report =
-      app::room_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
+      app::metric_run_report(m.options, "ir-fan", sensing::setup(sensing::ModelKind::pie), m.spec, m.summary);
   const nlohmann::ordered_json j = app::report_json(report);
   std::string keys;
   for (const auto &item : j.items()) keys += item.key() + " ";

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "app/room/room_run.hpp"
+#include "app/run/metric_run.hpp"
 #include "common/error.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/generate/arena_generator.hpp"

@@ -1,4 +1,4 @@
-// maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/room/room_run.hpp);
+// maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/run/metric_run.hpp);
 // its options are described in app/cli/room_options.hpp.
 
 #include <chrono>
@@ -18,7 +18,7 @@
 #include "app/cli/option_binding.hpp"
 #include "app/cli/room_options.hpp"
 #include "app/cli/run_cli.hpp"
-#include "app/room/room_run.hpp"
+#include "app/report/metric_files_recorder.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "app/cli/commands.hpp"
@@ -93,7 +93,7 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
     finish_options(*in, *cmd);
     const maze::World world = load_world_reporting(in->options.world, with_arena_overrides({}, in->boundary));
     const common::SignalsStopWork stop_signals;  // a signal ends the run at its next control step
-    const RoomSummary summary = run_room(world, in->options, std::cout, started, &common::interrupted);
+    const RoomSummary summary = run_room_and_write(world, in->options, std::cout, started, &common::interrupted);
     context.status = room_exit_status(summary);
   });
 }

@@ -5,7 +5,7 @@
 // that does nothing for the room run asked is warned about in the words `run` uses
 // ("warning: --goal has no effect without --strategy wavefront"), and the run goes on.
 //
-// The room's echo is its summary's own keys (app/room/room_report.hpp), so these fields have
+// The room's echo is its summary's own keys (app/run/metric_run_report.hpp), so these fields have
 // no `echo`; --start, --resolution, --boundary, --seed and --out are registered by their own
 // code (their arity or checks are shared with other commands).
 
@@ -15,7 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/room/room_run.hpp"
+#include "app/run/metric_run.hpp"
 #include "app/run/option_fields.hpp"
 #include "app/run/run_options.hpp"
 

@@ -1,15 +1,12 @@
-// The room run's outputs (app/room/room_outputs.hpp).
+// A run in metres' maps as text (app/run/metric_map_text.hpp).
 
-#include "app/room/room_outputs.hpp"
+#include "app/run/metric_map_text.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include <fmt/format.h>
-
-#include "app/report/outputs.hpp"
 
 namespace app {
 namespace {
@@ -22,7 +19,7 @@ char arrow_of(double yaw_rad) {
 
 }  // namespace
 
-std::string room_ascii_map(const robot::MetricController &c, double threshold) {
+std::string metric_ascii_map(const robot::MetricController &c, double threshold) {
   const sensing::MetricMap &map = c.map();
   std::vector<char> on_path(map.size(), 0);
   for (const std::size_t p : c.path()) on_path[p] = 1;
@@ -47,7 +44,7 @@ std::string room_ascii_map(const robot::MetricController &c, double threshold) {
   return out;
 }
 
-std::string room_binary_map(const sensing::MetricMap &map, double threshold) {
+std::string metric_binary_map(const sensing::MetricMap &map, double threshold) {
   std::string out;
   for (int j = map.cells_y() - 1; j >= 0; --j) {
     for (int i = 0; i < map.cells_x(); ++i) out += map.log_odds({i, j}) >= threshold ? '1' : '0';
@@ -56,7 +53,7 @@ std::string room_binary_map(const sensing::MetricMap &map, double threshold) {
   return out;
 }
 
-std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<std::int32_t> &wave) {
+std::string metric_wave_numbers(const sensing::MetricMap &map, const std::vector<std::int32_t> &wave) {
   if (wave.empty()) return "";
   const std::int32_t top = *std::max_element(wave.begin(), wave.end());
   const int width = static_cast<int>(fmt::format("{}", top).size()) + 1;
@@ -66,31 +63,6 @@ std::string room_wave_numbers(const sensing::MetricMap &map, const std::vector<s
     out += '\n';
   }
   return out;
-}
-
-const std::vector<std::string> &room_own_names() {
-  static const std::vector<std::string> names{"logodds.csv", "thresholded.txt", "wave.png"};
-  return names;
-}
-
-std::string room_logodds_csv(const sensing::MetricMap &map) {
-  std::ostringstream csv;
-  for (int j = map.cells_y() - 1; j >= 0; --j) {
-    for (int i = 0; i < map.cells_x(); ++i) csv << (i == 0 ? "" : ",") << fmt::format("{:.6f}", map.log_odds({i, j}));
-    csv << '\n';
-  }
-  return csv.str();
-}
-
-std::string room_pgm(const sensing::MetricMap &map) {
-  std::string pgm = fmt::format("P5\n{} {}\n255\n", map.cells_x(), map.cells_y());
-  const auto l0 = static_cast<float>(map.model().prior_log_odds());
-  for (int j = map.cells_y() - 1; j >= 0; --j) {
-    for (int i = 0; i < map.cells_x(); ++i) {
-      pgm += static_cast<char>(pgm_pixel(static_cast<float>(map.log_odds({i, j})), l0));
-    }
-  }
-  return pgm;
 }
 
 }  // namespace app

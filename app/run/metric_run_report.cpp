@@ -1,6 +1,6 @@
-// The room run's report (app/room/room_report.hpp).
+// The room run's report (app/run/metric_run_report.hpp).
 
-#include "app/room/room_report.hpp"
+#include "app/run/metric_run_report.hpp"
 
 #include <cmath>
 
@@ -70,7 +70,7 @@ void add_score(Report &e, const RoomSummary &s) {
 
 }  // namespace
 
-Report room_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
+Report metric_run_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
                    const sensing::MetricGridSpec &spec, const RoomSummary &summary) {
   Report e;
   e.both("world", options.world);

@@ -1,7 +1,7 @@
 #pragma once
 // The room run's pictures (app/picture's drawing and page layout, as the maze's map.png and
 // map-log's pictures), north up, one block a map cell, the axes in metres, every picture of a
-// run on one page size (room_page). On each: the world's boundary, solid all round, as a
+// run on one page size (metric_page). On each: the world's boundary, solid all round, as a
 // black wall outside it (a band round the grid: plain_grid_picture.hpp), and the world's
 // landmarks as discs of their colour (neutral grey where the world does not give it), ringed
 // in black, under the other marks.
@@ -36,7 +36,7 @@
 namespace app {
 
 // What both pictures mark besides the controller's own state.
-struct RoomPictureMarks {
+struct MetricPictureMarks {
   mapping::Point start;
   std::optional<mapping::Point> goal;
   std::optional<PlainGridBounds> boundary;  // the world's boundary (solid all round), within the map's extent
@@ -46,30 +46,30 @@ struct RoomPictureMarks {
 };
 
 // The map tones of a room run: the map's prior and the set-up's increments, --threshold.
-MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold);
+MapTones metric_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold);
 
 // The map as the controller holds it now: tones, trajectory, last plan, start, goal, robot.
-std::string room_map_picture(const robot::MetricController &c, const MapTones &tones, const RoomPictureMarks &marks,
+std::string metric_map_picture(const robot::MetricController &c, const MapTones &tones, const MetricPictureMarks &marks,
                              PictureFormat format = PictureFormat::png);
 
 // The wave the controller planned on last (non-empty), with the path and the robot.
-std::string room_wave_picture(const robot::MetricController &c, const RoomPictureMarks &marks,
+std::string metric_wave_picture(const robot::MetricController &c, const MetricPictureMarks &marks,
                               PictureFormat format = PictureFormat::png);
 
 // What the truth picture's legend prints: the summary's scores, as it words them.
-struct RoomTruthScores {
+struct MetricTruthScores {
   std::string cell_accuracy;  // "89.13% (1337 of 1500 cells right; ...)"
   std::string coverage;       // "98.56% (1229 of 1247 reachable free cells observed)"
 };
 
 // The map scored against `truth` (the same grid), cells at or above `threshold` occupied.
-std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
-                               const RoomPictureMarks &marks, const RoomTruthScores &scores,
+std::string metric_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
+                               const MetricPictureMarks &marks, const MetricTruthScores &scores,
                                PictureFormat format = PictureFormat::png);
 
 // The page every picture of a room run on this map is drawn on (map, wave, truth, their
 // snapshots): one size, one font and one scale, so that they can be flipped between.
-PageFrame room_page(const sensing::MetricMap &map, const RoomPictureMarks &marks);
+PageFrame metric_page(const sensing::MetricMap &map, const MetricPictureMarks &marks);
 
 // The tone of a wave number (plan/metric_wavefront.hpp's): `top` the largest in the wave.
 Rgb wave_tone(std::int32_t value, std::int32_t top);

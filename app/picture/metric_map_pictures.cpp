@@ -1,6 +1,6 @@
-// The room run's pictures (app/room/room_pictures.hpp).
+// The room run's pictures (app/picture/metric_map_pictures.hpp).
 
-#include "app/room/room_pictures.hpp"
+#include "app/picture/metric_map_pictures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +37,7 @@ Rgb truth_tone(const sensing::MetricMap &map, const maze::ArenaTruth &truth, dou
 
 // The map's cells as a plain grid, each in `tone_of(flat index)`.
 template <typename ToneOf>
-PlainGrid room_grid(const sensing::MetricMap &map, const RoomPictureMarks &marks, ToneOf tone_of) {
+PlainGrid room_grid(const sensing::MetricMap &map, const MetricPictureMarks &marks, ToneOf tone_of) {
   PlainGrid g;
   g.solid_boundary = marks.boundary;
   g.cells_x = map.cells_x();
@@ -63,7 +63,7 @@ std::vector<PointPx> plan_px(const robot::MetricController &c, const PlainGridFr
 
 double mark_px(const PlainGridFrame &frame) { return std::max(4.0, frame.cell_w_px * 0.8); }
 
-void draw_goal(Drawing &page, const PlainGridFrame &frame, const RoomPictureMarks &marks) {
+void draw_goal(Drawing &page, const PlainGridFrame &frame, const MetricPictureMarks &marks) {
   if (!marks.goal) return;
   const PointPx g = frame.at(marks.goal->x_m, marks.goal->y_m);
   const double side = mark_px(frame) * 1.5;
@@ -85,20 +85,20 @@ void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::MetricCo
 }
 
 // Under every other mark: the landmarks, each a disc of its radius.
-void draw_room_landmarks(Drawing &page, const PlainGridFrame &frame, const RoomPictureMarks &marks) {
+void draw_room_landmarks(Drawing &page, const PlainGridFrame &frame, const MetricPictureMarks &marks) {
   for (const LandmarkMark &l : marks.landmarks) {
     draw_landmark(page, l, frame.at(l.at.x_m, l.at.y_m), frame.cell_w_px / frame.cell_w_m);
   }
 }
 
 // The legend's items every room picture has after its own: the boundary's wall, the landmarks.
-void add_world_items(Figure &legend, const RoomPictureMarks &marks) {
+void add_world_items(Figure &legend, const MetricPictureMarks &marks) {
   if (marks.boundary) legend.items.push_back({Swatch::box, kBoundaryWallColour, "boundary wall"});
   for (LegendItem &item : landmark_items(marks.landmarks)) legend.items.push_back(std::move(item));
 }
 
 // The caption and, when the picture has one, the moment it shows.
-std::vector<std::string> caption_lines(const RoomPictureMarks &marks) {
+std::vector<std::string> caption_lines(const MetricPictureMarks &marks) {
   std::vector<std::string> lines{marks.caption};
   if (!marks.when.empty()) lines.push_back(marks.when);
   return lines;
@@ -107,7 +107,7 @@ std::vector<std::string> caption_lines(const RoomPictureMarks &marks) {
 // A score as the picture prints it: its percentage, without the counts in brackets.
 std::string percentage(const std::string &score) { return score.substr(0, score.find(" (")); }
 
-Figure map_legend(const RoomPictureMarks &marks, const MapTones &tones, bool has_plan) {
+Figure map_legend(const MetricPictureMarks &marks, const MapTones &tones, bool has_plan) {
   Figure legend;
   legend.lines = caption_lines(marks);
   legend.items = {{Swatch::line, kPathColour, "trajectory"},
@@ -120,7 +120,7 @@ Figure map_legend(const RoomPictureMarks &marks, const MapTones &tones, bool has
   return legend;
 }
 
-Figure truth_legend(const RoomPictureMarks &marks, const RoomTruthScores &scores) {
+Figure truth_legend(const MetricPictureMarks &marks, const MetricTruthScores &scores) {
   Figure legend;
   legend.lines = caption_lines(marks);
   legend.lines.push_back(fmt::format("cell_accuracy {}, coverage {}", percentage(scores.cell_accuracy),
@@ -136,7 +136,7 @@ Figure truth_legend(const RoomPictureMarks &marks, const RoomTruthScores &scores
   return legend;
 }
 
-Figure wave_legend(const RoomPictureMarks &marks, std::int32_t top, bool has_plan) {
+Figure wave_legend(const MetricPictureMarks &marks, std::int32_t top, bool has_plan) {
   Figure legend;
   legend.lines = caption_lines(marks);
   legend.lines.push_back(fmt::format("the wave's numbers: 1 blocked, 2 the goal, up to {} the farthest", top));
@@ -161,7 +161,7 @@ Figure wave_legend(const RoomPictureMarks &marks, std::int32_t top, bool has_pla
 
 }  // namespace
 
-MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold) {
+MapTones metric_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold) {
   MapTones tones;
   tones.initial_log_odds = static_cast<float>(map.model().prior_log_odds());
   tones.threshold = static_cast<float>(threshold);
@@ -170,7 +170,7 @@ MapTones room_map_tones(const sensing::MetricMap &map, const sensing::MarkProbab
   return tones;
 }
 
-std::string room_map_picture(const robot::MetricController &c, const MapTones &tones, const RoomPictureMarks &marks,
+std::string metric_map_picture(const robot::MetricController &c, const MapTones &tones, const MetricPictureMarks &marks,
                              PictureFormat format) {
   const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
@@ -186,12 +186,12 @@ std::string room_map_picture(const robot::MetricController &c, const MapTones &t
     draw_robot(page, frame, c);
   };
   return plain_grid_picture(g, map_legend(marks, tones, c.path().size() >= 2), overlay, format,
-                            room_page(map, marks))
+                            metric_page(map, marks))
       .encode();
 }
 
-std::string room_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
-                               const RoomPictureMarks &marks, const RoomTruthScores &scores, PictureFormat format) {
+std::string metric_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
+                               const MetricPictureMarks &marks, const MetricTruthScores &scores, PictureFormat format) {
   const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
@@ -203,7 +203,7 @@ std::string room_truth_picture(const robot::MetricController &c, const maze::Are
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
     draw_robot(page, frame, c);
   };
-  return plain_grid_picture(g, truth_legend(marks, scores), overlay, format, room_page(map, marks)).encode();
+  return plain_grid_picture(g, truth_legend(marks, scores), overlay, format, metric_page(map, marks)).encode();
 }
 
 Rgb wave_tone(std::int32_t value, std::int32_t top) {
@@ -219,7 +219,7 @@ Rgb wave_tone(std::int32_t value, std::int32_t top) {
   return Rgb{mix(kNearTone.r, kFarTone.r), mix(kNearTone.g, kFarTone.g), mix(kNearTone.b, kFarTone.b)};
 }
 
-std::string room_wave_picture(const robot::MetricController &c, const RoomPictureMarks &marks, PictureFormat format) {
+std::string metric_wave_picture(const robot::MetricController &c, const MetricPictureMarks &marks, PictureFormat format) {
   const std::vector<std::int32_t> &wave = c.wave();
   const std::int32_t top = wave.empty() ? plan::kWaveGoal : *std::max_element(wave.begin(), wave.end());
   const PlainGrid g = room_grid(c.map(), marks, [&](std::size_t n) { return wave_tone(wave[n], top); });
@@ -230,16 +230,16 @@ std::string room_wave_picture(const robot::MetricController &c, const RoomPictur
     draw_robot(page, frame, c);
   };
   return plain_grid_picture(g, wave_legend(marks, top, c.path().size() >= 2), overlay, format,
-                            room_page(c.map(), marks))
+                            metric_page(c.map(), marks))
       .encode();
 }
 
-PageFrame room_page(const sensing::MetricMap &map, const RoomPictureMarks &marks) {
+PageFrame metric_page(const sensing::MetricMap &map, const MetricPictureMarks &marks) {
   const PlainGrid g = room_grid(map, marks, [](std::size_t) { return kWhite; });
-  RoomPictureMarks widest = marks;
+  MetricPictureMarks widest = marks;
   widest.when = "step 9999999, 99999.9 s";
   widest.goal = mapping::Point{};
-  const RoomTruthScores scores{"100.00%", "100.00%"};
+  const MetricTruthScores scores{"100.00%", "100.00%"};
   const auto most = static_cast<std::int32_t>(map.size()) + plan::kWaveGoal;
   // The map's legend with the default tones: its colour bar is as wide whatever the set-up.
   return shared_page({plain_grid_figure(g, map_legend(widest, MapTones{}, true)),

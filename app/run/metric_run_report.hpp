@@ -13,14 +13,14 @@
 
 #include <string>
 
-#include "app/room/room_run.hpp"
+#include "app/run/metric_run.hpp"
 #include "app/run/report.hpp"
 #include "sensing/metric_map.hpp"
 #include "sensing/setups.hpp"
 
 namespace app {
 
-Report room_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
+Report metric_run_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
                    const sensing::MetricGridSpec &spec, const RoomSummary &summary);
 
 }  // namespace app

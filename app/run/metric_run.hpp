@@ -4,9 +4,9 @@
 // the ASCII map (W occupied, . free, blank never observed, * the last planned path, the
 // robot's arrow), snapshots at simulated times and at control steps, the wavefront's numbers,
 // the trajectory, the thresholded binary map and the summary, which scores the map against
-// the truth rasterised at the map's resolution. --out DIR writes trace.csv (map-log reads it
-// back to the same grid for the bump and depth set-ups), logodds.csv, map.pgm + map.yaml and
-// summary.json.
+// the truth rasterised at the map's resolution. The run itself writes no file: a
+// MetricRunRecorder keeps the record (report/'s MetricFilesRecorder writes --out DIR:
+// app/report/metric_files_recorder.hpp), as a RunRecorder does for a run on the cell lattice.
 //
 // The truth of a cell is its centre: inside a solid (a wall, an obstacle) or outside the
 // world is occupied, else free; the reachable free cells are the free cells 4-connected to
@@ -22,6 +22,7 @@
 #include "app/run/report.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/world/arena.hpp"
+#include "maze/world/arena_truth.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/metric_controller.hpp"
@@ -50,10 +51,43 @@ struct RoomRunOptions {
   std::optional<double> threshold;            // log-odds drawn W at or above (default 0; bump/depth -0.5)
   std::vector<double> snapshots_at_s;
   std::vector<std::int64_t> snapshot_steps;
-  std::string out_dir;
+  std::string out_dir;                        // --out DIR: MetricFilesRecorder writes it (run_room_and_write)
   bool quiet = false;                         // no maps, the summary only
   maze::sim::SimulationOptions simulation;
   std::optional<std::int64_t> max_steps;
+};
+
+// The run as it starts: everything checked, the map empty, nothing moved.
+struct MetricRunStart {
+  const RoomRunOptions &options;
+  const sensing::SetUp &setup;
+  const robot::MetricOptions &room;  // the strategy's options as the run uses them
+  const maze::Arena &arena;
+  const sensing::MetricMap &map;     // the map the run fills; outlives the recorder's use
+  const maze::ArenaPose &start;
+  double threshold = 0.0;            // log-odds drawn occupied at or above
+};
+
+// The run as it ended, scored and summarised.
+struct MetricRunEnd {
+  const robot::MetricController &controller;
+  const maze::ArenaTruth &truth;  // at the map's resolution
+  const Report &report;
+};
+
+// What keeps a record of a run in metres as it goes: told once before the robot moves, after
+// every control step, at each snapshot the run prints, and once at the end.
+class MetricRunRecorder {
+ public:
+  virtual ~MetricRunRecorder() = default;
+  // Throws common::InputError when the record cannot be kept (an output folder that cannot
+  // be made, an output that is one of the inputs), before the robot moves.
+  virtual void start(const MetricRunStart &start) = 0;
+  virtual void on_step(const robot::MetricController &c) = 0;
+  // `name`: "snapshots/t15s" (--snapshot-at), "snapshots/step50" (--snapshot-steps).
+  virtual void on_snapshot(const robot::MetricController &c, const std::string &name) = 0;
+  // After the summary is printed. Throws common::NoSpaceError when the disk is full.
+  virtual void finish(const MetricRunEnd &end) = 0;
 };
 
 struct RoomSummary {
@@ -84,14 +118,17 @@ struct RoomSummary {
 // before anything runs), runs, prints on `out`. `interrupted`, polled every control step,
 // ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
 // `report`, when not null, receives the run's report (the summary block's and summary.json's
-// entries: a batch row's columns).
+// entries: a batch row's columns). `recorder`, when not null, is told the run as it goes
+// (options.out_dir is the recorder's: the run itself writes no file).
 RoomSummary run_room(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                     robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
+                     robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr,
+                     MetricRunRecorder *recorder = nullptr);
 // The same in an arena given in code.
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                        robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
+                        robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr,
+                        MetricRunRecorder *recorder = nullptr);
 // 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.
 int room_exit_status(const RoomSummary &summary);

@@ -29,7 +29,7 @@
 namespace app {
 
 // What the page shows besides the frames.
-struct RoomReplayText {
+struct MetricReplayText {
   std::string title;    // the world
   std::string caption;  // strategy and set-up
   std::optional<mapping::Point> goal;
@@ -38,10 +38,10 @@ struct RoomReplayText {
   std::vector<std::pair<std::string, std::string>> summary;  // the printed summary's lines
 };
 
-class RoomReplay {
+class MetricReplayRecorder {
  public:
   // The map must outlive the replay; `start` is the robot's pose before the first step.
-  RoomReplay(const sensing::MetricMap &map, const MapTones &tones, const ReplayPose &start);
+  MetricReplayRecorder(const sensing::MetricMap &map, const MapTones &tones, const ReplayPose &start);
 
   // After each control step: a frame when its step is due.
   void on_step(const robot::MetricController &c);
@@ -49,7 +49,7 @@ class RoomReplay {
   void finish(const robot::MetricController &c);
 
   // The page's input: the frames recorded, and `text`.
-  ReplayInput input(const RoomReplayText &text) const;
+  ReplayInput input(const MetricReplayText &text) const;
   std::int64_t steps_per_frame() const { return steps_per_frame_; }
 
  private:

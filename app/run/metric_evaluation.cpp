@@ -1,12 +1,12 @@
-// A room run's score (app/room/room_score.hpp).
+// A room run's score (app/run/metric_evaluation.hpp).
 
-#include "app/room/room_score.hpp"
+#include "app/run/metric_evaluation.hpp"
 
 #include <fmt/format.h>
 
 namespace app {
 
-std::size_t score_room_map(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold,
+std::size_t score_metric_map(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold,
                            RoomSummary &summary) {
   summary.cells_total = map.size();
   for (std::size_t n = 0; n < map.size(); ++n) {

@@ -1,6 +1,6 @@
-// A robot in a room, in the embedded simulator (app/room/room_run.hpp).
+// A robot in a room, in the embedded simulator (app/run/metric_run.hpp).
 
-#include "app/room/room_run.hpp"
+#include "app/run/metric_run.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,20 +8,14 @@
 #include <cmath>
 #include <functional>
 #include <variant>
-#include <filesystem>
 #include <numbers>
 #include <ostream>
 
 #include <fmt/format.h>
 
-#include "app/report/output_dir.hpp"
-#include "app/report/outputs.hpp"
-#include "app/report/truth_picture.hpp"
-#include "app/room/room_outputs.hpp"
-#include "app/room/room_pictures.hpp"
-#include "app/room/room_replay.hpp"
-#include "app/room/room_report.hpp"
-#include "app/room/room_score.hpp"
+#include "app/run/metric_map_text.hpp"
+#include "app/run/metric_run_report.hpp"
+#include "app/run/metric_evaluation.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
@@ -168,59 +162,29 @@ maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::MetricGr
                                maze::TruthClearance::to_occupied_cells);
 }
 
-// What the run prints and records as it goes: trace.csv's text, and the snapshots (the map,
-// with the wave for wavefront) at the asked simulated times and control steps: printed unless
-// quiet, drawn (snapshots/NAME.png, NAME_wave.png) with --out.
+// What the run prints as it goes: the snapshots (the map, with the wave for wavefront) at the
+// asked simulated times and control steps, printed unless quiet and told to the recorder.
 class RoomLog {
  public:
-  RoomLog(const RoomRunOptions &options, double threshold, const MapTones &tones, RoomPictureMarks marks,
-          std::ostream &out)
-      : options_(options), threshold_(threshold), tones_(tones), marks_(std::move(marks)), out_(out),
-        times_(options.snapshots_at_s), steps_(options.snapshot_steps) {
+  RoomLog(const RoomRunOptions &options, double threshold, std::ostream &out, MetricRunRecorder *recorder)
+      : options_(options), threshold_(threshold), out_(out), recorder_(recorder), times_(options.snapshots_at_s),
+        steps_(options.snapshot_steps) {
     std::sort(times_.begin(), times_.end());
     std::sort(steps_.begin(), steps_.end());
-    trace_ = "t,x,y,theta";
-    if (options.model.kind == sensing::ModelKind::bump) trace_ += ",bump_right,bump_left,bump_front";
-    if (options.model.kind == sensing::ModelKind::depth) {
-      for (int n = 1; n <= sensing::kLogDepthRays; ++n) trace_ += fmt::format(",depth_{}", n);
-    }
-    trace_ += '\n';
   }
 
-  // Each control step: its trace line, then the snapshots due by its time, then by its step.
+  // Each control step: the snapshots due by its time, then by its step.
   void on_step(const robot::MetricController &c) {
-    const sensing::LogStep &s = c.senses().log_step();
-    std::string line = fmt::format("{},{},{},{}", s.t, s.x_m, s.y_m, s.theta_rad);
-    if (options_.model.kind == sensing::ModelKind::bump) {
-      line += fmt::format(",{},{},{}", s.bump_right ? 1 : 0, s.bump_left ? 1 : 0, s.bump_front ? 1 : 0);
-    }
-    if (options_.model.kind == sensing::ModelKind::depth) {
-      for (const double d : s.depth_m) line += fmt::format(",{}", d);
-    }
-    trace_ += line;
-    trace_ += '\n';
     while (next_time_ < times_.size() && c.time_s() >= times_[next_time_] - 1e-9) {
       snapshot(c, fmt::format("t = {:g} s", times_[next_time_]));
-      keep(c, fmt::format("snapshots/t{:g}s", times_[next_time_]));
+      if (recorder_ != nullptr) recorder_->on_snapshot(c, fmt::format("snapshots/t{:g}s", times_[next_time_]));
       ++next_time_;
     }
     while (next_step_ < steps_.size() && c.steps() >= steps_[next_step_]) {
       snapshot(c, fmt::format("step {}", steps_[next_step_]));
-      keep(c, fmt::format("snapshots/step{}", steps_[next_step_]));
+      if (recorder_ != nullptr) recorder_->on_snapshot(c, fmt::format("snapshots/step{}", steps_[next_step_]));
       ++next_step_;
     }
-  }
-
-  // The map's picture now as MAP.png (and the wave's, when there is one, as WAVE.png).
-  std::vector<NamedFile> pictures_now(const robot::MetricController &c, const std::string &map,
-                                      const std::string &wave) const {
-    RoomPictureMarks marks = marks_;
-    marks.when = fmt::format("step {}, {:.1f} s", c.steps(), c.time_s());
-    std::vector<NamedFile> pictures{{map + ".png", room_map_picture(c, tones_, marks)}};
-    if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
-      pictures.push_back({wave + ".png", room_wave_picture(c, marks)});
-    }
-    return pictures;
   }
 
   // The map now (and the wave), headed by `when`; nothing when quiet.
@@ -228,17 +192,11 @@ class RoomLog {
     if (options_.quiet) return;
     out_ << fmt::format("--- {}: step {}, {:.1f} s, at ({:.2f}, {:.2f}) ---\n", when, c.steps(), c.time_s(),
                         c.position().x_m, c.position().y_m);
-    out_ << room_ascii_map(c, threshold_);
+    out_ << metric_ascii_map(c, threshold_);
     if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
-      out_ << "wavefront (obstacles 1, goal 2):\n" << room_wave_numbers(c.map(), c.wave());
+      out_ << "wavefront (obstacles 1, goal 2):\n" << metric_wave_numbers(c.map(), c.wave());
     }
     out_ << '\n' << std::flush;  // seen as the run goes, also through a pipe or in a file
-  }
-
-  // With --out: the snapshot NAME.png (and NAME_wave.png) now, kept until the run's files are written.
-  void keep(const robot::MetricController &c, const std::string &name) {
-    if (options_.out_dir.empty()) return;
-    for (NamedFile &picture : pictures_now(c, name, name + "_wave")) snapshots_.push_back(std::move(picture));
   }
 
   // After the run: says of each snapshot it never reached that the run ended first.
@@ -251,52 +209,16 @@ class RoomLog {
     }
   }
 
-  const std::string &trace() const { return trace_; }
-  const std::vector<NamedFile> &snapshots() const { return snapshots_; }
-
  private:
   const RoomRunOptions &options_;
   double threshold_;
-  const MapTones &tones_;
-  RoomPictureMarks marks_;
-  std::vector<NamedFile> snapshots_;  // with --out: snapshots/NAME.png and NAME_wave.png
   std::ostream &out_;
+  MetricRunRecorder *recorder_;
   std::vector<double> times_;  // sorted
   std::size_t next_time_ = 0;
   std::vector<std::int64_t> steps_;  // sorted
   std::size_t next_step_ = 0;
-  std::string trace_;
 };
-
-// What the pictures mark besides the controller's state: the start, the goal, the arena's
-// boundary, the landmarks, the caption.
-RoomPictureMarks picture_marks(const RoomRunOptions &options, const sensing::SetUp &setup,
-                               const robot::MetricOptions &room, const maze::Arena &arena,
-                               std::vector<LandmarkMark> landmarks) {
-  RoomPictureMarks marks;
-  marks.start = room.start;
-  marks.goal = room.goal;
-  marks.boundary = PlainGridBounds{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
-  marks.landmarks = std::move(landmarks);
-  marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
-                              robot::to_string(room.strategy), setup.name);
-  return marks;
-}
-
-// What replay.html shows besides the frames: the pictures' caption, the summary's lines.
-RoomReplayText replay_text(const RoomRunOptions &options, const RoomPictureMarks &marks, const robot::MetricOptions &room,
-                           const Report &report) {
-  RoomReplayText text;
-  text.title = options.world;
-  text.caption = marks.caption;
-  text.goal = marks.goal;
-  text.landmarks = marks.landmarks;
-  text.body_radius_m = room.body_radius_m;
-  for (auto &[key, value] : summary_pairs(report)) {
-    if (key != "wall_time_ms") text.summary.emplace_back(key, value);
-  }
-  return text;
-}
 
 // What the controller says of its run, on the grid `spec`.
 RoomSummary summary_of(const robot::MetricController &c, robot::MetricEnding ending, const sensing::MetricGridSpec &spec) {
@@ -325,25 +247,7 @@ void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c
     out << fmt::format("{}({:.2f}, {:.2f})", k == 0 ? "" : " ", traj[k].x_m, traj[k].y_m);
   }
   out << "\n\nthresholded map (1: log-odds >= " << fmt::format("{:g}", threshold) << "):\n"
-      << room_binary_map(c.map(), threshold) << '\n';
-}
-
-// --out DIR's files: the core ones in the order every run writes them, then the room's own.
-void write_room_files(OutputDir &out, const robot::MetricController &c, const RoomLog &log, const NamedFile &truth_png,
-                      const std::optional<Replay> &replay, const Report &report, double threshold) {
-  const std::vector<NamedFile> last = log.pictures_now(c, "map", "wave");  // map.png, wave.png
-  out.write("map.pgm", room_pgm(c.map()));
-  out.write("map.yaml", map_yaml(c.map().geometry(), "map.pgm"));
-  out.write(last.front().name, last.front().bytes);
-  out.write(truth_png.name, truth_png.bytes);
-  out.write("summary.json", report_json(report).dump(2) + "\n");
-  out.write("trace.csv", log.trace());
-  for (const NamedFile &snapshot : log.snapshots()) out.write(snapshot.name, snapshot.bytes);
-  if (replay) out.write("replay.html", replay->html);
-  out.write("logodds.csv", room_logodds_csv(c.map()));
-  out.write("thresholded.txt", room_binary_map(c.map(), threshold));
-  for (std::size_t i = 1; i < last.size(); ++i) out.write(last[i].name, last[i].bytes);
-  out.finish();
+      << metric_binary_map(c.map(), threshold) << '\n';
 }
 
 }  // namespace
@@ -361,13 +265,13 @@ int room_exit_status(const RoomSummary &s) {
 
 RoomSummary run_room(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
-                     Report *report) {
-  return run_room_in(world.geometry(), options, out, started, interrupted, report);
+                     Report *report, MetricRunRecorder *recorder) {
+  return run_room_in(world.geometry(), options, out, started, interrupted, report, recorder);
 }
 
 RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
-                        Report *report_out) {
+                        Report *report_out, MetricRunRecorder *recorder) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
@@ -380,29 +284,21 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   const robot::ControllerOptions controller = room_controller_options(options, profile);
   const mapping::SensorModel model(options.sensor);
   sensing::MetricMap map(spec, model);
-  std::optional<OutputDir> files;
-  if (!options.out_dir.empty()) {
-    files.emplace(options.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
-                  room_own_names());
-  }
+  const double threshold = threshold_of(options);
+  if (recorder != nullptr) recorder->start(MetricRunStart{options, setup, room, arena, map, start_pose, threshold});
   maze::sim::SimulationOptions sim = options.simulation;
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
   const maze::ArenaTruth truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
   webots::embedded::Simulation simulation(arena, profile, sim);
 
   // ---- the run ----
-  const double threshold = threshold_of(options);
-  const MapTones tones = room_map_tones(map, sensing::probabilities_in_effect(setup, options.sensor), threshold);
-  const RoomPictureMarks marks = picture_marks(options, setup, room, arena, landmark_marks(arena));
-  RoomLog log(options, threshold, tones, marks, out);
-  std::optional<RoomReplay> replay;
-  if (files) replay.emplace(map, tones, ReplayPose{0, {start_pose.x_m, start_pose.y_m}, start_pose.yaw_rad});
+  RoomLog log(options, threshold, out, recorder);
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
-                                          [&log, &replay](const robot::MetricController &c) {
-                                          log.on_step(c);
-                                          if (replay) replay->on_step(c);
-                                        },
-                                        interrupted);
+                                          [&log, recorder](const robot::MetricController &c) {
+                                            log.on_step(c);
+                                            if (recorder != nullptr) recorder->on_step(c);
+                                          },
+                                          interrupted);
   RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
   if (summary.ending == robot::MetricEnding::stopped && interrupted != nullptr && interrupted()) {
     summary.interrupted = true;
@@ -410,21 +306,15 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   }
 
   // ---- the score against the truth ----
-  const std::size_t first_left = score_room_map(map, truth, threshold, summary);
+  const std::size_t first_left = score_metric_map(map, truth, threshold, summary);
   if (options.room.strategy == robot::MetricStrategy::frontier) settle_frontier_ending(map, first_left, summary);
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   if (!options.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
-  const Report report = room_report(options, profile.name, setup, spec, summary);
+  const Report report = metric_run_report(options, profile.name, setup, spec, summary);
   if (!options.quiet) out << '\n';
   out << format_summary(report);
-  if (files) {
-    const RoomTruthScores scores{report.text("cell_accuracy"), report.text("coverage")};
-    const NamedFile truth_png{"truth.png", room_truth_picture(controller_loop, truth, threshold, marks, scores)};
-    replay->finish(controller_loop);
-    write_room_files(*files, controller_loop, log, truth_png, replay_html(replay->input(replay_text(options, marks, room, report))),
-                     report, threshold);
-  }
+  if (recorder != nullptr) recorder->finish(MetricRunEnd{controller_loop, truth, report});
   if (report_out != nullptr) *report_out = report;
   return summary;
 }

@@ -1,20 +1,20 @@
-// replay.html for a room run (app/room/room_replay.hpp).
+// replay.html for a room run (app/report/metric_replay_recorder.hpp).
 
-#include "app/room/room_replay.hpp"
+#include "app/report/metric_replay_recorder.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace app {
 
-RoomReplay::RoomReplay(const sensing::MetricMap &map, const MapTones &tones, const ReplayPose &start)
+MetricReplayRecorder::MetricReplayRecorder(const sensing::MetricMap &map, const MapTones &tones, const ReplayPose &start)
     : map_(map), tones_(tones), steps_per_frame_(static_cast<std::int64_t>((map.size() + 1999) / 2000)),
       last_(map.size(), static_cast<float>(map.model().prior_log_odds())),
       readout_step_(std::min(tones.occupied_increment, -tones.free_increment)), path_{start} {
   frames_.push_back({0, start.step, 0.0, 0});
 }
 
-void RoomReplay::record(const robot::MetricController &c) {
+void MetricReplayRecorder::record(const robot::MetricController &c) {
   for (std::size_t n = 0; n < last_.size(); ++n) {
     const auto now = static_cast<float>(map_.log_odds_at(n));
     if (!shows_change(last_[n], now)) continue;
@@ -25,22 +25,22 @@ void RoomReplay::record(const robot::MetricController &c) {
   frames_.push_back({path_.size() - 1, c.steps(), c.time_s(), changes_.size()});
 }
 
-bool RoomReplay::shows_change(float was, float now) const {
+bool MetricReplayRecorder::shows_change(float was, float now) const {
   if (replay_value(now, tones_) == replay_value(was, tones_)) return false;  // the same on the page to 0.01
   if (tone(now, tones_) != tone(was, tones_)) return true;  // drawn differently (seen, occupied, shade)
   const double moved = std::abs(static_cast<double>(now) - static_cast<double>(was));
   return moved >= std::max(readout_step_, 0.25 * std::abs(static_cast<double>(was)));
 }
 
-void RoomReplay::on_step(const robot::MetricController &c) {
+void MetricReplayRecorder::on_step(const robot::MetricController &c) {
   if (c.steps() % steps_per_frame_ == 0) record(c);
 }
 
-void RoomReplay::finish(const robot::MetricController &c) {
+void MetricReplayRecorder::finish(const robot::MetricController &c) {
   if (frames_.back().step != c.steps()) record(c);
 }
 
-ReplayInput RoomReplay::input(const RoomReplayText &text) const {
+ReplayInput MetricReplayRecorder::input(const MetricReplayText &text) const {
   ReplayInput in;
   in.units = ReplayUnits::metres;
   in.grid = map_.geometry();

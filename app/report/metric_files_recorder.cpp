@@ -1,0 +1,142 @@
+// The files of a run in metres (app/report/metric_files_recorder.hpp).
+
+#include "app/report/metric_files_recorder.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "app/report/outputs.hpp"
+#include "app/report/truth_picture.hpp"
+#include "app/run/metric_map_text.hpp"
+#include "app/run/report.hpp"
+
+namespace app {
+namespace {
+
+// What the pictures mark besides the controller's state: the start, the goal, the arena's
+// boundary, the landmarks, the caption.
+MetricPictureMarks picture_marks(const MetricRunStart &start) {
+  MetricPictureMarks marks;
+  marks.start = start.room.start;
+  marks.goal = start.room.goal;
+  marks.boundary = PlainGridBounds{start.arena.x_min_m, start.arena.x_max_m, start.arena.y_min_m, start.arena.y_max_m};
+  marks.landmarks = landmark_marks(start.arena);
+  marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(start.options.world).filename().string(),
+                              robot::to_string(start.room.strategy), start.setup.name);
+  return marks;
+}
+
+// trace.csv's first line: t,x,y,theta and the bump or depth columns map-log reads back.
+std::string trace_header_of(sensing::ModelKind kind) {
+  std::string header = "t,x,y,theta";
+  if (kind == sensing::ModelKind::bump) header += ",bump_right,bump_left,bump_front";
+  if (kind == sensing::ModelKind::depth) {
+    for (int n = 1; n <= sensing::kLogDepthRays; ++n) header += fmt::format(",depth_{}", n);
+  }
+  return header + '\n';
+}
+
+}  // namespace
+
+const std::vector<std::string> &metric_own_names() {
+  static const std::vector<std::string> names{"logodds.csv", "thresholded.txt", "wave.png"};
+  return names;
+}
+
+std::string metric_logodds_csv(const sensing::MetricMap &map) {
+  std::ostringstream csv;
+  for (int j = map.cells_y() - 1; j >= 0; --j) {
+    for (int i = 0; i < map.cells_x(); ++i) csv << (i == 0 ? "" : ",") << fmt::format("{:.6f}", map.log_odds({i, j}));
+    csv << '\n';
+  }
+  return csv.str();
+}
+
+std::string metric_pgm(const sensing::MetricMap &map) {
+  std::string pgm = fmt::format("P5\n{} {}\n255\n", map.cells_x(), map.cells_y());
+  const auto l0 = static_cast<float>(map.model().prior_log_odds());
+  for (int j = map.cells_y() - 1; j >= 0; --j) {
+    for (int i = 0; i < map.cells_x(); ++i) {
+      pgm += static_cast<char>(pgm_pixel(static_cast<float>(map.log_odds({i, j})), l0));
+    }
+  }
+  return pgm;
+}
+
+void MetricFilesRecorder::start(const MetricRunStart &start) {
+  const RoomRunOptions &options = start.options;
+  dir_.emplace(options.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
+               metric_own_names());
+  kind_ = options.model.kind;
+  wavefront_ = start.room.strategy == robot::MetricStrategy::wavefront;
+  threshold_ = start.threshold;
+  world_ = options.world;
+  body_radius_m_ = start.room.body_radius_m;
+  tones_ = metric_map_tones(start.map, sensing::probabilities_in_effect(start.setup, options.sensor), start.threshold);
+  marks_ = picture_marks(start);
+  trace_ = trace_header_of(kind_);
+  replay_.emplace(start.map, tones_, ReplayPose{0, {start.start.x_m, start.start.y_m}, start.start.yaw_rad});
+}
+
+void MetricFilesRecorder::on_step(const robot::MetricController &c) {
+  const sensing::LogStep &s = c.senses().log_step();
+  trace_ += fmt::format("{},{},{},{}", s.t, s.x_m, s.y_m, s.theta_rad);
+  if (kind_ == sensing::ModelKind::bump) {
+    trace_ += fmt::format(",{},{},{}", s.bump_right ? 1 : 0, s.bump_left ? 1 : 0, s.bump_front ? 1 : 0);
+  }
+  if (kind_ == sensing::ModelKind::depth) {
+    for (const double d : s.depth_m) trace_ += fmt::format(",{}", d);
+  }
+  trace_ += '\n';
+  replay_->on_step(c);
+}
+
+void MetricFilesRecorder::on_snapshot(const robot::MetricController &c, const std::string &name) {
+  for (NamedFile &picture : pictures_now(c, name, name + "_wave")) snapshots_.push_back(std::move(picture));
+}
+
+std::vector<NamedFile> MetricFilesRecorder::pictures_now(const robot::MetricController &c, const std::string &map,
+                                                         const std::string &wave) const {
+  MetricPictureMarks marks = marks_;
+  marks.when = fmt::format("step {}, {:.1f} s", c.steps(), c.time_s());
+  std::vector<NamedFile> pictures{{map + ".png", metric_map_picture(c, tones_, marks)}};
+  if (wavefront_ && !c.wave().empty()) pictures.push_back({wave + ".png", metric_wave_picture(c, marks)});
+  return pictures;
+}
+
+void MetricFilesRecorder::finish(const MetricRunEnd &end) {
+  const robot::MetricController &c = end.controller;
+  const std::vector<NamedFile> last = pictures_now(c, "map", "wave");  // map.png, wave.png
+  const MetricTruthScores scores{end.report.text("cell_accuracy"), end.report.text("coverage")};
+  replay_->finish(c);
+  MetricReplayText text{world_, marks_.caption, marks_.goal, body_radius_m_, marks_.landmarks, {}};
+  for (auto &[key, value] : summary_pairs(end.report)) {
+    if (key != "wall_time_ms") text.summary.emplace_back(key, value);
+  }
+  // The core files in the order every run writes them, then the room's own.
+  OutputDir &out = *dir_;
+  out.write("map.pgm", metric_pgm(c.map()));
+  out.write("map.yaml", map_yaml(c.map().geometry(), "map.pgm"));
+  out.write(last.front().name, last.front().bytes);
+  out.write("truth.png", metric_truth_picture(c, end.truth, threshold_, marks_, scores));
+  out.write("summary.json", report_json(end.report).dump(2) + "\n");
+  out.write("trace.csv", trace_);
+  for (const NamedFile &snapshot : snapshots_) out.write(snapshot.name, snapshot.bytes);
+  if (const std::optional<Replay> page = replay_html(replay_->input(text))) out.write("replay.html", page->html);
+  out.write("logodds.csv", metric_logodds_csv(c.map()));
+  out.write("thresholded.txt", metric_binary_map(c.map(), threshold_));
+  for (std::size_t i = 1; i < last.size(); ++i) out.write(last[i].name, last[i].bytes);
+  out.finish();
+}
+
+RoomSummary run_room_and_write(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
+                               std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                               Report *report) {
+  if (options.out_dir.empty()) return run_room(world, options, out, started, interrupted, report);
+  MetricFilesRecorder recorder;
+  return run_room(world, options, out, started, interrupted, report, &recorder);
+}
+
+}  // namespace app
