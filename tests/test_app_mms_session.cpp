@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -315,6 +316,62 @@ std::vector<std::string> file_names(const fs::path &dir) {
 }
 
 }  // namespace
+
+namespace {
+
+// While alive, standard error (file descriptor 2) goes to `path`; text() ends that and reads it.
+class StderrToFile {
+ public:
+  explicit StderrToFile(fs::path path) : path_(std::move(path)) {
+    std::fflush(stderr);
+    saved_ = ::dup(STDERR_FILENO);
+    const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
+  }
+  ~StderrToFile() { restore(); }
+  StderrToFile(const StderrToFile &) = delete;
+  StderrToFile &operator=(const StderrToFile &) = delete;
+  std::string text() {
+    restore();
+    std::ifstream file(path_);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+  }
+
+ private:
+  void restore() {
+    if (saved_ < 0) return;
+    std::fflush(stderr);
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+    saved_ = -1;
+  }
+  fs::path path_;
+  int saved_ = -1;
+};
+
+}  // namespace
+
+TEST_CASE("mms --out names every file it wrote, marks.txt and summary.json among them, in one line") {
+  const test_cli::TempDir dir("mms_out_wrote_line");
+  app::RunOptions options;
+  options.world = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+  options.output.quiet = true;
+  options.output.out_dir = (dir.path / "out").string();
+  app::MmsOptions mms;
+  mms.command = {"sh", kScripts + "goal_then_loop.sh"};
+  mms.until = app::MmsUntil::goal;
+  std::ostringstream out;
+  fs::create_directories(dir.path);
+  StderrToFile captured(dir.path / "stderr.txt");
+  (void)app::run_mms_world(options, mms, out);
+  const std::string err = captured.text();
+  CHECK(err == fmt::format("wrote {}/: map.pgm, map.yaml, map.png, truth.png, summary.json, trace.csv, replay.html, "
+                           "marks.txt\n",
+                           options.output.out_dir));
+}
 
 TEST_CASE("run, room and mms --out write the same core files, each kind adding its own") {
   const std::vector<std::string> core{"map.pgm", "map.png",  "map.yaml",   "replay.html",
