@@ -111,7 +111,12 @@ void MetricFilesRecorder::finish(const MetricRunEnd &end) {
   const std::vector<NamedFile> last = pictures_now(c, "map", "wave");  // map.png, wave.png
   const MetricTruthScores scores{end.report.text("cell_accuracy"), end.report.text("coverage")};
   replay_->finish(c);
-  MetricReplayText text{world_, marks_.caption, marks_.goal, body_radius_m_, marks_.landmarks, {}};
+  MetricReplayText text;  // what replay.html shows besides the frames
+  text.title = world_;
+  text.caption = marks_.caption;
+  text.goal = marks_.goal;
+  text.landmarks = marks_.landmarks;
+  text.body_radius_m = body_radius_m_;
   for (auto &[key, value] : summary_pairs(end.report)) {
     if (key != "wall_time_ms") text.summary.emplace_back(key, value);
   }
