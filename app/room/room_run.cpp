@@ -287,6 +287,7 @@ RoomReplayText replay_text(const RoomRunOptions &options, const RoomPictureMarks
   text.caption = marks.caption;
   text.goal = marks.goal;
   text.landmarks = marks.landmarks;
+  text.boundary = marks.boundary;
   text.body_radius_m = room.body_radius_m;
   for (auto &[key, value] : summary_pairs(report)) {
     if (key != "wall_time_ms") text.summary.emplace_back(key, value);
