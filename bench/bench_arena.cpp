@@ -1,5 +1,5 @@
 // The simulator's costs in an arena: one 360-beam lidar scan in a 20 x 20 m arena of 40 (and
-// 400) random rectangles, through the bucket grid (ArenaGeometry::cast_from) and, for
+// 400) random rectangles, through the bucket grid (SolidGeometry::cast_from) and, for
 // comparison, by testing every obstacle (cast_brute_force); and one control step.
 
 #include <benchmark/benchmark.h>
@@ -12,7 +12,7 @@
 #include "common/random.hpp"
 #include "driving_robot.hpp"
 #include "maze/generate/arena_generator.hpp"
-#include "maze/sim/arena_geometry.hpp"
+#include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
@@ -30,7 +30,7 @@ maze::Arena arena(int obstacles, bool rotated) {
 }
 
 // Free points with random headings, to spread the scans over the arena.
-std::vector<maze::sim::Pose> poses(const maze::sim::ArenaGeometry &g) {
+std::vector<maze::sim::Pose> poses(const maze::sim::SolidGeometry &g) {
   common::Rng rng(5);
   std::vector<maze::sim::Pose> out;
   while (out.size() < 256) {
@@ -45,7 +45,7 @@ std::vector<maze::sim::Pose> poses(const maze::sim::ArenaGeometry &g) {
 const maze::sim::LidarSpec &lidar_spec() { return maze::sim::find_profile("hambot-12m").lidars.front(); }
 
 void BM_Scan360_Arena(benchmark::State &state) {
-  const maze::sim::ArenaGeometry g(arena(static_cast<int>(state.range(0)), state.range(1) != 0));
+  const maze::sim::SolidGeometry g(arena(static_cast<int>(state.range(0)), state.range(1) != 0));
   const maze::sim::LidarModel lidar(lidar_spec());
   const std::vector<maze::sim::Pose> where = poses(g);
   std::vector<float> ranges(static_cast<std::size_t>(lidar_spec().horizontal_resolution));
@@ -64,7 +64,7 @@ BENCHMARK(BM_Scan360_Arena)
 
 // The same 360 beams, each tested against every obstacle.
 void BM_Scan360_Arena_BruteForce(benchmark::State &state) {
-  const maze::sim::ArenaGeometry g(arena(static_cast<int>(state.range(0)), state.range(1) != 0));
+  const maze::sim::SolidGeometry g(arena(static_cast<int>(state.range(0)), state.range(1) != 0));
   const std::vector<maze::sim::Pose> where = poses(g);
   std::vector<double> ranges(360);
   std::size_t i = 0;

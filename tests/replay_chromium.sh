@@ -4,7 +4,8 @@
 # fails on a JavaScript error (the page's window.onerror writes data-js-error on <body>), on
 # a script that did not finish (data-replay-ready on <body> is set after the last frame is
 # drawn), on a DOM without the slider, the K x K matrix or the summary, on a page that does
-# not open at the start, on a page that loads anything from elsewhere, on a status line or key
+# not open at the start, on a maze's page with a boundary band or without room for landmarks
+# on its corners, on a page that loads anything from elsewhere, on a status line or key
 # help cut in a 1024 x 768 or a 1920 x 1080 window, and on a blank screenshot (png_spread).
 # #frame=N then #frame=0 seeks on and back (the path that redraws from nothing).
 # Skips (exit 77) when chromium is not installed, unless MAZE_MAPPER_REQUIRE_CHROMIUM is set
@@ -35,6 +36,13 @@ grep -q "move $moves/$moves " "$dir/dom.html" || fail "#frame=$moves does not sh
 load_page "file://$page#frame=$moves&key=Home" "at #frame=$moves, then Home"
 grep -q "move 0/$moves " "$dir/dom.html" || fail "Home from the end does not show move 0/$moves"
 
+echo "$(grep -o '<body[^>]*>' "$dir/dom.html")" | grep -q 'data-boundary-band="0"' || fail "a maze's page draws a boundary band"
+# Landmarks on a maze's corners (the course's localization worlds): the view holds them whole.
+"$program" run "$(dirname "$0")/data/worlds/course_arena5_starts.xml" --quiet --no-trace --out "$dir/corners" \
+  > "$dir/corners.out" || fail "the run with corner landmarks failed"
+load_page "file://$dir/corners/replay.html" "with landmarks on the maze's corners"
+margin=$(grep -o '<body[^>]*>' "$dir/dom.html" | sed -n 's/.*data-margin="\([0-9]*\)".*/\1/p')
+[ "${margin:-0}" -gt 0 ] || fail "no margin round the maze for its corner landmarks (data-margin '$margin')"
 fits_window 1024x768 maze
 fits_window 1920x1080 maze
 # A 64 x 64 run in a 1280 x 900 window: the map fills the stage, the controls step and zoom

@@ -3,7 +3,8 @@
 # on a maze run) in metres. The wavefront run in the IR room writes it; headless Chromium loads
 # it from the file; the test fails on a JavaScript error (data-js-error on <body>), on a script
 # that did not finish (data-replay-ready), on a page that loads anything from elsewhere, on a
-# DOM without the slider or the summary's ending, on a page that does not open at step 0, on a
+# DOM without the slider or the summary's ending, on a boundary not drawn as a wall band, on a
+# page that does not open at step 0, on a
 # last frame that is not the run's last step, on the step and zoom controls not moving the view
 # (clicked through #do=, pressed through #key=), on a status line or key help cut in a
 # 1024 x 768 or a 1920 x 1080 window, and on a blank screenshot (png_spread).
@@ -25,6 +26,9 @@ load_page "file://$page" "at the start"
 grep -q '<dd id="summary-end">goal reached (' "$dir/dom.html" || fail "no summary ending"
 grep -q "step 0/$steps  t 0.0 s " "$dir/dom.html" || fail "the page does not open at step 0"
 grep -q '<dd id="now-position">' "$dir/dom.html" || fail "no position in metres in the panel"
+body=$(grep -o '<body[^>]*>' "$dir/dom.html")
+echo "$body" | grep -q 'data-boundary-band="[1-9]' || fail "the room's boundary is not drawn as a wall band: $body"
+grep -q '<li id="legend-boundary">' "$dir/dom.html" || fail "no boundary wall in the legend"
 
 load_page "file://$page#frame=99999" "at the last frame"
 grep -q "step $steps/$steps  t " "$dir/dom.html" || fail "the last frame is not step $steps"

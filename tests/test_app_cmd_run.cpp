@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -135,18 +136,29 @@ TEST_CASE("run command line: --time-limit is simulated seconds, more than 0; inf
   }
 }
 
-TEST_CASE("steps_within: the control steps a time limit allows, at least one, saturating") {
-  CHECK(app::steps_within(2.0, 32) == 62);
-  CHECK(app::steps_within(0.001, 32) == 1);
-  CHECK(app::steps_within(9.3e9, 32) == 290625000000);
-  CHECK(app::steps_within(1e300, 32) == std::numeric_limits<std::int64_t>::max());
-  CHECK(app::steps_within(kInf, 32) == std::numeric_limits<std::int64_t>::max());
+TEST_CASE("steps_to_reach: the control steps until simulated time reaches a time limit, at least one, saturating") {
+  CHECK(app::steps_to_reach(2.0, 32) == 63);   // 1.984 s is short of 2 s, 2.016 s reaches it
+  CHECK(app::steps_to_reach(3.2, 32) == 100);  // exactly 3.2 s, though 3.2 * 1000 / 32 is a hair above 100 in doubles
+  CHECK(app::steps_to_reach(0.001, 32) == 1);
+  CHECK(app::steps_to_reach(9.3e9, 32) == 290625000000);
+  CHECK(app::steps_to_reach(1e300, 32) == std::numeric_limits<std::int64_t>::max());
+  CHECK(app::steps_to_reach(kInf, 32) == std::numeric_limits<std::int64_t>::max());
+}
+
+TEST_CASE("--time-limit ends a maze run and a room run at the same step: the first at or past the limit") {
+  for (const char *kind : {"run", "room"}) {
+    CAPTURE(kind);
+    const char *world = std::string_view(kind) == "run" ? "/lab4x4.txt" : "/ir_room.room";
+    const test_cli::Ran timed = test_cli::run({kind, std::string(WORLDS_DIR) + world, "--quiet", "--time-limit", "2"});
+    CHECK(timed.out.find("end: time limit (2 s of simulated time)\n") != std::string::npos);
+    CHECK(timed.out.find("\nsim_time_s: 2.016\n") != std::string::npos);
+  }
 }
 
 TEST_CASE("a run stopped by --time-limit ends as planned and says so; a huge limit changes nothing") {
   const test_cli::Ran timed = test_cli::run({"run", std::string(WORLDS_DIR) + "/lab4x4.txt", "--quiet", "--time-limit", "2"});
   CHECK(timed.status == 0);
-  CHECK(timed.out.find("end: time limit (2 s of simulated time)\nsteps: 62\n") != std::string::npos);
+  CHECK(timed.out.find("end: time limit (2 s of simulated time)\nsteps: 63\n") != std::string::npos);
   const test_cli::Ran whole = test_cli::run({"run", std::string(WORLDS_DIR) + "/lab4x4.txt", "--quiet", "--time-limit", "inf"});
   CHECK(whole.status == 0);
   CHECK(whole.out.find("end: done\n") != std::string::npos);

@@ -141,6 +141,9 @@ TEST_CASE("replay data in metres: poses, goals and landmarks in mm from the grid
   CHECK(d["body_mm"] == 50);
   CHECK(d["frame_note"] == "a frame every 15 steps");
   CHECK(Json::parse(app::replay_data_json(input, 2))["frame_note"] == "a frame every 30 steps");
+  CHECK(d["boundary_mm"] == Json::array());  // no solid boundary given: no wall band
+  input.solid_boundary = app::PlainGridBounds{-1.0, 0.0, 2.0, 2.5};  // x from -1 to 0, y from 2 to 2.5
+  CHECK(Json::parse(app::replay_data_json(input, 1))["boundary_mm"] == Json::array({0, 0, 1000, 500}));
 }
 
 TEST_CASE("replay page: self-contained, the data's \"</\" escaped; over the size limit more moves a frame, then none") {

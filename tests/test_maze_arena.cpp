@@ -12,7 +12,7 @@
 #include "common/error.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/generate/arena_generator.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 #include "maze/world/world.hpp"
 #include "maze/formats/room_format.hpp"
 #include "maze/world/world.hpp"
@@ -299,7 +299,7 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
   // 4 x 2 m, 1 m cells; a 0.2 m wall across x = 2 from y = 0 to 1.5 (cells (1,0), (2,0),
   // (1,1) and (2,1) each overlap it); start in (0, 0).
   const maze::Arena a = maze::read_room("boundary 0 4 0 2\nwall 2 0 2 1.5 0.2\nstart 0.5 0.5\n", "f");
-  const maze::ArenaTruth t = maze::rasterise_arena(a, 4, 2, 0.0);
+  const maze::TruthRaster t = maze::rasterise_truth(a, 4, 2, 0.0);
   CHECK(t.occupied == std::vector<std::uint8_t>{0, 1, 1, 0, 0, 1, 1, 0});
   CHECK(t.occupied_count == 4);
   CHECK(t.free_count == 4);
@@ -308,7 +308,7 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
   CHECK(t.reachable == std::vector<std::uint8_t>{1, 0, 0, 0, 1, 0, 0, 0});
   // At 0.5 m cells: the wall (x 1.9 to 2.1, y 0 to 1.5) occupies columns 3 and 4, rows 0 to 2;
   // row 3 is open above it, so the east part is reachable with radius 0.
-  const maze::ArenaTruth fine = maze::rasterise_arena(a, 8, 4, 0.0);
+  const maze::TruthRaster fine = maze::rasterise_truth(a, 8, 4, 0.0);
   CHECK(fine.occupied_count == 6);
   CHECK(fine.reachable_count == 26);
   // A robot of radius 0.3 m: centres 0.3 m from the wall and the boundary, so only columns 1,
@@ -316,7 +316,7 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
   // are not); from the start's cell (1, 1) the centres reach (1..2, 1..2), the wall's band cuts
   // off the east. The reach, 0.3 m and half a diagonal of 0.5 m cells (0.354 m), adds the
   // free 4-neighbours of those four (0.5 m away; the diagonals, 0.707 m, are beyond it).
-  const maze::ArenaTruth body = maze::rasterise_arena(a, 8, 4, 0.3);
+  const maze::TruthRaster body = maze::rasterise_truth(a, 8, 4, 0.3);
   CHECK(body.reachable_count == 10);
   CHECK(body.is_reachable(0, 1));
   CHECK(!body.is_reachable(0, 0));
@@ -325,10 +325,10 @@ TEST_CASE("truth: cells occupied by any overlap; reachable by the robot's body f
   // (it touches none of column 2), and cuts nothing off.
   maze::Arena with_disc = a;
   with_disc.discs.push_back({3.5, 1.0, 0.25});
-  const maze::ArenaTruth disc = maze::rasterise_arena(with_disc, 4, 2, 0.0);
+  const maze::TruthRaster disc = maze::rasterise_truth(with_disc, 4, 2, 0.0);
   CHECK(disc.occupied == std::vector<std::uint8_t>{0, 1, 1, 1, 0, 1, 1, 1});
   CHECK(disc.reachable == t.reachable);
-  CHECK_THROWS_WITH_AS(maze::rasterise_arena(a, 20000, 20000, 0.0),
+  CHECK_THROWS_WITH_AS(maze::rasterise_truth(a, 20000, 20000, 0.0),
                        "a grid of 20000 x 20000 cells is too fine: at most 67108864 cells", common::InputError);
 }
 
@@ -339,12 +339,12 @@ TEST_CASE("truth at the map's resolution: a gap is passable when a body clear of
   // body passing; at 0.05 m it leaves five, the middle one 0.125 m from the occupied cells.
   const maze::Arena a = maze::read_room(
       "boundary 0 2 0 2\nrect 0 0.95 0.81 1.05\nrect 1.12 0.95 2 1.05\nstart 0.5 0.5\n", "f");
-  const maze::ArenaTruth to_wall = maze::rasterise_arena(a, 20, 20, 0.09);
-  const maze::ArenaTruth to_cells = maze::rasterise_arena(a, 20, 20, 0.09, maze::TruthClearance::to_occupied_cells);
+  const maze::TruthRaster to_wall = maze::rasterise_truth(a, 20, 20, 0.09);
+  const maze::TruthRaster to_cells = maze::rasterise_truth(a, 20, 20, 0.09, maze::TruthClearance::to_occupied_cells);
   CHECK(to_wall.is_reachable(10, 15));
   CHECK(!to_cells.is_reachable(10, 15));
   CHECK(to_cells.is_reachable(10, 5));
-  const maze::ArenaTruth finer = maze::rasterise_arena(a, 40, 40, 0.09, maze::TruthClearance::to_occupied_cells);
+  const maze::TruthRaster finer = maze::rasterise_truth(a, 40, 40, 0.09, maze::TruthClearance::to_occupied_cells);
   CHECK(finer.is_reachable(20, 30));
 }
 
@@ -352,7 +352,7 @@ TEST_CASE("truth: a rotated obstacle marks exactly the cells its area meets") {
   // A square of side sqrt(2) m turned 45 degrees about (2, 2): a diamond reaching 1 m each way.
   maze::Arena a = maze::read_room("boundary 0 4 0 4\nstart 0.5 0.5\n", "f");
   a.obstacles.push_back(maze::Obstacle::oriented(2, 2, std::sqrt(0.5), std::sqrt(0.5), kPi / 4));
-  const maze::ArenaTruth t = maze::rasterise_arena(a, 4, 4, 0.0);
+  const maze::TruthRaster t = maze::rasterise_truth(a, 4, 4, 0.0);
   // The diamond's corners touch (1, 2), (3, 2), (2, 1), (2, 3): the four central cells only.
   CHECK(t.occupied == std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0});
 }
@@ -397,7 +397,7 @@ TEST_CASE("shipped arenas load, validate for their robots, and reach their goals
     CHECK(w.arena().obstacles.size() == s.obstacles);
     REQUIRE(w.arena().goals.size() == 1);
     const maze::Arena &a = w.arena();
-    const maze::ArenaTruth t = maze::rasterise_arena(a, maze::cells_along(a.width_m(), 0.1),
+    const maze::TruthRaster t = maze::rasterise_truth(a, maze::cells_along(a.width_m(), 0.1),
                                                      maze::cells_along(a.height_m(), 0.1), s.robot_radius_m);
     const int gx = static_cast<int>((a.goals[0].x_m - a.x_min_m) / t.cell_x_m);
     const int gy = static_cast<int>((a.goals[0].y_m - a.y_min_m) / t.cell_y_m);

@@ -19,7 +19,7 @@
 
 #include "app/batch/batch.hpp"
 #include "app/cli/cli_options.hpp"
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 #include "app/cli/mms_options.hpp"
 #include "app/cli/option_binding.hpp"
 #include "app/cli/room_options.hpp"

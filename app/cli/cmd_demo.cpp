@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/demo_commands.hpp"

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <memory>
 
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 #include "app/cli/demo_commands.hpp"
 #include "app/course/demo_cone.hpp"
 

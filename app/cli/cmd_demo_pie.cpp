@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 #include "app/cli/demo_commands.hpp"
 #include "app/course/demo_pie.hpp"
 

@@ -12,7 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/model_options.hpp"
 #include "app/cli/option_binding.hpp"

@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 #include "app/cli/cli_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/report/webots_export.hpp"

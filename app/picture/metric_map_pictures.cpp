@@ -25,7 +25,7 @@ constexpr Rgb kPhantomTone{200, 40, 200};
 constexpr Rgb kUnreachableFreeTone{205, 205, 205};
 
 // A cell's verdict: the map's state (never observed, or thresholded) against the truth's.
-Rgb truth_tone(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold, std::size_t n) {
+Rgb truth_tone(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold, std::size_t n) {
   const sensing::MetricCell cell = map.cell_of_index(n);
   const bool occupied = truth.is_occupied(cell.i, cell.j);
   if (map.unobserved_at(n)) return kUnknownTone;
@@ -190,7 +190,7 @@ std::string metric_map_picture(const robot::MetricController &c, const MapTones 
       .encode();
 }
 
-std::string metric_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
+std::string metric_truth_picture(const robot::MetricController &c, const maze::TruthRaster &truth, double threshold,
                                const MetricPictureMarks &marks, const MetricTruthScores &scores, PictureFormat format) {
   const sensing::MetricMap &map = c.map();
   const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });

@@ -28,7 +28,7 @@
 #include "app/picture/drawing.hpp"
 #include "app/picture/map_picture.hpp"
 #include "app/picture/plain_grid_picture.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 #include "mapping/grid_types.hpp"
 #include "robot/metric_controller.hpp"
 #include "sensing/metric_map.hpp"
@@ -63,7 +63,7 @@ struct MetricTruthScores {
 };
 
 // The map scored against `truth` (the same grid), cells at or above `threshold` occupied.
-std::string metric_truth_picture(const robot::MetricController &c, const maze::ArenaTruth &truth, double threshold,
+std::string metric_truth_picture(const robot::MetricController &c, const maze::TruthRaster &truth, double threshold,
                                const MetricPictureMarks &marks, const MetricTruthScores &scores,
                                PictureFormat format = PictureFormat::png);
 

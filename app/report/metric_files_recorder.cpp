@@ -116,6 +116,7 @@ void MetricFilesRecorder::finish(const MetricRunEnd &end) {
   text.caption = marks_.caption;
   text.goal = marks_.goal;
   text.landmarks = marks_.landmarks;
+  text.boundary = marks_.boundary;
   text.body_radius_m = body_radius_m_;
   for (auto &[key, value] : summary_pairs(end.report)) {
     if (key != "wall_time_ms") text.summary.emplace_back(key, value);

@@ -54,6 +54,7 @@ ReplayInput MetricReplayRecorder::input(const MetricReplayText &text) const {
   in.goal_side_m = 4.0 * text.body_radius_m;
   in.body_radius_m = text.body_radius_m;
   in.landmarks = text.landmarks;
+  in.solid_boundary = text.boundary;
   in.title = text.title;
   in.caption = text.caption;
   in.steps = frames_.back().step;

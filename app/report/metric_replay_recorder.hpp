@@ -35,6 +35,7 @@ struct MetricReplayText {
   std::optional<mapping::Point> goal;
   double body_radius_m = 0.0;
   std::vector<LandmarkMark> landmarks;
+  std::optional<PlainGridBounds> boundary;  // the world's floor, walled all round
   std::vector<std::pair<std::string, std::string>> summary;  // the printed summary's lines
 };
 

@@ -115,6 +115,12 @@ void append_marks(std::string &out, const ReplayInput &input) {
   }
   out += ",\"landmarks\":";
   append_ints(out, landmarks);
+  std::vector<long> boundary;
+  if (const std::optional<PlainGridBounds> &b = input.solid_boundary) {
+    boundary = {milli(b->x_min_m - o.x_m), milli(b->y_min_m - o.y_m), milli(b->x_max_m - o.x_m), milli(b->y_max_m - o.y_m)};
+  }
+  out += ",\"boundary_mm\":";
+  append_ints(out, boundary);
 }
 
 void append_summary(std::string &out, const ReplayInput &input) {

@@ -16,7 +16,10 @@
 // tones, the path (each pose's step and x, y in mm from the grid's south-west corner, yaw in
 // mrad counter-clockwise from east), the goals (x, y in mm, a frame "goal_mm" wide), the
 // landmarks (x, y, radius in mm, red, green, blue 0 to 255, or -1, -1, -1 when the world
-// does not give its colour and the page draws it neutral grey: six numbers each), and the
+// does not give its colour and the page draws it neutral grey: six numbers each), the solid
+// boundary ("boundary_mm": x_min, y_min, x_max, y_max in mm, or [] for none: outside it the
+// page draws wall, a band a map cell wide round it and any grid cells past it, in the room
+// pictures' wall colour; the view holds the band and every landmark whole), and the
 // frames: each the last pose it shows, its step, its simulated time in ms (-1 when not
 // known) and the sub-cells that changed since the previous frame, as pairs (gap, value) in
 // ascending flat-index order (OccupancyGrid::index; the first gap is the index itself), the
@@ -36,6 +39,7 @@
 #include <vector>
 
 #include "app/picture/map_picture.hpp"
+#include "app/picture/plain_grid_picture.hpp"
 #include "app/report/grid_history.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
@@ -88,6 +92,9 @@ struct ReplayInput {
   double goal_side_m = 0.0;           // each goal's frame, a side
   double body_radius_m = 0.0;         // the robot's disc; 0: a fixed part of a cell
   std::vector<LandmarkMark> landmarks;
+  // The world's floor when it is walled all round (a room's), in the world frame: drawn as
+  // wall outside. None: the grid alone (a maze's outer walls lie on its cells).
+  std::optional<PlainGridBounds> solid_boundary;
   std::string title;                  // the world
   std::string caption;                // "model cell, K 3"
   std::int64_t steps = 0;             // the run's last step

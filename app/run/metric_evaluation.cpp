@@ -6,7 +6,7 @@
 
 namespace app {
 
-std::size_t score_metric_map(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold,
+std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold,
                            RoomSummary &summary) {
   summary.cells_total = map.size();
   for (std::size_t n = 0; n < map.size(); ++n) {

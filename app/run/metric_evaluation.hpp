@@ -5,7 +5,7 @@
 #include <cstddef>
 
 #include "app/run/metric_run.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 #include "sensing/metric_map.hpp"
 
 namespace app {
@@ -13,7 +13,7 @@ namespace app {
 // The thresholded map against the truth (every cell, the observed ones) and the reachable free
 // cells observed, into `summary`. Returns the first reachable free cell never observed
 // (map.size() when none).
-std::size_t score_metric_map(const sensing::MetricMap &map, const maze::ArenaTruth &truth, double threshold,
+std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold,
                            RoomSummary &summary);
 // Frontier's ending checked against the truth (after score_metric_map): `incomplete` with every
 // reachable free cell observed is `done`; `done` with one never observed (first_left) is

@@ -23,7 +23,7 @@
 #include "common/interrupt.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/world/arena.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 #include "maze/world/world.hpp"
 #include "maze/world/maze.hpp"
 #include "plan/metric_wavefront.hpp"
@@ -152,13 +152,13 @@ robot::MetricOptions room_options_of(const RoomRunOptions &options, const maze::
 // The truth at the map's resolution, over the map's extent (a --resolution that does not
 // divide the boundary reaches past it by less than a cell): reachable where a body clear of
 // the occupied cells can go, the frontier planner's rule on a perfect map.
-maze::ArenaTruth truth_on_grid(const maze::Arena &arena, const sensing::MetricGridSpec &spec,
+maze::TruthRaster truth_on_grid(const maze::Arena &arena, const sensing::MetricGridSpec &spec,
                                const maze::ArenaPose &start_pose, double body_radius_m) {
   maze::Arena on_grid = arena;
   on_grid.x_max_m = spec.boundary.x_end_m;
   on_grid.y_max_m = spec.boundary.y_end_m;
   on_grid.starts = {start_pose};
-  return maze::rasterise_arena(on_grid, spec.cells_x, spec.cells_y, body_radius_m,
+  return maze::rasterise_truth(on_grid, spec.cells_x, spec.cells_y, body_radius_m,
                                maze::TruthClearance::to_occupied_cells);
 }
 
@@ -288,7 +288,7 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
   if (recorder != nullptr) recorder->start(MetricRunStart{options, setup, room, arena, map, start_pose, threshold});
   maze::sim::SimulationOptions sim = options.simulation;
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
-  const maze::ArenaTruth truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
+  const maze::TruthRaster truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
   webots::embedded::Simulation simulation(arena, profile, sim);
 
   // ---- the run ----

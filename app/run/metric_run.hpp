@@ -22,7 +22,7 @@
 #include "app/run/report.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/world/arena.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/metric_controller.hpp"
@@ -71,7 +71,7 @@ struct MetricRunStart {
 // The run as it ended, scored and summarised.
 struct MetricRunEnd {
   const robot::MetricController &controller;
-  const maze::ArenaTruth &truth;  // at the map's resolution
+  const maze::TruthRaster &truth;  // at the map's resolution
   const Report &report;
 };
 

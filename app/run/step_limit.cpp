@@ -8,11 +8,12 @@
 
 namespace app {
 
-std::int64_t steps_within(double time_limit_s, int step_ms) {
-  const double steps = std::floor(time_limit_s * 1000.0 / step_ms);
+std::int64_t steps_to_reach(double time_limit_s, int step_ms) {
+  const double limit_ms = time_limit_s * 1000.0;
   constexpr auto kMost = std::numeric_limits<std::int64_t>::max();
-  if (!(steps < static_cast<double>(kMost))) return kMost;  // inf, or past int64's range
-  return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+  if (!(limit_ms < 9.0e18)) return kMost;  // inf, or past int64's range
+  const std::int64_t ms = std::llround(limit_ms);  // whole ms, as the simulator counts its time
+  return std::max<std::int64_t>(1, ms / step_ms + (ms % step_ms != 0 ? 1 : 0));
 }
 
 void name_step_limit(const RunOptions &options, RunSummary &summary) {
@@ -33,7 +34,7 @@ std::string end_reason_name(const RunSummary &summary) {
 StepLimit step_limit(const RunOptions &options, const maze::Maze &maze) {
   StepLimit limit{options.max_steps.value_or(max_steps_for(maze)), options.max_steps.has_value(), false};
   if (options.time_limit_s) {
-    const std::int64_t timed = steps_within(*options.time_limit_s, options.simulation.basic_time_step_ms);
+    const std::int64_t timed = steps_to_reach(*options.time_limit_s, options.simulation.basic_time_step_ms);
     if (timed < limit.steps) limit = {timed, true, true};
   }
   return limit;

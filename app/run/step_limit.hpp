@@ -10,9 +10,11 @@
 
 namespace app {
 
-// The control steps of `step_ms` that fit in `time_limit_s` simulated seconds, at least 1 and
+// The control steps of `step_ms` it takes simulated time to reach `time_limit_s` (in whole ms):
+// the run ends with the first step at or past the limit, as the simulator's own time limit
+// (SimulationOptions::time_limit_s), a room run's and the Python runner's end it. At least 1,
 // saturating at the largest step count (a limit of 1e300 s or inf is no limit).
-std::int64_t steps_within(double time_limit_s, int step_ms);
+std::int64_t steps_to_reach(double time_limit_s, int step_ms);
 // The step limit in effect for options on maze: --max-steps (or max_steps_for's), lowered to
 // what --time-limit allows.
 struct StepLimit {

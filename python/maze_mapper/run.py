@@ -68,10 +68,13 @@ def _parse(argv):
         p.error(f"unrecognized arguments: {' '.join(rest)} (controller arguments follow --)")
     if args.max_steps < 1:
         p.error(f"--max-steps must be at least 1 (got {args.max_steps})")
+    args.time_limited = False  # whether --time-limit, not --max-steps, bounds the run
     if args.time_limit is not None:
         if not (args.time_limit > 0 and math.isfinite(args.time_limit)):
             p.error(f"--time-limit must be a number of seconds above 0 (got {args.time_limit})")
-        args.max_steps = min(args.max_steps, max(1, math.ceil(args.time_limit * 1000 / _BASIC_STEP_MS - 1e-9)))
+        timed_steps = max(1, math.ceil(args.time_limit * 1000 / _BASIC_STEP_MS - 1e-9))  # the first step at or past it
+        args.time_limited = timed_steps <= args.max_steps
+        args.max_steps = min(args.max_steps, timed_steps)
     if args.wall_limit is not None and not (args.wall_limit > 0 and math.isfinite(args.wall_limit)):
         p.error(f"--wall-limit must be a number of seconds above 0 (got {args.wall_limit})")
     if args.start is not None:
@@ -189,6 +192,19 @@ def _grid_entries(e, world):
         e.both("wrong_sides", f"{n} side{'' if n == 1 else 's'} of visited cells learned wrong: {named}{more}", n)
 
 
+def _ending(args, simulation, controller_end, status):
+    """The run's end and its message, as every run says them: the step limit when the simulation
+    ended there (the controller then left its loop, or stepped on and was ended), else how the
+    controller ended."""
+    if controller.wall_limit_reached:
+        return "wall-clock limit", ""
+    if status == 0 and simulation.steps >= args.max_steps:
+        if args.time_limited:
+            return "time limit", f"{args.time_limit:g} s of simulated time"
+        return "max steps", ""
+    return controller_end, ""
+
+
 def _report(args, world, the_scene, end, wall_time_ms):
     """The run's report entries, in the order every run reports its core keys."""
     simulation = the_scene.simulation
@@ -199,8 +215,9 @@ def _report(args, world, the_scene, end, wall_time_ms):
     e.json_only("strategy", None)
     e.both("robot", simulation.robot_name)
     e.both("seed", str(args.seed), args.seed)
-    e.both("end", end)
-    e.json_only("end_message", "")
+    end, message = end
+    e.both("end", f"{end} ({message})" if message else end, end)
+    e.json_only("end_message", message)
     e.both("steps", str(simulation.steps), simulation.steps)
     e.both("sim_time_s", f"{simulation.time_s:.3f}", simulation.time_s)
     x, y, _, yaw = simulation.pose
@@ -301,8 +318,7 @@ def main(argv=None):
     try:
         end, status = _run_controller(args.controller, controller_args)
         wall_time_ms = (time.perf_counter() - started) * 1000.0
-        if controller.wall_limit_reached:
-            end = "wall-clock limit"
+        end = _ending(args, simulation, end, status)
         sys.stdout.flush()
         entries = _report(args, world, scene.current, end, wall_time_ms)
         sys.stdout.write("\n" + _native.format_entries(entries))

@@ -20,7 +20,7 @@
 #include "app/run/report.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 
 namespace maze_mapper_python {
 
@@ -177,7 +177,7 @@ void write_arena_truth(const fs::path &dir, const maze::World &world, const std:
   grid.cell_h_m = a.height_m() / grid.cells_y;
   grid.axes_in_metres = true;
   grid.solid_boundary = app::PlainGridBounds{a.x_min_m, a.x_max_m, a.y_min_m, a.y_max_m};
-  const maze::ArenaTruth truth = maze::rasterise_arena(a, grid.cells_x, grid.cells_y, 0.0);
+  const maze::TruthRaster truth = maze::rasterise_truth(a, grid.cells_x, grid.cells_y, 0.0);
   grid.tones.resize(truth.occupied.size());
   for (std::size_t i = 0; i < grid.tones.size(); ++i) grid.tones[i] = truth.occupied[i] != 0 ? app::kInk : app::kWhite;
   const std::vector<app::LandmarkMark> landmarks = app::landmark_marks(a);

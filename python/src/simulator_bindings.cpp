@@ -317,7 +317,7 @@ void bind_simulator(py::module_ &m) {
           py::arg("noise") = py::none(), py::arg("max_steps") = 0,
           "The course's empty floor (17 x 17 m centred on the origin), the robot at the origin facing north: "
           "the world a supervisor fills.")
-      .def_property_readonly("in_arena", [](const PySimulation &s) { return s.simulation().in_arena(); })
+      .def_property_readonly("in_arena", [](const PySimulation &s) { return s.simulation().on_solid_geometry(); })
       .def(
           "add_box",
           [](PySimulation &s, double cx, double cy, double half_length, double half_width, double angle) {

@@ -88,7 +88,7 @@ def test_step_returns_minus_one_when_the_simulation_ends(controller_file):
     assert status == 0, err
     assert "steps 49 ['--size', '4x4']" in out.splitlines()
     summary = summary_of(out)
-    assert summary["end"] == "simulation ended" and summary["steps"] == "50"
+    assert summary["end"] == "max steps" and summary["steps"] == "50"
 
 
 def test_the_truth_is_not_in_the_controllers_reach(controller_file):

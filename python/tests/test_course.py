@@ -177,7 +177,18 @@ def test_a_spinning_controller_ends_cleanly_at_the_time_limit(controller_file):
     status, out, err = run_controller(path, "--time-limit", "2")
     assert status == 0, err
     summary = summary_of(out)
-    assert summary["end"] == "simulation ended" and summary["sim_time_s"] == "2.016"
+    assert summary["end"] == "time limit (2 s of simulated time)" and summary["sim_time_s"] == "2.016"
+
+
+def test_a_controller_that_leaves_its_loop_at_the_time_limit_ends_there_as_every_run_does(controller_file):
+    path = controller_file("from controller import Robot\nr = Robot()\nwhile r.step(32) != -1:\n    pass\n")
+    status, out, err = run_controller(path, "--time-limit", "2")
+    assert status == 0, err
+    summary = summary_of(out)
+    assert summary["end"] == "time limit (2 s of simulated time)" and summary["steps"] == "63"
+    status, out, err = run_controller(path, "--max-steps", "10")
+    assert status == 0, err
+    assert summary_of(out)["end"] == "max steps"
 
 
 def test_the_wall_clock_limit_ends_a_long_run(controller_file):

@@ -108,7 +108,7 @@ def test_a_class_of_students_runs_over_worlds_and_starts_with_goal_and_map_colum
     assert 0.6 < float(alice[1]["final_y"]) < 0.75  # from (0.75, -0.75) into the goal cell (3,3)
     assert rows[4]["error"] == "RuntimeError: lost"
     carol = rows[8:]
-    assert {r["end"] for r in carol} == {"simulation ended"} and {r["sim_time_s"] for r in carol} == {"2.016"}
+    assert {r["end"] for r in carol} == {"time limit"} and {r["sim_time_s"] for r in carol} == {"2.016"}
     lines = done.stdout.splitlines()
     assert lines[0].split() == ["student", "finished", "goal", "reached", "mean", "time", "coverage", "wall",
                                 "accuracy", "collisions", "first", "failure"]

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 
 namespace maze {
 
@@ -36,7 +36,7 @@ std::string draw_arena(const Arena &arena, double resolution_m) {
   }
   const int nx = cells_along(arena.width_m(), resolution_m);
   const int ny = cells_along(arena.height_m(), resolution_m);
-  const ArenaTruth t = rasterise_arena(arena, nx, ny, 0.0);
+  const TruthRaster t = rasterise_truth(arena, nx, ny, 0.0);
   std::vector<std::string> cells(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
   for (int y = 0; y < ny; ++y) {
     for (int x = 0; x < nx; ++x) cells[t.index(x, y)] = t.is_occupied(x, y) ? "##" : "  ";

@@ -1,6 +1,6 @@
 #pragma once
 // The tolerances the simulator's two geometries share (WallGrid for a maze's walls,
-// ArenaGeometry for an arena's rectangles and segments), so a body touches a wall the same
+// SolidGeometry for an arena's rectangles and segments), so a body touches a wall the same
 // way in both. Private to maze/src/sim.
 
 #include <limits>

@@ -112,7 +112,7 @@ void check_pose_free(const WallGrid &walls, const Pose &pose) {
   }
 }
 
-void check_pose_free(const ArenaGeometry &solids, const Pose &pose) {
+void check_pose_free(const SolidGeometry &solids, const Pose &pose) {
   if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.yaw_rad)) {
     throw common::InputError("the pose must be finite numbers");
   }
@@ -217,16 +217,16 @@ float LidarModel::beam_range(const Solids &walls, double noise, const ViewpointI
 // The lidar for both kinds of solids.
 template void LidarModel::range_image<WallGrid>(const WallGrid &, double, const Pose &, common::Rng &,
                                                 std::span<float>) const;
-template void LidarModel::range_image<ArenaGeometry>(const ArenaGeometry &, double, const Pose &, common::Rng &,
+template void LidarModel::range_image<SolidGeometry>(const SolidGeometry &, double, const Pose &, common::Rng &,
                                                      std::span<float>) const;
 template ViewpointIn<WallGrid> LidarModel::viewpoint<WallGrid>(const WallGrid &, const Pose &);
-template ViewpointIn<ArenaGeometry> LidarModel::viewpoint<ArenaGeometry>(const ArenaGeometry &, const Pose &);
+template ViewpointIn<SolidGeometry> LidarModel::viewpoint<SolidGeometry>(const SolidGeometry &, const Pose &);
 template float LidarModel::beam_range<WallGrid>(const WallGrid &, double, const ViewpointIn<WallGrid> &, int,
                                                 std::uint64_t) const;
-template float LidarModel::beam_range<ArenaGeometry>(const ArenaGeometry &, double,
-                                                     const ViewpointIn<ArenaGeometry> &, int, std::uint64_t) const;
+template float LidarModel::beam_range<SolidGeometry>(const SolidGeometry &, double,
+                                                     const ViewpointIn<SolidGeometry> &, int, std::uint64_t) const;
 
-RayHit cast_hit(const ArenaGeometry &solids, double x_m, double y_m, double angle_rad, double max_range_m) {
+RayHit cast_hit(const SolidGeometry &solids, double x_m, double y_m, double angle_rad, double max_range_m) {
   RayHit hit{0.0, 0.0, 0.0};
   hit.distance_m = solids.cast_from(solids.cast_origin(x_m, y_m), std::cos(angle_rad), std::sin(angle_rad),
                                     max_range_m, &hit.normal_x, &hit.normal_y);
@@ -333,7 +333,7 @@ double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor
   return sensor_distance_in(walls, sensor, body_radius_m, pose);
 }
 
-double sensor_distance_m(const ArenaGeometry &solids, const DistanceSensorSpec &sensor, double body_radius_m,
+double sensor_distance_m(const SolidGeometry &solids, const DistanceSensorSpec &sensor, double body_radius_m,
                          const Pose &pose) {
   return sensor_distance_in(solids, sensor, body_radius_m, pose);
 }
@@ -350,7 +350,7 @@ double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &se
   return lookup_reading(sensor.lookup_table, sensor_distance_m(walls, sensor, body_radius_m, pose), noisy, rng);
 }
 
-double distance_sensor_value(const ArenaGeometry &solids, const DistanceSensorSpec &sensor,
+double distance_sensor_value(const SolidGeometry &solids, const DistanceSensorSpec &sensor,
                              double body_radius_m, const Pose &pose, bool noisy, common::Rng &rng) {
   return lookup_reading(sensor.lookup_table, sensor_distance_m(solids, sensor, body_radius_m, pose), noisy, rng);
 }
@@ -360,7 +360,7 @@ bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body
   return bumper_pressed_in(walls, bumper, body_radius_m, pose);
 }
 
-bool bumper_pressed(const ArenaGeometry &solids, const BumperSpec &bumper, double body_radius_m,
+bool bumper_pressed(const SolidGeometry &solids, const BumperSpec &bumper, double body_radius_m,
                     const Pose &pose) {
   return bumper_pressed_in(solids, bumper, body_radius_m, pose);
 }

@@ -153,7 +153,7 @@ void Simulation::set_up() {
   });
   if (overlaps) {
     throw common::InputError(fmt::format("the robot's body (radius {} m) overlaps {} at ({}, {})",
-                                         profile_.body_radius_m, arena_ ? "an obstacle" : "a wall", pose_.x_m,
+                                         profile_.body_radius_m, solids_ ? "an obstacle" : "a wall", pose_.x_m,
                                          pose_.y_m));
   }
   for (const maze::sim::LidarSpec &spec : profile_.lidars) {

@@ -26,7 +26,7 @@ void require_finite_value(double value, const char *what) {
 }  // namespace
 
 void Simulation::use_geometry(maze::Arena geometry) {
-  arena_.emplace(geometry);
+  solids_.emplace(geometry);
   geometry_ = std::move(geometry);
 }
 
@@ -71,7 +71,7 @@ void Simulation::reset_world() {
   if (initial_geometry_) {
     use_geometry(*initial_geometry_);
   } else {
-    arena_.reset();
+    solids_.reset();
     geometry_.reset();
   }
   teleport(initial_pose_, 0.0);

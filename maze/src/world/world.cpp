@@ -13,7 +13,7 @@
 #include "maze/formats/room_format.hpp"
 #include "maze/formats/xml_arena.hpp"
 #include "maze/formats/xml_format.hpp"
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 #include "maze/world/validate.hpp"
 
 namespace maze {
@@ -267,7 +267,7 @@ void apply_default_boundary(Arena &arena) {
   }
   const int nx = cells_along(enclosed.width_m(), kEnclosureCell_m);
   const int ny = cells_along(enclosed.height_m(), kEnclosureCell_m);
-  const ArenaTruth truth = rasterise_arena(enclosed, nx, ny, 0.0);
+  const TruthRaster truth = rasterise_truth(enclosed, nx, ny, 0.0);
   bool open = false;
   for (int x = 0; x < nx && !open; ++x) open = truth.is_reachable(x, 0) || truth.is_reachable(x, ny - 1);
   for (int y = 0; y < ny && !open; ++y) open = truth.is_reachable(0, y) || truth.is_reachable(nx - 1, y);

@@ -1,5 +1,5 @@
 #pragma once
-// An arena drawn as text for `show`: its truth on a grid of square cells (arena_truth.hpp,
+// An arena drawn as text for `show`: its truth on a grid of square cells (truth_raster.hpp,
 // occupied by any overlap), north up, two characters a cell so the drawing keeps its shape
 // in a terminal:
 //

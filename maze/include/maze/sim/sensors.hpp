@@ -11,7 +11,7 @@
 
 #include "common/random.hpp"
 #include "maze/sim/profile.hpp"
-#include "maze/sim/arena_geometry.hpp"
+#include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/wall_grid.hpp"
 
 namespace maze::sim {
@@ -35,10 +35,10 @@ std::uint64_t beam_seed(std::uint64_t seed, int device, std::int64_t step, int b
 // Throws common::InputError when the point is outside the maze or inside a wall.
 void check_pose_free(const WallGrid &walls, const Pose &pose);
 // Likewise in an arena: outside the boundary or inside an obstacle.
-void check_pose_free(const ArenaGeometry &solids, const Pose &pose);
+void check_pose_free(const SolidGeometry &solids, const Pose &pose);
 
-// Every function below that takes the solids takes a WallGrid (a maze) or an ArenaGeometry
-// (an arena): the same code, compiled for each (sensors.cpp instantiates both), so a maze's
+// Every function below that takes the solids takes a WallGrid (a maze) or a SolidGeometry
+// (any other world's solids): the same code, compiled for each (sensors.cpp instantiates both), so a maze's
 // ray never pays for a choice between them.
 
 // The direction of lidar beam i relative to the heading, as Webots points it: a rotating
@@ -129,7 +129,7 @@ struct RayHit {
 RayHit cast_hit(const WallGrid &walls, double x_m, double y_m, double angle_rad, double max_range_m);
 // In an arena: the normal of the face met (any direction: obstacles may be rotated; the
 // boundary's inward normal).
-RayHit cast_hit(const ArenaGeometry &solids, double x_m, double y_m, double angle_rad, double max_range_m);
+RayHit cast_hit(const SolidGeometry &solids, double x_m, double y_m, double angle_rad, double max_range_m);
 
 // A sonar ray whose angle of incidence on the surface is pi / 8 or more never returns
 // (Webots: "outside the reflexion cone of aperture 45 degrees").
@@ -152,7 +152,7 @@ std::vector<double> ray_weights(const DistanceSensorSpec &sensor);
 // those whose incidence is below kSonarMaxIncidence_rad; the range when every ray is lost.
 double sensor_distance_m(const WallGrid &walls, const DistanceSensorSpec &sensor, double body_radius_m,
                          const Pose &pose);
-double sensor_distance_m(const ArenaGeometry &solids, const DistanceSensorSpec &sensor, double body_radius_m,
+double sensor_distance_m(const SolidGeometry &solids, const DistanceSensorSpec &sensor, double body_radius_m,
                          const Pose &pose);
 // The lookup table's response at distance_m (lookup_value) and, when noisy, plus Gaussian
 // noise of standard deviation noise fraction x value (Webots: v (1 + noise N(0, 1))); one
@@ -162,7 +162,7 @@ double lookup_reading(const std::vector<LookupRow> &table, double distance_m, bo
 double distance_sensor_value(const WallGrid &walls, const DistanceSensorSpec &sensor,
                              double body_radius_m, const Pose &pose, bool noisy,
                              common::Rng &rng);
-double distance_sensor_value(const ArenaGeometry &solids, const DistanceSensorSpec &sensor,
+double distance_sensor_value(const SolidGeometry &solids, const DistanceSensorSpec &sensor,
                              double body_radius_m, const Pose &pose, bool noisy, common::Rng &rng);
 
 // Whether a bumper of a round body of body_radius_m touches a wall (a wall surface within
@@ -170,7 +170,7 @@ double distance_sensor_value(const ArenaGeometry &solids, const DistanceSensorSp
 inline constexpr double kContactTolerance_m = 1e-4;
 bool bumper_pressed(const WallGrid &walls, const BumperSpec &bumper, double body_radius_m,
                     const Pose &pose);
-bool bumper_pressed(const ArenaGeometry &solids, const BumperSpec &bumper, double body_radius_m,
+bool bumper_pressed(const SolidGeometry &solids, const BumperSpec &bumper, double body_radius_m,
                     const Pose &pose);
 
 }  // namespace maze::sim

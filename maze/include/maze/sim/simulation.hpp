@@ -37,7 +37,7 @@
 #include "maze/world/arena.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/world/world.hpp"
-#include "maze/sim/arena_geometry.hpp"
+#include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/lidar_sweep.hpp"
 #include "maze/sim/sensors.hpp"
@@ -124,7 +124,7 @@ struct Collisions {
 class Simulation {
  public:
   // The robot in a world (a maze's, an arena's: the next two): a lattice without landmarks on
-  // its wall grid (WallGrid), any other world on its geometry (ArenaGeometry). Starts at
+  // its wall grid (WallGrid), any other world on its geometry (SolidGeometry). Starts at
   // options.start, else the world's; throws common::InputError for bad options or start.
   using Profile = maze::sim::RobotProfile;
   using Options = maze::sim::SimulationOptions;
@@ -137,10 +137,10 @@ class Simulation {
 
   Robot &robot() { return *robot_; }
   const maze::sim::RobotProfile &profile() const { return profile_; }
-  // The solids: a lattice's wall grid (only while not in_arena()), else the geometry's.
-  bool in_arena() const { return arena_.has_value(); }
+  // The solids: a lattice's wall grid (only while not on_solid_geometry()), else the geometry's.
+  bool on_solid_geometry() const { return solids_.has_value(); }
   const maze::sim::WallGrid &walls() const { return *walls_; }
-  const maze::sim::ArenaGeometry &arena_solids() const { return *arena_; }
+  const maze::sim::SolidGeometry &solid_geometry() const { return *solids_; }
 
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
@@ -207,14 +207,14 @@ class Simulation {
   void add_device(const std::string &name, Kind kind, int spec);
   // The constructors' shared part, once the solids are set.
   void set_up();
-  // The solids from now on: the geometry's (ArenaGeometry), kept as geometry_.
+  // The solids from now on: the geometry's (SolidGeometry), kept as geometry_.
   void use_geometry(maze::Arena geometry);
-  // The arena's solids built again from geometry_ after a supervisor's edit.
+  // The solids built again from geometry_ after a supervisor's edit.
   void rebuild_solids();
-  // f(the solids): the one choice between a maze and an arena, made once per query.
+  // f(the solids): the one choice between the wall grid and the geometry, made once per query.
   template <typename F>
   decltype(auto) with_solids(F &&f) const {
-    return !arena_ ? f(*walls_) : f(*arena_);
+    return !solids_ ? f(*walls_) : f(*solids_);
   }
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
@@ -249,9 +249,9 @@ class Simulation {
   maze::sim::RobotProfile profile_;
   maze::sim::SimulationOptions options_;
   std::optional<maze::Maze> lattice_;                // the world's lattice, simulated on walls_
-  std::optional<maze::sim::WallGrid> walls_;         // while arena_ is empty
-  std::optional<maze::sim::ArenaGeometry> arena_;    // the geometry's solids, when in use
-  std::optional<maze::Arena> geometry_;              // the geometry arena_ is built from
+  std::optional<maze::sim::WallGrid> walls_;         // while solids_ is empty
+  std::optional<maze::sim::SolidGeometry> solids_;    // the geometry's solids, when in use
+  std::optional<maze::Arena> geometry_;              // the geometry solids_ is built from
   std::optional<maze::Arena> initial_geometry_;      // and as the world began (none: on walls_)
   maze::sim::Pose initial_pose_;
   double height_m_ = 0.0;                           // the robot's origin above the floor

@@ -1,4 +1,4 @@
-// The simulator's geometry for arenas (ArenaGeometry) against hand-computed distances,
+// The simulator's geometry for arenas (SolidGeometry) against hand-computed distances,
 // normals and contacts, against its own brute force on random arenas, and the embedded
 // simulation's devices and collisions in an arena.
 #include <doctest/doctest.h>
@@ -21,7 +21,7 @@
 #include "maze/world/arena.hpp"
 #include "maze/generate/arena_generator.hpp"
 #include "maze/formats/room_format.hpp"
-#include "maze/sim/arena_geometry.hpp"
+#include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
@@ -44,7 +44,7 @@ struct Hit {
   double t, nx, ny;
 };
 
-Hit cast(const maze::sim::ArenaGeometry &g, double x, double y, double angle) {
+Hit cast(const maze::sim::SolidGeometry &g, double x, double y, double angle) {
   Hit h{0, 0, 0};
   h.t = g.cast_from(g.cast_origin(x, y), std::cos(angle), std::sin(angle), 50.0, &h.nx, &h.ny);
   return h;
@@ -70,7 +70,7 @@ maze::sim::SimulationOptions at(double x, double y, double yaw) {
 }  // namespace
 
 TEST_CASE("arena geometry: casts meet boxes, rotated rectangles and the boundary where drawn") {
-  const maze::sim::ArenaGeometry g(two_obstacles());
+  const maze::sim::SolidGeometry g(two_obstacles());
   // East from (1, 5): the box's west face at x = 4.
   Hit h = cast(g, 1, 5, 0);
   CHECK(h.t == 3.0);
@@ -104,7 +104,7 @@ TEST_CASE("arena geometry: casts meet boxes, rotated rectangles and the boundary
 }
 
 TEST_CASE("arena geometry: contacts and push-out, along the contact normal") {
-  const maze::sim::ArenaGeometry g(two_obstacles());
+  const maze::sim::SolidGeometry g(two_obstacles());
   // A disc of 0.1 m at (3.9, 5) touches the box's west face at (4, 5).
   const std::vector<maze::sim::Contact> touching = g.contacts(3.9, 5, 0.1 + 1e-6);
   REQUIRE(touching.size() == 1);
@@ -148,7 +148,7 @@ TEST_CASE("arena geometry: the bucket walk gives the brute force's answers on ra
     gen.height_m = 9;
     gen.obstacles = 30;
     gen.rotated = seed % 2 == 0;
-    const maze::sim::ArenaGeometry g(maze::generate_arena(gen));
+    const maze::sim::SolidGeometry g(maze::generate_arena(gen));
     common::Rng rng(seed);
     int hits = 0;
     for (int i = 0; i < 3000; ++i) {
@@ -184,7 +184,7 @@ TEST_CASE("Simulation in an arena: lidar, GPS, IMU, bumpers, distance sensors an
   const maze::Arena arena = two_obstacles();
   // Facing east at (3, 5): the box's face 1 m ahead, the boundary 3 m behind.
   webots::embedded::Simulation sim(arena, test_robot(), at(3, 5, 0));
-  CHECK(sim.in_arena());
+  CHECK(sim.on_solid_geometry());
   webots::Robot &robot = sim.robot();
   webots::Lidar *lidar = robot.getLidar("lidar");
   REQUIRE(lidar != nullptr);
@@ -237,7 +237,7 @@ TEST_CASE("Simulation in an arena: distance sensors read what sensor_distance_m 
     CAPTURE(name);
     const maze::sim::RobotProfile &profile = maze::sim::find_profile(name);
     webots::embedded::Simulation sim(arena, profile, at(3.5, 5, 0));
-    const maze::sim::ArenaGeometry solids(arena);
+    const maze::sim::SolidGeometry solids(arena);
     for (const maze::sim::DistanceSensorSpec &spec : profile.distance_sensors) {
       webots::DistanceSensor *d = sim.robot().getDistanceSensor(spec.name);
       REQUIRE(d != nullptr);
@@ -274,7 +274,7 @@ TEST_CASE("Simulation in an arena: a rotating lidar sweeps the arena's solids") 
 TEST_CASE("arena geometry: a disc meets rays on its circle, holds bodies out and agrees with the brute force") {
   maze::Arena a = maze::read_room("boundary 0 10 0 10\nstart 1 1 0\n", "f");
   a.discs.push_back({5, 5, 0.25});
-  const maze::sim::ArenaGeometry g(a);
+  const maze::sim::SolidGeometry g(a);
   // East from (1, 5): the circle at x = 4.75, its outward normal (-1, 0).
   Hit h = cast(g, 1, 5, 0);
   CHECK(h.t == doctest::Approx(3.75));
@@ -363,13 +363,13 @@ TEST_CASE("Simulation in a maze: a solid added is seen at once, and gone after a
   webots::embedded::Simulation sim(m, test_robot(), {});
   const double to_wall_m = 1.5 - maze::kDefaultWallThickness_m / 2;
   CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(to_wall_m));
-  CHECK_FALSE(sim.in_arena());
+  CHECK_FALSE(sim.on_solid_geometry());
   sim.add_disc({1.5, 0.5, 0.1});
-  CHECK(sim.in_arena());  // the maze's geometry from then on
+  CHECK(sim.on_solid_geometry());  // the maze's geometry from then on
   CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(0.9));
   CHECK(sim.cast(0.5, 0.5, 1.5707963267948966, 10.0) == doctest::Approx(to_wall_m));  // the walls as ever
   sim.reset_world();
-  CHECK_FALSE(sim.in_arena());
+  CHECK_FALSE(sim.on_solid_geometry());
   CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(to_wall_m));
 }
 

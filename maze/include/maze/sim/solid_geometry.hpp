@@ -1,10 +1,11 @@
 #pragma once
-// An arena's solids for ray casting and collisions: the simulator's geometry for arenas, with
-// WallGrid's queries (wall_grid.hpp) so the same sensor and motion code runs on both.
+// A world's solids for ray casting and collisions (World::geometry(): an arena's own, a
+// maze's walls as capped rectangles and its landmarks as cylinders), with WallGrid's queries
+// (wall_grid.hpp) so the same sensor and motion code runs on both. The simulator runs a maze
+// without landmarks on its WallGrid and every other world on this.
 //
-// The solids are the arena's obstacles (closed oriented rectangles), its discs (closed
-// circles: upright cylinders) and its boundary, walled
-// all round: outside the boundary is solid, as the walls of a Webots RectangleArena make it.
+// The solids are the geometry's obstacles (closed oriented rectangles), its discs (closed
+// circles: upright cylinders) and its boundary, walled all round: outside the boundary is solid, as the walls of a Webots RectangleArena make it.
 // A uniform grid of buckets covers the boundary, each listing the obstacles that touch it
 // (built once, O(obstacles x the buckets each covers)):
 //
@@ -26,10 +27,10 @@
 
 namespace maze::sim {
 
-class ArenaGeometry {
+class SolidGeometry {
  public:
-  // The arena must have a non-empty boundary (validate_arena).
-  explicit ArenaGeometry(const Arena &arena);
+  // The geometry must have a non-empty boundary (validate_arena).
+  explicit SolidGeometry(const Arena &geometry);
 
   double x_min_m() const { return x_min_m_; }
   double y_min_m() const { return y_min_m_; }

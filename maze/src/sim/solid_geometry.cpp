@@ -1,4 +1,4 @@
-#include "maze/sim/arena_geometry.hpp"
+#include "maze/sim/solid_geometry.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -60,7 +60,7 @@ bool touches(const Obstacle &o, double x0, double y0, double x1, double y1) {
 
 }  // namespace
 
-ArenaGeometry::ArenaGeometry(const Arena &arena)
+SolidGeometry::SolidGeometry(const Arena &arena)
     : x_min_m_(arena.x_min_m), y_min_m_(arena.y_min_m), x_max_m_(arena.x_max_m), y_max_m_(arena.y_max_m) {
   assert(x_max_m_ > x_min_m_ && y_max_m_ > y_min_m_);
   const double side = std::max(x_max_m_ - x_min_m_, y_max_m_ - y_min_m_);
@@ -100,19 +100,19 @@ ArenaGeometry::ArenaGeometry(const Arena &arena)
   }
 }
 
-int ArenaGeometry::bucket_of_x(double x_m) const {
+int SolidGeometry::bucket_of_x(double x_m) const {
   return std::clamp(static_cast<int>(std::floor((x_m - x_min_m_) / bucket_m_)), 0, nx_ - 1);
 }
 
-int ArenaGeometry::bucket_of_y(double y_m) const {
+int SolidGeometry::bucket_of_y(double y_m) const {
   return std::clamp(static_cast<int>(std::floor((y_m - y_min_m_) / bucket_m_)), 0, ny_ - 1);
 }
 
-bool ArenaGeometry::inside_bounds(double x_m, double y_m) const {
+bool SolidGeometry::inside_bounds(double x_m, double y_m) const {
   return x_m >= x_min_m_ && x_m <= x_max_m_ && y_m >= y_min_m_ && y_m <= y_max_m_;
 }
 
-bool ArenaGeometry::inside_solid(double x_m, double y_m) const {
+bool SolidGeometry::inside_solid(double x_m, double y_m) const {
   if (!inside_bounds(x_m, y_m)) return true;
   const std::size_t b = bucket_index(bucket_of_x(x_m), bucket_of_y(y_m));
   for (std::uint32_t i = first_[b]; i < first_[b + 1]; ++i) {
@@ -132,11 +132,11 @@ bool ArenaGeometry::inside_solid(double x_m, double y_m) const {
   return false;
 }
 
-ArenaGeometry::CastOrigin ArenaGeometry::cast_origin(double x_m, double y_m) const {
+SolidGeometry::CastOrigin SolidGeometry::cast_origin(double x_m, double y_m) const {
   return {x_m, y_m, bucket_of_x(x_m), bucket_of_y(y_m), inside_bounds(x_m, y_m)};
 }
 
-double ArenaGeometry::disc_entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx,
+double SolidGeometry::disc_entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx,
                                  double &ny) {
   const double px = ox - k.cx;
   const double py = oy - k.cy;
@@ -156,7 +156,7 @@ double ArenaGeometry::disc_entry(const Solid &k, double ox, double oy, double dx
   return t;
 }
 
-double ArenaGeometry::entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx,
+double SolidGeometry::entry(const Solid &k, double ox, double oy, double dx, double dy, double &nx,
                             double &ny) const {
   if (k.disc) return disc_entry(k, ox, oy, dx, dy, nx, ny);
   double t_in = 0.0;
@@ -211,7 +211,7 @@ double ArenaGeometry::entry(const Solid &k, double ox, double oy, double dx, dou
   return t_in;
 }
 
-double ArenaGeometry::cast_from(const CastOrigin &origin, double dx, double dy, double max_range_m,
+double SolidGeometry::cast_from(const CastOrigin &origin, double dx, double dy, double max_range_m,
                                 double *normal_x, double *normal_y) const {
   double nx = 0.0;
   double ny = 0.0;
@@ -268,15 +268,15 @@ double ArenaGeometry::cast_from(const CastOrigin &origin, double dx, double dy, 
   return answer(boundary_t);
 }
 
-double ArenaGeometry::cast_direction(double x_m, double y_m, double dx, double dy, double max_range_m) const {
+double SolidGeometry::cast_direction(double x_m, double y_m, double dx, double dy, double max_range_m) const {
   return cast_from(cast_origin(x_m, y_m), dx, dy, max_range_m);
 }
 
-double ArenaGeometry::cast(double x_m, double y_m, double angle_rad, double max_range_m) const {
+double SolidGeometry::cast(double x_m, double y_m, double angle_rad, double max_range_m) const {
   return cast_direction(x_m, y_m, std::cos(angle_rad), std::sin(angle_rad), max_range_m);
 }
 
-double ArenaGeometry::cast_brute_force(double x_m, double y_m, double dx, double dy, double max_range_m) const {
+double SolidGeometry::cast_brute_force(double x_m, double y_m, double dx, double dy, double max_range_m) const {
   if (!inside_bounds(x_m, y_m)) return kInfinity;
   const double exit_x = dx > 0.0 ? (x_max_m_ - x_m) / dx : dx < 0.0 ? (x_min_m_ - x_m) / dx : kInfinity;
   const double exit_y = dy > 0.0 ? (y_max_m_ - y_m) / dy : dy < 0.0 ? (y_min_m_ - y_m) / dy : kInfinity;
@@ -289,7 +289,7 @@ double ArenaGeometry::cast_brute_force(double x_m, double y_m, double dx, double
   return best <= max_range_m ? best : kInfinity;
 }
 
-std::vector<std::uint32_t> ArenaGeometry::near(double x0, double y0, double x1, double y1) const {
+std::vector<std::uint32_t> SolidGeometry::near(double x0, double y0, double x1, double y1) const {
   std::vector<std::uint32_t> found;
   for (int by = bucket_of_y(y0); by <= bucket_of_y(y1); ++by) {
     for (int bx = bucket_of_x(x0); bx <= bucket_of_x(x1); ++bx) {
@@ -311,7 +311,7 @@ struct Near {
 
 }  // namespace
 
-bool ArenaGeometry::push_out(double &x_m, double &y_m, double radius_m) const {
+bool SolidGeometry::push_out(double &x_m, double &y_m, double radius_m) const {
   bool moved = false;
   for (int pass = 0; pass < 4; ++pass) {
     bool moved_this_pass = false;
@@ -371,7 +371,7 @@ bool ArenaGeometry::push_out(double &x_m, double &y_m, double radius_m) const {
   return moved;
 }
 
-std::optional<Box> ArenaGeometry::free_centres(double x_m, double y_m, double radius_m) const {
+std::optional<Box> SolidGeometry::free_centres(double x_m, double y_m, double radius_m) const {
   if (!inside_bounds(x_m, y_m)) return std::nullopt;
   const int bx = bucket_of_x(x_m);
   const int by = bucket_of_y(y_m);
@@ -395,7 +395,7 @@ std::optional<Box> ArenaGeometry::free_centres(double x_m, double y_m, double ra
   return box;
 }
 
-std::vector<Contact> ArenaGeometry::contacts(double x_m, double y_m, double reach_m) const {
+std::vector<Contact> SolidGeometry::contacts(double x_m, double y_m, double reach_m) const {
   std::vector<Contact> out;
   for (const std::uint32_t index : near(x_m - reach_m, y_m - reach_m, x_m + reach_m, y_m + reach_m)) {
     const Solid &k = solids_[index];

@@ -1,4 +1,4 @@
-#include "maze/world/arena_truth.hpp"
+#include "maze/world/truth_raster.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,13 +59,13 @@ namespace {
 
 // The grid over the arena's boundary, nothing marked yet. Throws common::InputError for a
 // grid of no cells or over kMaxTruthCells.
-ArenaTruth empty_truth(const Arena &arena, int cells_x, int cells_y) {
+TruthRaster empty_truth(const Arena &arena, int cells_x, int cells_y) {
   if (cells_x < 1 || cells_y < 1 ||
       static_cast<double>(cells_x) * static_cast<double>(cells_y) > static_cast<double>(kMaxTruthCells)) {
     throw common::InputError(fmt::format("a grid of {} x {} cells is too fine: at most {} cells", cells_x, cells_y,
                                          kMaxTruthCells));
   }
-  ArenaTruth t;
+  TruthRaster t;
   t.cells_x = cells_x;
   t.cells_y = cells_y;
   t.x_min_m = arena.x_min_m;
@@ -81,7 +81,7 @@ ArenaTruth empty_truth(const Arena &arena, int cells_x, int cells_y) {
 // Marks the occupied cells (and counts them and the free ones); returns the cells the
 // robot's centre cannot stand in (occupied, or within its radius of an obstacle or of the
 // boundary).
-std::vector<std::uint8_t> mark_obstacles(const Arena &arena, ArenaTruth &t, double robot_radius_m) {
+std::vector<std::uint8_t> mark_obstacles(const Arena &arena, TruthRaster &t, double robot_radius_m) {
   const int cells_x = t.cells_x;
   const int cells_y = t.cells_y;
   const std::size_t n = t.occupied.size();
@@ -147,7 +147,7 @@ std::vector<std::uint8_t> mark_obstacles(const Arena &arena, ArenaTruth &t, doub
 }
 
 // The cells the robot's centre reaches from the start's cell, 4-connected over unblocked cells.
-std::vector<std::uint8_t> reachable_centres(const Arena &arena, const ArenaTruth &t,
+std::vector<std::uint8_t> reachable_centres(const Arena &arena, const TruthRaster &t,
                                             const std::vector<std::uint8_t> &blocked) {
   const int cells_x = t.cells_x;
   const int cells_y = t.cells_y;
@@ -178,7 +178,7 @@ std::vector<std::uint8_t> reachable_centres(const Arena &arena, const ArenaTruth
 }
 
 // Marks reachable the free cells the robot's body covers from the centres it reaches.
-void mark_reachable_body(ArenaTruth &t, const std::vector<std::uint8_t> &centres, double robot_radius_m) {
+void mark_reachable_body(TruthRaster &t, const std::vector<std::uint8_t> &centres, double robot_radius_m) {
   const int cells_x = t.cells_x;
   const int cells_y = t.cells_y;
   const std::size_t n = t.occupied.size();
@@ -231,9 +231,9 @@ void mark_reachable_body(ArenaTruth &t, const std::vector<std::uint8_t> &centres
 
 }  // namespace
 
-ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m,
+TruthRaster rasterise_truth(const Arena &arena, int cells_x, int cells_y, double robot_radius_m,
                            TruthClearance clearance) {
-  ArenaTruth t = empty_truth(arena, cells_x, cells_y);
+  TruthRaster t = empty_truth(arena, cells_x, cells_y);
   std::vector<std::uint8_t> blocked = mark_obstacles(arena, t, robot_radius_m);
   if (clearance == TruthClearance::to_occupied_cells) {
     blocked = common::cells_without_clearance(cells_x, cells_y, t.cell_x_m, robot_radius_m,

@@ -1,7 +1,8 @@
 #pragma once
-// The truth of an arena on a grid, for scoring a map of it and for the loader's boundary rule.
+// The truth of a world's geometry (World::geometry()) on a grid, for scoring a metric map of it
+// and for the loader's boundary rule.
 //
-// The grid: cells_x x cells_y cells over the arena's boundary, cell (x, y) column x from the
+// The grid: cells_x x cells_y cells over the geometry's boundary, cell (x, y) column x from the
 // west, row y from the south (the conventions), each (x_max - x_min) / cells_x by
 // (y_max - y_min) / cells_y metres.
 //   - occupied: a cell is occupied when an obstacle or a disc (a landmark's cylinder)
@@ -31,7 +32,7 @@
 
 namespace maze {
 
-struct ArenaTruth {
+struct TruthRaster {
   int cells_x = 0;
   int cells_y = 0;
   double x_min_m = 0.0;
@@ -61,7 +62,7 @@ inline constexpr std::size_t kMaxTruthCells = std::size_t{1} << 26;
 // arena's start(). O(cells + the cells each obstacle's bounding box covers). Throws
 // common::InputError "a grid of 20000 x 20000 cells is too fine: at most 67108864 cells" when
 // the grid is empty or too fine.
-ArenaTruth rasterise_arena(const Arena &arena, int cells_x, int cells_y, double robot_radius_m,
+TruthRaster rasterise_truth(const Arena &arena, int cells_x, int cells_y, double robot_radius_m,
                            TruthClearance clearance = TruthClearance::to_obstacles);
 
 // The number of cells of `cell_m` (> 0) along a side of `side_m`: round(side / cell), at least 1.

@@ -1,4 +1,4 @@
-#include "app/cli/arena_options.hpp"
+#include "app/cli/floor_options.hpp"
 
 #include <cmath>
 #include <cstdio>

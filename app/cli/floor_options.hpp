@@ -1,5 +1,6 @@
 #pragma once
-// What a command line says about arenas: --boundary XS,XE,YS,YE and --resolution M.
+// What a command line says about a floor in metres and the grid laid on it: --boundary
+// XS,XE,YS,YE and --resolution M.
 
 #include <functional>
 #include <optional>
