@@ -98,14 +98,16 @@ class PySimulation {
   const maze::sim::RobotProfile &profile() const { return profile_; }
   void request_stop() { simulation_->request_stop(); }
 
-  // From now on a row of `files`' trace.csv after every control step (record_trace).
+  // From now on `files` records every control step: its trace.csv row, an arena's replay
+  // frames (record_trace).
   void record_to(py::object files) {
-    trace_ = &files.cast<RunFiles &>().trace();
-    trace_owner_ = std::move(files);
+    files_ = &files.cast<RunFiles &>();
+    files_->set_body_radius(profile_.body_radius_m);
+    files_owner_ = std::move(files);
   }
   // After a control step: its row, when a trace is recorded; whether the robot is at the goal.
   void after_step() {
-    if (trace_ != nullptr) trace_->record(steps(), time_s(), simulation_->pose());
+    if (files_ != nullptr) files_->record_step(steps(), time_s(), simulation_->pose());
     if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation_->pose());
   }
 
@@ -145,8 +147,8 @@ class PySimulation {
   maze::sim::RobotProfile profile_;
   std::unique_ptr<webots::embedded::Simulation> simulation_;
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
-  PoseTrace *trace_ = nullptr;  // trace_owner_'s
-  py::object trace_owner_;
+  RunFiles *files_ = nullptr;  // files_owner_'s
+  py::object files_owner_;
 
   struct Goal {
     std::vector<std::pair<int, int>> cells;
@@ -373,7 +375,7 @@ void bind_simulator(py::module_ &m) {
       .def_property_readonly("goal_reached", &PySimulation::goal_reached,
                              "Whether the robot's centre has been at the goal after a control step.")
       .def("record_trace", &PySimulation::record_to, py::arg("files"),
-           "From now on a row of the RunFiles' trace.csv after every control step.")
+           "From now on the RunFiles record every control step (trace.csv, an arena's replay).")
       .def_property_readonly("time_s", &PySimulation::time_s)
       .def_property_readonly("steps", &PySimulation::steps)
       .def_property_readonly("robot_name", [](const PySimulation &s) { return s.profile().name; })
