@@ -174,6 +174,16 @@ void bind_kept_map(py::module_ &m) {
                              [](const KeptMap &k) {
                                return std::make_pair(k.spec().boundary.x_start_m, k.spec().boundary.y_start_m);
                              })
+      .def_property_readonly(
+          "log_odds",
+          [](const KeptMap &k) {
+            std::vector<float> cells;
+            if (!k.read(cells)) k.metric_map();  // raises the error that says how the shape changed
+            py::array_t<float> a({static_cast<py::ssize_t>(k.spec().cells_y), static_cast<py::ssize_t>(k.spec().cells_x)});
+            std::copy(cells.begin(), cells.end(), a.mutable_data());
+            return a;
+          },
+          "The map now as the runner reads it: log-odds, [j, i] (row j from the south), never observed at l(prior).")
       .def("__str__", &KeptMap::description);
 }
 
