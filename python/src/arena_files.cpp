@@ -100,7 +100,7 @@ void ArenaReplayRecorder::keep(const KeptMap &kept) {
 void ArenaReplayRecorder::take_changes(const KeptMap *kept) {
   if (kept == nullptr || !kept->read(now_) || now_.size() != last_.size()) return;
   for (std::size_t n = 0; n < now_.size(); ++n) {
-    if (!app::replay_shows_change(last_[n], now_[n], tones_)) continue;
+    if (now_[n] == last_[n] || !app::replay_shows_change(last_[n], now_[n], tones_)) continue;
     last_[n] = now_[n];
     changes_.push_back({static_cast<std::uint32_t>(n), now_[n]});
   }

@@ -281,7 +281,8 @@ void RunFiles::record_step(std::int64_t step, double time_s, const maze::sim::Po
 }
 
 void RunFiles::keep_map(py::object kept) {
-  replay_.keep(kept.cast<const KeptMap &>());
+  kept_map_ = &kept.cast<const KeptMap &>();
+  replay_.keep(*kept_map_);
   kept_ = std::move(kept);
 }
 

@@ -65,11 +65,12 @@ class RunFiles {
   // replay.html of an arena run (none when the controller took no step).
   void write_arena_replay(const std::filesystem::path &dir, const std::vector<PoseTrace::Visit> &visits,
                           const ArenaRunMarks &marks, std::vector<std::string> &written);
-  const KeptMap *kept_map() const { return kept_.is_none() ? nullptr : &kept_.cast<const KeptMap &>(); }
+  const KeptMap *kept_map() const { return kept_map_; }
 
   std::string dir_;
   std::optional<PoseTrace> trace_;
   py::object kept_ = py::none();  // a KeptMap
+  const KeptMap *kept_map_ = nullptr;  // kept_'s (cast once: the steps read it)
   ArenaReplayRecorder replay_;
   double body_radius_m_ = 0.0;
 };
