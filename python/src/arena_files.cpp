@@ -88,9 +88,9 @@ mapping::GridGeometry path_only_grid(const maze::Arena &arena) {
 }  // namespace
 
 void ArenaReplayRecorder::keep(const KeptMap &kept) {
+  tones_ = kept.tones();
   if (spec_.cells_x != 0 && same_grid(spec_, kept.spec())) return;
   spec_ = kept.spec();
-  tones_ = kept.tones();
   steps_per_frame_ = static_cast<std::int64_t>((kept.size() + 1999) / 2000);
   last_.assign(kept.size(), kept.initial_log_odds());
   changes_.clear();
