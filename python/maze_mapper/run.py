@@ -173,7 +173,7 @@ def _map_entries(e, world):
     """What became of the metric map the controller kept (maze_mapper.keep_map): on an arena
     map.png and the replay's map draw it; a line says which map, or why there is no map.png."""
     kept = maze_mapper._kept_map
-    if world is not None and not world.is_maze:
+    if world is None or not world.is_maze:  # an arena, or the course's floor as the controller built it
         if kept is None:
             e.both("map", "none kept (maze_mapper.keep_map hands the runner a metric map: map.png, the replay's map)",
                    "none")
@@ -189,7 +189,7 @@ def _grid_entries(e, world):
         e.both("grid", "kept, not scored (the world is no maze)", "kept")
         return
     if maze_mapper._kept is None:
-        if world is None or world.is_maze:
+        if world is not None and world.is_maze:
             e.both("grid", "none kept (maze_mapper.keep_grid scores a controller's grid)", "none")
         return
     grid, visited, initial = maze_mapper._kept
@@ -343,7 +343,9 @@ def main(argv=None):
         sys.stdout.flush()
         if files is not None:
             kept = maze_mapper._kept
-            files.finish(entries, world, None if kept is None else kept[0], None if kept is None else kept[2])
+            # On the course's empty floor, the world the controller's supervisor built.
+            drawn = world if world is not None else simulation.built_world()
+            files.finish(entries, drawn, None if kept is None else kept[0], None if kept is None else kept[2])
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return status or EXIT_USAGE

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <array>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -329,11 +330,25 @@ void bind_simulator(py::module_ &m) {
           py::arg("angle_rad"), "A solid box (its long axis at angle_rad from east) added to the world (a maze's is simulated on its geometry from then on).")
       .def(
           "add_cylinder",
-          [](PySimulation &s, double cx, double cy, double radius) {
-            s.simulation().add_disc({cx, cy, radius});
+          [](PySimulation &s, double cx, double cy, double radius, std::optional<double> height,
+             std::optional<std::array<double, 3>> colour) {
+            maze::ArenaDisc disc{cx, cy, radius};
+            if (colour) disc.landmark = maze::ArenaDisc::Look{height.value_or(0.0), (*colour)[0], (*colour)[1], (*colour)[2]};
+            s.simulation().add_disc(disc);
           },
-          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("radius_m"),
-          "A solid upright cylinder added to the world (a maze's is simulated on its geometry from then on).")
+          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("radius_m"), py::kw_only(),
+          py::arg("height_m") = py::none(), py::arg("colour") = py::none(),
+          "A solid upright cylinder added to the world (a maze's is simulated on its geometry from then on); with "
+          "a colour (red, green, blue, 0 to 1) a landmark, drawn in it.")
+      .def(
+          "built_world",
+          [](const PySimulation &s) -> std::optional<maze::World> {
+            const maze::Arena *geometry = s.simulation().geometry();
+            if (geometry == nullptr) return std::nullopt;
+            return maze::World(*geometry, "", maze::Format::room);
+          },
+          "The world as it stands now: the one the simulation began with and the solids a supervisor added since, "
+          "or None while a maze's walls are untouched (its World is the file's).")
       .def(
           "teleport",
           [](PySimulation &s, double x, double y, double z, double yaw) {

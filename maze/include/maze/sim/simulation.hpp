@@ -141,6 +141,9 @@ class Simulation {
   bool on_solid_geometry() const { return solids_.has_value(); }
   const maze::sim::WallGrid &walls() const { return *walls_; }
   const maze::sim::SolidGeometry &solid_geometry() const { return *solids_; }
+  // The world's solids as they are now, a supervisor's additions included (World::geometry()
+  // and the solids added since), while on_solid_geometry(); null on a lattice's wall grid.
+  const maze::Arena *geometry() const { return geometry_ ? &*geometry_ : nullptr; }
 
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
