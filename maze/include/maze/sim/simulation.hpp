@@ -216,9 +216,7 @@ class Simulation {
   void rebuild_solids();
   // f(the solids): the one choice between the wall grid and the geometry, made once per query.
   template <typename F>
-  decltype(auto) with_solids(F &&f) const {
-    return !solids_ ? f(*walls_) : f(*solids_);
-  }
+  decltype(auto) with_solids(F &&f) const;
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
                                const maze::sim::LidarSpec &spec);
@@ -263,8 +261,7 @@ class Simulation {
   // body last left the previous box: inside it, a physics substep needs no push_out. The
   // pose only changes in advance(), so the box cannot go stale.
   std::optional<maze::sim::Box> free_centres_;
-  static constexpr int kLeftWheel = 0;  // wheels_[kLeftWheel]: the left motor and encoder
-  static constexpr int kRightWheel = 1;
+  static constexpr int kLeftWheel = 0, kRightWheel = 1;  // wheels_[kLeftWheel]: left motor, encoder
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;
@@ -284,6 +281,11 @@ class Simulation {
   std::vector<std::unique_ptr<Device>> devices_;
   std::unique_ptr<Robot> robot_;
 };
+
+template <typename F>
+decltype(auto) Simulation::with_solids(F &&f) const {
+  return !solids_ ? f(*walls_) : f(*solids_);
+}
 
 // Makes a simulation current for webots::Robot's default constructor while alive (per
 // thread; nests, restoring the previous one when destroyed).
