@@ -7,6 +7,8 @@ Three loops of control steps (32 ms each), the robot turning in place in its sta
   step        robot.step() alone
   pose        robot.step() and what a lab loop reads every step: GPS, IMU, both encoders
   lidar       robot.step() and the whole 360-beam range image every step, as a NumPy array
+  map         the same with a metric map kept (maze_mapper.keep_map: 340 x 340 cells of 0.05 m,
+              a NumPy array the runner reads for the replay every 58 steps under --out)
 Each prints its control steps a second (the best of three rounds).
 """
 
@@ -60,6 +62,12 @@ def main():
     timed("step", 100_000, bare)
     timed("pose", 50_000, pose)
     timed("lidar", 20_000, ranges)
+    import maze_mapper
+    import numpy as np
+    grid = np.zeros((340, 340))
+    grid[::7, ::5] = 0.85  # observed cells: the replay records them
+    maze_mapper.keep_map(grid, origin=(-8.5, -8.5), cell_size_m=0.05)
+    timed("map", 20_000, ranges)
     return 0
 
 

@@ -52,13 +52,18 @@ PlainGrid room_grid(const sensing::MetricMap &map, const MetricPictureMarks &mar
 }
 
 // The last plan's cells' centres, in pixels.
-std::vector<PointPx> plan_px(const robot::MetricController &c, const PlainGridFrame &frame) {
+std::vector<PointPx> plan_px(const sensing::MetricMap &map, std::span<const std::size_t> plan,
+                             const PlainGridFrame &frame) {
   std::vector<PointPx> points;
-  for (const std::size_t n : c.path()) {
-    const mapping::Point p = c.map().centre_of(c.map().cell_of_index(n));
+  for (const std::size_t n : plan) {
+    const mapping::Point p = map.centre_of(map.cell_of_index(n));
     points.push_back(frame.at(p.x_m, p.y_m));
   }
   return points;
+}
+
+MetricRobotMarks robot_marks(const robot::MetricController &c) {
+  return {c.trajectory(), c.path(), c.position(), c.yaw_rad()};
 }
 
 double mark_px(const PlainGridFrame &frame) { return std::max(4.0, frame.cell_w_px * 0.8); }
@@ -70,18 +75,19 @@ void draw_goal(Drawing &page, const PlainGridFrame &frame, const MetricPictureMa
   page.stroke_rect({g.x - side / 2, g.y - side / 2, side, side}, std::max(1.5, side / 6), kGoalColour);
 }
 
-void draw_robot(Drawing &page, const PlainGridFrame &frame, const robot::MetricController &c) {
-  const PointPx at = frame.at(c.position().x_m, c.position().y_m);
+void draw_robot(Drawing &page, const PlainGridFrame &frame, const MetricRobotMarks &robot) {
+  const PointPx at = frame.at(robot.position.x_m, robot.position.y_m);
   const double r = mark_px(frame) / 2;
   page.ringed_disc(at, r, kEndColour, std::max(1.0, r / 4), kWhite);
   // its heading: a white tick from the centre to the rim
-  page.polyline({at, {at.x + r * std::cos(c.yaw_rad()), at.y - r * std::sin(c.yaw_rad())}}, std::max(1.0, r / 3),
+  page.polyline({at, {at.x + r * std::cos(robot.yaw_rad), at.y - r * std::sin(robot.yaw_rad)}}, std::max(1.0, r / 3),
                 kWhite);
 }
 
-void draw_plan(Drawing &page, const PlainGridFrame &frame, const robot::MetricController &c) {
-  const std::vector<PointPx> plan = plan_px(c, frame);
-  if (plan.size() >= 2) page.polyline(plan, std::max(1.5, frame.cell_w_px / 5), kPlannedColour);
+void draw_plan(Drawing &page, const PlainGridFrame &frame, const sensing::MetricMap &map,
+               std::span<const std::size_t> plan) {
+  const std::vector<PointPx> points = plan_px(map, plan, frame);
+  if (points.size() >= 2) page.polyline(points, std::max(1.5, frame.cell_w_px / 5), kPlannedColour);
 }
 
 // Under every other mark: the landmarks, each a disc of its radius.
@@ -172,20 +178,24 @@ MapTones metric_map_tones(const sensing::MetricMap &map, const sensing::MarkProb
 
 std::string metric_map_picture(const robot::MetricController &c, const MapTones &tones, const MetricPictureMarks &marks,
                              PictureFormat format) {
-  const sensing::MetricMap &map = c.map();
+  return metric_map_picture(c.map(), robot_marks(c), tones, marks, format);
+}
+
+std::string metric_map_picture(const sensing::MetricMap &map, const MetricRobotMarks &robot, const MapTones &tones,
+                             const MetricPictureMarks &marks, PictureFormat format) {
   const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     draw_room_landmarks(page, frame, marks);
     std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
-    for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
+    for (const mapping::Point &p : robot.trajectory) trail.push_back(frame.at(p.x_m, p.y_m));
     page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
-    draw_plan(page, frame, c);
+    draw_plan(page, frame, map, robot.plan);
     const double side = mark_px(frame);
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
     draw_goal(page, frame, marks);
-    draw_robot(page, frame, c);
+    draw_robot(page, frame, robot);
   };
-  return plain_grid_picture(g, map_legend(marks, tones, c.path().size() >= 2), overlay, format,
+  return plain_grid_picture(g, map_legend(marks, tones, robot.plan.size() >= 2), overlay, format,
                             metric_page(map, marks))
       .encode();
 }
@@ -201,7 +211,7 @@ std::string metric_truth_picture(const robot::MetricController &c, const maze::T
     page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
     const double side = mark_px(frame);
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
-    draw_robot(page, frame, c);
+    draw_robot(page, frame, robot_marks(c));
   };
   return plain_grid_picture(g, truth_legend(marks, scores), overlay, format, metric_page(map, marks)).encode();
 }
@@ -225,9 +235,9 @@ std::string metric_wave_picture(const robot::MetricController &c, const MetricPi
   const PlainGrid g = room_grid(c.map(), marks, [&](std::size_t n) { return wave_tone(wave[n], top); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     draw_room_landmarks(page, frame, marks);
-    draw_plan(page, frame, c);
+    draw_plan(page, frame, c.map(), c.path());
     draw_goal(page, frame, marks);
-    draw_robot(page, frame, c);
+    draw_robot(page, frame, robot_marks(c));
   };
   return plain_grid_picture(g, wave_legend(marks, top, c.path().size() >= 2), overlay, format,
                             metric_page(c.map(), marks))

@@ -20,8 +20,10 @@
 //          the map, free in truth) magenta, free cells white where reachable and light grey
 //          where not, cells never observed blue-grey; the trajectory, start and robot over it.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -48,9 +50,22 @@ struct MetricPictureMarks {
 // The map tones of a room run: the map's prior and the set-up's increments, --threshold.
 MapTones metric_map_tones(const sensing::MetricMap &map, const sensing::MarkProbabilities &p, double threshold);
 
+// Where the robot has been and stands on a map picture: its trajectory after the start
+// (marks.start), its last plan (cells of the map by flat index, empty for none), its pose.
+// The spans must outlive the call.
+struct MetricRobotMarks {
+  std::span<const mapping::Point> trajectory;
+  std::span<const std::size_t> plan;
+  mapping::Point position;
+  double yaw_rad = 0.0;
+};
+
 // The map as the controller holds it now: tones, trajectory, last plan, start, goal, robot.
 std::string metric_map_picture(const robot::MetricController &c, const MapTones &tones, const MetricPictureMarks &marks,
                              PictureFormat format = PictureFormat::png);
+// The same picture of any map on the room's grid (a Python controller's kept map).
+std::string metric_map_picture(const sensing::MetricMap &map, const MetricRobotMarks &robot, const MapTones &tones,
+                             const MetricPictureMarks &marks, PictureFormat format = PictureFormat::png);
 
 // The wave the controller planned on last (non-empty), with the path and the robot.
 std::string metric_wave_picture(const robot::MetricController &c, const MetricPictureMarks &marks,

@@ -9,27 +9,19 @@ namespace app {
 
 MetricReplayRecorder::MetricReplayRecorder(const sensing::MetricMap &map, const MapTones &tones, const ReplayPose &start)
     : map_(map), tones_(tones), steps_per_frame_(static_cast<std::int64_t>((map.size() + 1999) / 2000)),
-      last_(map.size(), static_cast<float>(map.model().prior_log_odds())),
-      readout_step_(std::min(tones.occupied_increment, -tones.free_increment)), path_{start} {
+      last_(map.size(), static_cast<float>(map.model().prior_log_odds())), path_{start} {
   frames_.push_back({0, start.step, 0.0, 0});
 }
 
 void MetricReplayRecorder::record(const robot::MetricController &c) {
   for (std::size_t n = 0; n < last_.size(); ++n) {
     const auto now = static_cast<float>(map_.log_odds_at(n));
-    if (!shows_change(last_[n], now)) continue;
+    if (!replay_shows_change(last_[n], now, tones_)) continue;
     last_[n] = now;
     changes_.push_back({static_cast<std::uint32_t>(n), now});
   }
   path_.push_back({c.steps(), c.position(), c.yaw_rad()});
   frames_.push_back({path_.size() - 1, c.steps(), c.time_s(), changes_.size()});
-}
-
-bool MetricReplayRecorder::shows_change(float was, float now) const {
-  if (replay_value(now, tones_) == replay_value(was, tones_)) return false;  // the same on the page to 0.01
-  if (tone(now, tones_) != tone(was, tones_)) return true;  // drawn differently (seen, occupied, shade)
-  const double moved = std::abs(static_cast<double>(now) - static_cast<double>(was));
-  return moved >= std::max(readout_step_, 0.25 * std::abs(static_cast<double>(was)));
 }
 
 void MetricReplayRecorder::on_step(const robot::MetricController &c) {

@@ -4,11 +4,9 @@
 // every `steps_per_frame` control steps and one at the run's end: the robot's pose and time,
 // and the map cells the page shows differently since the frame before: a cell whose tone
 // changed (first seen, turned occupied or free, another shade), or whose log-odds moved from
-// the value last recorded by at least one update of the set-up (the smaller of its occupied
-// and free increments) and a quarter of that value. Past the tones' saturation (four
-// updates) a cell seen every step, whose log-odds grow an update a step, is thus recorded a
-// few dozen times in a run, not every step: the log-odds the page shows under the pointer
-// are the last recorded, within one update or a quarter of the map's.
+// the value last recorded by at least one update of the set-up and a quarter of that value
+// (replay_shows_change): the log-odds the page shows under the pointer are the last
+// recorded, within one update or a quarter of the map's.
 //
 // A frame costs O(cells) to record: steps_per_frame is cells / 2000 rounded up (every step
 // for the IR room's 1500 cells, every 15 for the thick arena's 28900, every 80 for 400 x 400).
@@ -55,14 +53,11 @@ class MetricReplayRecorder {
 
  private:
   void record(const robot::MetricController &c);
-  // Whether a cell at log-odds `was` on the page shows differently at `now` (see above).
-  bool shows_change(float was, float now) const;
 
   const sensing::MetricMap &map_;
   MapTones tones_;
   std::int64_t steps_per_frame_ = 1;
   std::vector<float> last_;  // each cell's log-odds as last recorded
-  double readout_step_ = 0.0;  // one update of the set-up, the smaller of its two increments
   std::vector<ReplayPose> path_;
   std::vector<ReplayChange> changes_;
   std::vector<ReplayFrame> frames_;

@@ -157,6 +157,14 @@ long replay_value(float log_odds, const MapTones &tones) {
   return 2 * std::lround(100.0 * static_cast<double>(log_odds)) + (mapping::is_occupied(log_odds, tones.threshold) ? 1 : 0);
 }
 
+bool replay_shows_change(float was, float now, const MapTones &tones) {
+  if (replay_value(now, tones) == replay_value(was, tones)) return false;  // the same on the page to 0.01
+  if (tone(now, tones) != tone(was, tones)) return true;
+  const double readout_step = std::min(tones.occupied_increment, -tones.free_increment);
+  const double moved = std::abs(static_cast<double>(now) - static_cast<double>(was));
+  return moved >= std::max(readout_step, 0.25 * std::abs(static_cast<double>(was)));
+}
+
 void add_history(ReplayInput &input, const GridHistory &history, std::int64_t steps) {
   const mapping::GridGeometry &g = history.geometry();
   input.grid = g;

@@ -121,6 +121,13 @@ void add_goal_cells(ReplayInput &input, const std::vector<mapping::Cell> &cells)
 // A sub-cell's value in the data: 2 * round(100 * log_odds) + (1 if occupied by the tones' rule).
 long replay_value(float log_odds, const MapTones &tones);
 
+// Whether a cell of a metric map (K = 1) recorded at log-odds `was` is worth a change at `now`:
+// the page shows it differently (its tone changed: first seen, turned occupied or free,
+// another shade), or its log-odds moved by at least one update of the set-up (the smaller of
+// the tones' occupied and free increments) and a quarter of `was`. Past the tones' saturation
+// a cell seen every step is so recorded a few dozen times in a run, not every step.
+bool replay_shows_change(float was, float now, const MapTones &tones);
+
 // The page, or nothing when even the final map alone is over input.max_bytes.
 std::optional<Replay> replay_html(const ReplayInput &input);
 

@@ -20,6 +20,7 @@ import re
 from ._native import (
     CellModel,
     Error,
+    KeptMap,
     OccupancyGrid,
     RayModel,
     Score,
@@ -36,7 +37,7 @@ from ._native import (
 
 __all__ = [
     "ArgumentTypeError", "CellModel", "Error", "OccupancyGrid", "RayModel", "Score", "SensorModel",
-    "World", "explore_world", "format_cell_matrix", "keep_grid", "load_world", "log_odds",
+    "World", "explore_world", "format_cell_matrix", "keep_grid", "keep_map", "load_world", "log_odds",
     "probability", "render", "score",
 ]
 
@@ -80,7 +81,7 @@ def _raise_error_for_wrong_types():
     names = globals()
     for name in ("explore_world", "format_cell_matrix", "load_world", "log_odds", "probability", "render", "score"):
         names[name] = _wrong_types_raise_error(names[name], name, False)
-    for cls in (CellModel, OccupancyGrid, RayModel, Score, SensorModel, World):
+    for cls in (CellModel, KeptMap, OccupancyGrid, RayModel, Score, SensorModel, World):
         for attribute, value in list(vars(cls).items()):
             if callable(value) and (attribute == "__init__" or not attribute.startswith("_")):
                 shown = cls.__name__ if attribute == "__init__" else f"{cls.__name__}.{attribute}"
@@ -101,3 +102,26 @@ def keep_grid(grid, visited=None, *, initial_log_odds=None):
     prints coverage and wall accuracy. Outside a run it only remembers the grid."""
     global _kept
     _kept = (grid, visited, initial_log_odds)
+
+# The metric map a controller handed to keep_map (a KeptMap), and the run's files that record
+# it as the run goes (the runner sets them).
+_kept_map = None
+_map_recorder = None
+
+
+def keep_map(map, *, origin=None, cell_size_m=None, model=None, values="log_odds"):
+    """Hands the runner (python3 -m maze_mapper.run) the metric map this controller maps into,
+    for map.png and the replay's map on an arena (--out): a NumPy 2-D array map[j, i], row j
+    from the south and column i from the west (an array whose row 0 is the northern row is
+    `array[::-1]`), with `origin` its south-west corner (x_m, y_m) and `cell_size_m` its cells'
+    side; or an OccupancyGrid (its sub-cells, origin and model). Values are log-odds in
+    `model`'s base (a SensorModel, the classroom one by default), or with
+    values="probability" probabilities; NaN (and, for probabilities, a value outside 0 ... 1)
+    is never observed, as is l(prior). The runner keeps the array itself and reads it as the
+    run goes and when it ends: update it in place, or keep_map the new one. Raises
+    maze_mapper.Error for a map or extent it cannot draw."""
+    global _kept_map
+    _kept_map = KeptMap(map, origin=origin, cell_size_m=cell_size_m, model=model, values=values)
+    if _map_recorder is not None:
+        _map_recorder.keep_map(_kept_map)
+    return _kept_map

@@ -10,7 +10,7 @@ Without --world the world is the course's empty floor, which a supervisor contro
 fairis_lib is used when it is importable; maze_mapper's stand-in serves where it is not.
 When the controller ends, the runner prints a summary; if the controller handed its grid to
 maze_mapper.keep_grid(), the summary scores it against a maze's truth as `maze_mapper run`
-scores its own map. With --out DIR it writes the run's files there (docs/course.md). Exit status: the controller's (1 for an uncaught exception), 2 for bad
+scores its own map; on an arena, a metric map handed to maze_mapper.keep_map() is drawn. With --out DIR it writes the run's files there (docs/course.md). Exit status: the controller's (1 for an uncaught exception), 2 for bad
 input to the runner.
 """
 
@@ -59,8 +59,8 @@ def _parse(argv):
     p.add_argument("--wall-limit", type=float,
                    help="wall-clock seconds after which Robot.step() returns -1 (a guard for a class's runs)")
     p.add_argument("--out", metavar="DIR",
-                   help="write the run's files into DIR, as `maze_mapper run --out`: summary.json, trace.csv, and "
-                        "for a maze truth.png, replay.html and map.png (of a kept grid)")
+                   help="write the run's files into DIR, as `maze_mapper run --out`: summary.json, trace.csv, "
+                        "truth.png, replay.html and map.png (a maze: of a kept grid, an arena: of a kept metric map)")
     args, rest = p.parse_known_args(argv)
     if rest and rest[0] == "--":
         rest = rest[1:]
@@ -169,13 +169,28 @@ def _distance_m(the_scene):
     return robot.distance_m
 
 
+def _map_entries(e, world):
+    """What became of the metric map the controller kept (maze_mapper.keep_map): on an arena
+    map.png and the replay's map draw it; a line says which map, or why there is no map.png."""
+    kept = maze_mapper._kept_map
+    if world is None or not world.is_maze:  # an arena, or the course's floor as the controller built it
+        if kept is None:
+            e.both("map", "none kept (maze_mapper.keep_map hands the runner a metric map: map.png, the replay's map)",
+                   "none")
+        else:
+            e.both("map", f"kept, {kept}", "kept")
+    elif kept is not None:
+        e.both("map", "kept, not drawn (map.png and the replay draw a kept map on an arena world)", "kept")
+
+
 def _grid_entries(e, world):
     """coverage and wall accuracy of the grid the controller kept (maze_mapper.keep_grid)."""
-    if maze_mapper._kept is not None and not world.is_maze:
+    if maze_mapper._kept is not None and (world is None or not world.is_maze):
         e.both("grid", "kept, not scored (the world is no maze)", "kept")
         return
     if maze_mapper._kept is None:
-        e.both("grid", "none kept (maze_mapper.keep_grid scores a controller's grid)", "none")
+        if world is not None and world.is_maze:
+            e.both("grid", "none kept (maze_mapper.keep_grid scores a controller's grid)", "none")
         return
     grid, visited, initial = maze_mapper._kept
     result = maze_mapper.score(world, grid, visited, initial_log_odds=initial)
@@ -232,6 +247,7 @@ def _report(args, world, the_scene, end, wall_time_ms):
     else:
         e.json_only("goal", None)
     _grid_entries(e, world)
+    _map_entries(e, world)
     e.both("wall_time_ms", f"{wall_time_ms:.0f}", wall_time_ms)
     return e.items
 
@@ -304,6 +320,8 @@ def main(argv=None):
         print(e, file=sys.stderr)
         return EXIT_USAGE
     maze_mapper._kept = None
+    maze_mapper._kept_map = None
+    maze_mapper._map_recorder = files
     simulation.make_current()
     if files is not None:
         simulation.record_trace(files)
@@ -325,13 +343,16 @@ def main(argv=None):
         sys.stdout.flush()
         if files is not None:
             kept = maze_mapper._kept
-            files.finish(entries, world, None if kept is None else kept[0], None if kept is None else kept[2])
+            # On the course's empty floor, the world the controller's supervisor built.
+            drawn = world if world is not None else simulation.built_world()
+            files.finish(entries, drawn, None if kept is None else kept[0], None if kept is None else kept[2])
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return status or EXIT_USAGE
     finally:
         simulation.release_current()
         Robot.created = None
+        maze_mapper._map_recorder = None
         controller.wall_deadline = None
         scene.current = None
     return status

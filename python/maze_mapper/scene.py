@@ -441,7 +441,8 @@ class Scene:
             self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
         else:
             height, radius, _ = fields["size"]
-            self.simulation.add_cylinder(x, y, radius)
+            colour = fields.get("color")
+            self.simulation.add_cylinder(x, y, radius, height_m=height, colour=None if colour is None else list(colour))
             colors = [c for colour in fields["recognitionColors"] for c in colour]
             self.landmarks.append(Landmark(node, x, y, z, radius, height, yaw, colors))
 

@@ -9,6 +9,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "kept_map.hpp"
 #include "common/error.hpp"
 
 PYBIND11_MODULE(_native, m) {
@@ -28,6 +29,7 @@ PYBIND11_MODULE(_native, m) {
   maze_mapper_python::bind_models(m);
   maze_mapper_python::bind_render(m);
   maze_mapper_python::bind_world(m);
+  maze_mapper_python::bind_kept_map(m);
   maze_mapper_python::bind_run_files(m);
   maze_mapper_python::bind_simulator(m);
 }

@@ -209,19 +209,51 @@ void write_maze_replay(const fs::path &dir, const maze::World &world, const Maze
   }
 }
 
+void write_file(const fs::path &dir, const std::string &name, const std::string &bytes,
+                std::vector<std::string> &written) {
+  common::write_file_atomically((dir / name).string(), bytes);
+  written.push_back(name);
+}
+
+// The summary's lines as the replay's table shows them (wall_time_ms left out, as the room
+// replay leaves it: a page made again is the same page).
+std::vector<std::pair<std::string, std::string>> replay_summary(const app::Report &report) {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (auto &[key, value] : app::summary_pairs(report)) {
+    if (key != "wall_time_ms") lines.emplace_back(key, value);
+  }
+  return lines;
+}
+
 }  // namespace
+
+void RunFiles::write_arena_replay(const fs::path &dir, const std::vector<PoseTrace::Visit> &visits,
+                                  const ArenaRunMarks &marks, std::vector<std::string> &written) {
+  if (visits.empty()) {
+    fmt::print(stderr, "note: replay.html not written: the controller took no step\n");
+    return;
+  }
+  replay_.finish(visits, kept_map());
+  if (const std::optional<app::Replay> replay = app::replay_html(arena_replay_input(replay_, kept_map(), visits, marks))) {
+    write_file(dir, "replay.html", replay->html, written);
+  } else {
+    fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
+               app::kReplayMaxBytes >> 20);
+  }
+}
 
 PoseTrace::PoseTrace(const std::string &dir) : file_((fs::path(dir) / "trace.csv").string()) {
   file_.write(std::string(app::pose_trace_columns()) + "\n");
 }
 
-void PoseTrace::record(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
-  if (!visits_.empty() && visits_.back().step == step) return;  // a step that passed no time
+bool PoseTrace::record(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
+  if (!visits_.empty() && visits_.back().step == step) return false;  // a step that passed no time
   row_.clear();
   app::append_pose_trace_values(row_, step, time_s, pose.x_m, pose.y_m, pose.yaw_rad);
   row_ += '\n';
   file_.write(row_);
-  visits_.push_back({step, pose.x_m, pose.y_m, pose.yaw_rad});
+  visits_.push_back({step, time_s, pose.x_m, pose.y_m, pose.yaw_rad});
+  return true;
 }
 
 std::string format_entries(const std::vector<EntryTuple> &entries) { return app::format_summary(report_of(entries)); }
@@ -244,6 +276,16 @@ PoseTrace &RunFiles::trace() {
   return *trace_;
 }
 
+void RunFiles::record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
+  if (trace().record(step, time_s, pose)) replay_.on_step(trace_->visits(), kept_map());
+}
+
+void RunFiles::keep_map(py::object kept) {
+  kept_map_ = &kept.cast<const KeptMap &>();
+  replay_.keep(*kept_map_);
+  kept_ = std::move(kept);
+}
+
 void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
                       std::optional<float> initial_log_odds) {
   const maze::World *maze = world != nullptr && world->on_lattice() ? world : nullptr;
@@ -255,8 +297,11 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   // In `run --out`'s order: the pictures, summary.json, trace.csv, replay.html.
   const std::optional<MazeRun> run =
       maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze(), grid, initial_log_odds, visits)) : std::nullopt;
+  const bool arena = world != nullptr && !world->on_lattice();
+  const ArenaRunMarks marks{world, body_radius_m_, replay_summary(report)};
   if (run) write_maze_pictures(d, *maze, *run, written);
-  if (world != nullptr && !world->on_lattice()) write_arena_truth(d, *world, visits, written);
+  if (arena && kept_map() != nullptr) write_file(d, "map.png", arena_map_png(*kept_map(), visits, marks), written);
+  if (arena) write_arena_truth(d, *world, visits, written);
   common::write_file_atomically((d / "summary.json").string(), app::report_json(report).dump(2) + "\n");
   written.emplace_back("summary.json");
   if (trace_) {
@@ -264,6 +309,7 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
     written.emplace_back("trace.csv");
   }
   if (run) write_maze_replay(d, *maze, *run, report, visits.empty() ? 0 : visits.back().step, written);
+  if (arena) write_arena_replay(d, visits, marks, written);
   app::remove_stale_outputs(dir_, written);
   fmt::print(stderr, "{}\n", app::wrote_line(dir_, written, written.size(), 0));
 }
@@ -282,7 +328,9 @@ void bind_run_files(py::module_ &m) {
             files.finish(entries, py::isinstance<maze::World>(world) ? &world.cast<const maze::World &>() : nullptr,
                          grid, initial_log_odds);
           },
-          py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"));
+          py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"))
+      .def("keep_map", &RunFiles::keep_map, py::arg("kept"),
+           "The controller's metric map (a KeptMap) from now on: map.png and the replay's map on an arena.");
 }
 
 }  // namespace maze_mapper_python

@@ -3,47 +3,26 @@
 // program's own writers (app/report/): the directory prepared and checked against the run's
 // inputs as `run --out` does, trace.csv a row every control step as the run goes, and at the end
 // summary.json (the runner's report, the same Report renderer as every run's), and where the
-// world is a maze truth.png, replay.html and, when the controller kept a grid, map.png.
+// world is a maze truth.png, replay.html and, when the controller kept a grid, map.png; on an
+// arena truth.png, replay.html and, when the controller kept a metric map, map.png
+// (python/src/arena_files.hpp).
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "arena_files.hpp"
 #include "bindings.hpp"
-#include "common/atomic_file.hpp"
+#include "kept_map.hpp"
+#include "pose_trace.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/world/world.hpp"
 
 namespace maze_mapper_python {
-
-// trace.csv as the run goes: app/report/outputs.hpp's pose columns, a row after every control
-// step (its last basic step and simulated time, the true pose). Keeps the positions for the
-// pictures (x, y: 16 bytes a step).
-class PoseTrace {
- public:
-  // Opens DIR/trace.csv's temporary and writes the header.
-  explicit PoseTrace(const std::string &dir);
-
-  void record(std::int64_t step, double time_s, const maze::sim::Pose &pose);
-  // Renames the temporary over trace.csv.
-  void commit() { file_.commit(); }
-
-  struct Visit {
-    std::int64_t step;
-    double x_m;
-    double y_m;
-    double yaw_rad;
-  };
-  const std::vector<Visit> &visits() const { return visits_; }
-
- private:
-  common::OutputFile file_;
-  std::string row_;  // one row (reused)
-  std::vector<Visit> visits_;
-};
 
 // A report entry as the runner builds it: key, printed value (none: summary.json only), and
 // the JSON value as JSON text.
@@ -59,16 +38,22 @@ class RunFiles {
   // `inputs` ((what, path) pairs, "the world", "the controller"). Throws common::InputError.
   RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs);
 
-  // The trace the simulation writes a row to after every control step (opened on first use).
-  PoseTrace &trace();
+  // After every control step: its row of trace.csv (opened on first use) and, when due, a
+  // frame of an arena's replay.
+  void record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose);
+  // The metric map the controller keeps from now on (a KeptMap: maze_mapper.keep_map).
+  void keep_map(py::object kept);
+  // The robot's body radius, for the replay's robot and goal marks.
+  void set_body_radius(double radius_m) { body_radius_m_ = radius_m; }
 
   // Writes every file and removes what an earlier run left in DIR that this one did not
   // write; names them on stderr ("wrote DIR/: ..."). `world`: the world read (null: the
   // course's empty floor); `grid`: the grid the controller kept (an OccupancyGrid or an array;
   // None: none), `initial_log_odds` its never-observed value. A maze's pictures mark the cells
   // the robot's centre passed through as visited; an arena's truth.png draws its solids,
-  // landmarks and the path. Throws common::InputError when the kept grid's cells are not the
-  // maze's.
+  // landmarks and the path, its map.png the kept metric map (keep_map) and replay.html both.
+  // Throws common::InputError when the kept grid's cells are not the maze's, or the kept
+  // map's array changed shape.
   void finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
               std::optional<float> initial_log_odds);
 
@@ -76,8 +61,18 @@ class RunFiles {
   static const std::vector<std::string> &names();
 
  private:
+  PoseTrace &trace();
+  // replay.html of an arena run (none when the controller took no step).
+  void write_arena_replay(const std::filesystem::path &dir, const std::vector<PoseTrace::Visit> &visits,
+                          const ArenaRunMarks &marks, std::vector<std::string> &written);
+  const KeptMap *kept_map() const { return kept_map_; }
+
   std::string dir_;
   std::optional<PoseTrace> trace_;
+  py::object kept_ = py::none();  // a KeptMap
+  const KeptMap *kept_map_ = nullptr;  // kept_'s (cast once: the steps read it)
+  ArenaReplayRecorder replay_;
+  double body_radius_m_ = 0.0;
 };
 
 }  // namespace maze_mapper_python

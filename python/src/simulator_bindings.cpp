@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <array>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -98,14 +99,16 @@ class PySimulation {
   const maze::sim::RobotProfile &profile() const { return profile_; }
   void request_stop() { simulation_->request_stop(); }
 
-  // From now on a row of `files`' trace.csv after every control step (record_trace).
+  // From now on `files` records every control step: its trace.csv row, an arena's replay
+  // frames (record_trace).
   void record_to(py::object files) {
-    trace_ = &files.cast<RunFiles &>().trace();
-    trace_owner_ = std::move(files);
+    files_ = &files.cast<RunFiles &>();
+    files_->set_body_radius(profile_.body_radius_m);
+    files_owner_ = std::move(files);
   }
   // After a control step: its row, when a trace is recorded; whether the robot is at the goal.
   void after_step() {
-    if (trace_ != nullptr) trace_->record(steps(), time_s(), simulation_->pose());
+    if (files_ != nullptr) files_->record_step(steps(), time_s(), simulation_->pose());
     if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation_->pose());
   }
 
@@ -145,8 +148,8 @@ class PySimulation {
   maze::sim::RobotProfile profile_;
   std::unique_ptr<webots::embedded::Simulation> simulation_;
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
-  PoseTrace *trace_ = nullptr;  // trace_owner_'s
-  py::object trace_owner_;
+  RunFiles *files_ = nullptr;  // files_owner_'s
+  py::object files_owner_;
 
   struct Goal {
     std::vector<std::pair<int, int>> cells;
@@ -327,11 +330,25 @@ void bind_simulator(py::module_ &m) {
           py::arg("angle_rad"), "A solid box (its long axis at angle_rad from east) added to the world (a maze's is simulated on its geometry from then on).")
       .def(
           "add_cylinder",
-          [](PySimulation &s, double cx, double cy, double radius) {
-            s.simulation().add_disc({cx, cy, radius});
+          [](PySimulation &s, double cx, double cy, double radius, std::optional<double> height,
+             std::optional<std::array<double, 3>> colour) {
+            maze::ArenaDisc disc{cx, cy, radius};
+            if (colour) disc.landmark = maze::ArenaDisc::Look{height.value_or(0.0), (*colour)[0], (*colour)[1], (*colour)[2]};
+            s.simulation().add_disc(disc);
           },
-          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("radius_m"),
-          "A solid upright cylinder added to the world (a maze's is simulated on its geometry from then on).")
+          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("radius_m"), py::kw_only(),
+          py::arg("height_m") = py::none(), py::arg("colour") = py::none(),
+          "A solid upright cylinder added to the world (a maze's is simulated on its geometry from then on); with "
+          "a colour (red, green, blue, 0 to 1) a landmark, drawn in it.")
+      .def(
+          "built_world",
+          [](const PySimulation &s) -> std::optional<maze::World> {
+            const maze::Arena *geometry = s.simulation().geometry();
+            if (geometry == nullptr) return std::nullopt;
+            return maze::World(*geometry, "", maze::Format::room);
+          },
+          "The world as it stands now: the one the simulation began with and the solids a supervisor added since, "
+          "or None while a maze's walls are untouched (its World is the file's).")
       .def(
           "teleport",
           [](PySimulation &s, double x, double y, double z, double yaw) {
@@ -373,7 +390,7 @@ void bind_simulator(py::module_ &m) {
       .def_property_readonly("goal_reached", &PySimulation::goal_reached,
                              "Whether the robot's centre has been at the goal after a control step.")
       .def("record_trace", &PySimulation::record_to, py::arg("files"),
-           "From now on a row of the RunFiles' trace.csv after every control step.")
+           "From now on the RunFiles record every control step (trace.csv, an arena's replay).")
       .def_property_readonly("time_s", &PySimulation::time_s)
       .def_property_readonly("steps", &PySimulation::steps)
       .def_property_readonly("robot_name", [](const PySimulation &s) { return s.profile().name; })

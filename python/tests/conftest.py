@@ -52,3 +52,32 @@ def controller_file(tmp_path):
         path.write_text(source)
         return path
     return write
+
+
+
+def png_pixels(data):
+    """A PNG's pixels as a NumPy array (height, width, 3), rows top first: 8-bit RGB or RGBA,
+    not interlaced, filters None and Up (as the program writes them)."""
+    import struct
+    import zlib
+    import numpy as np
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    at, idat = 8, b""
+    while at < len(data):
+        length, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + length
+    bpp = 4 if colour == 6 else 3
+    raw = np.frombuffer(zlib.decompress(idat), dtype=np.uint8).reshape(height, width * bpp + 1)
+    rows = np.zeros((height, width * bpp), dtype=np.uint8)
+    previous = np.zeros(width * bpp, dtype=np.uint8)
+    for y in range(height):
+        assert raw[y, 0] in (0, 2), f"filter {raw[y, 0]}"
+        rows[y] = raw[y, 1:] + (previous if raw[y, 0] == 2 else 0)
+        previous = rows[y]
+    return rows.reshape(height, width, bpp)[:, :, :3]

@@ -7,7 +7,7 @@ import json
 import os
 import struct
 
-from conftest import run_controller, summary_of, world
+from conftest import png_pixels, run_controller, summary_of, world
 
 DRIVE = ("from controller import Robot\nimport math\nrobot = Robot()\n"
          "left, right = robot.getDevice('left motor'), robot.getDevice('right motor')\n"
@@ -17,6 +17,19 @@ DRIVE = ("from controller import Robot\nimport math\nrobot = Robot()\n"
 KEEP_GRID = ("import maze_mapper\nimport numpy as np\n"
              "grid = np.zeros((4, 4, 3, 3), dtype=np.float32)\ngrid[0, 0, 1, 0] = 1.0\n"
              "maze_mapper.keep_grid(grid, [(0, 0)])\n")
+
+# A map over thick_arena's 17 x 17 m floor in 0.5 m cells, kept before the loop and changed in
+# place each step (the south row occupied, the start's cells free, one more cell of a column a
+# step), its north-east cell set after the last step.
+KEEP_MAP_DRIVE = ("from controller import Robot\nimport math\nimport numpy as np\nimport maze_mapper\n"
+                  "grid = np.zeros((34, 34))\n"
+                  "maze_mapper.keep_map(grid, origin=(-8.5, -8.5), cell_size_m=0.5)\n"
+                  "robot = Robot()\n"
+                  "left, right = robot.getDevice('left motor'), robot.getDevice('right motor')\n"
+                  "for m in (left, right):\n    m.setPosition(math.inf)\n    m.setVelocity(5.0)\n"
+                  "for k in range(40):\n    robot.step(32)\n"
+                  "    grid[0, :] += 0.41\n    grid[2:5, 2:5] -= 0.85\n    grid[k % 34, 20] = 2.0\n"
+                  "grid[33, 33] = 3.0\n")
 
 CORE_KEYS = ["world", "model", "strategy", "robot", "seed", "end", "end_message", "steps", "sim_time_s",
              "wall_time_ms"]
@@ -47,17 +60,70 @@ def test_a_maze_run_writes_the_core_files_with_the_core_keys_in_order(controller
     assert b'id="replay-data"' in (out / "replay.html").read_bytes()
 
 
-def test_an_arena_run_writes_the_summary_the_trace_and_a_truth_picture_of_its_solids_and_path(controller_file, tmp_path):
+def replay_data(page):
+    """The data block of a replay.html."""
+    start = page.index('id="replay-data">') + len('id="replay-data">')
+    return json.loads(page[start:page.index("</script>", start)].replace("<\\/", "</"))
+
+
+def assert_self_contained_page(page):
+    assert page.startswith("<!DOCTYPE html>") and page.rstrip().endswith("</html>")
+    assert "<script src" not in page and "<link" not in page and "http://" not in page and "https://" not in page
+
+
+def test_an_arena_run_with_a_kept_map_writes_its_map_png_and_a_replay_of_its_history_in_metres(controller_file, tmp_path):
     out = tmp_path / "out"
-    status, _, err = run_controller(controller_file(DRIVE), "--world", world("thick_arena.xml"), "--out", str(out))
+    status, stdout, err = run_controller(controller_file(KEEP_MAP_DRIVE), "--world", world("thick_arena.xml"),
+                                         "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(out)) == ["map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert f"wrote {out}/: map.png, truth.png, summary.json, trace.csv, replay.html" in err.splitlines()
+    assert summary_of(stdout)["map"] == "kept, 34 x 34 cells of 0.5 m from (-8.50, -8.50)"
+    assert json.loads((out / "summary.json").read_text())["map"] == "kept"
+
+    # map.png as room's: the map's tones (never observed blue-grey, occupied dark, free light), the path in red
+    pixels = png_pixels((out / "map.png").read_bytes())
+    height, width, _ = pixels.shape
+    assert 600 <= width <= 2400 and 600 <= height <= 2400
+    colours = set(map(tuple, pixels.reshape(-1, 3).tolist()))
+    assert (150, 160, 190) in colours and (220, 30, 30) in colours
+    assert any(r == g == b and r <= 70 for r, g, b in colours) and any(r == g == b and 215 <= r < 255 for r, g, b in colours)
+
+    page = (out / "replay.html").read_text()
+    assert_self_contained_page(page)
+    data = replay_data(page)
+    assert data["units"] == "metres" and (data["width"], data["height"], data["k"]) == (34, 34, 1)
+    assert data["cell_size_m"] == 0.5 and data["origin"] == [-8.5, -8.5]
+    assert data["boundary_mm"] == [0, 0, 17000, 17000] and data["body_mm"] == 90
+    assert len(data["path"]["steps"]) == 40 and data["path"]["steps"][-1] == 40
+    frames = data["frames"]
+    assert len(frames["step"]) == 40 and frames["step"][-1] == 40 and frames["t_ms"][-1] == 1280
+    changes = frames["changes"]
+    assert changes[0] == []  # the first step: nothing mapped yet
+    assert all(len(c) > 0 for c in changes[1:34])  # a new cell a step, a frame a step on 1156 cells
+    # the last frame holds the map as the controller left it: its north-east cell, (gap, value) last
+    assert sum(changes[-1][::2]) == 34 * 34 - 1 and changes[-1][-1] == 2 * 300 + 1
+
+
+def test_an_arena_run_without_a_kept_map_writes_a_replay_of_the_path_and_says_why_there_is_no_map_png(controller_file, tmp_path):
+    out = tmp_path / "out"
+    status, stdout, err = run_controller(controller_file(DRIVE), "--world", world("thick_arena.xml"), "--out", str(out))
+    assert status == 0, err
+    assert sorted(os.listdir(out)) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert summary_of(stdout)["map"] == ("none kept (maze_mapper.keep_map hands the runner a metric map: map.png, "
+                                         "the replay's map)")
     png = (out / "truth.png").read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
     width, height = struct.unpack(">II", png[16:24])
     assert width >= 400 and height >= 400  # 400 cells on the arena's longer side, and the legend
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["arena"] and summary["goal"] == "not reached" and summary["steps"] == 40
+    assert summary["arena"] and summary["goal"] == "not reached" and summary["steps"] == 40 and summary["map"] == "none"
+    page = (out / "replay.html").read_text()
+    assert_self_contained_page(page)
+    data = replay_data(page)
+    assert data["units"] == "metres" and data["caption"] == "thick_arena.xml: no map kept (maze_mapper.keep_map)"
+    assert len(data["path"]["steps"]) == 40 and len(data["frames"]["step"]) == 40
+    assert all(c == [] for c in data["frames"]["changes"])  # the path only, over a map never observed
 
 
 def test_a_dangling_link_as_out_is_refused_and_left(controller_file, tmp_path):
@@ -90,4 +156,4 @@ def test_a_second_run_into_the_same_out_leaves_only_its_own_files(controller_fil
     status, _, err = run_controller(controller_file(DRIVE, name="second.py"), "--world", world("thick_arena.xml"),
                                     "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["notes.txt", "summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(out)) == ["notes.txt", "replay.html", "summary.json", "trace.csv", "truth.png"]

@@ -141,6 +141,9 @@ class Simulation {
   bool on_solid_geometry() const { return solids_.has_value(); }
   const maze::sim::WallGrid &walls() const { return *walls_; }
   const maze::sim::SolidGeometry &solid_geometry() const { return *solids_; }
+  // The world's solids as they are now, a supervisor's additions included (World::geometry()
+  // and the solids added since), while on_solid_geometry(); null on a lattice's wall grid.
+  const maze::Arena *geometry() const { return geometry_ ? &*geometry_ : nullptr; }
 
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
@@ -213,9 +216,7 @@ class Simulation {
   void rebuild_solids();
   // f(the solids): the one choice between the wall grid and the geometry, made once per query.
   template <typename F>
-  decltype(auto) with_solids(F &&f) const {
-    return !solids_ ? f(*walls_) : f(*solids_);
-  }
+  decltype(auto) with_solids(F &&f) const;
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
                                const maze::sim::LidarSpec &spec);
@@ -260,8 +261,7 @@ class Simulation {
   // body last left the previous box: inside it, a physics substep needs no push_out. The
   // pose only changes in advance(), so the box cannot go stale.
   std::optional<maze::sim::Box> free_centres_;
-  static constexpr int kLeftWheel = 0;  // wheels_[kLeftWheel]: the left motor and encoder
-  static constexpr int kRightWheel = 1;
+  static constexpr int kLeftWheel = 0, kRightWheel = 1;  // wheels_[kLeftWheel]: left motor, encoder
   Wheel wheels_[2];
   std::int64_t time_ms_ = 0;
   std::int64_t steps_ = 0;
@@ -281,6 +281,11 @@ class Simulation {
   std::vector<std::unique_ptr<Device>> devices_;
   std::unique_ptr<Robot> robot_;
 };
+
+template <typename F>
+decltype(auto) Simulation::with_solids(F &&f) const {
+  return !solids_ ? f(*walls_) : f(*solids_);
+}
 
 // Makes a simulation current for webots::Robot's default constructor while alive (per
 // thread; nests, restoring the previous one when destroyed).
