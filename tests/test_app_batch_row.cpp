@@ -225,7 +225,7 @@ TEST_CASE("batch: --strategy names a maze run's strategy, a room run's, or front
 }
 
 TEST_CASE("batch: a room run keeps the room options the batch read, with the batch's shared ones") {
-  app::RoomRunOptions room_only;
+  app::MetricRunOptions room_only;
   room_only.room.strategy = robot::MetricStrategy::waypoints;
   room_only.room.waypoints = {{1.0, 2.0}};
   room_only.room.laps = 2;
@@ -233,7 +233,7 @@ TEST_CASE("batch: a room run keeps the room options the batch read, with the bat
   app::RunOptions options;
   options.simulation.seed = 9;
   options.time_limit_s = 30.0;
-  const app::RoomRunOptions room = app::room_options_for(options, room_only, [](std::string_view) { return false; });
+  const app::MetricRunOptions room = app::room_options_for(options, room_only, [](std::string_view) { return false; });
   CHECK(room.room.strategy == robot::MetricStrategy::waypoints);
   CHECK(room.room.waypoints.size() == 1);
   CHECK(room.room.laps == 2);

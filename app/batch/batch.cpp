@@ -89,18 +89,18 @@ void run_maze(RunOptions options, const BatchJob &job, const RunControls &contro
   if (!item.ok) item.error = ended_error(robot::to_string(item.summary.reason), item.summary.message);
 }
 
-void run_room_job(RoomRunOptions options, const BatchJob &job, bool (*interrupted)(), BatchItem &item) {
+void run_room_job(MetricRunOptions options, const BatchJob &job, bool (*interrupted)(), BatchItem &item) {
   const auto started = std::chrono::steady_clock::now();
   options.world = job.world;
   const maze::World world = maze::load_world(job.world);
   NullBuffer buffer;
   std::ostream sink(&buffer);
   Report report;
-  const RoomSummary summary = run_room(world, options, sink, started, interrupted, &report);
+  const MetricRunSummary summary = run_metric_world(world, options, sink, started, interrupted, &report);
   item.report = std::move(report);
   item.ran = true;
   item.interrupted = summary.interrupted;
-  item.ok = room_exit_status(summary) == 0;
+  item.ok = metric_run_exit_status(summary) == 0;
   if (!item.ok) item.error = ended_error(robot::to_string(summary.ending), summary.message);
 }
 
@@ -245,12 +245,12 @@ std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, co
 BatchOptions::BatchOptions(RunOptions run_options)
     : run(std::move(run_options)), room(room_options_for(run, {}, [](std::string_view) { return false; })) {}
 
-BatchOptions::BatchOptions(RunOptions run_options, RoomRunOptions room_options)
+BatchOptions::BatchOptions(RunOptions run_options, MetricRunOptions room_options)
     : run(std::move(run_options)), room(std::move(room_options)) {}
 
-RoomRunOptions room_options_for(const RunOptions &options, RoomRunOptions room_only,
+MetricRunOptions room_options_for(const RunOptions &options, MetricRunOptions room_only,
                                 const std::function<bool(std::string_view)> &given) {
-  RoomRunOptions room = std::move(room_only);
+  MetricRunOptions room = std::move(room_only);
   room.quiet = true;
   room.simulation = options.simulation;
   room.room.seed = options.simulation.seed;

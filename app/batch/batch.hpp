@@ -84,9 +84,9 @@ std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds, KindCho
 struct BatchOptions {
   // Not explicit: a maze run's options are a batch's, its room runs those of no option given.
   BatchOptions(RunOptions run_options);
-  BatchOptions(RunOptions run_options, RoomRunOptions room_options);
+  BatchOptions(RunOptions run_options, MetricRunOptions room_options);
   RunOptions run;
-  RoomRunOptions room;
+  MetricRunOptions room;
 };
 
 // The room run a batch makes, quiet: `room_only` as the batch read it (the room command's
@@ -95,7 +95,7 @@ struct BatchOptions {
 // numbers (log base 10 for bump and depth unless --log-base is given, as the room command),
 // and the robot and model when given(NAME) says the user typed them (a room has no cell model:
 // ray unless another is given; the robot: the set-up's unless given).
-RoomRunOptions room_options_for(const RunOptions &options, RoomRunOptions room_only,
+MetricRunOptions room_options_for(const RunOptions &options, MetricRunOptions room_only,
                                 const std::function<bool(std::string_view)> &given);
 
 // The pool both batches run on: run(i) for every i in [0, count), on `jobs` threads (>= 1),

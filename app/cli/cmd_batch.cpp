@@ -44,7 +44,7 @@ struct BatchInput {
   std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
   std::string merge_out;                // batch merge -o FILE
   std::string strategy;                 // --strategy: a maze run's, a room run's, or frontier for both
-  RoomRunOptions room;                  // the room runs' own options (app/cli/room_options.hpp)
+  MetricRunOptions room;                  // the room runs' own options (app/cli/room_options.hpp)
 };
 
 // Whether a kind of run has the strategy `name` (its parser holds its names); frontier is one
@@ -62,7 +62,7 @@ bool maze_strategy(const std::string &name) { return names_strategy<explore::par
 bool room_strategy(const std::string &name) { return names_strategy<robot::parse_metric_strategy>(name); }
 
 // --strategy NAME into the runs it names: a maze run's strategy, a room run's, or frontier, both.
-void read_strategy(const std::string &name, RunOptions &maze, RoomRunOptions &room) {
+void read_strategy(const std::string &name, RunOptions &maze, MetricRunOptions &room) {
   if (!maze_strategy(name) && !room_strategy(name)) {
     throw common::InputError(fmt::format("unknown --strategy '{}' (a maze run's dfs, frontier, left-wall, right-wall or "
                                          "floodfill; a room run's waypoints, wavefront, frontier or wander)",

@@ -29,12 +29,12 @@ namespace {
 
 struct RoomInput {
   std::string start, boundary;
-  RoomRunOptions options;
+  MetricRunOptions options;
 };
 
 // --start Xm,Ym[,YAW]: a pose as every command spells it (app/run/option_values.hpp); the old
 // X,Y[,DEG] (no unit) is read the same, with a warning.
-void read_start(const std::string &text, RoomRunOptions &o) {
+void read_start(const std::string &text, MetricRunOptions &o) {
   std::vector<std::string> warnings;
   const PoseArgument pose = parse_pose(text, "--start", warnings, PoseYaw::optional);
   print_warnings(warnings);
@@ -44,7 +44,7 @@ void read_start(const std::string &text, RoomRunOptions &o) {
 
 // The options in the order the help shows them (app/cli/help_format.hpp groups them).
 void add_room_options(CLI::App &cmd, RoomInput &in) {
-  RoomRunOptions &o = in.options;
+  MetricRunOptions &o = in.options;
   o.model.kind = sensing::ModelKind::ray;  // a room's default: the lidar's rays (a maze's is cell)
   accept_shipped_world_names(cmd.add_option("WORLD", o.world, "the world file, or a shipped world's name"))->required();
   add_field_options(cmd, o, {"--strategy", "--model", "--robot", "--cells"});
@@ -67,7 +67,7 @@ void add_room_options(CLI::App &cmd, RoomInput &in) {
 
 // The options once all are read: checked together, the ones that do nothing warned about.
 void finish_options(RoomInput &in, const CLI::App &cmd) {
-  RoomRunOptions &o = in.options;
+  MetricRunOptions &o = in.options;
   if (!in.start.empty()) read_start(in.start, o);
   check_room_options(o);
   const GivenOptions given{cmd.get_name(), [&cmd](std::string_view option) {
@@ -93,8 +93,8 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
     finish_options(*in, *cmd);
     const maze::World world = load_world_reporting(in->options.world, with_arena_overrides({}, in->boundary));
     const common::SignalsStopWork stop_signals;  // a signal ends the run at its next control step
-    const RoomSummary summary = run_room_and_write(world, in->options, std::cout, started, &common::interrupted);
-    context.status = room_exit_status(summary);
+    const MetricRunSummary summary = run_metric_and_write(world, in->options, std::cout, started, &common::interrupted);
+    context.status = metric_run_exit_status(summary);
   });
 }
 

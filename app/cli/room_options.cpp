@@ -12,7 +12,7 @@
 namespace app {
 namespace {
 
-using O = RoomRunOptions;
+using O = MetricRunOptions;
 
 mapping::Point point_of(const std::string &text, const std::string &option) {
   const std::vector<double> v = parse_number_list(text, option, 2);
@@ -157,7 +157,7 @@ std::span<const OptionField<O>> option_fields() {
   return fields;
 }
 
-std::vector<std::string> check_room_options_apply(const GivenOptions &given, const RoomRunOptions &options) {
+std::vector<std::string> check_room_options_apply(const GivenOptions &given, const MetricRunOptions &options) {
   std::vector<std::string> warnings;
   add_no_effect_warnings(given, std::span<const OptionUse<O>>(kRoomOptionUses), options, warnings);
   if (options.model.kind != sensing::ModelKind::depth) {
@@ -170,7 +170,7 @@ std::vector<std::string> check_room_options_apply(const GivenOptions &given, con
   return warnings;
 }
 
-void check_room_options(const RoomRunOptions &o) {
+void check_room_options(const MetricRunOptions &o) {
   if (o.cells_x && o.resolution_m) throw common::InputError("give --cells or --resolution, not both");
   if (o.threshold && !std::isfinite(*o.threshold)) {
     throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *o.threshold));

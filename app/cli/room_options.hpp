@@ -22,15 +22,15 @@
 namespace app {
 
 template <>
-std::span<const OptionField<RoomRunOptions>> option_fields();
+std::span<const OptionField<MetricRunOptions>> option_fields();
 
 // One "warning: ..." line for each option given that does nothing for this room run (the
 // strategy's own options with another strategy, the depth rays' with another model), in the
 // table's order.
-std::vector<std::string> check_room_options_apply(const GivenOptions &given, const RoomRunOptions &options);
+std::vector<std::string> check_room_options_apply(const GivenOptions &given, const MetricRunOptions &options);
 
 // Checks across the options once they are all read (--cells with --resolution, a threshold
 // not finite): common::InputError.
-void check_room_options(const RoomRunOptions &options);
+void check_room_options(const MetricRunOptions &options);
 
 }  // namespace app

@@ -66,7 +66,7 @@ std::string metric_pgm(const sensing::MetricMap &map) {
 }
 
 void MetricFilesRecorder::start(const MetricRunStart &start) {
-  const RoomRunOptions &options = start.options;
+  const MetricRunOptions &options = start.options;
   dir_.emplace(options.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
                metric_own_names());
   kind_ = options.model.kind;
@@ -137,12 +137,12 @@ void MetricFilesRecorder::finish(const MetricRunEnd &end) {
   out.finish();
 }
 
-RoomSummary run_room_and_write(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_and_write(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
                                std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
                                Report *report) {
-  if (options.out_dir.empty()) return run_room(world, options, out, started, interrupted, report);
+  if (options.out_dir.empty()) return run_metric_world(world, options, out, started, interrupted, report);
   MetricFilesRecorder recorder;
-  return run_room(world, options, out, started, interrupted, report, &recorder);
+  return run_metric_world(world, options, out, started, interrupted, report, &recorder);
 }
 
 }  // namespace app

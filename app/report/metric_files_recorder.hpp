@@ -58,8 +58,8 @@ class MetricFilesRecorder final : public MetricRunRecorder {
   std::optional<MetricReplayRecorder> replay_;
 };
 
-// run_room() with options.out_dir's files written by a MetricFilesRecorder when it is set.
-RoomSummary run_room_and_write(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
+// run_metric_world() with options.out_dir's files written by a MetricFilesRecorder when it is set.
+MetricRunSummary run_metric_and_write(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
                                std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                                robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
 

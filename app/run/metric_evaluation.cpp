@@ -7,7 +7,7 @@
 namespace app {
 
 std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold,
-                           RoomSummary &summary) {
+                           MetricRunSummary &summary) {
   summary.cells_total = map.size();
   for (std::size_t n = 0; n < map.size(); ++n) {
     const bool says_occupied = map.log_odds_at(n) >= threshold;
@@ -31,7 +31,7 @@ std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRas
   return first_left;
 }
 
-void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, RoomSummary &summary) {
+void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, MetricRunSummary &summary) {
   const bool all_seen = summary.reachable_free_observed == summary.reachable_free;
   if (summary.ending == robot::MetricEnding::incomplete && all_seen) {
     // What the robot could not observe lies in obstacles or out of reach: the free space is mapped.

@@ -14,10 +14,10 @@ namespace app {
 // cells observed, into `summary`. Returns the first reachable free cell never observed
 // (map.size() when none).
 std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold,
-                           RoomSummary &summary);
+                           MetricRunSummary &summary);
 // Frontier's ending checked against the truth (after score_metric_map): `incomplete` with every
 // reachable free cell observed is `done`; `done` with one never observed (first_left) is
 // `incomplete`.
-void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, RoomSummary &summary);
+void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, MetricRunSummary &summary);
 
 }  // namespace app

@@ -40,14 +40,14 @@ bool is_log_set_up(sensing::ModelKind k) {
   return k == sensing::ModelKind::bump || k == sensing::ModelKind::depth;
 }
 
-double threshold_of(const RoomRunOptions &o) {
+double threshold_of(const MetricRunOptions &o) {
   return o.threshold.value_or(is_log_set_up(o.model.kind) ? -0.5 : 0.0);
 }
 
 // --depth-reading and --depth-origin: the depth rays leave one origin in the robot's frame
 // and, axial, report the depth along the heading (a depth camera, the homework's simulator).
 // Another set-up's range sensors keep their own (the command warns that the options do nothing).
-void with_depth_convention(maze::sim::RobotProfile &profile, const RoomRunOptions &options) {
+void with_depth_convention(maze::sim::RobotProfile &profile, const MetricRunOptions &options) {
   if (options.depth_reading == sensing::DepthReading::range && !options.depth_origin) return;
   if (options.model.kind != sensing::ModelKind::depth) return;
   const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
@@ -63,7 +63,7 @@ void with_depth_convention(maze::sim::RobotProfile &profile, const RoomRunOption
 }
 
 // The set-up's robot (--robot, else the set-up's own); refused when it lacks the set-up's devices.
-maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const RoomRunOptions &options) {
+maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const MetricRunOptions &options) {
   const std::string robot_name = options.robot.empty() ? std::string(setup.default_robot) : options.robot;
   maze::sim::RobotProfile profile = resolve_robot(robot_name);
   if (!has_devices(profile, setup)) {
@@ -75,7 +75,7 @@ maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const RoomRunOpti
 }
 
 // The arena's start, moved by --start and turned by --start-yaw.
-maze::ArenaPose start_pose_of(const maze::Arena &arena, const RoomRunOptions &options) {
+maze::ArenaPose start_pose_of(const maze::Arena &arena, const MetricRunOptions &options) {
   maze::ArenaPose start_pose = arena.start();
   if (options.start) {
     start_pose.x_m = options.start->x_m;
@@ -86,7 +86,7 @@ maze::ArenaPose start_pose_of(const maze::Arena &arena, const RoomRunOptions &op
 }
 
 // The map's grid over the arena's extent: --cells, else --resolution (0.1 m); checked.
-sensing::MetricGridSpec grid_of(const maze::Arena &arena, const RoomRunOptions &options) {
+sensing::MetricGridSpec grid_of(const maze::Arena &arena, const MetricRunOptions &options) {
   const sensing::MetricBoundary boundary{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
   const sensing::MetricGridSpec spec =
       options.cells_x ? sensing::metric_grid_from_cells(boundary, *options.cells_x, *options.cells_y)
@@ -97,7 +97,7 @@ sensing::MetricGridSpec grid_of(const maze::Arena &arena, const RoomRunOptions &
 
 // Refuses, in this order: a start outside the grid, a start touching a solid, a goal outside
 // the grid, a waypoint outside it.
-void check_places(const maze::Arena &arena, const RoomRunOptions &options, const sensing::MetricGridSpec &spec,
+void check_places(const maze::Arena &arena, const MetricRunOptions &options, const sensing::MetricGridSpec &spec,
                   const maze::ArenaPose &start_pose, double body_radius_m) {
   const auto inside = [&spec](Point p) {
     return p.x_m >= spec.boundary.x_start_m && p.x_m < spec.boundary.x_end_m && p.y_m >= spec.boundary.y_start_m &&
@@ -124,7 +124,7 @@ void check_places(const maze::Arena &arena, const RoomRunOptions &options, const
 
 // The controller's options: the robot's description (the room command has no --noise: the
 // scan filter takes the lidar's data sheet), the set-up, at most --max-steps (2 000 000) steps.
-robot::ControllerOptions room_controller_options(const RoomRunOptions &options,
+robot::ControllerOptions room_controller_options(const MetricRunOptions &options,
                                                  const maze::sim::RobotProfile &profile) {
   robot::ControllerOptions controller = robot_description(profile, std::nullopt);
   controller.sensor = options.sensor;
@@ -137,7 +137,7 @@ robot::ControllerOptions room_controller_options(const RoomRunOptions &options,
 // The strategy's options, from the start, stopping no nearer than the body's radius + 8 cm.
 // The room options as the run uses them: wavefront without --goal heads for the world's
 // first goal, when its file gives one.
-robot::MetricOptions room_options_of(const RoomRunOptions &options, const maze::Arena &arena, Point start,
+robot::MetricOptions room_options_of(const MetricRunOptions &options, const maze::Arena &arena, Point start,
                                    double body_radius_m) {
   robot::MetricOptions room = options.room;
   if (room.strategy == robot::MetricStrategy::wavefront && !room.goal && !arena.goals.empty()) {
@@ -166,7 +166,7 @@ maze::TruthRaster truth_on_grid(const maze::Arena &arena, const sensing::MetricG
 // asked simulated times and control steps, printed unless quiet and told to the recorder.
 class RoomLog {
  public:
-  RoomLog(const RoomRunOptions &options, double threshold, std::ostream &out, MetricRunRecorder *recorder)
+  RoomLog(const MetricRunOptions &options, double threshold, std::ostream &out, MetricRunRecorder *recorder)
       : options_(options), threshold_(threshold), out_(out), recorder_(recorder), times_(options.snapshots_at_s),
         steps_(options.snapshot_steps) {
     std::sort(times_.begin(), times_.end());
@@ -200,7 +200,7 @@ class RoomLog {
   }
 
   // After the run: says of each snapshot it never reached that the run ended first.
-  void say_missed(const RoomSummary &summary) {
+  void say_missed(const MetricRunSummary &summary) {
     for (; next_time_ < times_.size(); ++next_time_) {
       out_ << fmt::format("--- t = {:g} s: the run ended at {:.1f} s ---\n\n", times_[next_time_], summary.sim_time_s);
     }
@@ -210,7 +210,7 @@ class RoomLog {
   }
 
  private:
-  const RoomRunOptions &options_;
+  const MetricRunOptions &options_;
   double threshold_;
   std::ostream &out_;
   MetricRunRecorder *recorder_;
@@ -221,8 +221,8 @@ class RoomLog {
 };
 
 // What the controller says of its run, on the grid `spec`.
-RoomSummary summary_of(const robot::MetricController &c, robot::MetricEnding ending, const sensing::MetricGridSpec &spec) {
-  RoomSummary summary;
+MetricRunSummary summary_of(const robot::MetricController &c, robot::MetricEnding ending, const sensing::MetricGridSpec &spec) {
+  MetricRunSummary summary;
   summary.ending = ending;
   summary.message = c.message();
   summary.steps = c.steps();
@@ -230,14 +230,14 @@ RoomSummary summary_of(const robot::MetricController &c, robot::MetricEnding end
   summary.cells_x = spec.cells_x;
   summary.cells_y = spec.cells_y;
   summary.cell_m = spec.cell_m;
-  if (c.body_observes()) summary.sweep = RoomSummary::BodySweep{c.sweep_legs(), c.probe_legs(), c.map().body_observed()};
+  if (c.body_observes()) summary.sweep = MetricRunSummary::BodySweep{c.sweep_legs(), c.probe_legs(), c.map().body_observed()};
   return summary;
 }
 
 // After the run (not quiet): the missed snapshots, the map at the end, the trajectory every
 // second of simulated time and the thresholded map.
 void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c, int time_step_ms,
-               double threshold, const RoomSummary &summary) {
+               double threshold, const MetricRunSummary &summary) {
   log.say_missed(summary);
   log.snapshot(c, "end");
   out << "trajectory (x, y every second):\n";
@@ -252,7 +252,7 @@ void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c
 
 }  // namespace
 
-int room_exit_status(const RoomSummary &s) {
+int metric_run_exit_status(const MetricRunSummary &s) {
   if (s.interrupted) return common::interrupted_exit_status();
   switch (s.ending) {
     case robot::MetricEnding::done:
@@ -263,13 +263,13 @@ int room_exit_status(const RoomSummary &s) {
   }
 }
 
-RoomSummary run_room(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_world(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
                      Report *report, MetricRunRecorder *recorder) {
-  return run_room_in(world.geometry(), options, out, started, interrupted, report, recorder);
+  return run_metric_arena(world.geometry(), options, out, started, interrupted, report, recorder);
 }
 
-RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
                         Report *report_out, MetricRunRecorder *recorder) {
   // ---- everything checked before anything runs ----
@@ -299,7 +299,7 @@ RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options,
                                             if (recorder != nullptr) recorder->on_step(c);
                                           },
                                           interrupted);
-  RoomSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
+  MetricRunSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
   if (summary.ending == robot::MetricEnding::stopped && interrupted != nullptr && interrupted()) {
     summary.interrupted = true;
     summary.message = "interrupted by " + common::interrupt_name();

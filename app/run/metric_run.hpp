@@ -33,7 +33,7 @@
 
 namespace app {
 
-struct RoomRunOptions {
+struct MetricRunOptions {
   std::string world;
   robot::MetricOptions room;
   std::optional<int> cells_x, cells_y;        // --cells X,Y
@@ -51,7 +51,7 @@ struct RoomRunOptions {
   std::optional<double> threshold;            // log-odds drawn W at or above (default 0; bump/depth -0.5)
   std::vector<double> snapshots_at_s;
   std::vector<std::int64_t> snapshot_steps;
-  std::string out_dir;                        // --out DIR: MetricFilesRecorder writes it (run_room_and_write)
+  std::string out_dir;                        // --out DIR: MetricFilesRecorder writes it (run_metric_and_write)
   bool quiet = false;                         // no maps, the summary only
   maze::sim::SimulationOptions simulation;
   std::optional<std::int64_t> max_steps;
@@ -59,7 +59,7 @@ struct RoomRunOptions {
 
 // The run as it starts: everything checked, the map empty, nothing moved.
 struct MetricRunStart {
-  const RoomRunOptions &options;
+  const MetricRunOptions &options;
   const sensing::SetUp &setup;
   const robot::MetricOptions &room;  // the strategy's options as the run uses them
   const maze::Arena &arena;
@@ -90,7 +90,7 @@ class MetricRunRecorder {
   virtual void finish(const MetricRunEnd &end) = 0;
 };
 
-struct RoomSummary {
+struct MetricRunSummary {
   robot::MetricEnding ending = robot::MetricEnding::done;
   bool interrupted = false;  // stopped by a signal
   std::string message;
@@ -120,17 +120,17 @@ struct RoomSummary {
 // `report`, when not null, receives the run's report (the summary block's and summary.json's
 // entries: a batch row's columns). `recorder`, when not null, is told the run as it goes
 // (options.out_dir is the recorder's: the run itself writes no file).
-RoomSummary run_room(const maze::World &world, const RoomRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_world(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                      robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr,
                      MetricRunRecorder *recorder = nullptr);
 // The same in an arena given in code.
-RoomSummary run_room_in(const maze::Arena &arena, const RoomRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                         robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr,
                         MetricRunRecorder *recorder = nullptr);
 // 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.
-int room_exit_status(const RoomSummary &summary);
+int metric_run_exit_status(const MetricRunSummary &summary);
 
 }  // namespace app

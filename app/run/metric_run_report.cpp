@@ -28,7 +28,7 @@ void add_grid(Report &e, const sensing::MetricGridSpec &spec) {
   e.json_only("boundary_m", Json::array({b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m}));
 }
 
-void add_model(Report &e, const RoomRunOptions &options, const sensing::SetUp &setup) {
+void add_model(Report &e, const MetricRunOptions &options, const sensing::SetUp &setup) {
   e.both("model", std::string(setup.name));
   if (options.depth_reading == sensing::DepthReading::axial || options.depth_origin) {
     const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
@@ -40,7 +40,7 @@ void add_model(Report &e, const RoomRunOptions &options, const sensing::SetUp &s
   }
 }
 
-void add_score(Report &e, const RoomSummary &s) {
+void add_score(Report &e, const MetricRunSummary &s) {
   const double right = share_percent(s.cells_right, s.cells_total);
   e.both("cell_accuracy",
          fmt::format("{:.2f}% ({} of {} cells right; observed {} of {})", right, s.cells_right, s.cells_total,
@@ -70,8 +70,8 @@ void add_score(Report &e, const RoomSummary &s) {
 
 }  // namespace
 
-Report metric_run_report(const RoomRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
-                   const sensing::MetricGridSpec &spec, const RoomSummary &summary) {
+Report metric_run_report(const MetricRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
+                   const sensing::MetricGridSpec &spec, const MetricRunSummary &summary) {
   Report e;
   e.both("world", options.world);
   add_grid(e, spec);

@@ -13,9 +13,9 @@
 namespace {
 
 struct Made {
-  app::RoomRunOptions options;
+  app::MetricRunOptions options;
   sensing::MetricGridSpec spec;
-  app::RoomSummary summary;
+  app::MetricRunSummary summary;
 };
 
 Made made() {

@@ -327,7 +327,7 @@ TEST_CASE("room run in an arena with a supervisor's cylinder: a neutral grey dis
   const test_cli::TempDir dir("room_pictures_cylinder");
   maze::Arena arena = maze::load_world(std::string(WORLDS_DIR) + "/ir_room.room").geometry();
   arena.discs.push_back({0.6, 2.4, 0.25});
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = "ir_room with a cylinder";
   o.room.strategy = robot::MetricStrategy::frontier;
   o.room.time_limit_s = 5.0;
@@ -335,7 +335,7 @@ TEST_CASE("room run in an arena with a supervisor's cylinder: a neutral grey dis
   o.out_dir = dir.path.string();
   std::ostringstream out;
   app::MetricFilesRecorder recorder;
-  app::run_room_in(arena, o, out, std::chrono::steady_clock::now(), nullptr, nullptr, &recorder);
+  app::run_metric_arena(arena, o, out, std::chrono::steady_clock::now(), nullptr, nullptr, &recorder);
   int band = 0;
   const app::PlainGridFrame frame = room_frame(50, 30, 0.1, 0.0, 0.0, band);
   for (const char *name : {"map.png", "truth.png"}) {

@@ -19,13 +19,13 @@
 
 namespace {
 
-std::vector<std::string> room_warnings(std::set<std::string> typed, const app::RoomRunOptions &o) {
+std::vector<std::string> room_warnings(std::set<std::string> typed, const app::MetricRunOptions &o) {
   const app::GivenOptions given{"room", [&typed](std::string_view option) { return typed.count(std::string(option)) > 0; }};
   return app::check_room_options_apply(given, o);
 }
 
-app::RoomRunOptions with(robot::MetricStrategy strategy, sensing::ModelKind model = sensing::ModelKind::ray) {
-  app::RoomRunOptions o;
+app::MetricRunOptions with(robot::MetricStrategy strategy, sensing::ModelKind model = sensing::ModelKind::ray) {
+  app::MetricRunOptions o;
   o.room.strategy = strategy;
   o.model.kind = model;
   return o;
@@ -64,7 +64,7 @@ TEST_CASE("room options: every flag of the table is an option of room, and --res
   app::CommandContext context;
   app::add_commands(cli, context);
   const CLI::App *room = cli.get_subcommand("room");
-  for (const app::OptionField<app::RoomRunOptions> &field : app::option_fields<app::RoomRunOptions>()) {
+  for (const app::OptionField<app::MetricRunOptions> &field : app::option_fields<app::MetricRunOptions>()) {
     CAPTURE(field.flag);
     CHECK(room->get_option_no_throw(std::string(field.flag)) != nullptr);
   }
@@ -84,12 +84,12 @@ TEST_CASE("room options: every flag of the table is an option of room, and --res
 }
 
 TEST_CASE("room options: --cells with --resolution, and a threshold not finite, are refused") {
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.cells_x = 10;
   o.cells_y = 10;
   o.resolution_m = 0.1;
   CHECK_THROWS_WITH_AS(app::check_room_options(o), "give --cells or --resolution, not both", common::InputError);
-  app::RoomRunOptions t;
+  app::MetricRunOptions t;
   t.threshold = std::numeric_limits<double>::infinity();
   CHECK_THROWS_WITH_AS(app::check_room_options(t), doctest::Contains("--threshold must be a finite"), common::InputError);
 }

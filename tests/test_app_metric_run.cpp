@@ -34,8 +34,8 @@ constexpr SetUpCase kSetUps[] = {
     {sensing::ModelKind::pie, "ir-ring"},
 };
 
-app::RoomRunOptions frontier_options(const SetUpCase &s) {
-  app::RoomRunOptions o;
+app::MetricRunOptions frontier_options(const SetUpCase &s) {
+  app::MetricRunOptions o;
   o.world = "generated";
   o.room.strategy = robot::MetricStrategy::frontier;
   o.model.kind = s.model;
@@ -45,11 +45,11 @@ app::RoomRunOptions frontier_options(const SetUpCase &s) {
 }
 
 // The run in the world file o.world, as the room command loads it.
-app::RoomSummary run_file(const app::RoomRunOptions &o, std::ostream &out) {
-  return app::run_room(maze::load_world(o.world), o, out);
+app::MetricRunSummary run_file(const app::MetricRunOptions &o, std::ostream &out) {
+  return app::run_metric_world(maze::load_world(o.world), o, out);
 }
 
-void check_mapped(const app::RoomSummary &s, const std::string &what) {
+void check_mapped(const app::MetricRunSummary &s, const std::string &what) {
   INFO(what, ": ", robot::to_string(s.ending), ": ", s.message);
   CHECK(s.observed_share() >= 0.99);
   // Never done with reachable free space unobserved.
@@ -73,10 +73,10 @@ maze::Arena generated_arena(int seed) {
 
 TEST_CASE("room frontier: the shipped IR room mapped with the lidar and the IR (cone and pie)") {
   for (const SetUpCase &s : kSetUps) {
-    app::RoomRunOptions o = frontier_options(s);
+    app::MetricRunOptions o = frontier_options(s);
     o.world = std::string(WORLDS_DIR) + "/ir_room.room";
     std::ostringstream out;
-    const app::RoomSummary summary = run_file(o, out);
+    const app::MetricRunSummary summary = run_file(o, out);
     check_mapped(summary, std::string(s.robot));
     CHECK(summary.ending == robot::MetricEnding::done);
   }
@@ -97,10 +97,10 @@ TEST_CASE("room frontier: the sonar sweeps open floor that its lost echoes never
   box.half_width_m = 0.2;
   arena.obstacles.push_back(box);
   arena.starts.push_back(maze::ArenaPose{0.5, 0.5, 0.0});
-  app::RoomRunOptions o = frontier_options(kSetUps[1]);
+  app::MetricRunOptions o = frontier_options(kSetUps[1]);
   o.robot = "sonar-ring";
   std::ostringstream out;
-  const app::RoomSummary s = app::run_room_in(arena, o, out);
+  const app::MetricRunSummary s = app::run_metric_arena(arena, o, out);
   check_mapped(s, "open floor sonar cone");
   CHECK(s.ending == robot::MetricEnding::done);
   REQUIRE(s.sweep.has_value());
@@ -109,11 +109,11 @@ TEST_CASE("room frontier: the sonar sweeps open floor that its lost echoes never
 }
 
 TEST_CASE("room frontier: the shipped IR room mapped with the sonar cone") {
-  app::RoomRunOptions o = frontier_options(kSetUps[1]);
+  app::MetricRunOptions o = frontier_options(kSetUps[1]);
   o.robot = "sonar-ring";
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   std::ostringstream out;
-  const app::RoomSummary s = run_file(o, out);
+  const app::MetricRunSummary s = run_file(o, out);
   check_mapped(s, "IR room sonar cone");
   CHECK(s.ending == robot::MetricEnding::done);
 }
@@ -126,7 +126,7 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the lidar") {
   // body: the robot, in before the map grew, drives out again over the cells it came by.
   for (int seed = 1; seed <= 20; ++seed) {
     std::ostringstream out;
-    const app::RoomSummary summary = app::run_room_in(generated_arena(seed), frontier_options(kSetUps[0]), out);
+    const app::MetricRunSummary summary = app::run_metric_arena(generated_arena(seed), frontier_options(kSetUps[0]), out);
     check_mapped(summary, "seed " + std::to_string(seed) + " hambot");
   }
 }
@@ -140,9 +140,9 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone and the
   for (const char *robot_name : {"sonar-ring", "ir-ring"}) {
     for (int seed = 1; seed <= 20; ++seed) {
       std::ostringstream out;
-      app::RoomRunOptions o = frontier_options(kSetUps[1]);
+      app::MetricRunOptions o = frontier_options(kSetUps[1]);
       o.robot = robot_name;
-      const app::RoomSummary s = app::run_room_in(generated_arena(seed), o, out);
+      const app::MetricRunSummary s = app::run_metric_arena(generated_arena(seed), o, out);
       const std::string what = "seed " + std::to_string(seed) + " " + robot_name + " cone";
       check_mapped(s, what);
       CHECK(s.sweep.has_value() == (std::string(robot_name) == "sonar-ring"));  // an IR's nothing-seen frees its cone
@@ -154,11 +154,11 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone and the
 TEST_CASE("room frontier: the walled shipped arenas mapped with the sonar cone") {
   // Walled all round, with walls at a slant inside: about 3 s of CPU for the two.
   for (const char *world : {"obstacle_field.room", "thick_arena.xml"}) {
-    app::RoomRunOptions o = frontier_options(kSetUps[1]);
+    app::MetricRunOptions o = frontier_options(kSetUps[1]);
     o.robot = "sonar-ring";
     o.world = std::string(WORLDS_DIR) + "/" + world;
     std::ostringstream out;
-    const app::RoomSummary s = run_file(o, out);
+    const app::MetricRunSummary s = run_file(o, out);
     check_mapped(s, std::string(world) + " sonar cone");
     CHECK(s.ending == robot::MetricEnding::done);
   }
@@ -168,9 +168,9 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the IR pie (ir-ring an
   for (const char *robot_name : {"ir-ring", "ir-fan"}) {
     for (int seed = 1; seed <= 20; ++seed) {
       std::ostringstream out;
-      app::RoomRunOptions o = frontier_options(kSetUps[2]);
+      app::MetricRunOptions o = frontier_options(kSetUps[2]);
       o.robot = robot_name;
-      const app::RoomSummary summary = app::run_room_in(generated_arena(seed), o, out);
+      const app::MetricRunSummary summary = app::run_metric_arena(generated_arena(seed), o, out);
       check_mapped(summary, "seed " + std::to_string(seed) + " " + robot_name + " pie");
     }
   }
@@ -178,7 +178,7 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the IR pie (ir-ring an
 }
 
 TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is not (exit 1)") {
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   o.room.strategy = robot::MetricStrategy::wavefront;
   o.room.goal = mapping::Point{4.7, 2.7};
@@ -186,11 +186,11 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   o.model.kind = sensing::ModelKind::pie;
   o.quiet = true;
   std::ostringstream out;
-  const app::RoomSummary reached = run_file(o, out);
+  const app::MetricRunSummary reached = run_file(o, out);
   CHECK(reached.ending == robot::MetricEnding::goal_reached);
-  CHECK(app::room_exit_status(reached) == 0);
+  CHECK(app::metric_run_exit_status(reached) == 0);
   o.robot = "ir-fan";  // Figure 1's six sensors over the front
-  const app::RoomSummary fan = run_file(o, out);
+  const app::MetricRunSummary fan = run_file(o, out);
   CHECK(fan.ending == robot::MetricEnding::goal_reached);
   o.robot.clear();
 
@@ -201,9 +201,9 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   walled.starts.push_back({0.5, 1.0, 0.0});
   o.room.goal = mapping::Point{2.5, 1.0};
   o.model.kind = sensing::ModelKind::ray;
-  const app::RoomSummary cut_off = app::run_room_in(walled, o, out);
+  const app::MetricRunSummary cut_off = app::run_metric_arena(walled, o, out);
   CHECK(cut_off.ending == robot::MetricEnding::unreachable);
-  CHECK(app::room_exit_status(cut_off) == 1);
+  CHECK(app::metric_run_exit_status(cut_off) == 1);
 }
 
 TEST_CASE("room wavefront: a goal one cell from an obstacle is reached (the growth keeps the way, not the goal)") {
@@ -212,7 +212,7 @@ TEST_CASE("room wavefront: a goal one cell from an obstacle is reached (the grow
   arena.y_max_m = 2.0;
   arena.obstacles.push_back(maze::Obstacle::from_box(1.98, 0.6, 2.4, 1.4));  // its cells from x 1.9 m
   arena.starts.push_back({0.5, 1.0, 0.0});
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = "one box";
   o.room.strategy = robot::MetricStrategy::wavefront;
   o.room.goal = mapping::Point{1.85, 1.0};  // 0.13 m from the box: room for the body (0.09 m)
@@ -220,7 +220,7 @@ TEST_CASE("room wavefront: a goal one cell from an obstacle is reached (the grow
   o.model.kind = sensing::ModelKind::ray;
   o.quiet = true;
   std::ostringstream out;
-  const app::RoomSummary s = app::run_room_in(arena, o, out);
+  const app::MetricRunSummary s = app::run_metric_arena(arena, o, out);
   INFO(s.message);
   CHECK(s.ending == robot::MetricEnding::goal_reached);
 }
@@ -229,7 +229,7 @@ TEST_CASE("room wavefront: the sonar ring's legs stopped by a touch the map did 
   // Its lost echoes leave the partition's cells free on the map: a leg stops touching it. The
   // touched cell is occupied for planning and the robot backs off; before, it replanned the
   // same leg a control step at a time until the step limit (2000000: minutes of CPU).
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   o.room.strategy = robot::MetricStrategy::wavefront;
   o.room.goal = mapping::Point{4.7, 2.7};
@@ -238,7 +238,7 @@ TEST_CASE("room wavefront: the sonar ring's legs stopped by a touch the map did 
   o.quiet = true;
   o.max_steps = 10000;  // the run ends by itself well before
   std::ostringstream out;
-  const app::RoomSummary s = run_file(o, out);
+  const app::MetricRunSummary s = run_file(o, out);
   INFO(robot::to_string(s.ending), ": ", s.message);
   CHECK(s.ending == robot::MetricEnding::goal_reached);
   CHECK(s.steps < 10000);
@@ -255,7 +255,7 @@ TEST_CASE("ir-fan carries demo pie's Figure 1 mounts, left to right") {
 }
 
 TEST_CASE("room waypoints: the list driven in laps, or round and round until the time limit") {
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   o.room.strategy = robot::MetricStrategy::waypoints;
   o.room.waypoints = {{0.5, 0.5}, {0.5, 2.4}};  // west of the partition, there and back
@@ -263,11 +263,11 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   o.quiet = true;
   std::ostringstream out;
   o.room.laps = 2;
-  const app::RoomSummary twice = run_file(o, out);
+  const app::MetricRunSummary twice = run_file(o, out);
   CHECK(twice.ending == robot::MetricEnding::arrived);
   CHECK(twice.message == "reached all 2 waypoints 2 times");
   o.room.laps = 1;
-  const app::RoomSummary once = run_file(o, out);
+  const app::MetricRunSummary once = run_file(o, out);
   CHECK(once.message == "reached all 2 waypoints");
   CHECK(once.sim_time_s < twice.sim_time_s);
 
@@ -276,9 +276,9 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   o.quiet = false;
   o.snapshots_at_s = {5.0, 30.0};
   std::ostringstream maps;
-  const app::RoomSummary timed = run_file(o, maps);
+  const app::MetricRunSummary timed = run_file(o, maps);
   CHECK(timed.ending == robot::MetricEnding::time_up);
-  CHECK(app::room_exit_status(timed) == 0);
+  CHECK(app::metric_run_exit_status(timed) == 0);
   CHECK(timed.sim_time_s == doctest::Approx(30.0).epsilon(0.002));
   CHECK(maps.str().find("--- t = 5 s: step") != std::string::npos);
   CHECK(maps.str().find("--- t = 30 s: step") != std::string::npos);
@@ -287,13 +287,13 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   o.room.waypoints = {{0.3, 0.3}};
   o.room.time_limit_s = 3.0;
   o.quiet = true;
-  const app::RoomSummary still = run_file(o, maps);
+  const app::MetricRunSummary still = run_file(o, maps);
   CHECK(still.ending == robot::MetricEnding::time_up);
   CHECK(still.sim_time_s == doctest::Approx(3.0).epsilon(0.02));
 }
 
 TEST_CASE("room: bad input is refused before anything runs") {
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   o.quiet = true;
   std::ostringstream out;
@@ -312,33 +312,33 @@ TEST_CASE("room: bad input is refused before anything runs") {
 }
 
 TEST_CASE("room wavefront: without --goal it heads for the world file's goal") {
-  app::RoomRunOptions o;
+  app::MetricRunOptions o;
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";  // goal 4.7 2.7
   o.room.strategy = robot::MetricStrategy::wavefront;
   o.room.dilate = 1;
   o.model.kind = sensing::ModelKind::pie;
   o.quiet = true;
   std::ostringstream out;
-  const app::RoomSummary reached = run_file(o, out);
+  const app::MetricRunSummary reached = run_file(o, out);
   CHECK(reached.ending == robot::MetricEnding::goal_reached);
   maze::Arena no_goal;  // a world that gives none still needs --goal
   no_goal.x_max_m = 3.0;
   no_goal.y_max_m = 2.0;
   no_goal.starts.push_back({0.5, 1.0, 0.0});
-  CHECK_THROWS_WITH_AS(app::run_room_in(no_goal, o, out), "--strategy wavefront needs --goal X,Y (the world gives none)",
+  CHECK_THROWS_WITH_AS(app::run_metric_arena(no_goal, o, out), "--strategy wavefront needs --goal X,Y (the world gives none)",
                        common::InputError);
 }
 
 TEST_CASE("room: a stop request ends any strategy at its next control step, stopped and interrupted") {
-  app::RoomRunOptions o = frontier_options(kSetUps[0]);
+  app::MetricRunOptions o = frontier_options(kSetUps[0]);
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   std::ostringstream out;
-  const app::RoomSummary s = app::run_room(maze::load_world(o.world), o, out,
+  const app::MetricRunSummary s = app::run_metric_world(maze::load_world(o.world), o, out,
                                            std::chrono::steady_clock::now(), [] { return true; });
   CHECK(s.ending == robot::MetricEnding::stopped);
   CHECK(s.interrupted);
   CHECK(s.message == "interrupted by Ctrl-C");  // no signal was recorded: a stop asked for in code
   CHECK(s.steps == 0);  // asked before the first control step
-  CHECK(app::room_exit_status(s) == 130);
+  CHECK(app::metric_run_exit_status(s) == 130);
   CHECK(out.str().find("interrupted by Ctrl-C") != std::string::npos);
 }
