@@ -283,12 +283,19 @@ TEST_CASE("mms --out: the files every run writes, summary.json with mms's stats 
   std::ostringstream text;
   text << file.rdbuf();
   const std::string json = text.str();
-  CHECK(json.find("\"mms_end\": \"reached\"") != std::string::npos);
+  // One report: the ending summary.json gives is the one printed (and a batch row's).
+  CHECK(json.find("\"end\": \"reached\"") != std::string::npos);
+  CHECK(out.str().find("\nend: reached (") != std::string::npos);
+  CHECK(json.find("\"mms_end\"") == std::string::npos);
   CHECK(json.find("\"best_run_distance\": 4") != std::string::npos);
   CHECK(json.find("\"score\": 5.5") != std::string::npos);
   CHECK(json.find("\"goal\": \"reached\"") != std::string::npos);
-  CHECK(json.find("\"end\": ") != std::string::npos);
   CHECK(json.find("\"sim_time_s\": ") != std::string::npos);
+  // replay.html's table is the same report: the program's keys among the run's.
+  std::ifstream replay(dir / "replay.html");
+  std::ostringstream page;
+  page << replay.rdbuf();
+  CHECK(page.str().find("best_run_distance") != std::string::npos);
   for (const char *name : {"marks.txt", "map.png", "truth.png", "map.pgm", "map.yaml", "trace.csv", "replay.html"}) {
     INFO(name);
     CHECK(fs::is_regular_file(dir / name));

@@ -1,7 +1,7 @@
 #pragma once
 // `mms --out DIR`: what an algorithm's run adds to the files every run writes (report/'s
 // FilesRecorder: map.pgm + map.yaml, map.png, truth.png, trace.csv, replay.html, snapshots):
-// its summary.json holds every key of the mms summary block (format_mms_summary) too, and
+// its summary.json and replay.html's table show the mms report (app/mms/mms_report.hpp), and
 // marks.txt the algorithm's marks as the terminal shows them, without colour.
 
 #include <string>
@@ -11,11 +11,6 @@
 #include "app/report/outputs.hpp"
 
 namespace app {
-
-// summary.json's text: the run's keys (summary_json) with the mms keys added: algorithm,
-// walls, mms_end, mms_end_message, lines, crashes, and the stats (total_distance ... score,
-// best-run values null until a run has finished).
-std::string mms_summary_json(const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
 
 // The files an mms run reads besides the world and --robot's file, for the output folder's
 // check: the program and each of its arguments (any may name a file it reads: `python3

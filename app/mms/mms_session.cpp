@@ -13,6 +13,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/mms/mms_mouse.hpp"
 #include "app/mms/mms_outputs.hpp"
+#include "app/mms/mms_report.hpp"
 #include "app/report/files_recorder.hpp"
 #include "app/report/outputs.hpp"
 #include "app/report/truth_picture.hpp"
@@ -297,10 +298,11 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   name_step_limit(options, run.summary);
   run.summary.wall_time_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
 
+  const Report mms_summary = mms_report(options, mms, run);
   std::exception_ptr no_space;
   if (recorder) {
     try {
-      recorder->add_own_files(mms_summary_json(options, mms, run), mms_own_files(run));
+      recorder->add_own_files(mms_summary, mms_own_files(run));
       recorder->finish(RunEnd{options, truth, run.summary, result, model, learned_sides(result, style)});
     } catch (const common::NoSpaceError &) {
       no_space = std::current_exception();  // said after the summary, which the user still gets
@@ -312,7 +314,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
     out << render::render_map(result.grid, result.visits, style) << '\n';
     out << "the algorithm's marks (setWall, setColor, setText):\n" << render_marks(report.marks, style.color) << '\n';
   }
-  out << format_mms_summary(options, mms, run);
+  out << format_summary(mms_summary);
   if (no_space) {
     out << std::flush;
     std::rethrow_exception(no_space);
@@ -337,52 +339,6 @@ std::string command_line(const std::vector<std::string> &command) {
     if (!text.empty()) text += ' ';
     text += a.find_first_of(" \t'\"") == std::string::npos && !a.empty() ? a : fmt::format("'{}'", a);
   }
-  return text;
-}
-
-namespace {
-
-// The summary's end: "interrupted by SIGTERM", "failed (the algorithm ended ...)", "exited".
-std::string mms_end_text(const MmsReport &r) {
-  if (r.end == MmsEnd::interrupted) return r.message;
-  return r.message.empty() ? std::string(to_string(r.end)) : fmt::format("{} ({})", to_string(r.end), r.message);
-}
-
-}  // namespace
-
-std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms, const MmsRun &run) {
-  const RunSummary &s = run.summary;
-  const MmsReport &r = run.mms;
-  std::string text;
-  const auto line = [&text](std::string_view key, const std::string &value) { text += fmt::format("{}: {}\n", key, value); };
-  const auto optional = [](auto v) { return v ? mms_number(static_cast<double>(*v)) : std::string("-"); };
-  line("world", options.world);
-  line("size", fmt::format("{}x{}", s.width, s.height));
-  line("subcells", std::to_string(options.subcells));
-  line("model", std::string(sensing::to_string(options.model.kind)));
-  line("robot", options.robot);
-  line("seed", std::to_string(options.simulation.seed));
-  line("algorithm", command_line(mms.command));
-  line("walls", mms.walls == MmsWalls::truth ? "truth" : "sensed");
-  line("end", mms_end_text(r));
-  line("lines", std::to_string(r.lines));
-  line("steps", std::to_string(s.steps));
-  line("moves", std::to_string(s.moves));
-  line("crashes", std::to_string(r.crashes));
-  line("visited", std::to_string(s.visited));
-  line("goal", s.reached_goal ? "reached" : "not reached");
-  line("reachable", std::to_string(s.score.reachable_cells));
-  line("coverage", fmt::format("{:.2f}%", s.score.coverage_percent()));
-  line("wall_accuracy", fmt::format("{:.2f}%", s.score.wall_accuracy_percent()));
-  line("total_distance", std::to_string(r.stats.total_distance()));
-  line("total_turns", std::to_string(r.stats.total_turns()));
-  line("total_effective_distance", mms_number(r.stats.total_effective_distance()));
-  line("best_run_distance", optional(r.stats.best_run_distance()));
-  line("best_run_turns", optional(r.stats.best_run_turns()));
-  line("best_run_effective_distance", optional(r.stats.best_run_effective_distance()));
-  line("score", mms_number(r.stats.score()));
-  line("sim_time_s", fmt::format("{:.3f}", s.sim_time_s));
-  line("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms));
   return text;
 }
 

@@ -81,11 +81,6 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
 MmsRun run_mms_world(const RunOptions &options, const MmsOptions &mms, std::ostream &out,
                      const RunControls &controls = {});
 
-// The summary block: world, size, ..., algorithm, walls, end, lines, moves, goal, coverage,
-// wall_accuracy, then mms's stats (total_distance, total_turns, total_effective_distance,
-// best_run_distance, best_run_turns, best_run_effective_distance, score), times.
-std::string format_mms_summary(const RunOptions &options, const MmsOptions &mms, const MmsRun &run);
-
 // 0 when the algorithm ended as asked (exited 0, or --until reached) and the robot reached
 // the goal; 128 + the signal when interrupted (143 for SIGTERM); 1 otherwise.
 int exit_status(const MmsRun &run);

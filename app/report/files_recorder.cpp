@@ -35,8 +35,8 @@ void FilesRecorder::on_move(const robot::MoveReport &move) {
   history_->arrived(move.step, move.cell, move.heading);
 }
 
-void FilesRecorder::add_own_files(std::string summary_json, std::vector<NamedFile> files) {
-  own_summary_json_ = std::move(summary_json);
+void FilesRecorder::add_own_files(Report report, std::vector<NamedFile> files) {
+  own_report_ = std::move(report);
   own_files_ = std::move(files);
 }
 
@@ -44,7 +44,7 @@ void FilesRecorder::finish(const RunEnd &end) {
   if (trace_) trace_->finish();
   RunFiles files{&end.result.grid, &end.model, &end.result.path, trace_ ? &trace_->file() : nullptr, {},
                  &end.truth, &end.result.visits, end.learned, history_ ? &*history_ : nullptr,
-                 landmark_marks(end.truth), own_summary_json_};
+                 landmark_marks(end.truth), own_report_};
   for (const maze::Cell goal : end.truth.goals()) files.goals.push_back({goal.x, goal.y});
   write_outputs(*dir_, end.options, end.summary, files);
   for (const NamedFile &file : own_files_) dir_->write(file.name, file.bytes);

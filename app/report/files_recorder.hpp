@@ -14,6 +14,7 @@
 #include "app/report/grid_history.hpp"
 #include "app/report/output_dir.hpp"
 #include "app/report/trace_writer.hpp"
+#include "app/run/report.hpp"
 #include "app/run/run.hpp"
 #include "app/run/run_recorder.hpp"
 
@@ -32,9 +33,9 @@ class FilesRecorder final : public RunRecorder {
   std::vector<std::uint32_t> *grid_changes() override;
   void on_step(const robot::StepReport &step, const maze::sim::Pose &true_pose) override;
   void on_move(const robot::MoveReport &move) override;
-  // Before finish(): what the kind of run writes of its own, summary.json's text in place of
-  // the run's and its files (named in own_names).
-  void add_own_files(std::string summary_json, std::vector<NamedFile> files);
+  // Before finish(): what the kind of run reports and writes of its own: its report in place
+  // of the maze run's (summary.json, replay.html's table) and its files (named in own_names).
+  void add_own_files(Report report, std::vector<NamedFile> files);
   // Writes every file (write_outputs, then the kind's own); a stop signal meanwhile ends the
   // process with each file whole or absent.
   void finish(const RunEnd &end) override;
@@ -42,7 +43,7 @@ class FilesRecorder final : public RunRecorder {
  private:
   std::vector<NamedInput> program_inputs_;
   std::vector<std::string> own_names_;
-  std::optional<std::string> own_summary_json_;
+  std::optional<Report> own_report_;
   std::vector<NamedFile> own_files_;
   std::optional<OutputDir> dir_;
   std::optional<TraceWriter> trace_;

@@ -142,11 +142,13 @@ Json options_json(const RunOptions &o, const RunSummary &s) {
 
 }  // namespace
 
-std::string summary_json(const RunOptions &o, const RunSummary &s) {
-  Json j = report_json(run_report(o, s));
+std::string summary_json(const RunOptions &o, const RunSummary &s, const Report &report) {
+  Json j = report_json(report);
   j["options"] = options_json(o, s);
   return j.dump(2) + "\n";
 }
+
+std::string summary_json(const RunOptions &o, const RunSummary &s) { return summary_json(o, s, run_report(o, s)); }
 
 bool trace_every_step(const RunOptions &options) {
   return options.output.trace_steps || !sensing::setup(options.model.kind).reads_lidar();
@@ -264,7 +266,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.caption = map_caption(options);
   input.steps = summary.steps;
   input.reachable_cells = summary.score.reachable_cells;
-  input.summary = summary_pairs(run_report(options, summary));
+  input.summary = summary_pairs(files.report ? *files.report : run_report(options, summary));
   return replay_html(input);
 }
 
@@ -280,7 +282,7 @@ void write_outputs(OutputDir &out, const RunOptions &options, const RunSummary &
                        format, page));
     out.write(fmt::format("truth.{}", to_string(format)), truth_png_file(options, files, format, page));
   }
-  out.write("summary.json", files.summary_json ? *files.summary_json : summary_json(options, summary));
+  out.write("summary.json", summary_json(options, summary, files.report ? *files.report : run_report(options, summary)));
   if (files.trace != nullptr) out.commit("trace.csv", *files.trace);
   if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(out, options, summary, files, page);
   write_replay(out, options, summary, files);

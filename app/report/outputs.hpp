@@ -45,6 +45,7 @@
 #include "app/picture/map_picture.hpp"
 #include "app/report/output_dir.hpp"
 #include "app/report/replay.hpp"
+#include "app/run/report.hpp"
 #include "app/run/run.hpp"
 #include "common/atomic_file.hpp"
 #include "mapping/grid_types.hpp"
@@ -69,6 +70,10 @@ std::string png_file(const mapping::OccupancyGrid &grid, const MapTones &tones, 
                      const std::string &caption, PictureFormat format = PictureFormat::png,
                      const std::optional<PageFrame> &page = std::nullopt);
 
+// summary.json's text: the report's keys (report_json), then "options", every option the run
+// used (the defaults filled in).
+std::string summary_json(const RunOptions &options, const RunSummary &summary, const Report &report);
+// The same of a maze run: its report is run_report(options, summary).
 std::string summary_json(const RunOptions &options, const RunSummary &summary);
 
 // "step,time_s,true_x_m,true_y_m,true_yaw_rad,cell_x,cell_y,action,subcells_updated\n":
@@ -105,9 +110,9 @@ struct RunFiles {
   std::function<LearnedSide(maze::Cell, maze::Side)> learned;
   const GridHistory *history = nullptr;  // --snapshots, replay.html: the run as it went
   std::vector<LandmarkMark> landmarks;   // the world's landmarks, drawn on the pictures
-  // summary.json's text when the kind of run writes its own (mms: with the program's
-  // stats); else summary_json(options, summary).
-  std::optional<std::string> summary_json;
+  // The run's report when its kind builds its own (mms: the program's ending and stats);
+  // else run_report(options, summary). summary.json and replay.html's table show it.
+  std::optional<Report> report;
 };
 
 // Whether a run with --out records a GridHistory: for --snapshots, or for replay.html when

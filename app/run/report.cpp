@@ -30,6 +30,11 @@ void Report::json_only(std::string key, nlohmann::ordered_json json) {
   entries_.push_back({std::move(key), std::nullopt, std::move(json)});
 }
 
+void Report::add(ReportEntry entry) {
+  assert(find(entry.key) == nullptr);
+  entries_.push_back(std::move(entry));
+}
+
 std::string format_summary(const Report &report) {
   std::string out;
   for (const auto &[key, value] : summary_pairs(report)) out += fmt::format("{}: {}\n", key, value);

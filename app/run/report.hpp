@@ -46,6 +46,8 @@ class Report {
   void both(std::string key, const std::string &text);
   // Appends an entry of summary.json only.
   void json_only(std::string key, nlohmann::ordered_json json);
+  // Appends `entry` as it is (an entry of another report: a kind's report built on another's).
+  void add(ReportEntry entry);
 
  private:
   std::vector<ReportEntry> entries_;

@@ -24,7 +24,7 @@ Json cell_json(mapping::Cell c) { return Json::array({c.x, c.y}); }
 
 void add_goal_entries(Report &e, const RunOptions &o, const RunSummary &s) {
   const bool goal = reports_goal(o);
-  if (goal) e.both("goal", s.reached_goal ? "reached" : "not reached");
+  if (goal) e.both("goal", goal_text(s.reached_goal));
   else e.json_only("goal", nullptr);
   if (goal && s.shortest) {
     e.both("shortest_path", describe_shortest(*s.shortest),
@@ -78,6 +78,8 @@ void add_speed_run_entries(Report &e, const RunOptions &o, const RunSummary &s) 
 bool reports_goal(const RunOptions &options) {
   return options.strategy == explore::StrategyKind::floodfill || options.plan.speed_run;
 }
+
+std::string goal_text(bool reached) { return reached ? "reached" : "not reached"; }
 
 std::string describe_shortest(const explore::ShortestPathProof &proof) {
   const std::string may = proof.optimistic_moves

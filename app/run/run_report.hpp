@@ -17,5 +17,7 @@ Report run_report(const RunOptions &options, const RunSummary &summary);
 // The rule for the "goal" and "shortest_path" entries: a run reports reaching its goal when
 // it was asked to reach one (the floodfill search, or a --speed-run).
 bool reports_goal(const RunOptions &options);
+// The "goal" entry's printed value: "reached" or "not reached".
+std::string goal_text(bool reached);
 
 }  // namespace app
