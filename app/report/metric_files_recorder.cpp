@@ -138,7 +138,7 @@ void MetricFilesRecorder::finish(const MetricRunEnd &end) {
 }
 
 MetricRunSummary run_metric_and_write(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
-                               std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                               std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
                                Report *report) {
   if (options.out_dir.empty()) return run_metric_world(world, options, out, started, interrupted, report);
   MetricFilesRecorder recorder;

@@ -61,6 +61,6 @@ class MetricFilesRecorder final : public MetricRunRecorder {
 // run_metric_world() with options.out_dir's files written by a MetricFilesRecorder when it is set.
 MetricRunSummary run_metric_and_write(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
                                std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                               robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr);
+                               robot::StopPoll interrupted = nullptr, Report *report = nullptr);
 
 }  // namespace app

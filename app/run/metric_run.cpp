@@ -264,13 +264,13 @@ int metric_run_exit_status(const MetricRunSummary &s) {
 }
 
 MetricRunSummary run_metric_world(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
-                     std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                     std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
                      Report *report, MetricRunRecorder *recorder) {
   return run_metric_arena(world.geometry(), options, out, started, interrupted, report, recorder);
 }
 
 MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptions &options, std::ostream &out,
-                        std::chrono::steady_clock::time_point started, robot::MetricStopPoll interrupted,
+                        std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
                         Report *report_out, MetricRunRecorder *recorder) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);

@@ -122,12 +122,12 @@ struct MetricRunSummary {
 // (options.out_dir is the recorder's: the run itself writes no file).
 MetricRunSummary run_metric_world(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                     robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr,
+                     robot::StopPoll interrupted = nullptr, Report *report = nullptr,
                      MetricRunRecorder *recorder = nullptr);
 // The same in an arena given in code.
 MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                        robot::MetricStopPoll interrupted = nullptr, Report *report = nullptr,
+                        robot::StopPoll interrupted = nullptr, Report *report = nullptr,
                         MetricRunRecorder *recorder = nullptr);
 // 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.

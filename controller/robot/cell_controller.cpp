@@ -150,7 +150,7 @@ RunResult CellController::run(const RunHooks &hooks) {
     reason = s.speed_run();
   }
   if (reason != EndReason::stopped) b.flush_step();
-  return RunResult{reason,        std::move(b.message), b.steps,          b.moves,          search_visited,
+  return RunResult{reason,        std::move(b.message), b.loop.steps(),          b.moves,          search_visited,
                    b.robot.getTime(), std::move(b.grid), std::move(b.visits), std::move(b.path), explore_time_s,
                    proof,         s.speed_result,       std::move(search_visits)};
 }

@@ -15,10 +15,6 @@ namespace {
 using mapping::Cell;
 using mapping::Heading;
 
-int time_step_of(webots::Robot &robot, const MotionOptions &m) {
-  return m.time_step_ms > 0 ? m.time_step_ms : static_cast<int>(std::lround(robot.getBasicTimeStep()));
-}
-
 EndReason to_reason(Motion s) {
   switch (s) {
     case Motion::max_steps: return EndReason::max_steps;
@@ -41,15 +37,15 @@ CellRobot::CellRobot(webots::Robot &r, const ControllerOptions &o)
       grid(o.geometry, initial),
       visits(o.geometry.width_cells, o.geometry.height_cells),
       chassis(r, options.devices),
-      time_step_ms(time_step_of(r, options.motion)),
-      drive(chassis, options.motion, time_step_ms, [this](Action a) { return step(a); }),
+      loop(r, options.motion),
+      drive(chassis, options.motion, loop.time_step_ms(), [this](Action a) { return step(a); }),
       senses(r, options, drive, grid, model),
       walls([this](Cell c, Heading h) { return mapping::side_state(grid, initial, c, h, options.occupied_threshold); }),
-      arrival(options, drive, senses, grid, visits, walls, [this] { return steps; }) {}
+      arrival(options, drive, senses, grid, visits, walls, [this] { return loop.steps(); }) {}
 
 Motion CellRobot::start() {
-  chassis.enable(time_step_ms);
-  senses.enable(time_step_ms);
+  chassis.enable(loop.time_step_ms());
+  senses.enable(loop.time_step_ms());
   cell = options.start;
   heading = options.start_heading;
   if (const Motion s = step(Action::start); s != Motion::ok) return s;
@@ -60,12 +56,10 @@ Motion CellRobot::start() {
 
 Motion CellRobot::step(Action action) {
   if (!flush_step()) return Motion::stopped;
-  if (steps >= options.motion.max_steps) return Motion::max_steps;
-  if (robot.step(time_step_ms) == -1) return Motion::ended;
-  ++steps;
+  if (const Motion m = loop.step(); m != Motion::ok) return m;
   senses.take_lidar_updates();
   if (hooks.on_step) {
-    pending = StepReport{steps, robot.getTime(), cell, heading, action, 0, &grid, &visits};
+    pending = StepReport{loop.steps(), loop.time_s(), cell, heading, action, 0, &grid, &visits};
     has_pending = true;
   }
   return Motion::ok;
@@ -81,7 +75,7 @@ bool CellRobot::flush_step() {
 
 Motion CellRobot::arrive(bool new_cell) {
   const Motion s = arrival.arrive(cell, heading, new_cell);
-  if (hooks.on_move) hooks.on_move(MoveReport{steps, moves, robot.getTime(), cell, heading, new_cell, &grid, &visits});
+  if (hooks.on_move) hooks.on_move(MoveReport{loop.steps(), moves, loop.time_s(), cell, heading, new_cell, &grid, &visits});
   return s;
 }
 

@@ -16,6 +16,7 @@
 #include "mapping/sensor_model.hpp"
 #include "robot/arrival.hpp"
 #include "robot/cell_controller.hpp"
+#include "robot/control_loop.hpp"
 #include "robot/drive.hpp"
 #include "robot/options.hpp"
 #include "robot/senses.hpp"
@@ -55,7 +56,7 @@ struct CellRobot {
   mapping::OccupancyGrid grid;
   explore::Visits visits;
   WebotsChassis chassis;
-  int time_step_ms;
+  ControlLoop loop;  // every control step; its count is the run's steps
   Drive drive;
   Senses senses;
   explore::WallQuery walls;  // the side states the grid holds
@@ -66,7 +67,6 @@ struct CellRobot {
   bool has_pending = false;
   mapping::Cell cell;  // where the robot is (the cell it left, while it moves)
   mapping::Heading heading = mapping::Heading::north;
-  std::int64_t steps = 0;
   int moves = 0;
   std::vector<mapping::Cell> path;  // cells in order of arrival, start first
   std::string message;

@@ -40,7 +40,7 @@ Motion CommandController::look(Heading h, SideState &state) {
     for (int i = 0; i < b.senses.revolution_steps(); ++i) {
       if (const Motion s = b.drive.come_to_rest(); s != Motion::ok) return s;
     }
-    b.senses.scan(b.cell, b.steps);
+    b.senses.scan(b.cell, b.loop.steps());
     state = b.walls(b.cell, h);
   }
   return Motion::ok;
@@ -102,7 +102,7 @@ Motion CommandController::return_to_start(bool &found) {
 
 const mapping::OccupancyGrid &CommandController::grid() const { return body_->grid; }
 const explore::Visits &CommandController::visits() const { return body_->visits; }
-std::int64_t CommandController::steps() const { return body_->steps; }
+std::int64_t CommandController::steps() const { return body_->loop.steps(); }
 double CommandController::time_s() const { return body_->robot.getTime(); }
 
 EndReason CommandController::ended(Motion s, std::string &message) {
@@ -116,7 +116,7 @@ RunResult CommandController::finish(EndReason reason, std::string message) {
   if (reason != EndReason::stopped) b.flush_step();
   const int visited = b.visits.count();
   const double time_s = b.robot.getTime();
-  return RunResult{reason, std::move(message), b.steps, b.moves, visited, time_s, std::move(b.grid), std::move(b.visits),
+  return RunResult{reason, std::move(message), b.loop.steps(), b.moves, visited, time_s, std::move(b.grid), std::move(b.visits),
                    std::move(b.path), time_s, std::nullopt, SpeedRun{}, std::nullopt};
 }
 

@@ -27,31 +27,26 @@ constexpr double kTouchMargin_m = 0.03;
 // A wavefront ending: this many legs in a row stopped by a touch without touching a new cell.
 constexpr int kMaxBareStops = 3;
 
-int time_step_of(webots::Robot &robot, const MotionOptions &m) {
-  return m.time_step_ms > 0 ? m.time_step_ms : static_cast<int>(std::lround(robot.getBasicTimeStep()));
-}
-
 }  // namespace
 
 MetricController::MetricController(webots::Robot &robot, const ControllerOptions &options, const MetricOptions &metric,
-                                   sensing::MetricMap &map, MetricStepHook on_step, MetricStopPoll stop_requested)
+                                   sensing::MetricMap &map, MetricStepHook on_step, StopPoll stop_requested)
     : robot_(robot),
       options_(options),
       metric_(metric),
       map_(map),
       on_step_(std::move(on_step)),
-      stop_requested_(stop_requested),
-      time_step_ms_(time_step_of(robot, options.motion)),
+      loop_(robot, options.motion, stop_requested, metric.time_limit_s),
       chassis_(robot, options.devices),
-      drive_(chassis_, options.motion, time_step_ms_, [this](Action a) { return step(a); }),
+      drive_(chassis_, options.motion, loop_.time_step_ms(), [this](Action a) { return step(a); }),
       senses_(robot, options, map),
       position_(metric.start) {
-  chassis_.enable(time_step_ms_);
-  senses_.enable(time_step_ms_);
+  chassis_.enable(loop_.time_step_ms());
+  senses_.enable(loop_.time_step_ms());
   body_observes_ = senses_.nothing_seen_marks_nothing();
 }
 
-double MetricController::time_s() const { return robot_.getTime(); }
+double MetricController::time_s() const { return loop_.time_s(); }
 
 void MetricController::update_pose() {
   const WheelAngles now = chassis_.wheel_angles();
@@ -67,14 +62,7 @@ void MetricController::update_pose() {
 }
 
 Motion MetricController::step(Action) {
-  if (steps_ >= options_.motion.max_steps) return Motion::max_steps;
-  if (stop_requested_ != nullptr && stop_requested_()) return Motion::stopped;
-  if (metric_.time_limit_s > 0.0 && robot_.getTime() >= metric_.time_limit_s) {
-    time_up_ = true;
-    return Motion::stopped;
-  }
-  if (robot_.step(time_step_ms_) == -1) return Motion::ended;
-  ++steps_;
+  if (const Motion m = loop_.step(); m != Motion::ok) return m;
   update_pose();
   senses_.scan(position_, drive_.yaw_rad(), robot_.getTime());
   trajectory_.push_back(position_);
@@ -206,7 +194,7 @@ MetricEnding MetricController::finish(Motion m) {
     case Motion::no_progress: message_ = drive_.failure(); return MetricEnding::no_progress;
     case Motion::ended: message_ = "the simulation ended"; return MetricEnding::simulation_ended;
     case Motion::stopped:
-      if (time_up_) {
+      if (loop_.time_up()) {
         message_ = fmt::format("{:g} s of simulated time", metric_.time_limit_s);
         return MetricEnding::time_up;
       }
@@ -231,7 +219,7 @@ MetricEnding MetricController::run() {
 MetricEnding MetricController::run_waypoints() {
   const std::size_t count = metric_.waypoints.size();
   for (int lap = 1; metric_.laps == 0 || lap <= metric_.laps; ++lap) {
-    const std::int64_t lap_began = steps_;
+    const std::int64_t lap_began = loop_.steps();
     for (std::size_t n = 0; n < count; ++n) {
       const Point p = metric_.waypoints[n];
       bool stopped = false;
@@ -247,7 +235,7 @@ MetricEnding MetricController::run_waypoints() {
     }
     // A lap with every point where the robot stands takes no step: it rests there a step,
     // scanning, so that time goes on to the limit.
-    if (steps_ == lap_began) {
+    if (loop_.steps() == lap_began) {
       if (const Motion m = drive_.come_to_rest(); m != Motion::ok) return finish(m);
     }
   }
@@ -270,7 +258,7 @@ MetricEnding MetricController::run_wavefront() {
     if (here == goal) {
       bool stopped = false;
       if (const Motion m = go_to(*metric_.goal, StopWhen::never, &stopped); m != Motion::ok) return finish(m);
-      message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", metric_.goal->x_m, metric_.goal->y_m, steps_);
+      message_ = fmt::format("reached the goal ({:g}, {:g}) in {} steps", metric_.goal->x_m, metric_.goal->y_m, loop_.steps());
       return MetricEnding::goal_reached;
     }
     std::vector<bool> blocked = obstacles(false);

@@ -45,6 +45,7 @@
 #include "explore/metric_frontier.hpp"
 #include "explore/metric_sweep.hpp"
 #include "mapping/grid_types.hpp"
+#include "robot/control_loop.hpp"
 #include "robot/drive.hpp"
 #include "robot/options.hpp"
 #include "robot/metric_senses.hpp"
@@ -88,14 +89,12 @@ std::string_view to_string(MetricEnding e);
 // What a step hook sees: the controller after a control step.
 class MetricController;
 using MetricStepHook = std::function<void(const MetricController &)>;
-// Asked before every control step; true ends the run `stopped` (Ctrl-C, SIGTERM).
-using MetricStopPoll = bool (*)();
 
 class MetricController {
  public:
   // The robot, options and map must outlive the controller; options validated by the caller.
   MetricController(webots::Robot &robot, const ControllerOptions &options, const MetricOptions &metric,
-                   sensing::MetricMap &map, MetricStepHook on_step = {}, MetricStopPoll stop_requested = nullptr);
+                   sensing::MetricMap &map, MetricStepHook on_step = {}, StopPoll stop_requested = nullptr);
 
   // Runs the strategy to its end.
   MetricEnding run();
@@ -104,7 +103,7 @@ class MetricController {
   const sensing::MetricMap &map() const { return map_; }
   mapping::Point position() const { return position_; }
   double yaw_rad() const { return drive_.yaw_rad(); }
-  std::int64_t steps() const { return steps_; }
+  std::int64_t steps() const { return loop_.steps(); }
   double time_s() const;
   const std::vector<mapping::Point> &trajectory() const { return trajectory_; }
   // The last plan: its cells (flat indices, start first) and the wave it came from
@@ -185,15 +184,12 @@ class MetricController {
   const MetricOptions &metric_;
   sensing::MetricMap &map_;
   MetricStepHook on_step_;
-  MetricStopPoll stop_requested_;
-  int time_step_ms_;
+  ControlLoop loop_;  // every control step, within --max-steps, until a stop or --time-limit
   WebotsChassis chassis_;
   Drive drive_;
   MetricSenses senses_;
   mapping::Point position_;
   WheelAngles last_wheels_;
-  std::int64_t steps_ = 0;
-  bool time_up_ = false;
   std::vector<mapping::Point> trajectory_;
   std::vector<std::size_t> path_;
   std::vector<std::int32_t> wave_;
