@@ -233,8 +233,8 @@ robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandCont
   return reason;
 }
 
-// What the robot tells as it goes: the terminal's printer, the files' recorder, and the stop
-// signal's check; each may be absent.
+// What the robot tells as it goes: the terminal's printer, the files' recorder; and the stop
+// signal, polled before each control step. Each may be absent.
 robot::RunHooks mms_hooks(std::optional<robot::ProgressPrinter> &printer, std::optional<FilesRecorder> &recorder,
                           const RunControls &controls, const webots::embedded::Simulation &simulation) {
   robot::RunHooks hooks;
@@ -244,10 +244,11 @@ robot::RunHooks mms_hooks(std::optional<robot::ProgressPrinter> &printer, std::o
       if (printer) (*printer)(r);
     };
   }
-  if (controls.interrupted != nullptr || recorder) {
-    hooks.on_step = [&controls, &recorder, &simulation](const robot::StepReport &step) {
-      if (recorder) recorder->on_step(step, simulation.pose());
-      return controls.interrupted == nullptr || !controls.interrupted();
+  hooks.stop_requested = controls.interrupted;
+  if (recorder) {
+    hooks.on_step = [&recorder, &simulation](const robot::StepReport &step) {
+      recorder->on_step(step, simulation.pose());
+      return true;
     };
   }
   if (recorder) hooks.grid_changes = recorder->grid_changes();

@@ -299,23 +299,22 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
       if (o.step && !state.quit) wait_for_step(controls, report, state);
     };
   }
-  if (recorder || animator || o.step || controls.interrupted) {
-    // The step is counted in the run's steps whatever this returns: the recorder has it
-    // before a stop is answered, so that the trace holds every step.
+  // Ctrl-C is polled before each control step, after the step before it is recorded: the
+  // trace holds every step the run counts.
+  hooks.stop_requested = controls.interrupted;
+  if (recorder || animator || o.step) {
     hooks.on_step = [&](const robot::StepReport &step) {
       const maze::sim::Pose &pose = simulation.pose();
       if (recorder) recorder->on_step(step, pose);
-      if (controls.interrupted && controls.interrupted()) {
-        state.interrupted = true;
-        return false;
-      }
       if (state.quit) return false;
       if (animator) animator->on_step(step, pose.x_m, pose.y_m);
       return true;
     };
   }
   if (recorder) hooks.grid_changes = recorder->grid_changes();
-  return controller.run(hooks);
+  robot::RunResult result = controller.run(hooks);
+  state.interrupted = result.reason == robot::EndReason::stopped && !state.quit;
+  return result;
 }
 
 RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const robot::RunResult &result,

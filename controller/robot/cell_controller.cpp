@@ -133,6 +133,7 @@ RunResult CellController::run(const RunHooks &hooks) {
   assert(!s.ran && "CellController::run is called once");
   s.ran = true;
   b.hooks = hooks;
+  b.loop.poll_for_stop(hooks.stop_requested);
   b.grid.set_change_log(hooks.grid_changes);
   EndReason reason = s.explore();
   const double explore_time_s = b.robot.getTime();

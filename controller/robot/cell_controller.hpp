@@ -22,6 +22,7 @@
 #include "explore/visits.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
+#include "robot/control_loop.hpp"
 #include "robot/drive.hpp"
 #include "robot/options.hpp"
 
@@ -75,6 +76,7 @@ using StepObserver = std::function<bool(const StepReport &)>;
 struct RunHooks {
   Observer on_move;        // after the start scan and after every move into a cell
   StepObserver on_step;    // after every control step
+  StopPoll stop_requested = nullptr;  // before every control step (ControlLoop): true stops the run
   // When set: the grid logs every sub-cell it writes here during the run
   // (OccupancyGrid::set_change_log), for the observer to read and empty.
   std::vector<std::uint32_t> *grid_changes = nullptr;

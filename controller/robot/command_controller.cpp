@@ -23,6 +23,7 @@ CommandController::~CommandController() = default;
 
 Motion CommandController::start(const RunHooks &hooks) {
   body_->hooks = hooks;
+  body_->loop.poll_for_stop(hooks.stop_requested);
   return body_->start();
 }
 

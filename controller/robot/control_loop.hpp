@@ -33,6 +33,8 @@ class ControlLoop {
   // simulated time reaches the time limit. Motion::ended when the simulation ends
   // (Robot::step returns -1). Else Motion::ok: the step taken and counted.
   Motion step();
+  // From the next step on, stop_requested is polled before each (nullptr: never).
+  void poll_for_stop(StopPoll stop_requested) { stop_requested_ = stop_requested; }
 
   std::int64_t steps() const { return steps_; }  // control steps taken
   int time_step_ms() const { return time_step_ms_; }
