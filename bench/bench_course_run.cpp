@@ -98,6 +98,7 @@ Setup make_setup(int side) {
 }
 
 volatile bool g_stop = false;  // stands for the command line's Ctrl-C flag
+bool stop_requested() { return g_stop; }
 
 // One run; with `record`, the images the controller read. Returns the run's CPU seconds.
 double run_once(const Setup &s, Recording *record) {
@@ -113,10 +114,13 @@ double run_once(const Setup &s, Recording *record) {
     record->hash = hash_floats(record->hash, std::span<const float>(lidar->getRangeImage(), n));
   };
   robot::RunHooks hooks;
-  hooks.on_step = [&](const robot::StepReport &) {
-    note_image();
-    return !g_stop;
-  };
+  hooks.stop_requested = stop_requested;  // polled before each control step, as run_maze polls Ctrl-C
+  if (record != nullptr) {
+    hooks.on_step = [&](const robot::StepReport &) {
+      note_image();
+      return true;
+    };
+  }
   const double t0 = thread_cpu_s();
   const robot::RunResult result = controller.run(hooks);
   const double seconds = thread_cpu_s() - t0;

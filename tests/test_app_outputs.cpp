@@ -312,11 +312,11 @@ TEST_CASE("an interrupted run's trace has a row for every step it counts") {
   controls.interrupted = interrupt_after_100_steps;
   std::ostringstream out;
   const app::RunSummary summary = app::run_and_write(options, out, controls);
-  CHECK(summary.steps == 101);
-  CHECK(lines_of(read_all(dir.path / "out" / "trace.csv")).size() == 102);  // the header and 101 rows
+  CHECK(summary.steps == 100);
+  CHECK(lines_of(read_all(dir.path / "out" / "trace.csv")).size() == 101);  // the header and 100 rows
 }
 
-TEST_CASE("an interrupt stops the run at the next step; exit status 130") {
+TEST_CASE("an interrupt refuses the next control step; exit status 130") {
   app::RunOptions options = lab_options();
   g_polls = 0;
   app::RunControls controls;
@@ -325,7 +325,7 @@ TEST_CASE("an interrupt stops the run at the next step; exit status 130") {
   const app::RunSummary summary = app::run_and_write(options, out, controls);
   CHECK(summary.reason == robot::EndReason::stopped);
   CHECK(summary.interrupted);
-  CHECK(summary.steps == 101);  // polled after each step: the 101st poll stops it
+  CHECK(summary.steps == 100);  // polled before each control step: the 101st poll refuses the 101st
   CHECK(app::exit_status(summary) == 130);
   CHECK(out.str().find("end: stopped (interrupted by Ctrl-C)\n") != std::string::npos);
 }
@@ -469,7 +469,7 @@ TEST_CASE("batch: Ctrl-C stops the run in flight and starts no other; the CSV ho
       app::run_batch(lab_options(), {lab, eight, lab}, 1, {}, interrupt_batch_after_100_polls);
   REQUIRE(items.size() == 3);
   CHECK(items[0].interrupted);
-  CHECK(items[0].summary.steps == 100);  // one poll before it starts, then one a step
+  CHECK(items[0].summary.steps == 99);  // one poll before it starts, then one before each step
   CHECK(items[1].interrupted);
   CHECK_FALSE(items[1].ran);
   CHECK(items[1].error == "not run (interrupted by Ctrl-C)");
