@@ -20,8 +20,8 @@ class PoseTrace {
 
   // False when `step` is the last row's (a step that passed no time): no row.
   bool record(std::int64_t step, double time_s, const maze::sim::Pose &pose);
-  // Renames the temporary over trace.csv.
-  void commit() { file_.commit(); }
+  // trace.csv's temporary, for the output folder to commit (app::OutputDir::commit).
+  common::OutputFile &file() { return file_; }
 
   struct Visit {
     std::int64_t step;

@@ -147,24 +147,19 @@ std::optional<app::Replay> replay_page(const maze::World &world, const MazeRun &
 }
 
 // map.png (a kept grid) and truth.png of a maze run.
-void write_maze_pictures(const fs::path &dir, const maze::World &world, const MazeRun &run,
-                         std::vector<std::string> &written) {
+void write_maze_pictures(app::OutputDir &out, const maze::World &world, const MazeRun &run) {
   if (run.kept) {
     const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(world.maze()), {},
                               app::landmark_marks(world.maze())};
-    common::write_file_atomically((dir / "map.png").string(),
-                                  app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
-    written.emplace_back("map.png");
+    out.write("map.png", app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
   }
-  common::write_file_atomically((dir / "truth.png").string(), truth_file(world.maze(), run));
-  written.emplace_back("truth.png");
+  out.write("truth.png", truth_file(world.maze(), run));
 }
 
 // truth.png of a run in an arena: its solids on a grid of kArenaPictureCells on the longer
 // side (solid dark, free white, the boundary a wall all round), the landmarks in their colour,
 // the robot's path.
-void write_arena_truth(const fs::path &dir, const maze::World &world, const std::vector<PoseTrace::Visit> &visits,
-                       std::vector<std::string> &written) {
+void write_arena_truth(app::OutputDir &out, const maze::World &world, const std::vector<PoseTrace::Visit> &visits) {
   constexpr int kArenaPictureCells = 400;
   const maze::Arena a = world.geometry();
   const double cell_m = std::max(a.width_m(), a.height_m()) / kArenaPictureCells;
@@ -193,26 +188,18 @@ void write_arena_truth(const fs::path &dir, const maze::World &world, const std:
     const auto at = [&](std::size_t k) { return f.at(visits[k].x_m, visits[k].y_m); };
     if (!visits.empty()) p.polyline(visits.size(), at, std::max(2.0, px_per_m * 0.02), app::kPathColour);
   });
-  common::write_file_atomically((dir / "truth.png").string(), page.encode());
-  written.emplace_back("truth.png");
+  out.write("truth.png", page.encode());
 }
 
 // replay.html of a maze run, or a warning when even its final map is too large.
-void write_maze_replay(const fs::path &dir, const maze::World &world, const MazeRun &run, const app::Report &report,
-                       std::int64_t steps, std::vector<std::string> &written) {
+void write_maze_replay(app::OutputDir &out, const maze::World &world, const MazeRun &run, const app::Report &report,
+                       std::int64_t steps) {
   if (const std::optional<app::Replay> replay = replay_page(world, run, report, steps)) {
-    common::write_file_atomically((dir / "replay.html").string(), replay->html);
-    written.emplace_back("replay.html");
+    out.write("replay.html", replay->html);
   } else {
     fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
                app::kReplayMaxBytes >> 20);
   }
-}
-
-void write_file(const fs::path &dir, const std::string &name, const std::string &bytes,
-                std::vector<std::string> &written) {
-  common::write_file_atomically((dir / name).string(), bytes);
-  written.push_back(name);
 }
 
 // The summary's lines as the replay's table shows them (wall_time_ms left out, as the room
@@ -227,15 +214,14 @@ std::vector<std::pair<std::string, std::string>> replay_summary(const app::Repor
 
 }  // namespace
 
-void RunFiles::write_arena_replay(const fs::path &dir, const std::vector<PoseTrace::Visit> &visits,
-                                  const ArenaRunMarks &marks, std::vector<std::string> &written) {
+void RunFiles::write_arena_replay(const std::vector<PoseTrace::Visit> &visits, const ArenaRunMarks &marks) {
   if (visits.empty()) {
     fmt::print(stderr, "note: replay.html not written: the controller took no step\n");
     return;
   }
   replay_.finish(visits, kept_map());
   if (const std::optional<app::Replay> replay = app::replay_html(arena_replay_input(replay_, kept_map(), visits, marks))) {
-    write_file(dir, "replay.html", replay->html, written);
+    out_.write("replay.html", replay->html);
   } else {
     fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
                app::kReplayMaxBytes >> 20);
@@ -258,21 +244,22 @@ bool PoseTrace::record(std::int64_t step, double time_s, const maze::sim::Pose &
 
 std::string format_entries(const std::vector<EntryTuple> &entries) { return app::format_summary(report_of(entries)); }
 
-const std::vector<std::string> &RunFiles::names() {
-  static const std::vector<std::string> names{"map.png", "truth.png", "summary.json", "trace.csv", "replay.html"};
-  return names;
-}
+namespace {
 
-RunFiles::RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs)
-    : dir_(std::move(dir)) {
-  app::prepare_output_dir(dir_);
+std::vector<app::NamedInput> named_inputs(const std::vector<std::pair<std::string, std::string>> &inputs) {
   std::vector<app::NamedInput> named;
   for (const auto &[what, path] : inputs) named.push_back({what, path});
-  app::refuse_outputs_over_inputs(dir_, names(), named);
+  return named;
 }
 
+}  // namespace
+
+// The names a Python run writes are among every run's (app::run_output_names): no own names.
+RunFiles::RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs)
+    : out_(std::move(dir), named_inputs(inputs)) {}
+
 PoseTrace &RunFiles::trace() {
-  if (!trace_) trace_.emplace(dir_);
+  if (!trace_) trace_.emplace(out_.path());
   return *trace_;
 }
 
@@ -290,8 +277,6 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
                       std::optional<float> initial_log_odds) {
   const maze::World *maze = world != nullptr && world->on_lattice() ? world : nullptr;
   const app::Report report = report_of(entries);
-  const fs::path d(dir_);
-  std::vector<std::string> written;
   const std::vector<PoseTrace::Visit> none;
   const std::vector<PoseTrace::Visit> &visits = trace_ ? trace_->visits() : none;
   // In `run --out`'s order: the pictures, summary.json, trace.csv, replay.html.
@@ -299,19 +284,14 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
       maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze(), grid, initial_log_odds, visits)) : std::nullopt;
   const bool arena = world != nullptr && !world->on_lattice();
   const ArenaRunMarks marks{world, body_radius_m_, replay_summary(report)};
-  if (run) write_maze_pictures(d, *maze, *run, written);
-  if (arena && kept_map() != nullptr) write_file(d, "map.png", arena_map_png(*kept_map(), visits, marks), written);
-  if (arena) write_arena_truth(d, *world, visits, written);
-  common::write_file_atomically((d / "summary.json").string(), app::report_json(report).dump(2) + "\n");
-  written.emplace_back("summary.json");
-  if (trace_) {
-    trace_->commit();
-    written.emplace_back("trace.csv");
-  }
-  if (run) write_maze_replay(d, *maze, *run, report, visits.empty() ? 0 : visits.back().step, written);
-  if (arena) write_arena_replay(d, visits, marks, written);
-  app::remove_stale_outputs(dir_, written);
-  fmt::print(stderr, "{}\n", app::wrote_line(dir_, written, written.size(), 0));
+  if (run) write_maze_pictures(out_, *maze, *run);
+  if (arena && kept_map() != nullptr) out_.write("map.png", arena_map_png(*kept_map(), visits, marks));
+  if (arena) write_arena_truth(out_, *world, visits);
+  out_.write("summary.json", app::report_json(report).dump(2) + "\n");
+  if (trace_) out_.commit("trace.csv", trace_->file());
+  if (run) write_maze_replay(out_, *maze, *run, report, visits.empty() ? 0 : visits.back().step);
+  if (arena) write_arena_replay(visits, marks);
+  out_.finish();
 }
 
 void bind_run_files(py::module_ &m) {

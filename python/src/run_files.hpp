@@ -1,14 +1,14 @@
 #pragma once
 // The files of a Python controller's run (python3 -m maze_mapper.run --out DIR), written by the
-// program's own writers (app/report/): the directory prepared and checked against the run's
-// inputs as `run --out` does, trace.csv a row every control step as the run goes, and at the end
+// one writer of every run's files (app/report/output_dir.hpp's OutputDir): the directory
+// prepared and checked against the run's inputs as `run --out` does, each file atomic, an
+// earlier run's files removed, one `wrote` line; trace.csv a row every control step as the run goes, and at the end
 // summary.json (the runner's report, the same Report renderer as every run's), and where the
 // world is a maze truth.png, replay.html and, when the controller kept a grid, map.png; on an
 // arena truth.png, replay.html and, when the controller kept a metric map, map.png
 // (python/src/arena_files.hpp).
 
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -19,6 +19,7 @@
 #include "bindings.hpp"
 #include "kept_map.hpp"
 #include "pose_trace.hpp"
+#include "app/report/output_dir.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/world/world.hpp"
 
@@ -33,9 +34,9 @@ std::string format_entries(const std::vector<EntryTuple> &entries);
 
 class RunFiles {
  public:
-  // Prepares DIR (app/report/output_dir.hpp: created when missing, a dangling link refused
-  // and left as it is) and refuses it when a file the run may write there is one of
-  // `inputs` ((what, path) pairs, "the world", "the controller"). Throws common::InputError.
+  // Prepares DIR (app::OutputDir: created when missing, a dangling link refused and left as
+  // it is) and refuses it when a file the run may write there is one of `inputs` ((what,
+  // path) pairs, "the world", "the controller"). Throws common::InputError.
   RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs);
 
   // After every control step: its row of trace.csv (opened on first use) and, when due, a
@@ -57,17 +58,13 @@ class RunFiles {
   void finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
               std::optional<float> initial_log_odds);
 
-  // The names the run may write in DIR.
-  static const std::vector<std::string> &names();
-
  private:
   PoseTrace &trace();
   // replay.html of an arena run (none when the controller took no step).
-  void write_arena_replay(const std::filesystem::path &dir, const std::vector<PoseTrace::Visit> &visits,
-                          const ArenaRunMarks &marks, std::vector<std::string> &written);
+  void write_arena_replay(const std::vector<PoseTrace::Visit> &visits, const ArenaRunMarks &marks);
   const KeptMap *kept_map() const { return kept_map_; }
 
-  std::string dir_;
+  app::OutputDir out_;
   std::optional<PoseTrace> trace_;
   py::object kept_ = py::none();  // a KeptMap
   const KeptMap *kept_map_ = nullptr;  // kept_'s (cast once: the steps read it)

@@ -5,7 +5,7 @@ import json
 import math
 import os
 
-from conftest import run_controller, summary_of
+from conftest import png_pixels, run_controller, summary_of
 
 COURSE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "course_shape")
 CONTROLLERS = os.path.join(COURSE, "WebotsSim", "controllers")
@@ -299,3 +299,46 @@ def test_the_robot_starts_exactly_at_the_file_s_start_on_a_world_read_on_half_me
         assert status == 0, err
         assert f"gps {where}" in out.splitlines()
         assert summary_of(out)["size"] == "4x4"  # 0.5 m cells: the start is a lattice node, not a cell centre
+
+
+def replay_data_of(page):
+    """The data block of a replay.html."""
+    start = page.index('id="replay-data">') + len('id="replay-data">')
+    return json.loads(page[start:page.index("</script>", start)].replace("<\\/", "</"))
+
+
+def test_out_on_the_empty_floor_draws_the_world_the_supervisor_built_its_landmarks_in_their_colour(tmp_path):
+    out = tmp_path / "out"
+    status, stdout, err = run_course(os.path.join(CONTROLLERS, "drive", "drive.py"), "--noise", "0", "--out", str(out))
+    assert status == 0, err
+    assert sorted(os.listdir(out)) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert f"wrote {out}/: truth.png, summary.json, trace.csv, replay.html" in err.splitlines()
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["world"] == "the course's empty floor (17 x 17 m)" and summary["end"] == "controller finished"
+    assert summary["steps"] == int(summary_of(stdout)["steps"]) > 0
+    # The replay in metres over the 17 x 17 m floor, the four landmarks corners.xml's library
+    # imported at their places (mm from the floor's corner, radius 0.25 m) in their colours.
+    data = replay_data_of((out / "replay.html").read_text())
+    assert data["units"] == "metres" and data["boundary_mm"] == [0, 0, 17000, 17000]
+    marks = [tuple(data["landmarks"][i:i + 6]) for i in range(0, len(data["landmarks"]), 6)]
+    assert sorted(marks) == sorted([(10000, 10000, 250, 255, 0, 0), (7000, 10000, 250, 0, 255, 0),
+                                    (7000, 7000, 250, 0, 0, 255), (11000, 6000, 250, 255, 255, 0)])
+    assert len(data["path"]["steps"]) == summary["steps"]
+    # truth.png: the imported walls solid, the landmarks in their colours, the robot's path.
+    colours = set(map(tuple, png_pixels((out / "truth.png").read_bytes()).reshape(-1, 3).tolist()))
+    for colour in [(255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 0)]:
+        assert colour in colours, colour
+
+
+def test_out_on_the_empty_floor_with_a_kept_map_writes_its_map_png(controller_file, tmp_path):
+    out = tmp_path / "out"
+    body = ("import numpy as np\nimport maze_mapper\ngrid = np.zeros((34, 34))\n"
+            "maze_mapper.keep_map(grid, origin=(-8.5, -8.5), cell_size_m=0.5)\n"
+            "for k in range(10):\n    sup.step(robot.timestep)\n    grid[k, 5] = 2.0\n")
+    status, stdout, err = run_course(course_controller(controller_file, body), "--out", str(out))
+    assert status == 0, err
+    assert sorted(os.listdir(out)) == ["map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert summary_of(stdout)["map"] == "kept, 34 x 34 cells of 0.5 m from (-8.50, -8.50)"
+    data = replay_data_of((out / "replay.html").read_text())
+    assert (data["width"], data["height"], data["cell_size_m"]) == (34, 34, 0.5)
+    assert any(len(c) > 0 for c in data["frames"]["changes"])
