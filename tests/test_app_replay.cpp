@@ -146,6 +146,21 @@ TEST_CASE("replay data in metres: poses, goals and landmarks in mm from the grid
   CHECK(Json::parse(app::replay_data_json(input, 1))["boundary_mm"] == Json::array({0, 0, 1000, 500}));
 }
 
+TEST_CASE("replay data: the poses a supervisor set the robot down on are listed, and the start mark's pose") {
+  app::ReplayInput input;
+  input.units = app::ReplayUnits::metres;
+  input.grid = mapping::GridGeometry{4, 2, 1, 0.25, {-1.0, 2.0}};
+  input.path = {{1, {0.0, 0.0}, 0.0}, {2, {-0.5, 2.25}, 0.0, true}, {3, {-0.25, 2.3}, 0.0}};
+  input.frames = {{0, 1, 0.032, 0}};
+  const Json plain = Json::parse(app::replay_data_json(input, 1));
+  CHECK(plain["path"]["placed"] == Json::array({1}));
+  CHECK(plain["path"]["start"] == 0);
+  input.start_pose = 1;
+  CHECK(Json::parse(app::replay_data_json(input, 1))["path"]["start"] == 1);
+  input.path[1].placed = false;
+  CHECK(Json::parse(app::replay_data_json(input, 1))["path"]["placed"] == Json::array());
+}
+
 TEST_CASE("replay page: self-contained, the data's \"</\" escaped; over the size limit more moves a frame, then none") {
   const app::GridHistory history = small_history();
   app::ReplayInput input = input_of(history);

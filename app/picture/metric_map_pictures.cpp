@@ -66,6 +66,25 @@ MetricRobotMarks robot_marks(const robot::MetricController &c) {
   return {c.trajectory(), c.path(), c.position(), c.yaw_rad()};
 }
 
+// The path from `start` along the trajectory, a polyline a piece (a pose the robot was set
+// down on starts a piece); returns every point, the start first.
+std::vector<PointPx> draw_trail(Drawing &page, const PlainGridFrame &frame, mapping::Point start,
+                                const MetricRobotMarks &robot) {
+  std::vector<PointPx> trail{frame.at(start.x_m, start.y_m)};
+  for (const mapping::Point &p : robot.trajectory) trail.push_back(frame.at(p.x_m, p.y_m));
+  const double width_px = std::max(1.5, frame.cell_w_px / 6);
+  std::size_t first = 0;  // into trail (trajectory index + 1)
+  for (const std::size_t placed : robot.placed) {
+    page.polyline(std::vector<PointPx>(trail.begin() + static_cast<std::ptrdiff_t>(first),
+                                       trail.begin() + static_cast<std::ptrdiff_t>(placed + 1)),
+                  width_px, kPathColour);
+    first = placed + 1;
+  }
+  page.polyline(std::vector<PointPx>(trail.begin() + static_cast<std::ptrdiff_t>(first), trail.end()), width_px,
+                kPathColour);
+  return trail;
+}
+
 double mark_px(const PlainGridFrame &frame) { return std::max(4.0, frame.cell_w_px * 0.8); }
 
 void draw_goal(Drawing &page, const PlainGridFrame &frame, const MetricPictureMarks &marks) {
@@ -186,9 +205,7 @@ std::string metric_map_picture(const sensing::MetricMap &map, const MetricRobotM
   const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return tone(static_cast<float>(map.log_odds_at(n)), tones); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     draw_room_landmarks(page, frame, marks);
-    std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
-    for (const mapping::Point &p : robot.trajectory) trail.push_back(frame.at(p.x_m, p.y_m));
-    page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
+    const std::vector<PointPx> trail = draw_trail(page, frame, marks.start, robot);
     draw_plan(page, frame, map, robot.plan);
     const double side = mark_px(frame);
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);

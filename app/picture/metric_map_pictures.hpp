@@ -58,6 +58,8 @@ struct MetricRobotMarks {
   std::span<const std::size_t> plan;
   mapping::Point position;
   double yaw_rad = 0.0;
+  // Trajectory indices (ascending) a supervisor set the robot down on: no line drawn to them.
+  std::span<const std::size_t> placed = {};
 };
 
 // The map as the controller holds it now: tones, trajectory, last plan, start, goal, robot.

@@ -50,7 +50,9 @@ void append_path(std::string &out, const ReplayInput &input) {
   std::vector<long> steps;
   std::vector<long> xy;
   std::vector<long> yaw;
+  std::vector<long> placed;
   for (const ReplayPose &p : input.path) {
+    if (p.placed) placed.push_back(static_cast<long>(steps.size()));
     steps.push_back(static_cast<long>(p.step));
     xy.push_back(milli(p.at.x_m - input.grid.origin.x_m));
     xy.push_back(milli(p.at.y_m - input.grid.origin.y_m));
@@ -62,6 +64,9 @@ void append_path(std::string &out, const ReplayInput &input) {
   append_ints(out, xy);
   out += ",\"yaw_mrad\":";
   append_ints(out, yaw);
+  out += ",\"placed\":";
+  append_ints(out, placed);
+  out += fmt::format(",\"start\":{}", input.start_pose);
   out += '}';
 }
 

@@ -61,6 +61,7 @@ struct ReplayPose {
   std::int64_t step = 0;
   mapping::Point at;
   double yaw_rad = 0.0;  // counter-clockwise from east
+  bool placed = false;   // set down by a supervisor (a teleport, a reset): no path drawn to it
 };
 
 // A sub-cell (flat grid index) that took `log_odds`.
@@ -85,6 +86,7 @@ struct ReplayInput {
   float initial_log_odds = 0.0f;    // every sub-cell before the first frame
   MapTones tones;
   std::vector<ReplayPose> path;     // the start first
+  std::size_t start_pose = 0;       // the path's pose the start mark stands on
   std::vector<ReplayChange> changes;  // in order of frame
   std::vector<ReplayFrame> frames;    // at least one; the first shows the start
   int steps_per_frame = 0;            // control steps a recorded frame (a room run's); 0: a move a frame

@@ -47,7 +47,8 @@ app::MetricPictureMarks picture_marks(const maze::Arena &arena, const std::vecto
                                     const ArenaRunMarks &marks, const KeptMap &kept) {
   app::MetricPictureMarks m;
   const maze::ArenaPose start = arena.start();
-  m.start = visits.empty() ? mapping::Point{start.x_m, start.y_m} : mapping::Point{visits[0].x_m, visits[0].y_m};
+  const std::size_t first = start_visit(visits);
+  m.start = visits.empty() ? mapping::Point{start.x_m, start.y_m} : mapping::Point{visits[first].x_m, visits[first].y_m};
   if (!arena.goals.empty()) m.goal = mapping::Point{arena.goals[0].x_m, arena.goals[0].y_m};
   m.boundary = app::PlainGridBounds{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
   m.landmarks = app::landmark_marks(arena);
@@ -128,11 +129,16 @@ std::string arena_map_png(const KeptMap &kept, const std::vector<PoseTrace::Visi
                           const ArenaRunMarks &marks) {
   const maze::Arena arena = marks.world->geometry();
   const sensing::MetricMap map = kept.metric_map();
+  // The path from the start on, in pieces: a pose a supervisor set the robot down on starts one.
   std::vector<mapping::Point> trajectory;
+  std::vector<std::size_t> placed;
   trajectory.reserve(visits.size());
-  for (std::size_t k = 1; k < visits.size(); ++k) trajectory.push_back({visits[k].x_m, visits[k].y_m});
+  for (std::size_t k = start_visit(visits) + 1; k < visits.size(); ++k) {
+    if (visits[k].placed) placed.push_back(trajectory.size());
+    trajectory.push_back({visits[k].x_m, visits[k].y_m});
+  }
   const app::MetricPictureMarks picture = picture_marks(arena, visits, marks, kept);
-  app::MetricRobotMarks robot{trajectory, {}, picture.start, arena.start().yaw_rad};
+  app::MetricRobotMarks robot{trajectory, {}, picture.start, arena.start().yaw_rad, placed};
   if (!visits.empty()) {
     robot.position = {visits.back().x_m, visits.back().y_m};
     robot.yaw_rad = visits.back().yaw_rad;
@@ -159,7 +165,8 @@ app::ReplayInput arena_replay_input(const ArenaReplayRecorder &recorder, const K
     in.steps_per_frame = static_cast<int>(stride);
   }
   in.path.reserve(visits.size());
-  for (const PoseTrace::Visit &v : visits) in.path.push_back({v.step, {v.x_m, v.y_m}, v.yaw_rad});
+  for (const PoseTrace::Visit &v : visits) in.path.push_back({v.step, {v.x_m, v.y_m}, v.yaw_rad, v.placed});
+  in.start_pose = start_visit(visits);
   for (const maze::ArenaPoint &g : arena.goals) in.goals.push_back({g.x_m, g.y_m});
   in.goal_side_m = 4.0 * marks.body_radius_m;
   in.body_radius_m = marks.body_radius_m;

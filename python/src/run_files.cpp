@@ -185,8 +185,14 @@ void write_arena_truth(app::OutputDir &out, const maze::World &world, const std:
   app::Drawing page = app::plain_grid_picture(grid, legend, [&](app::Drawing &p, const app::PlainGridFrame &f) {
     const double px_per_m = f.cell_w_px / f.cell_w_m;
     for (const app::LandmarkMark &l : landmarks) app::draw_landmark(p, l, f.at(l.at.x_m, l.at.y_m), px_per_m);
-    const auto at = [&](std::size_t k) { return f.at(visits[k].x_m, visits[k].y_m); };
-    if (!visits.empty()) p.polyline(visits.size(), at, std::max(2.0, px_per_m * 0.02), app::kPathColour);
+    // The path driven, in pieces: none to a pose a supervisor set the robot down on.
+    for (std::size_t first = 0; first < visits.size();) {
+      std::size_t end = first + 1;
+      while (end < visits.size() && !visits[end].placed) ++end;
+      const auto at = [&](std::size_t k) { return f.at(visits[first + k].x_m, visits[first + k].y_m); };
+      if (end - first >= 2) p.polyline(end - first, at, std::max(2.0, px_per_m * 0.02), app::kPathColour);
+      first = end;
+    }
   });
   out.write("truth.png", page.encode());
 }
@@ -238,8 +244,19 @@ bool PoseTrace::record(std::int64_t step, double time_s, const maze::sim::Pose &
   app::append_pose_trace_values(row_, step, time_s, pose.x_m, pose.y_m, pose.yaw_rad);
   row_ += '\n';
   file_.write(row_);
-  visits_.push_back({step, time_s, pose.x_m, pose.y_m, pose.yaw_rad});
+  visits_.push_back({step, time_s, pose.x_m, pose.y_m, pose.yaw_rad, placed_next_});
+  placed_next_ = false;
   return true;
+}
+
+std::size_t start_visit(const std::vector<PoseTrace::Visit> &visits) {
+  constexpr double kMoved_m = 1e-3;
+  std::size_t start = 0;
+  for (std::size_t k = 1; k < visits.size(); ++k) {
+    if (visits[k].placed) start = k;
+    else if (std::hypot(visits[k].x_m - visits[k - 1].x_m, visits[k].y_m - visits[k - 1].y_m) > kMoved_m) break;
+  }
+  return start;
 }
 
 std::string format_entries(const std::vector<EntryTuple> &entries) { return app::format_summary(report_of(entries)); }
@@ -266,6 +283,8 @@ PoseTrace &RunFiles::trace() {
 void RunFiles::record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
   if (trace().record(step, time_s, pose)) replay_.on_step(trace_->visits(), kept_map());
 }
+
+void RunFiles::mark_placed() { trace().mark_placed(); }
 
 void RunFiles::keep_map(py::object kept) {
   kept_map_ = &kept.cast<const KeptMap &>();

@@ -42,6 +42,9 @@ class RunFiles {
   // After every control step: its row of trace.csv (opened on first use) and, when due, a
   // frame of an arena's replay.
   void record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose);
+  // A supervisor set the robot down (a teleport, simulationReset): no path is drawn to its
+  // next pose.
+  void mark_placed();
   // The metric map the controller keeps from now on (a KeptMap: maze_mapper.keep_map).
   void keep_map(py::object kept);
   // The robot's body radius, for the replay's robot and goal marks.

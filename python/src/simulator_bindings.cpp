@@ -98,6 +98,10 @@ class PySimulation {
   std::int64_t steps() const { return simulation_->steps(); }
   const maze::sim::RobotProfile &profile() const { return profile_; }
   void request_stop() { simulation_->request_stop(); }
+  // A supervisor set the robot down: the recorded path has no line to its next pose.
+  void placed_by_supervisor() {
+    if (files_ != nullptr) files_->mark_placed();
+  }
 
   // From now on `files` records every control step: its trace.csv row, an arena's replay
   // frames (record_trace).
@@ -353,9 +357,14 @@ void bind_simulator(py::module_ &m) {
           "teleport",
           [](PySimulation &s, double x, double y, double z, double yaw) {
             s.simulation().teleport({x, y, yaw}, z);
+            s.placed_by_supervisor();
           },
           py::arg("x_m"), py::arg("y_m"), py::arg("z_m"), py::arg("yaw_rad"))
-      .def("reset_world", [](PySimulation &s) { s.simulation().reset_world(); })
+      .def("reset_world",
+           [](PySimulation &s) {
+             s.simulation().reset_world();
+             s.placed_by_supervisor();
+           })
       .def_property_readonly("collisions", [](const PySimulation &s) { return s.simulation().collisions(); },
                              "Steps in which the body met a solid after a step in which it met none.")
       .def_property_readonly("pose",
