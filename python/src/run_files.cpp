@@ -75,6 +75,23 @@ mapping::OccupancyGrid kept_grid(const py::object &grid, const maze::Maze &truth
   return placed;
 }
 
+mapping::Cell cell_of(const maze::Maze &truth, const PoseTrace::Visit &v) {
+  return {static_cast<int>(std::floor((v.x_m - truth.origin_x_m()) / truth.cell_size_m())),
+          static_cast<int>(std::floor((v.y_m - truth.origin_y_m()) / truth.cell_size_m()))};
+}
+
+// The maze as the run started on it: its start where a supervisor set the robot down before it
+// first moved (the course's random start, start_visit), else the file's.
+maze::Maze started_maze(const maze::Maze &truth, const std::vector<PoseTrace::Visit> &visits) {
+  maze::Maze started = truth;
+  if (visits.empty()) return started;
+  const PoseTrace::Visit &v = visits[start_visit(visits)];
+  const mapping::Cell c = cell_of(truth, v);
+  if (c.x >= 0 && c.y >= 0 && c.x < truth.width() && c.y < truth.height()) started.set_start({c.x, c.y}, heading_of(v.yaw_rad));
+  return started;
+}
+
+// The cells the robot's centre passed through from the start (start_visit) on.
 MazeRun maze_run(const maze::Maze &truth, const py::object &grid, std::optional<float> initial_log_odds,
                  const std::vector<PoseTrace::Visit> &visits) {
   MazeRun run{mapping::OccupancyGrid(maze_geometry(truth, mapping::kMinSubcells), 0.0F), 0.0F, false, {}, {}};
@@ -84,9 +101,9 @@ MazeRun maze_run(const maze::Maze &truth, const py::object &grid, std::optional<
     run.grid = kept_grid(grid, truth, run.initial_log_odds);
     run.kept = true;
   }
-  for (const PoseTrace::Visit &v : visits) {
-    const mapping::Cell c{static_cast<int>(std::floor((v.x_m - truth.origin_x_m()) / truth.cell_size_m())),
-                          static_cast<int>(std::floor((v.y_m - truth.origin_y_m()) / truth.cell_size_m()))};
+  for (std::size_t k = start_visit(visits); k < visits.size(); ++k) {
+    const PoseTrace::Visit &v = visits[k];
+    const mapping::Cell c = cell_of(truth, v);
     if (!run.grid.contains(c) || (!run.path.empty() && run.path.back() == c)) continue;
     run.path.push_back(c);
     run.arrivals.push_back({v.step, c, heading_of(v.yaw_rad)});
@@ -127,33 +144,32 @@ std::string truth_file(const maze::Maze &truth, const MazeRun &run) {
   return app::truth_picture(input).encode();
 }
 
-std::optional<app::Replay> replay_page(const maze::World &world, const MazeRun &run, const app::Report &report,
-                                       std::int64_t steps) {
+std::optional<app::Replay> replay_page(const maze::Maze &truth, const std::string &title, const MazeRun &run,
+                                       const app::Report &report, std::int64_t steps) {
   app::GridHistory history(run.grid.geometry(), run.initial_log_odds);
   for (const auto &a : run.arrivals) history.arrived(a.step, a.cell, a.heading);
   if (run.kept) history.record(steps, run.grid);
   app::ReplayInput input;
   app::add_history(input, history, steps);
-  app::add_goal_cells(input, goals_of(world.maze()));
+  app::add_goal_cells(input, goals_of(truth));
   input.tones = tones_of(run);
-  input.landmarks = app::landmark_marks(world.maze());
-  input.title = world.file;
+  input.landmarks = app::landmark_marks(truth);
+  input.title = title;
   input.caption = grid_caption(run);
   input.steps = steps;
-  const std::vector<bool> reachable = world.maze().reachable_from_start();
+  const std::vector<bool> reachable = truth.reachable_from_start();
   input.reachable_cells = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), true));
   input.summary = app::summary_pairs(report);
   return app::replay_html(input);
 }
 
 // map.png (a kept grid) and truth.png of a maze run.
-void write_maze_pictures(app::OutputDir &out, const maze::World &world, const MazeRun &run) {
+void write_maze_pictures(app::OutputDir &out, const maze::Maze &truth, const MazeRun &run) {
   if (run.kept) {
-    const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(world.maze()), {},
-                              app::landmark_marks(world.maze())};
+    const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(truth), {}, app::landmark_marks(truth)};
     out.write("map.png", app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
   }
-  out.write("truth.png", truth_file(world.maze(), run));
+  out.write("truth.png", truth_file(truth, run));
 }
 
 // truth.png of a run in an arena: its solids on a grid of kArenaPictureCells on the longer
@@ -198,9 +214,9 @@ void write_arena_truth(app::OutputDir &out, const maze::World &world, const std:
 }
 
 // replay.html of a maze run, or a warning when even its final map is too large.
-void write_maze_replay(app::OutputDir &out, const maze::World &world, const MazeRun &run, const app::Report &report,
-                       std::int64_t steps) {
-  if (const std::optional<app::Replay> replay = replay_page(world, run, report, steps)) {
+void write_maze_replay(app::OutputDir &out, const maze::Maze &truth, const std::string &title, const MazeRun &run,
+                       const app::Report &report, std::int64_t steps) {
+  if (const std::optional<app::Replay> replay = replay_page(truth, title, run, report, steps)) {
     out.write("replay.html", replay->html);
   } else {
     fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
@@ -299,16 +315,18 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   const std::vector<PoseTrace::Visit> none;
   const std::vector<PoseTrace::Visit> &visits = trace_ ? trace_->visits() : none;
   // In `run --out`'s order: the pictures, summary.json, trace.csv, replay.html.
+  const std::optional<maze::Maze> started =
+      maze != nullptr ? std::optional<maze::Maze>(started_maze(maze->maze(), visits)) : std::nullopt;
   const std::optional<MazeRun> run =
-      maze != nullptr ? std::optional<MazeRun>(maze_run(maze->maze(), grid, initial_log_odds, visits)) : std::nullopt;
+      started ? std::optional<MazeRun>(maze_run(*started, grid, initial_log_odds, visits)) : std::nullopt;
   const bool arena = world != nullptr && !world->on_lattice();
   const ArenaRunMarks marks{world, body_radius_m_, replay_summary(report)};
-  if (run) write_maze_pictures(out_, *maze, *run);
+  if (run) write_maze_pictures(out_, *started, *run);
   if (arena && kept_map() != nullptr) out_.write("map.png", arena_map_png(*kept_map(), visits, marks));
   if (arena) write_arena_truth(out_, *world, visits);
   out_.write("summary.json", app::report_json(report).dump(2) + "\n");
   if (trace_) out_.commit("trace.csv", trace_->file());
-  if (run) write_maze_replay(out_, *maze, *run, report, visits.empty() ? 0 : visits.back().step);
+  if (run) write_maze_replay(out_, *started, maze->file, *run, report, visits.empty() ? 0 : visits.back().step);
   if (arena) write_arena_replay(visits, marks);
   out_.finish();
 }

@@ -157,3 +157,30 @@ def test_a_second_run_into_the_same_out_leaves_only_its_own_files(controller_fil
                                     "--out", str(out))
     assert status == 0, err
     assert sorted(os.listdir(out)) == ["notes.txt", "replay.html", "summary.json", "trace.csv", "truth.png"]
+
+
+def test_a_maze_run_starts_where_a_supervisor_set_the_robot_down_before_it_moved(controller_file, tmp_path):
+    # The course's library teleports the robot to a random start after its first step: the
+    # pictures and the replay start there, not in the cell it stood in for that one step.
+    out = tmp_path / "out"
+    source = ("from controller import Supervisor\nimport math\nsup = Supervisor()\nsup.step(32)\n"
+              "sup.getSelf().getField('translation').setSFVec3f([2.5, 0.5, 0.0])\n"
+              "left, right = sup.getDevice('left motor'), sup.getDevice('right motor')\n"
+              "for m in (left, right):\n    m.setPosition(math.inf)\n    m.setVelocity(2.0)\n"
+              "for _ in range(10):\n    sup.step(32)\n")
+    status, stdout, err = run_controller(controller_file(source), "--world", world("lab4x4.txt"), "--out", str(out))
+    assert status == 0, err
+    with open(out / "trace.csv") as f:
+        rows = list(csv.reader(f))[1:]
+    x, y = float(rows[1][2]), float(rows[1][3])
+    assert abs(x - 2.5) < 0.01 and abs(y - 0.5) < 0.01  # the step after the teleport
+    data = replay_data((out / "replay.html").read_text())
+    size_mm = round(data["cell_size_m"] * 1000)
+    ox, oy = data["origin"]
+    cell = (int((x - ox) // data["cell_size_m"]), int((y - oy) // data["cell_size_m"]))
+    first = data["path"]["xy_mm"][:2]
+    assert (first[0] // size_mm, first[1] // size_mm) == cell  # the replay's start is the teleported cell
+    stood = (int((float(rows[0][2]) - ox) // data["cell_size_m"]), int((float(rows[0][3]) - oy) // data["cell_size_m"]))
+    assert stood != cell  # the cell of the first step, before the teleport: not in the path
+    assert all((data["path"]["xy_mm"][i] // size_mm, data["path"]["xy_mm"][i + 1] // size_mm) != stood
+               for i in range(0, len(data["path"]["xy_mm"]), 2))
