@@ -125,6 +125,16 @@ TEST_CASE("room format: a slanted wall's end at 0 is written 0, and the written 
   CHECK(maze::write_room(maze::read_room(written, "w.room")) == written);
 }
 
+TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {
+  // "name o \x7f\r # ..." kept "o \x7f\r", written as "name o \x7f\r\n", read back as "o \x7f"
+  // (found by fuzz_room).
+  const maze::Arena a = maze::read_room("name o \x7f\r #comment\nboundary 0 5 0 3\n", "n.room");
+  CHECK(a.name == "o \x7f");
+  const std::string written = maze::write_room(a);
+  CHECK(maze::write_room(maze::read_room(written, "n.room")) == written);
+  CHECK(maze::read_room("name a b\t \r\n", "n.room").name == "a b");
+}
+
 TEST_CASE("room format: detected by content, after comments and blank lines") {
   CHECK(maze::looks_like_room(kRoom));
   CHECK(maze::looks_like_room("\n\n   # x\nrect 0 0 1 1\n"));

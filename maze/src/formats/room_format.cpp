@@ -106,7 +106,9 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
   if (key.text == "name") {
     const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
     if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
-    arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t") + 1));
+    // Trailing blanks and carriage returns go: the name is written on a line of its own, and a
+    // '\r' left at its end would be read back as the line's end.
+    arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t\r") + 1));
   } else if (key.text == "boundary") {
     if (boundary_line != 0) {
       throw p.error(key.column, fmt::format("a second boundary (the first is at line {})", boundary_line));
