@@ -223,12 +223,11 @@ std::string metric_truth_picture(const robot::MetricController &c, const maze::T
   const PlainGrid g = room_grid(map, marks, [&](std::size_t n) { return truth_tone(map, truth, threshold, n); });
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     draw_room_landmarks(page, frame, marks);
-    std::vector<PointPx> trail{frame.at(marks.start.x_m, marks.start.y_m)};
-    for (const mapping::Point &p : c.trajectory()) trail.push_back(frame.at(p.x_m, p.y_m));
-    page.polyline(trail, std::max(1.5, frame.cell_w_px / 6), kPathColour);
+    const MetricRobotMarks robot = robot_marks(c);
+    const std::vector<PointPx> trail = draw_trail(page, frame, marks.start, robot);
     const double side = mark_px(frame);
     page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
-    draw_robot(page, frame, robot_marks(c));
+    draw_robot(page, frame, robot);
   };
   return plain_grid_picture(g, truth_legend(marks, scores), overlay, format, metric_page(map, marks)).encode();
 }
