@@ -225,21 +225,21 @@ TEST_CASE("batch: --strategy names a maze run's strategy, a room run's, or front
 }
 
 TEST_CASE("batch: a room run keeps the room options the batch read, with the batch's shared ones") {
-  app::MetricRunOptions room_only;
-  room_only.room.strategy = robot::MetricStrategy::waypoints;
-  room_only.room.waypoints = {{1.0, 2.0}};
-  room_only.room.laps = 2;
-  room_only.resolution_m = 0.2;
+  app::RunOptions room_only = app::metres_run_options();
+  room_only.strategy = explore::StrategyKind::waypoints;
+  room_only.metres.controller.waypoints = {{1.0, 2.0}};
+  room_only.metres.controller.laps = 2;
+  room_only.metres.resolution_m = 0.2;
   app::RunOptions options;
   options.simulation.seed = 9;
   options.time_limit_s = 30.0;
-  const app::MetricRunOptions room = app::room_options_for(options, room_only, [](std::string_view) { return false; });
-  CHECK(room.room.strategy == robot::MetricStrategy::waypoints);
-  CHECK(room.room.waypoints.size() == 1);
-  CHECK(room.room.laps == 2);
-  CHECK(room.resolution_m == 0.2);
-  CHECK(room.room.seed == 9);
-  CHECK(room.room.time_limit_s == 30.0);
-  CHECK(room.quiet);
+  const app::RunOptions room = app::room_options_for(options, room_only, [](std::string_view) { return false; });
+  CHECK(room.strategy == explore::StrategyKind::waypoints);
+  CHECK(room.metres.controller.waypoints.size() == 1);
+  CHECK(room.metres.controller.laps == 2);
+  CHECK(room.metres.resolution_m == 0.2);
+  CHECK(room.simulation.seed == 9);
+  CHECK(room.time_limit_s == 30.0);
+  CHECK(room.output.quiet);
   CHECK(room.model.kind == sensing::ModelKind::ray);
 }

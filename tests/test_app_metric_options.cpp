@@ -1,6 +1,6 @@
-// The room command's options: described once in their table (app/cli/room_options.hpp), an
+// A run in metres' options: described once in the run's table (app/run/option_fields.hpp), an
 // option that does nothing for the room run asked warned about as `run` warns, and the run
-// going on.
+// going on; the options every run takes read the same in run, room and mms.
 
 #include <doctest/doctest.h>
 
@@ -13,20 +13,22 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli/commands.hpp"
-#include "app/cli/room_options.hpp"
+#include "app/run/metric_run.hpp"
+#include "app/run/option_fields.hpp"
+#include "app/run/run_options.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
 
 namespace {
 
-std::vector<std::string> room_warnings(std::set<std::string> typed, const app::MetricRunOptions &o) {
+std::vector<std::string> room_warnings(std::set<std::string> typed, const app::RunOptions &o) {
   const app::GivenOptions given{"room", [&typed](std::string_view option) { return typed.count(std::string(option)) > 0; }};
-  return app::check_room_options_apply(given, o);
+  return app::check_metres_options_apply(given, o);
 }
 
-app::MetricRunOptions with(robot::MetricStrategy strategy, sensing::ModelKind model = sensing::ModelKind::ray) {
-  app::MetricRunOptions o;
-  o.room.strategy = strategy;
+app::RunOptions with(explore::StrategyKind strategy, sensing::ModelKind model = sensing::ModelKind::ray) {
+  app::RunOptions o = app::metres_run_options();
+  o.strategy = strategy;
   o.model.kind = model;
   return o;
 }
@@ -34,7 +36,7 @@ app::MetricRunOptions with(robot::MetricStrategy strategy, sensing::ModelKind mo
 }  // namespace
 
 TEST_CASE("room options: one that does nothing for the strategy or model asked is warned about as run warns") {
-  using robot::MetricStrategy;
+  using MetricStrategy = explore::StrategyKind;
   CHECK(room_warnings({"--goal", "--dilate"}, with(MetricStrategy::frontier)) ==
         std::vector<std::string>{"warning: --goal has no effect without --strategy wavefront",
                                  "warning: --dilate has no effect without --strategy wavefront (frontier keeps the "
@@ -64,7 +66,7 @@ TEST_CASE("room options: every flag of the table is an option of room, and --res
   app::CommandContext context;
   app::add_commands(cli, context);
   const CLI::App *room = cli.get_subcommand("room");
-  for (const app::OptionField<app::MetricRunOptions> &field : app::option_fields<app::MetricRunOptions>()) {
+  for (const app::OptionField<app::MetresOptions> &field : app::option_fields<app::MetresOptions>()) {
     CAPTURE(field.flag);
     CHECK(room->get_option_no_throw(std::string(field.flag)) != nullptr);
   }
@@ -84,12 +86,43 @@ TEST_CASE("room options: every flag of the table is an option of room, and --res
 }
 
 TEST_CASE("room options: --cells with --resolution, and a threshold not finite, are refused") {
-  app::MetricRunOptions o;
-  o.cells_x = 10;
-  o.cells_y = 10;
-  o.resolution_m = 0.1;
-  CHECK_THROWS_WITH_AS(app::check_room_options(o), "give --cells or --resolution, not both", common::InputError);
-  app::MetricRunOptions t;
+  app::RunOptions o = app::metres_run_options();
+  o.metres.cells_x = 10;
+  o.metres.cells_y = 10;
+  o.metres.resolution_m = 0.1;
+  CHECK_THROWS_WITH_AS(app::validate_metres(o), "give --cells or --resolution, not both", common::InputError);
+  app::RunOptions t = app::metres_run_options();
   t.threshold = std::numeric_limits<double>::infinity();
-  CHECK_THROWS_WITH_AS(app::check_room_options(t), doctest::Contains("--threshold must be a finite"), common::InputError);
+  CHECK_THROWS_WITH_AS(app::validate_metres(t), doctest::Contains("--threshold must be a finite"), common::InputError);
+}
+
+TEST_CASE("room options: the options every run takes read the same, word for word, in run, room and mms") {
+  CLI::App cli{"maze_mapper", "maze_mapper"};
+  app::CommandContext context;
+  app::add_commands(cli, context);
+  for (const char *flag : {"--robot", "--model", "--seed", "--noise", "--clamp", "--time-limit", "--max-steps", "--quiet",
+                           "--out", "--threshold", "--p-free", "--log-base"}) {
+    CAPTURE(flag);
+    const std::string help = app::option_help(flag);
+    for (const char *name : {"run", "room", "mms"}) {
+      CAPTURE(name);
+      const CLI::Option *option = cli.get_subcommand(name)->get_option_no_throw(flag);
+      REQUIRE(option != nullptr);
+      CHECK(option->get_description() == help);
+    }
+  }
+}
+
+TEST_CASE("room options: a strategy is parsed from the one strategy table, cells or metres") {
+  CHECK(explore::parse_strategy("frontier", explore::StrategySpace::cells) == explore::StrategyKind::frontier);
+  CHECK(explore::parse_strategy("frontier", explore::StrategySpace::metres) == explore::StrategyKind::frontier);
+  CHECK(explore::parse_strategy("wander", explore::StrategySpace::metres) == explore::StrategyKind::wander);
+  CHECK(explore::strategy_names(explore::StrategySpace::cells) == "dfs, frontier, left-wall, right-wall or floodfill");
+  CHECK(explore::strategy_names(explore::StrategySpace::metres) == "waypoints, wavefront, frontier or wander");
+  CHECK_THROWS_WITH_AS(explore::parse_strategy("wander"),
+                       "unknown --strategy 'wander' (choose dfs, frontier, left-wall, right-wall or floodfill)",
+                       common::InputError);
+  CHECK_THROWS_WITH_AS(test_cli::run({"room", std::string(WORLDS_DIR) + "/ir_room.room", "--strategy", "dfs"}),
+                       "--strategy must be waypoints, wavefront, frontier or wander in a room (got 'dfs')",
+                       common::InputError);
 }

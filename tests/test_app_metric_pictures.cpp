@@ -327,12 +327,12 @@ TEST_CASE("room run in an arena with a supervisor's cylinder: a neutral grey dis
   const test_cli::TempDir dir("room_pictures_cylinder");
   maze::Arena arena = maze::load_world(std::string(WORLDS_DIR) + "/ir_room.room").geometry();
   arena.discs.push_back({0.6, 2.4, 0.25});
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = "ir_room with a cylinder";
-  o.room.strategy = robot::MetricStrategy::frontier;
-  o.room.time_limit_s = 5.0;
-  o.quiet = true;
-  o.out_dir = dir.path.string();
+  o.strategy = explore::StrategyKind::frontier;
+  o.time_limit_s = 5.0;
+  o.output.quiet = true;
+  o.output.out_dir = dir.path.string();
   std::ostringstream out;
   app::MetricFilesRecorder recorder;
   app::run_metric_arena(arena, o, out, std::chrono::steady_clock::now(), nullptr, nullptr, &recorder);

@@ -13,7 +13,7 @@
 namespace {
 
 struct Made {
-  app::MetricRunOptions options;
+  app::RunOptions options = app::metres_run_options();
   sensing::MetricGridSpec spec;
   app::MetricRunSummary summary;
 };
@@ -21,7 +21,7 @@ struct Made {
 Made made() {
   Made m;
   m.options.world = "worlds/ir_room.room";
-  m.options.room.strategy = robot::MetricStrategy::waypoints;
+  m.options.strategy = explore::StrategyKind::waypoints;
   m.spec = sensing::metric_grid_from_resolution({0.0, 5.0, 0.0, 3.0}, 0.1);
   m.summary.ending = robot::MetricEnding::arrived;
   m.summary.message = "reached all 8 waypoints";

@@ -34,18 +34,18 @@ constexpr SetUpCase kSetUps[] = {
     {sensing::ModelKind::pie, "ir-ring"},
 };
 
-app::MetricRunOptions frontier_options(const SetUpCase &s) {
-  app::MetricRunOptions o;
+app::RunOptions frontier_options(const SetUpCase &s) {
+  app::RunOptions o = app::metres_run_options();
   o.world = "generated";
-  o.room.strategy = robot::MetricStrategy::frontier;
+  o.strategy = explore::StrategyKind::frontier;
   o.model.kind = s.model;
   o.robot = s.robot;
-  o.quiet = true;
+  o.output.quiet = true;
   return o;
 }
 
 // The run in the world file o.world, as the room command loads it.
-app::MetricRunSummary run_file(const app::MetricRunOptions &o, std::ostream &out) {
+app::MetricRunSummary run_file(const app::RunOptions &o, std::ostream &out) {
   return app::run_metric_world(maze::load_world(o.world), o, out);
 }
 
@@ -73,7 +73,7 @@ maze::Arena generated_arena(int seed) {
 
 TEST_CASE("room frontier: the shipped IR room mapped with the lidar and the IR (cone and pie)") {
   for (const SetUpCase &s : kSetUps) {
-    app::MetricRunOptions o = frontier_options(s);
+    app::RunOptions o = frontier_options(s);
     o.world = std::string(WORLDS_DIR) + "/ir_room.room";
     std::ostringstream out;
     const app::MetricRunSummary summary = run_file(o, out);
@@ -97,7 +97,7 @@ TEST_CASE("room frontier: the sonar sweeps open floor that its lost echoes never
   box.half_width_m = 0.2;
   arena.obstacles.push_back(box);
   arena.starts.push_back(maze::ArenaPose{0.5, 0.5, 0.0});
-  app::MetricRunOptions o = frontier_options(kSetUps[1]);
+  app::RunOptions o = frontier_options(kSetUps[1]);
   o.robot = "sonar-ring";
   std::ostringstream out;
   const app::MetricRunSummary s = app::run_metric_arena(arena, o, out);
@@ -109,7 +109,7 @@ TEST_CASE("room frontier: the sonar sweeps open floor that its lost echoes never
 }
 
 TEST_CASE("room frontier: the shipped IR room mapped with the sonar cone") {
-  app::MetricRunOptions o = frontier_options(kSetUps[1]);
+  app::RunOptions o = frontier_options(kSetUps[1]);
   o.robot = "sonar-ring";
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   std::ostringstream out;
@@ -140,7 +140,7 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone and the
   for (const char *robot_name : {"sonar-ring", "ir-ring"}) {
     for (int seed = 1; seed <= 20; ++seed) {
       std::ostringstream out;
-      app::MetricRunOptions o = frontier_options(kSetUps[1]);
+      app::RunOptions o = frontier_options(kSetUps[1]);
       o.robot = robot_name;
       const app::MetricRunSummary s = app::run_metric_arena(generated_arena(seed), o, out);
       const std::string what = "seed " + std::to_string(seed) + " " + robot_name + " cone";
@@ -154,7 +154,7 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the sonar cone and the
 TEST_CASE("room frontier: the walled shipped arenas mapped with the sonar cone") {
   // Walled all round, with walls at a slant inside: about 3 s of CPU for the two.
   for (const char *world : {"obstacle_field.room", "thick_arena.xml"}) {
-    app::MetricRunOptions o = frontier_options(kSetUps[1]);
+    app::RunOptions o = frontier_options(kSetUps[1]);
     o.robot = "sonar-ring";
     o.world = std::string(WORLDS_DIR) + "/" + world;
     std::ostringstream out;
@@ -168,7 +168,7 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the IR pie (ir-ring an
   for (const char *robot_name : {"ir-ring", "ir-fan"}) {
     for (int seed = 1; seed <= 20; ++seed) {
       std::ostringstream out;
-      app::MetricRunOptions o = frontier_options(kSetUps[2]);
+      app::RunOptions o = frontier_options(kSetUps[2]);
       o.robot = robot_name;
       const app::MetricRunSummary summary = app::run_metric_arena(generated_arena(seed), o, out);
       check_mapped(summary, "seed " + std::to_string(seed) + " " + robot_name + " pie");
@@ -178,13 +178,13 @@ TEST_CASE("room frontier: 20 generated arenas mapped with the IR pie (ir-ring an
 }
 
 TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is not (exit 1)") {
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
-  o.room.strategy = robot::MetricStrategy::wavefront;
-  o.room.goal = mapping::Point{4.7, 2.7};
-  o.room.dilate = 1;
+  o.strategy = explore::StrategyKind::wavefront;
+  o.metres.controller.goal = mapping::Point{4.7, 2.7};
+  o.metres.controller.dilate = 1;
   o.model.kind = sensing::ModelKind::pie;
-  o.quiet = true;
+  o.output.quiet = true;
   std::ostringstream out;
   const app::MetricRunSummary reached = run_file(o, out);
   CHECK(reached.ending == robot::MetricEnding::goal_reached);
@@ -199,7 +199,7 @@ TEST_CASE("room wavefront: the IR room's goal is reached; a goal walled off is n
   walled.y_max_m = 2.0;
   walled.obstacles.push_back(maze::Obstacle::from_box(1.4, 0.0, 1.6, 2.0));  // wall to wall
   walled.starts.push_back({0.5, 1.0, 0.0});
-  o.room.goal = mapping::Point{2.5, 1.0};
+  o.metres.controller.goal = mapping::Point{2.5, 1.0};
   o.model.kind = sensing::ModelKind::ray;
   const app::MetricRunSummary cut_off = app::run_metric_arena(walled, o, out);
   CHECK(cut_off.ending == robot::MetricEnding::unreachable);
@@ -212,13 +212,13 @@ TEST_CASE("room wavefront: a goal one cell from an obstacle is reached (the grow
   arena.y_max_m = 2.0;
   arena.obstacles.push_back(maze::Obstacle::from_box(1.98, 0.6, 2.4, 1.4));  // its cells from x 1.9 m
   arena.starts.push_back({0.5, 1.0, 0.0});
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = "one box";
-  o.room.strategy = robot::MetricStrategy::wavefront;
-  o.room.goal = mapping::Point{1.85, 1.0};  // 0.13 m from the box: room for the body (0.09 m)
-  o.room.dilate = 1;
+  o.strategy = explore::StrategyKind::wavefront;
+  o.metres.controller.goal = mapping::Point{1.85, 1.0};  // 0.13 m from the box: room for the body (0.09 m)
+  o.metres.controller.dilate = 1;
   o.model.kind = sensing::ModelKind::ray;
-  o.quiet = true;
+  o.output.quiet = true;
   std::ostringstream out;
   const app::MetricRunSummary s = app::run_metric_arena(arena, o, out);
   INFO(s.message);
@@ -229,13 +229,13 @@ TEST_CASE("room wavefront: the sonar ring's legs stopped by a touch the map did 
   // Its lost echoes leave the partition's cells free on the map: a leg stops touching it. The
   // touched cell is occupied for planning and the robot backs off; before, it replanned the
   // same leg a control step at a time until the step limit (2000000: minutes of CPU).
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
-  o.room.strategy = robot::MetricStrategy::wavefront;
-  o.room.goal = mapping::Point{4.7, 2.7};
+  o.strategy = explore::StrategyKind::wavefront;
+  o.metres.controller.goal = mapping::Point{4.7, 2.7};
   o.model.kind = sensing::ModelKind::cone;
   o.robot = "sonar-ring";
-  o.quiet = true;
+  o.output.quiet = true;
   o.max_steps = 10000;  // the run ends by itself well before
   std::ostringstream out;
   const app::MetricRunSummary s = run_file(o, out);
@@ -255,26 +255,26 @@ TEST_CASE("ir-fan carries demo pie's Figure 1 mounts, left to right") {
 }
 
 TEST_CASE("room waypoints: the list driven in laps, or round and round until the time limit") {
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
-  o.room.strategy = robot::MetricStrategy::waypoints;
-  o.room.waypoints = {{0.5, 0.5}, {0.5, 2.4}};  // west of the partition, there and back
+  o.strategy = explore::StrategyKind::waypoints;
+  o.metres.controller.waypoints = {{0.5, 0.5}, {0.5, 2.4}};  // west of the partition, there and back
   o.model.kind = sensing::ModelKind::ray;
-  o.quiet = true;
+  o.output.quiet = true;
   std::ostringstream out;
-  o.room.laps = 2;
+  o.metres.controller.laps = 2;
   const app::MetricRunSummary twice = run_file(o, out);
   CHECK(twice.ending == robot::MetricEnding::arrived);
   CHECK(twice.message == "reached all 2 waypoints 2 times");
-  o.room.laps = 1;
+  o.metres.controller.laps = 1;
   const app::MetricRunSummary once = run_file(o, out);
   CHECK(once.message == "reached all 2 waypoints");
   CHECK(once.sim_time_s < twice.sim_time_s);
 
-  o.room.laps = 0;
-  o.room.time_limit_s = 30.0;
-  o.quiet = false;
-  o.snapshots_at_s = {5.0, 30.0};
+  o.metres.controller.laps = 0;
+  o.time_limit_s = 30.0;
+  o.output.quiet = false;
+  o.metres.snapshots_at_s = {5.0, 30.0};
   std::ostringstream maps;
   const app::MetricRunSummary timed = run_file(o, maps);
   CHECK(timed.ending == robot::MetricEnding::time_up);
@@ -284,40 +284,40 @@ TEST_CASE("room waypoints: the list driven in laps, or round and round until the
   CHECK(maps.str().find("--- t = 30 s: step") != std::string::npos);
 
   // A route of the one point the robot stands on: it stays there, scanning, until the limit.
-  o.room.waypoints = {{0.3, 0.3}};
-  o.room.time_limit_s = 3.0;
-  o.quiet = true;
+  o.metres.controller.waypoints = {{0.3, 0.3}};
+  o.time_limit_s = 3.0;
+  o.output.quiet = true;
   const app::MetricRunSummary still = run_file(o, maps);
   CHECK(still.ending == robot::MetricEnding::time_up);
   CHECK(still.sim_time_s == doctest::Approx(3.0).epsilon(0.02));
 }
 
 TEST_CASE("room: bad input is refused before anything runs") {
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
-  o.quiet = true;
+  o.output.quiet = true;
   std::ostringstream out;
-  o.room.strategy = robot::MetricStrategy::wavefront;
-  o.room.goal = mapping::Point{7.0, 1.0};
+  o.strategy = explore::StrategyKind::wavefront;
+  o.metres.controller.goal = mapping::Point{7.0, 1.0};
   CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("is outside the boundary"), common::InputError);
-  o.room.goal = mapping::Point{4.7, 2.7};
-  o.start = mapping::Point{1.1, 0.5};  // in the partition
+  o.metres.controller.goal = mapping::Point{4.7, 2.7};
+  o.metres.start = mapping::Point{1.1, 0.5};  // in the partition
   CHECK_THROWS_AS(run_file(o, out), common::InputError);
-  o.start.reset();
-  o.resolution_m = 0.0001;
+  o.metres.start.reset();
+  o.metres.resolution_m = 0.0001;
   CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("at most 20000 a side"), common::InputError);
-  o.resolution_m = 0.0003;  // 16667 x 10000 cells: 2.8 GiB
+  o.metres.resolution_m = 0.0003;  // 16667 x 10000 cells: 2.8 GiB
   CHECK_THROWS_WITH_AS(run_file(o, out), doctest::Contains("would take"), common::InputError);
   CHECK(out.str().empty());
 }
 
 TEST_CASE("room wavefront: without --goal it heads for the world file's goal") {
-  app::MetricRunOptions o;
+  app::RunOptions o = app::metres_run_options();
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";  // goal 4.7 2.7
-  o.room.strategy = robot::MetricStrategy::wavefront;
-  o.room.dilate = 1;
+  o.strategy = explore::StrategyKind::wavefront;
+  o.metres.controller.dilate = 1;
   o.model.kind = sensing::ModelKind::pie;
-  o.quiet = true;
+  o.output.quiet = true;
   std::ostringstream out;
   const app::MetricRunSummary reached = run_file(o, out);
   CHECK(reached.ending == robot::MetricEnding::goal_reached);
@@ -330,7 +330,7 @@ TEST_CASE("room wavefront: without --goal it heads for the world file's goal") {
 }
 
 TEST_CASE("room: a stop request ends any strategy at its next control step, stopped and interrupted") {
-  app::MetricRunOptions o = frontier_options(kSetUps[0]);
+  app::RunOptions o = frontier_options(kSetUps[0]);
   o.world = std::string(WORLDS_DIR) + "/ir_room.room";
   std::ostringstream out;
   const app::MetricRunSummary s = app::run_metric_world(maze::load_world(o.world), o, out,

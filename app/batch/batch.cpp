@@ -89,7 +89,7 @@ void run_maze(RunOptions options, const BatchJob &job, const RunControls &contro
   if (!item.ok) item.error = ended_error(robot::to_string(item.summary.reason), item.summary.message);
 }
 
-void run_room_job(MetricRunOptions options, const BatchJob &job, bool (*interrupted)(), BatchItem &item) {
+void run_room_job(RunOptions options, const BatchJob &job, bool (*interrupted)(), BatchItem &item) {
   const auto started = std::chrono::steady_clock::now();
   options.world = job.world;
   const maze::World world = maze::load_world(job.world);
@@ -243,25 +243,22 @@ std::vector<BatchJob> each_start_jobs(const std::vector<std::string> &worlds, co
 }
 
 BatchOptions::BatchOptions(RunOptions run_options)
-    : run(std::move(run_options)), room(room_options_for(run, {}, [](std::string_view) { return false; })) {}
+    : run(std::move(run_options)),
+      room(room_options_for(run, metres_run_options(), [](std::string_view) { return false; })) {}
 
-BatchOptions::BatchOptions(RunOptions run_options, MetricRunOptions room_options)
+BatchOptions::BatchOptions(RunOptions run_options, RunOptions room_options)
     : run(std::move(run_options)), room(std::move(room_options)) {}
 
-MetricRunOptions room_options_for(const RunOptions &options, MetricRunOptions room_only,
-                                const std::function<bool(std::string_view)> &given) {
-  MetricRunOptions room = std::move(room_only);
-  room.quiet = true;
-  room.simulation = options.simulation;
-  room.room.seed = options.simulation.seed;
-  room.max_steps = options.max_steps;
-  if (options.time_limit_s) room.room.time_limit_s = *options.time_limit_s;
-  room.threshold = options.threshold;
-  room.sensor = options.sensor;
-  room.range_model = options.range_model;
+RunOptions room_options_for(const RunOptions &options, const RunOptions &room_only,
+                            const std::function<bool(std::string_view)> &given) {
+  RunOptions room = options;
+  room.strategy = room_only.strategy;
+  room.metres = room_only.metres;
+  room.output.quiet = true;
+  room.model = sensing::ModelOptions{};
   room.model.kind = sensing::ModelKind::ray;  // the room command's default
   if (given("--model") && options.model.kind != sensing::ModelKind::cell) room.model = options.model;
-  if (given("--robot")) room.robot = options.robot;
+  if (!given("--robot")) room.robot.clear();  // the set-up's
   const bool ranges_only = room.model.kind == sensing::ModelKind::bump || room.model.kind == sensing::ModelKind::depth;
   if (ranges_only && !given("--log-base")) room.sensor.base = mapping::LogBase::ten;
   return room;

@@ -84,19 +84,20 @@ std::vector<BatchJob> plain_jobs(const std::vector<std::string> &worlds, KindCho
 struct BatchOptions {
   // Not explicit: a maze run's options are a batch's, its room runs those of no option given.
   BatchOptions(RunOptions run_options);
-  BatchOptions(RunOptions run_options, MetricRunOptions room_options);
+  BatchOptions(RunOptions run_options, RunOptions room_options);
   RunOptions run;
-  MetricRunOptions room;
+  RunOptions room;
 };
 
-// The room run a batch makes, quiet: `room_only` as the batch read it (the room command's
-// --strategy, --waypoints, --laps, --cells, --resolution and depth rays), with the batch's
-// --seed and simulated faults, --max-steps, --time-limit, --threshold, the sensor model's
-// numbers (log base 10 for bump and depth unless --log-base is given, as the room command),
-// and the robot and model when given(NAME) says the user typed them (a room has no cell model:
-// ray unless another is given; the robot: the set-up's unless given).
-MetricRunOptions room_options_for(const RunOptions &options, MetricRunOptions room_only,
-                                const std::function<bool(std::string_view)> &given);
+// The room run a batch makes, quiet: the batch's options (its --seed and simulated faults,
+// --max-steps, --time-limit, --threshold, the sensor model's numbers: log base 10 for bump
+// and depth unless --log-base is given, as the room command) with `room_only`'s strategy and
+// options in metres as the batch read them (--strategy, --waypoints, --laps, --cells,
+// --resolution and the depth rays), and the robot and model when given(NAME) says the user
+// typed them (a room has no cell model: ray unless another is given; the robot: the set-up's
+// unless given).
+RunOptions room_options_for(const RunOptions &options, const RunOptions &room_only,
+                            const std::function<bool(std::string_view)> &given);
 
 // The pool both batches run on: run(i) for every i in [0, count), on `jobs` threads (>= 1),
 // each index once, in any order. Once interrupted (may be null) returns true, skip(i) is

@@ -151,14 +151,29 @@ CLI::Option *accept_shipped_world_names(CLI::Option *world) {
   return world->transform([](const std::string &given) { return world_argument(given); });
 }
 
-CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
+namespace {
+
+CLI::Option *add_seed_option_helped(CLI::App &command, std::uint64_t &seed, const std::string &help) {
   const CLI::Validator whole_from_zero = usage_check("--seed", [](const std::string &text) {
     return common::parse_number<std::uint64_t>(text) ? std::string()
                                                        : fmt::format("must be a whole number from 0 to {} (got '{}')",
                                                                      std::numeric_limits<std::uint64_t>::max(), text);
   });
-  return command.add_option("--seed", seed, fmt::format("N: seed of {} (default {})", what, seed))
-      ->check(whole_from_zero);
+  return command.add_option("--seed", seed, help)->check(whole_from_zero);
+}
+
+}  // namespace
+
+CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what) {
+  return add_seed_option_helped(command, seed, fmt::format("N: seed of {} (default {})", what, seed));
+}
+
+CLI::Option *add_run_seed_option(CLI::App &command, std::uint64_t &seed) {
+  return add_seed_option_helped(command, seed, option_help("--seed"));
+}
+
+CLI::Option *add_out_option(CLI::App &command, std::string &out_dir) {
+  return command.add_option("-o,--out", out_dir, option_help("--out"));
 }
 
 mapping::Cell parse_cell(const std::string &text, const std::string &option) {

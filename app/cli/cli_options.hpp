@@ -22,6 +22,12 @@ namespace app {
 // '-4')" (CLI11 alone would wrap "-4" to 2^64 - 4). `what` says what the seed drives; the
 // description ends "(default <seed's value>)".
 CLI::Option *add_seed_option(CLI::App &command, std::uint64_t &seed, const std::string &what);
+// --seed N of a run (run, room, mms, batch, ...), checked as above, with the one help line of
+// the run's options (app/run/option_fields.hpp's option_help).
+CLI::Option *add_run_seed_option(CLI::App &command, std::uint64_t &seed);
+
+// -o, --out DIR of a run (run, room, mms), with the one help line of the run's options.
+CLI::Option *add_out_option(CLI::App &command, std::string &out_dir);
 
 // --color WHEN (auto, always, never; auto honours NO_COLOR) into `color`, and its old spelling
 // --no-color (hidden; warns and means --color never): the same in every command that colours.

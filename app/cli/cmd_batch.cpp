@@ -22,7 +22,6 @@
 #include "app/cli/floor_options.hpp"
 #include "app/cli/mms_options.hpp"
 #include "app/cli/option_binding.hpp"
-#include "app/cli/room_options.hpp"
 #include "app/cli/run_cli.hpp"
 #include "app/run/progress_line.hpp"
 #include "app/run/terminal.hpp"
@@ -44,32 +43,29 @@ struct BatchInput {
   std::vector<std::string> merge_csvs;  // batch merge A.csv B.csv ...
   std::string merge_out;                // batch merge -o FILE
   std::string strategy;                 // --strategy: a maze run's, a room run's, or frontier for both
-  MetricRunOptions room;                  // the room runs' own options (app/cli/room_options.hpp)
+  RunOptions room = metres_run_options();  // the room runs' strategy and options in metres
 };
 
-// Whether a kind of run has the strategy `name` (its parser holds its names); frontier is one
-// of each.
-template <auto parse>
-bool names_strategy(const std::string &name) {
-  try {
-    parse(name);
-    return true;
-  } catch (const common::InputError &) {
-    return false;
+// Whether a kind of run has the strategy `name` (the one strategy table's rows say where each
+// explores); frontier is one of each.
+bool names_strategy(const std::string &name, explore::StrategySpace space) {
+  for (const explore::StrategyRow &row : explore::strategy_table()) {
+    if (row.name == name) return explore::explores_in(row.kind, space);
   }
+  return false;
 }
-bool maze_strategy(const std::string &name) { return names_strategy<explore::parse_strategy>(name); }
-bool room_strategy(const std::string &name) { return names_strategy<robot::parse_metric_strategy>(name); }
+bool maze_strategy(const std::string &name) { return names_strategy(name, explore::StrategySpace::cells); }
+bool room_strategy(const std::string &name) { return names_strategy(name, explore::StrategySpace::metres); }
 
 // --strategy NAME into the runs it names: a maze run's strategy, a room run's, or frontier, both.
-void read_strategy(const std::string &name, RunOptions &maze, MetricRunOptions &room) {
+void read_strategy(const std::string &name, RunOptions &maze, RunOptions &room) {
   if (!maze_strategy(name) && !room_strategy(name)) {
     throw common::InputError(fmt::format("unknown --strategy '{}' (a maze run's dfs, frontier, left-wall, right-wall or "
                                          "floodfill; a room run's waypoints, wavefront, frontier or wander)",
                                          name));
   }
   if (maze_strategy(name)) maze.strategy = explore::parse_strategy(name);
-  if (room_strategy(name)) room.room.strategy = robot::parse_metric_strategy(name);
+  if (room_strategy(name)) room.strategy = explore::parse_strategy(name, explore::StrategySpace::metres);
 }
 
 // The options of the room command a batch takes for its room runs, from room's one table.
@@ -77,9 +73,9 @@ void add_room_run_options(CLI::App &command, BatchInput &batch) {
   command.add_option("--strategy", batch.strategy,
                      "NAME: a maze run's dfs, frontier, left-wall, right-wall or floodfill (default dfs); a room run's "
                      "waypoints, wavefront, frontier or wander (default frontier); frontier is both");
-  add_field_options(command, batch.room, {"--waypoints", "--laps", "--cells"});
-  add_resolution_option(command, batch.room.resolution_m, "0.1");
-  add_field_options(command, batch.room, {"--depth-reading", "--depth-origin"});
+  add_field_options(command, batch.room.metres, {"--waypoints", "--laps", "--cells"});
+  add_resolution_option(command, batch.room.metres.resolution_m, "0.1");
+  add_field_options(command, batch.room.metres, {"--depth-reading", "--depth-origin"});
 }
 
 // batch merge: the parts' rows joined into one CSV (-o FILE, else stdout), and the totals
@@ -123,7 +119,7 @@ void warn_maze_only_options(const BatchInput &batch, const RunOptions &options, 
   }
   if (!batch.strategy.empty() && !room_strategy(batch.strategy)) {
     fmt::print(stderr, "warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n",
-               batch.strategy, robot::to_string(batch.room.room.strategy));
+               batch.strategy, explore::to_string(batch.room.strategy));
   }
   if (given.given("--model") && options.model.kind == sensing::ModelKind::cell) {
     fmt::print(stderr, "warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
@@ -186,7 +182,7 @@ int run_world_batch(const CLI::App &command, const RunOptions &options, const Ba
     const GivenOptions room_given{given.command, [&given](std::string_view name) {
                                     return name != "--goal" && name != "--dilate" && given.given(name);
                                   }};
-    print_warnings(check_room_options_apply(room_given, batch_options.room));
+    print_warnings(check_metres_options_apply(room_given, batch_options.room));
   }
   const std::vector<BatchItem> items = run_batch(batch_options, batch_jobs, jobs, progress, &common::interrupted);
   progress_line.reset();  // cleared before the table
@@ -228,7 +224,7 @@ void add_batch_command(CLI::App &cli, CommandContext &context) {
     if (command->got_subcommand("merge")) return;
     if (batch->worlds.empty()) throw common::InputError("batch needs a WORLD (world files or folders), or: batch merge CSV...");
     if (!batch->strategy.empty()) read_strategy(batch->strategy, *parsed, batch->room);
-    check_room_options(batch->room);
+    validate_metres(batch->room);
     RunOptions options = checked_run_options(*command, *parsed, false);
     options.output.quiet = true;
     print_warnings(options_not_applying(*command, options));

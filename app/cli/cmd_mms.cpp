@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "app/cli/cli_options.hpp"
+#include "app/cli/option_binding.hpp"
 #include "app/cli/mms_options.hpp"
 #include "app/mms/mms_session.hpp"
 #include "app/cli/run_cli.hpp"
@@ -39,10 +40,8 @@ void add_mms_command(CLI::App &cli, CommandContext &context) {
              "simulated robot; print the map, its marks, and mms's stats and score");
   add_exploration_options(*command, *parsed);
   add_mms_options(*command, *mms);
-  command->add_flag("--quiet", parsed->output.quiet, "print only the final map, the marks and the summary");
-  command->add_option("--out", parsed->output.out_dir,
-                      "DIR: write map.pgm + map.yaml, map.png, truth.png, trace.csv, replay.html, summary.json "
-                      "(with mms's stats and score) and marks.txt (the algorithm's marks)");
+  add_field_option(*command, parsed->output, "--quiet");
+  add_out_option(*command, parsed->output.out_dir);
   add_color_option(*command, *color);
   command->add_flag("--transcript", mms->transcript,
                     "print the conversation on stderr: `mms N> line` from the algorithm, `mms N< answer` back");

@@ -1,5 +1,6 @@
 // maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/run/metric_run.hpp);
-// its options are described in app/cli/room_options.hpp.
+// it takes the run's options (app/run/option_fields.hpp) that a run in metres uses, with the
+// same words as run and mms, and a run in metres' own.
 
 #include <chrono>
 #include <cmath>
@@ -9,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -16,9 +19,9 @@
 #include "app/cli/cli_options.hpp"
 #include "app/cli/model_options.hpp"
 #include "app/cli/option_binding.hpp"
-#include "app/cli/room_options.hpp"
 #include "app/cli/run_cli.hpp"
 #include "app/report/metric_files_recorder.hpp"
+#include "app/run/terminal.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "app/cli/commands.hpp"
@@ -29,12 +32,12 @@ namespace {
 
 struct RoomInput {
   std::string start, boundary;
-  MetricRunOptions options;
+  RunOptions options = metres_run_options();
 };
 
 // --start Xm,Ym[,YAW]: a pose as every command spells it (app/run/option_values.hpp); the old
 // X,Y[,DEG] (no unit) is read the same, with a warning.
-void read_start(const std::string &text, MetricRunOptions &o) {
+void read_start(const std::string &text, MetresOptions &o) {
   std::vector<std::string> warnings;
   const PoseArgument pose = parse_pose(text, "--start", warnings, PoseYaw::optional);
   print_warnings(warnings);
@@ -44,41 +47,48 @@ void read_start(const std::string &text, MetricRunOptions &o) {
 
 // The options in the order the help shows them (app/cli/help_format.hpp groups them).
 void add_room_options(CLI::App &cmd, RoomInput &in) {
-  MetricRunOptions &o = in.options;
-  o.model.kind = sensing::ModelKind::ray;  // a room's default: the lidar's rays (a maze's is cell)
+  RunOptions &o = in.options;
   accept_shipped_world_names(cmd.add_option("WORLD", o.world, "the world file, or a shipped world's name"))->required();
-  add_field_options(cmd, o, {"--strategy", "--model", "--robot", "--cells"});
-  add_resolution_option(cmd, o.resolution_m, "0.1");
+  add_strategy_option(cmd, o, explore::StrategySpace::metres);
+  add_field_option(cmd, o.model, "--model");
+  add_field_option(cmd, o, "--robot");
+  add_field_option(cmd, o.metres, "--cells");
+  add_resolution_option(cmd, o.metres.resolution_m, "0.1");
   add_boundary_option(cmd, in.boundary);
   cmd.add_option("--start", in.start, "X,Y[,YAW]: where the robot starts, X and Y with their unit m (0.5m,1.2m), and "
                                       "its heading, degrees from east or N, E, S, W (default the world's start)");
-  add_field_options(cmd, o, {"--waypoints", "--laps", "--goal", "--dilate", "--time-limit"});
+  add_field_options(cmd, o.metres, {"--waypoints", "--laps", "--goal", "--dilate"});
+  add_field_option(cmd, o, "--time-limit");
   add_old_spelling(cmd, "--time", "--time-limit", [&o](const std::string &text) {
-    o.room.time_limit_s = parse_number_list(text, "--time-limit", 1)[0];
+    o.time_limit_s = parse_number_list(text, "--time-limit", 1)[0];
   });
-  add_field_options(cmd, o, {"--snapshots-at", "--snapshot-steps", "--threshold", "--max-steps", "--depth-reading",
-                             "--depth-origin"});
-  add_seed_option(cmd, o.simulation.seed, "the simulation's noise and wander's turns");
+  add_field_options(cmd, o.metres, {"--snapshots-at", "--snapshot-steps"});
+  add_field_option(cmd, o, "--threshold");
+  add_max_steps_option(cmd, o);
+  add_field_options(cmd, o.metres, {"--depth-reading", "--depth-origin"});
+  add_run_seed_option(cmd, o.simulation.seed);
+  add_field_option(cmd, o.simulation, "--noise");
   add_model_options(cmd, o.sensor);
-  add_field_option(cmd, o, "--quiet");
-  cmd.add_option("-o,--out", o.out_dir, "DIR: trace.csv, logodds.csv, thresholded.txt, map.pgm + map.yaml, summary.json, "
-                                        "map.png, truth.png, replay.html (wavefront: wave.png), snapshots/*.png");
+  add_clamp_option(cmd, o.sensor);
+  add_field_option(cmd, o.output, "--quiet");
+  add_out_option(cmd, o.output.out_dir);
 }
 
 // The options once all are read: checked together, the ones that do nothing warned about.
 void finish_options(RoomInput &in, const CLI::App &cmd) {
-  MetricRunOptions &o = in.options;
-  if (!in.start.empty()) read_start(in.start, o);
-  check_room_options(o);
+  RunOptions &o = in.options;
+  if (!in.start.empty()) read_start(in.start, o.metres);
+  validate_metres(o);
   const GivenOptions given{cmd.get_name(), [&cmd](std::string_view option) {
                              const CLI::Option *opt = cmd.get_option_no_throw(std::string(option));
                              return opt != nullptr && opt->count() > 0;
                            }};
-  print_warnings(check_room_options_apply(given, o));
-  o.room.seed = o.simulation.seed;
+  print_warnings(check_metres_options_apply(given, o));
   if (o.model.kind == sensing::ModelKind::bump || o.model.kind == sensing::ModelKind::depth) {
     if (cmd.get_option("--log-base")->count() == 0) o.sensor.base = mapping::LogBase::ten;
   }
+  if (cmd.get_option("--robot")->count() == 0) o.robot = std::string(default_robot(o.model.kind));
+  validate(o);
 }
 
 }  // namespace
@@ -93,7 +103,9 @@ void add_room_command(CLI::App &cli, CommandContext &context) {
     finish_options(*in, *cmd);
     const maze::World world = load_world_reporting(in->options.world, with_arena_overrides({}, in->boundary));
     const common::SignalsStopWork stop_signals;  // a signal ends the run at its next control step
-    const MetricRunSummary summary = run_metric_and_write(world, in->options, std::cout, started, &common::interrupted);
+    const int progress = progress_fd(in->options.output.quiet, false);
+    const MetricRunSummary summary =
+        run_metric_and_write(world, in->options, std::cout, started, &common::interrupted, nullptr, progress);
     context.status = metric_run_exit_status(summary);
   });
 }

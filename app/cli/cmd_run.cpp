@@ -44,8 +44,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
   run.add_option_function<std::string>(
       "--plan-to", [&o](const std::string &text) { o.plan.to = parse_cell(text, "--plan-to"); },
       "X,Y: after the run, plan (wavefront) from where the robot ended to this cell");
-  run.add_option("-o,--out", o.output.out_dir,
-                 "DIR: write map.pgm + map.yaml (ROS map_server), map.png, truth.png, summary.json, trace.csv, replay.html");
+  add_out_option(run, o.output.out_dir);
   add_field_option(run, o.output, "--snapshots");
   add_picture_format_option(run, o);
   add_field_options(run, o.output, {"--no-trace", "--trace-steps", "--no-replay"});

@@ -1,5 +1,7 @@
 #include "app/cli/model_options.hpp"
 
+#include "app/run/option_fields.hpp"
+
 #include <string>
 #include <vector>
 
@@ -18,7 +20,7 @@ void add_clamp_option(CLI::App &command, mapping::SensorModelOptions &options) {
       .add_option_function<std::vector<double>>(
           "--clamp",
           [&options](const std::vector<double> &bounds) { options.clamp = mapping::Clamp{bounds.at(0), bounds.at(1)}; },
-          "MIN MAX: hold log-odds within MIN and MAX, either side of the prior's (OctoMap: -2 3.5) (default none)")
+          option_help("--clamp"))
       ->expected(2)
       ->allow_extra_args(false);
 }

@@ -31,7 +31,7 @@ void add_model_choice(CLI::App &command, RunOptions &o) {
 
 void add_robot_and_faults(CLI::App &command, RunOptions &o) {
   add_field_option(command, o, "--robot");
-  add_seed_option(command, o.simulation.seed, "the sensor noise and the faults");
+  add_run_seed_option(command, o.simulation.seed);
   add_field_options(command, o.simulation, {"--noise", "--dropout", "--spikes", "--stuck-bumper", "--wheel-slip"});
 }
 
@@ -42,18 +42,32 @@ void add_mapping_run_options(CLI::App &command, RunOptions &o) {
   add_robot_and_faults(command, o);
   add_model_options(command, o.sensor);
   add_clamp_option(command, o.sensor);
+  add_max_steps_option(command, o);
+  add_field_option(command, o, "--time-limit");
+  add_field_option(command, o.plan, "--dilate");
+  add_world_options(command, o.world_overrides);
+}
+
+void add_max_steps_option(CLI::App &command, RunOptions &o) {
   // CLI11 alone clamps a number past the type's range to its maximum, silently.
   const CLI::Validator whole_steps = usage_check("--max-steps", [](const std::string &text) {
     return common::parse_number<std::int64_t>(text) ? std::string()
                                                       : fmt::format("must be a whole number from 1 to {} (got '{}')",
                                                                     std::numeric_limits<std::int64_t>::max(), text);
   });
-  command
-      .add_option("--max-steps", o.max_steps, "N: stop after this many control steps (default 1000 a cell, at least 100000)")
-      ->check(whole_steps);
-  add_field_option(command, o, "--time-limit");
-  add_field_option(command, o.plan, "--dilate");
-  add_world_options(command, o.world_overrides);
+  command.add_option("--max-steps", o.max_steps, option_help("--max-steps"))->check(whole_steps);
+}
+
+void add_strategy_option(CLI::App &command, RunOptions &o, explore::StrategySpace space) {
+  if (space == explore::StrategySpace::cells) {
+    add_field_option(command, o, "--strategy");
+    return;
+  }
+  command.add_option_function<std::string>(
+      "--strategy",
+      [&o](const std::string &name) { o.strategy = explore::parse_strategy(name, explore::StrategySpace::metres); },
+      fmt::format("{} (default {})", explore::strategy_names(explore::StrategySpace::metres),
+                  explore::to_string(o.strategy)));
 }
 
 void add_speed_run_option(CLI::App &command, RunOptions &o) { add_field_option(command, o.plan, "--speed-run"); }
@@ -65,7 +79,7 @@ void add_picture_format_option(CLI::App &command, RunOptions &o) {
 void add_exploration_options(CLI::App &command, RunOptions &o) {
   accept_shipped_world_names(command.add_option(
       "WORLD", o.world, "maze file or a shipped world's name (default lab4x4.txt, from worlds/ here or the shipped worlds)"));
-  add_field_option(command, o, "--strategy");
+  add_strategy_option(command, o, explore::StrategySpace::cells);
   add_mapping_run_options(command, o);
   add_field_options(command, o.output, {"--ascii", "--unknown"});
 }

@@ -18,6 +18,13 @@ namespace app {
 // A value that cannot be read throws common::InputError naming the option as typed.
 void add_mapping_run_options(CLI::App &command, RunOptions &options);
 
+// --max-steps N (every run): a whole number from 1, its help the run options' one line.
+void add_max_steps_option(CLI::App &command, RunOptions &options);
+
+// --strategy NAME of the strategies that explore in `space` (explore/strategies.hpp's table):
+// a maze's cells (run, plan, compare, mms) or metres (room).
+void add_strategy_option(CLI::App &command, RunOptions &options, explore::StrategySpace space);
+
 // --speed-run (run, batch).
 void add_speed_run_option(CLI::App &command, RunOptions &options);
 

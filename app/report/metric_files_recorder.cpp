@@ -24,7 +24,7 @@ MetricPictureMarks picture_marks(const MetricRunStart &start) {
   marks.boundary = PlainGridBounds{start.arena.x_min_m, start.arena.x_max_m, start.arena.y_min_m, start.arena.y_max_m};
   marks.landmarks = landmark_marks(start.arena);
   marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(start.options.world).filename().string(),
-                              robot::to_string(start.room.strategy), start.setup.name);
+                              explore::to_string(start.room.strategy), start.setup.name);
   return marks;
 }
 
@@ -66,11 +66,11 @@ std::string metric_pgm(const sensing::MetricMap &map) {
 }
 
 void MetricFilesRecorder::start(const MetricRunStart &start) {
-  const MetricRunOptions &options = start.options;
-  dir_.emplace(options.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
+  const RunOptions &options = start.options;
+  dir_.emplace(options.output.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
                metric_own_names());
   kind_ = options.model.kind;
-  wavefront_ = start.room.strategy == robot::MetricStrategy::wavefront;
+  wavefront_ = start.room.strategy == explore::StrategyKind::wavefront;
   threshold_ = start.threshold;
   world_ = options.world;
   body_radius_m_ = start.room.body_radius_m;
@@ -137,12 +137,14 @@ void MetricFilesRecorder::finish(const MetricRunEnd &end) {
   out.finish();
 }
 
-MetricRunSummary run_metric_and_write(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_and_write(const maze::World &world, const RunOptions &options, std::ostream &out,
                                std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
-                               Report *report) {
-  if (options.out_dir.empty()) return run_metric_world(world, options, out, started, interrupted, report);
+                               Report *report, int progress_fd) {
+  if (options.output.out_dir.empty()) {
+    return run_metric_world(world, options, out, started, interrupted, report, nullptr, progress_fd);
+  }
   MetricFilesRecorder recorder;
-  return run_metric_world(world, options, out, started, interrupted, report, &recorder);
+  return run_metric_world(world, options, out, started, interrupted, report, &recorder, progress_fd);
 }
 
 }  // namespace app

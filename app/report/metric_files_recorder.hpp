@@ -30,7 +30,7 @@ std::string metric_pgm(const sensing::MetricMap &map);
 
 class MetricFilesRecorder final : public MetricRunRecorder {
  public:
-  // Prepares options.out_dir (which must be set), refused when an output would be the world
+  // Prepares options.output.out_dir (which must be set), refused when an output would be the world
   // or --robot's file; the trace's header, the pictures' marks and tones, the first frame.
   void start(const MetricRunStart &start) override;
   // trace.csv's line and replay.html's frame when due.
@@ -58,9 +58,11 @@ class MetricFilesRecorder final : public MetricRunRecorder {
   std::optional<MetricReplayRecorder> replay_;
 };
 
-// run_metric_world() with options.out_dir's files written by a MetricFilesRecorder when it is set.
-MetricRunSummary run_metric_and_write(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
+// run_metric_world() with options.output.out_dir's files written by a MetricFilesRecorder when
+// it is set, and the progress line on progress_fd when not -1.
+MetricRunSummary run_metric_and_write(const maze::World &world, const RunOptions &options, std::ostream &out,
                                std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
-                               robot::StopPoll interrupted = nullptr, Report *report = nullptr);
+                               robot::StopPoll interrupted = nullptr, Report *report = nullptr,
+                               int progress_fd = -1);
 
 }  // namespace app

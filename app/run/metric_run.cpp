@@ -17,6 +17,7 @@
 #include "app/run/metric_run_report.hpp"
 #include "app/run/metric_evaluation.hpp"
 #include "app/run/profile_json.hpp"
+#include "app/run/progress_line.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
 #include "common/error.hpp"
@@ -40,30 +41,30 @@ bool is_log_set_up(sensing::ModelKind k) {
   return k == sensing::ModelKind::bump || k == sensing::ModelKind::depth;
 }
 
-double threshold_of(const MetricRunOptions &o) {
+double threshold_of(const RunOptions &o) {
   return o.threshold.value_or(is_log_set_up(o.model.kind) ? -0.5 : 0.0);
 }
 
 // --depth-reading and --depth-origin: the depth rays leave one origin in the robot's frame
 // and, axial, report the depth along the heading (a depth camera, the homework's simulator).
 // Another set-up's range sensors keep their own (the command warns that the options do nothing).
-void with_depth_convention(maze::sim::RobotProfile &profile, const MetricRunOptions &options) {
-  if (options.depth_reading == sensing::DepthReading::range && !options.depth_origin) return;
+void with_depth_convention(maze::sim::RobotProfile &profile, const RunOptions &options) {
+  if (options.metres.depth_reading == sensing::DepthReading::range && !options.metres.depth_origin) return;
   if (options.model.kind != sensing::ModelKind::depth) return;
-  const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
+  const mapping::Point o = options.metres.depth_origin.value_or(mapping::Point{});
   if (!(std::isfinite(o.x_m) && std::isfinite(o.y_m) && std::hypot(o.x_m, o.y_m) <= profile.body_radius_m)) {
     throw common::InputError(fmt::format("--depth-origin must lie on the robot, within its {:g} m radius (got {:g},{:g})",
                                          profile.body_radius_m, o.x_m, o.y_m));
   }
   for (maze::sim::DistanceSensorSpec &d : profile.distance_sensors) {
     d.origin_m = std::array<double, 2>{o.x_m, o.y_m};
-    d.axial = options.depth_reading == sensing::DepthReading::axial;
+    d.axial = options.metres.depth_reading == sensing::DepthReading::axial;
   }
   maze::sim::validate_profile(profile);
 }
 
 // The set-up's robot (--robot, else the set-up's own); refused when it lacks the set-up's devices.
-maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const MetricRunOptions &options) {
+maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const RunOptions &options) {
   const std::string robot_name = options.robot.empty() ? std::string(setup.default_robot) : options.robot;
   maze::sim::RobotProfile profile = resolve_robot(robot_name);
   if (!has_devices(profile, setup)) {
@@ -75,29 +76,29 @@ maze::sim::RobotProfile robot_for(const sensing::SetUp &setup, const MetricRunOp
 }
 
 // The arena's start, moved by --start and turned by --start-yaw.
-maze::ArenaPose start_pose_of(const maze::Arena &arena, const MetricRunOptions &options) {
+maze::ArenaPose start_pose_of(const maze::Arena &arena, const RunOptions &options) {
   maze::ArenaPose start_pose = arena.start();
-  if (options.start) {
-    start_pose.x_m = options.start->x_m;
-    start_pose.y_m = options.start->y_m;
+  if (options.metres.start) {
+    start_pose.x_m = options.metres.start->x_m;
+    start_pose.y_m = options.metres.start->y_m;
   }
-  if (options.start_yaw_deg) start_pose.yaw_rad = *options.start_yaw_deg * kDeg;
+  if (options.metres.start_yaw_deg) start_pose.yaw_rad = *options.metres.start_yaw_deg * kDeg;
   return start_pose;
 }
 
 // The map's grid over the arena's extent: --cells, else --resolution (0.1 m); checked.
-sensing::MetricGridSpec grid_of(const maze::Arena &arena, const MetricRunOptions &options) {
+sensing::MetricGridSpec grid_of(const maze::Arena &arena, const RunOptions &options) {
   const sensing::MetricBoundary boundary{arena.x_min_m, arena.x_max_m, arena.y_min_m, arena.y_max_m};
   const sensing::MetricGridSpec spec =
-      options.cells_x ? sensing::metric_grid_from_cells(boundary, *options.cells_x, *options.cells_y)
-                      : sensing::metric_grid_from_resolution(boundary, options.resolution_m.value_or(0.1));
+      options.metres.cells_x ? sensing::metric_grid_from_cells(boundary, *options.metres.cells_x, *options.metres.cells_y)
+                      : sensing::metric_grid_from_resolution(boundary, options.metres.resolution_m.value_or(0.1));
   sensing::validate(spec);
   return spec;
 }
 
 // Refuses, in this order: a start outside the grid, a start touching a solid, a goal outside
 // the grid, a waypoint outside it.
-void check_places(const maze::Arena &arena, const MetricRunOptions &options, const sensing::MetricGridSpec &spec,
+void check_places(const maze::Arena &arena, const RunOptions &options, const sensing::MetricGridSpec &spec,
                   const maze::ArenaPose &start_pose, double body_radius_m) {
   const auto inside = [&spec](Point p) {
     return p.x_m >= spec.boundary.x_start_m && p.x_m < spec.boundary.x_end_m && p.y_m >= spec.boundary.y_start_m &&
@@ -112,21 +113,21 @@ void check_places(const maze::Arena &arena, const MetricRunOptions &options, con
   maze::Arena placed = arena;
   placed.starts = {start_pose};
   if (const maze::ArenaCheck bad = maze::check_starts_clear(placed, body_radius_m)) throw *bad;
-  if (options.room.goal && !inside(*options.room.goal)) {
+  if (options.metres.controller.goal && !inside(*options.metres.controller.goal)) {
     throw common::InputError(fmt::format("--goal {:g},{:g} is outside the boundary {:g},{:g},{:g},{:g}",
-                                         options.room.goal->x_m, options.room.goal->y_m, spec.boundary.x_start_m,
+                                         options.metres.controller.goal->x_m, options.metres.controller.goal->y_m, spec.boundary.x_start_m,
                                          spec.boundary.x_end_m, spec.boundary.y_start_m, spec.boundary.y_end_m));
   }
-  for (const Point &p : options.room.waypoints) {
+  for (const Point &p : options.metres.controller.waypoints) {
     if (!inside(p)) throw common::InputError(fmt::format("waypoint {:g},{:g} is outside the boundary", p.x_m, p.y_m));
   }
 }
 
-// The controller's options: the robot's description (the room command has no --noise: the
-// scan filter takes the lidar's data sheet), the set-up, at most --max-steps (2 000 000) steps.
-robot::ControllerOptions room_controller_options(const MetricRunOptions &options,
+// The controller's options: the robot's description (the scan filter's range noise --noise,
+// else the lidar's data sheet), the set-up, at most --max-steps (2 000 000) steps.
+robot::ControllerOptions room_controller_options(const RunOptions &options,
                                                  const maze::sim::RobotProfile &profile) {
-  robot::ControllerOptions controller = robot_description(profile, std::nullopt);
+  robot::ControllerOptions controller = robot_description(profile, options.simulation.noise);
   controller.sensor = options.sensor;
   controller.model = options.model;
   controller.sensing.range_model = options.range_model;
@@ -134,13 +135,16 @@ robot::ControllerOptions room_controller_options(const MetricRunOptions &options
   return controller;
 }
 
-// The strategy's options, from the start, stopping no nearer than the body's radius + 8 cm.
-// The room options as the run uses them: wavefront without --goal heads for the world's
-// first goal, when its file gives one.
-robot::MetricOptions room_options_of(const MetricRunOptions &options, const maze::Arena &arena, Point start,
+// The strategy's options, from the start, stopping no nearer than the body's radius + 8 cm:
+// the run's strategy, time limit (none: 0) and seed, and its own options as the run uses
+// them: wavefront without --goal heads for the world's first goal, when its file gives one.
+robot::MetricOptions room_options_of(const RunOptions &options, const maze::Arena &arena, Point start,
                                    double body_radius_m) {
-  robot::MetricOptions room = options.room;
-  if (room.strategy == robot::MetricStrategy::wavefront && !room.goal && !arena.goals.empty()) {
+  robot::MetricOptions room = options.metres.controller;
+  room.strategy = options.strategy;
+  room.time_limit_s = options.time_limit_s.value_or(0.0);
+  room.seed = options.simulation.seed;
+  if (room.strategy == explore::StrategyKind::wavefront && !room.goal && !arena.goals.empty()) {
     room.goal = Point{arena.goals.front().x_m, arena.goals.front().y_m};
   }
   room.start = start;
@@ -166,9 +170,9 @@ maze::TruthRaster truth_on_grid(const maze::Arena &arena, const sensing::MetricG
 // asked simulated times and control steps, printed unless quiet and told to the recorder.
 class RoomLog {
  public:
-  RoomLog(const MetricRunOptions &options, double threshold, std::ostream &out, MetricRunRecorder *recorder)
-      : options_(options), threshold_(threshold), out_(out), recorder_(recorder), times_(options.snapshots_at_s),
-        steps_(options.snapshot_steps) {
+  RoomLog(const RunOptions &options, double threshold, std::ostream &out, MetricRunRecorder *recorder)
+      : options_(options), threshold_(threshold), out_(out), recorder_(recorder), times_(options.metres.snapshots_at_s),
+        steps_(options.metres.snapshot_steps) {
     std::sort(times_.begin(), times_.end());
     std::sort(steps_.begin(), steps_.end());
   }
@@ -189,11 +193,11 @@ class RoomLog {
 
   // The map now (and the wave), headed by `when`; nothing when quiet.
   void snapshot(const robot::MetricController &c, const std::string &when) const {
-    if (options_.quiet) return;
+    if (options_.output.quiet) return;
     out_ << fmt::format("--- {}: step {}, {:.1f} s, at ({:.2f}, {:.2f}) ---\n", when, c.steps(), c.time_s(),
                         c.position().x_m, c.position().y_m);
     out_ << metric_ascii_map(c, threshold_);
-    if (options_.room.strategy == robot::MetricStrategy::wavefront && !c.wave().empty()) {
+    if (options_.strategy == explore::StrategyKind::wavefront && !c.wave().empty()) {
       out_ << "wavefront (obstacles 1, goal 2):\n" << metric_wave_numbers(c.map(), c.wave());
     }
     out_ << '\n' << std::flush;  // seen as the run goes, also through a pipe or in a file
@@ -210,7 +214,7 @@ class RoomLog {
   }
 
  private:
-  const MetricRunOptions &options_;
+  const RunOptions &options_;
   double threshold_;
   std::ostream &out_;
   MetricRunRecorder *recorder_;
@@ -250,6 +254,13 @@ void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c
       << metric_binary_map(c.map(), threshold) << '\n';
 }
 
+// The reachable free cells of the truth, as the score counts them.
+std::size_t reachable_free_of(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold) {
+  MetricRunSummary counted;
+  score_metric_map(map, truth, threshold, counted);
+  return counted.reachable_free;
+}
+
 }  // namespace
 
 int metric_run_exit_status(const MetricRunSummary &s) {
@@ -263,15 +274,15 @@ int metric_run_exit_status(const MetricRunSummary &s) {
   }
 }
 
-MetricRunSummary run_metric_world(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_world(const maze::World &world, const RunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
-                     Report *report, MetricRunRecorder *recorder) {
-  return run_metric_arena(world.geometry(), options, out, started, interrupted, report, recorder);
+                     Report *report, MetricRunRecorder *recorder, int progress_fd) {
+  return run_metric_arena(world.geometry(), options, out, started, interrupted, report, recorder, progress_fd);
 }
 
-MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
-                        Report *report_out, MetricRunRecorder *recorder) {
+                        Report *report_out, MetricRunRecorder *recorder, int progress_fd) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
@@ -293,13 +304,22 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptio
 
   // ---- the run ----
   RoomLog log(options, threshold, out, recorder);
+  std::optional<ProgressLine> progress;
+  if (progress_fd >= 0) progress.emplace(progress_fd, static_cast<int>(reachable_free_of(map, truth, threshold)));
+  const auto observed = [&map, &truth, threshold] {
+    MetricRunSummary now;
+    score_metric_map(map, truth, threshold, now);
+    return now.reachable_free_observed;
+  };
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
-                                          [&log, recorder](const robot::MetricController &c) {
+                                          [&log, recorder, &progress, &observed](const robot::MetricController &c) {
                                             log.on_step(c);
                                             if (recorder != nullptr) recorder->on_step(c);
+                                            if (progress) progress->update_metres(c.steps(), observed, c.time_s());
                                           },
                                           interrupted);
   MetricRunSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
+  progress.reset();  // the line cleared before anything else is printed
   if (summary.ending == robot::MetricEnding::stopped && interrupted != nullptr && interrupted()) {
     summary.interrupted = true;
     summary.message = "interrupted by " + common::interrupt_name();
@@ -307,12 +327,12 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptio
 
   // ---- the score against the truth ----
   const std::size_t first_left = score_metric_map(map, truth, threshold, summary);
-  if (options.room.strategy == robot::MetricStrategy::frontier) settle_frontier_ending(map, first_left, summary);
+  if (options.strategy == explore::StrategyKind::frontier) settle_frontier_ending(map, first_left, summary);
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
-  if (!options.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
+  if (!options.output.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
   const Report report = metric_run_report(options, profile.name, setup, spec, summary);
-  if (!options.quiet) out << '\n';
+  if (!options.output.quiet) out << '\n';
   out << format_summary(report);
   if (recorder != nullptr) recorder->finish(MetricRunEnd{controller_loop, truth, report});
   if (report_out != nullptr) *report_out = report;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "app/run/report.hpp"
+#include "app/run/run_options.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/world/truth_raster.hpp"
@@ -33,35 +34,11 @@
 
 namespace app {
 
-struct MetricRunOptions {
-  std::string world;
-  robot::MetricOptions room;
-  std::optional<int> cells_x, cells_y;        // --cells X,Y
-  std::optional<double> resolution_m;         // --resolution M (default 0.1)
-  std::string robot;                          // --robot (default: the set-up's robot)
-  std::optional<mapping::Point> start;        // --start X,Y (default: the world's start)
-  std::optional<double> start_yaw_deg;
-  mapping::SensorModelOptions sensor;
-  sensing::ModelOptions model;                // kind: --model (default ray)
-  sensing::RangeModelOptions range_model;
-  // --model depth: how the depth rays report (range along the ray, or axial depth along the
-  // heading) and where they leave from (robot frame, m; none: the rim, the range from the centre).
-  sensing::DepthReading depth_reading = sensing::DepthReading::range;
-  std::optional<mapping::Point> depth_origin;
-  std::optional<double> threshold;            // log-odds drawn W at or above (default 0; bump/depth -0.5)
-  std::vector<double> snapshots_at_s;
-  std::vector<std::int64_t> snapshot_steps;
-  std::string out_dir;                        // --out DIR: MetricFilesRecorder writes it (run_metric_and_write)
-  bool quiet = false;                         // no maps, the summary only
-  maze::sim::SimulationOptions simulation;
-  std::optional<std::int64_t> max_steps;
-};
-
 // The run as it starts: everything checked, the map empty, nothing moved.
 struct MetricRunStart {
-  const MetricRunOptions &options;
+  const RunOptions &options;
   const sensing::SetUp &setup;
-  const robot::MetricOptions &room;  // the strategy's options as the run uses them
+  const robot::MetricOptions &room;  // the strategy's options as the run uses them (strategy, time limit, seed set)
   const maze::Arena &arena;
   const sensing::MetricMap &map;     // the map the run fills; outlives the recorder's use
   const maze::ArenaPose &start;
@@ -119,16 +96,17 @@ struct MetricRunSummary {
 // ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
 // `report`, when not null, receives the run's report (the summary block's and summary.json's
 // entries: a batch row's columns). `recorder`, when not null, is told the run as it goes
-// (options.out_dir is the recorder's: the run itself writes no file).
-MetricRunSummary run_metric_world(const maze::World &world, const MetricRunOptions &options, std::ostream &out,
+// (options.output.out_dir is the recorder's: the run itself writes no file). `progress_fd`,
+// when not -1, shows the progress line there (app/run/progress_line.hpp) until the run ends.
+MetricRunSummary run_metric_world(const maze::World &world, const RunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                      robot::StopPoll interrupted = nullptr, Report *report = nullptr,
-                     MetricRunRecorder *recorder = nullptr);
+                     MetricRunRecorder *recorder = nullptr, int progress_fd = -1);
 // The same in an arena given in code.
-MetricRunSummary run_metric_arena(const maze::Arena &arena, const MetricRunOptions &options, std::ostream &out,
+MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                         robot::StopPoll interrupted = nullptr, Report *report = nullptr,
-                        MetricRunRecorder *recorder = nullptr);
+                        MetricRunRecorder *recorder = nullptr, int progress_fd = -1);
 // 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.
 int metric_run_exit_status(const MetricRunSummary &summary);

@@ -28,11 +28,11 @@ void add_grid(Report &e, const sensing::MetricGridSpec &spec) {
   e.json_only("boundary_m", Json::array({b.x_start_m, b.x_end_m, b.y_start_m, b.y_end_m}));
 }
 
-void add_model(Report &e, const MetricRunOptions &options, const sensing::SetUp &setup) {
+void add_model(Report &e, const RunOptions &options, const sensing::SetUp &setup) {
   e.both("model", std::string(setup.name));
-  if (options.depth_reading == sensing::DepthReading::axial || options.depth_origin) {
-    const mapping::Point o = options.depth_origin.value_or(mapping::Point{});
-    const char *reading = options.depth_reading == sensing::DepthReading::axial ? "axial" : "range";
+  if (options.metres.depth_reading == sensing::DepthReading::axial || options.metres.depth_origin) {
+    const mapping::Point o = options.metres.depth_origin.value_or(mapping::Point{});
+    const char *reading = options.metres.depth_reading == sensing::DepthReading::axial ? "axial" : "range";
     e.both("depth", fmt::format("{} from {:g},{:g} m", reading, o.x_m, o.y_m),
            Json{{"reading", reading}, {"origin_m", Json::array({o.x_m, o.y_m})}});
   } else {
@@ -70,13 +70,13 @@ void add_score(Report &e, const MetricRunSummary &s) {
 
 }  // namespace
 
-Report metric_run_report(const MetricRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
+Report metric_run_report(const RunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
                    const sensing::MetricGridSpec &spec, const MetricRunSummary &summary) {
   Report e;
   e.both("world", options.world);
   add_grid(e, spec);
   add_model(e, options, setup);
-  e.both("strategy", std::string(robot::to_string(options.room.strategy)));
+  e.both("strategy", std::string(explore::to_string(options.strategy)));
   e.both("robot", robot_name);
   e.both("seed", std::to_string(options.simulation.seed), Json(options.simulation.seed));
   const std::string ending(robot::to_string(summary.ending));

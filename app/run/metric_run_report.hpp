@@ -20,7 +20,7 @@
 
 namespace app {
 
-Report metric_run_report(const MetricRunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
+Report metric_run_report(const RunOptions &options, const std::string &robot_name, const sensing::SetUp &setup,
                    const sensing::MetricGridSpec &spec, const MetricRunSummary &summary);
 
 }  // namespace app

@@ -143,7 +143,7 @@ std::span<const OptionField<RunOptions>> option_fields() {
           [](const O &) {
             return std::string(
                 "L: a sub-cell is occupied when its log-odds >= L, for the map and the walls "
-                "(default none: when above 0)");
+                "(default none: when above 0; a run in metres: at or above 0, -0.5 for bump and depth)");
           },
           "threshold"),
       // The echo shows the steps in effect (the maze's default when not given): the run's
@@ -151,7 +151,9 @@ std::span<const OptionField<RunOptions>> option_fields() {
       own<O>(
           "max_steps", "--max-steps", [](const O &o) { return json_value(o.max_steps); }, "max-steps"),
       plain<O, &O::time_limit_s>("time_limit_s", "--time-limit",
-                                 [](const O &) { return std::string("S: stop after S simulated seconds (default none)"); }),
+                                 [](const O &) {
+                                   return std::string("S: stop after S simulated seconds (default none; wander needs it)");
+                                 }),
       own<O>("model", "", [](const O &o) { return echo_fields(o.model); }),
       own<O>("sensor", "", [](const O &o) { return echo_fields(o.sensor); }),
       own<O>("range_model", "", [](const O &o) { return echo_fields(o.range_model); }),
@@ -212,8 +214,9 @@ std::span<const OptionField<sensing::ModelOptions>> option_fields() {
   using M = sensing::ModelOptions;
   static const std::vector<OptionField<M>> fields{
       {"kind", "--model", "model",
-       [](const M &d) {
-         return fmt::format("mapping model: {} (default {})", models_by_device(), sensing::to_string(d.kind));
+       [](const M &) {  // one line for every kind of run, whatever default the command holds
+         return fmt::format("mapping model: {} (default {}; a run in metres: {})", models_by_device(),
+                            sensing::to_string(M{}.kind), sensing::to_string(metres_run_options().model.kind));
        },
        nullptr, [](M &m, const std::string &name) { m.kind = sensing::parse_model(name); }, "",
        [](const M &m) { return Json(std::string(sensing::to_string(m.kind))); }},
@@ -364,7 +367,11 @@ std::span<const OptionField<OutputOptions>> option_fields() {
        [](const O &) { return std::string("CHAR: drawn for never-observed sub-cells (default blank)"); }, nullptr,
        set_unknown, "", [](const O &o) { return o.unknown ? Json(std::string(1, *o.unknown)) : Json(nullptr); }},
       plain<O, &O::quiet>("quiet", "--quiet",
-                          [](const O &) { return std::string("print only the final map and the summary"); }),
+                          [](const O &) {
+                            return std::string(
+                                "print only the final map and the summary (mms: and the marks; a run in metres: the "
+                                "summary alone)");
+                          }),
       own<O>("color", "--color", [](const O &o) { return Json(o.color); }),
       plain<O, &O::animate>("animate", "--animate",
                             [](const O &) {

@@ -77,6 +77,15 @@ template <>
 std::span<const OptionField<PlanOptions>> option_fields();
 template <>
 std::span<const OptionField<OutputOptions>> option_fields();
+// A run in metres' own options; their echo is the room report's own keys, so they have no `echo`.
+template <>
+std::span<const OptionField<MetresOptions>> option_fields();
+
+// The help line of the run's option `flag` ("--robot", "--seed", "--max-steps", "--out", ...),
+// the same words in every command that takes it and in the Python runner: a table field's
+// help given the options' defaults, or the help of an option registered by its own code.
+// std::logic_error when no run option is so named.
+std::string option_help(std::string_view flag);
 
 // The field the option `flag` sets in Concern's table; std::logic_error when it has none (a
 // slip in the program, not in the input).

@@ -116,8 +116,9 @@ PoseArgument parse_pose(const std::string &text, const std::string &option, std:
   };
   const std::string place_text = with_unit(items[0], *place[0]) + "," + with_unit(items[1], *place[1]);
   if (place[0]->unit == LengthUnit::none || place[1]->unit == LengthUnit::none) {
-    warnings.push_back(old_spelling_warning(option + " " + text,
-                                            option + " " + place_text + (pose.yaw_given ? "," + std::string(items[2]) : "")));
+    std::string advice = fmt::format("{} {}", option, place_text);
+    if (pose.yaw_given) advice += fmt::format(",{}", items[2]);
+    warnings.push_back(old_spelling_warning(fmt::format("{} {}", option, text), advice));
   }
   if (pose.yaw_given && items[2].ends_with("rad") && std::abs(pose.yaw_rad) > 2.0 * std::numbers::pi) {
     const std::string number(items[2].substr(0, items[2].size() - 3));

@@ -60,6 +60,12 @@ std::string format_run_progress(int moves, int visited, int reachable_cells, dou
                      reachable_cells, percent, sim_time_s, elapsed_s);
 }
 
+std::string format_metres_progress(std::int64_t steps, std::size_t observed, std::size_t reachable_free,
+                                   double sim_time_s, double elapsed_s) {
+  return fmt::format("steps {}  observed {}/{} reachable free cells ({}%)  sim {:.1f} s  elapsed {:.1f} s", steps,
+                     observed, reachable_free, percent_done(observed, reachable_free), sim_time_s, elapsed_s);
+}
+
 std::string format_batch_progress(std::size_t done, std::size_t total, double elapsed_s) {
   constexpr std::size_t kWidth = 30;
   const std::size_t filled = total == 0 || done >= total ? kWidth : done * kWidth / total;
@@ -79,13 +85,27 @@ ProgressLine::~ProgressLine() {
   if (drawn_) write_progress(fd_, kClearLine);
 }
 
-void ProgressLine::update(int moves, int visited, double sim_time_s) {
+bool ProgressLine::due() {
   const auto now = std::chrono::steady_clock::now();
-  if (now < next_draw_) return;
+  if (now < next_draw_) return false;
   next_draw_ = now + std::chrono::milliseconds(100);
-  write_progress(fd_, kClearLine + fitted_to_terminal(fd_, format_run_progress(moves, visited, reachable_cells_,
-                                                                               sim_time_s, seconds_since(started_))));
+  return true;
+}
+
+void ProgressLine::draw(const std::string &text) {
+  write_progress(fd_, kClearLine + fitted_to_terminal(fd_, text));
   drawn_ = true;
+}
+
+void ProgressLine::update(int moves, int visited, double sim_time_s) {
+  if (!due()) return;
+  draw(format_run_progress(moves, visited, reachable_cells_, sim_time_s, seconds_since(started_)));
+}
+
+void ProgressLine::update_metres(std::int64_t steps, const std::function<std::size_t()> &observed, double sim_time_s) {
+  if (!due()) return;
+  draw(format_metres_progress(steps, observed(), static_cast<std::size_t>(reachable_cells_), sim_time_s,
+                              seconds_since(started_)));
 }
 
 BatchProgressLine::BatchProgressLine(int fd) : fd_(fd), started_(std::chrono::steady_clock::now()) {}

@@ -231,4 +231,55 @@ std::vector<std::string> check_options_apply(const GivenOptions &given, const Ru
   return warnings;
 }
 
+namespace {
+
+bool waypoints(const RunOptions &o) { return o.strategy == explore::StrategyKind::waypoints; }
+bool wavefront(const RunOptions &o) { return o.strategy == explore::StrategyKind::wavefront; }
+
+// The rules of a run in metres; the depth rays' read like the set-up table's (app/run/model_rules.hpp).
+constexpr OptionUse<RunOptions> kMetresOptionUses[] = {
+    {"--waypoints", "without --strategy waypoints", waypoints},
+    {"--laps", "without --strategy waypoints", waypoints},
+    {"--goal", "without --strategy wavefront", wavefront},
+    {"--dilate", "without --strategy wavefront (frontier keeps the body's radius clear)", wavefront},
+};
+
+}  // namespace
+
+RunOptions metres_run_options() {
+  RunOptions options;
+  options.strategy = explore::StrategyKind::frontier;
+  options.model.kind = sensing::ModelKind::ray;
+  options.robot.clear();
+  return options;
+}
+
+std::vector<std::string> check_metres_options_apply(const GivenOptions &given, const RunOptions &options) {
+  std::vector<std::string> warnings;
+  add_no_effect_warnings(given, std::span<const OptionUse<RunOptions>>(kMetresOptionUses), options, warnings);
+  if (options.model.kind != sensing::ModelKind::depth) {
+    for (const char *option : {"--depth-reading", "--depth-origin"}) {
+      if (!given.given(option)) continue;
+      warnings.push_back(fmt::format("warning: {} has no effect with the {} model (read by depth)", option,
+                                     sensing::to_string(options.model.kind)));
+    }
+  }
+  return warnings;
+}
+
+void validate_metres(const RunOptions &o) {
+  if (o.metres.cells_x && o.metres.resolution_m) throw common::InputError("give --cells or --resolution, not both");
+  if (o.threshold && !std::isfinite(*o.threshold)) {
+    throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", *o.threshold));
+  }
+  if (o.model.kind == sensing::ModelKind::cell) {
+    throw common::InputError("--model cell reads a maze's cell sides; in a room the lidar marks with --model ray");
+  }
+  if (!explore::explores_in(o.strategy, explore::StrategySpace::metres)) {
+    throw common::InputError(fmt::format("--strategy must be {} in a room (got '{}')",
+                                         explore::strategy_names(explore::StrategySpace::metres),
+                                         explore::to_string(o.strategy)));
+  }
+}
+
 }  // namespace app

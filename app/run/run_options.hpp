@@ -23,6 +23,8 @@
 #include "maze/sim/simulation.hpp"
 #include "maze/world/world.hpp"
 #include "plan/wavefront.hpp"
+#include "robot/metric_controller.hpp"
+#include "sensing/log_map.hpp"
 
 namespace app {
 
@@ -60,6 +62,27 @@ struct PlanOptions {
   bool speed_run = false;               // --speed-run: the micromouse speed run, start to goal (robot/options.hpp)
 };
 
+// What a run in metres adds (the room command, batch's room rows; app/run/metric_run.hpp):
+// the metric map's grid, the metric strategies' own options, the start as a pose in metres,
+// where the depth rays leave from, and the maps printed at simulated times and control
+// steps. The strategy, the model, the robot, the limits, the seed, the sensor model and what
+// the run prints and writes are the run's own fields, as for every kind of run.
+struct MetresOptions {
+  // --waypoints, --laps, --goal, --dilate (cells) and the controller's constants; its
+  // strategy, time limit and seed are set from the run's when the run starts.
+  robot::MetricOptions controller;
+  std::optional<int> cells_x, cells_y;        // --cells X,Y
+  std::optional<double> resolution_m;         // --resolution M (default 0.1)
+  std::optional<mapping::Point> start;        // --start X,Y (default: the world's start)
+  std::optional<double> start_yaw_deg;
+  // --model depth: how the depth rays report (range along the ray, or axial depth along the
+  // heading) and where they leave from (robot frame, m; none: the rim, the range from the centre).
+  sensing::DepthReading depth_reading = sensing::DepthReading::range;
+  std::optional<mapping::Point> depth_origin;
+  std::vector<double> snapshots_at_s;         // --snapshots-at: the map printed at these simulated seconds
+  std::vector<std::int64_t> snapshot_steps;   // --snapshot-steps: and at these control steps
+};
+
 struct RunOptions {
   std::string world;                    // the path as the user gave it
   maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
@@ -81,6 +104,7 @@ struct RunOptions {
   maze::sim::SimulationOptions simulation;
   PlanOptions plan;
   OutputOptions output;
+  MetresOptions metres;                 // a run in metres only
 
   // robot_profile()'s memo: the profile read for `resolved_for`, shared by copies.
   mutable std::shared_ptr<const maze::sim::RobotProfile> resolved_profile;
@@ -154,5 +178,18 @@ void add_no_effect_warnings(const GivenOptions &given, std::span<const OptionUse
 // no effect with the cell model"). The run goes on, but for --p-free/--p-occ with a set-up
 // that marks with the course's fixed numbers: common::InputError.
 std::vector<std::string> check_options_apply(const GivenOptions &given, const RunOptions &options);
+
+// The options of a run in metres before any is given: the frontier strategy, the ray model,
+// the set-up's robot (robot empty), the rest the run's defaults.
+RunOptions metres_run_options();
+
+// The warnings of a run in metres: its strategy's own options with another strategy (--goal
+// without wavefront, ...), the depth rays' with another model; one "warning: ..." line each.
+std::vector<std::string> check_metres_options_apply(const GivenOptions &given, const RunOptions &options);
+
+// A run in metres' own checks, before validate(): --cells with --resolution, a threshold not
+// finite, the cell model (a maze's cell sides), a strategy without a variant in metres
+// (common::InputError).
+void validate_metres(const RunOptions &options);
 
 }  // namespace app

@@ -4,6 +4,8 @@
 #include <array>
 #include <cassert>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -65,27 +67,70 @@ std::optional<Heading> Visits::heading(Cell c) const {
 
 // ---- names and options ----
 
-std::string_view to_string(StrategyKind kind) {
-  switch (kind) {
-    case StrategyKind::dfs: return "dfs";
-    case StrategyKind::frontier: return "frontier";
-    case StrategyKind::left_wall: return "left-wall";
-    case StrategyKind::right_wall: return "right-wall";
-    case StrategyKind::floodfill: return "floodfill";
-  }
-  return "?";
+std::span<const StrategyRow> strategy_table() {
+  static constexpr StrategyRow kStrategies[] = {
+      // In this order each space's words read as its help has always listed them.
+      {StrategyKind::waypoints, "waypoints", false, true},
+      {StrategyKind::wavefront, "wavefront", false, true},
+      {StrategyKind::dfs, "dfs", true, false},
+      {StrategyKind::frontier, "frontier", true, true},
+      {StrategyKind::left_wall, "left-wall", true, false},
+      {StrategyKind::right_wall, "right-wall", true, false},
+      {StrategyKind::floodfill, "floodfill", true, false},
+      {StrategyKind::wander, "wander", false, true},
+  };
+  return kStrategies;
 }
 
-StrategyKind parse_strategy(std::string_view name) {
-  for (const StrategyKind k : {StrategyKind::dfs, StrategyKind::frontier, StrategyKind::left_wall,
-                               StrategyKind::right_wall, StrategyKind::floodfill}) {
-    if (name == to_string(k)) return k;
+namespace {
+
+const StrategyRow &row_of(StrategyKind kind) {
+  for (const StrategyRow &row : strategy_table()) {
+    if (row.kind == kind) return row;
   }
-  throw common::InputError(fmt::format(
-      "unknown --strategy '{}' (choose dfs, frontier, left-wall, right-wall or floodfill)", name));
+  assert(false && "a strategy without a row");
+  return strategy_table().front();
+}
+
+bool in_space(const StrategyRow &row, StrategySpace space) {
+  return space == StrategySpace::cells ? row.on_cells : row.in_metres;
+}
+
+}  // namespace
+
+std::string_view to_string(StrategyKind kind) { return row_of(kind).name; }
+
+bool explores_in(StrategyKind kind, StrategySpace space) { return in_space(row_of(kind), space); }
+
+std::string strategy_names(StrategySpace space) {
+  std::vector<std::string_view> names;
+  for (const StrategyRow &row : strategy_table()) {
+    if (in_space(row, space)) names.push_back(row.name);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
+    text += names[i];
+  }
+  return text;
+}
+
+StrategyKind parse_strategy(std::string_view name, StrategySpace space) {
+  for (const StrategyRow &row : strategy_table()) {
+    if (row.name == name && in_space(row, space)) return row.kind;
+  }
+  if (space == StrategySpace::metres) {
+    throw common::InputError(
+        fmt::format("--strategy must be {} in a room (got '{}')", strategy_names(StrategySpace::metres), name));
+  }
+  throw common::InputError(fmt::format("unknown --strategy '{}' (choose {})", name, strategy_names(StrategySpace::cells)));
 }
 
 void validate(const ExplorerOptions &o) {
+  if (!explores_in(o.kind, StrategySpace::cells)) {
+    throw common::InputError(fmt::format("--strategy {} explores in metres, not on a maze's cells (maze_mapper room)",
+                                         to_string(o.kind)));
+  }
   if (o.width_cells < 1 || o.height_cells < 1) {
     throw common::InputError(
         fmt::format("maze size must be positive (got {}x{})", o.width_cells, o.height_cells));
@@ -165,6 +210,9 @@ std::optional<Heading> Explorer::next(Cell current, Heading heading, const WallQ
     case StrategyKind::left_wall:
     case StrategyKind::right_wall: return next_follower(current, heading, walls);
     case StrategyKind::floodfill: return next_floodfill(current, heading, walls);
+    case StrategyKind::waypoints:
+    case StrategyKind::wavefront:
+    case StrategyKind::wander: break;  // no cell variant: validate() refuses them
   }
   return std::nullopt;
 }

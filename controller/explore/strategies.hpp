@@ -38,6 +38,8 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -46,12 +48,33 @@
 
 namespace explore {
 
-enum class StrategyKind { dfs, frontier, left_wall, right_wall, floodfill };
+// Every exploration strategy, of both controllers: the cell controller's on a maze's cells
+// (above) and the metric controller's in metres (robot/metric_controller.hpp: waypoints,
+// wavefront, frontier, wander). frontier is one word with a variant in each.
+enum class StrategyKind { dfs, frontier, left_wall, right_wall, floodfill, waypoints, wavefront, wander };
+
+// Where a strategy explores: on a maze's cells, in metres, or both (a variant of each).
+enum class StrategySpace { cells, metres };
+
+// One row of the one strategy table: its --strategy word and the spaces it has a variant in.
+struct StrategyRow {
+  StrategyKind kind;
+  std::string_view name;
+  bool on_cells;
+  bool in_metres;
+};
+
+// The table, in the order help and messages list the strategies.
+std::span<const StrategyRow> strategy_table();
 
 std::string_view to_string(StrategyKind kind);
-// "dfs", "frontier", "left-wall", "right-wall", "floodfill"; throws common::InputError
-// naming --strategy and the choices otherwise.
-StrategyKind parse_strategy(std::string_view name);
+// Whether `kind` has a variant in `space`.
+bool explores_in(StrategyKind kind, StrategySpace space);
+// "dfs, frontier, left-wall, right-wall or floodfill": the words of the strategies of `space`.
+std::string strategy_names(StrategySpace space);
+// The strategy of `space` named `name` ("dfs", "left-wall", ...; "waypoints", ... in metres);
+// throws common::InputError naming --strategy and the choices otherwise.
+StrategyKind parse_strategy(std::string_view name, StrategySpace space = StrategySpace::cells);
 
 // What the robot knows about side h of cell c (c inside the grid).
 using WallQuery = std::function<mapping::SideState(mapping::Cell, mapping::Heading)>;
@@ -64,7 +87,7 @@ struct ExplorerOptions {
   std::vector<mapping::Cell> goals;  // floodfill's targets (micromouse knowledge, not walls)
 };
 
-// Throws common::InputError when the size is not positive, the start is outside, or
+// Throws common::InputError when the strategy has no cell variant, the size is not positive, the start is outside, or
 // floodfill has no goal or a goal outside the maze.
 void validate(const ExplorerOptions &options);
 

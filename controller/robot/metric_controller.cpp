@@ -75,7 +75,7 @@ bool MetricController::seen_occupied(std::size_t flat) const {
   // Where the body has touched (a frontier sweep leg, a wavefront leg) or frontier's body has
   // been, its own observation stands over the echoes'.
   if (flat < contact_.size() && contact_[flat]) return true;
-  if (body_observes_ && metric_.strategy == MetricStrategy::frontier && flat < under_body_.size() && under_body_[flat]) {
+  if (body_observes_ && metric_.strategy == explore::StrategyKind::frontier && flat < under_body_.size() && under_body_[flat]) {
     return false;
   }
   return map_.probability_at(flat) >= metric_.free_below_p - 1e-9;
@@ -162,7 +162,7 @@ Motion MetricController::look_around() {
 
 std::vector<bool> MetricController::grown_obstacles(const std::vector<bool> &occupied) const {
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
-  if (metric_.strategy != MetricStrategy::frontier) return plan::dilated(g, occupied, metric_.dilate);
+  if (metric_.strategy != explore::StrategyKind::frontier) return plan::dilated(g, occupied, metric_.dilate);
   const std::vector<std::uint8_t> near = common::cells_without_clearance(
       g.cells_x, g.cells_y, map_.cell_m(), metric_.body_radius_m, [&occupied](std::size_t n) { return occupied[n]; });
   std::vector<bool> grown(map_.size(), false);
@@ -208,10 +208,14 @@ MetricEnding MetricController::run() {
   update_pose();
   if (const Motion m = step(Action::start); m != Motion::ok) return finish(m);
   switch (metric_.strategy) {
-    case MetricStrategy::waypoints: return run_waypoints();
-    case MetricStrategy::wavefront: return run_wavefront();
-    case MetricStrategy::frontier: return run_frontier();
-    case MetricStrategy::wander: return run_wander();
+    case explore::StrategyKind::waypoints: return run_waypoints();
+    case explore::StrategyKind::wavefront: return run_wavefront();
+    case explore::StrategyKind::frontier: return run_frontier();
+    case explore::StrategyKind::wander: return run_wander();
+    case explore::StrategyKind::dfs:
+    case explore::StrategyKind::left_wall:
+    case explore::StrategyKind::right_wall:
+    case explore::StrategyKind::floodfill: break;  // no variant in metres: validate() refuses them
   }
   return MetricEnding::stopped;
 }

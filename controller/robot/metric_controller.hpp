@@ -44,6 +44,7 @@
 
 #include "explore/metric_frontier.hpp"
 #include "explore/metric_sweep.hpp"
+#include "explore/strategies.hpp"
 #include "mapping/grid_types.hpp"
 #include "robot/control_loop.hpp"
 #include "robot/drive.hpp"
@@ -57,13 +58,9 @@ class Robot;
 
 namespace robot {
 
-enum class MetricStrategy { waypoints, wavefront, frontier, wander };
-std::string_view to_string(MetricStrategy s);
-// "waypoints", "wavefront", "frontier" or "wander"; common::InputError naming --strategy.
-MetricStrategy parse_metric_strategy(std::string_view name);
-
 struct MetricOptions {
-  MetricStrategy strategy = MetricStrategy::frontier;
+  // One of the strategies with a variant in metres (explore/strategies.hpp's table).
+  explore::StrategyKind strategy = explore::StrategyKind::frontier;
   std::vector<mapping::Point> waypoints;
   int laps = 1;                         // waypoints: times the list is driven; 0: until time_limit_s
   std::optional<mapping::Point> goal;   // wavefront
@@ -78,7 +75,7 @@ struct MetricOptions {
   mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS
 };
 
-// Throws common::InputError: waypoints empty for waypoints, no goal for wavefront, no time
+// Throws common::InputError: a strategy without a variant in metres, waypoints empty for waypoints, no goal for wavefront, no time
 // limit for wander or for laps 0, laps below 0, dilate outside 0 ... 8, a number not finite or out of range.
 void validate(const MetricOptions &options);
 

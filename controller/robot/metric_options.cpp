@@ -16,25 +16,6 @@ constexpr int kMaxMetricDilate = 8;
 
 }  // namespace
 
-std::string_view to_string(MetricStrategy s) {
-  switch (s) {
-    case MetricStrategy::waypoints: return "waypoints";
-    case MetricStrategy::wavefront: return "wavefront";
-    case MetricStrategy::frontier: return "frontier";
-    case MetricStrategy::wander: return "wander";
-  }
-  return "?";
-}
-
-MetricStrategy parse_metric_strategy(std::string_view name) {
-  for (const MetricStrategy s : {MetricStrategy::waypoints, MetricStrategy::wavefront, MetricStrategy::frontier,
-                               MetricStrategy::wander}) {
-    if (to_string(s) == name) return s;
-  }
-  throw common::InputError(
-      fmt::format("--strategy must be waypoints, wavefront, frontier or wander in a room (got '{}')", name));
-}
-
 std::string_view to_string(MetricEnding e) {
   switch (e) {
     case MetricEnding::done: return "done";
@@ -53,11 +34,14 @@ std::string_view to_string(MetricEnding e) {
 }
 
 void validate(const MetricOptions &o) {
-  common::require_input(o.strategy != MetricStrategy::waypoints || !o.waypoints.empty(),
+  common::require_input(explore::explores_in(o.strategy, explore::StrategySpace::metres),
+                        fmt::format("--strategy must be {} in a room (got '{}')",
+                                    explore::strategy_names(explore::StrategySpace::metres), explore::to_string(o.strategy)));
+  common::require_input(o.strategy != explore::StrategyKind::waypoints || !o.waypoints.empty(),
                         "--strategy waypoints needs --waypoints X,Y;X,Y...");
-  common::require_input(o.strategy != MetricStrategy::wavefront || o.goal.has_value(),
+  common::require_input(o.strategy != explore::StrategyKind::wavefront || o.goal.has_value(),
                         "--strategy wavefront needs --goal X,Y (the world gives none)");
-  common::require_input(o.strategy != MetricStrategy::wander || o.time_limit_s > 0.0, "--strategy wander needs --time-limit S");
+  common::require_input(o.strategy != explore::StrategyKind::wander || o.time_limit_s > 0.0, "--strategy wander needs --time-limit S");
   common::require_input(o.laps >= 0, fmt::format("--laps must be a whole number >= 0 (got {})", o.laps));
   common::require_input(o.laps > 0 || o.time_limit_s > 0.0, "--laps 0 (round and round) needs --time-limit S");
   common::require_input(o.dilate >= 0 && o.dilate <= kMaxMetricDilate,

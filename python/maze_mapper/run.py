@@ -22,6 +22,7 @@ import random
 import re
 import runpy
 import sys
+import textwrap
 import time
 import traceback
 
@@ -33,6 +34,13 @@ EXIT_USAGE = 2
 _BASIC_STEP_MS = 32  # the simulator's basic time step
 
 
+class _HelpFormatter(argparse.HelpFormatter):
+    """Help lines wrapped at spaces only, so that a name such as ir-ring stays whole."""
+
+    def _split_lines(self, text, width):
+        return textwrap.wrap(" ".join(text.split()), width, break_on_hyphens=False)
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message):
         print(f"error: {message}", file=sys.stderr)
@@ -40,27 +48,30 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _parse(argv):
-    p = _Parser(prog="python3 -m maze_mapper.run",
+    p = _Parser(prog="python3 -m maze_mapper.run", formatter_class=_HelpFormatter,
                 description="Run a Webots Python controller against the embedded simulator.")
     p.add_argument("controller", help="the controller's .py file (it does `from controller import Robot`)")
     p.add_argument("--world", help="a maze or arena file (text map, mms num, XML, room); default: the course's "
                                      "empty floor, which the controller's supervisor fills")
-    p.add_argument("--robot", default="hambot", help="a built-in robot profile or a FILE.json (default hambot)")
-    p.add_argument("--seed", type=int, default=42,
-                   help="the sensors' noise seed and Python's random seed, which draws the course's random start (default 42)")
-    p.add_argument("--noise", type=float, help="lidar noise as a fraction of max range (0: exact sensors)")
-    p.add_argument("--cell-size", type=float, help="cell size in m of a text or num world (default 1)")
+    # The options a run of every kind takes read as `maze_mapper run --help` words them: their
+    # help lines come from the program's one table (maze_mapper._native.option_help), a leading
+    # "N: " the value's name, as the program's help shows it.
+    def shared(flag):
+        text = _native.option_help(flag)
+        named = re.match(r"([A-Z][A-Za-z0-9 .]*): (.*)", text, re.S)
+        metavar, words = (named.group(1), named.group(2)) if named else (None, text)
+        return {"metavar": metavar, "help": words.replace("%", "%%")}  # argparse formats help with %
+    p.add_argument("--robot", default="hambot", **shared("--robot"))
+    p.add_argument("--seed", type=int, default=42, **shared("--seed"))
+    p.add_argument("--noise", type=float, **shared("--noise"))
+    p.add_argument("--cell-size", type=float, **shared("--cell-size"))
     p.add_argument("--start", help="the world's start: pos:N (its N-th start position) or random (one of them, "
                                    "drawn with --seed), as `maze_mapper run --start`; on an arena too")
-    p.add_argument("--max-steps", type=int, default=100_000,
-                   help="basic time steps before Robot.step() returns -1 (default 100000)")
-    p.add_argument("--time-limit", type=float,
-                   help="simulated seconds before Robot.step() returns -1 (the earlier of this and --max-steps)")
+    p.add_argument("--max-steps", type=int, default=100_000, **shared("--max-steps"))
+    p.add_argument("--time-limit", type=float, **shared("--time-limit"))
     p.add_argument("--wall-limit", type=float,
                    help="wall-clock seconds after which Robot.step() returns -1 (a guard for a class's runs)")
-    p.add_argument("--out", metavar="DIR",
-                   help="write the run's files into DIR, as `maze_mapper run --out`: summary.json, trace.csv, "
-                        "truth.png, replay.html and map.png (a maze: of a kept grid, an arena: of a kept metric map)")
+    p.add_argument("-o", "--out", **shared("--out"))
     args, rest = p.parse_known_args(argv)
     if rest and rest[0] == "--":
         rest = rest[1:]

@@ -17,6 +17,7 @@
 #include "app/report/replay.hpp"
 #include "app/report/truth_picture.hpp"
 #include "app/run/evaluation.hpp"
+#include "app/run/option_fields.hpp"
 #include "app/run/report.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
@@ -332,6 +333,9 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
 }
 
 void bind_run_files(py::module_ &m) {
+  m.def("option_help", [](const std::string &flag) { return app::option_help(flag); }, py::arg("flag"),
+        "The help line of a run's option (\"--robot\", \"--seed\", ...): the same words as maze_mapper run, room and "
+        "mms; the runner's --help shows them.");
   m.def("format_entries", &format_entries, py::arg("entries"),
         "The summary block of report entries (key, printed value or None, JSON text), as every run prints it.");
   py::class_<RunFiles>(m, "RunFiles",

@@ -4,8 +4,10 @@ with node strings, landmarks as solids the lidar and the camera see, Webots' API
 import json
 import math
 import os
+import re
 
-from conftest import png_pixels, run_controller, summary_of
+from conftest import png_pixels, program, run_controller, summary_of
+from maze_mapper import _native
 
 COURSE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "course_shape")
 CONTROLLERS = os.path.join(COURSE, "WebotsSim", "controllers")
@@ -346,3 +348,18 @@ def test_out_on_the_empty_floor_with_a_kept_map_writes_its_map_png(controller_fi
     data = replay_data_of((out / "replay.html").read_text())
     assert (data["width"], data["height"], data["cell_size_m"]) == (34, 34, 0.5)
     assert any(len(c) > 0 for c in data["frames"]["changes"])
+
+
+
+def test_the_runner_help_words_each_shared_option_as_run_room_and_mms_do():
+    def words(text):
+        return " ".join(text.split())
+
+    pages = {"runner": run_controller("--help")[1]}
+    for command in ("run", "room", "mms"):
+        pages[command] = program(command, "--help")[1]
+    for flag in ("--robot", "--seed", "--noise", "--max-steps", "--time-limit", "--out"):
+        line = _native.option_help(flag)
+        help_words = words(line.split(": ", 1)[1] if re.match(r"[A-Z][A-Za-z0-9 .]*: ", line) else line)
+        for name, page in pages.items():
+            assert help_words in words(page), (name, flag, help_words)
