@@ -85,7 +85,7 @@ BENCHMARK(BM_Scan360_Arena_BruteForce)
 
 // A control step through the webots:: API in the 40-obstacle arena: drive, step, read.
 void BM_StepAndRead_Arena(benchmark::State &state) {
-  webots::embedded::Simulation sim(arena(40, true), maze::sim::default_profile(), {});
+  webots::embedded::Simulation sim(maze::world_of(arena(40, true)), maze::sim::default_profile(), {});
   bench::step_and_read(state, sim.robot());
 }
 BENCHMARK(BM_StepAndRead_Arena)->Unit(benchmark::kMicrosecond);

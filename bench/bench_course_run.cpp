@@ -102,7 +102,7 @@ bool stop_requested() { return g_stop; }
 
 // One run; with `record`, the images the controller read. Returns the run's CPU seconds.
 double run_once(const Setup &s, Recording *record) {
-  webots::embedded::Simulation sim(s.truth, s.profile, s.options.simulation);
+  webots::embedded::Simulation sim(maze::world_of(s.truth), s.profile, s.options.simulation);
   robot::CellController controller(sim.robot(), s.controller);
   webots::Lidar *lidar = sim.robot().getLidar(s.profile.lidars.front().name);
   std::int64_t beams_seen = 0;
@@ -136,7 +136,7 @@ double run_once(const Setup &s, Recording *record) {
 // The recorded images computed again, as Simulation::lidar_range_image computes a fixed
 // lidar's (the profile's lidar is the simulation's device 0). Returns the CPU seconds.
 double replay_lidar(const Setup &s, const Recording &r, std::uint64_t *hash) {
-  const webots::embedded::Simulation sim(s.truth, s.profile, s.options.simulation);
+  const webots::embedded::Simulation sim(maze::world_of(s.truth), s.profile, s.options.simulation);
   const maze::sim::LidarSpec &spec = s.profile.lidars.front();
   const maze::sim::LidarModel model(spec);
   const double noise = s.options.simulation.noise.value_or(spec.noise);

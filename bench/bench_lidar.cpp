@@ -107,7 +107,7 @@ BENCHMARK(BM_Scan360_Open)
 // A control step through the webots:: API: drive, step 32 ms, read the lidar.
 void BM_StepAndRead_Carved(benchmark::State &state) {
   const maze::Maze m = carved(static_cast<int>(state.range(0)), 42);
-  webots::embedded::Simulation sim(m, maze::sim::default_profile(), {});
+  webots::embedded::Simulation sim(maze::world_of(m), maze::sim::default_profile(), {});
   bench::step_and_read(state, sim.robot());
 }
 BENCHMARK(BM_StepAndRead_Carved)->Arg(16)->Arg(1024)->Unit(benchmark::kMicrosecond);
@@ -115,7 +115,7 @@ BENCHMARK(BM_StepAndRead_Carved)->Arg(16)->Arg(1024)->Unit(benchmark::kMicroseco
 // A step alone (sensors are lazy: no scan is computed).
 void BM_StepOnly_Carved(benchmark::State &state) {
   const maze::Maze m = carved(static_cast<int>(state.range(0)), 42);
-  webots::embedded::Simulation sim(m, maze::sim::default_profile(), {});
+  webots::embedded::Simulation sim(maze::world_of(m), maze::sim::default_profile(), {});
   webots::Robot &robot = sim.robot();
   bench::start_driving(robot);
   for (auto _ : state) benchmark::DoNotOptimize(robot.step(bench::kStep_ms));

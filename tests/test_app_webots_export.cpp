@@ -142,7 +142,7 @@ TEST_CASE("webots controller: on the embedded simulator it prints run's maps and
   const std::vector<std::string> args = controller_args(app::webots_world(m, "tiny", {}));
 
   const maze::sim::RobotProfile &hambot = maze::sim::default_profile();
-  webots::embedded::Simulation simulation(m, hambot, maze::sim::SimulationOptions{});
+  webots::embedded::Simulation simulation(maze::world_of(m), hambot, maze::sim::SimulationOptions{});
   const webots::embedded::CurrentSimulation current(simulation);
   std::ostringstream out, err;
   CHECK(robot::console_main(args, out, err) == 0);
@@ -162,7 +162,7 @@ TEST_CASE("webots controller: on the embedded simulator it prints run's maps and
 
 TEST_CASE("webots controller: a bad argument or a missing device is one line, exit 2") {
   const maze::Maze m = maze::read_text_map("o---o\n| S |\no---o\n", "one");
-  webots::embedded::Simulation simulation(m, maze::sim::default_profile(), maze::sim::SimulationOptions{});
+  webots::embedded::Simulation simulation(maze::world_of(m), maze::sim::default_profile(), maze::sim::SimulationOptions{});
   const webots::embedded::CurrentSimulation current(simulation);
   std::ostringstream out, err;
   CHECK(robot::console_main(std::vector<std::string>{"--size=1x1", "--walls=none"}, out, err) == 2);

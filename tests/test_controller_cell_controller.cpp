@@ -45,7 +45,7 @@ RescanRun run_with_dropout(double dropout, int max_rescans) {
   maze::sim::SimulationOptions sim_options;
   sim_options.seed = 5;
   sim_options.dropout = dropout;
-  webots::embedded::Simulation sim(maze::Maze(4, 4), maze::sim::default_profile(), sim_options);
+  webots::embedded::Simulation sim(maze::world_of(maze::Maze(4, 4)), maze::sim::default_profile(), sim_options);
   robot::ControllerOptions o = lab4x4();
   o.max_rescans = max_rescans;
   o.motion.max_steps = 20'000;
@@ -101,7 +101,7 @@ maze::Maze pocketed_corridor() {
 // the corridor's end is beyond max range, a view of 4-5 beams. The pockets of the odd rows
 // are closed cells (unreachable).
 robot::RunResult run_corridor(const sensing::ScanFilterOptions &filter) {
-  webots::embedded::Simulation sim(pocketed_corridor(), maze::sim::find_profile("hambot-12m"), {});
+  webots::embedded::Simulation sim(maze::world_of(pocketed_corridor()), maze::sim::find_profile("hambot-12m"), {});
   robot::ControllerOptions o;
   o.start = {1, 0};
   o.geometry.width_cells = 3;
@@ -139,14 +139,14 @@ TEST_CASE("ControllerOptions: the defaults drive the hambot through a maze, and 
   // Nothing set but the maze: the default wheels, axle and device names are the hambot's,
   // so it turns and drives cell by cell (a wrong wheel radius or axle would overshoot or
   // stall) and maps the whole open 4 x 4 maze.
-  webots::embedded::Simulation hambot(maze::Maze(4, 4), maze::sim::default_profile(), maze::sim::SimulationOptions{});
+  webots::embedded::Simulation hambot(maze::world_of(maze::Maze(4, 4)), maze::sim::default_profile(), maze::sim::SimulationOptions{});
   robot::CellController controller(hambot.robot(), lab4x4());
   const robot::RunResult r = controller.run(robot::RunHooks{});
   CHECK(r.reason == robot::EndReason::done);
   CHECK(r.visited == 16);
   CHECK(r.moves >= 15);
   // A robot whose devices are named otherwise is refused, naming the device.
-  webots::embedded::Simulation other(maze::Maze(4, 4), maze::sim::find_profile("bumper-depth"),
+  webots::embedded::Simulation other(maze::world_of(maze::Maze(4, 4)), maze::sim::find_profile("bumper-depth"),
                                      maze::sim::SimulationOptions{});
   CHECK_THROWS_WITH_AS(robot::CellController(other.robot(), lab4x4()), "the robot has no device \"lidar\"",
                        common::InputError);

@@ -15,7 +15,7 @@ namespace {
 bool stop_now() { return true; }
 
 struct OpenMaze {
-  webots::embedded::Simulation sim{maze::Maze(4, 4), maze::sim::default_profile(), maze::sim::SimulationOptions{}};
+  webots::embedded::Simulation sim{maze::world_of(maze::Maze(4, 4)), maze::sim::default_profile(), maze::sim::SimulationOptions{}};
 };
 
 }  // namespace

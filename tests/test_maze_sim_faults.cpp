@@ -32,7 +32,7 @@ maze::sim::SimulationOptions middle_of_3x3() {
 
 // hambot-2025's rotating lidar after a whole revolution at rest (3 steps of 32 ms at 12 Hz).
 std::vector<float> scan_once(const maze::sim::SimulationOptions &o) {
-  Simulation sim(maze::Maze(3, 3), maze::sim::find_profile("hambot-2025"), o);
+  Simulation sim(maze::world_of(maze::Maze(3, 3)), maze::sim::find_profile("hambot-2025"), o);
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   for (int i = 0; i < 3; ++i) REQUIRE(sim.robot().step(32) == 0);
@@ -42,7 +42,7 @@ std::vector<float> scan_once(const maze::sim::SimulationOptions &o) {
 
 std::string error_of(const maze::sim::SimulationOptions &o) {
   try {
-    Simulation sim(maze::Maze(3, 3), maze::sim::default_profile(), o);
+    Simulation sim(maze::world_of(maze::Maze(3, 3)), maze::sim::default_profile(), o);
   } catch (const common::InputError &e) {
     return e.diagnostic();
   }
@@ -109,7 +109,7 @@ TEST_CASE("Faults: turning faults on leaves the noise of the other beams as it w
 TEST_CASE("Faults: a stuck bumper reads pressed, the others do not") {
   maze::sim::SimulationOptions o = middle_of_3x3();
   o.stuck_bumper = "bumper left";
-  Simulation sim(maze::Maze(3, 3), maze::sim::find_profile("bumper-depth"), o);
+  Simulation sim(maze::world_of(maze::Maze(3, 3)), maze::sim::find_profile("bumper-depth"), o);
   webots::TouchSensor *left = sim.robot().getTouchSensor("bumper left");
   webots::TouchSensor *front = sim.robot().getTouchSensor("bumper front");
   left->enable(32);
@@ -124,7 +124,7 @@ TEST_CASE("Faults: wheel slip moves the robot less than the encoders count") {
   maze::sim::SimulationOptions o;
   o.noise = 0.0;
   o.wheel_slip = 0.25;
-  Simulation sim(corridor, maze::sim::default_profile(), o);
+  Simulation sim(maze::world_of(corridor), maze::sim::default_profile(), o);
   webots::Robot &robot = sim.robot();
   webots::PositionSensor *encoder = robot.getPositionSensor("left wheel encoder");
   encoder->enable(32);

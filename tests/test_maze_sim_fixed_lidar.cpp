@@ -114,11 +114,11 @@ TEST_CASE("fixed lidar: the default robot's scan of an empty 4 x 4 maze, by hand
 
 TEST_CASE("fixed lidar: a fixed lidar reports no head frequency, so the controller does not wait a turn") {
   const maze::Maze m(4, 4);
-  webots::embedded::Simulation sim(m, maze::sim::default_profile(), {});
+  webots::embedded::Simulation sim(maze::world_of(m), maze::sim::default_profile(), {});
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   REQUIRE(lidar != nullptr);
   CHECK(lidar->getFrequency() == 0.0);
-  webots::embedded::Simulation old(m, maze::sim::find_profile("hambot-2025"), {});
+  webots::embedded::Simulation old(maze::world_of(m), maze::sim::find_profile("hambot-2025"), {});
   CHECK(old.robot().getLidar("lidar")->getFrequency() == 12.0);
 }
 

@@ -57,7 +57,7 @@ TEST_CASE("format_scan: the noise is the simulation's first reading with the sam
   maze::sim::SimulationOptions o;
   o.seed = 99;
   o.start = request.pose;
-  webots::embedded::Simulation sim(m, fixed, o);
+  webots::embedded::Simulation sim(maze::world_of(m), fixed, o);
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   const float *ranges = lidar->getRangeImage();

@@ -67,7 +67,7 @@ void drive(webots::Robot &robot, double left_rad_s, double right_rad_s) {
 }  // namespace
 
 TEST_CASE("Simulation: devices by name and kind, as Webots' Robot::get*") {
-  Simulation sim(maze::Maze(3, 3), hambot(), exact());
+  Simulation sim(maze::world_of(maze::Maze(3, 3)), hambot(), exact());
   webots::Robot &robot = sim.robot();
   CHECK(robot.getBasicTimeStep() == 32.0);
   CHECK(robot.getTime() == 0.0);
@@ -84,7 +84,7 @@ TEST_CASE("Simulation: devices by name and kind, as Webots' Robot::get*") {
 
 TEST_CASE("Robot(): attaches to the current simulation, and fails without one") {
   CHECK_THROWS_AS(webots::Robot(), std::logic_error);
-  Simulation sim(maze::Maze(2, 2), hambot(), exact());
+  Simulation sim(maze::world_of(maze::Maze(2, 2)), hambot(), exact());
   webots::embedded::CurrentSimulation current(sim);
   webots::Robot robot;
   CHECK(robot.step(64) == 0);
@@ -93,7 +93,7 @@ TEST_CASE("Robot(): attaches to the current simulation, and fails without one") 
 }
 
 TEST_CASE("Robot::step: no time passes for a duration of 0 or less; a partial step counts whole") {
-  Simulation sim(maze::Maze(2, 2), hambot(), exact());
+  Simulation sim(maze::world_of(maze::Maze(2, 2)), hambot(), exact());
   webots::Robot &robot = sim.robot();
   CHECK(robot.step(0) == 0);
   CHECK(robot.step(-1) == 0);
@@ -106,14 +106,14 @@ TEST_CASE("Robot::step: no time passes for a duration of 0 or less; a partial st
 TEST_CASE("Simulation: a time limit past the millisecond clock is none") {
   maze::sim::SimulationOptions o = exact();
   o.time_limit_s = 1e300;
-  Simulation sim(maze::Maze(2, 2), hambot(), o);
+  Simulation sim(maze::world_of(maze::Maze(2, 2)), hambot(), o);
   CHECK(sim.robot().step(32) == 0);
   CHECK(sim.robot().step(32) == 0);
 }
 
 TEST_CASE("Lidar: the range image at a known pose, in the conventions' beam order") {
   // 3 x 3 open maze, robot in the middle facing north.
-  Simulation sim(maze::Maze(3, 3), hambot(), at(1.5, 1.5, kPi / 2));
+  Simulation sim(maze::world_of(maze::Maze(3, 3)), hambot(), at(1.5, 1.5, kPi / 2));
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   CHECK(lidar->getRangeImage() == nullptr);  // disabled
   lidar->enable(32);
@@ -143,7 +143,7 @@ TEST_CASE("Lidar: the range image at a known pose, in the conventions' beam orde
 
 TEST_CASE("Lidar: +infinity outside [min range, max range]") {
   maze::Maze big(20, 1);
-  Simulation sim(big, hambot(), at(0.5, 0.5, 0.0));
+  Simulation sim(maze::world_of(big), hambot(), at(0.5, 0.5, 0.0));
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   const float *ranges = lidar->getRangeImage();
@@ -156,8 +156,8 @@ TEST_CASE("Lidar: noise has mean 0 and sigma noise x max range (10^5 samples)") 
   maze::sim::SimulationOptions o;  // hambot's own noise, 0.000833
   o.start = maze::sim::Pose{1.5, 1.5, kPi / 2};
   o.seed = 11;
-  Simulation noisy(maze::Maze(3, 3), hambot(), o);
-  Simulation truth(maze::Maze(3, 3), hambot(), at(1.5, 1.5, kPi / 2));
+  Simulation noisy(maze::world_of(maze::Maze(3, 3)), hambot(), o);
+  Simulation truth(maze::world_of(maze::Maze(3, 3)), hambot(), at(1.5, 1.5, kPi / 2));
   noisy.robot().getLidar("lidar")->enable(32);
   truth.robot().getLidar("lidar")->enable(32);
   const float *exact_ranges = truth.robot().getLidar("lidar")->getRangeImage();
@@ -188,7 +188,7 @@ TEST_CASE("Lidar: the same seed gives the same bytes, however often it is read")
   const auto run = [](std::uint64_t seed, bool read_every_step) {
     maze::sim::SimulationOptions o;
     o.seed = seed;
-    Simulation sim(maze::Maze(4, 4), hambot(), o);
+    Simulation sim(maze::world_of(maze::Maze(4, 4)), hambot(), o);
     webots::Lidar *lidar = sim.robot().getLidar("lidar");
     lidar->enable(32);
     for (int i = 0; i < 5; ++i) {
@@ -211,7 +211,7 @@ TEST_CASE("Lidar: the same seed gives the same bytes, however often it is read")
 TEST_CASE("Driving: 1 m straight at a set wheel speed ends on the analytic pose") {
   maze::Maze corridor(4, 1);
   corridor.set_start({0, 0}, maze::Side::east);
-  Simulation sim(corridor, hambot(), exact());
+  Simulation sim(maze::world_of(corridor), hambot(), exact());
   webots::Robot &robot = sim.robot();
   webots::PositionSensor *left = robot.getPositionSensor("left wheel encoder");
   webots::GPS *gps = robot.getGPS("gps");
@@ -231,7 +231,7 @@ TEST_CASE("Driving: 1 m straight at a set wheel speed ends on the analytic pose"
 }
 
 TEST_CASE("Driving: a commanded turn matches the IMU and the encoders") {
-  Simulation sim(maze::Maze(3, 3), hambot(), at(1.5, 1.5, kPi / 2));
+  Simulation sim(maze::world_of(maze::Maze(3, 3)), hambot(), at(1.5, 1.5, kPi / 2));
   webots::Robot &robot = sim.robot();
   webots::InertialUnit *imu = robot.getInertialUnit("imu");
   imu->enable(32);
@@ -252,7 +252,7 @@ TEST_CASE("Driving: a commanded turn matches the IMU and the encoders") {
 TEST_CASE("Driving: position control turns each wheel to its target") {
   maze::Maze corridor(4, 1);
   corridor.set_start({0, 0}, maze::Side::east);
-  Simulation sim(corridor, hambot(), exact());
+  Simulation sim(maze::world_of(corridor), hambot(), exact());
   webots::Robot &robot = sim.robot();
   robot.getPositionSensor("right wheel encoder")->enable(32);
   robot.getMotor("left motor")->setPosition(2 * kPi);
@@ -263,7 +263,7 @@ TEST_CASE("Driving: position control turns each wheel to its target") {
 }
 
 TEST_CASE("Driving: the velocity is clamped to the maximum") {
-  Simulation sim(maze::Maze(2, 2), hambot(), exact());
+  Simulation sim(maze::world_of(maze::Maze(2, 2)), hambot(), exact());
   webots::Motor *m = sim.robot().getMotor("left motor");
   m->setVelocity(100.0);
   CHECK(m->getVelocity() == 20.0);
@@ -272,7 +272,7 @@ TEST_CASE("Driving: the velocity is clamped to the maximum") {
 }
 
 TEST_CASE("Driving into a wall stops at the wall and presses the bumpers touching it") {
-  Simulation sim(maze::Maze(1, 1), hambot(), at(0.5, 0.5, kPi / 2));
+  Simulation sim(maze::world_of(maze::Maze(1, 1)), hambot(), at(0.5, 0.5, kPi / 2));
   webots::Robot &robot = sim.robot();
   webots::TouchSensor *front = robot.getTouchSensor("bumper front");
   webots::TouchSensor *left = robot.getTouchSensor("bumper left");
@@ -295,7 +295,7 @@ TEST_CASE("Driving into a wall stops at the wall and presses the bumpers touchin
 }
 
 TEST_CASE("Driving diagonally into a corner presses the two side bumpers") {
-  Simulation sim(maze::Maze(1, 1), hambot(), at(0.5, 0.5, kPi / 4));
+  Simulation sim(maze::world_of(maze::Maze(1, 1)), hambot(), at(0.5, 0.5, kPi / 4));
   webots::Robot &robot = sim.robot();
   for (const char *name : {"bumper front", "bumper left", "bumper right"}) {
     robot.getTouchSensor(name)->enable(32);
@@ -311,7 +311,7 @@ TEST_CASE("Driving diagonally into a corner presses the two side bumpers") {
 
 TEST_CASE("Driving along a wall at an angle slides along it") {
   maze::Maze corridor(4, 1);
-  Simulation sim(corridor, hambot(), at(0.5, 0.5, 0.3));
+  Simulation sim(maze::world_of(corridor), hambot(), at(0.5, 0.5, 0.3));
   drive(sim.robot(), 10.0, 10.0);
   for (int i = 0; i < 100; ++i) sim.robot().step(32);  // 1.44 m, the wall after 1.36 m
   CHECK(sim.pose().y_m == doctest::Approx(1.0 - kHalfWall_m - 0.09).epsilon(1e-9));
@@ -321,34 +321,34 @@ TEST_CASE("Driving along a wall at an angle slides along it") {
 TEST_CASE("Robot::step returns -1 at the time limit, and after a stop request") {
   maze::sim::SimulationOptions o = exact();
   o.time_limit_s = 0.32;
-  Simulation sim(maze::Maze(2, 2), hambot(), o);
+  Simulation sim(maze::world_of(maze::Maze(2, 2)), hambot(), o);
   for (int i = 0; i < 9; ++i) CHECK(sim.robot().step(32) == 0);
   CHECK(sim.robot().step(32) == -1);
   CHECK(sim.robot().step(32) == -1);
   CHECK(sim.time_ms() == 320);
 
-  Simulation other(maze::Maze(2, 2), hambot(), exact());
+  Simulation other(maze::world_of(maze::Maze(2, 2)), hambot(), exact());
   CHECK(other.robot().step(32) == 0);
   other.request_stop();
   CHECK(other.robot().step(32) == -1);
 }
 
 TEST_CASE("Simulation: a start pose outside the maze, in a wall or too close is an error") {
-  CHECK_THROWS_WITH_AS(Simulation(maze::Maze(2, 2), hambot(), at(3.0, 0.5, 0.0)),
+  CHECK_THROWS_WITH_AS(Simulation(maze::world_of(maze::Maze(2, 2)), hambot(), at(3.0, 0.5, 0.0)),
                        "pose (3, 0.5) is outside the maze", common::InputError);
-  CHECK_THROWS_WITH_AS(Simulation(maze::Maze(2, 2), hambot(), at(0.003, 0.5, 0.0)),
+  CHECK_THROWS_WITH_AS(Simulation(maze::world_of(maze::Maze(2, 2)), hambot(), at(0.003, 0.5, 0.0)),
                        "pose (0.003, 0.5) is inside a wall", common::InputError);
-  CHECK_THROWS_WITH_AS(Simulation(maze::Maze(2, 2), hambot(), at(0.05, 0.5, 0.0)),
+  CHECK_THROWS_WITH_AS(Simulation(maze::world_of(maze::Maze(2, 2)), hambot(), at(0.05, 0.5, 0.0)),
                        "the robot's body (radius 0.09 m) overlaps a wall at (0.05, 0.5)",
                        common::InputError);
   maze::sim::SimulationOptions bad = exact();
   bad.noise = -1.0;
-  CHECK_THROWS_WITH_AS(Simulation(maze::Maze(2, 2), hambot(), bad),
+  CHECK_THROWS_WITH_AS(Simulation(maze::world_of(maze::Maze(2, 2)), hambot(), bad),
                        "--noise must be a finite number >= 0 (got -1)", common::InputError);
 }
 
 TEST_CASE("DistanceSensor: the IR ring averages its three rays like Webots") {
-  Simulation sim(maze::Maze(1, 1), maze::sim::find_profile("ir-ring"), at(0.5, 0.5, kPi / 2));
+  Simulation sim(maze::world_of(maze::Maze(1, 1)), maze::sim::find_profile("ir-ring"), at(0.5, 0.5, kPi / 2));
   webots::DistanceSensor *front = sim.robot().getDistanceSensor("ir0");
   REQUIRE(front != nullptr);
   CHECK(std::isnan(front->getValue()));  // disabled
@@ -364,7 +364,7 @@ TEST_CASE("DistanceSensor: the IR ring averages its three rays like Webots") {
 
 TEST_CASE("DistanceSensor: beyond the table's last distance the value is the last value") {
   maze::Maze corridor(5, 1);
-  Simulation sim(corridor, maze::sim::find_profile("ir-ring"), at(0.5, 0.5, 0.0));
+  Simulation sim(maze::world_of(corridor), maze::sim::find_profile("ir-ring"), at(0.5, 0.5, 0.0));
   webots::DistanceSensor *front = sim.robot().getDistanceSensor("ir0");
   front->enable(32);
   CHECK(front->getValue() == doctest::Approx(1.5));
@@ -373,10 +373,10 @@ TEST_CASE("DistanceSensor: beyond the table's last distance the value is the las
 TEST_CASE("DistanceSensor: sonar noise is the table's fraction of the value") {
   maze::sim::SimulationOptions o;
   o.start = maze::sim::Pose{0.5, 0.5, kPi / 2};
-  Simulation sim(maze::Maze(1, 1), maze::sim::find_profile("sonar-ring"), o);
+  Simulation sim(maze::world_of(maze::Maze(1, 1)), maze::sim::find_profile("sonar-ring"), o);
   webots::DistanceSensor *so0 = sim.robot().getDistanceSensor("so0");
   so0->enable(32);
-  Simulation exact_sim(maze::Maze(1, 1), maze::sim::find_profile("sonar-ring"), at(0.5, 0.5, kPi / 2));
+  Simulation exact_sim(maze::world_of(maze::Maze(1, 1)), maze::sim::find_profile("sonar-ring"), at(0.5, 0.5, kPi / 2));
   exact_sim.robot().getDistanceSensor("so0")->enable(32);
   const double truth = exact_sim.robot().getDistanceSensor("so0")->getValue();
   double sum = 0.0, sum_sq = 0.0;
@@ -393,7 +393,7 @@ TEST_CASE("DistanceSensor: sonar noise is the table's fraction of the value") {
 }
 
 TEST_CASE("DistanceSensor: the depth fan of the bumper-depth robot") {
-  Simulation sim(maze::Maze(1, 1), maze::sim::find_profile("bumper-depth"), at(0.5, 0.5, kPi / 2));
+  Simulation sim(maze::world_of(maze::Maze(1, 1)), maze::sim::find_profile("bumper-depth"), at(0.5, 0.5, kPi / 2));
   webots::Robot &robot = sim.robot();
   for (int i = 0; i < 9; ++i) {
     webots::DistanceSensor *ray = robot.getDistanceSensor("depth" + std::to_string(i));
@@ -442,7 +442,7 @@ std::vector<float> image(webots::Lidar *lidar) {
 }  // namespace
 
 TEST_CASE("Rotating lidar: a slice per step, from ahead clockwise, 0 where not yet swept") {
-  Simulation sim(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, kPi / 2));
+  Simulation sim(maze::world_of(maze::Maze(3, 3)), rotating_robot(12.0), at(1.5, 1.5, kPi / 2));
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   CHECK(lidar->getFrequency() == 12.0);
@@ -457,8 +457,8 @@ TEST_CASE("Rotating lidar: a slice per step, from ahead clockwise, 0 where not y
 }
 
 TEST_CASE("Rotating lidar: after a revolution at rest, every beam is the range from the rest pose") {
-  Simulation fixed(maze::Maze(3, 3), rotating_robot(0.0), at(1.5, 1.5, 0.3));
-  Simulation rotating(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, 0.3));
+  Simulation fixed(maze::world_of(maze::Maze(3, 3)), rotating_robot(0.0), at(1.5, 1.5, 0.3));
+  Simulation rotating(maze::world_of(maze::Maze(3, 3)), rotating_robot(12.0), at(1.5, 1.5, 0.3));
   webots::Lidar *lidar = rotating.robot().getLidar("lidar");
   lidar->enable(32);
   CHECK(fixed.robot().getLidar("lidar")->getFrequency() == 0.0);
@@ -473,7 +473,7 @@ TEST_CASE("Rotating lidar: after a revolution at rest, every beam is the range f
 }
 
 TEST_CASE("Rotating lidar: mid-turn, each beam is as seen from the pose of the step that swept it") {
-  Simulation rotating(maze::Maze(3, 3), rotating_robot(12.0), at(1.5, 1.5, 0.0));
+  Simulation rotating(maze::world_of(maze::Maze(3, 3)), rotating_robot(12.0), at(1.5, 1.5, 0.0));
   webots::Lidar *lidar = rotating.robot().getLidar("lidar");
   webots::InertialUnit *imu = rotating.robot().getInertialUnit("imu");
   webots::GPS *gps = rotating.robot().getGPS("gps");
@@ -504,8 +504,8 @@ TEST_CASE("Rotating lidar: lazy and deterministic, however often it is read") {
   maze::sim::SimulationOptions o = at(1.5, 1.5, 1.0);
   o.noise.reset();  // hambot's noise
   o.dropout = 0.05;
-  Simulation often(maze::Maze(3, 3), rotating_robot(12.0), o);
-  Simulation once(maze::Maze(3, 3), rotating_robot(12.0), o);
+  Simulation often(maze::world_of(maze::Maze(3, 3)), rotating_robot(12.0), o);
+  Simulation once(maze::world_of(maze::Maze(3, 3)), rotating_robot(12.0), o);
   often.robot().getLidar("lidar")->enable(32);
   once.robot().getLidar("lidar")->enable(32);
   for (int i = 0; i < 5; ++i) {

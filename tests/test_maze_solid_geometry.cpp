@@ -183,7 +183,7 @@ TEST_CASE("arena geometry: the bucket walk gives the brute force's answers on ra
 TEST_CASE("Simulation in an arena: lidar, GPS, IMU, bumpers, distance sensors and collisions") {
   const maze::Arena arena = two_obstacles();
   // Facing east at (3, 5): the box's face 1 m ahead, the boundary 3 m behind.
-  webots::embedded::Simulation sim(arena, test_robot(), at(3, 5, 0));
+  webots::embedded::Simulation sim(maze::world_of(arena), test_robot(), at(3, 5, 0));
   CHECK(sim.on_solid_geometry());
   webots::Robot &robot = sim.robot();
   webots::Lidar *lidar = robot.getLidar("lidar");
@@ -225,9 +225,9 @@ TEST_CASE("Simulation in an arena: lidar, GPS, IMU, bumpers, distance sensors an
   CHECK(encoder->getValue() > 6.0);  // the wheels turned on against the box (they slip)
 
   // The start is checked: inside an obstacle, or the body overlapping one.
-  CHECK_THROWS_WITH_AS(webots::embedded::Simulation(arena, test_robot(), at(5, 5, 0)),
+  CHECK_THROWS_WITH_AS(webots::embedded::Simulation(maze::world_of(arena), test_robot(), at(5, 5, 0)),
                        "pose (5, 5) is inside an obstacle", common::InputError);
-  CHECK_THROWS_WITH_AS(webots::embedded::Simulation(arena, test_robot(), at(3.95, 5, 0)),
+  CHECK_THROWS_WITH_AS(webots::embedded::Simulation(maze::world_of(arena), test_robot(), at(3.95, 5, 0)),
                        doctest::Contains("overlaps an obstacle at (3.95, 5)"), common::InputError);
 }
 
@@ -236,7 +236,7 @@ TEST_CASE("Simulation in an arena: distance sensors read what sensor_distance_m 
   for (const char *name : {"ir-ring", "sonar-ring"}) {
     CAPTURE(name);
     const maze::sim::RobotProfile &profile = maze::sim::find_profile(name);
-    webots::embedded::Simulation sim(arena, profile, at(3.5, 5, 0));
+    webots::embedded::Simulation sim(maze::world_of(arena), profile, at(3.5, 5, 0));
     const maze::sim::SolidGeometry solids(arena);
     for (const maze::sim::DistanceSensorSpec &spec : profile.distance_sensors) {
       webots::DistanceSensor *d = sim.robot().getDistanceSensor(spec.name);
@@ -257,7 +257,7 @@ TEST_CASE("Simulation in an arena: distance sensors read what sensor_distance_m 
 TEST_CASE("Simulation in an arena: a rotating lidar sweeps the arena's solids") {
   // hambot-2025's rotating 3 m lidar at 12 Hz: after a revolution at rest every beam is swept.
   const maze::sim::RobotProfile &profile = maze::sim::find_profile("hambot-2025");
-  webots::embedded::Simulation sim(two_obstacles(), profile, at(3, 5, 0));
+  webots::embedded::Simulation sim(maze::world_of(two_obstacles()), profile, at(3, 5, 0));
   webots::Lidar *lidar = sim.robot().getLidar(profile.lidars.front().name);
   REQUIRE(lidar != nullptr);
   lidar->enable(32);
@@ -311,7 +311,7 @@ TEST_CASE("arena geometry: a disc meets rays on its circle, holds bodies out and
 
 TEST_CASE("Simulation in an arena: a supervisor adds solids the sensors see at once, teleports and resets") {
   const maze::Arena arena = maze::read_room("boundary 0 10 0 10\nstart 1 5 0\n", "f");
-  webots::embedded::Simulation sim(arena, test_robot(), at(1, 5, 0));
+  webots::embedded::Simulation sim(maze::world_of(arena), test_robot(), at(1, 5, 0));
   webots::Robot &robot = sim.robot();
   webots::Lidar *lidar = robot.getLidar("lidar");
   lidar->enable(32);
@@ -339,7 +339,7 @@ TEST_CASE("Simulation: a supervisor's reset puts the time back at 0 and the time
   const maze::Arena arena = maze::read_room("boundary 0 10 0 10\nstart 1 5 0\n", "f");
   maze::sim::SimulationOptions options = at(1, 5, 0);
   options.time_limit_s = 0.32;  // ten basic steps
-  webots::embedded::Simulation sim(arena, test_robot(), options);
+  webots::embedded::Simulation sim(maze::world_of(arena), test_robot(), options);
   webots::Robot &robot = sim.robot();
   webots::PositionSensor *encoder = robot.getPositionSensor(test_robot().left_encoder);
   encoder->enable(32);
@@ -360,7 +360,7 @@ TEST_CASE("Simulation: a supervisor's reset puts the time back at 0 and the time
 
 TEST_CASE("Simulation in a maze: a solid added is seen at once, and gone after a reset") {
   maze::Maze m(2, 2);  // 1 m cells, no inner wall: east of the start's centre the outer wall at 2 m
-  webots::embedded::Simulation sim(m, test_robot(), {});
+  webots::embedded::Simulation sim(maze::world_of(m), test_robot(), {});
   const double to_wall_m = 1.5 - maze::kDefaultWallThickness_m / 2;
   CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(to_wall_m));
   CHECK_FALSE(sim.on_solid_geometry());
@@ -376,6 +376,6 @@ TEST_CASE("Simulation in a maze: a solid added is seen at once, and gone after a
 TEST_CASE("Simulation in a maze: its landmarks are solid cylinders") {
   maze::Maze m(2, 2);
   m.set_landmarks({maze::Landmark{1.5, 0.5, 0.5, 1.0, 0.0, 0.0}});
-  webots::embedded::Simulation sim(m, test_robot(), {});
+  webots::embedded::Simulation sim(maze::world_of(m), test_robot(), {});
   CHECK(sim.cast(0.5, 0.5, 0.0, 10.0) == doctest::Approx(1.0 - maze::kLandmarkRadius_m));
 }

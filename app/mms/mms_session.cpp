@@ -267,7 +267,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   require_sensors(options, profile);
   mapping::validate(controller_opts.geometry, mapping::kDefaultMaxGridBytes);
   robot::validate(controller_opts);
-  webots::embedded::Simulation simulation(truth, profile, options.simulation);
+  webots::embedded::Simulation simulation(maze::world_of(truth), profile, options.simulation);
   const mapping::SensorModel model(options.sensor);
   const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
 

@@ -300,7 +300,8 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   maze::sim::SimulationOptions sim = options.simulation;
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
   const maze::TruthRaster truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
-  webots::embedded::Simulation simulation(arena, profile, sim);
+  // Free geometry: on SolidGeometry, a maze's geometry too (run_metric_world), never on a WallGrid.
+  webots::embedded::Simulation simulation(maze::world_of(arena), profile, sim);
 
   // ---- the run ----
   RoomLog log(options, threshold, out, recorder);

@@ -368,7 +368,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   const maze::sim::RobotProfile &profile = robot_profile(options);
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   check_fit(options, truth, profile, controller_opts);
-  webots::embedded::Simulation simulation(truth, profile, options.simulation);
+  webots::embedded::Simulation simulation(maze::world_of(truth), profile, options.simulation);
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   assert(options.output.out_dir.empty() || controls.recorder != nullptr);

@@ -79,7 +79,7 @@ class PySimulation {
     arena.x_max_m = half;
     arena.y_min_m = -half;
     arena.y_max_m = half;
-    return maze::World(std::move(arena), "", maze::Format::room);
+    return maze::world_of(std::move(arena));
   }
 
   webots::embedded::Simulation &simulation() { return *simulation_; }

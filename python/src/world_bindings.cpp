@@ -127,7 +127,7 @@ py::tuple explore_world(const maze::World &world, const std::optional<std::strin
   const maze::sim::RobotProfile profile = app::resolve_robot(options.robot);
   app::require_sensors(options, profile);
   const robot::ControllerOptions controller_opts = app::controller_options(options, world.maze(), profile);
-  webots::embedded::Simulation simulation(world.maze(), profile, options.simulation);
+  webots::embedded::Simulation simulation(world, profile, options.simulation);
   robot::CellController controller(simulation.robot(), controller_opts);
   robot::RunResult result = controller.run();
   PyGrid grid(result.grid.geometry(), mapping::SensorModel(options.sensor));

@@ -128,14 +128,6 @@ Simulation::Simulation(const maze::World &world, const maze::sim::RobotProfile &
   set_up();
 }
 
-Simulation::Simulation(const maze::Maze &maze, const maze::sim::RobotProfile &profile,
-                       const maze::sim::SimulationOptions &options)
-    : Simulation(maze::World(maze, "", maze::Format::text_map), profile, options) {}
-
-Simulation::Simulation(const maze::Arena &arena, const maze::sim::RobotProfile &profile,
-                       const maze::sim::SimulationOptions &options)
-    : Simulation(maze::World(arena, "", maze::Format::room), profile, options) {}
-
 void Simulation::set_up() {
   initial_pose_ = pose_;
   options_.validate();

@@ -56,6 +56,10 @@ Arena &World::arena() {
   return std::get<Arena>(shape_);
 }
 
+World world_of(Maze maze) { return World(std::move(maze), "", Format::text_map); }
+
+World world_of(Arena arena) { return World(std::move(arena), "", Format::room); }
+
 Arena World::geometry() const { return on_lattice() ? arena_from_maze(maze()) : arena(); }
 
 std::string World::name() const {

@@ -1,11 +1,11 @@
 #pragma once
-// The embedded simulator: a maze, one robot built from a profile, and simulated time, behind
+// The embedded simulator: a world, one robot built from a profile, and simulated time, behind
 // the webots:: device API (ARCHITECTURE.md). The composition root builds one and hands the robot
 // to the controller, exactly as Webots starts a controller process:
 //
 //   maze::sim::SimulationOptions options;          // 32 ms basic step, seed, noise, limit
 //   options.time_limit_s = 600.0;
-//   webots::embedded::Simulation simulation(maze, maze::sim::find_profile("hambot"), options);
+//   webots::embedded::Simulation simulation(world, maze::sim::find_profile("hambot"), options);
 //   webots::embedded::CurrentSimulation current(simulation);  // for `webots::Robot robot;`
 //   run_controller();   // controller code: webots::Robot robot; ... robot.step(32) ...
 //
@@ -123,14 +123,14 @@ struct Collisions {
 
 class Simulation {
  public:
-  // The robot in a world (a maze's, an arena's: the next two): a lattice without landmarks on
-  // its wall grid (WallGrid), any other world on its geometry (SolidGeometry). Starts at
-  // options.start, else the world's; throws common::InputError for bad options or start.
+  // The robot in a world (a maze or an arena built in code: maze::world_of): a lattice
+  // without landmarks on its wall grid (WallGrid), any other world, free geometry included,
+  // on its geometry (SolidGeometry). The simulation keeps its own copy of the solids: the
+  // world need not outlive it. Starts at options.start, else the world's; throws
+  // common::InputError for bad options or start.
   using Profile = maze::sim::RobotProfile;
   using Options = maze::sim::SimulationOptions;
   Simulation(const maze::World &world, const Profile &profile, const Options &options);
-  Simulation(const maze::Maze &maze, const Profile &profile, const Options &options);
-  Simulation(const maze::Arena &arena, const Profile &profile, const Options &options);
   ~Simulation();
   Simulation(const Simulation &) = delete;
   Simulation &operator=(const Simulation &) = delete;
@@ -208,7 +208,7 @@ class Simulation {
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
-  // The constructors' shared part, once the solids are set.
+  // The constructor's part once the solids are set.
   void set_up();
   // The solids from now on: the geometry's (SolidGeometry), kept as geometry_.
   void use_geometry(maze::Arena geometry);

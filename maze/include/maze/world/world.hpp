@@ -64,6 +64,12 @@ class World {
   std::optional<common::InputError> why_not_a_maze_;
 };
 
+// A world built in code, read from no file (file empty): a maze (format text_map), or free
+// geometry (format room), validated by the caller as World's constructor says. The world stays
+// a lattice or free geometry as given: an arena whose walls happen to lie on cells is no maze.
+World world_of(Maze maze);
+World world_of(Arena arena);
+
 // What a command line supplies or overrides in the world it loads, checked where it is
 // parsed; load_world applies it. The cell ones (--cell-size, --start, --goal) apply to a maze
 // and are refused on an arena; --boundary applies to an arena and is refused on a maze.
