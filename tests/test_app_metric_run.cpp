@@ -342,3 +342,38 @@ TEST_CASE("room: a stop request ends any strategy at its next control step, stop
   CHECK(app::metric_run_exit_status(s) == 130);
   CHECK(out.str().find("interrupted by Ctrl-C") != std::string::npos);
 }
+
+namespace {
+
+// Keeps the largest |log-odds| of the map at the end of a run.
+class LargestLogOdds : public app::MetricRunRecorder {
+ public:
+  double largest = 0.0;
+  void start(const app::MetricRunStart &) override {}
+  void on_step(const robot::MetricController &) override {}
+  void on_snapshot(const robot::MetricController &, const std::string &) override {}
+  void finish(const app::MetricRunEnd &end) override {
+    const sensing::MetricMap &map = end.controller.map();
+    for (int y = 0; y < map.spec().cells_y; ++y) {
+      for (int x = 0; x < map.spec().cells_x; ++x) largest = std::max(largest, std::abs(map.log_odds({x, y})));
+    }
+  }
+};
+
+double largest_log_odds(std::optional<mapping::Clamp> clamp) {
+  app::RunOptions o = app::metres_run_options();
+  o.world = std::string(WORLDS_DIR) + "/ir_room.room";
+  o.output.quiet = true;
+  o.sensor.clamp = clamp;
+  LargestLogOdds largest;
+  std::ostringstream out;
+  app::run_metric_world(maze::load_world(o.world), o, out, std::chrono::steady_clock::now(), nullptr, nullptr, &largest);
+  return largest.largest;
+}
+
+}  // namespace
+
+TEST_CASE("room: --clamp bounds the map's log-odds as it bounds a maze run's") {
+  CHECK(largest_log_odds(std::nullopt) > 50.0);  // a wall seen every step for minutes
+  CHECK(largest_log_odds(mapping::Clamp{-5.0, 5.0}) <= 5.0);
+}

@@ -39,3 +39,8 @@ TEST_CASE("progress: a run shows the cells visited of the reachable ones, as a p
         "moves 41  visited 30/36 reachable cells (83%)  sim 96.4 s  elapsed 1.2 s");
   CHECK(app::format_run_progress(0, 1, 1, 0.0, 0.0) == "moves 0  visited 1/1 reachable cells (100%)  sim 0.0 s  elapsed 0.0 s");
 }
+
+TEST_CASE("progress: a run in metres shows the reachable free cells observed, as a percentage") {
+  CHECK(app::format_metres_progress(1200, 830, 8906, 38.43, 1.24) ==
+        "steps 1200  observed 830/8906 reachable free cells (9%)  sim 38.4 s  elapsed 1.2 s");
+}
