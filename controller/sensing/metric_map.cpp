@@ -13,7 +13,7 @@
 #include "mapping/log_odds.hpp"
 #include "mapping/traversal.hpp"
 #include "sensing/cone_sweep.hpp"
-#include "sensing/pie_demo.hpp"
+#include "sensing/pie_slice.hpp"
 
 namespace sensing {
 namespace {
@@ -185,7 +185,7 @@ void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std
   const double y0 = map.spec().boundary.y_start_m;
   for (const RangeReading &reading : readings) {
     if (!(reading.range_m >= 0.0)) continue;  // NaN: no reading
-    PieDemoSlice s;
+    PieSlice s;
     s.x_m = reading.origin.x_m;
     s.y_m = reading.origin.y_m;
     s.heading_deg = reading.angle_rad * 180.0 / 3.14159265358979323846;
@@ -212,7 +212,7 @@ void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std
           const double off = std::abs(std::remainder(std::atan2(cy, cx) - reading.angle_rad, 2 * std::numbers::pi));
           if (off - std::asin(half_diagonal / centre_m) > options.pie_half_angle_rad + 1e-9) continue;
         }
-        const PieVerdict v = pie_demo_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
+        const PieVerdict v = pie_slice_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
         if (v == PieVerdict::outside) continue;
         marks.mark(map, MetricCell{i, j}, v == PieVerdict::contact ? kMetricOccupied : kMetricFree);
       }

@@ -13,7 +13,7 @@
 //   lidar  every beam traced through the cells (Amanatides & Woo, mapping/traversal.hpp): the
 //          cells before the hit free (p_free), the hit's cell occupied (p_occ); a beam with no
 //          return frees up to max range; an invalid one marks nothing.
-//   pie    each IR reading's slices as `demo pie` draws them (sensing/pie_demo.hpp): a cell
+//   pie    each IR reading's slices (sensing/pie_slice.hpp, as `demo pie` draws them): a cell
 //          whose corners or centre fall in the contact slice only is occupied (0.7), else in
 //          the clear slice free (0.4). A reading within two of its errors of max range
 //          (is_no_return) is clear, not a contact: the noise near max range would otherwise
