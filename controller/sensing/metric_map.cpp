@@ -12,7 +12,7 @@
 #include "common/error.hpp"
 #include "mapping/log_odds.hpp"
 #include "mapping/traversal.hpp"
-#include "sensing/cone_sweep.hpp"
+#include "sensing/cone_cells.hpp"
 #include "sensing/pie_slice.hpp"
 
 namespace sensing {
@@ -224,7 +224,7 @@ void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readin
   const double r = map.cell_m();
   for (const RangeReading &reading : readings) {
     if (!(reading.range_m >= 0.0)) continue;
-    ConeSweepInput in;
+    ConeReading in;
     in.x_cells = (reading.origin.x_m - map.spec().boundary.x_start_m) / r;
     in.y_cells = (reading.origin.y_m - map.spec().boundary.y_start_m) / r;
     in.phi_rad = reading.angle_rad;
@@ -235,13 +235,13 @@ void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readin
       if (reading.echo_can_be_lost) continue;
       const double reach_cells = reading.max_range_m * kConeNoReturnReach / r;
       in.d_cells = reach_cells;
-      for (const auto &[i, j] : cone_sweep_between(in, 0.0, reach_cells).cells) marks.mark(map, MetricCell{i, j}, kMetricFree);
+      for (const auto &[i, j] : cone_cells_between(in, 0.0, reach_cells).cells) marks.mark(map, MetricCell{i, j}, kMetricFree);
       continue;
     }
     in.d_cells = reading.range_m / r;
     const double inner = in.d_cells * (1.0 - in.eps);
-    for (const auto &[i, j] : cone_sweep(in).cells) marks.mark(map, MetricCell{i, j}, kMetricOccupied);
-    for (const auto &[i, j] : cone_sweep_between(in, 0.0, inner - kConeSweepInc).cells) {
+    for (const auto &[i, j] : cone_cells(in).cells) marks.mark(map, MetricCell{i, j}, kMetricOccupied);
+    for (const auto &[i, j] : cone_cells_between(in, 0.0, inner - kConeRadiusInc).cells) {
       marks.mark(map, MetricCell{i, j}, kMetricFree);
     }
   }

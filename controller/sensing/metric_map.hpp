@@ -18,7 +18,7 @@
 //          the clear slice free (0.4). A reading within two of its errors of max range
 //          (is_no_return) is clear, not a contact: the noise near max range would otherwise
 //          draw phantom walls at 1.5 m all round.
-//   cone   IR or sonar: the lecture's cone sweep (sensing/cone_sweep.hpp) of the arc
+//   cone   IR or sonar: the cone's cells (sensing/cone_cells.hpp, the lecture's sweep) of the arc
 //          d (1 - eps) ... d (1 + eps) occupied (p_occ), the same sweep of the cone inside,
 //          0 ... d (1 - eps) - INC, free (p_free). Nothing seen: an IR frees the cone up to
 //          kConeNoReturnReach of max range; a sonar (its echo may be lost at a slant) marks
