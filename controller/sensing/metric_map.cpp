@@ -107,8 +107,8 @@ mapping::Point MetricMap::centre_of(MetricCell c) const {
   return {spec_.boundary.x_start_m + (c.i + 0.5) * spec_.cell_m, spec_.boundary.y_start_m + (c.j + 0.5) * spec_.cell_m};
 }
 
-LogMapOptions MetricMap::log_options() const {
-  LogMapOptions o;
+BumpDepthOptions MetricMap::bump_depth_options() const {
+  BumpDepthOptions o;
   o.cells_x = spec_.cells_x;
   o.cells_y = spec_.cells_y;
   o.x_start_m = spec_.boundary.x_start_m;
