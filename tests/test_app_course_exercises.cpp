@@ -52,6 +52,13 @@ TEST_CASE("map-log as a function returns the golden case's text, its log named a
   CHECK(app::course::run_map_log(input) == text);
 }
 
+TEST_CASE("demo cone prints the lecture's Khepera III numbers: IR 0.03 rad +-3 %, sonar 0.4 rad +-6.6 %") {
+  CHECK(app::course::kKheperaIr.aperture_rad == 0.03);
+  CHECK(app::course::kKheperaIr.distance_error == 0.03);
+  CHECK(app::course::kKheperaSonar.aperture_rad == 0.4);
+  CHECK(app::course::kKheperaSonar.distance_error == 0.066);
+}
+
 TEST_CASE("demo 1d as a function: a shuffled order that agrees with the given one is status 0") {
   app::course::Demo1dInput input;
   input.order = "shuffle";

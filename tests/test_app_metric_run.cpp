@@ -13,13 +13,13 @@
 #include <sstream>
 #include <string>
 
+#include "app/course/demo_pie.hpp"
 #include "app/run/metric_run.hpp"
 #include "common/error.hpp"
 #include "maze/world/arena.hpp"
 #include "maze/generate/arena_generator.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/profile.hpp"
-#include "sensing/pie_demo.hpp"
 
 namespace {
 
@@ -246,7 +246,7 @@ TEST_CASE("room wavefront: the sonar ring's legs stopped by a touch the map did 
 
 TEST_CASE("ir-fan carries demo pie's Figure 1 mounts, left to right") {
   const auto &fan = maze::sim::find_profile("ir-fan");
-  const sensing::PieDemoOptions figure;
+  const sensing::PieSliceOptions figure = app::course::figure_1_options();
   REQUIRE(fan.distance_sensors.size() == figure.mounts_deg.size());
   for (std::size_t n = 0; n < figure.mounts_deg.size(); ++n) {
     CHECK(fan.distance_sensors[n].angle_rad * 180.0 / std::numbers::pi == doctest::Approx(figure.mounts_deg[n]));

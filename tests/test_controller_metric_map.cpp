@@ -9,8 +9,8 @@
 #include "common/error.hpp"
 #include "mapping/sensor_model.hpp"
 #include "plan/metric_wavefront.hpp"
-#include "sensing/pie_demo.hpp"
 #include "sensing/metric_map.hpp"
+#include "sensing/pie_slice.hpp"
 
 using sensing::MetricCell;
 using sensing::MetricMap;
@@ -92,30 +92,40 @@ TEST_CASE("room lidar: cells before the hit free, the hit occupied, no return fr
         "          \n");
 }
 
-TEST_CASE("room pie: the same verdicts as demo pie on the same cells") {
-  // demo pie's Figure 1, on a room grid whose corners are on multiples of 0.1 m.
-  sensing::PieDemoOptions demo;
+TEST_CASE("room pie: the same verdicts as the pie-slice update on the same cells") {
+  // The IR assignment's Figure 1 (demo pie's set-up), on a room grid whose corners are on
+  // multiples of 0.1 m.
+  sensing::PieSliceOptions figure;
+  figure.x_m = 1.5;
+  figure.y_m = 2.5;
+  figure.heading_deg = 270.0;
+  figure.mounts_deg = {75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
+  figure.readings_m = {1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
+  figure.half_angle_deg = 10.0;
+  figure.contact_m = 0.1;
+  figure.resolution_m = 0.1;
+  figure.max_range_m = 1.5;
   mapping::SensorModelOptions so;
   so.prior = 0.5;
   const mapping::SensorModel model(so);
   MetricMap map(sensing::metric_grid_from_resolution({0, 4, 0, 4}, 0.1), model);
   std::vector<sensing::RangeReading> readings;
-  for (std::size_t n = 0; n < demo.readings_m.size(); ++n) {
+  for (std::size_t n = 0; n < figure.readings_m.size(); ++n) {
     sensing::RangeReading r;
-    r.origin = {demo.x_m, demo.y_m};
-    r.angle_rad = (demo.heading_deg + demo.mounts_deg[n]) * 3.14159265358979323846 / 180.0;
-    r.range_m = demo.readings_m[n];
-    r.max_range_m = demo.max_range_m;
+    r.origin = {figure.x_m, figure.y_m};
+    r.angle_rad = (figure.heading_deg + figure.mounts_deg[n]) * 3.14159265358979323846 / 180.0;
+    r.range_m = figure.readings_m[n];
+    r.max_range_m = figure.max_range_m;
     readings.push_back(r);
   }
   sensing::RangeModelOptions ro;
-  ro.pie_half_angle_rad = demo.half_angle_deg * 3.14159265358979323846 / 180.0;
-  ro.pie_contact_m = demo.contact_m;
+  ro.pie_half_angle_rad = figure.half_angle_deg * 3.14159265358979323846 / 180.0;
+  ro.pie_contact_m = figure.contact_m;
   MetricMarks marks(sensing::kPieOccupiedP, sensing::kPieFreeP);
   sensing::mark_metric_pie(map, ro, readings, marks);
   marks.apply(map);
   int compared = 0;
-  for (const sensing::PieDemoCell &c : sensing::pie_demo_update(demo)) {
+  for (const sensing::PieSliceCell &c : sensing::pie_slice_update(figure)) {
     // Occupied where some sensor said contact; free where all said clear (one update a scan).
     const double l = map.log_odds({c.i, c.j});
     if (c.occupied > 0) {

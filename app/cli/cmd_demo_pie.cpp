@@ -14,7 +14,7 @@ namespace app {
 void add_demo_pie(CLI::App &demo, CommandContext &context) {
   CLI::App *pie = demo.add_subcommand("pie", "the IR pie-slice update of Figure 1 (the course's rule)");
   auto input = std::make_shared<course::DemoPieInput>();
-  sensing::PieDemoOptions &o = input->options;
+  sensing::PieSliceOptions &o = input->options;
   pie->add_option("--readings", input->readings, "comma-separated IR readings in m, left to right (default 1,1.5,1.5,0.8,1.2,1.5)");
   pie->add_option("--mounts", input->mounts, "the sensors' directions from the heading, deg, left positive (default 75,45,15,-15,-45,-75)");
   pie->add_option("--pose", input->pose, "X,Y,YAW: the robot, X and Y with their unit m, YAW in degrees (1.5708rad: radians) (default 1.5m,2.5m,270)");

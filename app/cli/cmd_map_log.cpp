@@ -16,7 +16,7 @@ namespace app {
 void add_map_log_command(CLI::App &cli, CommandContext &context) {
   CLI::App *cmd = cli.add_subcommand("map-log", "a pose + bump/depth log mapped onto a numCells grid (the bump/depth homework)");
   auto input = std::make_shared<course::MapLogInput>();
-  sensing::LogMapOptions &o = input->options;
+  sensing::BumpDepthOptions &o = input->options;
   cmd->add_option("LOG", input->log_path, "CSV: t,x,y,theta and bump_right,bump_left,bump_front or depth_1..depth_9, or run --out's trace.csv")->required();
   cmd->add_option("--sensor", input->sensor, "bump or depth (default the one the log's columns hold)");
   cmd->add_option("--cells", input->cells, "X,Y: numCells (default 25,25)");

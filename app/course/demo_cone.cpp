@@ -13,7 +13,7 @@
 #include "app/run/option_values.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "sensing/cone_sweep.hpp"
+#include "sensing/cone_cells.hpp"
 
 namespace app::course {
 namespace {
@@ -34,13 +34,13 @@ std::string percent(double fraction) { return fmt::format("{:g} %", fraction * 1
 std::string khepera_table() {
   std::string out = "Khepera III (the lecture's numbers):\n"
                     "sensor  aperture_rad  rays  distance_error\n";
-  for (const auto &s : {sensing::kKheperaIr, sensing::kKheperaSonar}) {
+  for (const auto &s : {kKheperaIr, kKheperaSonar}) {
     out += fmt::format("{:<6}  {:<12g}  {:>4}  +-{}\n", s.name, s.aperture_rad, s.rays, percent(s.distance_error));
   }
   return out;
 }
 
-std::string step_table(const sensing::ConeSweep &sweep) {
+std::string step_table(const sensing::ConeCells &sweep) {
   std::string out = "   j  r_cells      x_a      y_a      x_b      y_b  omega_rad  angles\n";
   for (std::size_t j = 0; j < sweep.steps.size(); ++j) {
     const auto &s = sweep.steps[j];
@@ -51,7 +51,7 @@ std::string step_table(const sensing::ConeSweep &sweep) {
 }
 
 // The marked cells, north row first: `#` marked, `.` not; row and column labels are i, j.
-std::string marked_cells_text(const sensing::ConeSweep &sweep) {
+std::string marked_cells_text(const sensing::ConeCells &sweep) {
   if (sweep.cells.empty()) return "no cell marked\n";
   int i0 = sweep.cells.front().first, i1 = sweep.cells.back().first;
   int j0 = sweep.cells.front().second, j1 = j0;
@@ -67,7 +67,7 @@ std::string marked_cells_text(const sensing::ConeSweep &sweep) {
   return out;
 }
 
-std::string cone_csv(const sensing::ConeSweep &sweep) {
+std::string cone_csv(const sensing::ConeCells &sweep) {
   std::string out = "i,j\n";
   for (const auto &[i, j] : sweep.cells) out += fmt::format("{},{}\n", i, j);
   return out;
@@ -75,7 +75,7 @@ std::string cone_csv(const sensing::ConeSweep &sweep) {
 
 // The marked cells dark on the never-observed tone, the beam's edges (phi +- sigma/2, out to
 // d(1+eps)) in red, the sensor a blue disc; the format by the file's extension.
-std::string cone_picture(const sensing::ConeSweep &sweep, const sensing::ConeSweepInput &in, double resolution_m,
+std::string cone_picture(const sensing::ConeCells &sweep, const sensing::ConeReading &in, double resolution_m,
                          const std::string &sensor, PictureFormat format) {
   int i0 = static_cast<int>(std::floor(in.x_cells)), i1 = i0, j0 = static_cast<int>(std::floor(in.y_cells)), j1 = j0;
   for (const auto &[i, j] : sweep.cells) i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
@@ -114,7 +114,7 @@ std::string run_demo_cone(const DemoConeInput &input) {
     throw common::InputError("--sensor must be ir or sonar (got " + input.sensor + ")");
   }
   const bool ir = input.sensor == "ir";
-  const sensing::KheperaSensor &kind = ir ? sensing::kKheperaIr : sensing::kKheperaSonar;
+  const KheperaSensor &kind = ir ? kKheperaIr : kKheperaSonar;
   const ConeDefaults defaults = ir ? ConeDefaults{0.2, 0.01} : ConeDefaults{1.0, 0.05};
   const double range_m = input.range_given ? input.range_m : defaults.range_m;
   const double resolution_m = input.resolution_m.value_or(defaults.resolution_m);
@@ -138,9 +138,9 @@ std::string run_demo_cone(const DemoConeInput &input) {
     throw common::InputError(fmt::format("--pose X and Y must lie within {:g} cells of --resolution of 0,0 (got {:g}, {:g})",
                                          kMaxPoseCells, pose[0], pose[1]));
   }
-  const sensing::ConeSweepInput in{pose[0] / resolution_m, pose[1] / resolution_m, pose[2] * kDeg,
-                                   range_m / resolution_m, kind.aperture_rad, kind.distance_error};
-  const sensing::ConeSweep sweep = sensing::cone_sweep(in);
+  const sensing::ConeReading in{pose[0] / resolution_m, pose[1] / resolution_m, pose[2] * kDeg,
+                                range_m / resolution_m, kind.aperture_rad, kind.distance_error};
+  const sensing::ConeCells sweep = sensing::cone_cells(in);
   if (!input.csv_path.empty()) common::write_file_atomically(input.csv_path, cone_csv(sweep));
   if (!input.png_path.empty()) {
     const PictureFormat format = picture_format_of_file(input.png_path).value_or(PictureFormat::png);
@@ -152,7 +152,7 @@ std::string run_demo_cone(const DemoConeInput &input) {
   out += fmt::format("resolution {:g} m a cell: sensor at ({:g}, {:g}) cells facing {:g} deg, d = {:g} cells ({:g} m)\n",
                      resolution_m, in.x_cells, in.y_cells, pose[2], in.d_cells, range_m);
   out += fmt::format("r from d(1-eps) = {:.2f} to d(1+eps) = {:.2f} cells by INC = {:g}; omega halved\n\n",
-                     in.d_cells * (1 - in.eps), in.d_cells * (1 + in.eps), sensing::kConeSweepInc);
+                     in.d_cells * (1 - in.eps), in.d_cells * (1 + in.eps), sensing::kConeRadiusInc);
   out += step_table(sweep) + "\n" + marked_cells_text(sweep) + "\n" + kDifference;
   if (!input.csv_path.empty() || !input.png_path.empty()) out += "\n";
   for (const std::string *path : {&input.csv_path, &input.png_path}) {

@@ -1,6 +1,6 @@
 #pragma once
 // `maze_mapper demo cone`: the sensor-model lecture's cone sweep for the Khepera III's IR and
-// sonar (sensing/cone_sweep.hpp for the loop, docs/lab-cone.md for the exercise), from its
+// sonar (sensing/cone_cells.hpp for the loop, docs/lab-cone.md for the exercise), from its
 // options as typed to the text it prints: the lecture's numbers, each radius's step, the
 // marked cells and how the maze run's cone model differs; on request the cells' CSV and a
 // picture with the beam's edges.
@@ -9,6 +9,17 @@
 #include <string>
 
 namespace app::course {
+
+// The lecture's Khepera III numbers. `rays` is what the maze run's simulated sensor casts
+// across the aperture (the ir-ring and sonar-ring profiles); the sweep itself has no rays.
+struct KheperaSensor {
+  const char *name;
+  double aperture_rad;
+  int rays;
+  double distance_error;  // eps, a fraction of the reading
+};
+inline constexpr KheperaSensor kKheperaIr{"ir", 0.03, 3, 0.03};
+inline constexpr KheperaSensor kKheperaSonar{"sonar", 0.4, 5, 0.066};
 
 // demo cone's options as typed; a range or resolution not given is the sensor's default
 // (0.2 m and 0.01 m for ir, 1 m and 0.05 m for sonar: the reading 20 cells away).

@@ -18,9 +18,9 @@ namespace {
 
 std::string two_decimals(double v) { return fmt::format("{:.2f}", v); }
 
-std::string pie_sensor_table(const sensing::PieDemoOptions &o) {
+std::string pie_sensor_table(const sensing::PieSliceOptions &o) {
   std::string out = "sensor  x_m   y_m   heading_deg  reading_m  clear_m  contact_m  kind\n";
-  const auto slices = sensing::pie_demo_slices(o);
+  const auto slices = sensing::pie_slices(o);
   for (std::size_t n = 0; n < slices.size(); ++n) {
     const auto &s = slices[n];
     out += fmt::format("{:>6}  {:<4}  {:<4}  {:>11}  {:>9}  {:>7}  {:>9}  {}\n", n + 1, two_decimals(s.x_m),
@@ -32,7 +32,7 @@ std::string pie_sensor_table(const sensing::PieDemoOptions &o) {
 }
 
 // The updated region, north row first: a cell's log-odds, `.` where no sensor updated it.
-std::string region_matrix(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
+std::string region_matrix(const sensing::PieSliceOptions &o, const std::vector<sensing::PieSliceCell> &cells) {
   if (cells.empty()) return "no cell updated\n";
   int i0 = cells.front().i, i1 = i0, j0 = cells.front().j, j1 = j0;
   for (const auto &c : cells) {
@@ -53,7 +53,7 @@ std::string region_matrix(const sensing::PieDemoOptions &o, const std::vector<se
   return out;
 }
 
-std::string pie_csv(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
+std::string pie_csv(const sensing::PieSliceOptions &o, const std::vector<sensing::PieSliceCell> &cells) {
   std::string out = "x_m,y_m,logodds\n";
   for (const auto &c : cells) {
     out += fmt::format("{:.4f},{:.4f},{:.4f}\n", (c.i + 0.5) * o.resolution_m, (c.j + 0.5) * o.resolution_m,
@@ -64,15 +64,15 @@ std::string pie_csv(const sensing::PieDemoOptions &o, const std::vector<sensing:
 
 // The grid around the updated cells and the robot, two cells of margin: every updated cell
 // in map.png's tones, the cells no sensor updated in the never-observed tone.
-PlainGrid pie_grid(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells) {
+PlainGrid pie_grid(const sensing::PieSliceOptions &o, const std::vector<sensing::PieSliceCell> &cells) {
   const double r = o.resolution_m;
   int i0 = static_cast<int>(std::floor(o.x_m / r)), i1 = i0, j0 = static_cast<int>(std::floor(o.y_m / r)), j1 = j0;
   for (const auto &c : cells) {
     i0 = std::min(i0, c.i), i1 = std::max(i1, c.i), j0 = std::min(j0, c.j), j1 = std::max(j1, c.j);
   }
   PlainGrid g = plain_grid_around(i0, i1, j0, j1, r, kUnknownTone);
-  const double occupied = mapping::log_odds(sensing::kPieDemoOccupiedP);
-  const double clear = mapping::log_odds(sensing::kPieDemoClearP);
+  const double occupied = mapping::log_odds(sensing::kPieSliceOccupiedP);
+  const double clear = mapping::log_odds(sensing::kPieSliceClearP);
   for (const auto &c : cells) {
     set_tone(g, (c.i + 0.5) * r, (c.j + 0.5) * r, log_odds_tone(c.log_odds, 0.0, occupied, clear));
   }
@@ -81,11 +81,11 @@ PlainGrid pie_grid(const sensing::PieDemoOptions &o, const std::vector<sensing::
 
 // The updated cells, each slice's edges (at +-beta, to where it ends) in red, the robot a
 // blue disc; the format by the file's extension (PNG unless .svg or .pdf).
-std::string pie_picture(const sensing::PieDemoOptions &o, const std::vector<sensing::PieDemoCell> &cells,
+std::string pie_picture(const sensing::PieSliceOptions &o, const std::vector<sensing::PieSliceCell> &cells,
                          PictureFormat format) {
   const PlainGrid g = pie_grid(o, cells);
-  const double occupied = mapping::log_odds(sensing::kPieDemoOccupiedP);
-  const double clear = mapping::log_odds(sensing::kPieDemoClearP);
+  const double occupied = mapping::log_odds(sensing::kPieSliceOccupiedP);
+  const double clear = mapping::log_odds(sensing::kPieSliceClearP);
   Figure legend;
   legend.lines = {fmt::format("demo pie: beta {:g} deg, alpha {:g} m, cells {:g} m", o.half_angle_deg,
                               o.contact_m, o.resolution_m)};
@@ -95,7 +95,7 @@ std::string pie_picture(const sensing::PieDemoOptions &o, const std::vector<sens
   legend.bar->left_word = "clear";
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     const double thickness = std::max(1.5, frame.cell_w_px / 8);
-    for (const auto &s : sensing::pie_demo_slices(o)) {
+    for (const auto &s : sensing::pie_slices(o)) {
       const double end_m = s.contact ? s.contact_m : s.clear_m;
       for (const double side : {-1.0, 1.0}) {
         const double a = (s.heading_deg + side * o.half_angle_deg) * std::numbers::pi / 180.0;
@@ -108,8 +108,8 @@ std::string pie_picture(const sensing::PieDemoOptions &o, const std::vector<sens
   return plain_grid_picture(g, legend, overlay, format).encode();
 }
 
-sensing::PieDemoOptions pie_options(const DemoPieInput &input) {
-  sensing::PieDemoOptions o = input.options;
+sensing::PieSliceOptions pie_options(const DemoPieInput &input) {
+  sensing::PieSliceOptions o = input.options;
   if (!input.readings.empty()) o.readings_m = parse_number_list(input.readings, "--readings");
   if (!input.mounts.empty()) o.mounts_deg = parse_number_list(input.mounts, "--mounts");
   if (!input.pose.empty()) {
@@ -124,9 +124,23 @@ sensing::PieDemoOptions pie_options(const DemoPieInput &input) {
 
 }  // namespace
 
+sensing::PieSliceOptions figure_1_options() {
+  sensing::PieSliceOptions o;
+  o.x_m = 1.5;
+  o.y_m = 2.5;
+  o.heading_deg = 270.0;  // facing south
+  o.mounts_deg = {75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
+  o.readings_m = {1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
+  o.half_angle_deg = 10.0;
+  o.contact_m = 0.1;
+  o.resolution_m = 0.1;
+  o.max_range_m = 1.5;
+  return o;
+}
+
 std::string run_demo_pie(const DemoPieInput &input) {
-  const sensing::PieDemoOptions o = pie_options(input);
-  const auto cells = sensing::pie_demo_update(o);
+  const sensing::PieSliceOptions o = pie_options(input);
+  const auto cells = sensing::pie_slice_update(o);
   if (!input.csv_path.empty()) common::write_file_atomically(input.csv_path, pie_csv(o, cells));
   if (!input.svg_path.empty()) common::write_file_atomically(input.svg_path, pie_picture(o, cells, PictureFormat::svg));
   if (!input.png_path.empty()) {
@@ -139,8 +153,8 @@ std::string run_demo_pie(const DemoPieInput &input) {
                      o.x_m, o.y_m, o.heading_deg, o.max_range_m, o.contact_m);
   out += fmt::format("per sensor and cell (four corners and centre): occupied logit({:g}) = {:+.2f}, "
                      "clear logit({:g}) = {:+.2f}\n\n",
-                     sensing::kPieDemoOccupiedP, mapping::log_odds(sensing::kPieDemoOccupiedP),
-                     sensing::kPieDemoClearP, mapping::log_odds(sensing::kPieDemoClearP));
+                     sensing::kPieSliceOccupiedP, mapping::log_odds(sensing::kPieSliceOccupiedP),
+                     sensing::kPieSliceClearP, mapping::log_odds(sensing::kPieSliceClearP));
   out += pie_sensor_table(o) + "\n" + region_matrix(o, cells);
   std::string wrote;
   for (const std::string *path : {&input.csv_path, &input.svg_path, &input.png_path}) {

@@ -25,13 +25,13 @@ inline constexpr Rgb kThresholdWall{0, 0, 0};
 inline constexpr Rgb kThresholdOpen{255, 255, 255};
 
 // An option of the other sensor is refused, not ignored.
-void check_sensor_options(const MapLogInput &input, sensing::LogSensor sensor) {
-  if (sensor == sensing::LogSensor::bump && input.depth_options_given) {
+void check_sensor_options(const MapLogInput &input, sensing::BumpDepthSensor sensor) {
+  if (sensor == sensing::BumpDepthSensor::bump && input.depth_options_given) {
     throw common::InputError(
         "--depth-angles, --depth-max, --depth-reading and --depth-origin apply to depth logs only (this log is mapped "
         "with its bumps)");
   }
-  if (sensor == sensing::LogSensor::depth && input.bump_options_given) {
+  if (sensor == sensing::BumpDepthSensor::depth && input.bump_options_given) {
     throw common::InputError("--bump-radius applies to bump logs only (this log is mapped with its depth rays)");
   }
 }
@@ -72,21 +72,21 @@ struct Columns {
   }
 };
 
-std::vector<std::string> sensor_columns(sensing::LogSensor sensor) {
-  if (sensor == sensing::LogSensor::bump) return {"bump_right", "bump_left", "bump_front"};
+std::vector<std::string> sensor_columns(sensing::BumpDepthSensor sensor) {
+  if (sensor == sensing::BumpDepthSensor::bump) return {"bump_right", "bump_left", "bump_front"};
   std::vector<std::string> names;
-  for (int n = 1; n <= sensing::kLogDepthRays; ++n) names.push_back(fmt::format("depth_{}", n));
+  for (int n = 1; n <= sensing::kDepthRays; ++n) names.push_back(fmt::format("depth_{}", n));
   return names;
 }
 
-sensing::LogSensor pick_sensor(const MapLogInput &input, const Columns &columns) {
-  if (input.sensor == "bump") return sensing::LogSensor::bump;
-  if (input.sensor == "depth") return sensing::LogSensor::depth;
+sensing::BumpDepthSensor pick_sensor(const MapLogInput &input, const Columns &columns) {
+  if (input.sensor == "bump") return sensing::BumpDepthSensor::bump;
+  if (input.sensor == "depth") return sensing::BumpDepthSensor::depth;
   if (!input.sensor.empty()) throw common::InputError("--sensor must be bump or depth (got " + input.sensor + ")");
   const bool bump = columns.find("bump_front").has_value();
   const bool depth = columns.find("depth_1").has_value();
   if (bump && depth) throw common::InputError("the log has bump and depth columns: choose one with --sensor bump|depth");
-  return depth ? sensing::LogSensor::depth : sensing::LogSensor::bump;
+  return depth ? sensing::BumpDepthSensor::depth : sensing::BumpDepthSensor::bump;
 }
 
 double number_at(const std::string &file, int line, const common::CsvField &f, const std::string &name) {
@@ -98,19 +98,19 @@ double number_at(const std::string &file, int line, const common::CsvField &f, c
 }
 
 struct Log {
-  sensing::LogSensor sensor = sensing::LogSensor::bump;
-  std::vector<sensing::LogStep> steps;
+  sensing::BumpDepthSensor sensor = sensing::BumpDepthSensor::bump;
+  std::vector<sensing::PoseStep> steps;
 };
 
-sensing::LogStep parse_step(const std::string &file, int line, const std::vector<common::CsvField> &fields, const Columns &c,
-                            sensing::LogSensor sensor) {
+sensing::PoseStep parse_step(const std::string &file, int line, const std::vector<common::CsvField> &fields, const Columns &c,
+                             sensing::BumpDepthSensor sensor) {
   const auto value = [&](const std::string &name) {
     const std::size_t at = *c.find(name);
     return number_at(file, line, fields[at], c.names[at]);  // named as the header names it
   };
-  sensing::LogStep s;
+  sensing::PoseStep s;
   s.t = value("t"), s.x_m = value("x"), s.y_m = value("y"), s.theta_rad = value("theta");
-  if (sensor == sensing::LogSensor::bump) {
+  if (sensor == sensing::BumpDepthSensor::bump) {
     bool *flags[] = {&s.bump_right, &s.bump_left, &s.bump_front};
     const auto names = sensor_columns(sensor);
     for (std::size_t n = 0; n < 3; ++n) {
@@ -165,8 +165,8 @@ int whole(double v, const std::string &option) {
   return static_cast<int>(v);
 }
 
-sensing::LogMapOptions map_log_options(const MapLogInput &input) {
-  sensing::LogMapOptions o = input.options;
+sensing::BumpDepthOptions map_log_options(const MapLogInput &input) {
+  sensing::BumpDepthOptions o = input.options;
   const auto cells = parse_number_list(input.cells, "--cells", 2);
   o.cells_x = whole(cells[0], "--cells"), o.cells_y = whole(cells[1], "--cells");
   if (input.boundary.empty()) throw common::InputError("map-log needs --boundary XS,XE,YS,YE (m)");
@@ -175,7 +175,7 @@ sensing::LogMapOptions map_log_options(const MapLogInput &input) {
   if (input.base != "e" && input.base != "10") throw common::InputError("--log-base must be e or 10 (got " + input.base + ")");
   o.base = input.base == "e" ? mapping::LogBase::e : mapping::LogBase::ten;
   if (!input.depth_angles.empty()) {
-    const auto angles = parse_number_list(input.depth_angles, "--depth-angles", sensing::kLogDepthRays);
+    const auto angles = parse_number_list(input.depth_angles, "--depth-angles", sensing::kDepthRays);
     std::copy(angles.begin(), angles.end(), o.depth_angles_deg.begin());
   }
   if (input.depth_reading != "range" && input.depth_reading != "axial") {
@@ -203,7 +203,7 @@ std::vector<std::size_t> snapshot_steps(const MapLogInput &input, std::size_t st
   return out;
 }
 
-std::string grid_csv(const sensing::LogGrid &g) {
+std::string grid_csv(const sensing::LogOddsGrid &g) {
   std::string out;
   for (int j = g.cells_y - 1; j >= 0; --j) {
     for (int i = 0; i < g.cells_x; ++i) out += fmt::format("{}{:.4f}", i == 0 ? "" : ",", g.at(i, j));
@@ -212,7 +212,7 @@ std::string grid_csv(const sensing::LogGrid &g) {
   return out;
 }
 
-std::string grid_matrix(const sensing::LogGrid &g) {
+std::string grid_matrix(const sensing::LogOddsGrid &g) {
   std::string out;
   for (int j = g.cells_y - 1; j >= 0; --j) {
     for (int i = 0; i < g.cells_x; ++i) out += fmt::format("{}{:+.3f}", i == 0 ? "" : " ", g.at(i, j));
@@ -221,7 +221,7 @@ std::string grid_matrix(const sensing::LogGrid &g) {
   return out;
 }
 
-std::string thresholded(const sensing::LogGrid &g, double threshold) {
+std::string thresholded(const sensing::LogOddsGrid &g, double threshold) {
   std::string out;
   for (int j = g.cells_y - 1; j >= 0; --j) {
     for (int i = 0; i < g.cells_x; ++i) out += g.at(i, j) >= threshold ? 'W' : ' ';
@@ -230,7 +230,7 @@ std::string thresholded(const sensing::LogGrid &g, double threshold) {
   return out;
 }
 
-PlainGrid plain_grid(const sensing::LogMapOptions &o) {
+PlainGrid plain_grid(const sensing::BumpDepthOptions &o) {
   PlainGrid p;
   p.cells_x = o.cells_x, p.cells_y = o.cells_y;
   p.x0_m = o.x_start_m, p.y0_m = o.y_start_m;
@@ -241,10 +241,10 @@ PlainGrid plain_grid(const sensing::LogMapOptions &o) {
 
 // The log-odds picture: map.png's tones, graded by one occupied (0.99999) and one ray (0.4)
 // update.
-std::string log_odds_png(const sensing::LogMapOptions &o, const sensing::LogGrid &g, const std::string &caption) {
+std::string log_odds_png(const sensing::BumpDepthOptions &o, const sensing::LogOddsGrid &g, const std::string &caption) {
   const double l0 = mapping::log_odds(o.prior, o.base);
-  const double occupied = mapping::log_odds(sensing::kLogOccupiedP, o.base) - l0;
-  const double ray = mapping::log_odds(sensing::kLogRayP, o.base) - l0;
+  const double occupied = mapping::log_odds(sensing::kBumpDepthOccupiedP, o.base) - l0;
+  const double ray = mapping::log_odds(sensing::kBumpDepthRayP, o.base) - l0;
   PlainGrid p = plain_grid(o);
   for (int j = 0; j < g.cells_y; ++j) {
     for (int i = 0; i < g.cells_x; ++i) p.tones.push_back(log_odds_tone(g.at(i, j), l0, occupied, ray));
@@ -256,7 +256,7 @@ std::string log_odds_png(const sensing::LogMapOptions &o, const sensing::LogGrid
 }
 
 // The thresholded map: black where log-odds >= the threshold (the printed W), else white.
-std::string thresholded_png(const sensing::LogMapOptions &o, const sensing::LogGrid &g, double threshold,
+std::string thresholded_png(const sensing::BumpDepthOptions &o, const sensing::LogOddsGrid &g, double threshold,
                             const std::string &caption) {
   PlainGrid p = plain_grid(o);
   for (int j = 0; j < g.cells_y; ++j) {
@@ -269,7 +269,7 @@ std::string thresholded_png(const sensing::LogMapOptions &o, const sensing::LogG
   return plain_grid_picture(p, legend).encode();
 }
 
-std::string caption(const MapLogInput &input, const sensing::LogMapOptions &o, std::size_t step, std::size_t steps) {
+std::string caption(const MapLogInput &input, const sensing::BumpDepthOptions &o, std::size_t step, std::size_t steps) {
   return fmt::format("map-log {}, {} x {} cells, step {}/{}", std::filesystem::path(input.log_path).filename().string(),
                      o.cells_x, o.cells_y, step, steps);
 }
@@ -285,7 +285,7 @@ std::vector<std::string> map_log_output_names(const std::vector<std::size_t> &sn
 }
 
 // --out: a snapshot's grid and picture after step `at`.
-void write_snapshot(const MapLogInput &input, const sensing::LogMapOptions &o, const sensing::LogGrid &grid,
+void write_snapshot(const MapLogInput &input, const sensing::BumpDepthOptions &o, const sensing::LogOddsGrid &grid,
                     std::size_t at, std::size_t steps) {
   const std::string stem = fmt::format("{}/logodds_step{}", input.out_dir, at);
   common::write_file_atomically(stem + ".csv", grid_csv(grid));
@@ -293,7 +293,7 @@ void write_snapshot(const MapLogInput &input, const sensing::LogMapOptions &o, c
 }
 
 // --out: the final grid, its picture and the thresholded map.
-void write_final(const MapLogInput &input, const sensing::LogMapOptions &o, const sensing::LogGrid &grid,
+void write_final(const MapLogInput &input, const sensing::BumpDepthOptions &o, const sensing::LogOddsGrid &grid,
                  std::size_t steps) {
   const std::string &dir = input.out_dir;
   const std::string text = caption(input, o, steps, steps);
@@ -303,23 +303,25 @@ void write_final(const MapLogInput &input, const sensing::LogMapOptions &o, cons
   common::write_file_atomically(dir + "/thresholded.png", thresholded_png(o, grid, input.threshold, text));
 }
 
-std::string map_log_header(const MapLogInput &input, const sensing::LogMapOptions &o, const Log &log) {
+std::string map_log_header(const MapLogInput &input, const sensing::BumpDepthOptions &o, const Log &log) {
   const double l0 = mapping::log_odds(o.prior, o.base);
   const auto l = [&](double p) { return mapping::log_odds(p, o.base); };
+  const char *sensor = log.sensor == sensing::BumpDepthSensor::bump ? "bump" : "depth";
   std::string out = fmt::format("map-log {}: {} steps, sensor {}, {} x {} cells over x {:g} .. {:g} m, y {:g} .. {:g} m\n",
-                                input.log_path, log.steps.size(), log.sensor == sensing::LogSensor::bump ? "bump" : "depth",
-                                o.cells_x, o.cells_y, o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m);
+                                input.log_path, log.steps.size(), sensor, o.cells_x, o.cells_y, o.x_start_m, o.x_end_m,
+                                o.y_start_m, o.y_end_m);
   out += fmt::format("log base {}, prior {:g} (l0 = {:+.3f}): occupied l({:g}) = {:+.3f}, free l({:g}) = {:+.3f}, "
                      "ray l({:g}) = {:+.3f}\n",
-                     mapping::to_string(o.base), o.prior, l0, sensing::kLogOccupiedP, l(sensing::kLogOccupiedP),
-                     sensing::kLogFreeP, l(sensing::kLogFreeP), sensing::kLogRayP, l(sensing::kLogRayP));
+                     mapping::to_string(o.base), o.prior, l0, sensing::kBumpDepthOccupiedP,
+                     l(sensing::kBumpDepthOccupiedP), sensing::kBumpDepthFreeP, l(sensing::kBumpDepthFreeP),
+                     sensing::kBumpDepthRayP, l(sensing::kBumpDepthRayP));
   return out;
 }
 
 // A pose off the grid marks nothing there, which the map alone would not tell.
-void warn_outside_boundary(const sensing::LogMapOptions &o, const Log &log) {
+void warn_outside_boundary(const sensing::BumpDepthOptions &o, const Log &log) {
   std::size_t outside = 0;
-  for (const sensing::LogStep &step : log.steps) {
+  for (const sensing::PoseStep &step : log.steps) {
     const bool in = step.x_m >= o.x_start_m && step.x_m <= o.x_end_m && step.y_m >= o.y_start_m && step.y_m <= o.y_end_m;
     if (!in) ++outside;
   }
@@ -330,11 +332,23 @@ void warn_outside_boundary(const sensing::LogMapOptions &o, const Log &log) {
 
 }  // namespace
 
+sensing::BumpDepthOptions homework_options() {
+  sensing::BumpDepthOptions o;
+  o.cells_x = 25;
+  o.cells_y = 25;
+  o.prior = 0.5;
+  o.base = mapping::LogBase::ten;
+  o.bump_radius_m = 0.16;
+  o.depth_angles_deg = {28.5, 21.375, 14.25, 7.125, 0.0, -7.125, -14.25, -21.375, -28.5};
+  o.depth_max_m = 10.0;
+  return o;
+}
+
 std::string run_map_log(const MapLogInput &input) {
   if (!std::isfinite(input.threshold)) {
     throw common::InputError(fmt::format("--threshold must be a finite log-odds value (got {})", input.threshold));
   }
-  const sensing::LogMapOptions o = map_log_options(input);
+  const sensing::BumpDepthOptions o = map_log_options(input);
   const Log log = read_log(input);
   check_sensor_options(input, log.sensor);
   const auto snapshots = snapshot_steps(input, log.steps.size());
@@ -343,9 +357,9 @@ std::string run_map_log(const MapLogInput &input) {
     prepare_output_dir(input.out_dir);
     refuse_outputs_over_inputs(input.out_dir, map_log_output_names(snapshots), {{"the log", input.log_path}});
   }
-  sensing::LogGrid grid = sensing::make_log_grid(o);
+  sensing::LogOddsGrid grid = sensing::make_log_odds_grid(o);
   for (std::size_t n = 0; n < log.steps.size(); ++n) {
-    sensing::apply_log_step(o, log.sensor, log.steps[n], grid);
+    sensing::apply_bump_depth_marks(o, log.sensor, log.steps[n], grid);
     for (const std::size_t at : snapshots) {
       if (at == n + 1 && !input.out_dir.empty()) write_snapshot(input, o, grid, at, log.steps.size());
     }

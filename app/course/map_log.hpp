@@ -1,8 +1,9 @@
 #pragma once
 // `maze_mapper map-log LOG.csv`: a pose + bump/depth log mapped onto a numCells grid, the
-// Cornell-style homework (sensing/log_map.hpp for the rule, docs/lab-map-log.md), from its
-// options as typed to the text it prints: the set-up, the final log-odds (north row first)
-// and the thresholded map; with --out the grids and pictures, the final ones and snapshots.
+// Cornell-style homework (sensing/bump_depth_marks.hpp for the rule, docs/lab-map-log.md),
+// from its options as typed to the text it prints: the set-up, the final log-odds (north row
+// first) and the thresholded map; with --out the grids and pictures, the final ones and
+// snapshots.
 //
 // The log is a CSV file: a header line naming t,x,y,theta and bump_right,bump_left,bump_front
 // or depth_1 ... depth_9, in any order among other columns (run --out's trace.csv names do
@@ -10,11 +11,17 @@
 
 #include <string>
 
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 
 namespace app::course {
 
-// map-log's options as typed: the numbers in `options`, the lists as text.
+// The homework's set-up, map-log's when no option changes it: 25 x 25 cells, prior 0.5, base
+// 10; bumpers 0.16 m from the centre; nine depth rays 57 deg across (a Kinect's field of
+// view), 28.5 ... -28.5 deg, left positive, max 10 m.
+sensing::BumpDepthOptions homework_options();
+
+// map-log's options as typed: the numbers in `options` (the homework's until an option
+// changes one), the lists as text.
 struct MapLogInput {
   std::string log_path;
   std::string sensor;          // bump or depth; empty: from the log's columns
@@ -27,7 +34,7 @@ struct MapLogInput {
   std::string snapshots;       // F1,F2,...: fractions of the log (needs out_dir)
   std::string out_dir;         // empty: no files
   double threshold = -0.5;     // log-odds at or above which a cell is drawn W
-  sensing::LogMapOptions options;
+  sensing::BumpDepthOptions options = homework_options();
   bool bump_options_given = false;   // --bump-radius
   bool depth_options_given = false;  // --depth-angles, --depth-max, --depth-reading, --depth-origin
 };

@@ -33,7 +33,7 @@ std::string trace_header_of(sensing::ModelKind kind) {
   std::string header = "t,x,y,theta";
   if (kind == sensing::ModelKind::bump) header += ",bump_right,bump_left,bump_front";
   if (kind == sensing::ModelKind::depth) {
-    for (int n = 1; n <= sensing::kLogDepthRays; ++n) header += fmt::format(",depth_{}", n);
+    for (int n = 1; n <= sensing::kDepthRays; ++n) header += fmt::format(",depth_{}", n);
   }
   return header + '\n';
 }
@@ -81,7 +81,7 @@ void MetricFilesRecorder::start(const MetricRunStart &start) {
 }
 
 void MetricFilesRecorder::on_step(const robot::MetricController &c) {
-  const sensing::LogStep &s = c.senses().log_step();
+  const sensing::PoseStep &s = c.senses().pose_step();
   trace_ += fmt::format("{},{},{},{}", s.t, s.x_m, s.y_m, s.theta_rad);
   if (kind_ == sensing::ModelKind::bump) {
     trace_ += fmt::format(",{},{},{}", s.bump_right ? 1 : 0, s.bump_left ? 1 : 0, s.bump_front ? 1 : 0);

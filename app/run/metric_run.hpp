@@ -27,7 +27,7 @@
 #include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "robot/metric_controller.hpp"
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 #include "sensing/range_models.hpp"
 #include "sensing/metric_map.hpp"
 #include "sensing/setups.hpp"

@@ -38,7 +38,7 @@ MetricSenses::MetricSenses(webots::Robot &robot, const ControllerOptions &option
     : options_(options),
       map_(map),
       sensing_(metric_sensing_for(options.model.kind)),
-      log_options_(map.log_options()),
+      bump_depth_options_(map.bump_depth_options()),
       devices_(robot, options, sensing::setup(options.model.kind)),
       filter_(options.scan_filter),
       marks_(marks_for(sensing_, options.sensor)) {
@@ -50,7 +50,7 @@ MetricSenses::MetricSenses(webots::Robot &robot, const ControllerOptions &option
         const double a = mounts[i].angle_rad;
         const int side = std::abs(a) < 0.1 ? 2 : (a > 0 ? 1 : 0);
         bumper_of_side_[side] = static_cast<int>(i);
-        log_options_.bump_radius_m = mounts[i].offset_m;
+        bump_depth_options_.bump_radius_m = mounts[i].offset_m;
       }
       if (mounts.size() != 3 || bumper_of_side_[0] < 0 || bumper_of_side_[1] < 0 || bumper_of_side_[2] < 0) {
         throw common::InputError(fmt::format(
@@ -60,9 +60,9 @@ MetricSenses::MetricSenses(webots::Robot &robot, const ControllerOptions &option
       break;
     }
     case MetricSensing::depth:
-      if (options.sensing.ranges.size() != sensing::kLogDepthRays) {
+      if (options.sensing.ranges.size() != sensing::kDepthRays) {
         throw common::InputError(fmt::format("the depth set-up in a room needs {} depth rays; the robot has {}",
-                                             sensing::kLogDepthRays, options.sensing.ranges.size()));
+                                             sensing::kDepthRays, options.sensing.ranges.size()));
       }
       [[fallthrough]];
     case MetricSensing::pie:
@@ -72,9 +72,10 @@ MetricSenses::MetricSenses(webots::Robot &robot, const ControllerOptions &option
   }
 }
 
-// map-log's depth options for these rays: their angles, and either the range from the centre
-// (rays on the rim: the reading plus the rim's offset) or, from a common origin, the reading
-// itself as the rays say it (range or axial); map-log ignores a reading at depth_max.
+// The depth marks' options for these rays (sensing/bump_depth_marks.hpp): their angles, and
+// either the range from the centre (rays on the rim: the reading plus the rim's offset) or,
+// from a common origin, the reading itself as the rays say it (range or axial); a reading at
+// depth_max is ignored.
 void MetricSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts) {
   const RangeSensorMount &first = mounts.front();
   for (std::size_t i = 0; i < mounts.size(); ++i) {
@@ -84,13 +85,13 @@ void MetricSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts
     if (!same_origin || m.axial != first.axial) {
       throw common::InputError("the depth set-up in a room needs its nine rays read alike: from one origin, all axial or none");
     }
-    log_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
-    log_options_.depth_max_m = m.max_range_m + (m.origin ? 0.0 : m.offset_m);
+    bump_depth_options_.depth_angles_deg[i] = m.angle_rad * 180.0 / std::numbers::pi;
+    bump_depth_options_.depth_max_m = m.max_range_m + (m.origin ? 0.0 : m.offset_m);
   }
-  log_options_.depth_reading = first.axial ? sensing::DepthReading::axial : sensing::DepthReading::range;
+  bump_depth_options_.depth_reading = first.axial ? sensing::DepthReading::axial : sensing::DepthReading::range;
   if (first.origin) {
-    log_options_.depth_origin_x_m = first.origin->x_m;
-    log_options_.depth_origin_y_m = first.origin->y_m;
+    bump_depth_options_.depth_origin_x_m = first.origin->x_m;
+    bump_depth_options_.depth_origin_y_m = first.origin->y_m;
   }
 }
 
@@ -120,11 +121,11 @@ void MetricSenses::read_ranges(mapping::Point centre, double yaw_rad) {
 }
 
 std::size_t MetricSenses::scan(mapping::Point centre, double yaw_rad, double time_s) {
-  log_step_ = {};
-  log_step_.t = time_s;
-  log_step_.x_m = centre.x_m;
-  log_step_.y_m = centre.y_m;
-  log_step_.theta_rad = yaw_rad;
+  pose_step_ = {};
+  pose_step_.t = time_s;
+  pose_step_.x_m = centre.x_m;
+  pose_step_.y_m = centre.y_m;
+  pose_step_.theta_rad = yaw_rad;
   switch (sensing_) {
     case MetricSensing::lidar: {
       const sensing::LidarScan filtered = filter_.apply(lidar_scan(*devices_.lidar, centre, yaw_rad));
@@ -146,20 +147,22 @@ std::size_t MetricSenses::scan(mapping::Point centre, double yaw_rad, double tim
       sensing::mark_metric_cone(map_, readings_, marks_);
       return marks_.apply(map_);
     case MetricSensing::bump:
-      log_step_.bump_right = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
-      log_step_.bump_left = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
-      log_step_.bump_front = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
-      bumped_ = log_step_.bump_right || log_step_.bump_left || log_step_.bump_front;
-      sensing::apply_log_step(log_options_, sensing::LogSensor::bump, log_step_, map_.log_grid());
+      pose_step_.bump_right = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
+      pose_step_.bump_left = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
+      pose_step_.bump_front = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
+      bumped_ = pose_step_.bump_right || pose_step_.bump_left || pose_step_.bump_front;
+      sensing::apply_bump_depth_marks(bump_depth_options_, sensing::BumpDepthSensor::bump, pose_step_,
+                                      map_.log_grid());
       return 1;
     case MetricSensing::depth:
       read_ranges(centre, yaw_rad);
       for (std::size_t i = 0; i < readings_.size(); ++i) {
-        // map-log's depth: from the centre along the ray, or from the rays' origin as the device says it
+        // the depth marks' reading: from the centre along the ray, or from the rays' origin as the device says it
         const RangeSensorMount &m = options_.sensing.ranges[i];
-        log_step_.depth_m[i] = m.origin ? devices_.range_sensors[i]->getValue() : readings_[i].range_m + m.offset_m;
+        pose_step_.depth_m[i] = m.origin ? devices_.range_sensors[i]->getValue() : readings_[i].range_m + m.offset_m;
       }
-      sensing::apply_log_step(log_options_, sensing::LogSensor::depth, log_step_, map_.log_grid());
+      sensing::apply_bump_depth_marks(bump_depth_options_, sensing::BumpDepthSensor::depth, pose_step_,
+                                      map_.log_grid());
       return 1;
   }
   return 0;

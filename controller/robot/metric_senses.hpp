@@ -13,7 +13,7 @@
 #include "mapping/grid_types.hpp"
 #include "robot/options.hpp"
 #include "robot/sensor_devices.hpp"
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 #include "sensing/metric_map.hpp"
 #include "sensing/scan_filter.hpp"
 
@@ -38,8 +38,8 @@ class MetricSenses {
   // The last scan's nearest return ahead from the robot's centre, m (infinity: none).
   double clearance_ahead_m() const { return clearance_ahead_m_; }
   bool bumped() const { return bumped_; }
-  // The last scan as map-log reads it (bump and depth set-ups).
-  const sensing::LogStep &log_step() const { return log_step_; }
+  // The last scan's pose and readings, as map-log reads them (bump and depth set-ups).
+  const sensing::PoseStep &pose_step() const { return pose_step_; }
   MetricSensing sensing() const { return sensing_; }
   // Whether a reading of nothing seen marks nothing (the cone set-up with a sonar, whose echo
   // may be lost at a slant): then the ground the body covers is what observes open floor.
@@ -52,13 +52,13 @@ class MetricSenses {
   const ControllerOptions &options_;
   sensing::MetricMap &map_;
   MetricSensing sensing_;
-  sensing::LogMapOptions log_options_;
+  sensing::BumpDepthOptions bump_depth_options_;
   SensorDevices devices_;
   int bumper_of_side_[3] = {-1, -1, -1};  // right, left, front: index into devices_.bumpers
   sensing::ScanFilter filter_;
   sensing::MetricMarks marks_;
   std::vector<sensing::RangeReading> readings_;
-  sensing::LogStep log_step_;
+  sensing::PoseStep pose_step_;
   double clearance_ahead_m_ = std::numeric_limits<double>::infinity();
   bool bumped_ = false;
 };

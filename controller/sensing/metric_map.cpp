@@ -12,8 +12,8 @@
 #include "common/error.hpp"
 #include "mapping/log_odds.hpp"
 #include "mapping/traversal.hpp"
-#include "sensing/cone_sweep.hpp"
-#include "sensing/pie_demo.hpp"
+#include "sensing/cone_cells.hpp"
+#include "sensing/pie_slice.hpp"
 
 namespace sensing {
 namespace {
@@ -107,8 +107,8 @@ mapping::Point MetricMap::centre_of(MetricCell c) const {
   return {spec_.boundary.x_start_m + (c.i + 0.5) * spec_.cell_m, spec_.boundary.y_start_m + (c.j + 0.5) * spec_.cell_m};
 }
 
-LogMapOptions MetricMap::log_options() const {
-  LogMapOptions o;
+BumpDepthOptions MetricMap::bump_depth_options() const {
+  BumpDepthOptions o;
   o.cells_x = spec_.cells_x;
   o.cells_y = spec_.cells_y;
   o.x_start_m = spec_.boundary.x_start_m;
@@ -185,7 +185,7 @@ void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std
   const double y0 = map.spec().boundary.y_start_m;
   for (const RangeReading &reading : readings) {
     if (!(reading.range_m >= 0.0)) continue;  // NaN: no reading
-    PieDemoSlice s;
+    PieSlice s;
     s.x_m = reading.origin.x_m;
     s.y_m = reading.origin.y_m;
     s.heading_deg = reading.angle_rad * 180.0 / 3.14159265358979323846;
@@ -212,7 +212,7 @@ void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std
           const double off = std::abs(std::remainder(std::atan2(cy, cx) - reading.angle_rad, 2 * std::numbers::pi));
           if (off - std::asin(half_diagonal / centre_m) > options.pie_half_angle_rad + 1e-9) continue;
         }
-        const PieVerdict v = pie_demo_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
+        const PieVerdict v = pie_slice_verdict(s, options.pie_half_angle_rad, x0 + i * r, y0 + j * r, r);
         if (v == PieVerdict::outside) continue;
         marks.mark(map, MetricCell{i, j}, v == PieVerdict::contact ? kMetricOccupied : kMetricFree);
       }
@@ -224,7 +224,7 @@ void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readin
   const double r = map.cell_m();
   for (const RangeReading &reading : readings) {
     if (!(reading.range_m >= 0.0)) continue;
-    ConeSweepInput in;
+    ConeReading in;
     in.x_cells = (reading.origin.x_m - map.spec().boundary.x_start_m) / r;
     in.y_cells = (reading.origin.y_m - map.spec().boundary.y_start_m) / r;
     in.phi_rad = reading.angle_rad;
@@ -235,13 +235,13 @@ void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readin
       if (reading.echo_can_be_lost) continue;
       const double reach_cells = reading.max_range_m * kConeNoReturnReach / r;
       in.d_cells = reach_cells;
-      for (const auto &[i, j] : cone_sweep_between(in, 0.0, reach_cells).cells) marks.mark(map, MetricCell{i, j}, kMetricFree);
+      for (const auto &[i, j] : cone_cells_between(in, 0.0, reach_cells).cells) marks.mark(map, MetricCell{i, j}, kMetricFree);
       continue;
     }
     in.d_cells = reading.range_m / r;
     const double inner = in.d_cells * (1.0 - in.eps);
-    for (const auto &[i, j] : cone_sweep(in).cells) marks.mark(map, MetricCell{i, j}, kMetricOccupied);
-    for (const auto &[i, j] : cone_sweep_between(in, 0.0, inner - kConeSweepInc).cells) {
+    for (const auto &[i, j] : cone_cells(in).cells) marks.mark(map, MetricCell{i, j}, kMetricOccupied);
+    for (const auto &[i, j] : cone_cells_between(in, 0.0, inner - kConeRadiusInc).cells) {
       marks.mark(map, MetricCell{i, j}, kMetricFree);
     }
   }

@@ -4,7 +4,7 @@
 //
 //   cells_x x cells_y square cells of cell_m; cell (i, j) covers
 //   [x_start + i cell_m, x_start + (i + 1) cell_m) x [y_start + j cell_m, ...); row 0 the south
-//   row; stored at j * cells_x + i (as map-log's LogGrid, sensing/log_map.hpp).
+//   row; stored at j * cells_x + i (a LogOddsGrid, sensing/bump_depth_marks.hpp).
 //
 // A scan gathers marks (MetricMarks) and then applies them: each marked cell gets exactly one
 // update l <- l + l(p) - l(prior), the strongest level winning (occupied over free), clamped
@@ -13,18 +13,19 @@
 //   lidar  every beam traced through the cells (Amanatides & Woo, mapping/traversal.hpp): the
 //          cells before the hit free (p_free), the hit's cell occupied (p_occ); a beam with no
 //          return frees up to max range; an invalid one marks nothing.
-//   pie    each IR reading's slices as `demo pie` draws them (sensing/pie_demo.hpp): a cell
+//   pie    each IR reading's slices (sensing/pie_slice.hpp, as `demo pie` draws them): a cell
 //          whose corners or centre fall in the contact slice only is occupied (0.7), else in
 //          the clear slice free (0.4). A reading within two of its errors of max range
 //          (is_no_return) is clear, not a contact: the noise near max range would otherwise
 //          draw phantom walls at 1.5 m all round.
-//   cone   IR or sonar: the lecture's cone sweep (sensing/cone_sweep.hpp) of the arc
+//   cone   IR or sonar: the cone's cells (sensing/cone_cells.hpp, the lecture's sweep) of the arc
 //          d (1 - eps) ... d (1 + eps) occupied (p_occ), the same sweep of the cone inside,
 //          0 ... d (1 - eps) - INC, free (p_free). Nothing seen: an IR frees the cone up to
 //          kConeNoReturnReach of max range; a sonar (its echo may be lost at a slant) marks
 //          nothing.
-//   bump, depth  the homework's numbers exactly: map-log's apply_log_step on this grid (base
-//          10: +5 / -0.368 / -0.176), so `map-log` on a run's trace gives the run's grid.
+//   bump, depth  the homework's numbers exactly: apply_bump_depth_marks
+//          (sensing/bump_depth_marks.hpp) on this grid (base 10: +5 / -0.368 / -0.176), as
+//          `map-log` marks a pose log, so `map-log` on a run's trace gives the run's grid.
 //
 // The body: for a set-up whose nothing-seen marks nothing (the sonar cone), a cell the
 // robot's body has covered is observed free, as the bump homework's robot cell is (the robot
@@ -40,7 +41,7 @@
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 #include "sensing/range_models.hpp"
 #include "sensing/scan.hpp"
 
@@ -119,11 +120,11 @@ class MetricMap {
   // Cells whose first observation was the body's.
   std::size_t body_observed() const { return body_observed_; }
 
-  // The grid as map-log holds it, and the map-log options with this grid's boundary, cells
+  // The grid of log-odds, and the bump and depth options with this grid's boundary, cells
   // and prior in base 10 (the bump and depth set-ups' homework numbers).
-  const LogGrid &log_grid() const { return grid_; }
-  LogGrid &log_grid() { return grid_; }
-  LogMapOptions log_options() const;
+  const LogOddsGrid &log_grid() const { return grid_; }
+  LogOddsGrid &log_grid() { return grid_; }
+  BumpDepthOptions bump_depth_options() const;
   // The grid as a 1 x 1 sub-cell geometry (the traversal's).
   const mapping::GridGeometry &geometry() const { return geometry_; }
 
@@ -131,7 +132,7 @@ class MetricMap {
   MetricGridSpec spec_;
   const mapping::SensorModel &model_;
   mapping::GridGeometry geometry_;
-  LogGrid grid_;
+  LogOddsGrid grid_;
   std::size_t body_observed_ = 0;
 };
 

@@ -148,7 +148,7 @@ RobotProfile ir_ring() {
   return p;
 }
 
-// The IR assignment's Figure 1 (`demo pie`, sensing/pie_demo.hpp): six IR sensors 30 deg
+// The IR assignment's Figure 1 (`demo pie`, app/course/demo_pie.hpp): six IR sensors 30 deg
 // apart over the robot's front, from +75 deg (left) to -75 deg (right); none looks back.
 // Each is ir-ring's sensor (the course's numbers); the pie model's 20 deg slice (--pie-beta
 // 10 deg) is the model's, not the beam's.

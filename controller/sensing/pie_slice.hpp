@@ -1,8 +1,8 @@
 #pragma once
-// The IR pie-slice update of the Waterloo assignment's Figure 1 (`maze_mapper demo pie`),
-// with the course's rule and nothing more: a plain grid of square cells, corners on
-// multiples of the resolution (the maze run's pie model, with its noise margins, usable range
-// and arc test, is in range_models.hpp).
+// The IR pie-slice update on a plain grid of square cells, corners on multiples of the
+// resolution: the course's rule and nothing more (`maze_mapper demo pie` prints it for the
+// Waterloo assignment's Figure 1; the maze run's pie model, with its noise margins, usable
+// range and arc test, is in range_models.hpp).
 //
 //   sensor s at the robot's centre, pointing heading + mount;  reading d;  max range m
 //   d < m: contact   clear slice   |p - s| <= d,          |angle(p - s) - dir| <= beta
@@ -20,32 +20,32 @@
 
 namespace sensing {
 
-// Figure 1's set-up. Angles in degrees, counter-clockwise positive (mounts: left positive).
-struct PieDemoOptions {
-  double x_m = 1.5;
-  double y_m = 2.5;
-  double heading_deg = 270.0;  // facing south
-  // Six IR sensors from the robot's left to its right, 30 deg apart over its front
-  // (the figure's ring as this program mounts it).
-  std::vector<double> mounts_deg{75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
-  std::vector<double> readings_m{1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
-  double half_angle_deg = 10.0;  // beta
-  double contact_m = 0.1;        // alpha
-  double resolution_m = 0.1;     // cell side
-  double max_range_m = 1.5;      // IR max range: a reading at or above it saw nothing
+// A set-up: the robot's pose, its IR sensors and the rule's numbers, every one given by the
+// caller (none has a default of its own). Angles in degrees, counter-clockwise positive
+// (mounts: left positive).
+struct PieSliceOptions {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double heading_deg = 0.0;
+  std::vector<double> mounts_deg;  // the sensors' directions from the heading, left to right
+  std::vector<double> readings_m;  // one reading a sensor, in the same order
+  double half_angle_deg = 0.0;     // beta
+  double contact_m = 0.0;          // alpha
+  double resolution_m = 0.0;       // cell side
+  double max_range_m = 0.0;        // IR max range: a reading at or above it saw nothing
 };
 
 // Throws common::InputError when a number is not finite, the readings and mounts differ in
 // count or are empty, a reading is negative, beta is not in (0, 90), alpha, the resolution
 // or the max range is not positive, the pose lies more than 1e6 cells from 0,0, or the
 // slices would span more than 2,000 cells a side.
-void validate(const PieDemoOptions &options);
+void validate(const PieSliceOptions &options);
 
-inline constexpr double kPieDemoOccupiedP = 0.7;
-inline constexpr double kPieDemoClearP = 0.4;
+inline constexpr double kPieSliceOccupiedP = 0.7;
+inline constexpr double kPieSliceClearP = 0.4;
 
 // One sensor's slices in the world (m, deg).
-struct PieDemoSlice {
+struct PieSlice {
   double x_m = 0.0;
   double y_m = 0.0;
   double heading_deg = 0.0;  // world direction, in [0, 360)
@@ -56,10 +56,10 @@ struct PieDemoSlice {
 };
 
 // The slices of a valid set-up, in the sensors' order.
-std::vector<PieDemoSlice> pie_demo_slices(const PieDemoOptions &options);
+std::vector<PieSlice> pie_slices(const PieSliceOptions &options);
 
 // One updated cell: column i covers [i r, (i + 1) r] in x, row j [j r, (j + 1) r] in y.
-struct PieDemoCell {
+struct PieSliceCell {
   int i = 0;
   int j = 0;
   double log_odds = 0.0;  // the sum of its (sensor, cell) updates
@@ -71,9 +71,9 @@ struct PieDemoCell {
 // and its centre as above: contact (occupied), clear, or outside (no update). beta in rad.
 // The room map (sensing/metric_map.hpp) asks it of its own cells.
 enum class PieVerdict { outside, clear, contact };
-PieVerdict pie_demo_verdict(const PieDemoSlice &slice, double beta_rad, double x0_m, double y0_m, double r_m);
+PieVerdict pie_slice_verdict(const PieSlice &slice, double beta_rad, double x0_m, double y0_m, double r_m);
 
 // Every cell some sensor updated, north row first, west to east within a row.
-std::vector<PieDemoCell> pie_demo_update(const PieDemoOptions &options);
+std::vector<PieSliceCell> pie_slice_update(const PieSliceOptions &options);
 
 }  // namespace sensing

@@ -1,12 +1,14 @@
 #pragma once
-// A pose log mapped onto a plain numCells grid (the Cornell-style bump and depth homework;
-// `maze_mapper map-log`). Not the maze's 4D grid: X × Y cells over a boundary in metres.
+// The bump and depth marks of one pose on a plain numCells grid: X × Y cells over a boundary
+// in metres, not the maze's 4D grid. The numbers are the Cornell-style bump and depth
+// homework's; `maze_mapper map-log` marks a pose log with them, and the room map's bump and
+// depth set-ups mark each scan.
 //
 //   cell (i, j): i = floor((x - x_start) / w), j = floor((y - y_start) / h),
 //                w = (x_end - x_start) / X, h = (y_end - y_start) / Y; a point with i outside
 //                [0, X) or j outside [0, Y) is ignored.
 //
-// Per time step the marks are gathered, then each marked cell gets one update
+// Per time step (PoseStep) the marks are gathered, then each marked cell gets one update
 // l <- l + l(p) - l0, the strongest mark winning:
 //   occupied  p = 0.99999  a pressed bumper's contact point; a depth ray's end (reading z)
 //   free      p = 0.3      the robot's cell; the contact points of the bumpers not pressed
@@ -29,26 +31,27 @@
 
 namespace sensing {
 
-enum class LogSensor { bump, depth };
+enum class BumpDepthSensor { bump, depth };
 
 // What a depth reading measures: the range along its ray, or the depth along the sensor's axis.
 enum class DepthReading { range, axial };
 
-inline constexpr double kLogOccupiedP = 0.99999;
-inline constexpr double kLogFreeP = 0.3;
-inline constexpr double kLogRayP = 0.4;
-inline constexpr int kLogDepthRays = 9;
+inline constexpr double kBumpDepthOccupiedP = 0.99999;
+inline constexpr double kBumpDepthFreeP = 0.3;
+inline constexpr double kBumpDepthRayP = 0.4;
+inline constexpr int kDepthRays = 9;
 
-struct LogMapOptions {
-  int cells_x = 25;
-  int cells_y = 25;
+// The grid and the robot's geometry, given by the caller: the cells, the bumpers' radius and
+// the depth rays' angles and max range have no defaults of their own.
+struct BumpDepthOptions {
+  int cells_x = 0;
+  int cells_y = 0;
   double x_start_m = 0.0, x_end_m = 0.0, y_start_m = 0.0, y_end_m = 0.0;  // the boundary
   double prior = 0.5;
   mapping::LogBase base = mapping::LogBase::ten;
-  double bump_radius_m = 0.16;
-  // depth_1 ... depth_9, deg, left positive: 57 deg across (a Kinect's field of view).
-  std::array<double, kLogDepthRays> depth_angles_deg{28.5, 21.375, 14.25, 7.125, 0.0, -7.125, -14.25, -21.375, -28.5};
-  double depth_max_m = 10.0;
+  double bump_radius_m = 0.0;
+  std::array<double, kDepthRays> depth_angles_deg{};  // depth_1 ... depth_9, deg, left positive
+  double depth_max_m = 0.0;
   DepthReading depth_reading = DepthReading::range;
   double depth_origin_x_m = 0.0;  // the depth sensor's origin in the robot's frame, forward
   double depth_origin_y_m = 0.0;  // and left
@@ -57,21 +60,21 @@ struct LogMapOptions {
 // Throws common::InputError naming the option: cells not 1 ... 2000, a boundary of zero or
 // negative width or height, a prior not in (0, 1), a radius or depth max not > 0, a number
 // not finite, an axial reading's angle not within (-90, 90) degrees.
-void validate(const LogMapOptions &options);
+void validate(const BumpDepthOptions &options);
 // A floor XS..XE, YS..YE (m) as --boundary gives it: four finite numbers, XS < XE and YS < YE;
 // throws common::InputError naming --boundary otherwise.
 void require_boundary_m(double x_start_m, double x_end_m, double y_start_m, double y_end_m);
 
-// One time step of the log: pose (m, rad) and the readings.
-struct LogStep {
+// One time step: the pose (m, rad) and the readings.
+struct PoseStep {
   double t = 0.0;
   double x_m = 0.0, y_m = 0.0, theta_rad = 0.0;
   bool bump_right = false, bump_left = false, bump_front = false;
-  std::array<double, kLogDepthRays> depth_m{};
+  std::array<double, kDepthRays> depth_m{};
 };
 
 // The grid: log-odds of cell (i, j) at index j * cells_x + i (row 0 the south row).
-struct LogGrid {
+struct LogOddsGrid {
   int cells_x = 0;
   int cells_y = 0;
   std::vector<double> log_odds;
@@ -79,9 +82,10 @@ struct LogGrid {
 };
 
 // Every cell at l0 = l(prior).
-LogGrid make_log_grid(const LogMapOptions &options);
+LogOddsGrid make_log_odds_grid(const BumpDepthOptions &options);
 
 // Gathers one step's marks and applies them (valid options).
-void apply_log_step(const LogMapOptions &options, LogSensor sensor, const LogStep &step, LogGrid &grid);
+void apply_bump_depth_marks(const BumpDepthOptions &options, BumpDepthSensor sensor, const PoseStep &step,
+                            LogOddsGrid &grid);
 
 }  // namespace sensing

@@ -10,15 +10,15 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "sensing/pie_demo.hpp"
+#include "sensing/pie_slice.hpp"
 
-using sensing::PieDemoCell;
-using sensing::PieDemoOptions;
+using sensing::PieSliceCell;
+using sensing::PieSliceOptions;
 
 namespace {
 
 // The cells as a matrix over their bounding box, north row first; `.` where not updated.
-std::string matrix(const std::vector<PieDemoCell> &cells) {
+std::string matrix(const std::vector<PieSliceCell> &cells) {
   std::map<std::pair<int, int>, double> by_cell;
   int i0 = 1 << 20, i1 = -(1 << 20), j0 = 1 << 20, j1 = -(1 << 20);
   for (const auto &c : cells) {
@@ -38,23 +38,39 @@ std::string matrix(const std::vector<PieDemoCell> &cells) {
 }
 
 // One sensor at the origin facing east; binary-exact numbers so no point sits a rounding
-// error from a slice's edge: cells of 0.125 m, reading 0.375 m, alpha 0.125 m.
-PieDemoOptions one_sensor_east(double reading_m) {
-  PieDemoOptions o;
+// error from a slice's edge: cells of 0.125 m, reading 0.375 m, alpha 0.125 m; beta 10 deg.
+PieSliceOptions one_sensor_east(double reading_m) {
+  PieSliceOptions o;
   o.x_m = 0.0;
   o.y_m = 0.0;
   o.heading_deg = 0.0;
   o.mounts_deg = {0.0};
   o.readings_m = {reading_m};
+  o.half_angle_deg = 10.0;
   o.resolution_m = 0.125;
   o.contact_m = 0.125;
   o.max_range_m = 1.5;
   return o;
 }
 
+// Six sensors 30 deg apart over the front of a robot facing south (the assignment's Figure 1).
+PieSliceOptions six_sensors_south() {
+  PieSliceOptions o;
+  o.x_m = 1.5;
+  o.y_m = 2.5;
+  o.heading_deg = 270.0;
+  o.mounts_deg = {75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
+  o.readings_m = {1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
+  o.half_angle_deg = 10.0;
+  o.contact_m = 0.1;
+  o.resolution_m = 0.1;
+  o.max_range_m = 1.5;
+  return o;
+}
+
 // An independent reading of the course's rule: the angle test by a dot product, every cell
 // of a fixed box visited, the verdict spelt out per point.
-std::map<std::pair<int, int>, double> reference(const PieDemoOptions &o) {
+std::map<std::pair<int, int>, double> reference(const PieSliceOptions &o) {
   std::map<std::pair<int, int>, double> out;
   const double r = o.resolution_m;
   const double cos_beta = std::cos(o.half_angle_deg * std::acos(-1.0) / 180.0);
@@ -84,28 +100,28 @@ std::map<std::pair<int, int>, double> reference(const PieDemoOptions &o) {
 
 }  // namespace
 
-TEST_CASE("demo pie: a contact clears its slice to the reading, then alpha occupied beyond it") {
+TEST_CASE("pie slice: a contact clears its slice to the reading, then alpha occupied beyond it") {
   // Columns x from -0.125 to 0.625 m, rows y from 0.125 down to -0.125 m; the sensor at the
   // corner shared by the four cells around the origin.
-  CHECK(matrix(sensing::pie_demo_update(one_sensor_east(0.375))) ==
+  CHECK(matrix(sensing::pie_slice_update(one_sensor_east(0.375))) ==
         "-0.41 -0.41 -0.41 -0.41 +0.85 +0.85\n"
         "-0.41 -0.41 -0.41 -0.41 +0.85 +0.85\n");
 }
 
-TEST_CASE("demo pie: a reading at max range is clear: its slice clears to max, nothing occupied") {
-  PieDemoOptions o = one_sensor_east(1.5);
+TEST_CASE("pie slice: a reading at max range is clear: its slice clears to max, nothing occupied") {
+  PieSliceOptions o = one_sensor_east(1.5);
   o.max_range_m = 0.375;
-  CHECK(matrix(sensing::pie_demo_update(o)) ==
+  CHECK(matrix(sensing::pie_slice_update(o)) ==
         "-0.41 -0.41 -0.41 -0.41 -0.41\n"
         "-0.41 -0.41 -0.41 -0.41 -0.41\n");
-  const auto slices = sensing::pie_demo_slices(o);
+  const auto slices = sensing::pie_slices(o);
   REQUIRE(slices.size() == 1);
   CHECK(!slices[0].contact);
   CHECK(slices[0].clear_m == 0.375);
 }
 
-TEST_CASE("demo pie: Figure 1's sensors, left to right, with the documented mounts") {
-  const auto slices = sensing::pie_demo_slices(PieDemoOptions{});
+TEST_CASE("pie slice: each sensor's slice points heading + mount, a contact ends alpha past its reading") {
+  const auto slices = sensing::pie_slices(six_sensors_south());
   std::string table;
   for (const auto &s : slices) {
     table += fmt::format("{:.0f} {:.2f} {:.2f} {:.2f} {}\n", s.heading_deg, s.reading_m, s.clear_m,
@@ -120,10 +136,11 @@ TEST_CASE("demo pie: Figure 1's sensors, left to right, with the documented moun
         "195 1.50 1.50 0.00 clear\n");
 }
 
-TEST_CASE("demo pie: the same cells and sums as an independent reference, on random readings") {
+TEST_CASE("pie slice: the same cells and sums as an independent reference, on random readings") {
   common::Rng rng(17);
   for (int trial = 0; trial < 60; ++trial) {
-    PieDemoOptions o;
+    PieSliceOptions o;
+    o.resolution_m = 0.1;
     o.x_m = rng.uniform(-1.0, 1.0);
     o.y_m = rng.uniform(-1.0, 1.0);
     o.heading_deg = rng.uniform(0.0, 360.0);
@@ -139,7 +156,7 @@ TEST_CASE("demo pie: the same cells and sums as an independent reference, on ran
     }
     CAPTURE(trial);
     const auto expected = reference(o);
-    const auto cells = sensing::pie_demo_update(o);
+    const auto cells = sensing::pie_slice_update(o);
     REQUIRE(cells.size() == expected.size());
     for (const auto &c : cells) {
       const auto it = expected.find({c.i, c.j});
@@ -149,17 +166,17 @@ TEST_CASE("demo pie: the same cells and sums as an independent reference, on ran
   }
 }
 
-TEST_CASE("demo pie: bad set-ups are refused with what was wrong") {
-  PieDemoOptions o;
+TEST_CASE("pie slice: bad set-ups are refused with what was wrong") {
+  PieSliceOptions o = six_sensors_south();
   o.readings_m = {1.0, 1.0};
   CHECK_THROWS_WITH_AS(sensing::validate(o), "--readings has 2 values but --mounts has 6", common::InputError);
-  o = PieDemoOptions{};
+  o = six_sensors_south();
   o.half_angle_deg = 90.0;
   CHECK_THROWS_WITH_AS(sensing::validate(o), "--beta must be in (0, 90) deg (got 90)", common::InputError);
-  o = PieDemoOptions{};
+  o = six_sensors_south();
   o.readings_m[2] = -1.0;
   CHECK_THROWS_WITH_AS(sensing::validate(o), "--readings item 3 must be a finite number >= 0 m (got -1)", common::InputError);
-  o = PieDemoOptions{};
+  o = six_sensors_south();
   o.resolution_m = 0.0001;
   CHECK_THROWS_WITH_AS(sensing::validate(o), "the slices would span more than 2000 cells a side: raise --resolution",
                        common::InputError);

@@ -1,6 +1,6 @@
-// The lecture's cone sweep (sensing/cone_sweep.hpp).
+// The cells of a range sensor's cone (sensing/cone_cells.hpp).
 
-#include "sensing/cone_sweep.hpp"
+#include "sensing/cone_cells.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@ namespace {
 
 constexpr double kRounding = 1e-9;
 
-ConeSweepStep step_at(const ConeSweepInput &in, double r) {
-  ConeSweepStep s;
+ConeArc arc_at(const ConeReading &in, double r) {
+  ConeArc s;
   s.r_cells = r;
   s.xa = in.x_cells + r * std::cos(in.phi_rad + in.sigma_rad / 2);
   s.ya = in.y_cells + r * std::sin(in.phi_rad + in.sigma_rad / 2);
@@ -23,14 +23,14 @@ ConeSweepStep step_at(const ConeSweepInput &in, double r) {
 
 }  // namespace
 
-ConeSweep cone_sweep(const ConeSweepInput &in) {
-  return cone_sweep_between(in, in.d_cells * (1 - in.eps), in.d_cells * (1 + in.eps));
+ConeCells cone_cells(const ConeReading &in) {
+  return cone_cells_between(in, in.d_cells * (1 - in.eps), in.d_cells * (1 + in.eps));
 }
 
-ConeSweep cone_sweep_between(const ConeSweepInput &in, double start, double end) {
-  ConeSweep sweep;
-  for (int j = 0; start + j * kConeSweepInc <= end + kRounding; ++j) {
-    ConeSweepStep s = step_at(in, start + j * kConeSweepInc);
+ConeCells cone_cells_between(const ConeReading &in, double start, double end) {
+  ConeCells sweep;
+  for (int j = 0; start + j * kConeRadiusInc <= end + kRounding; ++j) {
+    ConeArc s = arc_at(in, start + j * kConeRadiusInc);
     for (int k = 0; -in.sigma_rad / 2 + k * s.omega_rad <= in.sigma_rad / 2 + kRounding; ++k) {
       const double a = -in.sigma_rad / 2 + k * s.omega_rad;
       const double obj_x = in.x_cells + s.r_cells * std::cos(in.phi_rad + a);

@@ -1,6 +1,6 @@
-// A pose log on a numCells grid (sensing/log_map.hpp).
+// The bump and depth marks of one pose on a numCells grid (sensing/bump_depth_marks.hpp).
 
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 
 #include <fmt/format.h>
 
@@ -22,7 +22,7 @@ enum Level { occupied = 0, free_cell = 1, ray = 2 };  // lower wins
 // Marks gathered for one step: cell index -> strongest level.
 class StepMarks {
  public:
-  StepMarks(const LogMapOptions &o) : o_(o) {}
+  StepMarks(const BumpDepthOptions &o) : o_(o) {}
   void mark(double x, double y, Level level) {
     const double w = (o_.x_end_m - o_.x_start_m) / o_.cells_x;
     const double h = (o_.y_end_m - o_.y_start_m) / o_.cells_y;
@@ -36,11 +36,11 @@ class StepMarks {
   const std::map<int, Level> &marks() const { return marks_; }
 
  private:
-  const LogMapOptions &o_;
+  const BumpDepthOptions &o_;
   std::map<int, Level> marks_;
 };
 
-void mark_bumps(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
+void mark_bumps(const BumpDepthOptions &o, const PoseStep &s, StepMarks &marks) {
   const struct {
     double offset_rad;
     bool pressed;
@@ -52,13 +52,13 @@ void mark_bumps(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
   }
 }
 
-void mark_depth(const LogMapOptions &o, const LogStep &s, StepMarks &marks) {
+void mark_depth(const BumpDepthOptions &o, const PoseStep &s, StepMarks &marks) {
   const double step = std::min((o.x_end_m - o.x_start_m) / o.cells_x, (o.y_end_m - o.y_start_m) / o.cells_y);
   const double cos_t = std::cos(s.theta_rad);
   const double sin_t = std::sin(s.theta_rad);
   const double x0 = s.x_m + o.depth_origin_x_m * cos_t - o.depth_origin_y_m * sin_t;
   const double y0 = s.y_m + o.depth_origin_x_m * sin_t + o.depth_origin_y_m * cos_t;
-  for (int n = 0; n < kLogDepthRays; ++n) {
+  for (int n = 0; n < kDepthRays; ++n) {
     const double z = s.depth_m[static_cast<std::size_t>(n)];
     if (!(z > 0.0 && z < o.depth_max_m)) continue;
     const double angle = o.depth_angles_deg[static_cast<std::size_t>(n)] * common::kRadPerDeg;
@@ -81,7 +81,7 @@ void require_boundary_m(double x_start_m, double x_end_m, double y_start_m, doub
                         fmt::format("--boundary: YS must be less than YE (got {} and {})", y_start_m, y_end_m));
 }
 
-void validate(const LogMapOptions &o) {
+void validate(const BumpDepthOptions &o) {
   common::require_input(
       o.cells_x >= 1 && o.cells_x <= kMaxCells && o.cells_y >= 1 && o.cells_y <= kMaxCells,
       fmt::format("--cells must be X,Y with each 1 to {} (got {},{})", kMaxCells, o.cells_x, o.cells_y));
@@ -102,22 +102,23 @@ void validate(const LogMapOptions &o) {
   }
 }
 
-LogGrid make_log_grid(const LogMapOptions &o) {
-  LogGrid g;
+LogOddsGrid make_log_odds_grid(const BumpDepthOptions &o) {
+  LogOddsGrid g;
   g.cells_x = o.cells_x;
   g.cells_y = o.cells_y;
   g.log_odds.assign(static_cast<std::size_t>(o.cells_x * o.cells_y), mapping::log_odds(o.prior, o.base));
   return g;
 }
 
-void apply_log_step(const LogMapOptions &o, LogSensor sensor, const LogStep &s, LogGrid &grid) {
+void apply_bump_depth_marks(const BumpDepthOptions &o, BumpDepthSensor sensor, const PoseStep &s, LogOddsGrid &grid) {
   StepMarks marks(o);
   marks.mark(s.x_m, s.y_m, free_cell);
-  if (sensor == LogSensor::bump) mark_bumps(o, s, marks);
-  if (sensor == LogSensor::depth) mark_depth(o, s, marks);
+  if (sensor == BumpDepthSensor::bump) mark_bumps(o, s, marks);
+  if (sensor == BumpDepthSensor::depth) mark_depth(o, s, marks);
   const double l0 = mapping::log_odds(o.prior, o.base);
-  const double increments[] = {mapping::log_odds(kLogOccupiedP, o.base) - l0, mapping::log_odds(kLogFreeP, o.base) - l0,
-                               mapping::log_odds(kLogRayP, o.base) - l0};
+  const double increments[] = {mapping::log_odds(kBumpDepthOccupiedP, o.base) - l0,
+                               mapping::log_odds(kBumpDepthFreeP, o.base) - l0,
+                               mapping::log_odds(kBumpDepthRayP, o.base) - l0};
   for (const auto &[index, level] : marks.marks()) {
     grid.log_odds[static_cast<std::size_t>(index)] += increments[level];
   }

@@ -9,27 +9,30 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 
-using sensing::LogGrid;
-using sensing::LogMapOptions;
-using sensing::LogSensor;
-using sensing::LogStep;
+using sensing::LogOddsGrid;
+using sensing::BumpDepthOptions;
+using sensing::BumpDepthSensor;
+using sensing::PoseStep;
 
 namespace {
 
-// 5 x 5 cells of 1 m over [0, 5] x [0, 5], base 10.
-LogMapOptions five_by_five() {
-  LogMapOptions o;
+// 5 x 5 cells of 1 m over [0, 5] x [0, 5], base 10; bumpers 1 m from the centre, nine depth
+// rays 57 deg across (7.125 deg apart, depth_5 straight ahead), max 10 m.
+BumpDepthOptions five_by_five() {
+  BumpDepthOptions o;
   o.cells_x = 5;
   o.cells_y = 5;
   o.x_end_m = 5.0;
   o.y_end_m = 5.0;
   o.bump_radius_m = 1.0;
+  o.depth_angles_deg = {28.5, 21.375, 14.25, 7.125, 0.0, -7.125, -14.25, -21.375, -28.5};
+  o.depth_max_m = 10.0;
   return o;
 }
 
-std::string matrix(const LogGrid &g) {
+std::string matrix(const LogOddsGrid &g) {
   std::string out;
   for (int j = g.cells_y - 1; j >= 0; --j) {
     for (int i = 0; i < g.cells_x; ++i) out += fmt::format("{}{:+.3f}", i == 0 ? "" : " ", g.at(i, j));
@@ -40,18 +43,18 @@ std::string matrix(const LogGrid &g) {
 
 // The rule written out independently: three sets of cells per step, then occupied, else
 // free, else ray; cells found by dividing by the cell size, rays stepped by accumulation.
-std::vector<double> reference(const LogMapOptions &o, LogSensor sensor, const std::vector<LogStep> &steps) {
+std::vector<double> reference(const BumpDepthOptions &o, BumpDepthSensor sensor, const std::vector<PoseStep> &steps) {
   const double w = (o.x_end_m - o.x_start_m) / o.cells_x, h = (o.y_end_m - o.y_start_m) / o.cells_y;
   const double l0 = std::log10(o.prior / (1 - o.prior));
   std::vector<double> l(static_cast<std::size_t>(o.cells_x * o.cells_y), l0);
-  for (const LogStep &s : steps) {
+  for (const PoseStep &s : steps) {
     std::set<int> occ, free, ray;
     const auto put = [&](std::set<int> &into, double x, double y) {
       const int i = static_cast<int>(std::floor((x - o.x_start_m) / w)), j = static_cast<int>(std::floor((y - o.y_start_m) / h));
       if (x >= o.x_start_m && y >= o.y_start_m && i < o.cells_x && j < o.cells_y) into.insert(j * o.cells_x + i);
     };
     put(free, s.x_m, s.y_m);
-    if (sensor == LogSensor::bump) {
+    if (sensor == BumpDepthSensor::bump) {
       const double pi = std::acos(-1.0);
       const double offsets[] = {-pi / 4, pi / 4, 0.0};
       const bool pressed[] = {s.bump_right, s.bump_left, s.bump_front};
@@ -78,12 +81,12 @@ std::vector<double> reference(const LogMapOptions &o, LogSensor sensor, const st
 
 }  // namespace
 
-TEST_CASE("map-log, bump: front pressed +5.000, the robot's cell and the side bumpers -0.368") {
-  const LogMapOptions o = five_by_five();
-  LogGrid g = sensing::make_log_grid(o);
-  LogStep s;
+TEST_CASE("bump marks: front pressed +5.000, the robot's cell and the side bumpers -0.368") {
+  const BumpDepthOptions o = five_by_five();
+  LogOddsGrid g = sensing::make_log_odds_grid(o);
+  PoseStep s;
   s.x_m = 2.5, s.y_m = 2.5, s.theta_rad = 0.0, s.bump_front = true;
-  sensing::apply_log_step(o, LogSensor::bump, s, g);
+  sensing::apply_bump_depth_marks(o, BumpDepthSensor::bump, s, g);
   CHECK(matrix(g) ==
         "+0.000 +0.000 +0.000 +0.000 +0.000\n"
         "+0.000 +0.000 +0.000 -0.368 +0.000\n"
@@ -92,13 +95,13 @@ TEST_CASE("map-log, bump: front pressed +5.000, the robot's cell and the side bu
         "+0.000 +0.000 +0.000 +0.000 +0.000\n");
 }
 
-TEST_CASE("map-log, depth: the ray's cells -0.176, its end +5.000, the robot's cell -0.368; 0 and max ignored") {
-  const LogMapOptions o = five_by_five();
-  LogGrid g = sensing::make_log_grid(o);
-  LogStep s;
+TEST_CASE("depth marks: the ray's cells -0.176, its end +5.000, the robot's cell -0.368; 0 and max ignored") {
+  const BumpDepthOptions o = five_by_five();
+  LogOddsGrid g = sensing::make_log_odds_grid(o);
+  PoseStep s;
   s.x_m = 0.5, s.y_m = 2.5, s.theta_rad = 0.0;
   s.depth_m = {0, 0, 0, 0, 3.0, 0, 10.0, 0, 0};  // depth_5 straight ahead; depth_7 at max
-  sensing::apply_log_step(o, LogSensor::depth, s, g);
+  sensing::apply_bump_depth_marks(o, BumpDepthSensor::depth, s, g);
   CHECK(matrix(g) ==
         "+0.000 +0.000 +0.000 +0.000 +0.000\n"
         "+0.000 +0.000 +0.000 +0.000 +0.000\n"
@@ -107,18 +110,18 @@ TEST_CASE("map-log, depth: the ray's cells -0.176, its end +5.000, the robot's c
         "+0.000 +0.000 +0.000 +0.000 +0.000\n");
 }
 
-TEST_CASE("map-log, depth: axial readings (depth along the sensor's axis) from a sensor ahead of the centre") {
-  LogMapOptions o = five_by_five();
+TEST_CASE("depth marks: axial readings (depth along the sensor's axis) from a sensor ahead of the centre") {
+  BumpDepthOptions o = five_by_five();
   o.depth_reading = sensing::DepthReading::axial;
   o.depth_origin_x_m = 1.0;  // the sensor 1 m ahead: at (1.5, 2.5)
   o.depth_angles_deg[0] = 60.0;
-  LogGrid g = sensing::make_log_grid(o);
-  LogStep s;
+  LogOddsGrid g = sensing::make_log_odds_grid(o);
+  PoseStep s;
   s.x_m = 0.5, s.y_m = 2.5, s.theta_rad = 0.0;
   // depth_5 straight ahead: 2 m along the axis is 2 m of range, to (3.5, 2.5); depth_1 at 60 deg:
   // 1 m along the axis is 2 m of range, to (2.5, 4.23).
   s.depth_m = {1.0, 0, 0, 0, 2.0, 0, 0, 0, 0};
-  sensing::apply_log_step(o, LogSensor::depth, s, g);
+  sensing::apply_bump_depth_marks(o, BumpDepthSensor::depth, s, g);
   CHECK(matrix(g) ==
         "+0.000 +0.000 +5.000 +0.000 +0.000\n"
         "+0.000 +0.000 -0.176 +0.000 +0.000\n"
@@ -130,25 +133,25 @@ TEST_CASE("map-log, depth: axial readings (depth along the sensor's axis) from a
                        common::InputError);
 }
 
-TEST_CASE("map-log: the same grid as the rule written out, on logs of random poses and readings") {
+TEST_CASE("bump and depth marks: the same grid as the rule written out, on random poses and readings") {
   common::Rng rng(17);
   for (int trial = 0; trial < 40; ++trial) {
-    LogMapOptions o;
+    BumpDepthOptions o = five_by_five();
     o.cells_x = 5 + static_cast<int>(rng.uniform(0, 40));
     o.cells_y = 5 + static_cast<int>(rng.uniform(0, 40));
     o.x_start_m = rng.uniform(-5, 0), o.x_end_m = rng.uniform(1, 6);
     o.y_start_m = rng.uniform(-5, 0), o.y_end_m = rng.uniform(1, 6);
     o.bump_radius_m = rng.uniform(0.1, 0.5);
-    const LogSensor sensor = trial % 2 ? LogSensor::depth : LogSensor::bump;
-    std::vector<LogStep> steps(30);
-    for (LogStep &s : steps) {
+    const BumpDepthSensor sensor = trial % 2 ? BumpDepthSensor::depth : BumpDepthSensor::bump;
+    std::vector<PoseStep> steps(30);
+    for (PoseStep &s : steps) {
       s.x_m = rng.uniform(o.x_start_m - 1, o.x_end_m + 1), s.y_m = rng.uniform(o.y_start_m - 1, o.y_end_m + 1);
       s.theta_rad = rng.uniform(-4, 4);
       s.bump_right = rng.uniform01() < 0.3, s.bump_left = rng.uniform01() < 0.3, s.bump_front = rng.uniform01() < 0.3;
       for (double &z : s.depth_m) z = rng.uniform01() < 0.1 ? 0.0 : rng.uniform(0.0, 12.0);
     }
-    LogGrid g = sensing::make_log_grid(o);
-    for (const LogStep &s : steps) sensing::apply_log_step(o, sensor, s, g);
+    LogOddsGrid g = sensing::make_log_odds_grid(o);
+    for (const PoseStep &s : steps) sensing::apply_bump_depth_marks(o, sensor, s, g);
     const auto expected = reference(o, sensor, steps);
     CAPTURE(trial);
     REQUIRE(g.log_odds.size() == expected.size());
@@ -156,8 +159,8 @@ TEST_CASE("map-log: the same grid as the rule written out, on logs of random pos
   }
 }
 
-TEST_CASE("map-log: bad options are refused with what was wrong") {
-  LogMapOptions o = five_by_five();
+TEST_CASE("bump and depth marks: bad options are refused with what was wrong") {
+  BumpDepthOptions o = five_by_five();
   o.x_end_m = 0.0;
   CHECK_THROWS_WITH_AS(sensing::validate(o), "--boundary: XS must be less than XE (got 0 and 0)", common::InputError);
   o = five_by_five();

@@ -1,6 +1,6 @@
-// The course's pie-slice update alone (sensing/pie_demo.hpp).
+// The IR pie-slice update on a square grid (sensing/pie_slice.hpp).
 
-#include "sensing/pie_demo.hpp"
+#include "sensing/pie_slice.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,7 @@ void require_finite(double value, const char *what) {
 using Part = PieVerdict;
 
 // Where point (px, py) lies with respect to one sensor's slices.
-Part part_of(const PieDemoSlice &s, double beta_rad, double px, double py) {
+Part part_of(const PieSlice &s, double beta_rad, double px, double py) {
   const double ex = px - s.x_m;
   const double ey = py - s.y_m;
   const double distance = std::hypot(ex, ey);
@@ -46,7 +46,7 @@ Part part_of(const PieDemoSlice &s, double beta_rad, double px, double py) {
 
 }  // namespace
 
-PieVerdict pie_demo_verdict(const PieDemoSlice &s, double beta_rad, double x0, double y0, double r) {
+PieVerdict pie_slice_verdict(const PieSlice &s, double beta_rad, double x0, double y0, double r) {
   const double points[5][2] = {{x0, y0}, {x0 + r, y0}, {x0, y0 + r}, {x0 + r, y0 + r}, {x0 + r / 2, y0 + r / 2}};
   bool clear = false;
   for (const auto &p : points) {
@@ -60,13 +60,13 @@ PieVerdict pie_demo_verdict(const PieDemoSlice &s, double beta_rad, double x0, d
 namespace {
 
 // The verdict of one sensor on the cell [i r, (i+1) r] x [j r, (j+1) r].
-Part verdict(const PieDemoSlice &s, double beta_rad, double r, int i, int j) {
-  return pie_demo_verdict(s, beta_rad, i * r, j * r, r);
+Part verdict(const PieSlice &s, double beta_rad, double r, int i, int j) {
+  return pie_slice_verdict(s, beta_rad, i * r, j * r, r);
 }
 
 }  // namespace
 
-void validate(const PieDemoOptions &o) {
+void validate(const PieSliceOptions &o) {
   for (const auto &[value, what] : {std::pair{o.x_m, "the robot's x"}, std::pair{o.y_m, "the robot's y"},
                                     std::pair{o.heading_deg, "the robot's heading"},
                                     std::pair{o.half_angle_deg, "--beta"}, std::pair{o.contact_m, "--alpha"},
@@ -91,8 +91,8 @@ void validate(const PieDemoOptions &o) {
   common::require_input(o.resolution_m > 0.0, fmt::format("--resolution must be > 0 m (got {})", o.resolution_m));
   common::require_input(o.max_range_m > 0.0, fmt::format("--max-range must be > 0 m (got {})", o.max_range_m));
   const double reach = std::min(*std::max_element(o.readings_m.begin(), o.readings_m.end()), o.max_range_m) + o.contact_m;
-  // Far from the origin a cell index loses its precision (at 1e308 m every slice missed
-  // every cell, and the demo said "no cell updated").
+  // Far from the origin a cell index loses its precision (at 1e308 m every slice would miss
+  // every cell, and no cell would be updated).
   common::require_input(
       std::abs(o.x_m) / o.resolution_m <= kMaxPoseCells && std::abs(o.y_m) / o.resolution_m <= kMaxPoseCells,
       fmt::format("--pose X and Y must lie within {:g} cells of --resolution of 0,0 (got {:g}, {:g})", kMaxPoseCells,
@@ -102,10 +102,10 @@ void validate(const PieDemoOptions &o) {
       fmt::format("the slices would span more than {} cells a side: raise --resolution", kMaxCellsPerSide));
 }
 
-std::vector<PieDemoSlice> pie_demo_slices(const PieDemoOptions &o) {
-  std::vector<PieDemoSlice> slices;
+std::vector<PieSlice> pie_slices(const PieSliceOptions &o) {
+  std::vector<PieSlice> slices;
   for (std::size_t n = 0; n < o.readings_m.size(); ++n) {
-    PieDemoSlice s;
+    PieSlice s;
     s.x_m = o.x_m;
     s.y_m = o.y_m;
     s.heading_deg = std::fmod(std::fmod(o.heading_deg + o.mounts_deg[n], 360.0) + 360.0, 360.0);
@@ -118,13 +118,13 @@ std::vector<PieDemoSlice> pie_demo_slices(const PieDemoOptions &o) {
   return slices;
 }
 
-std::vector<PieDemoCell> pie_demo_update(const PieDemoOptions &o) {
+std::vector<PieSliceCell> pie_slice_update(const PieSliceOptions &o) {
   const double r = o.resolution_m;
   const double beta = o.half_angle_deg * common::kRadPerDeg;
-  const double occupied = mapping::log_odds(kPieDemoOccupiedP);
-  const double clear = mapping::log_odds(kPieDemoClearP);
-  std::map<std::pair<int, int>, PieDemoCell> cells;  // keyed (-j, i): north row first
-  for (const PieDemoSlice &s : pie_demo_slices(o)) {
+  const double occupied = mapping::log_odds(kPieSliceOccupiedP);
+  const double clear = mapping::log_odds(kPieSliceClearP);
+  std::map<std::pair<int, int>, PieSliceCell> cells;  // keyed (-j, i): north row first
+  for (const PieSlice &s : pie_slices(o)) {
     const double reach = s.contact_m;
     const int i0 = static_cast<int>(std::floor((s.x_m - reach) / r)) - 1;
     const int i1 = static_cast<int>(std::floor((s.x_m + reach) / r)) + 1;
@@ -134,7 +134,7 @@ std::vector<PieDemoCell> pie_demo_update(const PieDemoOptions &o) {
       for (int i = i0; i <= i1; ++i) {
         const Part part = verdict(s, beta, r, i, j);
         if (part == Part::outside) continue;
-        PieDemoCell &c = cells[{-j, i}];
+        PieSliceCell &c = cells[{-j, i}];
         c.i = i;
         c.j = j;
         c.log_odds += part == Part::contact ? occupied : clear;
@@ -142,7 +142,7 @@ std::vector<PieDemoCell> pie_demo_update(const PieDemoOptions &o) {
       }
     }
   }
-  std::vector<PieDemoCell> out;
+  std::vector<PieSliceCell> out;
   for (const auto &[key, c] : cells) out.push_back(c);
   return out;
 }

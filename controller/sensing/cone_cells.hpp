@@ -1,8 +1,9 @@
 #pragma once
-// The sensor-model lecture's cone sweep (Khepera III; `maze_mapper demo cone`): the second
-// loop of its pseudocode, exactly. Coordinates are grid cells, as the pseudocode's are: the
-// sensor at (x_s, y_s) cells pointing phi (rad, counter-clockwise from +x), reading d cells,
-// beam width sigma (rad, full aperture), relative distance error eps.
+// The cells a range sensor's cone marks at its reading: the second loop of the sensor-model
+// lecture's pseudocode (Khepera III; `maze_mapper demo cone` prints it step by step), exactly.
+// Coordinates are grid cells, as the pseudocode's are: the sensor at (x_s, y_s) cells
+// pointing phi (rad, counter-clockwise from +x), reading d cells, beam width sigma (rad, full
+// aperture), relative distance error eps.
 //
 //   r_j = d (1 - eps) + j INC                      while r_j <= d (1 + eps),  INC = 0.25
 //     arc end points at r_j:  x_a = x_s + r_j cos(phi + sigma/2),  y_a = y_s + r_j sin(phi + sigma/2)
@@ -20,20 +21,10 @@
 
 namespace sensing {
 
-// The lecture's Khepera III numbers. `rays` is what the maze run's simulated sensor casts
-// across the aperture (the ir-ring and sonar-ring profiles); the sweep itself has no rays.
-struct KheperaSensor {
-  const char *name;
-  double aperture_rad;
-  int rays;
-  double distance_error;  // eps, a fraction of the reading
-};
-inline constexpr KheperaSensor kKheperaIr{"ir", 0.03, 3, 0.03};
-inline constexpr KheperaSensor kKheperaSonar{"sonar", 0.4, 5, 0.066};
+inline constexpr double kConeRadiusInc = 0.25;  // INC, cells
 
-inline constexpr double kConeSweepInc = 0.25;  // cells
-
-struct ConeSweepInput {
+// One reading of a cone sensor, in cells.
+struct ConeReading {
   double x_cells = 0.0;
   double y_cells = 0.0;
   double phi_rad = 0.0;
@@ -42,22 +33,24 @@ struct ConeSweepInput {
   double eps = 0.0;             // in [0, 1)
 };
 
-struct ConeSweepStep {
+// One radius r_j of the sweep: its arc's end points, its angle step and how many a_k it swept.
+struct ConeArc {
   double r_cells = 0.0;
   double xa = 0.0, ya = 0.0, xb = 0.0, yb = 0.0;
   double omega_rad = 0.0;
   int angles = 0;  // how many a_k this step swept
 };
 
-struct ConeSweep {
-  std::vector<ConeSweepStep> steps;
+struct ConeCells {
+  std::vector<ConeArc> steps;
   std::vector<std::pair<int, int>> cells;  // (i, j) marked, each once, sorted by i then j
 };
 
-// The sweep of a valid input (d, sigma > 0, eps in [0, 1), all finite; checked by the caller).
-ConeSweep cone_sweep(const ConeSweepInput &input);
+// The cells of a valid reading's arc, d (1 - eps) ... d (1 + eps) (d, sigma > 0, eps in
+// [0, 1), all finite; checked by the caller).
+ConeCells cone_cells(const ConeReading &reading);
 // The same sweep over the radii r_j = start + j INC while r_j <= end (cells), whatever d and
 // eps say: the room map's free cone (0 ... d (1 - eps)) uses it. At r = 0 one point, the sensor.
-ConeSweep cone_sweep_between(const ConeSweepInput &input, double start_cells, double end_cells);
+ConeCells cone_cells_between(const ConeReading &reading, double start_cells, double end_cells);
 
 }  // namespace sensing

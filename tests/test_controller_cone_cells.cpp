@@ -6,16 +6,16 @@
 #include <vector>
 
 #include "common/random.hpp"
-#include "sensing/cone_sweep.hpp"
+#include "sensing/cone_cells.hpp"
 
-using sensing::ConeSweepInput;
+using sensing::ConeReading;
 
 namespace {
 
 using Cells = std::vector<std::pair<int, int>>;
 
 // The lecture's loops as written, with accumulated steps (r += INC, a += omega).
-Cells reference(const ConeSweepInput &in) {
+Cells reference(const ConeReading &in) {
   std::set<std::pair<int, int>> cells;
   for (double r = in.d_cells * (1 - in.eps); r <= in.d_cells * (1 + in.eps) + 1e-9; r += 0.25) {
     const double xa = in.x_cells + r * std::cos(in.phi_rad + in.sigma_rad / 2);
@@ -33,19 +33,15 @@ Cells reference(const ConeSweepInput &in) {
 
 }  // namespace
 
-TEST_CASE("demo cone: the Khepera III numbers of the lecture") {
-  CHECK(sensing::kKheperaIr.aperture_rad == 0.03);
-  CHECK(sensing::kKheperaIr.distance_error == 0.03);
-  CHECK(sensing::kKheperaSonar.aperture_rad == 0.4);
-  CHECK(sensing::kKheperaSonar.distance_error == 0.066);
-  CHECK(sensing::kConeSweepInc == 0.25);
+TEST_CASE("cone cells: the radius steps by the lecture's INC, a quarter of a cell") {
+  CHECK(sensing::kConeRadiusInc == 0.25);
 }
 
-TEST_CASE("demo cone: one distance step by hand (eps 0, d 4 cells, sigma 0.4 rad, east)") {
+TEST_CASE("cone cells: one distance step by hand (eps 0, d 4 cells, sigma 0.4 rad, east)") {
   // chord 2 * 4 sin(0.2) = 1.5894 cells, omega = 0.4 / 1.5894 / 2 = 0.12583 rad: a_k = -0.2,
   // -0.0742, 0.0517, 0.1775 (the next, 0.3033, is past 0.2); points (3.92, -0.79), (3.99,
   // -0.30), (3.99, 0.21), (3.94, 0.71).
-  const auto sweep = sensing::cone_sweep(ConeSweepInput{0.0, 0.0, 0.0, 4.0, 0.4, 0.0});
+  const auto sweep = sensing::cone_cells(ConeReading{0.0, 0.0, 0.0, 4.0, 0.4, 0.0});
   REQUIRE(sweep.steps.size() == 1);
   CHECK(sweep.steps[0].r_cells == 4.0);
   CHECK(sweep.steps[0].omega_rad == doctest::Approx(0.125834).epsilon(1e-5));
@@ -53,23 +49,23 @@ TEST_CASE("demo cone: one distance step by hand (eps 0, d 4 cells, sigma 0.4 rad
   CHECK(sweep.cells == Cells{{3, -1}, {3, 0}});
 }
 
-TEST_CASE("demo cone: the distance steps run from d(1 - eps) to d(1 + eps) by 0.25 cells") {
+TEST_CASE("cone cells: the distance steps run from d(1 - eps) to d(1 + eps) by 0.25 cells") {
   // Sonar, d 20: 18.68 ... 21.32, so j = 0 ... 10 (r = 21.18; 21.43 is past the end).
-  const auto sweep = sensing::cone_sweep(ConeSweepInput{0.0, 0.0, 0.0, 20.0, 0.4, 0.066});
+  const auto sweep = sensing::cone_cells(ConeReading{0.0, 0.0, 0.0, 20.0, 0.4, 0.066});
   REQUIRE(sweep.steps.size() == 11);
   CHECK(sweep.steps.front().r_cells == doctest::Approx(18.68));
   CHECK(sweep.steps.back().r_cells == doctest::Approx(21.18));
   // An end that lands on the bound is swept: d 10, eps 0.05: 9.5 ... 10.5 is 5 steps.
-  CHECK(sensing::cone_sweep(ConeSweepInput{0.0, 0.0, 0.0, 10.0, 0.03, 0.05}).steps.size() == 5);
+  CHECK(sensing::cone_cells(ConeReading{0.0, 0.0, 0.0, 10.0, 0.03, 0.05}).steps.size() == 5);
 }
 
-TEST_CASE("demo cone: the same cells as the loops written out, on random ranges and poses") {
+TEST_CASE("cone cells: the same cells as the loops written out, on random ranges and poses") {
   common::Rng rng(4);
   for (int trial = 0; trial < 200; ++trial) {
     const bool sonar = trial % 2 == 1;
-    const ConeSweepInput in{rng.uniform(-20.0, 20.0), rng.uniform(-20.0, 20.0), rng.uniform(-3.2, 3.2),
+    const ConeReading in{rng.uniform(-20.0, 20.0), rng.uniform(-20.0, 20.0), rng.uniform(-3.2, 3.2),
                             rng.uniform(1.0, 60.0), sonar ? 0.4 : 0.03, sonar ? 0.066 : 0.03};
     CAPTURE(trial);
-    CHECK(sensing::cone_sweep(in).cells == reference(in));
+    CHECK(sensing::cone_cells(in).cells == reference(in));
   }
 }
