@@ -24,7 +24,7 @@
 #include "maze/world/world.hpp"
 #include "plan/wavefront.hpp"
 #include "robot/metric_controller.hpp"
-#include "sensing/log_map.hpp"
+#include "sensing/bump_depth_marks.hpp"
 
 namespace app {
 
