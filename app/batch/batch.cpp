@@ -1,4 +1,5 @@
 #include "app/batch/batch.hpp"
+#include "app/run/report_keys.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -342,8 +343,8 @@ struct TableColumn {
   std::string_view name;
   int width;
 };
-constexpr TableColumn kTableColumns[] = {{"size", 9},          {"moves", 6},        {"coverage", 8},
-                                         {"wall_accuracy", 13}, {"cell_accuracy", 13}, {"goal", 11},
+constexpr TableColumn kTableColumns[] = {{"size", 9},          {"moves", 6},        {report_key::coverage, 8},
+                                         {report_key::wall_accuracy, 13}, {report_key::cell_accuracy, 13}, {"goal", 11},
                                          {"speed_run", 9},     {"ms", 7}};
 
 std::string table_line(const std::string &world, std::size_t world_width, const std::vector<std::string> &cells,
@@ -351,7 +352,7 @@ std::string table_line(const std::string &world, std::size_t world_width, const 
   std::string line = fmt::format("{:<{}}", world, world_width);
   std::size_t cell = 0;
   for (const TableColumn &column : kTableColumns) {
-    if (column.name == "cell_accuracy" && !rooms) continue;
+    if (column.name == report_key::cell_accuracy && !rooms) continue;
     line += fmt::format("  {:>{}}", cells[cell++], column.width);
   }
   return line + "  " + end + "\n";

@@ -1,6 +1,7 @@
 // A batch row, its columns and its totals (app/batch/batch_row.hpp).
 
 #include "app/batch/batch_row.hpp"
+#include "app/run/report_keys.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -130,9 +131,9 @@ const std::array kColumns{
              r.wall_time_ms = number_in(in, 0.0, kMostMs, "must be a number of milliseconds from 0");
            },
            [](BatchRow &r, const Json &j) { r.wall_time_ms = json_number<double>(j); }},
-    percent_column<&BatchRow::coverage_percent>("coverage"),
-    percent_column<&BatchRow::wall_accuracy_percent>("wall_accuracy"),
-    percent_column<&BatchRow::cell_accuracy_percent>("cell_accuracy"),
+    percent_column<&BatchRow::coverage_percent>(report_key::coverage),
+    percent_column<&BatchRow::wall_accuracy_percent>(report_key::wall_accuracy),
+    percent_column<&BatchRow::cell_accuracy_percent>(report_key::cell_accuracy),
     text_column<&BatchRow::goal>("goal"),
     Column{"speed_run", [](const BatchRow &r) { return r.speed_run; },
            [](BatchRow &r, const CellIn &in) { r.speed_run = in.field.text; },
@@ -188,9 +189,9 @@ std::string counts_text(int worlds, int ok, int interrupted) {
 std::string scores_text(RunKind kind, const KindTotals &t) {
   std::string out;
   if (kind != RunKind::room) out += fmt::format("; moves {}", t.moves);
-  out += "; " + mean_text(t.coverage, "coverage");
-  out += "; " + (kind == RunKind::room ? mean_text(t.cell_accuracy, "cell_accuracy")
-                                       : mean_text(t.wall_accuracy, "wall_accuracy"));
+  out += "; " + mean_text(t.coverage, report_key::coverage);
+  out += "; " + (kind == RunKind::room ? mean_text(t.cell_accuracy, report_key::cell_accuracy)
+                                       : mean_text(t.wall_accuracy, report_key::wall_accuracy));
   if (t.with_goal > 0 || kind == RunKind::mms) out += fmt::format("; goal reached {} of {}", t.goal_reached, t.with_goal);
   if (kind == RunKind::mms) {
     out += fmt::format("; mean score {}", t.score.count > 0 ? mms_number(t.score.sum / t.score.count) : "-");

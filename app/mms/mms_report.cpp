@@ -1,4 +1,5 @@
 #include "app/mms/mms_report.hpp"
+#include "app/run/report_keys.hpp"
 
 #include <initializer_list>
 #include <optional>
@@ -63,7 +64,7 @@ Report mms_report(const RunOptions &options, const MmsOptions &mms, const MmsRun
   e.both("crashes", std::to_string(r.crashes), Json(r.crashes));
   robot_entries({"visited"});
   e.both("goal", goal_text(run.summary.reached_goal));
-  robot_entries({"reachable", "coverage", "wall_accuracy"});
+  robot_entries({report_key::reachable, report_key::coverage, report_key::wall_accuracy});
   add_count(e, "total_distance", std::optional<long long>(s.total_distance()));
   add_count(e, "total_turns", std::optional<int>(s.total_turns()));
   add_stat(e, "total_effective_distance", s.total_effective_distance());

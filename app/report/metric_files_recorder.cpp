@@ -1,6 +1,7 @@
 // The files of a run in metres (app/report/metric_files_recorder.hpp).
 
 #include "app/report/metric_files_recorder.hpp"
+#include "app/run/report_keys.hpp"
 
 #include <filesystem>
 #include <sstream>
@@ -109,7 +110,7 @@ std::vector<NamedFile> MetricFilesRecorder::pictures_now(const robot::MetricCont
 void MetricFilesRecorder::finish(const MetricRunEnd &end) {
   const robot::MetricController &c = end.controller;
   const std::vector<NamedFile> last = pictures_now(c, "map", "wave");  // map.png, wave.png
-  const MetricTruthScores scores{end.report.text("cell_accuracy"), end.report.text("coverage")};
+  const MetricTruthScores scores{end.report.text(report_key::cell_accuracy), end.report.text(report_key::coverage)};
   replay_->finish(c);
   MetricReplayText text;  // what replay.html shows besides the frames
   text.title = world_;

@@ -101,7 +101,7 @@ struct ReplayInput {
   std::string caption;                // "model cell, K 3"
   std::int64_t steps = 0;             // the run's last step
   std::size_t reachable_cells = 0;    // cells reachable from the start: coverage at each move (0: none)
-  // The summary block's lines, key and value ("coverage", "100.00%").
+  // The summary block's lines, key and value (coverage, 100.00%).
   std::vector<std::pair<std::string, std::string>> summary;
   std::size_t max_bytes = kReplayMaxBytes;
 };

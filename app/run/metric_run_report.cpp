@@ -1,6 +1,7 @@
 // The room run's report (app/run/metric_run_report.hpp).
 
 #include "app/run/metric_run_report.hpp"
+#include "app/run/report_keys.hpp"
 
 #include <cmath>
 
@@ -42,7 +43,7 @@ void add_model(Report &e, const RunOptions &options, const sensing::SetUp &setup
 
 void add_score(Report &e, const MetricRunSummary &s) {
   const double right = share_percent(s.cells_right, s.cells_total);
-  e.both("cell_accuracy",
+  e.both(std::string(report_key::cell_accuracy),
          fmt::format("{:.2f}% ({} of {} cells right; observed {} of {})", right, s.cells_right, s.cells_total,
                      s.observed_cells_right, s.observed_cells),
          two_decimals(right));
@@ -51,7 +52,7 @@ void add_score(Report &e, const MetricRunSummary &s) {
   e.json_only("observed_cells", s.observed_cells);
   e.json_only("observed_cells_right", s.observed_cells_right);
   const double covered = 100.0 * s.observed_share();
-  e.both("coverage",
+  e.both(std::string(report_key::coverage),
          fmt::format("{:.2f}% ({} of {} reachable free cells observed)", covered, s.reachable_free_observed,
                      s.reachable_free),
          two_decimals(covered));

@@ -1,4 +1,5 @@
 #include "app/run/run_report.hpp"
+#include "app/run/report_keys.hpp"
 
 #include <cmath>
 #include <string>
@@ -111,8 +112,8 @@ Report run_report(const RunOptions &o, const RunSummary &s) {
   e.both("visited", std::to_string(s.visited), Json(s.visited));
   add_goal_entries(e, o, s);
   e.both("reachable", std::to_string(s.score.reachable_cells), Json(s.score.reachable_cells));
-  e.both("coverage", percent(s.score.coverage_percent()), Json(two_decimals(s.score.coverage_percent())));
-  e.both("wall_accuracy", percent(s.score.wall_accuracy_percent()),
+  e.both(std::string(report_key::coverage), percent(s.score.coverage_percent()), Json(two_decimals(s.score.coverage_percent())));
+  e.both(std::string(report_key::wall_accuracy), percent(s.score.wall_accuracy_percent()),
          Json(two_decimals(s.score.wall_accuracy_percent())));
   add_plan_entries(e, s);
   add_speed_run_entries(e, o, s);
