@@ -36,21 +36,21 @@ app::RunOptions with(explore::StrategyKind strategy, sensing::ModelKind model = 
 }  // namespace
 
 TEST_CASE("room options: one that does nothing for the strategy or model asked is warned about as run warns") {
-  using MetricStrategy = explore::StrategyKind;
-  CHECK(room_warnings({"--goal", "--dilate"}, with(MetricStrategy::frontier)) ==
+  using explore::StrategyKind;
+  CHECK(room_warnings({"--goal", "--dilate"}, with(StrategyKind::frontier)) ==
         std::vector<std::string>{"warning: --goal has no effect without --strategy wavefront",
                                  "warning: --dilate has no effect without --strategy wavefront (frontier keeps the "
                                  "body's radius clear)"});
-  CHECK(room_warnings({"--goal", "--dilate"}, with(MetricStrategy::wavefront)).empty());
-  CHECK(room_warnings({"--waypoints", "--laps"}, with(MetricStrategy::wander)) ==
+  CHECK(room_warnings({"--goal", "--dilate"}, with(StrategyKind::wavefront)).empty());
+  CHECK(room_warnings({"--waypoints", "--laps"}, with(StrategyKind::wander)) ==
         std::vector<std::string>{"warning: --waypoints has no effect without --strategy waypoints",
                                  "warning: --laps has no effect without --strategy waypoints"});
-  CHECK(room_warnings({"--waypoints", "--laps"}, with(MetricStrategy::waypoints)).empty());
-  CHECK(room_warnings({"--depth-reading", "--depth-origin"}, with(MetricStrategy::frontier, sensing::ModelKind::pie)) ==
+  CHECK(room_warnings({"--waypoints", "--laps"}, with(StrategyKind::waypoints)).empty());
+  CHECK(room_warnings({"--depth-reading", "--depth-origin"}, with(StrategyKind::frontier, sensing::ModelKind::pie)) ==
         std::vector<std::string>{"warning: --depth-reading has no effect with the pie model (read by depth)",
                                  "warning: --depth-origin has no effect with the pie model (read by depth)"});
-  CHECK(room_warnings({"--depth-reading"}, with(MetricStrategy::frontier, sensing::ModelKind::depth)).empty());
-  CHECK(room_warnings({}, with(MetricStrategy::frontier)).empty());
+  CHECK(room_warnings({"--depth-reading"}, with(StrategyKind::frontier, sensing::ModelKind::depth)).empty());
+  CHECK(room_warnings({}, with(StrategyKind::frontier)).empty());
 }
 
 TEST_CASE("room options: an option that does not apply warns and the run goes on") {
