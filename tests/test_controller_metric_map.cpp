@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include "app/course/demo_pie.hpp"
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -95,16 +97,7 @@ TEST_CASE("room lidar: cells before the hit free, the hit occupied, no return fr
 TEST_CASE("room pie: the same verdicts as the pie-slice update on the same cells") {
   // The IR assignment's Figure 1 (demo pie's set-up), on a room grid whose corners are on
   // multiples of 0.1 m.
-  sensing::PieSliceOptions figure;
-  figure.x_m = 1.5;
-  figure.y_m = 2.5;
-  figure.heading_deg = 270.0;
-  figure.mounts_deg = {75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
-  figure.readings_m = {1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
-  figure.half_angle_deg = 10.0;
-  figure.contact_m = 0.1;
-  figure.resolution_m = 0.1;
-  figure.max_range_m = 1.5;
+  const sensing::PieSliceOptions figure = app::course::figure_1_options();
   mapping::SensorModelOptions so;
   so.prior = 0.5;
   const mapping::SensorModel model(so);

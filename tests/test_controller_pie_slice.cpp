@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include "app/course/demo_pie.hpp"
+
 #include <cmath>
 #include <map>
 #include <string>
@@ -54,19 +56,7 @@ PieSliceOptions one_sensor_east(double reading_m) {
 }
 
 // Six sensors 30 deg apart over the front of a robot facing south (the assignment's Figure 1).
-PieSliceOptions six_sensors_south() {
-  PieSliceOptions o;
-  o.x_m = 1.5;
-  o.y_m = 2.5;
-  o.heading_deg = 270.0;
-  o.mounts_deg = {75.0, 45.0, 15.0, -15.0, -45.0, -75.0};
-  o.readings_m = {1.0, 1.5, 1.5, 0.8, 1.2, 1.5};
-  o.half_angle_deg = 10.0;
-  o.contact_m = 0.1;
-  o.resolution_m = 0.1;
-  o.max_range_m = 1.5;
-  return o;
-}
+PieSliceOptions six_sensors_south() { return app::course::figure_1_options(); }
 
 // An independent reading of the course's rule: the angle test by a dot product, every cell
 // of a fixed box visited, the verdict spelt out per point.
