@@ -17,7 +17,7 @@
 #include "app/picture/map_picture.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/picture/metric_map_pictures.hpp"
-#include "app/report/metric_files_recorder.hpp"
+#include "app/report/files_recorder.hpp"
 #include "app/run/metric_run.hpp"
 #include "maze/world/world.hpp"
 #include "cli_runner.hpp"
@@ -334,7 +334,7 @@ TEST_CASE("room run in an arena with a supervisor's cylinder: a neutral grey dis
   o.output.quiet = true;
   o.output.out_dir = dir.path.string();
   std::ostringstream out;
-  app::MetricFilesRecorder recorder;
+  app::FilesRecorder recorder;
   app::run_metric_arena(arena, o, out, std::chrono::steady_clock::now(), nullptr, nullptr, &recorder);
   int band = 0;
   const app::PlainGridFrame frame = room_frame(50, 30, 0.1, 0.0, 0.0, band);

@@ -349,14 +349,13 @@ TEST_CASE("room: a stop request ends any strategy at its next control step, stop
 namespace {
 
 // Keeps the largest |log-odds| of the map at the end of a run.
-class LargestLogOdds : public app::MetricRunRecorder {
+class LargestLogOdds : public app::RunObserver {
  public:
   double largest = 0.0;
-  void start(const app::MetricRunStart &) override {}
-  void on_step(const robot::MetricController &) override {}
-  void on_snapshot(const robot::MetricController &, const std::string &) override {}
-  void finish(const app::MetricRunEnd &end) override {
-    const sensing::MetricMap &map = end.controller.map();
+  void on_start(const app::RunStart &) override {}
+  void on_step(const app::RunStep &) override {}
+  void on_end(const app::RunEnd &end) override {
+    const sensing::MetricMap &map = end.metres->controller.map();
     for (int y = 0; y < map.spec().cells_y; ++y) {
       for (int x = 0; x < map.spec().cells_x; ++x) largest = std::max(largest, std::abs(map.log_odds({x, y})));
     }

@@ -18,7 +18,7 @@
 #include "app/cli/model_options.hpp"
 #include "app/cli/option_binding.hpp"
 #include "app/cli/run_cli.hpp"
-#include "app/report/metric_files_recorder.hpp"
+#include "app/report/files_recorder.hpp"
 #include "app/run/terminal.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"

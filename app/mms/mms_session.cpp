@@ -233,25 +233,18 @@ robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandCont
   return reason;
 }
 
-// What the robot tells as it goes: the terminal's printer, the files' recorder; and the stop
-// signal, polled before each control step. Each may be absent.
-robot::RunHooks mms_hooks(std::optional<robot::ProgressPrinter> &printer, std::optional<FilesRecorder> &recorder,
+// What the robot tells as it goes: the files' recorder, then the terminal's printer; and the
+// stop signal, polled before each control step. Each may be absent.
+robot::RunHooks mms_hooks(RunObserver *recorder, std::optional<robot::ProgressPrinter> &printer,
                           const RunControls &controls, const webots::embedded::Simulation &simulation) {
-  robot::RunHooks hooks;
-  if (printer || recorder) {
-    hooks.on_move = [&printer, &recorder](const robot::MoveReport &r) {
-      if (recorder) recorder->on_move(r);
-      if (printer) (*printer)(r);
-    };
-  }
+  robot::RunHooks hooks = observed_hooks(recorder, simulation);
   hooks.stop_requested = controls.interrupted;
-  if (recorder) {
-    hooks.on_step = [&recorder, &simulation](const robot::StepReport &step) {
-      recorder->on_step(step, simulation.pose());
-      return true;
+  if (printer) {
+    hooks.on_move = [&printer, told = std::move(hooks.on_move)](const robot::MoveReport &r) {
+      if (told) told(r);
+      (*printer)(r);
     };
   }
-  if (recorder) hooks.grid_changes = recorder->grid_changes();
   return hooks;
 }
 
@@ -275,7 +268,8 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   std::optional<FilesRecorder> recorder;  // the files every kind of run writes, and marks.txt
   if (!out_dir.empty()) {
     recorder.emplace(program_inputs(mms), mms_own_names());
-    recorder->start(RunStart{options, truth, simulation.robot(), controller_opts, style.initial_log_odds});
+    const CellRunStart cell{truth, controller_opts, style.initial_log_odds};
+    recorder->on_start(RunStart{options, simulation.robot(), &cell, nullptr});
   }
   robot::CommandController controller(simulation.robot(), controller_opts);
   MmsRun run;
@@ -283,7 +277,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   report.marks = MmsMarks(truth.width(), truth.height());
   std::optional<robot::ProgressPrinter> printer;
   if (!options.output.quiet) printer.emplace(out, style, truth.width() * truth.height());
-  const robot::RunHooks hooks = mms_hooks(printer, recorder, controls, simulation);
+  const robot::RunHooks hooks = mms_hooks(recorder ? &*recorder : nullptr, printer, controls, simulation);
 
   MmsMouse mouse(truth, mms, controller, controller_opts, report);
   ChildProcess child(mms.command);  // before the robot moves: a command that cannot start prints nothing
@@ -304,7 +298,8 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   if (recorder) {
     try {
       recorder->add_own_files(mms_summary, mms_own_files(run));
-      recorder->finish(RunEnd{options, truth, run.summary, result, model, learned_sides(result, style)});
+      const CellRunEnd cell{truth, run.summary, result, model, learned_sides(result, style)};
+      recorder->on_end(RunEnd{options, &cell, nullptr});
     } catch (const common::NoSpaceError &) {
       no_space = std::current_exception();  // said after the summary, which the user still gets
     }

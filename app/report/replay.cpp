@@ -11,6 +11,7 @@
 #include "app/report/replay_page.hpp"
 #include "common/fixed_decimal.hpp"
 #include "mapping/walls.hpp"
+#include "maze/world/truth_raster.hpp"
 
 namespace app {
 namespace {
@@ -126,6 +127,13 @@ void append_marks(std::string &out, const ReplayInput &input) {
   }
   out += ",\"boundary_mm\":";
   append_ints(out, boundary);
+  std::vector<long> solids;
+  for (const PlainGridBounds &b : input.world_solids) {
+    solids.insert(solids.end(), {milli(b.x_min_m - o.x_m), milli(b.y_min_m - o.y_m), milli(b.x_max_m - o.x_m),
+                                 milli(b.y_max_m - o.y_m)});
+  }
+  out += ",\"solids_mm\":";
+  append_ints(out, solids);
 }
 
 void append_summary(std::string &out, const ReplayInput &input) {
@@ -249,6 +257,33 @@ std::optional<Replay> replay_html(const ReplayInput &input) {
     if (html.size() <= input.max_bytes) return Replay{std::move(html), per};
     if (per >= all) return std::nullopt;
   }
+}
+
+std::vector<std::pair<std::string, std::string>> replay_summary(const Report &report) {
+  std::vector<std::pair<std::string, std::string>> lines = summary_pairs(report);
+  std::erase_if(lines, [](const auto &line) { return line.first == "wall_time_ms"; });
+  return lines;
+}
+
+std::vector<PlainGridBounds> world_solid_boxes(const maze::Arena &arena) {
+  const double cell_m = std::max(arena.width_m(), arena.height_m()) / kWorldSolidCells;
+  const maze::TruthRaster truth = maze::rasterise_truth(arena, maze::cells_along(arena.width_m(), cell_m),
+                                                        maze::cells_along(arena.height_m(), cell_m), 0.0);
+  std::vector<PlainGridBounds> boxes;
+  const auto solid = [&truth](int i, int j) { return truth.is_occupied(i, j); };
+  for (int j = 0; j < truth.cells_y; ++j) {
+    for (int i = 0; i < truth.cells_x;) {
+      if (!solid(i, j)) {
+        ++i;
+        continue;
+      }
+      const int first = i;
+      while (i < truth.cells_x && solid(i, j)) ++i;
+      boxes.push_back({truth.x_min_m + first * truth.cell_x_m, truth.x_min_m + i * truth.cell_x_m,
+                       truth.y_min_m + j * truth.cell_y_m, truth.y_min_m + (j + 1) * truth.cell_y_m});
+    }
+  }
+  return boxes;
 }
 
 }  // namespace app

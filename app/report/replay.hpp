@@ -41,8 +41,10 @@
 #include "app/picture/map_picture.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/report/grid_history.hpp"
+#include "app/run/report.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
+#include "maze/world/arena.hpp"
 
 namespace app {
 
@@ -97,6 +99,9 @@ struct ReplayInput {
   // The world's floor when it is walled all round (a room's), in the world frame: drawn as
   // wall outside. None: the grid alone (a maze's outer walls lie on its cells).
   std::optional<PlainGridBounds> solid_boundary;
+  // The world's solids, each as boxes of a raster of it, drawn as wall: the world of a run that
+  // keeps no map (its page has no map to show them). Empty: none drawn.
+  std::vector<PlainGridBounds> world_solids;
   std::string title;                  // the world
   std::string caption;                // "model cell, K 3"
   std::int64_t steps = 0;             // the run's last step
@@ -129,6 +134,15 @@ long replay_value(float log_odds, const MapTones &tones);
 // the tones' occupied and free increments) and a quarter of `was`. Past the tones' saturation
 // a cell seen every step is so recorded a few dozen times in a run, not every step.
 bool replay_shows_change(float was, float now, const MapTones &tones);
+
+// The world's solids as ReplayInput::world_solids: the boxes of each row's runs of solid
+// cells of its truth raster, kWorldSolidCells cells on its longer side.
+inline constexpr int kWorldSolidCells = 400;
+std::vector<PlainGridBounds> world_solid_boxes(const maze::Arena &arena);
+
+// The summary block's lines as the page's table shows them: wall_time_ms left out, so that a
+// page made again of the same run is the same page.
+std::vector<std::pair<std::string, std::string>> replay_summary(const Report &report);
 
 // The page, or nothing when even the final map alone is over input.max_bytes.
 std::optional<Replay> replay_html(const ReplayInput &input);

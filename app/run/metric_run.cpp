@@ -167,26 +167,27 @@ maze::TruthRaster truth_on_grid(const maze::Arena &arena, const sensing::MetricG
 }
 
 // What the run prints as it goes: the snapshots (the map, with the wave for wavefront) at the
-// asked simulated times and control steps, printed unless quiet and told to the recorder.
+// asked simulated times and control steps, printed unless quiet and told to the observer.
 class RoomLog {
  public:
-  RoomLog(const RunOptions &options, double threshold, std::ostream &out, MetricRunRecorder *recorder)
-      : options_(options), threshold_(threshold), out_(out), recorder_(recorder), times_(options.metres.snapshots_at_s),
+  RoomLog(const RunOptions &options, double threshold, std::ostream &out)
+      : options_(options), threshold_(threshold), out_(out), times_(options.metres.snapshots_at_s),
         steps_(options.metres.snapshot_steps) {
     std::sort(times_.begin(), times_.end());
     std::sort(steps_.begin(), steps_.end());
   }
 
-  // Each control step: the snapshots due by its time, then by its step.
-  void on_step(const robot::MetricController &c) {
+  // Each control step: the snapshots due by its time, then by its step, printed; their
+  // files' names ("snapshots/t15s", "snapshots/step50") into `names`.
+  void on_step(const robot::MetricController &c, std::vector<std::string> &names) {
     while (next_time_ < times_.size() && c.time_s() >= times_[next_time_] - 1e-9) {
       snapshot(c, fmt::format("t = {:g} s", times_[next_time_]));
-      if (recorder_ != nullptr) recorder_->on_snapshot(c, fmt::format("snapshots/t{:g}s", times_[next_time_]));
+      names.push_back(fmt::format("snapshots/t{:g}s", times_[next_time_]));
       ++next_time_;
     }
     while (next_step_ < steps_.size() && c.steps() >= steps_[next_step_]) {
       snapshot(c, fmt::format("step {}", steps_[next_step_]));
-      if (recorder_ != nullptr) recorder_->on_snapshot(c, fmt::format("snapshots/step{}", steps_[next_step_]));
+      names.push_back(fmt::format("snapshots/step{}", steps_[next_step_]));
       ++next_step_;
     }
   }
@@ -217,7 +218,6 @@ class RoomLog {
   const RunOptions &options_;
   double threshold_;
   std::ostream &out_;
-  MetricRunRecorder *recorder_;
   std::vector<double> times_;  // sorted
   std::size_t next_time_ = 0;
   std::vector<std::int64_t> steps_;  // sorted
@@ -276,13 +276,13 @@ int metric_run_exit_status(const MetricRunSummary &s) {
 
 MetricRunSummary run_metric_world(const maze::World &world, const RunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
-                     Report *report, MetricRunRecorder *recorder, int progress_fd) {
-  return run_metric_arena(world.geometry(), options, out, started, interrupted, report, recorder, progress_fd);
+                     Report *report, RunObserver *observer, int progress_fd) {
+  return run_metric_arena(world.geometry(), options, out, started, interrupted, report, observer, progress_fd);
 }
 
 MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
-                        Report *report_out, MetricRunRecorder *recorder, int progress_fd) {
+                        Report *report_out, RunObserver *observer, int progress_fd) {
   // ---- everything checked before anything runs ----
   const sensing::SetUp &setup = sensing::setup(options.model.kind);
   const maze::sim::RobotProfile profile = robot_for(setup, options);
@@ -296,15 +296,18 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   const mapping::SensorModel model(options.sensor);
   sensing::MetricMap map(spec, model);
   const double threshold = threshold_of(options);
-  if (recorder != nullptr) recorder->start(MetricRunStart{options, setup, room, arena, map, start_pose, threshold});
   maze::sim::SimulationOptions sim = options.simulation;
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
   const maze::TruthRaster truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
   // Free geometry: on SolidGeometry, a maze's geometry too (run_metric_world), never on a WallGrid.
   webots::embedded::Simulation simulation(maze::world_of(arena), profile, sim);
+  if (observer != nullptr) {
+    const MetresRunStart metres{setup, room, arena, map, start_pose, threshold};
+    observer->on_start(RunStart{options, simulation.robot(), nullptr, &metres});
+  }
 
   // ---- the run ----
-  RoomLog log(options, threshold, out, recorder);
+  RoomLog log(options, threshold, out);
   std::optional<ProgressLine> progress;
   if (progress_fd >= 0) progress.emplace(progress_fd, static_cast<int>(reachable_free_of(map, truth, threshold)));
   const auto observed = [&map, &truth, threshold] {
@@ -313,9 +316,11 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
     return now.reachable_free_observed;
   };
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
-                                          [&log, recorder, &progress, &observed](const robot::MetricController &c) {
-                                            log.on_step(c);
-                                            if (recorder != nullptr) recorder->on_step(c);
+                                          [&](const robot::MetricController &c) {
+                                            RunStep step = step_at(c.steps(), c.time_s(), simulation.pose());
+                                            step.metres = &c;
+                                            log.on_step(c, step.snapshots);
+                                            if (observer != nullptr) observer->on_step(step);
                                             if (progress) progress->update_metres(c.steps(), observed, c.time_s());
                                           },
                                           interrupted);
@@ -335,7 +340,10 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   const Report report = metric_run_report(options, profile.name, setup, spec, summary);
   if (!options.output.quiet) out << '\n';
   out << format_summary(report);
-  if (recorder != nullptr) recorder->finish(MetricRunEnd{controller_loop, truth, report});
+  if (observer != nullptr) {
+    const MetresRunEnd metres{controller_loop, truth, report};
+    observer->on_end(RunEnd{options, nullptr, &metres});
+  }
   if (report_out != nullptr) *report_out = report;
   return summary;
 }

@@ -4,9 +4,9 @@
 // the ASCII map (W occupied, . free, blank never observed, * the last planned path, the
 // robot's arrow), snapshots at simulated times and at control steps, the wavefront's numbers,
 // the trajectory, the thresholded binary map and the summary, which scores the map against
-// the truth rasterised at the map's resolution. The run itself writes no file: a
-// MetricRunRecorder keeps the record (report/'s MetricFilesRecorder writes --out DIR:
-// app/report/metric_files_recorder.hpp), as a RunRecorder does for a run on the cell lattice.
+// the truth rasterised at the map's resolution. The run itself writes no file: it
+// tells a RunObserver (app/run/run_observer.hpp), as every kind of run does, and report/'s
+// FilesRecorder writes --out DIR.
 //
 // The truth of a cell is its centre: inside a solid (a wall, an obstacle) or outside the
 // world is occupied, else free; the reachable free cells are the free cells 4-connected to
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "app/run/report.hpp"
+#include "app/run/run_observer.hpp"
 #include "app/run/run_options.hpp"
 #include "mapping/sensor_model.hpp"
 #include "maze/world/arena.hpp"
@@ -33,39 +34,6 @@
 #include "sensing/setups.hpp"
 
 namespace app {
-
-// The run as it starts: everything checked, the map empty, nothing moved.
-struct MetricRunStart {
-  const RunOptions &options;
-  const sensing::SetUp &setup;
-  const robot::MetricOptions &room;  // the strategy's options as the run uses them (strategy, time limit, seed set)
-  const maze::Arena &arena;
-  const sensing::MetricMap &map;     // the map the run fills; outlives the recorder's use
-  const maze::ArenaPose &start;
-  double threshold = 0.0;            // log-odds drawn occupied at or above
-};
-
-// The run as it ended, scored and summarised.
-struct MetricRunEnd {
-  const robot::MetricController &controller;
-  const maze::TruthRaster &truth;  // at the map's resolution
-  const Report &report;
-};
-
-// What keeps a record of a run in metres as it goes: told once before the robot moves, after
-// every control step, at each snapshot the run prints, and once at the end.
-class MetricRunRecorder {
- public:
-  virtual ~MetricRunRecorder() = default;
-  // Throws common::InputError when the record cannot be kept (an output folder that cannot
-  // be made, an output that is one of the inputs), before the robot moves.
-  virtual void start(const MetricRunStart &start) = 0;
-  virtual void on_step(const robot::MetricController &c) = 0;
-  // `name`: "snapshots/t15s" (--snapshot-at), "snapshots/step50" (--snapshot-steps).
-  virtual void on_snapshot(const robot::MetricController &c, const std::string &name) = 0;
-  // After the summary is printed. Throws common::NoSpaceError when the disk is full.
-  virtual void finish(const MetricRunEnd &end) = 0;
-};
 
 struct MetricRunSummary {
   robot::MetricEnding ending = robot::MetricEnding::done;
@@ -95,18 +63,18 @@ struct MetricRunSummary {
 // before anything runs), runs, prints on `out`. `interrupted`, polled every control step,
 // ends the run `stopped`, "interrupted by SIGINT", its summary and files written as ever.
 // `report`, when not null, receives the run's report (the summary block's and summary.json's
-// entries: a batch row's columns). `recorder`, when not null, is told the run as it goes
-// (options.output.out_dir is the recorder's: the run itself writes no file). `progress_fd`,
+// entries: a batch row's columns). `observer`, when not null, is told the run as it goes
+// (options.output.out_dir is a FilesRecorder's: the run itself writes no file). `progress_fd`,
 // when not -1, shows the progress line there (app/run/progress_line.hpp) until the run ends.
 MetricRunSummary run_metric_world(const maze::World &world, const RunOptions &options, std::ostream &out,
                      std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                      robot::StopPoll interrupted = nullptr, Report *report = nullptr,
-                     MetricRunRecorder *recorder = nullptr, int progress_fd = -1);
+                     RunObserver *observer = nullptr, int progress_fd = -1);
 // The same in an arena given in code.
 MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &options, std::ostream &out,
                         std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
                         robot::StopPoll interrupted = nullptr, Report *report = nullptr,
-                        MetricRunRecorder *recorder = nullptr, int progress_fd = -1);
+                        RunObserver *observer = nullptr, int progress_fd = -1);
 // 0: done, goal reached, every waypoint reached, wander's time limit; 128 + the signal when
 // interrupted; 1 otherwise.
 int metric_run_exit_status(const MetricRunSummary &summary);

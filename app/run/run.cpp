@@ -263,7 +263,7 @@ render::MapStyle map_style(const OutputOptions &output, const mapping::SensorMod
 }
 
 // The run itself, watched as the options ask: progress or animation on out, --step's
-// prompt, the recorder, Ctrl-C.
+// prompt, the observer, Ctrl-C.
 robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webots::embedded::Simulation &simulation,
                        robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
                        const RunControls &controls, RunState &state) {
@@ -274,7 +274,6 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
     screen.emplace(out);
     animator.emplace(out, style, AnimationOptions{o.fps, o.speed, terminal_size(controls.terminal_fd)});
   }
-  robot::RunHooks hooks;
   std::optional<robot::ProgressPrinter> printer;
   if (!o.quiet && !o.animate) {
     const int k = options.subcells;
@@ -284,10 +283,11 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   }
   std::optional<ProgressLine> progress;
   if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, count_reachable_cells(truth));
-  RunRecorder *const recorder = controls.recorder;
-  if (printer || animator || o.step || recorder || progress) {
-    hooks.on_move = [&](const robot::MoveReport &report) {
-      if (recorder) recorder->on_move(report);
+  // The observer first: the step's record is kept before anything can stop the run.
+  robot::RunHooks hooks = observed_hooks(controls.observer, simulation);
+  if (printer || animator || o.step || progress) {
+    hooks.on_move = [&, told = std::move(hooks.on_move)](const robot::MoveReport &report) {
+      if (told) told(report);
       if (printer) (*printer)(report);
       if (progress) progress->update(report.moves, report.visits->count(), report.sim_time_s);
       if (animator) {
@@ -302,16 +302,14 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
   // Ctrl-C is polled before each control step, after the step before it is recorded: the
   // trace holds every step the run counts.
   hooks.stop_requested = controls.interrupted;
-  if (recorder || animator || o.step) {
-    hooks.on_step = [&](const robot::StepReport &step) {
-      const maze::sim::Pose &pose = simulation.pose();
-      if (recorder) recorder->on_step(step, pose);
+  if (animator || o.step) {
+    hooks.on_step = [&, told = std::move(hooks.on_step)](const robot::StepReport &step) {
+      if (told) told(step);
       if (state.quit) return false;
-      if (animator) animator->on_step(step, pose.x_m, pose.y_m);
+      if (animator) animator->on_step(step, simulation.pose().x_m, simulation.pose().y_m);
       return true;
     };
   }
-  if (recorder) hooks.grid_changes = recorder->grid_changes();
   robot::RunResult result = controller.run(hooks);
   state.interrupted = result.reason == robot::EndReason::stopped && !state.quit;
   return result;
@@ -362,6 +360,24 @@ render::RobotMark robot_mark(const robot::RunResult &result, const RunOptions &o
 
 }  // namespace
 
+robot::RunHooks observed_hooks(RunObserver *observer, const webots::embedded::Simulation &simulation) {
+  robot::RunHooks hooks;
+  if (observer == nullptr) return hooks;
+  hooks.on_move = [observer, &simulation](const robot::MoveReport &move) {
+    RunStep arrival = step_at(move.step, move.sim_time_s, simulation.pose());
+    arrival.arrival = &move;
+    observer->on_step(arrival);
+  };
+  hooks.on_step = [observer, &simulation](const robot::StepReport &step) {
+    RunStep told = step_at(step.step, step.sim_time_s, simulation.pose());
+    told.cell = &step;
+    observer->on_step(told);
+    return true;
+  };
+  hooks.grid_changes = observer->grid_changes();
+  return hooks;
+}
+
 RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
                     const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
@@ -371,9 +387,10 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   webots::embedded::Simulation simulation(maze::world_of(truth), profile, options.simulation);
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
-  assert(options.output.out_dir.empty() || controls.recorder != nullptr);
-  if (controls.recorder != nullptr) {
-    controls.recorder->start(RunStart{options, truth, simulation.robot(), controller_opts, style.initial_log_odds});
+  assert(options.output.out_dir.empty() || controls.observer != nullptr);
+  if (controls.observer != nullptr) {
+    const CellRunStart cell{truth, controller_opts, style.initial_log_odds};
+    controls.observer->on_start(RunStart{options, simulation.robot(), &cell, nullptr});
   }
 
   robot::CellController controller(simulation.robot(), controller_opts);
@@ -389,10 +406,11 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   // A full disk is said after the summary, which the user still gets.
   std::exception_ptr no_space;
-  if (controls.recorder != nullptr) {
+  if (controls.observer != nullptr) {
     try {
-      controls.recorder->finish(RunEnd{options, truth, summary, result, model,
-                                       learned_sides(result, style.initial_log_odds, style.threshold)});
+      const CellRunEnd cell{truth, summary, result, model,
+                            learned_sides(result, style.initial_log_odds, style.threshold)};
+      controls.observer->on_end(RunEnd{options, &cell, nullptr});
     } catch (const common::NoSpaceError &) {
       no_space = std::current_exception();
     }

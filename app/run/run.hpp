@@ -16,9 +16,10 @@
 
 #include "app/run/evaluation.hpp"
 #include "app/run/run_options.hpp"
-#include "app/run/run_recorder.hpp"
+#include "app/run/run_observer.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
+#include "maze/sim/simulation.hpp"
 #include "robot/cell_controller.hpp"
 
 namespace app {
@@ -30,13 +31,17 @@ struct RunControls {
   bool (*interrupted)() = nullptr;      // polled every step: true stops the run (Ctrl-C)
   int terminal_fd = -1;                 // the terminal: --animate's screen size, the map's width (app/run/terminal.hpp)
   int progress_fd = -1;                 // where a one-line progress is drawn (app/run/terminal.hpp), -1: none
-  // Keeps the run's files (app/run/run_recorder.hpp); required when options.output.out_dir
-  // is set: report/'s run_and_write() makes one.
-  RunRecorder *recorder = nullptr;
-  // When set, a full disk while the recorder writes is kept here (common::NoSpaceError) and
+  // Watches the run (app/run/run_observer.hpp); required when options.output.out_dir is set:
+  // report/'s run_and_write() gives a FilesRecorder.
+  RunObserver *observer = nullptr;
+  // When set, a full disk while the observer writes is kept here (common::NoSpaceError) and
   // the run returns its summary; when null it is thrown after the summary is printed.
   std::exception_ptr *no_space = nullptr;
 };
+
+// The controller's hooks that tell `observer` (none when null) each control step and each
+// arrival in a cell, with the simulator's true pose, and hand it the grid's change log.
+robot::RunHooks observed_hooks(RunObserver *observer, const webots::embedded::Simulation &simulation);
 
 // What the planner found, for the summary.
 struct PlanSummary {
@@ -80,9 +85,9 @@ std::string describe_shortest(const explore::ShortestPathProof &proof);
 // with run_maze(). The options must be valid (validate()); throws common::InputError for a
 // world file, or options that do not fit the world (see run_maze).
 RunSummary run_world(const RunOptions &options, std::ostream &out);
-// Likewise, with --step input, Ctrl-C, --animate and a recorder: the recorder starts after
-// the world and options are checked and before the robot moves, and finishes when the run
-// ends, however it ends.
+// Likewise, with --step input, Ctrl-C, --animate and an observer: the observer is told the
+// start after the world and options are checked and before the robot moves, and the end
+// however the run ends.
 RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls);
 
 // Runs one maze and writes the progress (unless quiet), the final map and the summary

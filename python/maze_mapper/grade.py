@@ -180,7 +180,8 @@ def run_once(student, controller, world, start, args, truth=None):
             return {**row, "exit": "", "end": "killed", "error": "no summary within the wall-clock limit"}
         summary_path = os.path.join(out, "run", "summary.json")
         summary = json.load(open(summary_path)) if os.path.isfile(summary_path) else {}
-    errors = [line for line in done.stderr.splitlines() if line.strip() and not line.startswith("wrote ")]
+    errors = [line for line in done.stderr.splitlines()
+              if line.strip() and not line.startswith(("wrote ", "note: "))]
     row = {**row, "exit": done.returncode, **_summary_values(summary),
            "error": errors[-1] if done.returncode != 0 and errors else ""}
     _score_saved_grid(row, truth, folder, since)

@@ -126,6 +126,15 @@ app::MapTones KeptMap::tones() const {
   return tones;
 }
 
+app::MapView KeptMap::view() const {
+  app::MapView view;
+  view.spec = spec_;
+  view.initial_log_odds = initial_log_odds();
+  view.tones = tones();
+  view.read = [this](std::vector<float> &cells) { return read(cells); };
+  return view;
+}
+
 bool KeptMap::read(std::vector<float> &cells) const {
   if (is_grid_) {
     read_grid(source_.cast<const PyGrid &>(), cells);

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "app/picture/map_picture.hpp"
+#include "app/run/map_view.hpp"
 #include "bindings.hpp"
 #include "mapping/sensor_model.hpp"
 #include "sensing/metric_map.hpp"
@@ -51,6 +52,8 @@ class KeptMap {
   // The map now as log-odds, cell (i, j) at j * cells_x + i, into `cells` (resized). False,
   // `cells` untouched, when the array's shape is no longer the one kept.
   bool read(std::vector<float> &cells) const;
+  // The view the run's pictures and replay read (app/run/map_view.hpp); this map must outlive it.
+  app::MapView view() const;
   // The same as a MetricMap on `model()` (which must outlive it); throws common::InputError
   // when the array's shape changed since it was kept.
   sensing::MetricMap metric_map() const;

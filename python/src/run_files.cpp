@@ -47,13 +47,11 @@ mapping::Heading heading_of(double yaw_rad) {
   return kByQuarter[((quarter % 4) + 4) % 4];
 }
 
-// What the pictures of a maze run show: the grid (the controller's, or one never observed),
-// and the cells the robot's centre passed through, in order, with the step and heading of
+// What the pictures of a maze run show: the controller's grid, and the cells the robot's centre passed through, in order, with the step and heading of
 // each arrival.
 struct MazeRun {
   mapping::OccupancyGrid grid;
   float initial_log_odds = 0.0F;
-  bool kept = false;
   std::vector<mapping::Cell> path;
   std::vector<app::GridHistory::Arrival> arrivals;
 };
@@ -92,16 +90,13 @@ maze::Maze started_maze(const maze::Maze &truth, const std::vector<PoseTrace::Vi
   return started;
 }
 
-// The cells the robot's centre passed through from the start (start_visit) on.
+// The kept grid (not None), and the cells the robot's centre passed through from the start
+// (start_visit) on.
 MazeRun maze_run(const maze::Maze &truth, const py::object &grid, std::optional<float> initial_log_odds,
                  const std::vector<PoseTrace::Visit> &visits) {
-  MazeRun run{mapping::OccupancyGrid(maze_geometry(truth, mapping::kMinSubcells), 0.0F), 0.0F, false, {}, {}};
-  if (!grid.is_none()) {
-    run.initial_log_odds = initial_log_odds.value_or(
-        py::isinstance<PyGrid>(grid) ? grid.cast<const PyGrid &>().initial_log_odds() : 0.0F);
-    run.grid = kept_grid(grid, truth, run.initial_log_odds);
-    run.kept = true;
-  }
+  const float l0 = initial_log_odds.value_or(
+      py::isinstance<PyGrid>(grid) ? grid.cast<const PyGrid &>().initial_log_odds() : 0.0F);
+  MazeRun run{kept_grid(grid, truth, l0), l0, {}, {}};
   for (std::size_t k = start_visit(visits); k < visits.size(); ++k) {
     const PoseTrace::Visit &v = visits[k];
     const mapping::Cell c = cell_of(truth, v);
@@ -126,9 +121,7 @@ app::MapTones tones_of(const MazeRun &run) {
   return tones;
 }
 
-std::string grid_caption(const MazeRun &run) {
-  return run.kept ? fmt::format("the controller's grid, K {}", run.grid.k()) : std::string("no grid kept");
-}
+std::string grid_caption(const MazeRun &run) { return fmt::format("the controller's grid, K {}", run.grid.k()); }
 
 std::vector<mapping::Cell> goals_of(const maze::Maze &truth) {
   std::vector<mapping::Cell> goals;
@@ -139,7 +132,7 @@ std::vector<mapping::Cell> goals_of(const maze::Maze &truth) {
 std::string truth_file(const maze::Maze &truth, const MazeRun &run) {
   const std::vector<bool> visited = visited_of(truth, run.path);
   const auto learned = [&run](maze::Cell c, maze::Side s) {
-    return run.kept ? mapping::side_state(run.grid, run.initial_log_odds, {c.x, c.y}, s) : mapping::SideState::unknown;
+    return mapping::side_state(run.grid, run.initial_log_odds, {c.x, c.y}, s);
   };
   const app::TruthInput input{&truth, &visited, learned, run.grid.k(), fmt::format("truth: {}", grid_caption(run))};
   return app::truth_picture(input).encode();
@@ -149,7 +142,7 @@ std::optional<app::Replay> replay_page(const maze::Maze &truth, const std::strin
                                        const app::Report &report, std::int64_t steps) {
   app::GridHistory history(run.grid.geometry(), run.initial_log_odds);
   for (const auto &a : run.arrivals) history.arrived(a.step, a.cell, a.heading);
-  if (run.kept) history.record(steps, run.grid);
+  history.record(steps, run.grid);
   app::ReplayInput input;
   app::add_history(input, history, steps);
   app::add_goal_cells(input, goals_of(truth));
@@ -164,54 +157,11 @@ std::optional<app::Replay> replay_page(const maze::Maze &truth, const std::strin
   return app::replay_html(input);
 }
 
-// map.png (a kept grid) and truth.png of a maze run.
+// map.png and truth.png of a maze run.
 void write_maze_pictures(app::OutputDir &out, const maze::Maze &truth, const MazeRun &run) {
-  if (run.kept) {
-    const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(truth), {}, app::landmark_marks(truth)};
-    out.write("map.png", app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
-  }
+  const app::MapMarks marks{std::span<const mapping::Cell>(run.path), goals_of(truth), {}, app::landmark_marks(truth)};
+  out.write("map.png", app::png_file(run.grid, tones_of(run), marks, grid_caption(run)));
   out.write("truth.png", truth_file(truth, run));
-}
-
-// truth.png of a run in an arena: its solids on a grid of kArenaPictureCells on the longer
-// side (solid dark, free white, the boundary a wall all round), the landmarks in their colour,
-// the robot's path.
-void write_arena_truth(app::OutputDir &out, const maze::World &world, const std::vector<PoseTrace::Visit> &visits) {
-  constexpr int kArenaPictureCells = 400;
-  const maze::Arena a = world.geometry();
-  const double cell_m = std::max(a.width_m(), a.height_m()) / kArenaPictureCells;
-  app::PlainGrid grid;
-  grid.cells_x = maze::cells_along(a.width_m(), cell_m);
-  grid.cells_y = maze::cells_along(a.height_m(), cell_m);
-  grid.x0_m = a.x_min_m;
-  grid.y0_m = a.y_min_m;
-  grid.cell_w_m = a.width_m() / grid.cells_x;
-  grid.cell_h_m = a.height_m() / grid.cells_y;
-  grid.axes_in_metres = true;
-  grid.solid_boundary = app::PlainGridBounds{a.x_min_m, a.x_max_m, a.y_min_m, a.y_max_m};
-  const maze::TruthRaster truth = maze::rasterise_truth(a, grid.cells_x, grid.cells_y, 0.0);
-  grid.tones.resize(truth.occupied.size());
-  for (std::size_t i = 0; i < grid.tones.size(); ++i) grid.tones[i] = truth.occupied[i] != 0 ? app::kInk : app::kWhite;
-  const std::vector<app::LandmarkMark> landmarks = app::landmark_marks(a);
-  app::Figure legend;
-  legend.lines.push_back(fmt::format("{}: the world and the robot's path", world.name()));
-  legend.items = {{app::Swatch::box, app::kInk, "solid"},
-                  {app::Swatch::box, app::kWhite, "free"},
-                  {app::Swatch::line, app::kPathColour, "the robot's path"}};
-  for (app::LegendItem &item : app::landmark_items(landmarks)) legend.items.push_back(std::move(item));
-  app::Drawing page = app::plain_grid_picture(grid, legend, [&](app::Drawing &p, const app::PlainGridFrame &f) {
-    const double px_per_m = f.cell_w_px / f.cell_w_m;
-    for (const app::LandmarkMark &l : landmarks) app::draw_landmark(p, l, f.at(l.at.x_m, l.at.y_m), px_per_m);
-    // The path driven, in pieces: none to a pose a supervisor set the robot down on.
-    for (std::size_t first = 0; first < visits.size();) {
-      std::size_t end = first + 1;
-      while (end < visits.size() && !visits[end].placed) ++end;
-      const auto at = [&](std::size_t k) { return f.at(visits[first + k].x_m, visits[first + k].y_m); };
-      if (end - first >= 2) p.polyline(end - first, at, std::max(2.0, px_per_m * 0.02), app::kPathColour);
-      first = end;
-    }
-  });
-  out.write("truth.png", page.encode());
 }
 
 // replay.html of a maze run, or a warning when even its final map is too large.
@@ -225,25 +175,21 @@ void write_maze_replay(app::OutputDir &out, const maze::Maze &truth, const std::
   }
 }
 
-// The summary's lines as the replay's table shows them (wall_time_ms left out, as the room
-// replay leaves it: a page made again is the same page).
-std::vector<std::pair<std::string, std::string>> replay_summary(const app::Report &report) {
-  std::vector<std::pair<std::string, std::string>> lines;
-  for (auto &[key, value] : app::summary_pairs(report)) {
-    if (key != "wall_time_ms") lines.emplace_back(key, value);
-  }
-  return lines;
-}
-
 }  // namespace
 
-void RunFiles::write_arena_replay(const std::vector<PoseTrace::Visit> &visits, const ArenaRunMarks &marks) {
+void RunFiles::write_metres_pictures(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks) {
+  if (kept_map() != nullptr) out_.write("map.png", kept_map_png(*kept_map(), visits, marks));
+  out_.write("truth.png", world_truth_png(*marks.world, visits));
+}
+
+void RunFiles::write_metres_replay(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks) {
   if (visits.empty()) {
     fmt::print(stderr, "note: replay.html not written: the controller took no step\n");
     return;
   }
-  replay_.finish(visits, kept_map());
-  if (const std::optional<app::Replay> replay = app::replay_html(arena_replay_input(replay_, kept_map(), visits, marks))) {
+  const PoseTrace::Visit &last = visits.back();
+  replay_.finish({last.step, {last.x_m, last.y_m}, last.yaw_rad, last.placed}, last.time_s);
+  if (const std::optional<app::Replay> replay = app::replay_html(metres_replay_input(replay_, kept_map(), visits, marks))) {
     out_.write("replay.html", replay->html);
   } else {
     fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
@@ -298,20 +244,24 @@ PoseTrace &RunFiles::trace() {
 }
 
 void RunFiles::record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
-  if (trace().record(step, time_s, pose)) replay_.on_step(trace_->visits(), kept_map());
+  if (!trace().record(step, time_s, pose)) return;
+  const PoseTrace::Visit &v = trace_->visits().back();
+  replay_.on_step({v.step, {v.x_m, v.y_m}, v.yaw_rad, v.placed}, v.time_s);
 }
 
 void RunFiles::mark_placed() { trace().mark_placed(); }
 
 void RunFiles::keep_map(py::object kept) {
   kept_map_ = &kept.cast<const KeptMap &>();
-  replay_.keep(*kept_map_);
+  replay_.keep(kept_map_->view());
   kept_ = std::move(kept);
 }
 
 void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
                       std::optional<float> initial_log_odds) {
-  const maze::World *maze = world != nullptr && world->on_lattice() ? world : nullptr;
+  // A maze whose controller kept its 4D grid is drawn on its cells; any other run in metres.
+  const maze::World *maze = world != nullptr && world->on_lattice() && !grid.is_none() ? world : nullptr;
+  const bool metres = world != nullptr && maze == nullptr;
   const app::Report report = report_of(entries);
   const std::vector<PoseTrace::Visit> none;
   const std::vector<PoseTrace::Visit> &visits = trace_ ? trace_->visits() : none;
@@ -320,15 +270,13 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
       maze != nullptr ? std::optional<maze::Maze>(started_maze(maze->maze(), visits)) : std::nullopt;
   const std::optional<MazeRun> run =
       started ? std::optional<MazeRun>(maze_run(*started, grid, initial_log_odds, visits)) : std::nullopt;
-  const bool arena = world != nullptr && !world->on_lattice();
-  const ArenaRunMarks marks{world, body_radius_m_, replay_summary(report)};
+  const MetresRunMarks marks{world, body_radius_m_, app::replay_summary(report)};
   if (run) write_maze_pictures(out_, *started, *run);
-  if (arena && kept_map() != nullptr) out_.write("map.png", arena_map_png(*kept_map(), visits, marks));
-  if (arena) write_arena_truth(out_, *world, visits);
+  if (metres) write_metres_pictures(visits, marks);
   out_.write("summary.json", app::report_json(report).dump(2) + "\n");
   if (trace_) out_.commit("trace.csv", trace_->file());
   if (run) write_maze_replay(out_, *started, maze->file, *run, report, visits.empty() ? 0 : visits.back().step);
-  if (arena) write_arena_replay(visits, marks);
+  if (metres) write_metres_replay(visits, marks);
   out_.finish();
 }
 
@@ -351,7 +299,7 @@ void bind_run_files(py::module_ &m) {
           },
           py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"))
       .def("keep_map", &RunFiles::keep_map, py::arg("kept"),
-           "The controller's metric map (a KeptMap) from now on: map.png and the replay's map on an arena.");
+           "The controller's metric map (a KeptMap) from now on: map.png and the replay's map of a run drawn in metres.");
 }
 
 }  // namespace maze_mapper_python

@@ -2,11 +2,12 @@
 // The files of a Python controller's run (python3 -m maze_mapper.run --out DIR), written by the
 // one writer of every run's files (app/report/output_dir.hpp's OutputDir): the directory
 // prepared and checked against the run's inputs as `run --out` does, each file atomic, an
-// earlier run's files removed, one `wrote` line; trace.csv a row every control step as the run goes, and at the end
-// summary.json (the runner's report, the same Report renderer as every run's), and where the
-// world is a maze truth.png, replay.html and, when the controller kept a grid, map.png; on an
-// arena truth.png, replay.html and, when the controller kept a metric map, map.png
-// (python/src/arena_files.hpp).
+// earlier run's files removed, one `wrote` line; trace.csv a row every control step as the run
+// goes, and at the end summary.json (the runner's report, the same Report renderer as every
+// run's), truth.png and replay.html, and map.png of the map the controller kept. A maze whose
+// controller kept its 4D grid is drawn as `run --out` draws one (its truth.png scores the
+// grid's walls); any other run in metres (python/src/metres_files.hpp): the world, the path,
+// and the metric map kept (maze_mapper.keep_map), if any.
 
 #include <cstdint>
 #include <optional>
@@ -15,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "arena_files.hpp"
+#include "metres_files.hpp"
 #include "bindings.hpp"
 #include "kept_map.hpp"
 #include "pose_trace.hpp"
@@ -40,7 +41,7 @@ class RunFiles {
   RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs);
 
   // After every control step: its row of trace.csv (opened on first use) and, when due, a
-  // frame of an arena's replay.
+  // frame of the replay in metres.
   void record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose);
   // A supervisor set the robot down (a teleport, simulationReset): no path is drawn to its
   // next pose.
@@ -51,11 +52,12 @@ class RunFiles {
   void set_body_radius(double radius_m) { body_radius_m_ = radius_m; }
 
   // Writes every file and removes what an earlier run left in DIR that this one did not
-  // write; names them on stderr ("wrote DIR/: ..."). `world`: the world read (null: the
-  // course's empty floor); `grid`: the grid the controller kept (an OccupancyGrid or an array;
-  // None: none), `initial_log_odds` its never-observed value. A maze's pictures mark the cells
-  // the robot's centre passed through as visited; an arena's truth.png draws its solids,
-  // landmarks and the path, its map.png the kept metric map (keep_map) and replay.html both.
+  // write; names them on stderr ("wrote DIR/: ..."). `world`: the world read (null: no
+  // pictures); `grid`: the 4D grid the controller kept on a maze (an OccupancyGrid or an
+  // array; None: none), `initial_log_odds` its never-observed value. A maze's grid pictures
+  // mark the cells the robot's centre passed through as visited; else truth.png draws the
+  // world's solids, landmarks and the path, map.png the kept metric map (keep_map) and
+  // replay.html both.
   // Throws common::InputError when the kept grid's cells are not the maze's, or the kept
   // map's array changed shape.
   void finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
@@ -63,15 +65,16 @@ class RunFiles {
 
  private:
   PoseTrace &trace();
-  // replay.html of an arena run (none when the controller took no step).
-  void write_arena_replay(const std::vector<PoseTrace::Visit> &visits, const ArenaRunMarks &marks);
+  // truth.png, map.png (a kept metric map) and replay.html of a run drawn in metres.
+  void write_metres_pictures(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks);
+  void write_metres_replay(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks);
   const KeptMap *kept_map() const { return kept_map_; }
 
   app::OutputDir out_;
   std::optional<PoseTrace> trace_;
   py::object kept_ = py::none();  // a KeptMap
   const KeptMap *kept_map_ = nullptr;  // kept_'s (cast once: the steps read it)
-  ArenaReplayRecorder replay_;
+  app::MapFrames replay_{app::PathPoses::every_step};
   double body_radius_m_ = 0.0;
 };
 

@@ -1,7 +1,4 @@
-// The files of a run in metres (app/report/metric_files_recorder.hpp).
-
-#include "app/report/metric_files_recorder.hpp"
-#include "app/run/report_keys.hpp"
+#include "app/report/metres_record.hpp"
 
 #include <filesystem>
 #include <sstream>
@@ -12,20 +9,21 @@
 #include "app/report/truth_picture.hpp"
 #include "app/run/metric_map_text.hpp"
 #include "app/run/report.hpp"
+#include "app/run/report_keys.hpp"
 
 namespace app {
 namespace {
 
 // What the pictures mark besides the controller's state: the start, the goal, the arena's
 // boundary, the landmarks, the caption.
-MetricPictureMarks picture_marks(const MetricRunStart &start) {
+MetricPictureMarks picture_marks(const RunOptions &options, const MetresRunStart &start) {
   MetricPictureMarks marks;
-  marks.start = start.room.start;
-  marks.goal = start.room.goal;
+  marks.start = start.strategy.start;
+  marks.goal = start.strategy.goal;
   marks.boundary = PlainGridBounds{start.arena.x_min_m, start.arena.x_max_m, start.arena.y_min_m, start.arena.y_max_m};
   marks.landmarks = landmark_marks(start.arena);
-  marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(start.options.world).filename().string(),
-                              explore::to_string(start.room.strategy), start.setup.name);
+  marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
+                              explore::to_string(start.strategy.strategy), start.setup.name);
   return marks;
 }
 
@@ -39,14 +37,7 @@ std::string trace_header_of(sensing::ModelKind kind) {
   return header + '\n';
 }
 
-}  // namespace
-
-const std::vector<std::string> &metric_own_names() {
-  static const std::vector<std::string> names{"logodds.csv", "thresholded.txt", "wave.png"};
-  return names;
-}
-
-std::string metric_logodds_csv(const sensing::MetricMap &map) {
+std::string logodds_csv(const sensing::MetricMap &map) {
   std::ostringstream csv;
   for (int j = map.cells_y() - 1; j >= 0; --j) {
     for (int i = 0; i < map.cells_x(); ++i) csv << (i == 0 ? "" : ",") << fmt::format("{:.6f}", map.log_odds({i, j}));
@@ -55,7 +46,7 @@ std::string metric_logodds_csv(const sensing::MetricMap &map) {
   return csv.str();
 }
 
-std::string metric_pgm(const sensing::MetricMap &map) {
+std::string pgm_of(const sensing::MetricMap &map) {
   std::string pgm = fmt::format("P5\n{} {}\n255\n", map.cells_x(), map.cells_y());
   const auto l0 = static_cast<float>(map.model().prior_log_odds());
   for (int j = map.cells_y() - 1; j >= 0; --j) {
@@ -66,22 +57,24 @@ std::string metric_pgm(const sensing::MetricMap &map) {
   return pgm;
 }
 
-void MetricFilesRecorder::start(const MetricRunStart &start) {
-  const RunOptions &options = start.options;
-  dir_.emplace(options.output.out_dir, std::vector<NamedInput>{{"the world", options.world}, {"--robot", options.robot}},
-               metric_own_names());
-  kind_ = options.model.kind;
-  wavefront_ = start.room.strategy == explore::StrategyKind::wavefront;
-  threshold_ = start.threshold;
-  world_ = options.world;
-  body_radius_m_ = start.room.body_radius_m;
-  tones_ = metric_map_tones(start.map, sensing::probabilities_in_effect(start.setup, options.sensor), start.threshold);
-  marks_ = picture_marks(start);
-  trace_ = trace_header_of(kind_);
-  replay_.emplace(start.map, tones_, ReplayPose{0, {start.start.x_m, start.start.y_m}, start.start.yaw_rad});
+}  // namespace
+
+const std::vector<std::string> &metres_own_names() {
+  static const std::vector<std::string> names{"logodds.csv", "thresholded.txt", "wave.png"};
+  return names;
 }
 
-void MetricFilesRecorder::on_step(const robot::MetricController &c) {
+MetresRecord::MetresRecord(const RunOptions &options, const MetresRunStart &start)
+    : kind_(options.model.kind), wavefront_(start.strategy.strategy == explore::StrategyKind::wavefront),
+      threshold_(start.threshold), world_(options.world), body_radius_m_(start.strategy.body_radius_m),
+      tones_(metric_map_tones(start.map, sensing::probabilities_in_effect(start.setup, options.sensor), start.threshold)),
+      marks_(picture_marks(options, start)), trace_(trace_header_of(kind_)) {
+  replay_.keep(map_view(start.map, tones_));
+  replay_.on_step(ReplayPose{0, {start.start.x_m, start.start.y_m}, start.start.yaw_rad}, 0.0);
+}
+
+void MetresRecord::on_step(const RunStep &step) {
+  const robot::MetricController &c = *step.metres;
   const sensing::PoseStep &s = c.senses().pose_step();
   trace_ += fmt::format("{},{},{},{}", s.t, s.x_m, s.y_m, s.theta_rad);
   if (kind_ == sensing::ModelKind::bump) {
@@ -91,14 +84,13 @@ void MetricFilesRecorder::on_step(const robot::MetricController &c) {
     for (const double d : s.depth_m) trace_ += fmt::format(",{}", d);
   }
   trace_ += '\n';
-  replay_->on_step(c);
+  replay_.on_step(ReplayPose{c.steps(), c.position(), c.yaw_rad()}, c.time_s());
+  for (const std::string &name : step.snapshots) {
+    for (NamedFile &picture : pictures_now(c, name, name + "_wave")) snapshots_.push_back(std::move(picture));
+  }
 }
 
-void MetricFilesRecorder::on_snapshot(const robot::MetricController &c, const std::string &name) {
-  for (NamedFile &picture : pictures_now(c, name, name + "_wave")) snapshots_.push_back(std::move(picture));
-}
-
-std::vector<NamedFile> MetricFilesRecorder::pictures_now(const robot::MetricController &c, const std::string &map,
+std::vector<NamedFile> MetresRecord::pictures_now(const robot::MetricController &c, const std::string &map,
                                                          const std::string &wave) const {
   MetricPictureMarks marks = marks_;
   marks.when = fmt::format("step {}, {:.1f} s", c.steps(), c.time_s());
@@ -107,45 +99,33 @@ std::vector<NamedFile> MetricFilesRecorder::pictures_now(const robot::MetricCont
   return pictures;
 }
 
-void MetricFilesRecorder::finish(const MetricRunEnd &end) {
+void MetresRecord::write(OutputDir &out, const MetresRunEnd &end) {
   const robot::MetricController &c = end.controller;
   const std::vector<NamedFile> last = pictures_now(c, "map", "wave");  // map.png, wave.png
   const MetricTruthScores scores{end.report.text(report_key::cell_accuracy), end.report.text(report_key::coverage)};
-  replay_->finish(c);
-  MetricReplayText text;  // what replay.html shows besides the frames
-  text.title = world_;
-  text.caption = marks_.caption;
-  text.goal = marks_.goal;
-  text.landmarks = marks_.landmarks;
-  text.boundary = marks_.boundary;
-  text.body_radius_m = body_radius_m_;
-  for (auto &[key, value] : summary_pairs(end.report)) {
-    if (key != "wall_time_ms") text.summary.emplace_back(key, value);
-  }
+  replay_.finish(ReplayPose{c.steps(), c.position(), c.yaw_rad()}, c.time_s());
+  ReplayInput page;  // what replay.html shows besides the frames
+  replay_.fill(page, c.map().geometry());
+  page.title = world_;
+  page.caption = marks_.caption;
+  if (marks_.goal) page.goals.push_back(*marks_.goal);
+  page.goal_side_m = 4.0 * body_radius_m_;
+  page.body_radius_m = body_radius_m_;
+  page.landmarks = marks_.landmarks;
+  page.solid_boundary = marks_.boundary;
+  page.summary = replay_summary(end.report);
   // The core files in the order every run writes them, then the room's own.
-  OutputDir &out = *dir_;
-  out.write("map.pgm", metric_pgm(c.map()));
+  out.write("map.pgm", pgm_of(c.map()));
   out.write("map.yaml", map_yaml(c.map().geometry(), "map.pgm"));
   out.write(last.front().name, last.front().bytes);
   out.write("truth.png", metric_truth_picture(c, end.truth, threshold_, marks_, scores));
   out.write("summary.json", report_json(end.report).dump(2) + "\n");
   out.write("trace.csv", trace_);
   for (const NamedFile &snapshot : snapshots_) out.write(snapshot.name, snapshot.bytes);
-  if (const std::optional<Replay> page = replay_html(replay_->input(text))) out.write("replay.html", page->html);
-  out.write("logodds.csv", metric_logodds_csv(c.map()));
+  if (const std::optional<Replay> replay = replay_html(page)) out.write("replay.html", replay->html);
+  out.write("logodds.csv", logodds_csv(c.map()));
   out.write("thresholded.txt", metric_binary_map(c.map(), threshold_));
   for (std::size_t i = 1; i < last.size(); ++i) out.write(last[i].name, last[i].bytes);
-  out.finish();
-}
-
-MetricRunSummary run_metric_and_write(const maze::World &world, const RunOptions &options, std::ostream &out,
-                               std::chrono::steady_clock::time_point started, robot::StopPoll interrupted,
-                               Report *report, int progress_fd) {
-  if (options.output.out_dir.empty()) {
-    return run_metric_world(world, options, out, started, interrupted, report, nullptr, progress_fd);
-  }
-  MetricFilesRecorder recorder;
-  return run_metric_world(world, options, out, started, interrupted, report, &recorder, progress_fd);
 }
 
 }  // namespace app
