@@ -144,7 +144,7 @@ TEST_CASE("room cone: the arc occupied, the cone inside free; a sonar's nothing-
   ir.aperture_rad = 0.03;
   ir.range_error = 0.03;
   MetricMarks marks(model.options().p_occ, model.options().p_free);
-  sensing::mark_metric_cone(map, std::span(&ir, 1), marks);
+  sensing::mark_metric_cone(map, {}, std::span(&ir, 1), marks);
   marks.apply(map);
   CHECK(picture(map) ==
         "                    \n"
@@ -154,7 +154,7 @@ TEST_CASE("room cone: the arc occupied, the cone inside free; a sonar's nothing-
   sensing::RangeReading sonar = ir;
   sonar.range_m = 1.5;
   sonar.echo_can_be_lost = true;
-  sensing::mark_metric_cone(other, std::span(&sonar, 1), marks);
+  sensing::mark_metric_cone(other, {}, std::span(&sonar, 1), marks);
   CHECK(marks.empty());
 }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <variant>
 #include <numbers>
@@ -17,9 +18,10 @@
 #include "app/run/metric_run_report.hpp"
 #include "app/run/metric_evaluation.hpp"
 #include "app/run/profile_json.hpp"
-#include "app/run/progress_line.hpp"
+#include "app/run/run_progress.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "maze/sim/profile.hpp"
@@ -254,13 +256,6 @@ void print_end(std::ostream &out, RoomLog &log, const robot::MetricController &c
       << metric_binary_map(c.map(), threshold) << '\n';
 }
 
-// The reachable free cells of the truth, as the score counts them.
-std::size_t reachable_free_of(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold) {
-  MetricRunSummary counted;
-  score_metric_map(map, truth, threshold, counted);
-  return counted.reachable_free;
-}
-
 }  // namespace
 
 int metric_run_exit_status(const MetricRunSummary &s) {
@@ -301,31 +296,25 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   const maze::TruthRaster truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
   // Free geometry: on SolidGeometry, a maze's geometry too (run_metric_world), never on a WallGrid.
   webots::embedded::Simulation simulation(maze::world_of(arena), profile, sim);
-  if (observer != nullptr) {
-    const MetresRunStart metres{setup, room, arena, map, start_pose, threshold};
-    observer->on_start(RunStart{options, simulation.robot(), nullptr, &metres});
-  }
+  // The files first, then the progress line.
+  RunObservers observers;
+  observers.add(observer);
+  std::optional<RunProgress> progress;
+  if (progress_fd >= 0) observers.add(&progress.emplace(progress_fd));
+  const MetresRunStart metres{setup, room, arena, map, start_pose, truth, threshold};
+  observers.on_start(RunStart{options, simulation.robot(), nullptr, &metres});
 
   // ---- the run ----
   RoomLog log(options, threshold, out);
-  std::optional<ProgressLine> progress;
-  if (progress_fd >= 0) progress.emplace(progress_fd, static_cast<int>(reachable_free_of(map, truth, threshold)));
-  const auto observed = [&map, &truth, threshold] {
-    MetricRunSummary now;
-    score_metric_map(map, truth, threshold, now);
-    return now.reachable_free_observed;
-  };
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
                                           [&](const robot::MetricController &c) {
                                             RunStep step = step_at(c.steps(), c.time_s(), simulation.pose());
                                             step.metres = &c;
                                             log.on_step(c, step.snapshots);
-                                            if (observer != nullptr) observer->on_step(step);
-                                            if (progress) progress->update_metres(c.steps(), observed, c.time_s());
+                                            observers.on_step(step);
                                           },
                                           interrupted);
   MetricRunSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
-  progress.reset();  // the line cleared before anything else is printed
   if (summary.ending == robot::MetricEnding::stopped && interrupted != nullptr && interrupted()) {
     summary.interrupted = true;
     summary.message = "interrupted by " + common::interrupt_name();
@@ -336,13 +325,22 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   if (options.strategy == explore::StrategyKind::frontier) settle_frontier_ending(map, first_left, summary);
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
-  if (!options.output.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
   const Report report = metric_run_report(options, profile.name, setup, spec, summary);
+  // The files and the progress line's end before anything is printed; a full disk is said
+  // after the summary, which the user still gets.
+  std::exception_ptr no_space;
+  try {
+    const MetresRunEnd ended{controller_loop, truth, report};
+    observers.on_end(RunEnd{options, nullptr, &ended});
+  } catch (const common::NoSpaceError &) {
+    no_space = std::current_exception();
+  }
+  if (!options.output.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
   if (!options.output.quiet) out << '\n';
   out << format_summary(report);
-  if (observer != nullptr) {
-    const MetresRunEnd metres{controller_loop, truth, report};
-    observer->on_end(RunEnd{options, nullptr, &metres});
+  if (no_space) {
+    out << std::flush;
+    std::rethrow_exception(no_space);
   }
   if (report_out != nullptr) *report_out = report;
   return summary;

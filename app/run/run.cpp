@@ -29,7 +29,7 @@
 #include "app/run/plan_path.hpp"
 #include "app/run/step_limit.hpp"
 #include "app/run/profile_json.hpp"
-#include "app/run/progress_line.hpp"
+#include "app/run/run_progress.hpp"
 #include "app/run/terminal.hpp"
 
 namespace app {
@@ -266,7 +266,7 @@ render::MapStyle map_style(const OutputOptions &output, const mapping::SensorMod
 // prompt, the observer, Ctrl-C.
 robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webots::embedded::Simulation &simulation,
                        robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
-                       const RunControls &controls, RunState &state) {
+                       const RunControls &controls, RunObserver *observer, RunState &state) {
   const OutputOptions &o = options.output;
   std::optional<ScreenGuard> screen;
   std::optional<Animator> animator;
@@ -281,15 +281,12 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webot
                     view_for_terminal(controls.terminal_fd, k, truth.height() * k, truth.width() * k,
                                       style.subcell_columns));
   }
-  std::optional<ProgressLine> progress;
-  if (controls.progress_fd >= 0) progress.emplace(controls.progress_fd, count_reachable_cells(truth));
   // The observer first: the step's record is kept before anything can stop the run.
-  robot::RunHooks hooks = observed_hooks(controls.observer, simulation);
-  if (printer || animator || o.step || progress) {
+  robot::RunHooks hooks = observed_hooks(observer, simulation);
+  if (printer || animator || o.step) {
     hooks.on_move = [&, told = std::move(hooks.on_move)](const robot::MoveReport &report) {
       if (told) told(report);
       if (printer) (*printer)(report);
-      if (progress) progress->update(report.moves, report.visits->count(), report.sim_time_s);
       if (animator) {
         const maze::sim::Pose &pose = simulation.pose();
         animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,
@@ -388,14 +385,18 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   assert(options.output.out_dir.empty() || controls.observer != nullptr);
-  if (controls.observer != nullptr) {
-    const CellRunStart cell{truth, controller_opts, style.initial_log_odds};
-    controls.observer->on_start(RunStart{options, simulation.robot(), &cell, nullptr});
-  }
+  // The files first, then the progress line.
+  RunObservers observers;
+  observers.add(controls.observer);
+  std::optional<RunProgress> progress;
+  if (controls.progress_fd >= 0) observers.add(&progress.emplace(controls.progress_fd));
+  const CellRunStart cell_start{truth, controller_opts, style.initial_log_odds};
+  observers.on_start(RunStart{options, simulation.robot(), &cell_start, nullptr});
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
-  const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls, state);
+  const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls,
+                                              observers.empty() ? nullptr : &observers, state);
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
@@ -406,11 +407,11 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   // A full disk is said after the summary, which the user still gets.
   std::exception_ptr no_space;
-  if (controls.observer != nullptr) {
+  if (!observers.empty()) {
     try {
       const CellRunEnd cell{truth, summary, result, model,
                             learned_sides(result, style.initial_log_odds, style.threshold)};
-      controls.observer->on_end(RunEnd{options, &cell, nullptr});
+      observers.on_end(RunEnd{options, &cell, nullptr});
     } catch (const common::NoSpaceError &) {
       no_space = std::current_exception();
     }

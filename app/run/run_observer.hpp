@@ -46,6 +46,7 @@ struct MetresRunStart {
   const maze::Arena &arena;
   const sensing::MetricMap &map;         // the map the run fills; outlives the run
   const maze::ArenaPose &start;
+  const maze::TruthRaster &truth;        // at the map's resolution: what the map is scored against
   double threshold = 0.0;                // log-odds drawn occupied at or above
 };
 

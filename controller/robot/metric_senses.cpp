@@ -15,60 +15,44 @@
 namespace robot {
 namespace {
 
-sensing::MetricMarks marks_for(MetricSensing s, const mapping::SensorModelOptions &sensor) {
-  if (s == MetricSensing::pie) return {sensing::kPieOccupiedP, sensing::kPieFreeP};
-  return {sensor.p_occ, sensor.p_free};
+// The marks' two levels: the set-up's own numbers (pie's), else the sensor model's.
+sensing::MetricMarks marks_for(const sensing::SetUp &setup, const mapping::SensorModelOptions &sensor) {
+  const sensing::MarkProbabilities p = sensing::probabilities_in_effect(setup, sensor);
+  return {p.p_occ, p.p_free};
 }
 
 }  // namespace
 
-MetricSensing metric_sensing_for(sensing::ModelKind kind) {
-  switch (kind) {
-    case sensing::ModelKind::cell:
-    case sensing::ModelKind::ray: return MetricSensing::lidar;
-    case sensing::ModelKind::pie: return MetricSensing::pie;
-    case sensing::ModelKind::cone: return MetricSensing::cone;
-    case sensing::ModelKind::bump: return MetricSensing::bump;
-    case sensing::ModelKind::depth: return MetricSensing::depth;
-  }
-  return MetricSensing::lidar;
-}
-
 MetricSenses::MetricSenses(webots::Robot &robot, const ControllerOptions &options, sensing::MetricMap &map)
     : options_(options),
       map_(map),
-      sensing_(metric_sensing_for(options.model.kind)),
+      setup_(sensing::setup(options.model.kind)),
       bump_depth_options_(map.bump_depth_options()),
-      devices_(robot, options, sensing::setup(options.model.kind)),
+      devices_(robot, options, setup_),
       filter_(options.scan_filter),
-      marks_(marks_for(sensing_, options.sensor)) {
-  switch (sensing_) {
-    case MetricSensing::lidar: break;
-    case MetricSensing::bump: {
-      const auto &mounts = options.sensing.bumpers;
-      for (std::size_t i = 0; i < mounts.size(); ++i) {
-        const double a = mounts[i].angle_rad;
-        const int side = std::abs(a) < 0.1 ? 2 : (a > 0 ? 1 : 0);
-        bumper_of_side_[side] = static_cast<int>(i);
-        bump_depth_options_.bump_radius_m = mounts[i].offset_m;
-      }
-      if (mounts.size() != 3 || bumper_of_side_[0] < 0 || bumper_of_side_[1] < 0 || bumper_of_side_[2] < 0) {
-        throw common::InputError(fmt::format(
-            "the bump set-up in a room needs three bumpers, front and +-45 deg (the homework's); the robot has {}",
-            mounts.size()));
-      }
-      break;
+      marks_(marks_for(setup_, options.sensor)) {
+  if (setup_.reads_bumpers()) find_bumpers(options.sensing.bumpers);
+  if (setup_.reads_ranges() && setup_.metres_range_mark == nullptr) {
+    if (options.sensing.ranges.size() != sensing::kDepthRays) {
+      throw common::InputError(fmt::format("the depth set-up in a room needs {} depth rays; the robot has {}",
+                                           sensing::kDepthRays, options.sensing.ranges.size()));
     }
-    case MetricSensing::depth:
-      if (options.sensing.ranges.size() != sensing::kDepthRays) {
-        throw common::InputError(fmt::format("the depth set-up in a room needs {} depth rays; the robot has {}",
-                                             sensing::kDepthRays, options.sensing.ranges.size()));
-      }
-      [[fallthrough]];
-    case MetricSensing::pie:
-    case MetricSensing::cone:
-      if (sensing_ == MetricSensing::depth) read_depth_mounts(options.sensing.ranges);
-      break;
+    read_depth_mounts(options.sensing.ranges);
+  }
+}
+
+// The bump marks' bumpers: right, left and front (+-45 deg and 0), as the homework's log has.
+void MetricSenses::find_bumpers(const std::vector<BumperMount> &mounts) {
+  for (std::size_t i = 0; i < mounts.size(); ++i) {
+    const double a = mounts[i].angle_rad;
+    const int side = std::abs(a) < 0.1 ? 2 : (a > 0 ? 1 : 0);
+    bumper_of_side_[side] = static_cast<int>(i);
+    bump_depth_options_.bump_radius_m = mounts[i].offset_m;
+  }
+  if (mounts.size() != 3 || bumper_of_side_[0] < 0 || bumper_of_side_[1] < 0 || bumper_of_side_[2] < 0) {
+    throw common::InputError(fmt::format(
+        "the bump set-up in a room needs three bumpers, front and +-45 deg (the homework's); the robot has {}",
+        mounts.size()));
   }
 }
 
@@ -98,7 +82,7 @@ void MetricSenses::read_depth_mounts(const std::vector<RangeSensorMount> &mounts
 void MetricSenses::enable(int time_step_ms) { devices_.enable(time_step_ms); }
 
 bool MetricSenses::nothing_seen_marks_nothing() const {
-  if (sensing_ != MetricSensing::cone) return false;
+  if (setup_.kind != sensing::ModelKind::cone) return false;
   return std::any_of(devices_.range_sensors.begin(), devices_.range_sensors.end(), [](const webots::DistanceSensor *d) {
     return d->getType() == webots::DistanceSensor::SONAR;
   });
@@ -126,46 +110,44 @@ std::size_t MetricSenses::scan(mapping::Point centre, double yaw_rad, double tim
   pose_step_.x_m = centre.x_m;
   pose_step_.y_m = centre.y_m;
   pose_step_.theta_rad = yaw_rad;
-  switch (sensing_) {
-    case MetricSensing::lidar: {
-      const sensing::LidarScan filtered = filter_.apply(lidar_scan(*devices_.lidar, centre, yaw_rad));
-      clearance_ahead_m_ = std::numeric_limits<double>::infinity();
-      for (int n = 0; n < filtered.beam_count(); ++n) {
-        if (filtered.kind(n) != sensing::ReadingKind::hit) continue;
-        if (std::abs(common::wrap_angle_rad(filtered.beam_angle_rad(n))) > kAheadHalfAngle_rad) continue;
-        clearance_ahead_m_ = std::min(clearance_ahead_m_, static_cast<double>(filtered.ranges[static_cast<std::size_t>(n)]));
-      }
-      sensing::mark_metric_lidar(map_, filtered, marks_);
-      return marks_.apply(map_);
+  if (setup_.reads_lidar()) {
+    const sensing::LidarScan filtered = filter_.apply(lidar_scan(*devices_.lidar, centre, yaw_rad));
+    clearance_ahead_m_ = std::numeric_limits<double>::infinity();
+    for (int n = 0; n < filtered.beam_count(); ++n) {
+      if (filtered.kind(n) != sensing::ReadingKind::hit) continue;
+      if (std::abs(common::wrap_angle_rad(filtered.beam_angle_rad(n))) > kAheadHalfAngle_rad) continue;
+      clearance_ahead_m_ = std::min(clearance_ahead_m_, static_cast<double>(filtered.ranges[static_cast<std::size_t>(n)]));
     }
-    case MetricSensing::pie:
-      read_ranges(centre, yaw_rad);
-      sensing::mark_metric_pie(map_, options_.sensing.range_model, readings_, marks_);
-      return marks_.apply(map_);
-    case MetricSensing::cone:
-      read_ranges(centre, yaw_rad);
-      sensing::mark_metric_cone(map_, readings_, marks_);
-      return marks_.apply(map_);
-    case MetricSensing::bump:
-      pose_step_.bump_right = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
-      pose_step_.bump_left = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
-      pose_step_.bump_front = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
-      bumped_ = pose_step_.bump_right || pose_step_.bump_left || pose_step_.bump_front;
-      sensing::apply_bump_depth_marks(bump_depth_options_, sensing::BumpDepthSensor::bump, pose_step_,
-                                      map_.log_grid());
-      return 1;
-    case MetricSensing::depth:
-      read_ranges(centre, yaw_rad);
-      for (std::size_t i = 0; i < readings_.size(); ++i) {
-        // the depth marks' reading: from the centre along the ray, or from the rays' origin as the device says it
-        const RangeSensorMount &m = options_.sensing.ranges[i];
-        pose_step_.depth_m[i] = m.origin ? devices_.range_sensors[i]->getValue() : readings_[i].range_m + m.offset_m;
-      }
-      sensing::apply_bump_depth_marks(bump_depth_options_, sensing::BumpDepthSensor::depth, pose_step_,
-                                      map_.log_grid());
-      return 1;
+    sensing::mark_metric_lidar(map_, filtered, marks_);
+    return marks_.apply(map_);
   }
-  return 0;
+  if (setup_.metres_range_mark != nullptr) {
+    read_ranges(centre, yaw_rad);
+    setup_.metres_range_mark(map_, options_.sensing.range_model, readings_, marks_);
+    return marks_.apply(map_);
+  }
+  // The pose log's marks: the bumpers pressed, or the depth rays' readings.
+  if (setup_.reads_bumpers()) {
+    pose_step_.bump_right = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[0])]->getValue() > 0.5;
+    pose_step_.bump_left = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[1])]->getValue() > 0.5;
+    pose_step_.bump_front = devices_.bumpers[static_cast<std::size_t>(bumper_of_side_[2])]->getValue() > 0.5;
+    bumped_ = pose_step_.bump_right || pose_step_.bump_left || pose_step_.bump_front;
+  } else {
+    read_depth_rays(centre, yaw_rad);
+  }
+  sensing::apply_bump_depth_marks(bump_depth_options_,
+                                  setup_.reads_bumpers() ? sensing::BumpDepthSensor::bump : sensing::BumpDepthSensor::depth,
+                                  pose_step_, map_.log_grid());
+  return 1;
+}
+
+void MetricSenses::read_depth_rays(mapping::Point centre, double yaw_rad) {
+  read_ranges(centre, yaw_rad);
+  for (std::size_t i = 0; i < readings_.size(); ++i) {
+    // the depth marks' reading: from the centre along the ray, or from the rays' origin as the device says it
+    const RangeSensorMount &m = options_.sensing.ranges[i];
+    pose_step_.depth_m[i] = m.origin ? devices_.range_sensors[i]->getValue() : readings_[i].range_m + m.offset_m;
+  }
 }
 
 }  // namespace robot

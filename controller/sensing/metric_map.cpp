@@ -220,7 +220,8 @@ void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std
   }
 }
 
-void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readings, MetricMarks &marks) {
+void mark_metric_cone(const MetricMap &map, const RangeModelOptions &, std::span<const RangeReading> readings,
+                      MetricMarks &marks) {
   const double r = map.cell_m();
   for (const RangeReading &reading : readings) {
     if (!(reading.range_m >= 0.0)) continue;

@@ -165,7 +165,9 @@ void mark_metric_lidar(const MetricMap &map, const LidarScan &scan, MetricMarks 
 // (pie_half_angle_rad, pie_contact_m). Use MetricMarks(kPieOccupiedP, kPieFreeP).
 void mark_metric_pie(const MetricMap &map, const RangeModelOptions &options, std::span<const RangeReading> readings,
                    MetricMarks &marks);
-// Marks one reading of every IR or sonar sensor with the cone sweep.
-void mark_metric_cone(const MetricMap &map, std::span<const RangeReading> readings, MetricMarks &marks);
+// Marks one reading of every IR or sonar sensor with the cone sweep (`options` unused: the
+// cone's own width is each sensor's aperture).
+void mark_metric_cone(const MetricMap &map, const RangeModelOptions &options, std::span<const RangeReading> readings,
+                      MetricMarks &marks);
 
 }  // namespace sensing

@@ -1,5 +1,7 @@
 #include "sensing/setups.hpp"
 
+#include "sensing/metric_map.hpp"
+
 #include <array>
 #include <cassert>
 #include <string>
@@ -49,10 +51,10 @@ const std::array<SetUp, 6> kSetUps{{
      &depth_update, kGenericSensor},
     {ModelKind::pie, "pie", "the IR pie-slice update", "ir-ring", kPieBeta | kPieAlpha,
      MarkProbabilities{kPieFreeP, kPieOccupiedP, std::nullopt}, Arrival::resolve_and_confirm, RangeMark{&pie_mark},
-     &pie_update, kInfraRedSensor},
+     &pie_update, kInfraRedSensor, &mark_metric_pie},
     {ModelKind::cone, "cone", "the sonar/IR cone sweep", "ir-ring", kProbabilities, std::nullopt,
      Arrival::resolve_and_confirm, RangeMark{&cone_mark}, &make_cone_update,
-     kInfraRedSensor | kSonarSensor},
+     kInfraRedSensor | kSonarSensor, &mark_metric_cone},
 }};
 
 }  // namespace

@@ -2,16 +2,17 @@
 // The set-ups: a row per `--model`, the one place that says what a set-up is. Everything
 // that differs between set-ups is read from its row - the devices it needs, the robot it runs
 // on by default, the run options its model reads, the numbers it marks with, what the robot
-// does on arriving in a cell, and the model's mark function - so nothing else switches on
-// the model. Adding a set-up: a ModelKind, a row in setups.cpp, its model file, its tests.
+// does on arriving in a cell, and the model's mark functions on a maze's sub-cells and on a
+// room's metric map - so nothing else switches on the model. Adding a set-up: a ModelKind, a
+// row in setups.cpp, its model file, its tests.
 //
-//   name   reads          default robot  own numbers (p free / p occupied)   on arrival
-//   cell   lidar          hambot         --p-free / --p-occ                  resolve, confirm
-//   ray    lidar          hambot         --p-free / --p-occ                  resolve, confirm
-//   bump   bumpers        bumper-depth   0.3 / 0.99999 (course)              probe
-//   depth  range sensors  bumper-depth   0.4 ray, 0.3 robot / 0.99999 (c.)   look around
-//   pie    range sensors  ir-ring        0.4 / 0.7 (course)                  resolve, confirm
-//   cone   range sensors  ir-ring        --p-free / --p-occ                  resolve, confirm
+//   name   reads          default robot  own numbers (p free / p occupied)   on arrival        in metres
+//   cell   lidar          hambot         --p-free / --p-occ                  resolve, confirm  the rays
+//   ray    lidar          hambot         --p-free / --p-occ                  resolve, confirm  the rays
+//   bump   bumpers        bumper-depth   0.3 / 0.99999 (course)              probe             the pose log
+//   depth  range sensors  bumper-depth   0.4 ray, 0.3 robot / 0.99999 (c.)   look around       the pose log
+//   pie    range sensors  ir-ring        0.4 / 0.7 (course)                  resolve, confirm  pie slices
+//   cone   range sensors  ir-ring        --p-free / --p-occ                  resolve, confirm  cone arcs
 
 #include <cstddef>
 #include <optional>
@@ -97,6 +98,11 @@ struct MarkProbabilities {
   std::optional<double> p_robot;
 };
 
+class MetricMap;
+class MetricMarks;
+using MetricRangeMark = void (*)(const MetricMap &map, const RangeModelOptions &options,
+                                 std::span<const RangeReading> readings, MetricMarks &marks);
+
 struct SetUp {
   ModelKind kind;
   std::string_view name;          // --model NAME
@@ -112,6 +118,11 @@ struct SetUp {
   LeveledUpdate (*make_update)(const mapping::SensorModelOptions &sensor) = nullptr;
   // The range set-ups: the RangeSensorKind bits their model is made for; 0 for the others.
   unsigned range_sensor_kinds = 0;
+  // In metres (a room's metric map): how one scan of the range sensors marks it (pie's slices,
+  // the cone's arcs); nothing for the lidar (its rays are traced, mark_metric_lidar) and for
+  // bump and depth, whose poses and readings mark it as the course's pose log does
+  // (sensing/bump_depth_marks.hpp).
+  MetricRangeMark metres_range_mark = nullptr;
 
   bool uses(ModelOption option) const { return (options & option) != 0; }
   bool reads_lidar() const { return std::holds_alternative<LidarMark>(mark); }

@@ -30,6 +30,8 @@ import time
 
 import maze_mapper
 
+_KEY = maze_mapper._native.report_key  # the summary keys, spelled once for every report
+
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message):
@@ -74,14 +76,14 @@ def grade(world, path):
         message = str(e)
         return {"file": path, "error": message if message.startswith(path) else f"{path}: {message}"}
     named = "; ".join(repr(w) for w in s.wrong_sides[:3]) + ("; ..." if len(s.wrong_sides) > 3 else "")
-    return {"file": path, "coverage": f"{s.coverage_percent:.2f}%",
-            "wall_accuracy": f"{s.wall_accuracy_percent:.2f}%", "wrong": str(len(s.wrong_sides)),
+    return {"file": path, _KEY.coverage: f"{s.coverage_percent:.2f}%",
+            _KEY.wall_accuracy: f"{s.wall_accuracy_percent:.2f}%", "wrong": str(len(s.wrong_sides)),
             "first_wrong": named, "error": ""}
 
 
-GRID_COLUMNS = ["file", "coverage", "wall_accuracy", "wrong", "first_wrong", "error"]
+GRID_COLUMNS = ["file", _KEY.coverage, _KEY.wall_accuracy, "wrong", "first_wrong", "error"]
 RUN_COLUMNS = ["student", "world", "start", "exit", "end", "sim_time_s", "distance_m", "collisions", "final_x",
-               "final_y", "final_yaw_deg", "goal", "grid", "coverage", "wall_accuracy", "error"]
+               "final_y", "final_yaw_deg", "goal", "grid", _KEY.coverage, _KEY.wall_accuracy, "error"]
 
 
 def write_csv(path, rows, columns=GRID_COLUMNS):
@@ -141,7 +143,8 @@ def _summary_values(summary):
             "distance_m": _text(summary, "distance_m"), "collisions": _text(summary, "collisions"),
             "final_x": _text(pose, "x_m"), "final_y": _text(pose, "y_m"), "final_yaw_deg": _text(pose, "yaw_deg"),
             "goal": _text(summary, "goal"), "grid": "kept" if kept else "",
-            "coverage": _percent_text(summary, "coverage"), "wall_accuracy": _percent_text(summary, "wall_accuracy")}
+            _KEY.coverage: _percent_text(summary, _KEY.coverage),
+            _KEY.wall_accuracy: _percent_text(summary, _KEY.wall_accuracy)}
 
 
 def _score_saved_grid(row, truth, folder, since):
@@ -157,7 +160,8 @@ def _score_saved_grid(row, truth, folder, since):
     if graded["error"]:
         row["error"] = row.get("error") or graded["error"]
     else:
-        row["coverage"], row["wall_accuracy"] = graded["coverage"], graded["wall_accuracy"]
+        for key in (_KEY.coverage, _KEY.wall_accuracy):
+            row[key] = graded[key]
 
 
 def run_once(student, controller, world, start, args, truth=None):
@@ -199,8 +203,8 @@ def _student_line(student, mine):
     failed = [r for r in mine if r.get("exit") != 0]
     return [student, f"{len(finished)}/{len(mine)}", f"{reached}/{len(with_goal)}" if with_goal else "-",
             _mean([float(r["sim_time_s"]) for r in finished if r.get("sim_time_s")], "{:.1f} s"),
-            _mean([float(r["coverage"].rstrip("%")) for r in mine if r.get("coverage")], "{:.1f}%"),
-            _mean([float(r["wall_accuracy"].rstrip("%")) for r in mine if r.get("wall_accuracy")], "{:.1f}%"),
+            *(_mean([float(r[key].rstrip("%")) for r in mine if r.get(key)], "{:.1f}%")
+              for key in (_KEY.coverage, _KEY.wall_accuracy)),
             str(sum(int(r["collisions"]) for r in mine if r.get("collisions"))),
             f"{failed[0]['world']}, start {failed[0]['start']}: {failed[0].get('error') or failed[0].get('end')}"
             if failed else ""]

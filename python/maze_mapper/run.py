@@ -30,6 +30,8 @@ import maze_mapper
 from maze_mapper import _native, controller, scene
 from maze_mapper.controller import Robot, SimulationEnded
 
+_KEY = _native.report_key  # the summary keys, spelled once for every report
+
 EXIT_USAGE = 2
 _BASIC_STEP_MS = 32  # the simulator's basic time step
 
@@ -208,9 +210,9 @@ def _grid_entries(e, world):
     shape = grid.array.shape if isinstance(grid, maze_mapper.OccupancyGrid) else getattr(grid, "shape", ())
     e.both("subcells", str(shape[-1]) if shape else "?", shape[-1] if shape else None)
     e.both("visited", str(result.visited_reachable_cells), result.visited_reachable_cells)
-    e.both("reachable", str(result.reachable_cells), result.reachable_cells)
-    e.both("coverage", f"{result.coverage_percent:.2f}%", _two_decimals(result.coverage_percent))
-    e.both("wall_accuracy", f"{result.wall_accuracy_percent:.2f}%", _two_decimals(result.wall_accuracy_percent))
+    e.both(_KEY.reachable, str(result.reachable_cells), result.reachable_cells)
+    e.both(_KEY.coverage, f"{result.coverage_percent:.2f}%", _two_decimals(result.coverage_percent))
+    e.both(_KEY.wall_accuracy, f"{result.wall_accuracy_percent:.2f}%", _two_decimals(result.wall_accuracy_percent))
     if result.wrong_where_looked:
         named = ", ".join(repr(s) for s in result.first_wrong_where_looked)
         more = ", ..." if result.wrong_where_looked > len(result.first_wrong_where_looked) else ""

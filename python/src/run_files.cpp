@@ -19,6 +19,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/run/option_fields.hpp"
 #include "app/run/report.hpp"
+#include "app/run/report_keys.hpp"
 #include "common/error.hpp"
 #include "mapping/walls.hpp"
 #include "maze/world/truth_raster.hpp"
@@ -281,6 +282,12 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
 }
 
 void bind_run_files(py::module_ &m) {
+  py::module_ keys = m.def_submodule("report_key", "The summary keys every report spells the same (summary.json, batch "
+                                                     "columns, the grader's table).");
+  keys.attr("reachable") = std::string(app::report_key::reachable);
+  keys.attr("coverage") = std::string(app::report_key::coverage);
+  keys.attr("wall_accuracy") = std::string(app::report_key::wall_accuracy);
+  keys.attr("cell_accuracy") = std::string(app::report_key::cell_accuracy);
   m.def("option_help", [](const std::string &flag) { return app::option_help(flag); }, py::arg("flag"),
         "The help line of a run's option (\"--robot\", \"--seed\", ...): the same words as maze_mapper run, room and "
         "mms; the runner's --help shows them.");
