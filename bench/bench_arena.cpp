@@ -11,7 +11,7 @@
 
 #include "common/random.hpp"
 #include "driving_robot.hpp"
-#include "maze/generate/arena_generator.hpp"
+#include "maze/generate/solids_generator.hpp"
 #include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"

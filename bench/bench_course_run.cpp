@@ -39,7 +39,7 @@
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/simulation.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace {
 

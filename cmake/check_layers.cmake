@@ -1,8 +1,10 @@
 # check_layers(DIR dir PREFIX prefix LAYERS "folder:used,used" ... [FORBID folder REASON text])
 #
 # The layering rule of a library split into folders (controller/, app/), checked when CMake
-# configures: a file in DIR/<folder>/ includes headers of its own folder and of the folders
-# its layer lists, as "PREFIX<folder>/name.hpp", and nothing of another of DIR's folders.
+# configures: a file in DIR/<folder>/ or in a subfolder of it (a concept's variants, such as
+# <folder>/cell/ and <folder>/metric/) includes headers of its own folder and of the folders
+# its layer lists, as "PREFIX<folder>/name.hpp" or "PREFIX<folder>/sub/name.hpp" (the folder is
+# the first path component), and nothing of another of DIR's folders.
 # A header included without a folder ("name.hpp") is refused, so that no include escapes the
 # rule; an include of FORBID's folder is refused with REASON.
 function(check_layers)
@@ -22,7 +24,7 @@ function(check_layers)
       string(REPLACE "," ";" _uses "${_uses}")
       list(APPEND _allowed ${_uses})
     endif()
-    file(GLOB _files CONFIGURE_DEPENDS ${CL_DIR}/${_folder}/*.hpp ${CL_DIR}/${_folder}/*.cpp)
+    file(GLOB_RECURSE _files CONFIGURE_DEPENDS ${CL_DIR}/${_folder}/*.hpp ${CL_DIR}/${_folder}/*.cpp)
     foreach(_file IN LISTS _files)
       file(STRINGS ${_file} _includes REGEX "^#include \"")
       foreach(_include IN LISTS _includes)

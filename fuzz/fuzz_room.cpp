@@ -11,8 +11,8 @@
 #include <string_view>
 
 #include "common/error.hpp"
-#include "maze/world/arena.hpp"
-#include "maze/formats/room_format.hpp"
+#include "maze/world/geometry.hpp"
+#include "maze/formats/solids_format.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char *>(data), size);

@@ -13,7 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli/commands.hpp"
-#include "app/run/metric_run.hpp"
+#include "app/run/metric/run.hpp"
 #include "app/run/option_fields.hpp"
 #include "app/run/run_options.hpp"
 #include "cli_runner.hpp"

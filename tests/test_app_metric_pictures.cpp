@@ -1,4 +1,4 @@
-// The room run's pictures (app/picture/metric_map_pictures.hpp): the wave's tones, and what
+// The room run's pictures (app/picture/metric/map_pictures.hpp): the wave's tones, and what
 // `room --out` draws: map.png, wave.png and a picture per snapshot, with their tones at known
 // cells; replay.html's frames and their size; an output over the world refused. About 2 s.
 
@@ -16,9 +16,9 @@
 
 #include "app/picture/map_picture.hpp"
 #include "app/picture/plain_grid_picture.hpp"
-#include "app/picture/metric_map_pictures.hpp"
+#include "app/picture/metric/map_pictures.hpp"
 #include "app/report/files_recorder.hpp"
-#include "app/run/metric_run.hpp"
+#include "app/run/metric/run.hpp"
 #include "maze/world/world.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"

@@ -1,4 +1,4 @@
-// The room run's report (app/run/metric_run_report.hpp): one list of entries, rendered to the
+// The room run's report (app/run/metric/run_report.hpp): one list of entries, rendered to the
 // printed summary and to summary.json.
 
 #include <doctest/doctest.h>
@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/run/metric_run_report.hpp"
+#include "app/run/metric/run_report.hpp"
 #include "app/run/report.hpp"
 
 namespace {

@@ -17,10 +17,10 @@
 #include <string>
 
 #include "app/course/demo_pie.hpp"
-#include "app/run/metric_run.hpp"
+#include "app/run/metric/run.hpp"
 #include "common/error.hpp"
-#include "maze/world/arena.hpp"
-#include "maze/generate/arena_generator.hpp"
+#include "maze/world/geometry.hpp"
+#include "maze/generate/solids_generator.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/profile.hpp"
 

@@ -8,7 +8,7 @@
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
 #include "mapping/walls.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 // The control loop itself runs against the embedded simulator (maze/) in the app's tests;
 // here, its options, and the rescans of a side a faulty scan left unknown.

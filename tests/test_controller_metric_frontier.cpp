@@ -1,4 +1,4 @@
-// Frontier exploration over a metric map (explore/metric_frontier.hpp): which cells are
+// Frontier exploration over a metric map (explore/metric/frontier.hpp): which cells are
 // frontier, which one the robot drives to, and when a frontier cell is set aside (by itself,
 // tried again once the map has progressed).
 
@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "explore/metric_frontier.hpp"
+#include "explore/metric/frontier.hpp"
 #include "mapping/sensor_model.hpp"
-#include "plan/metric_wavefront.hpp"
-#include "sensing/metric_map.hpp"
+#include "plan/metric/wavefront.hpp"
+#include "sensing/metric/map.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 
 #include "common/error.hpp"
 #include "mapping/sensor_model.hpp"
-#include "plan/metric_wavefront.hpp"
-#include "sensing/metric_map.hpp"
+#include "plan/metric/wavefront.hpp"
+#include "sensing/metric/map.hpp"
 #include "sensing/pie_slice.hpp"
 
 using sensing::MetricCell;

@@ -13,7 +13,7 @@
 #include "mapping/walls.hpp"
 #include "maze/generate/generator.hpp"
 #include "maze/world/maze.hpp"
-#include "plan/wavefront.hpp"
+#include "plan/cell/wavefront.hpp"
 
 namespace {
 

@@ -10,13 +10,13 @@
 #include <variant>
 
 #include "common/error.hpp"
-#include "maze/world/arena.hpp"
-#include "maze/generate/arena_generator.hpp"
+#include "maze/world/geometry.hpp"
+#include "maze/generate/solids_generator.hpp"
 #include "maze/world/truth_raster.hpp"
 #include "maze/world/world.hpp"
-#include "maze/formats/room_format.hpp"
+#include "maze/formats/solids_format.hpp"
 #include "maze/world/world.hpp"
-#include "maze/formats/xml_arena.hpp"
+#include "maze/formats/xml_solids.hpp"
 #include "test_values.hpp"
 
 namespace {

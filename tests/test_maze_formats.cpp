@@ -18,7 +18,7 @@
 #include "maze/formats/text_map.hpp"
 #include "maze/formats/wbt_format.hpp"
 #include "maze/world/world.hpp"
-#include "maze/formats/xml_arena.hpp"
+#include "maze/formats/xml_solids.hpp"
 #include "maze/formats/xml_format.hpp"
 
 namespace {

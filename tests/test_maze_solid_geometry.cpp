@@ -18,9 +18,9 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "maze/world/arena.hpp"
-#include "maze/generate/arena_generator.hpp"
-#include "maze/formats/room_format.hpp"
+#include "maze/world/geometry.hpp"
+#include "maze/generate/solids_generator.hpp"
+#include "maze/formats/solids_format.hpp"
 #include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/sensors.hpp"

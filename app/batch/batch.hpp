@@ -16,7 +16,7 @@
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
 #include "app/batch/batch_row.hpp"
-#include "app/run/metric_run.hpp"
+#include "app/run/metric/run.hpp"
 #include "app/run/run_report.hpp"
 
 namespace app {

@@ -13,8 +13,8 @@
 #include "app/mms/mms_session.hpp"
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
-#include "robot/cell_controller.hpp"
-#include "robot/metric_controller.hpp"
+#include "robot/cell/controller.hpp"
+#include "robot/metric/controller.hpp"
 
 namespace app {
 namespace {

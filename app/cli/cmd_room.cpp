@@ -1,4 +1,4 @@
-// maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/run/metric_run.hpp);
+// maze_mapper room WORLD: a robot in a room, mapping onto a numCells grid (app/run/metric/run.hpp);
 // it takes the run's options (app/run/option_fields.hpp) that a run in metres uses, with the
 // same words as run and mms, and a run in metres' own.
 

@@ -18,7 +18,7 @@
 #include "app/run/shipped_worlds.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "maze/formats/arena_text.hpp"
+#include "maze/formats/geometry_text.hpp"
 #include "maze/generate/generator.hpp"
 #include "maze/formats/text_map.hpp"
 #include "maze/world/world.hpp"

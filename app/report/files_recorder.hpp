@@ -17,7 +17,7 @@
 #include "app/report/metres_record.hpp"
 #include "app/report/output_dir.hpp"
 #include "app/report/trace_writer.hpp"
-#include "app/run/metric_run.hpp"
+#include "app/run/metric/run.hpp"
 #include "app/run/report.hpp"
 #include "app/run/run.hpp"
 #include "app/run/run_observer.hpp"

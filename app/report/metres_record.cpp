@@ -7,7 +7,7 @@
 
 #include "app/report/outputs.hpp"
 #include "app/report/truth_picture.hpp"
-#include "app/run/metric_map_text.hpp"
+#include "app/run/metric/map_text.hpp"
 #include "app/run/report.hpp"
 #include "app/run/report_keys.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The part of `--out DIR` a run in metres (`room`: app/run/metric_run.hpp) keeps as it goes,
+// The part of `--out DIR` a run in metres (`room`: app/run/metric/run.hpp) keeps as it goes,
 // for the FilesRecorder (app/report/files_recorder.hpp), which writes every kind's files:
 // trace.csv's rows, the snapshots' pictures and replay.html's frames (app/report/map_frames.hpp)
 // during the run; at its end the core files (map.pgm + map.yaml, map.png, truth.png,
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/picture/map_picture.hpp"
-#include "app/picture/metric_map_pictures.hpp"
+#include "app/picture/metric/map_pictures.hpp"
 #include "app/report/map_frames.hpp"
 #include "app/report/output_dir.hpp"
 #include "app/run/run_observer.hpp"

@@ -51,7 +51,7 @@
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/sensor_model.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace app {
 

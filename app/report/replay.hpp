@@ -44,7 +44,7 @@
 #include "app/run/report.hpp"
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 
 namespace app {
 

@@ -11,7 +11,7 @@
 #include "app/report/trace_sensors.hpp"
 #include "common/atomic_file.hpp"
 #include "maze/sim/sensors.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace webots {
 class Robot;

@@ -30,7 +30,7 @@
 #include "app/run/evaluation.hpp"
 #include "app/picture/map_picture.hpp"
 #include "app/picture/drawing.hpp"
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/world/maze.hpp"
 
 namespace app {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/picture/map_picture.hpp"
-#include "sensing/metric_map.hpp"
+#include "sensing/metric/map.hpp"
 
 namespace app {
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "plan/wavefront.hpp"
+#include "plan/cell/wavefront.hpp"
 #include "render/ascii_map.hpp"
 
 namespace app {

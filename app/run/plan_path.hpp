@@ -6,7 +6,7 @@
 #include "app/run/run.hpp"
 #include "mapping/sensor_model.hpp"
 #include "render/ascii_map.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace app {
 

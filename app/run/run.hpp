@@ -20,7 +20,7 @@
 #include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace app {
 

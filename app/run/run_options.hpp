@@ -22,8 +22,8 @@
 #include "mapping/sensor_model.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world/world.hpp"
-#include "plan/wavefront.hpp"
-#include "robot/metric_controller.hpp"
+#include "plan/cell/wavefront.hpp"
+#include "robot/metric/controller.hpp"
 #include "sensing/bump_depth_marks.hpp"
 
 namespace app {
@@ -62,7 +62,7 @@ struct PlanOptions {
   bool speed_run = false;               // --speed-run: the micromouse speed run, start to goal (robot/options.hpp)
 };
 
-// What a run in metres adds (the room command, batch's room rows; app/run/metric_run.hpp):
+// What a run in metres adds (the room command, batch's room rows; app/run/metric/run.hpp):
 // the metric map's grid, the metric strategies' own options, the start as a pose in metres,
 // where the depth rays leave from, and the maps printed at simulated times and control
 // steps. The strategy, the model, the robot, the limits, the seed, the sensor model and what

@@ -1,7 +1,7 @@
 #include "app/run/run_progress.hpp"
 
 #include "app/run/evaluation.hpp"
-#include "app/run/metric_evaluation.hpp"
+#include "app/run/metric/evaluation.hpp"
 
 namespace app {
 namespace {

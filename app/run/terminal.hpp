@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "render/ascii_map.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 #include "robot/progress_printer.hpp"
 
 namespace app {

@@ -49,7 +49,7 @@
 namespace explore {
 
 // Every exploration strategy, of both controllers: the cell controller's on a maze's cells
-// (above) and the metric controller's in metres (robot/metric_controller.hpp: waypoints,
+// (above) and the metric controller's in metres (robot/metric/controller.hpp: waypoints,
 // wavefront, frontier, wander). frontier is one word with a variant in each.
 enum class StrategyKind { dfs, frontier, left_wall, right_wall, floodfill, waypoints, wavefront, wander };
 

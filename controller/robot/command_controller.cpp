@@ -8,7 +8,7 @@
 #include <webots/Robot.hpp>
 
 #include "explore/shortest_path.hpp"
-#include "robot/cell_robot.hpp"
+#include "robot/cell/robot.hpp"
 
 namespace robot {
 

@@ -14,7 +14,7 @@
 #include "mapping/grid_types.hpp"
 #include "mapping/occupancy_grid.hpp"
 #include "mapping/walls.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 #include "robot/options.hpp"
 
 namespace webots {

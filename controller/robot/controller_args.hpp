@@ -27,7 +27,7 @@
 #include <string_view>
 #include <vector>
 
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace robot {
 

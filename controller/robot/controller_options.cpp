@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 #include "robot/drive.hpp"
 #include "robot/options.hpp"
 

@@ -19,7 +19,7 @@
 #include <ostream>
 
 #include "render/ascii_map.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace robot {
 

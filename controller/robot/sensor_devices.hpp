@@ -2,7 +2,7 @@
 // The devices a set-up reads (its row in sensing/setups.hpp: a lidar, bumpers or a ring of
 // range sensors), found on the robot once, and their readings in the world frame: what the
 // cell robot's Senses (robot/senses.hpp) and the room robot's MetricSenses
-// (robot/metric_senses.hpp) both read with, before each marks its own grid.
+// (robot/metric/senses.hpp) both read with, before each marks its own grid.
 
 #include <vector>
 

@@ -69,7 +69,7 @@ struct PieSliceCell {
 
 // One sensor's verdict on the square cell [x0, x0 + r] x [y0, y0 + r] (m), by its four corners
 // and its centre as above: contact (occupied), clear, or outside (no update). beta in rad.
-// The room map (sensing/metric_map.hpp) asks it of its own cells.
+// The room map (sensing/metric/map.hpp) asks it of its own cells.
 enum class PieVerdict { outside, clear, contact };
 PieVerdict pie_slice_verdict(const PieSlice &slice, double beta_rad, double x0_m, double y0_m, double r_m);
 

@@ -1,6 +1,6 @@
 #include "sensing/setups.hpp"
 
-#include "sensing/metric_map.hpp"
+#include "sensing/metric/map.hpp"
 
 #include <array>
 #include <cassert>

@@ -183,17 +183,17 @@ def _distance_m(the_scene):
 
 
 def _map_entries(e, world):
-    """What became of the metric map the controller kept (maze_mapper.keep_map): on an arena
-    map.png and the replay's map draw it; a line says which map, or why there is no map.png."""
+    """What became of the metric map the controller kept (maze_mapper.keep_map): map.png and the
+    replay's map draw it, unless a maze's 4D grid is kept (keep_grid), which they draw instead;
+    a line says which map, or why there is no map.png."""
     kept = maze_mapper._kept_map
-    if world is None or not world.is_maze:  # an arena, or the course's floor as the controller built it
-        if kept is None:
-            e.both("map", "none kept (maze_mapper.keep_map hands the runner a metric map: map.png, the replay's map)",
-                   "none")
-        else:
-            e.both("map", f"kept, {kept}", "kept")
-    elif kept is not None:
-        e.both("map", "kept, not drawn (map.png and the replay draw a kept map on an arena world)", "kept")
+    grid_drawn = world is not None and world.is_maze and maze_mapper._kept is not None
+    if kept is not None:
+        e.both("map", "kept, not drawn (map.png and the replay draw the kept grid)" if grid_drawn else f"kept, {kept}",
+               "kept")
+    elif world is None or not world.is_maze:  # an arena, or the course's floor as the controller built it
+        e.both("map", "none kept (maze_mapper.keep_map hands the runner a metric map: map.png, the replay's map)",
+               "none")
 
 
 def _grid_entries(e, world):

@@ -27,7 +27,7 @@
 #include "app/run/map_view.hpp"
 #include "bindings.hpp"
 #include "mapping/sensor_model.hpp"
-#include "sensing/metric_map.hpp"
+#include "sensing/metric/map.hpp"
 
 namespace maze_mapper_python {
 

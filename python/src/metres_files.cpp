@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "app/picture/metric_map_pictures.hpp"
+#include "app/picture/metric/map_pictures.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/report/truth_picture.hpp"
 #include "maze/world/truth_raster.hpp"

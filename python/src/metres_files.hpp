@@ -5,7 +5,7 @@
 //   truth.png    the world (its solids, boundary and landmarks) and the robot's path: no score,
 //                for the runner knows no map to score
 //   map.png      the metric map the controller kept (maze_mapper.keep_map), drawn as `room
-//                --out` draws its map.png (app/picture/metric_map_pictures.hpp), with the path
+//                --out` draws its map.png (app/picture/metric/map_pictures.hpp), with the path
 //   replay.html  the one replay page (app/report/replay.hpp) in metres: every pose of
 //                trace.csv, the kept map's frames (app/report/map_frames.hpp); without a kept
 //                map the world's walls and the path over a grid never observed

@@ -28,11 +28,11 @@
 #include "run_files.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
 #include "maze/world/world.hpp"
-#include "maze/formats/xml_arena.hpp"
+#include "maze/formats/xml_solids.hpp"
 
 namespace maze_mapper_python {
 

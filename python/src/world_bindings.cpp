@@ -17,7 +17,7 @@
 #include "common/random.hpp"
 #include "mapping/walls.hpp"
 #include "maze/world/world.hpp"
-#include "robot/cell_controller.hpp"
+#include "robot/cell/controller.hpp"
 
 namespace maze_mapper_python {
 

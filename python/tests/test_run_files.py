@@ -126,6 +126,31 @@ def test_an_arena_run_without_a_kept_map_writes_a_replay_of_the_path_and_says_wh
     assert all(c == [] for c in data["frames"]["changes"])  # the path only, over a map never observed
 
 
+def test_a_maze_run_without_a_kept_grid_draws_the_walls_and_the_body_s_path_in_metres_with_no_score(controller_file, tmp_path):
+    out = tmp_path / "out"
+    status, stdout, err = run_controller(controller_file(DRIVE), "--world", world("maze8x8.txt"), "--out", str(out))
+    assert status == 0, err
+    assert sorted(os.listdir(out)) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["grid"] == "none" and "wall_accuracy" not in summary and "coverage" not in summary
+    # truth.png: the world's walls in ink and the path in red, no wall painted red as missed
+    pixels = png_pixels((out / "truth.png").read_bytes()).reshape(-1, 3)
+    ink = int(((pixels == (20, 20, 20)).all(axis=1)).sum())
+    red = int(((pixels == (220, 30, 30)).all(axis=1)).sum())
+    assert 0 < red < ink / 4
+    # replay.html: in metres, the world's walls drawn, the path every pose of trace.csv
+    data = replay_data((out / "replay.html").read_text())
+    assert data["units"] == "metres" and len(data["solids_mm"]) > 0
+    with open(out / "trace.csv") as f:
+        rows = list(csv.reader(f))[1:]
+    ox, oy = data["origin"]
+    driven = [(round((float(r[2]) - ox) * 1000), round((float(r[3]) - oy) * 1000)) for r in rows]
+    path = list(zip(data["path"]["xy_mm"][0::2], data["path"]["xy_mm"][1::2]))
+    assert len(path) == len(driven) == 40
+    assert all(abs(a - c) <= 1 and abs(b - d) <= 1 for (a, b), (c, d) in zip(path, driven))
+    assert len(set(path)) > 3  # the body's poses, not a few cell centres
+
+
 def test_a_dangling_link_as_out_is_refused_and_left(controller_file, tmp_path):
     link = tmp_path / "out"
     link.symlink_to(tmp_path / "nowhere")

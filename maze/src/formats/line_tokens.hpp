@@ -1,6 +1,6 @@
 #pragma once
 // The blank-separated tokens of one line of a text world format (num_format.cpp,
-// room_format.cpp), each with its column for located errors, and a token as an error shows it.
+// solids_format.cpp), each with its column for located errors, and a token as an error shows it.
 
 #include <cstddef>
 #include <limits>

@@ -1,5 +1,5 @@
 #pragma once
-// How the arena writers (room_format.cpp, xml_arena.cpp) write a length or a coordinate.
+// How the arena writers (solids_format.cpp, xml_solids.cpp) write a length or a coordinate.
 
 #include <cmath>
 #include <string>

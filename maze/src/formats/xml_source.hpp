@@ -1,6 +1,6 @@
 #pragma once
 // Where in an XML world file an element and its attributes are, for located errors, and its
-// numeric attributes read with their place (xml_format.cpp, xml_arena.cpp).
+// numeric attributes read with their place (xml_format.cpp, xml_solids.cpp).
 
 #include <algorithm>
 #include <charconv>

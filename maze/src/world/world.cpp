@@ -10,8 +10,8 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
-#include "maze/formats/room_format.hpp"
-#include "maze/formats/xml_arena.hpp"
+#include "maze/formats/solids_format.hpp"
+#include "maze/formats/xml_solids.hpp"
 #include "maze/formats/xml_format.hpp"
 #include "maze/world/truth_raster.hpp"
 #include "maze/world/validate.hpp"

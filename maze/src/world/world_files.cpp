@@ -21,10 +21,10 @@
 #include "common/input_file.hpp"
 #include "maze/formats/maz_format.hpp"
 #include "maze/formats/num_format.hpp"
-#include "maze/formats/room_format.hpp"
+#include "maze/formats/solids_format.hpp"
 #include "maze/formats/text_map.hpp"
 #include "maze/formats/wbt_format.hpp"
-#include "maze/formats/xml_arena.hpp"
+#include "maze/formats/xml_solids.hpp"
 #include "maze/formats/xml_format.hpp"
 
 namespace maze {

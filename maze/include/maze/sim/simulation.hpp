@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "common/random.hpp"
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/solid_geometry.hpp"

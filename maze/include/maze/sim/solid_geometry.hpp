@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/sim/wall_grid.hpp"
 
 namespace maze::sim {

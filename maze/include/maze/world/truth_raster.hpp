@@ -28,7 +28,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 
 namespace maze {
 

@@ -10,7 +10,7 @@
 //                                                               `-- geometry(): Arena (metres)
 //
 // Which a file is: a room file is free geometry (an arena); an XML world is one by
-// xml_world_is_arena's rule (xml_arena.hpp), else a maze; every other format is a maze.
+// xml_world_is_arena's rule (xml_solids.hpp), else a maze; every other format is a maze.
 
 #include <array>
 #include <cstddef>
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/world/world_files.hpp"
 

@@ -7,12 +7,12 @@
 #include <string>
 #include <string_view>
 
-#include "maze/world/arena.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/world/maze.hpp"
 
 namespace maze {
 
-// room: an arena's plain format (room_format.hpp).
+// room: an arena's plain format (solids_format.hpp).
 enum class Format { text_map, num, xml, wbt, maz, room };
 
 // The input format by content: '<' first (after blanks) is XML, 'o' or '+' first a text map,

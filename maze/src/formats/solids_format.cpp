@@ -1,0 +1,216 @@
+#include "maze/formats/solids_format.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/parse_number.hpp"
+#include "maze/world/maze.hpp"
+#include "line_tokens.hpp"
+#include "metres_text.hpp"
+
+namespace maze {
+
+namespace {
+
+constexpr std::string_view kKeywords[] = {"name", "boundary", "rect", "wall", "start", "goal"};
+
+// The statement part of a line (before '#', without a trailing '\r').
+std::string_view statement_of(std::string_view line) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+  return line;
+}
+
+bool is_keyword(std::string_view word) {
+  for (const std::string_view k : kKeywords) {
+    if (word == k) return true;
+  }
+  return false;
+}
+
+struct RoomParser {
+  const std::string &file;
+  int line = 0;
+
+  common::SourceLocation at(std::size_t column) const {
+    return common::SourceLocation{file, line, static_cast<int>(column + 1)};
+  }
+  common::InputError error(std::size_t column, std::string message) const {
+    return common::InputError(at(column), std::move(message));
+  }
+
+  // The project's one number rule (common/parse_number.hpp), and within 1e9 m.
+  double number(const LineToken &t) const {
+    const std::optional<double> v = common::parse_real(t.text);
+    if (!v) throw error(t.column, fmt::format("'{}' is not a number", shown_token(t.text)));
+    if (!std::isfinite(*v) || std::abs(*v) > 1e9) {
+      throw error(t.column, fmt::format("'{}' is not a finite number of metres", shown_token(t.text)));
+    }
+    return *v;
+  }
+
+  // The numbers after the keyword: at least `least`, at most `most`.
+  std::vector<double> numbers(const std::vector<LineToken> &tokens, std::size_t least, std::size_t most,
+                              std::string_view usage) const {
+    const std::size_t given = tokens.size() - 1;
+    if (given < least || given > most) {
+      const std::size_t column = given > most ? tokens[most + 1].column : tokens.front().column;
+      throw error(column, fmt::format("{} takes {}: got {} number{}", tokens.front().text, usage, given,
+                                      given == 1 ? "" : "s"));
+    }
+    std::vector<double> values;
+    for (std::size_t i = 1; i < tokens.size(); ++i) values.push_back(number(tokens[i]));
+    return values;
+  }
+};
+
+// The yaw in degrees, in the fewest digits that read back (times pi / 180) as the very yaw.
+std::string degrees_of(double yaw_rad) {
+  const double deg = yaw_rad * 180.0 / std::numbers::pi;
+  for (int digits = 6; digits < 17; ++digits) {
+    const std::string text = fmt::format("{:.{}g}", deg, digits);
+    const double back = common::parse_real(text).value_or(0.0);
+    if (back * std::numbers::pi / 180.0 == yaw_rad) return text;
+  }
+  return fmt::format("{}", deg);
+}
+
+}  // namespace
+
+bool looks_like_room(std::string_view text) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    const std::vector<LineToken> tokens = line_tokens(statement_of(line));
+    if (!tokens.empty()) return is_keyword(tokens.front().text);
+    if (end == std::string_view::npos) break;
+    text.remove_prefix(end + 1);
+  }
+  return false;
+}
+
+// One statement of a room file (its tokens, its line) into the arena; boundary_line is the
+// line of the boundary read so far (0: none yet).
+void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::string_view line, Arena &arena,
+                    int &boundary_line) {
+  const LineToken &key = tokens.front();
+  if (key.text == "name") {
+    const std::string_view rest = statement_of(line).substr(tokens[1 < tokens.size() ? 1 : 0].column);
+    if (tokens.size() < 2) throw p.error(key.column, "name takes a text: got none");
+    // Trailing blanks and carriage returns go: the name is written on a line of its own, and a
+    // '\r' left at its end would be read back as the line's end.
+    arena.name = std::string(rest.substr(0, rest.find_last_not_of(" \t\r") + 1));
+  } else if (key.text == "boundary") {
+    if (boundary_line != 0) {
+      throw p.error(key.column, fmt::format("a second boundary (the first is at line {})", boundary_line));
+    }
+    const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers XS XE YS YE");
+    boundary_line = p.line;
+    arena.x_min_m = v[0];
+    arena.x_max_m = v[1];
+    arena.y_min_m = v[2];
+    arena.y_max_m = v[3];
+    arena.boundary_where = p.at(key.column);
+    if (!(v[0] < v[1]) || !(v[2] < v[3])) {
+      throw p.error(key.column, fmt::format("the boundary x {} to {} m, y {} to {} m is empty: it needs XS < XE "
+                                            "and YS < YE",
+                                            v[0], v[1], v[2], v[3]));
+    }
+  } else if (key.text == "rect") {
+    const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
+    if (v[0] == v[2] || v[1] == v[3]) {
+      throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
+    }
+    Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
+    o.where = p.at(key.column);
+    arena.obstacles.push_back(o);
+  } else if (key.text == "wall") {
+    const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
+    const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
+    if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
+    if (v[0] == v[2] && v[1] == v[3]) {
+      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
+                                            v[3]));
+    }
+    Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
+    o.where = p.at(key.column);
+    arena.obstacles.push_back(o);
+  } else if (key.text == "start") {
+    const std::vector<double> v = p.numbers(tokens, 2, 3, "2 or 3 numbers X Y [YAW_DEG]");
+    const double yaw_deg = v.size() == 3 ? v[2] : 90.0;
+    arena.starts.push_back({v[0], v[1], yaw_deg * std::numbers::pi / 180.0});
+    arena.start_where.push_back(p.at(key.column));
+  } else if (key.text == "goal") {
+    const std::vector<double> v = p.numbers(tokens, 2, 2, "2 numbers X Y");
+    arena.goals.push_back({v[0], v[1]});
+    arena.goal_where.push_back(p.at(key.column));
+  } else {
+    throw p.error(key.column, fmt::format("unknown statement '{}': expected name, boundary, rect, wall, start or "
+                                          "goal",
+                                          shown_token(key.text)));
+  }
+}
+
+Arena read_room(std::string_view text, const std::string &file) {
+  Arena arena;
+  arena.source = file;
+  RoomParser p{file};
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  int boundary_line = 0;
+  std::size_t offset = 0;
+  while (offset <= text.size()) {
+    ++p.line;
+    const std::size_t end = std::min(text.find('\n', offset), text.size());
+    const std::string_view line = text.substr(offset, end - offset);
+    offset = end + 1;
+    const std::vector<LineToken> tokens = line_tokens(statement_of(line));
+    if (tokens.empty()) continue;
+    read_statement(p, tokens, line, arena, boundary_line);
+    const LineToken &key = tokens.front();
+    if (arena.obstacles.size() > kMaxObstacles) {
+      throw p.error(key.column, fmt::format("more than {} obstacles", kMaxObstacles));
+    }
+  }
+  return arena;
+}
+
+std::string write_room(const Arena &arena) {
+  std::string text =
+      fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
+                  arena.obstacles.size() == 1 ? "" : "s", metres_text(arena.width_m()), metres_text(arena.height_m()));
+  if (!arena.name.empty()) fmt::format_to(std::back_inserter(text), "name {}\n", arena.name);
+  fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres_text(arena.x_min_m),
+                 metres_text(arena.x_max_m), metres_text(arena.y_min_m), metres_text(arena.y_max_m));
+  for (const Obstacle &o : arena.obstacles) {
+    if (o.axis_aligned()) {
+      const auto b = o.bounds();
+      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
+                     metres_text(b[2]), metres_text(b[3]));
+    } else {
+      const auto l = o.centre_line();
+      const double scale_m = std::max({std::abs(l[0]), std::abs(l[1]), std::abs(l[2]), std::abs(l[3])});
+      const auto end = [scale_m](double v) { return metres_text_on_scale(v, scale_m); };
+      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", end(l[0]), end(l[1]), end(l[2]), end(l[3]),
+                     metres_text(l[4]));
+    }
+  }
+  for (const ArenaPose &s : arena.starts) {
+    fmt::format_to(std::back_inserter(text), "start {} {} {}\n", metres_text(s.x_m), metres_text(s.y_m),
+                   degrees_of(s.yaw_rad));
+  }
+  for (const ArenaPoint &g : arena.goals) {
+    fmt::format_to(std::back_inserter(text), "goal {} {}\n", metres_text(g.x_m), metres_text(g.y_m));
+  }
+  return text;
+}
+
+}  // namespace maze
