@@ -266,7 +266,7 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.caption = map_caption(options);
   input.steps = summary.steps;
   input.reachable_cells = summary.score.reachable_cells;
-  input.summary = summary_pairs(files.report ? *files.report : run_report(options, summary));
+  input.summary = replay_summary(files.report ? *files.report : run_report(options, summary));
   return replay_html(input);
 }
 

@@ -154,7 +154,7 @@ std::optional<app::Replay> replay_page(const maze::Maze &truth, const std::strin
   input.steps = steps;
   const std::vector<bool> reachable = truth.reachable_from_start();
   input.reachable_cells = static_cast<std::size_t>(std::count(reachable.begin(), reachable.end(), true));
-  input.summary = app::summary_pairs(report);
+  input.summary = app::replay_summary(report);
   return app::replay_html(input);
 }
 
