@@ -1,11 +1,20 @@
 // The progress lines a long run and a batch draw on a terminal: the percentage of a known
-// end and, for a batch, the time left at the rate so far.
+// end and, for a batch, the time left at the rate so far; and the line as a run's observer,
+// drawn by a maze run and a room run alike and cleared when the run ends.
 
 #include <doctest/doctest.h>
 
-#include <limits>
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "app/run/metric/run.hpp"
 #include "app/run/progress_line.hpp"
+#include "app/run/run.hpp"
+#include "maze/world/world.hpp"
 
 TEST_CASE("progress: a clock reads m:ss under an hour, h:mm:ss from one, whole seconds rounded") {
   CHECK(app::format_clock(0.0) == "0:00");
@@ -43,4 +52,50 @@ TEST_CASE("progress: a run shows the cells visited of the reachable ones, as a p
 TEST_CASE("progress: a run in metres shows the reachable free cells observed, as a percentage") {
   CHECK(app::format_metres_progress(1200, 830, 8906, 38.43, 1.24) ==
         "steps 1200  observed 830/8906 reachable free cells (9%)  sim 38.4 s  elapsed 1.2 s");
+}
+
+namespace {
+
+// What a run drew on the write end of a pipe given as its progress_fd.
+template <typename Run>
+std::string progress_drawn_by(Run run) {
+  int fds[2];
+  REQUIRE(::pipe(fds) == 0);
+  ::fcntl(fds[0], F_SETFL, O_NONBLOCK);
+  run(fds[1]);
+  ::close(fds[1]);
+  std::string drawn;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;) drawn.append(buffer, static_cast<std::size_t>(n));
+  ::close(fds[0]);
+  return drawn;
+}
+
+}  // namespace
+
+TEST_CASE("progress: a maze run and a room run draw the line as the run goes and clear it at the end") {
+  const std::string clear = "\r\x1b[K";
+  const std::string maze_line = progress_drawn_by([](int fd) {
+    app::RunOptions o;
+    o.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+    o.output.quiet = true;
+    std::ostringstream out;
+    app::RunControls controls;
+    controls.progress_fd = fd;
+    app::run_maze(o, maze::load_world(o.world).maze(), out, controls);
+  });
+  CHECK(maze_line.find("moves 0  visited 1/16 reachable cells") != std::string::npos);
+  CHECK(maze_line.ends_with(clear));
+  const std::string room_line = progress_drawn_by([](int fd) {
+    app::RunOptions o = app::metres_run_options();
+    o.world = std::string(WORLDS_DIR) + "/ir_room.room";
+    o.time_limit_s = 2.0;
+    o.output.quiet = true;
+    std::ostringstream out;
+    app::run_metric_world(maze::load_world(o.world), o, out, std::chrono::steady_clock::now(), nullptr, nullptr,
+                          nullptr, fd);
+  });
+  CHECK(room_line.find("steps 1  observed ") != std::string::npos);
+  CHECK(room_line.find(" reachable free cells (") != std::string::npos);
+  CHECK(room_line.ends_with(clear));
 }
