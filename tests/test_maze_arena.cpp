@@ -125,6 +125,18 @@ TEST_CASE("room format: a slanted wall's end at 0 is written 0, and the written 
   CHECK(maze::write_room(maze::read_room(written, "w.room")) == written);
 }
 
+TEST_CASE("room format: a wall a picometre off an axis is written as the rectangle it reads back as") {
+  // Its end at y = 4e-12 is written 0 on the wall's scale, so the text read back is a
+  // horizontal wall, which the writer writes as a rect (found by fuzz_room).
+  const std::string written =
+      maze::write_room(maze::read_room("boundary -5 5 -5 5\nwall 1.5 .0 1.0 0.0000000000040002\n", "w.room"));
+  CHECK(written ==
+        "# maze_mapper arena: 1 obstacle, boundary 10 x 10 m\n"
+        "boundary -5 5 -5 5\n"
+        "rect 1 -0.006 1.5 0.006\n");
+  CHECK(maze::write_room(maze::read_room(written, "w.room")) == written);
+}
+
 TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {
   // "name o \x7f\r # ..." kept "o \x7f\r", written as "name o \x7f\r\n", read back as "o \x7f"
   // (found by fuzz_room).

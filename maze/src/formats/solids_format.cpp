@@ -199,8 +199,19 @@ std::string write_room(const Arena &arena) {
       const auto l = o.centre_line();
       const double scale_m = std::max({std::abs(l[0]), std::abs(l[1]), std::abs(l[2]), std::abs(l[3])});
       const auto end = [scale_m](double v) { return metres_text_on_scale(v, scale_m); };
-      fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", end(l[0]), end(l[1]), end(l[2]), end(l[3]),
-                     metres_text(l[4]));
+      const std::string ends[4] = {end(l[0]), end(l[1]), end(l[2]), end(l[3])};
+      // A wall whose written ends lie on an axis reads back as a rectangle: written as one.
+      const Obstacle read_back = Obstacle::from_segment(
+          *common::parse_real(ends[0]), *common::parse_real(ends[1]), *common::parse_real(ends[2]),
+          *common::parse_real(ends[3]), l[4], WallEnds::flush);
+      if (read_back.axis_aligned()) {
+        const auto b = read_back.bounds();
+        fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
+                       metres_text(b[2]), metres_text(b[3]));
+      } else {
+        fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", ends[0], ends[1], ends[2], ends[3],
+                       metres_text(l[4]));
+      }
     }
   }
   for (const ArenaPose &s : arena.starts) {
