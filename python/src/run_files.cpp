@@ -48,8 +48,8 @@ mapping::Heading heading_of(double yaw_rad) {
   return kByQuarter[((quarter % 4) + 4) % 4];
 }
 
-// What the pictures of a maze run show: the controller's grid, and the cells the robot's centre passed through, in order, with the step and heading of
-// each arrival.
+// What the pictures of a maze run show: the controller's grid, and the cells the robot's
+// centre passed through, in order, with the step and heading of each arrival.
 struct MazeRun {
   mapping::OccupancyGrid grid;
   float initial_log_odds = 0.0F;
