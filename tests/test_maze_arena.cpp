@@ -137,6 +137,18 @@ TEST_CASE("room format: a wall a picometre off an axis is written as the rectang
   CHECK(maze::write_room(maze::read_room(written, "w.room")) == written);
 }
 
+TEST_CASE("room format: a wall whose longest coordinate reads back a hair under a power of ten writes the same text again") {
+  // Its end 1.0 came back 0.99999999999999989, whose rounding step is ten times finer: the end
+  // 0.0800000000040002 was written 0.080000000004, then 0.08 (found by fuzz_room).
+  const std::string written =
+      maze::write_room(maze::read_room("boundary -5 5 -5 5\nwall .15 .0 1.0 0.0800000000040002\n", "w.room"));
+  CHECK(written ==
+        "# maze_mapper arena: 1 obstacle, boundary 10 x 10 m\n"
+        "boundary -5 5 -5 5\n"
+        "wall 0.15 0 1 0.08 0.012\n");
+  CHECK(maze::write_room(maze::read_room(written, "w.room")) == written);
+}
+
 TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {
   // "name o \x7f\r # ..." kept "o \x7f\r", written as "name o \x7f\r\n", read back as "o \x7f"
   // (found by fuzz_room).

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -183,6 +184,24 @@ Arena read_room(std::string_view text, const std::string &file) {
   return arena;
 }
 
+namespace {
+
+// A wall's ends as written: 12 significant digits on the scale of its largest coordinate.
+std::array<std::string, 4> wall_ends_text(const std::array<double, 5> &line) {
+  const double scale_m = std::max({std::abs(line[0]), std::abs(line[1]), std::abs(line[2]), std::abs(line[3])});
+  std::array<std::string, 4> ends;
+  for (std::size_t i = 0; i < 4; ++i) ends[i] = metres_text_on_scale(line[i], scale_m);
+  return ends;
+}
+
+// The wall those ends read back as.
+Obstacle wall_of(const std::array<std::string, 4> &ends, double width_m) {
+  return Obstacle::from_segment(*common::parse_real(ends[0]), *common::parse_real(ends[1]),
+                                *common::parse_real(ends[2]), *common::parse_real(ends[3]), width_m, WallEnds::flush);
+}
+
+}  // namespace
+
 std::string write_room(const Arena &arena) {
   std::string text =
       fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
@@ -196,14 +215,20 @@ std::string write_room(const Arena &arena) {
       fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
                      metres_text(b[2]), metres_text(b[3]));
     } else {
-      const auto l = o.centre_line();
-      const double scale_m = std::max({std::abs(l[0]), std::abs(l[1]), std::abs(l[2]), std::abs(l[3])});
-      const auto end = [scale_m](double v) { return metres_text_on_scale(v, scale_m); };
-      const std::string ends[4] = {end(l[0]), end(l[1]), end(l[2]), end(l[3])};
+      // The ends as the wall reads back: written, read and written again until the text
+      // holds (an end a rounding step away, a scale a hair under a power of ten, settles in a
+      // round or two), so that a written room writes the same text again.
+      auto l = o.centre_line();
+      std::array<std::string, 4> ends = wall_ends_text(l);
+      Obstacle read_back = wall_of(ends, l[4]);
+      for (int round = 0; round < 3; ++round) {
+        l = read_back.centre_line();
+        const std::array<std::string, 4> again = wall_ends_text(l);
+        if (again == ends) break;
+        ends = again;
+        read_back = wall_of(ends, l[4]);
+      }
       // A wall whose written ends lie on an axis reads back as a rectangle: written as one.
-      const Obstacle read_back = Obstacle::from_segment(
-          *common::parse_real(ends[0]), *common::parse_real(ends[1]), *common::parse_real(ends[2]),
-          *common::parse_real(ends[3]), l[4], WallEnds::flush);
       if (read_back.axis_aligned()) {
         const auto b = read_back.bounds();
         fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
