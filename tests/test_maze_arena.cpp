@@ -149,6 +149,12 @@ TEST_CASE("room format: a wall whose longest coordinate reads back a hair under 
   CHECK(maze::write_room(maze::read_room(written, "w.room")) == written);
 }
 
+TEST_CASE("room format: a rectangle with no area at the 12 digits the format keeps is refused, as written back it would be") {
+  // 4e-12 m high: written "rect -5 1 0 1", which has no area (found by fuzz_room).
+  CHECK_THROWS_WITH_AS(maze::read_room("boundary -5 5 -5 5\nrect -5. 1 0.0 1.0000000000040002\n", "r.room"),
+                       "the rectangle (-5, 1)-(0, 1.0000000000040001) has no area", common::InputError);
+}
+
 TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {
   // "name o \x7f\r # ..." kept "o \x7f\r", written as "name o \x7f\r\n", read back as "o \x7f"
   // (found by fuzz_room).

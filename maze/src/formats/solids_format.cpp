@@ -128,7 +128,8 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
     }
   } else if (key.text == "rect") {
     const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
-    if (v[0] == v[2] || v[1] == v[3]) {
+    // No area at the 12 significant digits the format keeps (a rectangle written back is so).
+    if (metres_text(v[0]) == metres_text(v[2]) || metres_text(v[1]) == metres_text(v[3])) {
       throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
     }
     Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
