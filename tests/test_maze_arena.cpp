@@ -155,6 +155,16 @@ TEST_CASE("room format: a rectangle with no area at the 12 digits the format kee
                        "the rectangle (-5, 1)-(0, 1.0000000000040001) has no area", common::InputError);
 }
 
+TEST_CASE("room format: a wall on an axis too thin for the 12 digits the format keeps is refused, as its rectangle would be") {
+  // 5e-59 m wide: written "rect 1.5 0.5 1.5 1.4", which has no area (found by fuzz_room).
+  CHECK_THROWS_WITH_AS(maze::read_room("boundary 0 2 0 2\nwall 1.5 0.5 1.5 1.4 5e-59\n", "w.room"),
+                       "the wall from (1.5, 0.5) to (1.5, 1.4) is 5e-59 m wide: too thin for the 12 significant "
+                       "digits the format keeps",
+                       common::InputError);
+  const maze::Arena thin = maze::read_room("boundary 0 2 0 2\nwall 1.5 0.5 1.5 1.4 1e-6\n", "w.room");
+  CHECK(maze::write_room(thin).find("rect 1.4999995 0.5 1.5000005 1.4\n") != std::string::npos);
+}
+
 TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {
   // "name o \x7f\r # ..." kept "o \x7f\r", written as "name o \x7f\r\n", read back as "o \x7f"
   // (found by fuzz_room).

@@ -84,6 +84,56 @@ std::string degrees_of(double yaw_rad) {
   return fmt::format("{}", deg);
 }
 
+// A wall's ends as written: 12 significant digits on the scale of its largest coordinate.
+std::array<std::string, 4> wall_ends_text(const std::array<double, 5> &line) {
+  const double scale_m = std::max({std::abs(line[0]), std::abs(line[1]), std::abs(line[2]), std::abs(line[3])});
+  std::array<std::string, 4> ends;
+  for (std::size_t i = 0; i < 4; ++i) ends[i] = metres_text_on_scale(line[i], scale_m);
+  return ends;
+}
+
+// The wall those ends read back as.
+Obstacle wall_of(const std::array<std::string, 4> &ends, double width_m) {
+  return Obstacle::from_segment(*common::parse_real(ends[0]), *common::parse_real(ends[1]),
+                                *common::parse_real(ends[2]), *common::parse_real(ends[3]), width_m, WallEnds::flush);
+}
+
+// A box's statement, "rect X0 Y0 X1 Y1", in the digits the format keeps.
+std::string rect_statement(const std::array<double, 4> &b) {
+  return fmt::format("rect {} {} {} {}", metres_text(b[0]), metres_text(b[1]), metres_text(b[2]), metres_text(b[3]));
+}
+
+// Whether a box keeps an area at the 12 significant digits the format writes.
+bool has_written_area(const std::array<double, 4> &b) {
+  return metres_text(b[0]) != metres_text(b[2]) && metres_text(b[1]) != metres_text(b[3]);
+}
+
+// A solid as the room format writes it: an axis-aligned box as "rect", a slanted wall as
+// "wall" with the ends as it reads back (written, read and written again until the text
+// holds: an end a rounding step away, a scale a hair under a power of ten, settles in a round
+// or two), so that a written room writes the same text again. A wall whose written ends lie
+// on an axis reads back as a rectangle, so is written as one; `box` is then its bounds.
+struct SolidStatement {
+  std::string text;
+  std::optional<std::array<double, 4>> box;
+};
+
+SolidStatement solid_statement(const Obstacle &o) {
+  if (o.axis_aligned()) return {rect_statement(o.bounds()), o.bounds()};
+  auto l = o.centre_line();
+  std::array<std::string, 4> ends = wall_ends_text(l);
+  Obstacle read_back = wall_of(ends, l[4]);
+  for (int round = 0; round < 3; ++round) {
+    l = read_back.centre_line();
+    const std::array<std::string, 4> again = wall_ends_text(l);
+    if (again == ends) break;
+    ends = again;
+    read_back = wall_of(ends, l[4]);
+  }
+  if (read_back.axis_aligned()) return {rect_statement(read_back.bounds()), read_back.bounds()};
+  return {fmt::format("wall {} {} {} {} {}", ends[0], ends[1], ends[2], ends[3], metres_text(l[4])), std::nullopt};
+}
+
 }  // namespace
 
 bool looks_like_room(std::string_view text) {
@@ -129,7 +179,7 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
   } else if (key.text == "rect") {
     const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
     // No area at the 12 significant digits the format keeps (a rectangle written back is so).
-    if (metres_text(v[0]) == metres_text(v[2]) || metres_text(v[1]) == metres_text(v[3])) {
+    if (!has_written_area({v[0], v[1], v[2], v[3]})) {
       throw p.error(key.column, fmt::format("the rectangle ({}, {})-({}, {}) has no area", v[0], v[1], v[2], v[3]));
     }
     Obstacle o = Obstacle::from_box(v[0], v[1], v[2], v[3]);
@@ -144,6 +194,13 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
                                             v[3]));
     }
     Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
+    // A wall written as a rectangle (it lies on an axis) must keep an area in the digits the
+    // format writes, as a rectangle read must.
+    if (const SolidStatement written = solid_statement(o); written.box && !has_written_area(*written.box)) {
+      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) is {} m wide: too thin for the 12 "
+                                            "significant digits the format keeps",
+                                            v[0], v[1], v[2], v[3], width));
+    }
     o.where = p.at(key.column);
     arena.obstacles.push_back(o);
   } else if (key.text == "start") {
@@ -185,24 +242,6 @@ Arena read_room(std::string_view text, const std::string &file) {
   return arena;
 }
 
-namespace {
-
-// A wall's ends as written: 12 significant digits on the scale of its largest coordinate.
-std::array<std::string, 4> wall_ends_text(const std::array<double, 5> &line) {
-  const double scale_m = std::max({std::abs(line[0]), std::abs(line[1]), std::abs(line[2]), std::abs(line[3])});
-  std::array<std::string, 4> ends;
-  for (std::size_t i = 0; i < 4; ++i) ends[i] = metres_text_on_scale(line[i], scale_m);
-  return ends;
-}
-
-// The wall those ends read back as.
-Obstacle wall_of(const std::array<std::string, 4> &ends, double width_m) {
-  return Obstacle::from_segment(*common::parse_real(ends[0]), *common::parse_real(ends[1]),
-                                *common::parse_real(ends[2]), *common::parse_real(ends[3]), width_m, WallEnds::flush);
-}
-
-}  // namespace
-
 std::string write_room(const Arena &arena) {
   std::string text =
       fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
@@ -211,34 +250,7 @@ std::string write_room(const Arena &arena) {
   fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres_text(arena.x_min_m),
                  metres_text(arena.x_max_m), metres_text(arena.y_min_m), metres_text(arena.y_max_m));
   for (const Obstacle &o : arena.obstacles) {
-    if (o.axis_aligned()) {
-      const auto b = o.bounds();
-      fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
-                     metres_text(b[2]), metres_text(b[3]));
-    } else {
-      // The ends as the wall reads back: written, read and written again until the text
-      // holds (an end a rounding step away, a scale a hair under a power of ten, settles in a
-      // round or two), so that a written room writes the same text again.
-      auto l = o.centre_line();
-      std::array<std::string, 4> ends = wall_ends_text(l);
-      Obstacle read_back = wall_of(ends, l[4]);
-      for (int round = 0; round < 3; ++round) {
-        l = read_back.centre_line();
-        const std::array<std::string, 4> again = wall_ends_text(l);
-        if (again == ends) break;
-        ends = again;
-        read_back = wall_of(ends, l[4]);
-      }
-      // A wall whose written ends lie on an axis reads back as a rectangle: written as one.
-      if (read_back.axis_aligned()) {
-        const auto b = read_back.bounds();
-        fmt::format_to(std::back_inserter(text), "rect {} {} {} {}\n", metres_text(b[0]), metres_text(b[1]),
-                       metres_text(b[2]), metres_text(b[3]));
-      } else {
-        fmt::format_to(std::back_inserter(text), "wall {} {} {} {} {}\n", ends[0], ends[1], ends[2], ends[3],
-                       metres_text(l[4]));
-      }
-    }
+    fmt::format_to(std::back_inserter(text), "{}\n", solid_statement(o).text);
   }
   for (const ArenaPose &s : arena.starts) {
     fmt::format_to(std::back_inserter(text), "start {} {} {}\n", metres_text(s.x_m), metres_text(s.y_m),
