@@ -56,6 +56,8 @@ void add_mms_command(CLI::App &cli, CommandContext &context) {
     RunControls controls;
     controls.interrupted = &common::interrupted;
     controls.terminal_fd = STDOUT_FILENO;
+    // The progress line on stderr, unless the transcript is printed there.
+    controls.progress_fd = asked.transcript ? -1 : progress_fd(options.output.quiet, false);
     const common::SignalsStopWork stop_signals;  // the children are ended and reaped first
     const MmsRun run = run_mms_world(options, asked, std::cout, controls);
     context.status = exit_status(run);

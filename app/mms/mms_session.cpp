@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -17,6 +16,7 @@
 #include "app/report/files_recorder.hpp"
 #include "app/report/outputs.hpp"
 #include "app/report/truth_picture.hpp"
+#include "app/run/run_frame.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/step_limit.hpp"
 #include "app/run/terminal.hpp"
@@ -260,24 +260,23 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   require_sensors(options, profile);
   mapping::validate(controller_opts.geometry, mapping::kDefaultMaxGridBytes);
   robot::validate(controller_opts);
-  webots::embedded::Simulation simulation(maze::world_of(truth), profile, options.simulation);
-  const mapping::SensorModel model(options.sensor);
-  const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
-
   const std::string &out_dir = options.output.out_dir;
   std::optional<FilesRecorder> recorder;  // the files every kind of run writes, and marks.txt
-  if (!out_dir.empty()) {
-    recorder.emplace(program_inputs(mms), mms_own_names());
-    const CellRunStart cell{truth, controller_opts, style.initial_log_odds};
-    recorder->on_start(RunStart{options, simulation.robot(), &cell, nullptr});
-  }
+  if (!out_dir.empty()) recorder.emplace(program_inputs(mms), mms_own_names());
+  RunFrame frame(maze::world_of(truth), profile, options.simulation, recorder ? &*recorder : nullptr,
+                 controls.progress_fd);
+  webots::embedded::Simulation &simulation = frame.simulation();
+  const mapping::SensorModel model(options.sensor);
+  const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
+  const CellRunStart cell_start{truth, controller_opts, style.initial_log_odds};
+  frame.start(RunStart{options, simulation.robot(), &cell_start, nullptr});
   robot::CommandController controller(simulation.robot(), controller_opts);
   MmsRun run;
   MmsReport &report = run.mms;
   report.marks = MmsMarks(truth.width(), truth.height());
   std::optional<robot::ProgressPrinter> printer;
   if (!options.output.quiet) printer.emplace(out, style, truth.width() * truth.height());
-  const robot::RunHooks hooks = mms_hooks(recorder ? &*recorder : nullptr, printer, controls, simulation);
+  const robot::RunHooks hooks = mms_hooks(frame.observer(), printer, controls, simulation);
 
   MmsMouse mouse(truth, mms, controller, controller_opts, report);
   ChildProcess child(mms.command);  // before the robot moves: a command that cannot start prints nothing
@@ -294,16 +293,9 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   run.summary.wall_time_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
 
   const Report mms_summary = mms_report(options, mms, run);
-  std::exception_ptr no_space;
-  if (recorder) {
-    try {
-      recorder->add_own_files(mms_summary, mms_own_files(run));
-      const CellRunEnd cell{truth, run.summary, result, model, learned_sides(result, style)};
-      recorder->on_end(RunEnd{options, &cell, nullptr});
-    } catch (const common::NoSpaceError &) {
-      no_space = std::current_exception();  // said after the summary, which the user still gets
-    }
-  }
+  if (recorder) recorder->add_own_files(mms_summary, mms_own_files(run));
+  const CellRunEnd cell{truth, run.summary, result, model, learned_sides(result, style)};
+  frame.end(RunEnd{options, &cell, nullptr});
   if (report.end == MmsEnd::interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";
   } else {
@@ -311,10 +303,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
     out << "the algorithm's marks (setWall, setColor, setText):\n" << render_marks(report.marks, style.color) << '\n';
   }
   out << format_summary(mms_summary);
-  if (no_space) {
-    out << std::flush;
-    std::rethrow_exception(no_space);
-  }
+  frame.close(out);
   return run;
 }
 

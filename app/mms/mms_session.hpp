@@ -71,7 +71,8 @@ struct MmsRun {
 };
 
 // Runs the algorithm on one maze; prints the progress (unless quiet), the final map, the
-// algorithm's marks and the summary to out. Throws common::InputError when the options do
+// algorithm's marks and the summary to out; draws the progress line on
+// controls.progress_fd (-1: none). Throws common::InputError when the options do
 // not fit the maze or robot, or the command cannot be started. A maze without goals gets
 // its centre cells (mms's goal). With --out, a full disk throws common::NoSpaceError after
 // the summary is printed.

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cassert>
 #include <chrono>
-#include <exception>
 #include <cstdio>
 #include <functional>
 #include <istream>
@@ -29,7 +28,7 @@
 #include "app/run/plan_path.hpp"
 #include "app/run/step_limit.hpp"
 #include "app/run/profile_json.hpp"
-#include "app/run/run_progress.hpp"
+#include "app/run/run_frame.hpp"
 #include "app/run/terminal.hpp"
 
 namespace app {
@@ -381,22 +380,18 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   const maze::sim::RobotProfile &profile = robot_profile(options);
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   check_fit(options, truth, profile, controller_opts);
-  webots::embedded::Simulation simulation(maze::world_of(truth), profile, options.simulation);
+  RunFrame frame(maze::world_of(truth), profile, options.simulation, controls.observer, controls.progress_fd);
+  webots::embedded::Simulation &simulation = frame.simulation();
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   assert(options.output.out_dir.empty() || controls.observer != nullptr);
-  // The files first, then the progress line.
-  RunObservers observers;
-  observers.add(controls.observer);
-  std::optional<RunProgress> progress;
-  if (controls.progress_fd >= 0) observers.add(&progress.emplace(controls.progress_fd));
   const CellRunStart cell_start{truth, controller_opts, style.initial_log_odds};
-  observers.on_start(RunStart{options, simulation.robot(), &cell_start, nullptr});
+  frame.start(RunStart{options, simulation.robot(), &cell_start, nullptr});
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
-  const robot::RunResult result = drive(options, truth, simulation, controller, style, out, controls,
-                                              observers.empty() ? nullptr : &observers, state);
+  const robot::RunResult result =
+      drive(options, truth, simulation, controller, style, out, controls, frame.observer(), state);
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
@@ -405,17 +400,8 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   if (options.plan.to) summary.plan = plan_path(options, result, model, style, planned);
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  // A full disk is said after the summary, which the user still gets.
-  std::exception_ptr no_space;
-  if (!observers.empty()) {
-    try {
-      const CellRunEnd cell{truth, summary, result, model,
-                            learned_sides(result, style.initial_log_odds, style.threshold)};
-      observers.on_end(RunEnd{options, &cell, nullptr});
-    } catch (const common::NoSpaceError &) {
-      no_space = std::current_exception();
-    }
-  }
+  const CellRunEnd cell{truth, summary, result, model, learned_sides(result, style.initial_log_odds, style.threshold)};
+  frame.end(RunEnd{options, &cell, nullptr});
   if (summary.interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";
   } else {
@@ -423,12 +409,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
     out << planned.str();
   }
   out << format_summary(options, summary);
-  if (no_space && controls.no_space != nullptr) {
-    *controls.no_space = no_space;
-  } else if (no_space) {
-    out << std::flush;
-    std::rethrow_exception(no_space);
-  }
+  frame.close(out, controls.no_space);
   return summary;
 }
 

@@ -6,7 +6,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <functional>
 #include <variant>
 #include <numbers>
@@ -18,7 +17,7 @@
 #include "app/run/metric/run_report.hpp"
 #include "app/run/metric/evaluation.hpp"
 #include "app/run/profile_json.hpp"
-#include "app/run/run_progress.hpp"
+#include "app/run/run_frame.hpp"
 #include "app/run/run.hpp"
 #include "common/compass.hpp"
 #include "common/atomic_file.hpp"
@@ -295,14 +294,10 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   sim.start = maze::sim::Pose{start_pose.x_m, start_pose.y_m, start_pose.yaw_rad};
   const maze::TruthRaster truth = truth_on_grid(arena, spec, start_pose, profile.body_radius_m);
   // Free geometry: on SolidGeometry, a maze's geometry too (run_metric_world), never on a WallGrid.
-  webots::embedded::Simulation simulation(maze::world_of(arena), profile, sim);
-  // The files first, then the progress line.
-  RunObservers observers;
-  observers.add(observer);
-  std::optional<RunProgress> progress;
-  if (progress_fd >= 0) observers.add(&progress.emplace(progress_fd));
+  RunFrame frame(maze::world_of(arena), profile, sim, observer, progress_fd);
+  webots::embedded::Simulation &simulation = frame.simulation();
   const MetresRunStart metres{setup, room, arena, map, start_pose, truth, threshold};
-  observers.on_start(RunStart{options, simulation.robot(), nullptr, &metres});
+  frame.start(RunStart{options, simulation.robot(), nullptr, &metres});
 
   // ---- the run ----
   RoomLog log(options, threshold, out);
@@ -311,7 +306,7 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
                                             RunStep step = step_at(c.steps(), c.time_s(), simulation.pose());
                                             step.metres = &c;
                                             log.on_step(c, step.snapshots);
-                                            observers.on_step(step);
+                                            frame.step(step);
                                           },
                                           interrupted);
   MetricRunSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
@@ -326,22 +321,13 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   const Report report = metric_run_report(options, profile.name, setup, spec, summary);
-  // The files and the progress line's end before anything is printed; a full disk is said
-  // after the summary, which the user still gets.
-  std::exception_ptr no_space;
-  try {
-    const MetresRunEnd ended{controller_loop, truth, report};
-    observers.on_end(RunEnd{options, nullptr, &ended});
-  } catch (const common::NoSpaceError &) {
-    no_space = std::current_exception();
-  }
+  // The files and the progress line's end before anything is printed.
+  const MetresRunEnd ended{controller_loop, truth, report};
+  frame.end(RunEnd{options, nullptr, &ended});
   if (!options.output.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
   if (!options.output.quiet) out << '\n';
   out << format_summary(report);
-  if (no_space) {
-    out << std::flush;
-    std::rethrow_exception(no_space);
-  }
+  frame.close(out);
   if (report_out != nullptr) *report_out = report;
   return summary;
 }

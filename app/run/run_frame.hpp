@@ -1,0 +1,48 @@
+#pragma once
+// The frame every kind of run is composed in: a maze run (app/run/run.hpp), a room run
+// (app/run/metric/run.hpp) and an mms program's run (app/mms/mms_session.hpp). The frame owns
+// what they share: the simulation, built from the world alone; the observers, told the start,
+// each step and the end in one order (the files first, then the progress line); and a full
+// disk met while the files are written, which is said after the run's summary (the user still
+// gets the summary). What a kind adds is its driver: the cell controller, the metric
+// controller or an mms program's commands, whose steps it tells observer().
+
+#include <exception>
+#include <optional>
+#include <ostream>
+
+#include "app/run/run_observer.hpp"
+#include "app/run/run_progress.hpp"
+#include "maze/sim/profile.hpp"
+#include "maze/sim/simulation.hpp"
+#include "maze/world/world.hpp"
+
+namespace app {
+
+class RunFrame {
+ public:
+  // The simulation of `profile` in `world`; `files` (null: none) is told first, then the
+  // progress line on `progress_fd` (-1: none; a terminal, app/run/terminal.hpp).
+  RunFrame(const maze::World &world, const maze::sim::RobotProfile &profile,
+           const maze::sim::SimulationOptions &simulation, RunObserver *files, int progress_fd);
+
+  webots::embedded::Simulation &simulation() { return simulation_; }
+  // The observers in their order, or null when there is none (a driver then reports nothing).
+  RunObserver *observer() { return observers_.empty() ? nullptr : &observers_; }
+
+  void start(const RunStart &start) { observers_.on_start(start); }
+  void step(const RunStep &step) { observers_.on_step(step); }
+  // Tells the end; a full disk (common::NoSpaceError) is kept for close().
+  void end(const RunEnd &end);
+  // Once the summary is on `out`: a full disk kept by end() is handed to `keep` when it is not
+  // null, else thrown (after `out` is flushed).
+  void close(std::ostream &out, std::exception_ptr *keep = nullptr);
+
+ private:
+  webots::embedded::Simulation simulation_;
+  RunObservers observers_;
+  std::optional<RunProgress> progress_;
+  std::exception_ptr no_space_;
+};
+
+}  // namespace app
