@@ -5,7 +5,8 @@
 // each step and the end in one order (the files first, then the progress line); and a full
 // disk met while the files are written, which is said after the run's summary (the user still
 // gets the summary). What a kind adds is its driver: the cell controller, the metric
-// controller or an mms program's commands, whose steps it tells observer().
+// controller, an mms program's commands or a Python controller's own loop
+// (python/src/simulator_bindings.cpp), whose steps it tells the frame.
 
 #include <exception>
 #include <optional>
@@ -30,6 +31,9 @@ class RunFrame {
   // The observers in their order, or null when there is none (a driver then reports nothing).
   RunObserver *observer() { return observers_.empty() ? nullptr : &observers_; }
 
+  // One more observer, told after those before it (a Python controller's files, given once
+  // the runner has checked --out).
+  void add(RunObserver *observer) { observers_.add(observer); }
   void start(const RunStart &start) { observers_.on_start(start); }
   void step(const RunStep &step) { observers_.on_step(step); }
   // Tells the end; a full disk (common::NoSpaceError) is kept for close().

@@ -244,8 +244,8 @@ PoseTrace &RunFiles::trace() {
   return *trace_;
 }
 
-void RunFiles::record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose) {
-  if (!trace().record(step, time_s, pose)) return;
+void RunFiles::on_step(const app::RunStep &step) {
+  if (!trace().record(step.step, step.time_s, step.true_pose)) return;
   const PoseTrace::Visit &v = trace_->visits().back();
   replay_.on_step({v.step, {v.x_m, v.y_m}, v.yaw_rad, v.placed}, v.time_s);
 }

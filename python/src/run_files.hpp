@@ -21,6 +21,7 @@
 #include "kept_map.hpp"
 #include "pose_trace.hpp"
 #include "app/report/output_dir.hpp"
+#include "app/run/run_observer.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/world/world.hpp"
 
@@ -33,16 +34,21 @@ using EntryTuple = std::tuple<std::string, std::optional<std::string>, std::stri
 // "key: value" lines of the entries (app/run/report.hpp's format_summary).
 std::string format_entries(const std::vector<EntryTuple> &entries);
 
-class RunFiles {
+// The files observe the run's steps, as every kind of run's do (app/run/run_frame.hpp); a
+// Python run's start is its first step, and its end finish(), which brings the runner's
+// report.
+class RunFiles final : public app::RunObserver {
  public:
   // Prepares DIR (app::OutputDir: created when missing, a dangling link refused and left as
   // it is) and refuses it when a file the run may write there is one of `inputs` ((what,
   // path) pairs, "the world", "the controller"). Throws common::InputError.
   RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs);
 
+  void on_start(const app::RunStart &) override {}
   // After every control step: its row of trace.csv (opened on first use) and, when due, a
   // frame of the replay in metres.
-  void record_step(std::int64_t step, double time_s, const maze::sim::Pose &pose);
+  void on_step(const app::RunStep &step) override;
+  void on_end(const app::RunEnd &) override {}
   // A supervisor set the robot down (a teleport, simulationReset): no path is drawn to its
   // next pose.
   void mark_placed();

@@ -24,6 +24,7 @@
 #include <webots/TouchSensor.hpp>
 
 #include "app/run/profile_json.hpp"
+#include "app/run/run_frame.hpp"
 #include "bindings.hpp"
 #include "run_files.hpp"
 #include "common/error.hpp"
@@ -66,7 +67,7 @@ class PySimulation {
       : profile_(app::resolve_robot(robot)) {
     maze::sim::SimulationOptions o = options(seed, noise, max_steps);
     if (world.on_lattice()) o.start = xml_start_pose(world);
-    simulation_ = std::make_unique<webots::embedded::Simulation>(world, profile_, o);
+    frame_ = std::make_unique<app::RunFrame>(world, profile_, o, nullptr, -1);
   }
 
   // The course's floor, kCourseFloorSide_m square centred on the origin, with nothing on it;
@@ -82,38 +83,39 @@ class PySimulation {
     return maze::world_of(std::move(arena));
   }
 
-  webots::embedded::Simulation &simulation() { return *simulation_; }
-  const webots::embedded::Simulation &simulation() const { return *simulation_; }
+  webots::embedded::Simulation &simulation() { return frame_->simulation(); }
+  const webots::embedded::Simulation &simulation() const { return frame_->simulation(); }
 
   void make_current() {
-    if (!current_) current_ = std::make_unique<webots::embedded::CurrentSimulation>(*simulation_);
+    if (!current_) current_ = std::make_unique<webots::embedded::CurrentSimulation>(simulation());
   }
   void release_current() { current_.reset(); }
-  bool is_current() const { return webots::embedded::current_simulation() == simulation_.get(); }
+  bool is_current() const { return webots::embedded::current_simulation() == &simulation(); }
 
   // The run's simulated time and basic steps, resets included (Robot.getTime() restarts at a reset).
   double time_s() const {
-    return static_cast<double>(simulation_->steps() * simulation_->basic_time_step_ms()) / 1000.0;
+    return static_cast<double>(simulation().steps() * simulation().basic_time_step_ms()) / 1000.0;
   }
-  std::int64_t steps() const { return simulation_->steps(); }
+  std::int64_t steps() const { return simulation().steps(); }
   const maze::sim::RobotProfile &profile() const { return profile_; }
-  void request_stop() { simulation_->request_stop(); }
+  void request_stop() { simulation().request_stop(); }
   // A supervisor set the robot down: the recorded path has no line to its next pose.
   void placed_by_supervisor() {
     if (files_ != nullptr) files_->mark_placed();
   }
 
-  // From now on `files` records every control step: its trace.csv row, an arena's replay
-  // frames (record_trace).
+  // From now on `files` observes the run: every control step's trace.csv row and replay
+  // frame (record_trace).
   void record_to(py::object files) {
     files_ = &files.cast<RunFiles &>();
     files_->set_body_radius(profile_.body_radius_m);
     files_owner_ = std::move(files);
+    frame_->add(files_);
   }
-  // After a control step: its row, when a trace is recorded; whether the robot is at the goal.
+  // After a control step: told to the run's observers; whether the robot is at the goal.
   void after_step() {
-    if (files_ != nullptr) files_->record_step(steps(), time_s(), simulation_->pose());
-    if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation_->pose());
+    frame_->step(app::step_at(steps(), time_s(), simulation().pose()));
+    if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation().pose());
   }
 
   // The run's goal: the cells of a lattice (cell_size_m, origin) the robot's centre reaches
@@ -121,7 +123,7 @@ class PySimulation {
   void set_goal(std::vector<std::pair<int, int>> cells, double cell_size_m, std::pair<double, double> origin,
                 std::vector<std::pair<double, double>> points, double radius_m) {
     goal_ = Goal{std::move(cells), cell_size_m, origin, std::move(points), radius_m};
-    goal_reached_ = goal_reached_ || at_goal(simulation_->pose());
+    goal_reached_ = goal_reached_ || at_goal(simulation().pose());
   }
   bool goal_reached() const { return goal_reached_; }
 
@@ -150,7 +152,7 @@ class PySimulation {
   }
 
   maze::sim::RobotProfile profile_;
-  std::unique_ptr<webots::embedded::Simulation> simulation_;
+  std::unique_ptr<app::RunFrame> frame_;  // the simulation, and the files observing it
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
   RunFiles *files_ = nullptr;  // files_owner_'s
   py::object files_owner_;
