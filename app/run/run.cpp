@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
-#include <istream>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -28,6 +27,7 @@
 #include "app/run/plan_path.hpp"
 #include "app/run/step_limit.hpp"
 #include "app/run/profile_json.hpp"
+#include "app/run/console_observers.hpp"
 #include "app/run/run_frame.hpp"
 #include "app/run/terminal.hpp"
 
@@ -90,26 +90,8 @@ MapScore score(const maze::Maze &truth, const robot::RunResult &result, float in
 
 struct RunState {
   bool quit = false;          // q at a --step prompt
-  bool stepping = true;       // false once --step's input has ended
   bool interrupted = false;   // Ctrl-C
 };
-
-// --step: one line a cell; "q" (or "quit") stops the run, anything else goes on. At the end
-// of the input the run goes on to its end without stopping.
-void wait_for_step(const RunControls &controls, const robot::MoveReport &report, RunState &state) {
-  if (!state.stepping || controls.in == nullptr) return;
-  if (controls.prompt != nullptr) {
-    *controls.prompt << fmt::format("-- cell ({},{}), step {}: Enter goes on, q quits -- ",
-                                    report.cell.x, report.cell.y, report.step)
-                     << std::flush;
-  }
-  std::string line;
-  if (!std::getline(*controls.in, line)) {
-    state.stepping = false;
-    return;
-  }
-  if (line == "q" || line == "quit" || line == "Q") state.quit = true;
-}
 
 void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option) {
   if (c.x < 0 || c.y < 0 || c.x >= maze.width() || c.y >= maze.height()) {
@@ -261,52 +243,41 @@ render::MapStyle map_style(const OutputOptions &output, const mapping::SensorMod
   return style;
 }
 
-// The run itself, watched as the options ask: progress or animation on out, --step's
-// prompt, the observer, Ctrl-C.
-robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, webots::embedded::Simulation &simulation,
+// The run itself, watched as the options ask: the frame's observers first (the files, the
+// progress line), then the console's (printed cells or the animation, --step's prompt); and
+// Ctrl-C, polled before each control step, after the step before it is recorded: the trace
+// holds every step the run counts.
+robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, RunFrame &frame,
                        robot::CellController &controller, const render::MapStyle &style, std::ostream &out,
-                       const RunControls &controls, RunObserver *observer, RunState &state) {
+                       const RunControls &controls, RunState &state) {
   const OutputOptions &o = options.output;
+  RunObservers observers;
+  observers.add(frame.observer());
   std::optional<ScreenGuard> screen;
-  std::optional<Animator> animator;
+  std::optional<Animation> animation;
   if (o.animate) {
     screen.emplace(out);
-    animator.emplace(out, style, AnimationOptions{o.fps, o.speed, terminal_size(controls.terminal_fd)});
+    observers.add(&animation.emplace(out, style, AnimationOptions{o.fps, o.speed, terminal_size(controls.terminal_fd)}));
   }
-  std::optional<robot::ProgressPrinter> printer;
+  std::optional<PrintedCells> printed;
   if (!o.quiet && !o.animate) {
     const int k = options.subcells;
-    printer.emplace(out, style, truth.width() * truth.height(),
-                    view_for_terminal(controls.terminal_fd, k, truth.height() * k, truth.width() * k,
-                                      style.subcell_columns));
+    observers.add(&printed.emplace(robot::ProgressPrinter(
+        out, style, truth.width() * truth.height(),
+        view_for_terminal(controls.terminal_fd, k, truth.height() * k, truth.width() * k, style.subcell_columns))));
   }
-  // The observer first: the step's record is kept before anything can stop the run.
-  robot::RunHooks hooks = observed_hooks(observer, simulation);
-  if (printer || animator || o.step) {
-    hooks.on_move = [&, told = std::move(hooks.on_move)](const robot::MoveReport &report) {
-      if (told) told(report);
-      if (printer) (*printer)(report);
-      if (animator) {
-        const maze::sim::Pose &pose = simulation.pose();
-        animator->on_step(robot::StepReport{report.step, report.sim_time_s, report.cell, report.heading,
-                                            robot::Action::rest, 0, report.grid, report.visits},
-                          pose.x_m, pose.y_m);
-      }
-      if (o.step && !state.quit) wait_for_step(controls, report, state);
-    };
-  }
-  // Ctrl-C is polled before each control step, after the step before it is recorded: the
-  // trace holds every step the run counts.
+  std::optional<StepPrompt> prompt;
+  if (o.step && controls.in != nullptr) observers.add(&prompt.emplace(*controls.in, controls.prompt));
+  robot::RunHooks hooks = observed_hooks(observers.empty() ? nullptr : &observers, frame.simulation());
   hooks.stop_requested = controls.interrupted;
-  if (animator || o.step) {
-    hooks.on_step = [&, told = std::move(hooks.on_step)](const robot::StepReport &step) {
-      if (told) told(step);
-      if (state.quit) return false;
-      if (animator) animator->on_step(step, simulation.pose().x_m, simulation.pose().y_m);
-      return true;
+  if (prompt) {
+    hooks.on_step = [&prompt, told = std::move(hooks.on_step)](const robot::StepReport &step) {
+      told(step);
+      return !prompt->quit();
     };
   }
   robot::RunResult result = controller.run(hooks);
+  state.quit = prompt && prompt->quit();
   state.interrupted = result.reason == robot::EndReason::stopped && !state.quit;
   return result;
 }
@@ -391,7 +362,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
   const robot::RunResult result =
-      drive(options, truth, simulation, controller, style, out, controls, frame.observer(), state);
+      drive(options, truth, frame, controller, style, out, controls, state);
   RunSummary summary = summarize(options, truth, result, state, style);
   if (options.output.color && !result.path.empty()) style.robot = robot_mark(result, options);
   // The files first, then the maps (a 4096 x 4096 map is gigabytes of text): a run stopped
