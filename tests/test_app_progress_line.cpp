@@ -1,6 +1,7 @@
 // The progress lines a long run and a batch draw on a terminal: the percentage of a known
 // end and, for a batch, the time left at the rate so far; and the line as a run's observer,
-// drawn by a maze run and a room run alike and cleared when the run ends.
+// drawn by a maze run, a room run and an mms program's run alike and cleared when the run
+// ends.
 
 #include <doctest/doctest.h>
 
@@ -11,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "app/mms/mms_session.hpp"
 #include "app/run/metric/run.hpp"
 #include "app/run/progress_line.hpp"
 #include "app/run/run.hpp"
@@ -73,7 +75,7 @@ std::string progress_drawn_by(Run run) {
 
 }  // namespace
 
-TEST_CASE("progress: a maze run and a room run draw the line as the run goes and clear it at the end") {
+TEST_CASE("progress: a maze run, a room run and an mms program's run draw the line as the run goes and clear it at the end") {
   const std::string clear = "\r\x1b[K";
   const std::string maze_line = progress_drawn_by([](int fd) {
     app::RunOptions o;
@@ -98,4 +100,18 @@ TEST_CASE("progress: a maze run and a room run draw the line as the run goes and
   CHECK(room_line.find("steps 1  observed ") != std::string::npos);
   CHECK(room_line.find(" reachable free cells (") != std::string::npos);
   CHECK(room_line.ends_with(clear));
+  const std::string mms_line = progress_drawn_by([](int fd) {
+    app::RunOptions o;
+    o.world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+    o.output.quiet = true;
+    app::MmsOptions mms;
+    mms.command = {"sh", std::string(TEST_DATA_DIR) + "/mms/readme_conversation.sh"};
+    std::ostringstream out;
+    app::RunControls controls;
+    controls.progress_fd = fd;
+    app::run_mms_world(o, mms, out, controls);
+  });
+  CHECK(mms_line.find("moves 0  visited 1/") != std::string::npos);
+  CHECK(mms_line.find(" reachable cells (") != std::string::npos);
+  CHECK(mms_line.ends_with(clear));
 }
