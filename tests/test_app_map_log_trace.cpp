@@ -116,6 +116,21 @@ TEST_CASE("map-log maps a depth run's trace.csv: the occupied cells lie on the m
   CHECK(c.free_cells > 600);  // the corridors: 16 cells of 1 m, less the walls' cells
 }
 
+TEST_CASE("map-log --out into the run's own directory keeps the run's files beside its own") {
+  const test_cli::TempDir dir("trace");
+  const std::string world = std::string(WORLDS_DIR) + "/lab4x4.txt";
+  const std::string run_dir = (dir.path / "run").string();
+  run_cli({"run", world, "--model", "bump", "--noise", "0", "--quiet", "--out", run_dir});
+  const test_cli::Ran ran = test_cli::run({"map-log", run_dir + "/trace.csv", "--sensor", "bump", "--cells", "20,20",
+                                           "--boundary", "0,4,0,4", "--snapshots-at", "1", "--out", run_dir});
+  CHECK(ran.status == 0);
+  for (const char *kept : {"summary.json", "trace.csv", "map.png", "truth.png", "replay.html", "logodds.csv",
+                           "logodds.png", "thresholded.txt", "thresholded.png"}) {
+    INFO(kept);
+    CHECK(fs::exists(dir.path / "run" / kept));
+  }
+}
+
 TEST_CASE("map-log maps a bump run's trace.csv: pressed bumps lie on the maze's walls") {
   const test_cli::TempDir dir("trace");
   const std::string world = std::string(WORLDS_DIR) + "/lab4x4.txt";

@@ -219,6 +219,32 @@ TEST_CASE("finishing an output folder removes the core files an earlier run left
   CHECK(read_all((dir.path / "notes.txt").string()) == "the user's");
 }
 
+TEST_CASE("finishing an output folder removes a kind's own file an earlier run left; a command's own names leave a run's files") {
+  const TempDir dir;
+  fs::create_directories(dir.path);
+  for (const char *stale : {"wave.png", "summary.json", "logodds_step9.csv"}) {
+    common::write_file_atomically((dir.path / stale).string(), "stale");
+  }
+  {
+    // A room run that draws no wave this time: an earlier run's wave.png goes.
+    app::OutputDir out(dir.path.string(), {}, {"logodds.csv", "wave.png"});
+    out.write("logodds.csv", "1\n");
+    out.write("summary.json", "{}\n");
+    out.finish();
+  }
+  CHECK_FALSE(fs::exists(dir.path / "wave.png"));
+  {
+    // map-log's own names alone: the run's summary.json stays.
+    app::OutputDir out(dir.path.string(), {}, app::OwnNamesOnly{{"logodds.csv", "logodds_step5.csv"}});
+    out.write("logodds.csv", "2\n");
+    CHECK_THROWS_AS(out.write("summary.json", "x"), std::logic_error);
+    out.finish();
+  }
+  CHECK(read_all((dir.path / "summary.json").string()) == "{}\n");
+  CHECK(read_all((dir.path / "logodds.csv").string()) == "2\n");
+  CHECK(read_all((dir.path / "logodds_step9.csv").string()) == "stale");  // not among the names declared
+}
+
 TEST_CASE("an unusable --out is an error before the run, and leaves nothing") {
   const TempDir dir;
   fs::create_directories(dir.path);

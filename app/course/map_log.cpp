@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "app/picture/plain_grid_picture.hpp"
+#include "app/report/output_dir.hpp"
 #include "app/report/outputs.hpp"
 #include "app/run/option_values.hpp"
 #include "common/atomic_file.hpp"
@@ -285,22 +286,20 @@ std::vector<std::string> map_log_output_names(const std::vector<std::size_t> &sn
 }
 
 // --out: a snapshot's grid and picture after step `at`.
-void write_snapshot(const MapLogInput &input, const sensing::BumpDepthOptions &o, const sensing::LogOddsGrid &grid,
-                    std::size_t at, std::size_t steps) {
-  const std::string stem = fmt::format("{}/logodds_step{}", input.out_dir, at);
-  common::write_file_atomically(stem + ".csv", grid_csv(grid));
-  common::write_file_atomically(stem + ".png", log_odds_png(o, grid, caption(input, o, at, steps)));
+void write_snapshot(OutputDir &out, const MapLogInput &input, const sensing::BumpDepthOptions &o,
+                    const sensing::LogOddsGrid &grid, std::size_t at, std::size_t steps) {
+  out.write(fmt::format("logodds_step{}.csv", at), grid_csv(grid));
+  out.write(fmt::format("logodds_step{}.png", at), log_odds_png(o, grid, caption(input, o, at, steps)));
 }
 
 // --out: the final grid, its picture and the thresholded map.
-void write_final(const MapLogInput &input, const sensing::BumpDepthOptions &o, const sensing::LogOddsGrid &grid,
-                 std::size_t steps) {
-  const std::string &dir = input.out_dir;
+void write_final(OutputDir &out, const MapLogInput &input, const sensing::BumpDepthOptions &o,
+                 const sensing::LogOddsGrid &grid, std::size_t steps) {
   const std::string text = caption(input, o, steps, steps);
-  common::write_file_atomically(dir + "/logodds.csv", grid_csv(grid));
-  common::write_file_atomically(dir + "/logodds.png", log_odds_png(o, grid, text));
-  common::write_file_atomically(dir + "/thresholded.txt", thresholded(grid, input.threshold));
-  common::write_file_atomically(dir + "/thresholded.png", thresholded_png(o, grid, input.threshold, text));
+  out.write("logodds.csv", grid_csv(grid));
+  out.write("logodds.png", log_odds_png(o, grid, text));
+  out.write("thresholded.txt", thresholded(grid, input.threshold));
+  out.write("thresholded.png", thresholded_png(o, grid, input.threshold, text));
 }
 
 std::string map_log_header(const MapLogInput &input, const sensing::BumpDepthOptions &o, const Log &log) {
@@ -353,23 +352,25 @@ std::string run_map_log(const MapLogInput &input) {
   check_sensor_options(input, log.sensor);
   const auto snapshots = snapshot_steps(input, log.steps.size());
   warn_outside_boundary(o, log);
+  // Only map-log's own names: a run's directory it writes into keeps the run's files.
+  std::optional<OutputDir> out_dir;
   if (!input.out_dir.empty()) {
-    prepare_output_dir(input.out_dir);
-    refuse_outputs_over_inputs(input.out_dir, map_log_output_names(snapshots), {{"the log", input.log_path}});
+    out_dir.emplace(input.out_dir, std::vector<NamedInput>{{"the log", input.log_path}},
+                    OwnNamesOnly{map_log_output_names(snapshots)});
   }
   sensing::LogOddsGrid grid = sensing::make_log_odds_grid(o);
   for (std::size_t n = 0; n < log.steps.size(); ++n) {
     sensing::apply_bump_depth_marks(o, log.sensor, log.steps[n], grid);
     for (const std::size_t at : snapshots) {
-      if (at == n + 1 && !input.out_dir.empty()) write_snapshot(input, o, grid, at, log.steps.size());
+      if (at == n + 1 && out_dir) write_snapshot(*out_dir, input, o, grid, at, log.steps.size());
     }
   }
-  if (!input.out_dir.empty()) write_final(input, o, grid, log.steps.size());
+  if (out_dir) {
+    write_final(*out_dir, input, o, grid, log.steps.size());
+    out_dir->finish();
+  }
   std::string out = map_log_header(input, o, log) + "\nfinal log-odds, north row first:\n" + grid_matrix(grid);
   out += fmt::format("\nthresholded: W where log-odds >= {:g}\n", input.threshold) + thresholded(grid, input.threshold);
-  if (!input.out_dir.empty()) {
-    out += "\nwrote " + input.out_dir + "/logodds.csv, logodds.png, thresholded.txt, thresholded.png and the snapshots\n";
-  }
   return out;
 }
 

@@ -87,21 +87,24 @@ void remove_stale(const fs::path &path) {
   fs::remove(path, ec);
 }
 
-// The files of an earlier run that this one did not write: those of the program's names in
-// `dir`, and snapshots/NN.png (snapshots/ itself when that empties it).
-void remove_stale_files(const fs::path &dir, const std::vector<std::string> &written) {
-  for (const char *name : kOutputNames) {
-    if (std::find(written.begin(), written.end(), name) == written.end()) remove_stale(dir / name);
+// The files of an earlier run that this one did not write: those of `names` (what this one may
+// write) in `dir`, and, when "snapshots/" is among them, snapshots/NN.png (snapshots/ itself
+// when that empties it).
+void remove_stale_files(const fs::path &dir, const std::vector<std::string> &names,
+                        const std::vector<std::string> &written) {
+  const auto was_written = [&written](const std::string &name) {
+    return std::find(written.begin(), written.end(), name) != written.end();
+  };
+  for (const std::string &name : names) {
+    if (!name.ends_with('/') && !was_written(name)) remove_stale(dir / name);
   }
+  if (std::find(names.begin(), names.end(), "snapshots/") == names.end()) return;
   const fs::path snapshots = dir / "snapshots";
   std::error_code ec;
   if (!fs::is_directory(fs::symlink_status(snapshots, ec))) return;
   for (const fs::directory_entry &entry : fs::directory_iterator(snapshots, ec)) {
     const std::string name = "snapshots/" + entry.path().filename().string();
-    if (is_snapshot_name(entry.path().filename().string()) &&
-        std::find(written.begin(), written.end(), name) == written.end()) {
-      remove_stale(entry.path());
-    }
+    if (is_snapshot_name(entry.path().filename().string()) && !was_written(name)) remove_stale(entry.path());
   }
   if (fs::is_empty(snapshots, ec) && !ec) fs::remove(snapshots, ec);
 }
@@ -159,10 +162,6 @@ void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::s
   }
 }
 
-void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written) {
-  remove_stale_files(fs::path(dir), written);
-}
-
 std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
                        std::size_t snapshot_files) {
   std::vector<std::string> names(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(first_snapshot));
@@ -177,8 +176,14 @@ std::string wrote_line(const std::string &dir, const std::vector<std::string> &w
 }
 
 OutputDir::OutputDir(std::string dir, const std::vector<NamedInput> &inputs, const std::vector<std::string> &own_names)
-    : dir_(std::move(dir)), names_(run_output_names()) {
-  names_.insert(names_.end(), own_names.begin(), own_names.end());
+    : OutputDir(std::move(dir), inputs, OwnNamesOnly{[&own_names] {
+                  std::vector<std::string> names = run_output_names();
+                  names.insert(names.end(), own_names.begin(), own_names.end());
+                  return names;
+                }()}) {}
+
+OutputDir::OutputDir(std::string dir, const std::vector<NamedInput> &inputs, OwnNamesOnly names)
+    : dir_(std::move(dir)), names_(std::move(names.names)) {
   prepare_output_dir(dir_);
   refuse_outputs_over_inputs(dir_, names_, inputs);
 }
@@ -209,7 +214,7 @@ void OutputDir::commit(const std::string &name, common::OutputFile &file) {
 }
 
 void OutputDir::finish() {
-  remove_stale_outputs(dir_, written_);
+  remove_stale_files(fs::path(dir_), names_, written_);
   const auto is_snapshot = [](const std::string &name) { return name.starts_with("snapshots/"); };
   const auto first = std::find_if(written_.begin(), written_.end(), is_snapshot);
   const auto end = std::find_if_not(first, written_.end(), is_snapshot);

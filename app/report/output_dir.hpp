@@ -40,12 +40,6 @@ const std::vector<std::string> &run_output_names();
 void refuse_outputs_over_inputs(const std::string &dir, const std::vector<std::string> &names,
                                 const std::vector<NamedInput> &inputs);
 
-// Removes the files an earlier run left in DIR that this one did not write (`written`:
-// names relative to DIR, "snapshots/01.png" for a snapshot): only files of the names
-// write_outputs() writes (map.pgm ... plan.csv, snapshots/NN.png, snapshots/ when that
-// empties it), and only regular files and links; nothing else in DIR is touched.
-void remove_stale_outputs(const std::string &dir, const std::vector<std::string> &written);
-
 // "wrote DIR/: map.pgm, map.yaml, ..., snapshots/ (3 files, 01.png to 03.png), ...": the
 // names in `written` (relative to dir), the snapshot_files from first_snapshot on as one.
 std::string wrote_line(const std::string &dir, const std::vector<std::string> &written, std::size_t first_snapshot,
@@ -57,10 +51,17 @@ struct NamedFile {
   std::string bytes;
 };
 
+// The names a command that is no run writes in its --out DIR, declared whole (map-log's): its
+// OutputDir writes, checks and removes none of a run's names, so a run's directory keeps its
+// files when such a command writes there.
+struct OwnNamesOnly {
+  std::vector<std::string> names;
+};
+
 // The --out DIR of one run of any kind (a maze run, a room run, an mms program's run): the one
 // writer of its files, the core ones (run_output_names: summary.json, trace.csv, map.pgm +
 // map.yaml, map.png, truth.png, replay.html, snapshots/...) and what the kind adds
-// (marks.txt, logodds.csv, ...).
+// (marks.txt, logodds.csv, ...); and of the files of a command that is no run (OwnNamesOnly).
 //   - Made ready once, before the run: prepare_output_dir, then refused (common::InputError)
 //     when a file it may write (the core names and `own_names`) is one of `inputs`.
 //   - Each file is written atomically under a name so declared (another name is a
@@ -68,11 +69,13 @@ struct NamedFile {
 //     folder ("snapshots/01.png") creates the folder. A full disk throws common::NoSpaceError.
 //   - From the first file written until finish(), a stop signal ends the process, each file
 //     whole or absent (common::SignalsEndProcess), even while the run's SignalsStopWork lives.
-//   - finish() removes what an earlier run left that this one did not write
-//     (remove_stale_outputs) and names the files written on stderr, one wrote_line().
+//   - finish() removes what an earlier run left that this one did not write, among the names
+//     declared (a regular file or a link, nothing else; snapshots/NN.png, and snapshots/ when
+//     that empties it), and names the files written on stderr, one wrote_line().
 class OutputDir {
  public:
   OutputDir(std::string dir, const std::vector<NamedInput> &inputs, const std::vector<std::string> &own_names = {});
+  OutputDir(std::string dir, const std::vector<NamedInput> &inputs, OwnNamesOnly names);
   OutputDir(const OutputDir &) = delete;
   OutputDir &operator=(const OutputDir &) = delete;
 
