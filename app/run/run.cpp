@@ -268,7 +268,9 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, RunFr
   }
   std::optional<StepPrompt> prompt;
   if (o.step && controls.in != nullptr) observers.add(&prompt.emplace(*controls.in, controls.prompt));
-  robot::RunHooks hooks = observed_hooks(observers.empty() ? nullptr : &observers, frame.simulation());
+  // Without the console's, the frame's observers are told directly.
+  RunObserver *told = animation || printed || prompt ? &observers : frame.observer();
+  robot::RunHooks hooks = observed_hooks(told, frame.simulation());
   hooks.stop_requested = controls.interrupted;
   if (prompt) {
     hooks.on_step = [&prompt, told = std::move(hooks.on_step)](const robot::StepReport &step) {
