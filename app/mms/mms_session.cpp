@@ -132,25 +132,6 @@ robot::EndReason reason_of(const MmsReport &report, robot::Motion motion) {
   return robot::EndReason::done;
 }
 
-LearnedSide to_learned(SideState s) {
-  switch (s) {
-    case SideState::open: return LearnedSide::open;
-    case SideState::wall: return LearnedSide::wall;
-    case SideState::unknown: return LearnedSide::unknown;
-  }
-  return LearnedSide::unknown;
-}
-
-// The grid's belief about each side of the maze.
-std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result,
-                                                                 const render::MapStyle &style) {
-  return [&result, initial = style.initial_log_odds, threshold = style.threshold](maze::Cell c, maze::Side s) {
-    // maze::Side and mapping::Heading list the sides in the same order: N, E, S, W.
-    return to_learned(mapping::side_state(result.grid, initial, Cell{c.x, c.y},
-                                          static_cast<Heading>(static_cast<int>(s)), threshold));
-  };
-}
-
 }  // namespace
 
 void validate(const MmsOptions &options) {
@@ -177,35 +158,6 @@ std::string_view to_string(MmsEnd end) {
 }
 
 namespace {
-
-render::MapStyle map_style(const RunOptions &options, const mapping::SensorModel &model,
-                           const robot::ControllerOptions &controller, int terminal_fd) {
-  render::MapStyle style;
-  style.subcell_columns = subcell_columns(options.output.subcell_columns, terminal_fd, controller.geometry.width_subcells());
-  style.ascii = options.output.ascii;
-  style.unknown = options.output.unknown;
-  style.initial_log_odds = static_cast<float>(model.prior_log_odds());
-  style.color = options.output.color;
-  style.threshold = controller.occupied_threshold;
-  return style;
-}
-
-// The robot's side of the summary: its counts, and its map scored against the truth.
-void summarize(const maze::Maze &truth, const robot::RunResult &result, const render::MapStyle &style,
-               RunSummary &summary) {
-  summary.reason = result.reason;
-  summary.message = result.message;
-  summary.width = truth.width();
-  summary.height = truth.height();
-  summary.steps = result.steps;
-  summary.moves = result.moves;
-  summary.visited = result.visited;
-  summary.reached_goal = std::any_of(result.path.begin(), result.path.end(),
-                                     [&](Cell c) { return truth.is_goal(maze::Cell{c.x, c.y}); });
-  summary.score = score_map(truth, visited_cells(result.visits), learned_sides(result, style));
-  summary.sim_time_s = result.sim_time_s;
-  summary.explore_time_s = result.sim_time_s;
-}
 
 // The conversation on a started robot; the robot's ending, if it had one.
 robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandController &controller, ChildProcess &child,
@@ -257,9 +209,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const maze::Maze truth = with_goals(given);
   const maze::sim::RobotProfile &profile = robot_profile(options);
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
-  require_sensors(options, profile);
-  mapping::validate(controller_opts.geometry, mapping::kDefaultMaxGridBytes);
-  robot::validate(controller_opts);
+  check_fit(options, truth, profile, controller_opts);
   const std::string &out_dir = options.output.out_dir;
   std::optional<FilesRecorder> recorder;  // the files every kind of run writes, and marks.txt
   if (!out_dir.empty()) recorder.emplace(program_inputs(mms), mms_own_names());
@@ -267,7 +217,7 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
                  controls.progress_fd);
   webots::embedded::Simulation &simulation = frame.simulation();
   const mapping::SensorModel model(options.sensor);
-  const render::MapStyle style = map_style(options, model, controller_opts, controls.terminal_fd);
+  const render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   const CellRunStart cell_start{truth, controller_opts, style.initial_log_odds};
   frame.start(RunStart{options, simulation.robot(), &cell_start, nullptr});
   robot::CommandController controller(simulation.robot(), controller_opts);
@@ -283,12 +233,9 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const robot::Motion motion = controller.start(hooks);
   const robot::EndReason reason = talk(mms, mouse, controller, child, controls, motion, report);
   const robot::RunResult result = controller.finish(reason, report.message);
-  summarize(truth, result, style, run.summary);
+  run.summary = robot_summary(options, truth, result, style);
+  run.summary.explore_time_s = result.sim_time_s;
   run.summary.interrupted = report.end == MmsEnd::interrupted;
-  const StepLimit limit = step_limit(options, truth);
-  run.summary.max_steps = limit.steps;
-  run.summary.max_steps_asked = limit.asked;
-  run.summary.time_limited = limit.time_limited;
   name_step_limit(options, run.summary);
   run.summary.wall_time_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
 

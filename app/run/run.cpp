@@ -75,19 +75,6 @@ robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
   if (!profile.lidars.empty()) d.lidar = profile.lidars.front().name;
   return d;
 }
-// The controller's belief about each side of the maze, read from its grid.
-std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result, float initial_log_odds,
-                                                                 std::optional<float> threshold) {
-  return [&result, initial_log_odds, threshold](maze::Cell c, maze::Side s) {
-    return mapping::side_state(result.grid, initial_log_odds, to_mapping(c), s, threshold);
-  };
-}
-
-MapScore score(const maze::Maze &truth, const robot::RunResult &result, float initial_log_odds,
-               std::optional<float> threshold) {
-  return score_map(truth, visited_cells(result.visits), learned_sides(result, initial_log_odds, threshold));
-}
-
 struct RunState {
   bool quit = false;          // q at a --step prompt
   bool interrupted = false;   // Ctrl-C
@@ -214,10 +201,6 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
   return run_maze(options, truth, out, controls);
 }
 
-namespace {
-
-// What valid options must still fit: the robot reads what the model needs, the grid of this
-// maze fits in memory, the plan's cells lie in the maze.
 void check_fit(const RunOptions &options, const maze::Maze &truth, const maze::sim::RobotProfile &profile,
                const robot::ControllerOptions &controller) {
   require_sensors(options, profile);
@@ -242,6 +225,38 @@ render::MapStyle map_style(const OutputOptions &output, const mapping::SensorMod
   style.threshold = controller.occupied_threshold;
   return style;
 }
+
+std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result,
+                                                                 const render::MapStyle &style) {
+  return [&result, initial = style.initial_log_odds, threshold = style.threshold](maze::Cell c, maze::Side s) {
+    return mapping::side_state(result.grid, initial, to_mapping(c), s, threshold);
+  };
+}
+
+RunSummary robot_summary(const RunOptions &options, const maze::Maze &truth, const robot::RunResult &result,
+                         const render::MapStyle &style) {
+  RunSummary summary;
+  summary.reason = result.reason;
+  summary.message = result.message;
+  summary.width = truth.width();
+  summary.height = truth.height();
+  const StepLimit limit = step_limit(options, truth);
+  summary.max_steps = limit.steps;
+  summary.max_steps_asked = limit.asked;
+  summary.time_limited = limit.time_limited;
+  summary.steps = result.steps;
+  summary.moves = result.moves;
+  summary.visited = result.visited;
+  summary.reached_goal = std::any_of(result.path.begin(), result.path.end(), [&](mapping::Cell c) {
+    return truth.is_goal(maze::Cell{c.x, c.y});
+  });
+  summary.score = score_map(truth, visited_cells(result.visits), learned_sides(result, style));
+  summary.sim_time_s = result.sim_time_s;
+  summary.explore_time_s = result.explore_time_s;
+  return summary;
+}
+
+namespace {
 
 // The run itself, watched as the options ask: the frame's observers first (the files, the
 // progress line), then the console's (printed cells or the animation, --step's prompt); and
@@ -286,32 +301,15 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, RunFr
 
 RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const robot::RunResult &result,
                      const RunState &state, const render::MapStyle &style) {
-  RunSummary summary;
-  summary.reason = result.reason;
-  summary.message = result.message;
+  RunSummary summary = robot_summary(options, truth, result, style);
   if (result.reason == robot::EndReason::stopped) {
     summary.interrupted = state.interrupted;
     summary.message = state.interrupted ? "interrupted by " + common::interrupt_name() : "quit with q";
   }
-  summary.width = truth.width();
-  summary.height = truth.height();
-  const StepLimit limit = step_limit(options, truth);
-  summary.max_steps = limit.steps;
-  summary.max_steps_asked = limit.asked;
-  summary.time_limited = limit.time_limited;
-  summary.steps = result.steps;
-  summary.moves = result.moves;
-  summary.visited = result.visited;
-  summary.reached_goal = std::any_of(result.path.begin(), result.path.end(), [&](mapping::Cell c) {
-    return truth.is_goal(maze::Cell{c.x, c.y});
-  });
-  summary.score = score(truth, result, style.initial_log_odds, style.threshold);
   // Where the robot looked: the search's cells (a speed run drives through cells unscanned).
   summary.wrong_sides = wrong_sides_where_looked(truth, visited_cells(result.search_visits.value_or(result.visits)),
-                                                 learned_sides(result, style.initial_log_odds, style.threshold));
+                                                 learned_sides(result, style));
   judge_ending(options, summary);
-  summary.sim_time_s = result.sim_time_s;
-  summary.explore_time_s = result.explore_time_s;
   summary.shortest = result.shortest;
   summary.speed_run = result.speed_run;
   summary.speed_run_asked = options.plan.speed_run;
@@ -373,7 +371,7 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   if (options.plan.to) summary.plan = plan_path(options, result, model, style, planned);
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  const CellRunEnd cell{truth, summary, result, model, learned_sides(result, style.initial_log_odds, style.threshold)};
+  const CellRunEnd cell{truth, summary, result, model, learned_sides(result, style)};
   frame.end(RunEnd{options, &cell, nullptr});
   if (summary.interrupted) {
     out << "(interrupted: the final map is not printed)\n\n";

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -20,6 +21,8 @@
 #include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
+#include "mapping/sensor_model.hpp"
+#include "render/ascii_map.hpp"
 #include "robot/cell/controller.hpp"
 
 namespace app {
@@ -117,6 +120,25 @@ bool has_devices(const maze::sim::RobotProfile &profile, const sensing::SetUp &s
 // Throws common::InputError when the robot lacks what options.model reads (a lidar, bumpers
 // or range sensors), naming the robots that have it.
 void require_sensors(const RunOptions &options, const maze::sim::RobotProfile &profile);
+
+// ---- the parts every driver of the cell controller shares (a maze run, an mms program's) ----
+
+// What valid options must still fit: the robot reads what the model needs, the grid of this
+// maze fits in memory, the plan's cells lie in the maze. Throws common::InputError.
+void check_fit(const RunOptions &options, const maze::Maze &truth, const maze::sim::RobotProfile &profile,
+               const robot::ControllerOptions &controller);
+// How the maps are drawn: --subcell-columns on the terminal's width (a quiet run notes a map
+// wider than the terminal), --ascii, --unknown, colour, l(prior) and --threshold.
+render::MapStyle map_style(const OutputOptions &output, const mapping::SensorModel &model,
+                           const robot::ControllerOptions &controller, int terminal_fd);
+// The controller's belief about each side of the maze, read from the grid of `result` (which
+// must outlive the function).
+std::function<LearnedSide(maze::Cell, maze::Side)> learned_sides(const robot::RunResult &result,
+                                                                 const render::MapStyle &style);
+// The robot's side of the summary: how the run ended, its counts, the step limit in effect,
+// the goal reached or not, its map scored against the truth, its times.
+RunSummary robot_summary(const RunOptions &options, const maze::Maze &truth, const robot::RunResult &result,
+                         const render::MapStyle &style);
 
 // The step limit of a run without --max-steps: 1,000 control steps a cell, at least 100,000.
 std::int64_t max_steps_for(const maze::Maze &maze);
