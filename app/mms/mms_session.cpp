@@ -35,9 +35,6 @@
 namespace app {
 namespace {
 
-using mapping::Cell;
-using mapping::Heading;
-using mapping::SideState;
 using Clock = std::chrono::steady_clock;
 
 // The maze mms runs in: a maze without goals gets its centre cells, mms's goal.
