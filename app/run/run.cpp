@@ -75,6 +75,7 @@ robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
   if (!profile.lidars.empty()) d.lidar = profile.lidars.front().name;
   return d;
 }
+
 struct RunState {
   bool quit = false;          // q at a --step prompt
   bool interrupted = false;   // Ctrl-C

@@ -7,8 +7,8 @@
 //   model          model: pie                                                 "model": "pie"
 //   robot          robot: ir-fan                                              "robot": "ir-fan"
 //   end            end: done (no frontier left)                               "end": "done"
-//   cell_accuracy  cell_accuracy: 89.13% (1337 of 1500 cells; observed ...)   "cell_accuracy": 89.13
-//   coverage       coverage: 98.56% (1229 of 1247 reachable free cells)       "coverage": 98.56
+//   cell_accuracy  cell_accuracy: 89.13% (1337 of 1500 cells; observed ...)   89.13 (report_keys.hpp's key)
+//   coverage       coverage: 98.56% (1229 of 1247 reachable free cells)       98.56 (report_keys.hpp's key)
 //   sim_time_s     sim_time_s: 35.072                                         "sim_time_s": 35.072
 
 #include <string>

@@ -7,7 +7,7 @@
 # not open at the first step or whose last frame is not the run's last step, a status line cut
 # in a 1024 x 768 window, and a blank screenshot. Then the same without a kept map (the path
 # only). Skips (exit 77) without chromium, unless MAZE_MAPPER_REQUIRE_CHROMIUM is set.
-# Usage: arena_replay_chromium.sh PYTHON PNG_SPREAD WORLDS_DIR   (PYTHONPATH on the module)
+# Usage: kept_map_replay_chromium.sh PYTHON PNG_SPREAD WORLDS_DIR   (PYTHONPATH on the module)
 set -eu
 python=$1
 png_spread=$2
