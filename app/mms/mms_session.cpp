@@ -16,6 +16,7 @@
 #include "app/report/files_recorder.hpp"
 #include "app/report/outputs.hpp"
 #include "app/report/truth_picture.hpp"
+#include "app/run/console_observers.hpp"
 #include "app/run/run_frame.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/step_limit.hpp"
@@ -182,21 +183,6 @@ robot::EndReason talk(const MmsOptions &mms, MmsMouse &mouse, robot::CommandCont
   return reason;
 }
 
-// What the robot tells as it goes: the files' recorder, then the terminal's printer; and the
-// stop signal, polled before each control step. Each may be absent.
-robot::RunHooks mms_hooks(RunObserver *recorder, std::optional<robot::ProgressPrinter> &printer,
-                          const RunControls &controls, const webots::embedded::Simulation &simulation) {
-  robot::RunHooks hooks = observed_hooks(recorder, simulation);
-  hooks.stop_requested = controls.interrupted;
-  if (printer) {
-    hooks.on_move = [&printer, told = std::move(hooks.on_move)](const robot::MoveReport &r) {
-      if (told) told(r);
-      (*printer)(r);
-    };
-  }
-  return hooks;
-}
-
 }  // namespace
 
 MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maze &given, std::ostream &out,
@@ -221,9 +207,14 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   MmsRun run;
   MmsReport &report = run.mms;
   report.marks = MmsMarks(truth.width(), truth.height());
-  std::optional<robot::ProgressPrinter> printer;
-  if (!options.output.quiet) printer.emplace(out, style, truth.width() * truth.height());
-  const robot::RunHooks hooks = mms_hooks(frame.observer(), printer, controls, simulation);
+  // What the robot tells as it goes: the frame's observers, then the cells printed; the stop
+  // signal is polled before each control step.
+  RunObservers told;
+  told.add(frame.observer());
+  std::optional<PrintedCells> printed;
+  if (!options.output.quiet) told.add(&printed.emplace(robot::ProgressPrinter(out, style, truth.width() * truth.height())));
+  robot::RunHooks hooks = observed_hooks(told.empty() ? nullptr : &told, simulation);
+  hooks.stop_requested = controls.interrupted;
 
   MmsMouse mouse(truth, mms, controller, controller_opts, report);
   ChildProcess child(mms.command);  // before the robot moves: a command that cannot start prints nothing
