@@ -158,11 +158,19 @@ TEST_CASE("room format: a rectangle with no area at the 12 digits the format kee
 TEST_CASE("room format: a wall on an axis too thin for the 12 digits the format keeps is refused, as its rectangle would be") {
   // 5e-59 m wide: written "rect 1.5 0.5 1.5 1.4", which has no area (found by fuzz_room).
   CHECK_THROWS_WITH_AS(maze::read_room("boundary 0 2 0 2\nwall 1.5 0.5 1.5 1.4 5e-59\n", "w.room"),
-                       "the wall from (1.5, 0.5) to (1.5, 1.4) is 5e-59 m wide: too thin for the 12 significant "
+                       "the wall from (1.5, 0.5) to (1.5, 1.4), 5e-59 m wide, has no area at the 12 significant "
                        "digits the format keeps",
                        common::InputError);
   const maze::Arena thin = maze::read_room("boundary 0 2 0 2\nwall 1.5 0.5 1.5 1.4 1e-6\n", "w.room");
   CHECK(maze::write_room(thin).find("rect 1.4999995 0.5 1.5000005 1.4\n") != std::string::npos);
+}
+
+TEST_CASE("room format: a boundary empty at the 12 digits the format keeps is refused, as written back it would be") {
+  // y 5 to 5.000000000004: written "boundary -5 5 5 5" (found by fuzz_room).
+  CHECK_THROWS_WITH_AS(maze::read_room("boundary -5 5 5 5.000000000004\n", "b.room"),
+                       "the boundary x -5 to 5 m, y 5 to 5.000000000004 m is empty at the 12 significant digits the "
+                       "format keeps",
+                       common::InputError);
 }
 
 TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {

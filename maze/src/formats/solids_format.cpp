@@ -176,6 +176,12 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
                                             "and YS < YE",
                                             v[0], v[1], v[2], v[3]));
     }
+    // Empty at the 12 significant digits the format keeps (a boundary written back is so).
+    if (!has_written_area({v[0], v[2], v[1], v[3]})) {
+      throw p.error(key.column, fmt::format("the boundary x {} to {} m, y {} to {} m is empty at the 12 significant "
+                                            "digits the format keeps",
+                                            v[0], v[1], v[2], v[3]));
+    }
   } else if (key.text == "rect") {
     const std::vector<double> v = p.numbers(tokens, 4, 4, "4 numbers X0 Y0 X1 Y1");
     // No area at the 12 significant digits the format keeps (a rectangle written back is so).
@@ -194,10 +200,11 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
                                             v[3]));
     }
     Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
-    // A wall written as a rectangle (it lies on an axis) must keep an area in the digits the
-    // format writes, as a rectangle read must.
+    // What is written of the wall must read back: a wall whose written ends lie on an axis (or
+    // are one point) is written as a rectangle, which needs an area in the digits the format
+    // writes, as a rectangle read does.
     if (const SolidStatement written = solid_statement(o); written.box && !has_written_area(*written.box)) {
-      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) is {} m wide: too thin for the 12 "
+      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}), {} m wide, has no area at the 12 "
                                             "significant digits the format keeps",
                                             v[0], v[1], v[2], v[3], width));
     }
