@@ -165,12 +165,16 @@ TEST_CASE("room format: a wall on an axis too thin for the 12 digits the format 
   CHECK(maze::write_room(thin).find("rect 1.4999995 0.5 1.5000005 1.4\n") != std::string::npos);
 }
 
-TEST_CASE("room format: a boundary empty at the 12 digits the format keeps is refused, as written back it would be") {
+TEST_CASE("room format: a boundary empty at the 12 digits the format keeps is refused, and a thin one's size is written as it reads back") {
   // y 5 to 5.000000000004: written "boundary -5 5 5 5" (found by fuzz_room).
   CHECK_THROWS_WITH_AS(maze::read_room("boundary -5 5 5 5.000000000004\n", "b.room"),
                        "the boundary x -5 to 5 m, y 5 to 5.000000000004 m is empty at the 12 significant digits the "
                        "format keeps",
                        common::InputError);
+  // 9.14326321e-9 m high: the header's size is the written boundary's, so the text holds.
+  const std::string written = maze::write_room(maze::read_room("boundary -5 5 5 5.00000000914326321\n", "b.room"));
+  CHECK(written.starts_with("# maze_mapper arena: 0 obstacles, boundary 10 x 9.14e-09 m\n"));
+  CHECK(maze::write_room(maze::read_room(written, "b.room")) == written);
 }
 
 TEST_CASE("room format: a name ending in a carriage return before a comment loses it, and writes the same text again") {

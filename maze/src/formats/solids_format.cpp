@@ -250,9 +250,16 @@ Arena read_room(std::string_view text, const std::string &file) {
 }
 
 std::string write_room(const Arena &arena) {
-  std::string text =
-      fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
-                  arena.obstacles.size() == 1 ? "" : "s", metres_text(arena.width_m()), metres_text(arena.height_m()));
+  // The boundary's size as the written boundary reads back (so that the text written again is
+  // the same), in the digits of its ends.
+  const auto size_text = [](double from, double to) {
+    const double from_written = *common::parse_real(metres_text(from));
+    const double to_written = *common::parse_real(metres_text(to));
+    return metres_text_on_scale(to_written - from_written, std::max(std::abs(from_written), std::abs(to_written)));
+  };
+  std::string text = fmt::format("# maze_mapper arena: {} obstacle{}, boundary {} x {} m\n", arena.obstacles.size(),
+                                 arena.obstacles.size() == 1 ? "" : "s", size_text(arena.x_min_m, arena.x_max_m),
+                                 size_text(arena.y_min_m, arena.y_max_m));
   if (!arena.name.empty()) fmt::format_to(std::back_inserter(text), "name {}\n", arena.name);
   fmt::format_to(std::back_inserter(text), "boundary {} {} {} {}\n", metres_text(arena.x_min_m),
                  metres_text(arena.x_max_m), metres_text(arena.y_min_m), metres_text(arena.y_max_m));
