@@ -149,6 +149,30 @@ bool looks_like_room(std::string_view text) {
   return false;
 }
 
+// A wall statement's obstacle; refused (common::InputError) where what is written of it would
+// not read back.
+Obstacle read_wall(const RoomParser &p, const std::vector<LineToken> &tokens) {
+  const LineToken &key = tokens.front();
+  const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
+  const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
+  if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
+  if (v[0] == v[2] && v[1] == v[3]) {
+    throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
+                                          v[3]));
+  }
+  Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
+  // What is written of the wall must read back: a wall whose written ends lie on an axis (or
+  // are one point) is written as a rectangle, which needs an area in the digits the format
+  // writes, as a rectangle read does.
+  if (const SolidStatement written = solid_statement(o); written.box && !has_written_area(*written.box)) {
+    throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}), {} m wide, has no area at the 12 "
+                                          "significant digits the format keeps",
+                                          v[0], v[1], v[2], v[3], width));
+  }
+  o.where = p.at(key.column);
+  return o;
+}
+
 // One statement of a room file (its tokens, its line) into the arena; boundary_line is the
 // line of the boundary read so far (0: none yet).
 void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::string_view line, Arena &arena,
@@ -192,24 +216,7 @@ void read_statement(RoomParser &p, const std::vector<LineToken> &tokens, std::st
     o.where = p.at(key.column);
     arena.obstacles.push_back(o);
   } else if (key.text == "wall") {
-    const std::vector<double> v = p.numbers(tokens, 4, 5, "4 or 5 numbers X1 Y1 X2 Y2 [WIDTH]");
-    const double width = v.size() == 5 ? v[4] : kDefaultWallThickness_m;
-    if (!(width > 0.0)) throw p.error(tokens[5].column, fmt::format("the width must be positive, got {}", width));
-    if (v[0] == v[2] && v[1] == v[3]) {
-      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}) has zero length", v[0], v[1], v[2],
-                                            v[3]));
-    }
-    Obstacle o = Obstacle::from_segment(v[0], v[1], v[2], v[3], width, WallEnds::flush);
-    // What is written of the wall must read back: a wall whose written ends lie on an axis (or
-    // are one point) is written as a rectangle, which needs an area in the digits the format
-    // writes, as a rectangle read does.
-    if (const SolidStatement written = solid_statement(o); written.box && !has_written_area(*written.box)) {
-      throw p.error(key.column, fmt::format("the wall from ({}, {}) to ({}, {}), {} m wide, has no area at the 12 "
-                                            "significant digits the format keeps",
-                                            v[0], v[1], v[2], v[3], width));
-    }
-    o.where = p.at(key.column);
-    arena.obstacles.push_back(o);
+    arena.obstacles.push_back(read_wall(p, tokens));
   } else if (key.text == "start") {
     const std::vector<double> v = p.numbers(tokens, 2, 3, "2 or 3 numbers X Y [YAW_DEG]");
     const double yaw_deg = v.size() == 3 ? v[2] : 90.0;
