@@ -18,6 +18,7 @@
 #include "common/error.hpp"
 #include "app/cli/option_binding.hpp"
 #include "app/run/shipped_worlds.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 
@@ -140,7 +141,7 @@ void add_color_option(CLI::App &command, ColorChoice &color) {
   command
       .add_flag_callback("--no-color",
                          [&color] {
-                           fmt::print(stderr, "{}\n", old_spelling_warning("--no-color", "--color never"));
+                           common::print_stderr("{}\n", old_spelling_warning("--no-color", "--color never"));
                            color = ColorChoice::never;
                          },
                          "the old spelling of --color never")
@@ -210,7 +211,7 @@ void add_world_options(CLI::App &command, maze::WorldOverrides &overrides) {
               if (goals.size() > 1) {
                 std::string repeated;
                 for (const maze::Cell &g : goals) repeated += fmt::format("{}--goal {},{}", repeated.empty() ? "" : " ", g.x, g.y);
-                fmt::print(stderr, "{}\n", old_spelling_warning("--goal " + text, repeated));
+                common::print_stderr("{}\n", old_spelling_warning("--goal " + text, repeated));
               }
               all.insert(all.end(), goals.begin(), goals.end());
             }
@@ -229,7 +230,7 @@ CLI::Option *add_old_spelling(CLI::App &command, const std::string &old_name, co
       .add_option_function<std::string>(
           old_name,
           [old_name, new_name, take](const std::string &value) {
-            fmt::print(stderr, "{}\n", old_spelling_warning(old_name, new_name));
+            common::print_stderr("{}\n", old_spelling_warning(old_name, new_name));
             take(value);
           },
           fmt::format("VALUE: the old spelling of {}", new_name))

@@ -29,6 +29,7 @@
 #include "common/atomic_file.hpp"
 #include "common/interrupt.hpp"
 #include "common/error.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 namespace {
@@ -114,15 +115,15 @@ bool holds_kind(const std::vector<BatchJob> &jobs, RunKind kind) {
 void warn_maze_only_options(const BatchInput &batch, const RunOptions &options, const GivenOptions &given) {
   for (const char *name : {"--speed-run", "--start", "--goal", "--subcells"}) {
     if (given.given(name)) {
-      fmt::print(stderr, "warning: {} applies to the maze runs only: a room run starts from its world's start\n", name);
+      common::print_stderr("warning: {} applies to the maze runs only: a room run starts from its world's start\n", name);
     }
   }
   if (!batch.strategy.empty() && !room_strategy(batch.strategy)) {
-    fmt::print(stderr, "warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n",
+    common::print_stderr("warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n",
                batch.strategy, explore::to_string(batch.room.strategy));
   }
   if (given.given("--model") && options.model.kind == sensing::ModelKind::cell) {
-    fmt::print(stderr, "warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
+    common::print_stderr("warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
   }
 }
 
@@ -131,12 +132,12 @@ void warn_maze_only_options(const BatchInput &batch, const RunOptions &options, 
 void warn_room_only_options(const BatchInput &batch, const RunOptions &options, const GivenOptions &given,
                             const std::vector<BatchJob> &jobs) {
   if (holds_kind(jobs, RunKind::maze) && !batch.strategy.empty() && !maze_strategy(batch.strategy)) {
-    fmt::print(stderr, "warning: --strategy {} applies to the room runs only: the maze runs explore with {}\n",
+    common::print_stderr("warning: --strategy {} applies to the room runs only: the maze runs explore with {}\n",
                batch.strategy, explore::to_string(options.strategy));
   }
   if (holds_kind(jobs, RunKind::room)) return;
   for (const char *name : {"--waypoints", "--laps", "--cells", "--resolution", "--depth-reading", "--depth-origin"}) {
-    if (given.given(name)) fmt::print(stderr, "warning: {} applies to the room runs only: this batch holds none\n", name);
+    if (given.given(name)) common::print_stderr("warning: {} applies to the room runs only: this batch holds none\n", name);
   }
 }
 
@@ -147,7 +148,7 @@ WorldList batch_world_list(const BatchInput &batch, KindChoice choice) {
   if (!batch.csv.empty()) common::refuse_output_over_input("--csv", batch.csv, list.worlds);
   if (!batch.shard.empty()) list.worlds = shard_of(list.worlds, parse_shard(batch.shard));
   if (list.worlds.empty() && !batch.shard.empty()) {
-    fmt::print(stderr, "warning: --shard {}: this part holds no world (more parts than worlds)\n", batch.shard);
+    common::print_stderr("warning: --shard {}: this part holds no world (more parts than worlds)\n", batch.shard);
   } else if (list.worlds.empty()) {
     throw common::InputError(fmt::format("no world to run: the folders hold no {} file ({} other file{} skipped)",
                                          choice == KindChoice::maze ? "maze" : "world", list.skipped.size(),
@@ -189,7 +190,7 @@ int run_world_batch(const CLI::App &command, const RunOptions &options, const Ba
   const double elapsed_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   for (const BatchItem &item : items) {
-    if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
+    if (!item.ran && !item.interrupted) common::print_stderr("{}\n", item.error);
   }
   std::cout << format_batch_table(items, elapsed_ms, list.skipped, list.skipped_as) << std::flush;
   if (!batch.csv.empty()) common::write_file_atomically(batch.csv, format_batch_csv(items));

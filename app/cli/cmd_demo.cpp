@@ -16,6 +16,7 @@
 #include "app/cli/demo_commands.hpp"
 #include "app/cli/model_options.hpp"
 #include "app/course/demo_1d_exercise.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 namespace {
@@ -34,7 +35,7 @@ void list_demos(const CLI::App &demo, std::ostream &out) {
 // (in metres), and is read so for one release, with a warning.
 double demo_1d_spacing_cm(const Length &spacing) {
   if (spacing.unit == LengthUnit::none) {
-    fmt::print(stderr, "{}\n", old_spelling_warning(fmt::format("--resolution {}", spacing.value),
+    common::print_stderr("{}\n", old_spelling_warning(fmt::format("--resolution {}", spacing.value),
                                                     fmt::format("--resolution {}cm", spacing.value)));
   }
   return centimetres(spacing, LengthUnit::cm);

@@ -21,6 +21,7 @@
 #include "app/cli/commands.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "common/standard_streams.hpp"
 #include "maze/world/world.hpp"
 
 namespace app {
@@ -56,7 +57,9 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
 
 void run_in_terminal(const RunOptions &options, CommandContext &context) {
   RunControls controls;
-  controls.in = &std::cin;
+  common::InterruptibleInputBuffer stdin_buffer(STDIN_FILENO);  // --step's wait ends on a stop signal
+  std::istream step_input(&stdin_buffer);
+  controls.in = &step_input;
   if (options.output.step && is_terminal(STDIN_FILENO)) controls.prompt = &std::cerr;
   controls.interrupted = &common::interrupted;
   controls.terminal_fd = STDOUT_FILENO;

@@ -18,7 +18,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
-#include "common/stdout_buffer.hpp"
+#include "common/standard_streams.hpp"
 
 namespace {
 
@@ -29,10 +29,10 @@ constexpr int kExitFailure = 1;
 // errno): exit status 4 when the disk is full (as for a file), 1 otherwise.
 int stdout_failed(int error_number) {
   if (error_number == ENOSPC || error_number == EDQUOT) {
-    fmt::print(stderr, "error: cannot write standard output: {}\n", std::strerror(error_number));
+    common::print_stderr("error: cannot write standard output: {}\n", std::strerror(error_number));
     return common::kExitNoSpace;
   }
-  fmt::print(stderr, "error: could not write to standard output\n");
+  common::print_stderr("error: could not write to standard output\n");
   return kExitFailure;
 }
 
@@ -41,20 +41,21 @@ int stdout_failed(int error_number) {
 // unless the command's own status already says it.
 int status_after_signal(int status) {
   if (!common::interrupted() || status == common::interrupted_exit_status()) return status;
-  fmt::print(stderr, "error: interrupted by {}\n", common::interrupt_name());
+  common::print_stderr("error: interrupted by {}\n", common::interrupt_name());
   return common::interrupted_exit_status();
 }
 
 }  // namespace
 
 int main(int argc, char **argv) {
+  common::secure_standard_streams();  // a closed stream is /dev/null, never a file opened later
   CLI::App cli{"maze_mapper: explore a grid maze with a simulated robot and map it into a "
                "4D log-odds occupancy grid",
                "maze_mapper"};
   app::CommandContext context;
   app::add_commands(cli, context, argc <= 1 ? std::string_view("run") : std::string_view(argv[1]));
   common::install_signal_handlers();
-  const common::CoutThroughStdoutBuffer cout_through;  // a write a full pipe holds still ends on a signal
+  const common::StandardStreamsThroughBuffers streams;  // a write a full pipe holds still ends on a signal
 
   std::vector<std::string> words;  // the command line as parsed, for a usage error
   try {
@@ -69,7 +70,7 @@ int main(int argc, char **argv) {
       const std::vector<std::string> args = app::split_child_command(std::vector<std::string>(argv, argv + argc), context);
       words.assign(args.begin() + 1, args.end());
       if (const std::string one_dash = app::one_dash_long_option(cli, words); !one_dash.empty()) {
-        fmt::print(stderr, "error: {}\n", common::printable(one_dash));
+        common::print_stderr("error: {}\n", common::printable(one_dash));
         return kExitUsage;
       }
       std::vector<const char *> parsed;
@@ -86,29 +87,29 @@ int main(int argc, char **argv) {
   } catch (const CLI::CallForVersion &e) {
     return cli.exit(e);
   } catch (const CLI::ParseError &e) {
-    fmt::print(stderr, "error: {}\n", common::printable(app::describe_usage_error(cli, e, words)));
+    common::print_stderr("error: {}\n", common::printable(app::describe_usage_error(cli, e, words)));
     return kExitUsage;
   } catch (const common::InputError &e) {
     std::cout.flush();
-    fmt::print(stderr, "{}\n", e.diagnostic());
+    common::print_stderr("{}\n", e.diagnostic());
     return kExitUsage;
   } catch (const common::Interrupted &e) {
     std::cout.flush();
-    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    common::print_stderr("error: {}\n", common::printable(e.what()));
     return common::interrupted_exit_status();
   } catch (const common::NoSpaceError &e) {
     std::cout.flush();
-    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    common::print_stderr("error: {}\n", common::printable(e.what()));
     return common::kExitNoSpace;
   } catch (const common::RuntimeFailure &e) {
     std::cout.flush();
-    fmt::print(stderr, "error: {}\n", common::printable(e.what()));
+    common::print_stderr("error: {}\n", common::printable(e.what()));
     return kExitFailure;
   } catch (const std::bad_alloc &) {
-    fmt::print(stderr, "error: out of memory\n");
+    common::print_stderr("error: out of memory\n");
     return kExitFailure;
   } catch (const std::exception &e) {
-    fmt::print(stderr, "error: internal failure: {}\n", common::printable(e.what()));
+    common::print_stderr("error: internal failure: {}\n", common::printable(e.what()));
     return kExitFailure;
   }
 }

@@ -18,6 +18,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 
@@ -72,7 +73,7 @@ void check_mms_command_line(const CLI::App &command) {
     }
   }
   if (given("--time-limit") && !given("--wall-limit")) {
-    fmt::print(stderr, "warning: --time-limit is simulated seconds; the guard against a hung program is --wall-limit "
+    common::print_stderr("warning: --time-limit is simulated seconds; the guard against a hung program is --wall-limit "
                        "(wall-clock seconds, default {:g})\n",
                MmsOptions{}.wall_limit_s);
   }
@@ -100,7 +101,7 @@ int run_mms_batch_command(const CLI::App &command, const RunOptions &options, Mm
   progress_line.reset();  // cleared before the table
   const double elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   for (const MmsBatchItem &item : items) {
-    if (!item.ran && !item.interrupted) fmt::print(stderr, "{}\n", item.error);
+    if (!item.ran && !item.interrupted) common::print_stderr("{}\n", item.error);
   }
   std::cout << format_mms_batch_table(items, elapsed_ms, list.skipped);
   if (!csv.empty()) common::write_file_atomically(csv, format_mms_batch_csv(items));

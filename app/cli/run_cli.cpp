@@ -17,6 +17,7 @@
 #include "common/error.hpp"
 #include "app/cli/model_options.hpp"
 #include "app/cli/option_binding.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 namespace {
@@ -102,7 +103,7 @@ std::vector<std::string> options_not_applying(const CLI::App &command, const Run
 }
 
 void print_warnings(const std::vector<std::string> &warnings) {
-  for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+  for (const std::string &warning : warnings) common::print_stderr("{}\n", warning);
 }
 
 }  // namespace app

@@ -18,6 +18,7 @@
 #include "app/run/shipped_worlds.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/standard_streams.hpp"
 #include "maze/formats/geometry_text.hpp"
 #include "maze/generate/generator.hpp"
 #include "maze/formats/text_map.hpp"
@@ -28,7 +29,7 @@ namespace app {
 
 maze::World load_world_reporting(const std::string &path, const maze::WorldOverrides &overrides) {
   maze::World world = maze::load_world(path, overrides);
-  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  for (const std::string &warning : world.warnings) common::print_stderr("{}\n", warning);
   return world;
 }
 
@@ -88,7 +89,7 @@ void add_show_command(CLI::App &cli, CommandContext &context) {
       const maze::Arena &a = world.arena();
       std::cout << maze::draw_arena(a, args->resolution_m.value_or(maze::default_arena_resolution_m(a)));
     } else {
-      if (args->resolution_m) fmt::print(stderr, "warning: --resolution has no effect: {} is a grid maze\n", args->world);
+      if (args->resolution_m) common::print_stderr("warning: --resolution has no effect: {} is a grid maze\n", args->world);
       std::cout << maze::write_text_map(world.maze());
     }
     context.status = 0;
@@ -130,20 +131,20 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     // The controller's set-up travels in a .wbt only: for another format these do nothing.
     for (const char *option : {"--robot", "--model", "--strategy", "--subcells"}) {
       if (format != maze::Format::wbt && cmd->count(option) > 0) {
-        fmt::print(stderr, "warning: {} has no effect: only a .wbt world carries the robot and its controller\n",
+        common::print_stderr("warning: {} has no effect: only a .wbt world carries the robot and its controller\n",
                    option);
       }
     }
     if (format != maze::Format::xml && args->keep_origin) {
-      fmt::print(stderr, "warning: --keep-origin has no effect: only an .xml world is centred\n");
+      common::print_stderr("warning: --keep-origin has no effect: only an .xml world is centred\n");
     }
     const maze::World world = load_world_reporting(args->world, with_arena_overrides(args->overrides, args->boundary));
     if (!world.on_lattice()) {
       maze::save_arena(world.arena(), args->out);  // .room or .xml; any other format is refused
       if (const auto dropped = maze::dropped_by(world.arena(), format)) {
-        fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+        common::print_stderr("{}: warning: {}\n", args->out, *dropped);
       }
-      if (args->keep_origin) fmt::print(stderr, "warning: --keep-origin has no effect: an arena keeps its coordinates\n");
+      if (args->keep_origin) common::print_stderr("warning: --keep-origin has no effect: an arena keeps its coordinates\n");
       context.status = 0;
       return;
     }
@@ -157,7 +158,7 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
       maze::save_world(maze, args->out);
     }
     // Said once the file is written: a write that fails is its error line alone.
-    if (const auto dropped = maze::dropped_by(maze, format)) fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+    if (const auto dropped = maze::dropped_by(maze, format)) common::print_stderr("{}: warning: {}\n", args->out, *dropped);
     context.status = 0;
   });
 }
@@ -189,7 +190,7 @@ void add_generate_command(CLI::App &cli, CommandContext &context) {
       maze::save_world(m, args->out);
       // As convert says it: a .num holds no goal, and the maze has one.
       if (const auto dropped = maze::dropped_by(m, maze::format_for_output(args->out))) {
-        fmt::print(stderr, "{}: warning: {}\n", args->out, *dropped);
+        common::print_stderr("{}: warning: {}\n", args->out, *dropped);
       }
     }
     context.status = 0;

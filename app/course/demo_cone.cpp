@@ -13,6 +13,7 @@
 #include "app/run/option_values.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/standard_streams.hpp"
 #include "sensing/cone_cells.hpp"
 
 namespace app::course {
@@ -129,7 +130,7 @@ std::string run_demo_cone(const DemoConeInput &input) {
   if (!input.pose.empty()) {
     std::vector<std::string> warnings;
     const PoseArgument given = parse_pose(input.pose, "--pose", warnings);
-    for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+    for (const std::string &warning : warnings) common::print_stderr("{}\n", warning);
     pose = {given.x_m, given.y_m, given.yaw_deg};
   }
   // Far from the origin a cell index loses its precision (1e308 m printed inf and nan rows).

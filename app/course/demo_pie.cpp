@@ -11,6 +11,7 @@
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/run/option_values.hpp"
 #include "common/atomic_file.hpp"
+#include "common/standard_streams.hpp"
 #include "mapping/log_odds.hpp"
 
 namespace app::course {
@@ -115,7 +116,7 @@ sensing::PieSliceOptions pie_options(const DemoPieInput &input) {
   if (!input.pose.empty()) {
     std::vector<std::string> warnings;
     const PoseArgument pose = parse_pose(input.pose, "--pose", warnings);
-    for (const std::string &warning : warnings) fmt::print(stderr, "{}\n", warning);
+    for (const std::string &warning : warnings) common::print_stderr("{}\n", warning);
     o.x_m = pose.x_m, o.y_m = pose.y_m, o.heading_deg = pose.yaw_deg;
   }
   sensing::validate(o);

@@ -18,6 +18,7 @@
 #include "common/csv.hpp"
 #include "common/error.hpp"
 #include "common/parse_number.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app::course {
 namespace {
@@ -325,7 +326,7 @@ void warn_outside_boundary(const sensing::BumpDepthOptions &o, const Log &log) {
     if (!in) ++outside;
   }
   if (outside == 0) return;
-  fmt::print(stderr, "warning: {} of {} poses lie outside --boundary {:g},{:g},{:g},{:g}; what they sense off the grid is not mapped\n",
+  common::print_stderr("warning: {} of {} poses lie outside --boundary {:g},{:g},{:g},{:g}; what they sense off the grid is not mapped\n",
              outside, log.steps.size(), o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m);
 }
 

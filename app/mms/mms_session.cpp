@@ -25,6 +25,7 @@
 #include "common/deadline.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "common/standard_streams.hpp"
 #include "mapping/walls.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
@@ -84,11 +85,11 @@ void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child,
       report.message = fmt::format("line {}: longer than {} bytes (--max-line)", report.lines, options.max_line_bytes);
       return;
     }
-    if (options.transcript) fmt::print(stderr, "mms {}> {}\n", report.lines, line);
+    if (options.transcript) common::print_stderr("mms {}> {}\n", report.lines, line);
     const ParsedLine parsed = parse_mms_line(line);
     if (!parsed.command) {
       if (options.ignore_invalid) {
-        fmt::print(stderr, "warning: line {} {}: {}; ignored (--ignore-invalid)\n", report.lines, quoted_line(line),
+        common::print_stderr("warning: line {} {}: {}; ignored (--ignore-invalid)\n", report.lines, quoted_line(line),
                    parsed.error);
         continue;
       }
@@ -104,7 +105,7 @@ void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child,
       return;
     }
     if (outcome.answer) {
-      if (options.transcript) fmt::print(stderr, "mms {}< {}\n", report.lines, *outcome.answer);
+      if (options.transcript) common::print_stderr("mms {}< {}\n", report.lines, *outcome.answer);
       child.write(*outcome.answer + "\n");
     }
     if (session.until_reached()) {
@@ -230,14 +231,15 @@ MmsRun run_mms(const RunOptions &options, const MmsOptions &mms, const maze::Maz
   const Report mms_summary = mms_report(options, mms, run);
   if (recorder) recorder->add_own_files(mms_summary, mms_own_files(run));
   const CellRunEnd cell{truth, run.summary, result, model, learned_sides(result, style)};
-  frame.end(RunEnd{options, &cell, nullptr});
-  if (report.end == MmsEnd::interrupted) {
-    out << "(interrupted: the final map is not printed)\n\n";
-  } else {
-    out << render::render_map(result.grid, result.visits, style) << '\n';
-    out << "the algorithm's marks (setWall, setColor, setText):\n" << render_marks(report.marks, style.color) << '\n';
-  }
-  out << format_summary(mms_summary);
+  frame.end(RunEnd{options, &cell, nullptr}, out, [&] {
+    if (report.end == MmsEnd::interrupted) {
+      out << "(interrupted: the final map is not printed)\n\n";
+    } else {
+      out << render::render_map(result.grid, result.visits, style) << '\n';
+      out << "the algorithm's marks (setWall, setColor, setText):\n" << render_marks(report.marks, style.color) << '\n';
+    }
+    out << format_summary(mms_summary);
+  });
   frame.close(out);
   return run;
 }
@@ -249,7 +251,7 @@ MmsRun run_mms_world(const RunOptions &options, const MmsOptions &mms, std::ostr
   if (!overrides.start) overrides.start = maze::Cell{0, 0};
   if (!overrides.goals) overrides.centre_goals = true;
   const maze::World world = maze::load_world(options.world, overrides);
-  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  for (const std::string &warning : world.warnings) common::print_stderr("{}\n", warning);
   return run_mms(options, mms, world.maze(), out, controls);
 }
 

@@ -100,6 +100,9 @@ std::vector<NamedFile> MetresRecord::pictures_now(const robot::MetricController 
 }
 
 void MetresRecord::write(OutputDir &out, const MetresRunEnd &end) {
+  // What matters most first: after a stop signal the files have a bounded time (output_dir.hpp).
+  out.write("summary.json", report_json(end.report).dump(2) + "\n");
+  out.write("trace.csv", trace_);
   const robot::MetricController &c = end.controller;
   const std::vector<NamedFile> last = pictures_now(c, "map", "wave");  // map.png, wave.png
   const MetricTruthScores scores{end.report.text(report_key::cell_accuracy), end.report.text(report_key::coverage)};
@@ -119,8 +122,6 @@ void MetresRecord::write(OutputDir &out, const MetresRunEnd &end) {
   out.write("map.yaml", map_yaml(c.map().geometry(), "map.pgm"));
   out.write(last.front().name, last.front().bytes);
   out.write("truth.png", metric_truth_picture(c, end.truth, threshold_, marks_, scores));
-  out.write("summary.json", report_json(end.report).dump(2) + "\n");
-  out.write("trace.csv", trace_);
   for (const NamedFile &snapshot : snapshots_) out.write(snapshot.name, snapshot.bytes);
   if (const std::optional<Replay> replay = replay_html(page)) out.write("replay.html", replay->html);
   out.write("logodds.csv", logodds_csv(c.map()));

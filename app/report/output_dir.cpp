@@ -18,6 +18,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 namespace {
@@ -58,6 +59,15 @@ constexpr std::array<const char *, 15> kOutputNames{
     "map.pgm",   "map.yaml",  "map.png",   "map.svg",   "map.pdf",     "truth.png", "truth.svg", "truth.pdf",
     "summary.json", "trace.csv", "replay.html", "plan.png", "plan.svg", "plan.pdf", "plan.csv"};
 
+// Where `name` comes in the wrote line: a core name at its place in kOutputNames, the
+// snapshots right after trace.csv, a kind's own names after every core name.
+double line_rank(const std::string &name) {
+  const auto rank_of = [](std::string_view core) {
+    return static_cast<double>(std::find(kOutputNames.begin(), kOutputNames.end(), core) - kOutputNames.begin());
+  };
+  return name.starts_with("snapshots/") ? rank_of("trace.csv") + 0.5 : rank_of(name);
+}
+
 // "NN.png" (or .svg, .pdf), two digits or more: a snapshot's name.
 bool is_snapshot_name(const std::string &name) {
   if (name.size() < 6 || !(name.ends_with(".png") || name.ends_with(".svg") || name.ends_with(".pdf"))) return false;
@@ -71,6 +81,36 @@ fs::path output_path_for(const fs::path &dir, const std::string &name, const std
   std::error_code ec;
   const fs::path real = fs::canonical(input, ec);
   return ec ? fs::path() : dir / name / real.filename();
+}
+
+// Why DIR's entry `name` (an output's name) cannot take the output, empty when it can: a
+// regular file (replaced), a FIFO or a character device (written as the output comes), or
+// nothing there. A symbolic link is the user's (neither written through nor removed), as
+// are a directory, a socket or a block device; a folder's name ("snapshots/") must be a
+// real directory, and a link among its snapshot files is the user's too.
+std::string why_not_an_output(const fs::path &dir, const std::string &name) {
+  std::error_code ec;
+  const fs::path entry = dir / (name.ends_with('/') ? name.substr(0, name.size() - 1) : name);
+  const fs::file_status status = fs::symlink_status(entry, ec);
+  if (ec || !fs::exists(status)) return {};
+  const std::string shown = entry.filename().string();
+  if (fs::is_symlink(status)) {
+    return fmt::format("{} is a symbolic link (to {}), which a run neither writes through nor removes: remove it or "
+                       "choose another directory", shown, fs::read_symlink(entry, ec).string());
+  }
+  if (name.ends_with('/')) {
+    if (!fs::is_directory(status)) return fmt::format("{} is not a directory, where the run's {} goes", shown, name);
+    for (const fs::directory_entry &file : fs::directory_iterator(entry, ec)) {
+      if (!is_snapshot_name(file.path().filename().string())) continue;
+      if (const std::string why = why_not_an_output(dir, name + file.path().filename().string()); !why.empty()) {
+        return name + why;
+      }
+    }
+    return {};
+  }
+  if (fs::is_regular_file(status) || fs::is_fifo(status) || fs::is_character_file(status)) return {};
+  return fmt::format("{} is {}, not a file a run can replace", shown,
+                     fs::is_directory(status) ? "a directory" : "neither a regular file nor a FIFO");
 }
 
 // Whether writing `output` would replace `input`: one file, not a character device.
@@ -186,6 +226,9 @@ OutputDir::OutputDir(std::string dir, const std::vector<NamedInput> &inputs, Own
     : dir_(std::move(dir)), names_(std::move(names.names)) {
   prepare_output_dir(dir_);
   refuse_outputs_over_inputs(dir_, names_, inputs);
+  for (const std::string &name : names_) {
+    if (const std::string why = why_not_an_output(fs::path(dir_), name); !why.empty()) refuse_out_dir(dir_, why);
+  }
 }
 
 void OutputDir::begin(const std::string &name) {
@@ -194,7 +237,10 @@ void OutputDir::begin(const std::string &name) {
   if (std::find(names_.begin(), names_.end(), folder) == names_.end()) {
     throw std::logic_error(fmt::format("--out {}: {} is not among the names checked against the inputs", dir_, name));
   }
-  if (!writing_) writing_.emplace();
+  if (!writing_) {
+    writing_.emplace();
+    if (common::interrupted()) deadline_.emplace();
+  }
   if (!relative.has_parent_path()) return;
   std::error_code ec;
   fs::create_directory(fs::path(dir_) / relative.parent_path(), ec);
@@ -204,22 +250,31 @@ void OutputDir::begin(const std::string &name) {
 void OutputDir::write(const std::string &name, std::string_view bytes) {
   begin(name);
   common::write_file_atomically((fs::path(dir_) / name).string(), bytes);
+  written(name);
+}
+
+void OutputDir::written(const std::string &name) {
   written_.push_back(name);
+  if (deadline_) deadline_->written(name);
 }
 
 void OutputDir::commit(const std::string &name, common::OutputFile &file) {
   begin(name);
   file.commit();
-  written_.push_back(name);
+  written(name);
 }
 
 void OutputDir::finish() {
   remove_stale_files(fs::path(dir_), names_, written_);
+  std::stable_sort(written_.begin(), written_.end(), [](const std::string &a, const std::string &b) {
+    return line_rank(a) < line_rank(b);
+  });
   const auto is_snapshot = [](const std::string &name) { return name.starts_with("snapshots/"); };
   const auto first = std::find_if(written_.begin(), written_.end(), is_snapshot);
   const auto end = std::find_if_not(first, written_.end(), is_snapshot);
-  fmt::print(stderr, "{}\n", wrote_line(dir_, written_, static_cast<std::size_t>(first - written_.begin()),
+  common::print_stderr("{}\n", wrote_line(dir_, written_, static_cast<std::size_t>(first - written_.begin()),
                                         static_cast<std::size_t>(end - first)));
+  deadline_.reset();
   writing_.reset();
 }
 

@@ -10,6 +10,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/interrupt.hpp"
+#include "common/output_deadline.hpp"
 
 namespace app {
 
@@ -69,9 +70,14 @@ struct OwnNamesOnly {
 //     folder ("snapshots/01.png") creates the folder. A full disk throws common::NoSpaceError.
 //   - From the first file written until finish(), a stop signal ends the process, each file
 //     whole or absent (common::SignalsEndProcess), even while the run's SignalsStopWork lives.
+//     When a stop signal ended the run, its files get common::kStoppedOutputBudget_ms from
+//     the first one on (common/output_deadline.hpp): a writer writes summary.json and
+//     trace.csv first.
 //   - finish() removes what an earlier run left that this one did not write, among the names
 //     declared (a regular file or a link, nothing else; snapshots/NN.png, and snapshots/ when
-//     that empties it), and names the files written on stderr, one wrote_line().
+//     that empties it), and names the files written on stderr, one wrote_line() (in the
+//     order a reader looks for them: the core names as run_output_names() has them, the
+//     snapshots after trace.csv, then the kind's own names as written).
 class OutputDir {
  public:
   OutputDir(std::string dir, const std::vector<NamedInput> &inputs, const std::vector<std::string> &own_names = {});
@@ -88,13 +94,15 @@ class OutputDir {
 
  private:
   // Checks that `name` was declared, creates its folder, and from the first file on lets a
-  // stop signal end the process.
+  // stop signal end the process (and, after one, starts the budget).
   void begin(const std::string &name);
+  void written(const std::string &name);
 
   std::string dir_;
   std::vector<std::string> names_;  // what it may write; "snapshots/" every file of that folder
   std::vector<std::string> written_;
   std::optional<common::SignalsEndProcess> writing_;
+  std::optional<common::StoppedOutputDeadline> deadline_;  // a run a stop signal ended
 };
 
 }  // namespace app

@@ -20,6 +20,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/fixed_decimal.hpp"
+#include "common/standard_streams.hpp"
 #include "mapping/walls.hpp"
 #include "sensing/setups.hpp"
 
@@ -217,7 +218,7 @@ void write_replay(OutputDir &out, const RunOptions &options, const RunSummary &s
   if (!options.output.replay || files.history == nullptr || !replay_fits(files.grid->geometry())) return;
   const std::optional<Replay> replay = replay_file(options, summary, files);
   if (!replay) {
-    fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
+    common::print_stderr("warning: replay.html not written: even the final map alone is over {} MiB\n",
                kReplayMaxBytes >> 20);
     return;
   }
@@ -250,7 +251,7 @@ std::vector<NamedInput> run_inputs(const RunOptions &options) {
 
 bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geometry) {
   if (options.output.replay && !replay_fits(geometry)) {
-    fmt::print(stderr, "warning: replay.html not written: the grid has {} sub-cells, a replay at most {} (--no-replay "
+    common::print_stderr("warning: replay.html not written: the grid has {} sub-cells, a replay at most {} (--no-replay "
                "leaves it out without this warning)\n", subcells_of(geometry), kReplayMaxSubcells);
   }
   return options.output.snapshots > 0 || (options.output.replay && replay_fits(geometry));
@@ -271,6 +272,9 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
 }
 
 void write_outputs(OutputDir &out, const RunOptions &options, const RunSummary &summary, const RunFiles &files) {
+  // What matters most first: after a stop signal the files have a bounded time (output_dir.hpp).
+  out.write("summary.json", summary_json(options, summary, files.report ? *files.report : run_report(options, summary)));
+  if (files.trace != nullptr) out.commit("trace.csv", *files.trace);
   const auto initial = static_cast<float>(files.model->prior_log_odds());
   out.write("map.pgm", pgm_file(*files.grid, initial));
   out.write("map.yaml", map_yaml(files.grid->geometry(), "map.pgm"));
@@ -282,8 +286,6 @@ void write_outputs(OutputDir &out, const RunOptions &options, const RunSummary &
                        format, page));
     out.write(fmt::format("truth.{}", to_string(format)), truth_png_file(options, files, format, page));
   }
-  out.write("summary.json", summary_json(options, summary, files.report ? *files.report : run_report(options, summary)));
-  if (files.trace != nullptr) out.commit("trace.csv", *files.trace);
   if (options.output.snapshots > 0 && files.history != nullptr) write_snapshots(out, options, summary, files, page);
   write_replay(out, options, summary, files);
   if (summary.plan && summary.plan->found) write_plan(out, options, *summary.plan, files, page);

@@ -9,20 +9,17 @@
 #include <fmt/format.h>
 
 #include "app/run/terminal.hpp"
+#include "common/stdout_buffer.hpp"
 
 namespace app {
 namespace {
 
 constexpr const char *kClearLine = "\r\x1b[K";
 
-// Writes all of text to fd; a terminal that refuses is left alone (progress is a courtesy).
+// Writes all of text to fd; a terminal that refuses is left alone (progress is a courtesy),
+// and one that holds the write (Ctrl-S) still lets a stop signal end the wait.
 void write_progress(int fd, const std::string &text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n <= 0) return;
-    done += static_cast<std::size_t>(n);
-  }
+  (void)common::write_all_interruptible(fd, text.data(), text.size(), true);
 }
 
 // The line cut to one column less than the terminal's width, so that it never wraps (a

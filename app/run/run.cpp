@@ -16,6 +16,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "common/standard_streams.hpp"
 #include "maze/world/maze.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/simulation.hpp"
@@ -198,7 +199,7 @@ RunSummary run_world(const RunOptions &options, std::ostream &out) {
 RunSummary run_world(const RunOptions &options, std::ostream &out, const RunControls &controls) {
   const maze::World world = maze::load_world(options.world, options.world_overrides);
   const maze::Maze &truth = world.maze();  // an arena is refused here, before its warnings
-  for (const std::string &warning : world.warnings) fmt::print(stderr, "{}\n", warning);
+  for (const std::string &warning : world.warnings) common::print_stderr("{}\n", warning);
   return run_maze(options, truth, out, controls);
 }
 
@@ -373,14 +374,15 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   summary.wall_time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   const CellRunEnd cell{truth, summary, result, model, learned_sides(result, style)};
-  frame.end(RunEnd{options, &cell, nullptr});
-  if (summary.interrupted) {
-    out << "(interrupted: the final map is not printed)\n\n";
-  } else {
-    if (!options.plan.only) out << render::render_map(result.grid, result.visits, style) << '\n';
-    out << planned.str();
-  }
-  out << format_summary(options, summary);
+  frame.end(RunEnd{options, &cell, nullptr}, out, [&] {
+    if (summary.interrupted) {
+      out << "(interrupted: the final map is not printed)\n\n";
+    } else {
+      if (!options.plan.only) out << render::render_map(result.grid, result.visits, style) << '\n';
+      out << planned.str();
+    }
+    out << format_summary(options, summary);
+  });
   frame.close(out, controls.no_space);
   return summary;
 }

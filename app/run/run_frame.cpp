@@ -1,6 +1,7 @@
 #include "app/run/run_frame.hpp"
 
 #include "common/atomic_file.hpp"
+#include "common/interrupt.hpp"
 
 namespace app {
 
@@ -11,12 +12,19 @@ RunFrame::RunFrame(const maze::World &world, const maze::sim::RobotProfile &prof
   if (progress_fd >= 0) observers_.add(&progress_.emplace(progress_fd));
 }
 
-void RunFrame::end(const RunEnd &end) {
+void RunFrame::end(const RunEnd &end, std::ostream &out, const std::function<void()> &print_end) {
+  const bool stopped_by_signal = common::interrupted();
+  if (stopped_by_signal) {
+    if (progress_) progress_->on_end(end);
+    print_end();
+    out << std::flush;
+  }
   try {
     observers_.on_end(end);
   } catch (const common::NoSpaceError &) {
     no_space_ = std::current_exception();
   }
+  if (!stopped_by_signal) print_end();
 }
 
 void RunFrame::close(std::ostream &out, std::exception_ptr *keep) {

@@ -9,6 +9,7 @@
 // (python/src/simulator_bindings.cpp), whose steps it tells the frame.
 
 #include <exception>
+#include <functional>
 #include <optional>
 #include <ostream>
 
@@ -36,8 +37,12 @@ class RunFrame {
   void add(RunObserver *observer) { observers_.add(observer); }
   void start(const RunStart &start) { observers_.on_start(start); }
   void step(const RunStep &step) { observers_.on_step(step); }
-  // Tells the end; a full disk (common::NoSpaceError) is kept for close().
-  void end(const RunEnd &end);
+  // Tells the end and prints the run's end on `out` (`print_end`): the files first (a
+  // long map prints after them), but for a run a stop signal ended the printed end first
+  // (flushed, once the progress line is cleared): its files then have a bounded time
+  // (app/report/output_dir.hpp), which the summary must not wait on. A full disk
+  // (common::NoSpaceError) met by the files is kept for close().
+  void end(const RunEnd &end, std::ostream &out, const std::function<void()> &print_end);
   // Once the summary is on `out`: a full disk kept by end() is handed to `keep` when it is not
   // null, else thrown (after `out` is flushed).
   void close(std::ostream &out, std::exception_ptr *keep = nullptr);

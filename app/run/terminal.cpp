@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "common/standard_streams.hpp"
 
 namespace app {
 
@@ -56,7 +57,7 @@ void note_if_too_wide(int fd, int map_subcells_wide, int columns) {
   const int width = map_subcells_wide * columns;
   const int terminal = terminal_size(fd).columns;
   if (width <= terminal) return;
-  fmt::print(stderr,
+  common::print_stderr(
              "note: the map is {} columns wide and this terminal {}: its lines wrap; see it whole in a file "
              "(run ... > run.txt), follow the robot with --animate, or open --out's map.png and replay.html\n",
              width, terminal);
@@ -71,7 +72,7 @@ std::optional<robot::ProgressPrinter::View> view_for_terminal(int fd, int k, int
                                           std::max(3, screen.columns / std::max(1, subcell_columns)),
                                           std::chrono::milliseconds(50)};
   if (view.rows >= map_rows && view.cols >= map_cols) return std::nullopt;
-  fmt::print(stderr,
+  common::print_stderr(
              "note: the map is {}x{} sub-cells, the terminal shows {}x{}: up to 20 moves a second print the part around "
              "the robot; the final map is printed whole\n",
              map_cols, map_rows, view.cols, view.rows);

@@ -15,49 +15,7 @@ trap 'rm -rf "$scratch"' EXIT
 failures=0
 count=0
 
-fail() {
-  failures=$((failures + 1))
-  printf 'FAIL: %s: %s\n' "$case_name" "$1"
-}
-begin() {
-  [ -z "${case_name:-}" ] || printf '%4ss  %s\n' "$(($(date +%s) - case_started))" "$case_name"
-  case_started=$(date +%s)
-  case_name=$1
-  count=$((count + 1))
-  dir="$scratch/$count"
-  mkdir -p "$dir"
-}
-# No temporary left anywhere under the case's directory.
-no_temporaries() {
-  left=$(find "$dir" -name '.*.tmp.*' 2>/dev/null)
-  [ -z "$left" ] || fail "temporaries left: $left"
-}
-# Waits (at most ~20 s) until `test "$@"` holds.
-wait_for() {
-  tries=0
-  until test "$@"; do
-    tries=$((tries + 1))
-    [ "$tries" -lt 400 ] || return 1
-    sleep 0.05
-  done
-}
-# Waits until file $1 contains the text $2 (at most ~20 s).
-wait_for_text() {
-  tries=0
-  until grep -q "$2" "$1" 2>/dev/null; do
-    tries=$((tries + 1))
-    [ "$tries" -lt 400 ] || return 1
-    sleep 0.05
-  done
-}
-# A file ends with a newline (a CSV or JSON written whole).
-ends_whole() {
-  [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
-}
-# A PNG ends with its IEND chunk.
-png_whole() {
-  [ "$(tail -c 8 "$1" | od -An -c | tr -d ' \n')" = 'IEND256B`202' ]
-}
+. "$source_dir/tests/faults/fault_lib.sh"
 
 lab=worlds/lab4x4.txt
 "$program" generate 24x24 --seed 3 -o "$scratch/maze24.txt" || exit 1
@@ -285,7 +243,13 @@ signal_in_run_loop() {
   rows=$(($(wc -l <"$dir/out/trace.csv") - 1))
   [ "$rows" = "$steps" ] || fail "trace.csv has $rows rows for $steps steps"
   ends_whole "$dir/out/trace.csv" || fail "trace.csv cut"
-  png_whole "$dir/out/map.png" || fail "map.png cut"
+  # The files after summary.json and trace.csv get 2 s: on a loaded machine map.png may be
+  # left out, and the one line then says what was written.
+  if [ -e "$dir/out/map.png" ]; then
+    png_whole "$dir/out/map.png" || fail "map.png cut"
+  else
+    grep -q "left out (written: summary.json, trace.csv" "$dir/err" || fail "map.png missing, unsaid: $(cat "$dir/err")"
+  fi
   no_temporaries
 }
 signal_in_run_loop INT 130
@@ -346,20 +310,6 @@ wait "$pid" || status=$?
 grep -q "lab4x4" "$dir/rows.csv" || fail "the finished row is not in rows.csv"
 no_temporaries
 
-# Waits (at most ~20 s) until process $1 holds file $2 open.
-wait_opened() {
-  tries=0
-  until ls -l "/proc/$1/fd" 2>/dev/null | grep -qF -- "-> $2"; do
-    tries=$((tries + 1))
-    [ "$tries" -lt 400 ] || return 1
-    sleep 0.05
-  done
-}
-# Ends process $1 with SIGKILL unless it ends within $2 seconds; prints the watchdog's pid.
-watchdog() {
-  (sleep "$2"; kill -KILL "$1" 2>/dev/null) >/dev/null 2>&1 &
-  echo $!
-}
 
 begin "SIGTERM while a FIFO world waits for its writer: run, batch, compare, mms exit 143"
 mkfifo "$dir/world.txt"
@@ -400,22 +350,6 @@ grep -q "^end: " "$dir/got" || fail "the summary was lost"
 png_whole "$dir/out/map.png" || fail "map.png cut"
 no_temporaries
 
-# Waits (at most ~20 s) until process $1 has used the CPU and then none for a second: it
-# waits on something (here: a full pipe).
-wait_idle() {
-  tries=0
-  last=-1
-  still=0
-  while [ "$tries" -lt 400 ]; do
-    ticks=$(awk '{ print $14 + $15 }' "/proc/$1/stat" 2>/dev/null) || return 1
-    if [ "$ticks" = "$last" ] && [ "$ticks" -gt 0 ]; then still=$((still + 1)); else still=0; fi
-    [ "$still" -lt 20 ] || return 0
-    last=$ticks
-    tries=$((tries + 1))
-    sleep 0.05
-  done
-  return 1
-}
 
 # `COMMAND | (sleep 100)`: standard output a pipe its reader has filled and never reads, so
 # every write waits. SIGTERM once the command waits there ends it (else the watchdog's

@@ -321,12 +321,12 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
   summary.wall_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   const Report report = metric_run_report(options, profile.name, setup, spec, summary);
-  // The files and the progress line's end before anything is printed.
   const MetresRunEnd ended{controller_loop, truth, report};
-  frame.end(RunEnd{options, nullptr, &ended});
-  if (!options.output.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
-  if (!options.output.quiet) out << '\n';
-  out << format_summary(report);
+  frame.end(RunEnd{options, nullptr, &ended}, out, [&] {
+    if (!options.output.quiet) print_end(out, log, controller_loop, simulation.basic_time_step_ms(), threshold, summary);
+    if (!options.output.quiet) out << '\n';
+    out << format_summary(report);
+  });
   frame.close(out);
   if (report_out != nullptr) *report_out = report;
   return summary;

@@ -13,6 +13,7 @@
 //
 // Everything the handler does is async-signal-safe: atomics, unlink(2), write(2), _exit(2).
 
+#include <poll.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -55,7 +56,12 @@ inline const char *signal_word(int signal_number) {
   }
 }
 
+// Writes `text` (shorter than PIPE_BUF: a pipe takes it whole) to standard error when it can
+// take it now; a pipe its reader has filled, or a stopped terminal, is not waited on: the
+// message is dropped, so that the process still ends.
 inline void write_stderr(const char *text) {
+  pollfd p{STDERR_FILENO, POLLOUT, 0};
+  if (::poll(&p, 1, 0) != 1 || (p.revents & POLLOUT) == 0) return;
   const ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
   (void)ignored;
 }
@@ -63,11 +69,17 @@ inline void write_stderr(const char *text) {
 // Removes every registered temporary, says why on standard error and exits with 128 + the
 // signal: the handler's default, and what a wait that cannot end on its own does once a stop
 // signal is recorded (common/stdout_buffer.hpp). Async-signal-safe.
-[[noreturn]] inline void end_process_for(int signal_number) {
+// Removes every registered temporary; true when one was removed. Async-signal-safe.
+inline bool remove_temporaries() {
   bool removed = false;
   for (TemporarySlot &slot : g_temporaries) {
     if (slot.state.load() == 2 && ::unlink(slot.path.data()) == 0) removed = true;
   }
+  return removed;
+}
+
+[[noreturn]] inline void end_process_for(int signal_number) {
+  const bool removed = remove_temporaries();
   write_stderr("\nerror: interrupted by ");
   write_stderr(signal_word(signal_number));
   write_stderr(removed ? "; unfinished output files removed\n" : "\n");

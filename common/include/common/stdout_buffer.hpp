@@ -24,7 +24,6 @@
 #include <climits>
 #include <cstddef>
 #include <cstring>
-#include <iostream>
 #include <streambuf>
 #include <vector>
 
@@ -126,23 +125,6 @@ class StdoutBuffer final : public std::streambuf {
   bool may_block_;
   bool line_buffered_;
   std::vector<char> buffer_;
-};
-
-// While alive, std::cout writes through a StdoutBuffer over standard output; at the end it
-// is flushed and given back its own buffer. One, in main.
-class CoutThroughStdoutBuffer {
- public:
-  CoutThroughStdoutBuffer() : buffer_(STDOUT_FILENO), previous_(std::cout.rdbuf(&buffer_)) {}
-  ~CoutThroughStdoutBuffer() {
-    std::cout.flush();
-    std::cout.rdbuf(previous_);
-  }
-  CoutThroughStdoutBuffer(const CoutThroughStdoutBuffer &) = delete;
-  CoutThroughStdoutBuffer &operator=(const CoutThroughStdoutBuffer &) = delete;
-
- private:
-  StdoutBuffer buffer_;
-  std::streambuf *previous_;
 };
 
 }  // namespace common
