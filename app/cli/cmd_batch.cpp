@@ -120,7 +120,7 @@ void warn_maze_only_options(const BatchInput &batch, const RunOptions &options, 
   }
   if (!batch.strategy.empty() && !room_strategy(batch.strategy)) {
     common::print_stderr("warning: --strategy {} applies to the maze runs only: the room runs explore with {}\n",
-               batch.strategy, explore::to_string(batch.room.strategy));
+                         batch.strategy, explore::to_string(batch.room.strategy));
   }
   if (given.given("--model") && options.model.kind == sensing::ModelKind::cell) {
     common::print_stderr("warning: --model cell reads a maze's cell sides: the room runs mark with --model ray\n");
@@ -133,7 +133,7 @@ void warn_room_only_options(const BatchInput &batch, const RunOptions &options, 
                             const std::vector<BatchJob> &jobs) {
   if (holds_kind(jobs, RunKind::maze) && !batch.strategy.empty() && !maze_strategy(batch.strategy)) {
     common::print_stderr("warning: --strategy {} applies to the room runs only: the maze runs explore with {}\n",
-               batch.strategy, explore::to_string(options.strategy));
+                         batch.strategy, explore::to_string(options.strategy));
   }
   if (holds_kind(jobs, RunKind::room)) return;
   for (const char *name : {"--waypoints", "--laps", "--cells", "--resolution", "--depth-reading", "--depth-origin"}) {

@@ -75,7 +75,7 @@ void check_mms_command_line(const CLI::App &command) {
   if (given("--time-limit") && !given("--wall-limit")) {
     common::print_stderr("warning: --time-limit is simulated seconds; the guard against a hung program is --wall-limit "
                        "(wall-clock seconds, default {:g})\n",
-               MmsOptions{}.wall_limit_s);
+                         MmsOptions{}.wall_limit_s);
   }
 }
 

@@ -132,7 +132,7 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
     for (const char *option : {"--robot", "--model", "--strategy", "--subcells"}) {
       if (format != maze::Format::wbt && cmd->count(option) > 0) {
         common::print_stderr("warning: {} has no effect: only a .wbt world carries the robot and its controller\n",
-                   option);
+                             option);
       }
     }
     if (format != maze::Format::xml && args->keep_origin) {

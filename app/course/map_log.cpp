@@ -327,7 +327,7 @@ void warn_outside_boundary(const sensing::BumpDepthOptions &o, const Log &log) {
   }
   if (outside == 0) return;
   common::print_stderr("warning: {} of {} poses lie outside --boundary {:g},{:g},{:g},{:g}; what they sense off the grid is not mapped\n",
-             outside, log.steps.size(), o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m);
+                       outside, log.steps.size(), o.x_start_m, o.x_end_m, o.y_start_m, o.y_end_m);
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ void converse(const MmsOptions &options, MmsMouse &session, ChildProcess &child,
     if (!parsed.command) {
       if (options.ignore_invalid) {
         common::print_stderr("warning: line {} {}: {}; ignored (--ignore-invalid)\n", report.lines, quoted_line(line),
-                   parsed.error);
+                             parsed.error);
         continue;
       }
       report.end = MmsEnd::protocol_error;

@@ -219,7 +219,7 @@ void write_replay(OutputDir &out, const RunOptions &options, const RunSummary &s
   const std::optional<Replay> replay = replay_file(options, summary, files);
   if (!replay) {
     common::print_stderr("warning: replay.html not written: even the final map alone is over {} MiB\n",
-               kReplayMaxBytes >> 20);
+                         kReplayMaxBytes >> 20);
     return;
   }
   out.write("replay.html", replay->html);
@@ -252,7 +252,7 @@ std::vector<NamedInput> run_inputs(const RunOptions &options) {
 bool keeps_history(const RunOptions &options, const mapping::GridGeometry &geometry) {
   if (options.output.replay && !replay_fits(geometry)) {
     common::print_stderr("warning: replay.html not written: the grid has {} sub-cells, a replay at most {} (--no-replay "
-               "leaves it out without this warning)\n", subcells_of(geometry), kReplayMaxSubcells);
+                         "leaves it out without this warning)\n", subcells_of(geometry), kReplayMaxSubcells);
   }
   return options.output.snapshots > 0 || (options.output.replay && replay_fits(geometry));
 }

@@ -58,9 +58,9 @@ void note_if_too_wide(int fd, int map_subcells_wide, int columns) {
   const int terminal = terminal_size(fd).columns;
   if (width <= terminal) return;
   common::print_stderr(
-             "note: the map is {} columns wide and this terminal {}: its lines wrap; see it whole in a file "
-             "(run ... > run.txt), follow the robot with --animate, or open --out's map.png and replay.html\n",
-             width, terminal);
+      "note: the map is {} columns wide and this terminal {}: its lines wrap; see it whole in a file "
+      "(run ... > run.txt), follow the robot with --animate, or open --out's map.png and replay.html\n",
+      width, terminal);
 }
 
 std::optional<robot::ProgressPrinter::View> view_for_terminal(int fd, int k, int map_rows, int map_cols,
@@ -73,9 +73,9 @@ std::optional<robot::ProgressPrinter::View> view_for_terminal(int fd, int k, int
                                           std::chrono::milliseconds(50)};
   if (view.rows >= map_rows && view.cols >= map_cols) return std::nullopt;
   common::print_stderr(
-             "note: the map is {}x{} sub-cells, the terminal shows {}x{}: up to 20 moves a second print the part around "
-             "the robot; the final map is printed whole\n",
-             map_cols, map_rows, view.cols, view.rows);
+      "note: the map is {}x{} sub-cells, the terminal shows {}x{}: up to 20 moves a second print the part around "
+      "the robot; the final map is printed whole\n",
+      map_cols, map_rows, view.cols, view.rows);
   return view;
 }
 
