@@ -5,6 +5,9 @@ start it: in the controller's own folder (so the course's '../../worlds/...' pat
 `from controller import Robot` (or Supervisor) imports maze_mapper's controller module,
 sys.argv is the controller's path and its arguments (Webots' controllerArgs), and
 Robot.step() returns -1 once the simulation ends (--time-limit, --max-steps, --wall-limit).
+The runner's own paths (CONTROLLER, --world, --robot, --out) are taken from the folder it is
+started in, where the user typed them; a controller takes a path argument from there with
+maze_mapper.user_path().
 Without --world the world is the course's empty floor, which a supervisor controller fills
 (the course's load_environment); with it, a maze or an arena file. The course's own
 fairis_lib is used when it is importable; maze_mapper's stand-in serves where it is not.
@@ -321,11 +324,12 @@ def _run_files(args):
         inputs.append(("the world", args.world))
     if os.path.isfile(args.robot):
         inputs.append(("--robot", args.robot))
-    return _native.RunFiles(args.out, inputs)
+    return _native.RunFiles(os.path.abspath(args.out), inputs)
 
 
 def main(argv=None):
     args, controller_args = _parse(sys.argv[1:] if argv is None else argv)
+    maze_mapper._started_in = os.getcwd()  # where the user's paths are taken from (user_path)
     try:
         world, simulation = _simulation(args)
         files = _run_files(args)
@@ -363,6 +367,7 @@ def main(argv=None):
         print(e, file=sys.stderr)
         return status or EXIT_USAGE
     finally:
+        maze_mapper._started_in = None
         simulation.release_current()
         Robot.created = None
         maze_mapper._map_recorder = None
