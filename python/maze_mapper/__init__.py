@@ -22,6 +22,7 @@ from ._native import (
     CellModel,
     Error,
     KeptMap,
+    NoSpaceError,
     OccupancyGrid,
     RayModel,
     Score,
@@ -37,7 +38,7 @@ from ._native import (
 )
 
 __all__ = [
-    "ArgumentTypeError", "CellModel", "Error", "OccupancyGrid", "RayModel", "Score", "SensorModel",
+    "ArgumentTypeError", "CellModel", "Error", "NoSpaceError", "OccupancyGrid", "RayModel", "Score", "SensorModel",
     "World", "explore_world", "format_cell_matrix", "keep_grid", "keep_map", "load_world", "log_odds",
     "probability", "render", "score", "user_path",
 ]

@@ -32,6 +32,11 @@ def run_controller(path, *args, cwd=None, env=None, timeout=300):
     return done.returncode, done.stdout, done.stderr
 
 
+def temporaries_under(folder):
+    """The .NAME.tmp.PID files left anywhere under a folder."""
+    return [os.path.join(d, f) for d, _, files in os.walk(folder) for f in files if ".tmp." in f]
+
+
 def summary_of(text):
     """The `key: value` lines after the last blank line."""
     block = text.rstrip("\n").split("\n\n")[-1]

@@ -4,16 +4,12 @@ runner was started in, though the controller runs in its own folder (as Webots r
 import os
 import shutil
 
-from conftest import EXAMPLES, run_controller, summary_of, world
+from conftest import EXAMPLES, run_controller, summary_of, temporaries_under, world
 
 DRIVE = ("from controller import Robot\nimport math\nrobot = Robot()\n"
          "left, right = robot.getDevice('left motor'), robot.getDevice('right motor')\n"
          "for m in (left, right):\n    m.setPosition(math.inf)\n    m.setVelocity(5.0)\n"
          "for _ in range(40):\n    robot.step(32)\n")
-
-
-def temporaries_under(folder):
-    return [os.path.join(d, f) for d, _, files in os.walk(folder) for f in files if ".tmp." in f]
 
 
 def controller_elsewhere(tmp_path, source=DRIVE):
