@@ -50,14 +50,7 @@ wait_for_text() {
     sleep 0.05
   done
 }
-# A file ends with a newline (a CSV or JSON written whole).
-ends_whole() {
-  [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
-}
-# A PNG ends with its IEND chunk.
-png_whole() {
-  [ "$(tail -c 8 "$1" | od -An -c | tr -d ' \n')" = 'IEND256B`202' ]
-}
+. tests/faults/whole_outputs.sh  # ends_whole, png_whole (from SOURCE_DIR)
 
 lab=worlds/lab4x4.txt
 "$program" generate 24x24 --seed 3 -o "$scratch/maze24.txt" || exit 1
