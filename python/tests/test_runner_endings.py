@@ -98,7 +98,8 @@ def test_an_exit_code_no_exit_status_holds_is_a_failed_controller_with_status_1(
 
 
 @pytest.mark.parametrize("raised", ["class Stop(BaseException):\n    pass\nraise Stop('enough')\n",
-                                    "raise GeneratorExit('enough')\n"])
+                                    "raise GeneratorExit('enough')\n",
+                                    "raise KeyboardInterrupt('enough')\n"])  # its own, no signal: no interruption
 def test_a_base_exception_from_the_controller_is_a_failed_controller_with_its_traceback_summary_and_files(
         controller_file, tmp_path, raised):
     out = tmp_path / "out"
