@@ -105,9 +105,10 @@ class PySimulation {
   // Whether this is the process that built the simulation (not a child the controller forked,
   // whose steps never reach the run or its files).
   bool in_owner_process() const { return ::getpid() == owner_pid_; }
-  // A supervisor set the robot down: the recorded path has no line to its next pose.
+  // A supervisor set the robot down: the recorded path has no line to its next pose (never
+  // told the files from a forked child).
   void placed_by_supervisor() {
-    if (files_ != nullptr) files_->mark_placed();
+    if (files_ != nullptr && in_owner_process()) files_->mark_placed();
   }
 
   // From now on `files` observes the run: every control step's trace.csv row and replay
