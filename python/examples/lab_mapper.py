@@ -16,6 +16,7 @@ centre is free. Each sub-cell gets one update a scan, occupied wins.
 
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
@@ -233,9 +234,15 @@ def main():
     p.add_argument("--subcells", type=int, default=3, help="K, odd")
     p.add_argument("--cell-size", type=float, default=1.0, help="m")
     p.add_argument("--origin", default="0,0", help="the maze's south-west corner, m")
-    p.add_argument("--save-scans", help="write every scan (cell, position, yaw, ranges) to this .npz")
-    p.add_argument("--save-grid", help="write the grid and the visits to this .npz")
+    # Paths typed on the runner's command line, taken from where it was typed (the controller
+    # runs in its own folder), and checked before the run rather than after it.
+    p.add_argument("--save-scans", type=maze_mapper.user_path,
+                   help="write every scan (cell, position, yaw, ranges) to this .npz")
+    p.add_argument("--save-grid", type=maze_mapper.user_path, help="write the grid and the visits to this .npz")
     args = p.parse_args()
+    for flag, path in (("--save-grid", args.save_grid), ("--save-scans", args.save_scans)):
+        if path and not os.path.isdir(os.path.dirname(path) or "."):
+            p.error(f"{flag} {path}: no folder {os.path.dirname(path)} to write it in")
     width, height = (int(v) for v in args.size.split("x"))
     origin = tuple(float(v) for v in args.origin.split(","))
 

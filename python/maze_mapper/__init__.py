@@ -15,12 +15,14 @@ the arrays, not to import the package. Students' guide: docs/python.md.
 """
 
 import functools
+import os
 import re
 
 from ._native import (
     CellModel,
     Error,
     KeptMap,
+    NoSpaceError,
     OccupancyGrid,
     RayModel,
     Score,
@@ -36,9 +38,9 @@ from ._native import (
 )
 
 __all__ = [
-    "ArgumentTypeError", "CellModel", "Error", "OccupancyGrid", "RayModel", "Score", "SensorModel",
+    "ArgumentTypeError", "CellModel", "Error", "NoSpaceError", "OccupancyGrid", "RayModel", "Score", "SensorModel",
     "World", "explore_world", "format_cell_matrix", "keep_grid", "keep_map", "load_world", "log_odds",
-    "probability", "render", "score",
+    "probability", "render", "score", "user_path",
 ]
 
 
@@ -125,3 +127,20 @@ def keep_map(map, *, origin=None, cell_size_m=None, model=None, values="log_odds
     if _map_recorder is not None:
         _map_recorder.keep_map(_kept_map)
     return _kept_map
+
+
+# The folder python3 -m maze_mapper.run was started in, while it runs a controller (it runs
+# the controller in the controller's own folder).
+_started_in = None
+
+
+def user_path(path):
+    """A path the user typed on the runner's command line, such as a controller's argument
+    (lab_mapper's --save-grid), taken from the folder the runner was started in, where the user
+    typed it: the controller itself runs in its own folder, as Webots runs it, so the paths it
+    opens as they are (its world file) are taken from there. Outside the runner, or for an
+    absolute path, the path as given."""
+    path = os.fspath(path)
+    if _started_in is None or os.path.isabs(path):
+        return path
+    return os.path.join(_started_in, path)

@@ -5,30 +5,41 @@ start it: in the controller's own folder (so the course's '../../worlds/...' pat
 `from controller import Robot` (or Supervisor) imports maze_mapper's controller module,
 sys.argv is the controller's path and its arguments (Webots' controllerArgs), and
 Robot.step() returns -1 once the simulation ends (--time-limit, --max-steps, --wall-limit).
-Without --world the world is the course's empty floor, which a supervisor controller fills
-(the course's load_environment); with it, a maze or an arena file. The course's own
-fairis_lib is used when it is importable; maze_mapper's stand-in serves where it is not.
+The runner's own paths (CONTROLLER, --world, --robot, --out) are taken from the folder it is
+started in, where the user typed them; a controller takes a path argument from there with
+maze_mapper.user_path(). Without --world the world is the course's empty floor, which a
+supervisor controller fills (the course's load_environment); with it, a maze or an arena
+file. The course's own fairis_lib is used when it is importable; maze_mapper's stand-in
+serves where it is not.
 When the controller ends, the runner prints a summary; if the controller handed its grid to
 maze_mapper.keep_grid(), the summary scores it against a maze's truth as `maze_mapper run`
-scores its own map; on an arena, a metric map handed to maze_mapper.keep_map() is drawn. With --out DIR it writes the run's files there (docs/course.md). Exit status: the controller's (1 for an uncaught exception), 2 for bad
-input to the runner.
+scores its own map; on an arena, a metric map handed to maze_mapper.keep_map() is drawn. With
+--out DIR it writes the run's files there (docs/course.md), each whole or absent.
+SIGINT (Ctrl-C), SIGTERM and SIGHUP stop the run as they stop `maze_mapper run`: the
+controller's next step returns -1 (KeyboardInterrupt in a controller that has not stepped 2 s
+later), the summary's end is `stopped (interrupted by SIGTERM)`, the files are written, and
+the exit status is 128 + the signal; a signal once the summary is being written ends the
+process at once, its unfinished files removed. A child the controller forks never ends the
+run nor touches its files. Exit status: the controller's (sys.exit's code; 1 for an uncaught
+exception or a code outside 0..255), 2 for bad input to the runner, 4 when the disk is full
+(said on one `error:` line after the summary; the run is not blamed on the controller),
+128 + a stop signal.
 """
 
 import argparse
+import errno
 import json
 import math
 import os
 import random
 import re
-import runpy
 import sys
 import textwrap
 import time
-import traceback
 
 import maze_mapper
-from maze_mapper import _native, controller, scene
-from maze_mapper.controller import Robot, SimulationEnded
+from maze_mapper import _controller_run, _native, controller, scene
+from maze_mapper.controller import Robot
 
 _KEY = _native.report_key  # the summary keys, spelled once for every report
 
@@ -100,43 +111,6 @@ def _parse(argv):
     if not os.path.isfile(args.controller):
         p.error(f"cannot read {args.controller}: no such file")
     return args, rest
-
-
-def _run_controller(path, controller_args):
-    """Runs the controller's file as __main__ in its own folder, Webots' `controller` module
-    resolved to ours, the course's fairis_lib before our stand-in; returns (how it ended, exit
-    status)."""
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = os.path.abspath(path)
-    folder = os.path.dirname(path)
-    saved_argv, saved_path, saved_cwd = sys.argv, list(sys.path), os.getcwd()
-    saved_modules = set(sys.modules)
-    sys.argv = [path] + list(controller_args)
-    sys.path[:0] = [os.path.join(here, "_webots"), folder]
-    sys.path.append(os.path.join(here, "_fairis"))
-    sys.modules.pop("controller", None)
-    os.chdir(folder)
-    try:
-        runpy.run_path(path, run_name="__main__")
-        return "controller finished", 0
-    except SimulationEnded:
-        return "simulation ended", 0
-    except SystemExit as e:
-        code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
-        if e.code is not None and not isinstance(e.code, int):
-            print(e.code, file=sys.stderr)
-        return ("controller finished" if code == 0 else "controller failed"), code
-    except KeyboardInterrupt:
-        return "interrupted", 130
-    except Exception:  # the controller's own error: its traceback, as Webots' console shows it
-        traceback.print_exc()
-        return "controller failed", 1
-    finally:
-        os.chdir(saved_cwd)
-        sys.argv, sys.path[:] = saved_argv, saved_path
-        for name in set(sys.modules) - saved_modules:  # the controller's own modules
-            if name.split(".")[0] in ("fairis_lib", "fairis_tools", "controller"):
-                del sys.modules[name]
 
 
 class _Entries:
@@ -223,7 +197,9 @@ def _grid_entries(e, world):
 def _ending(args, simulation, controller_end, status):
     """The run's end and its message, as every run says them: the step limit when the simulation
     ended there (the controller then left its loop, or stepped on and was ended), else how the
-    controller ended."""
+    controller ended; a stop signal first (SIGINT, SIGTERM, SIGHUP), named as the commands name it."""
+    if _native.interrupted():
+        return "stopped", f"interrupted by {_native.interrupt_name()}"
     if controller.wall_limit_reached:
         return "wall-clock limit", ""
     if status == 0 and simulation.steps >= args.max_steps:
@@ -321,11 +297,38 @@ def _run_files(args):
         inputs.append(("the world", args.world))
     if os.path.isfile(args.robot):
         inputs.append(("--robot", args.robot))
-    return _native.RunFiles(args.out, inputs)
+    return _native.RunFiles(os.path.abspath(args.out), inputs)
+
+
+def _print_summary(text):
+    """Writes the summary on standard output, after what the controller printed; the errno of a
+    write that failed (a full device), else None."""
+    try:
+        sys.stdout.flush()
+        sys.stdout.write(text)
+        sys.stdout.flush()
+        return None
+    except OSError as e:
+        return e.errno
+
+
+def _stdout_failed(error_number):
+    """Standard output could not take the summary: said once, as the commands say it (exit
+    status 4 for a full device, else 1); what is left unwritten goes nowhere."""
+    null = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(null, sys.stdout.fileno())
+    os.close(null)
+    if error_number in (errno.ENOSPC, errno.EDQUOT):
+        print(f"error: cannot write standard output: {os.strerror(error_number)}", file=sys.stderr)
+        return _native.NO_SPACE_EXIT_STATUS
+    print("error: could not write to standard output", file=sys.stderr)
+    return 1
 
 
 def main(argv=None):
+    _native.install_signal_handlers()
     args, controller_args = _parse(sys.argv[1:] if argv is None else argv)
+    maze_mapper._started_in = os.getcwd()  # where the user's paths are taken from (user_path)
     try:
         world, simulation = _simulation(args)
         files = _run_files(args)
@@ -347,22 +350,31 @@ def main(argv=None):
     controller.wall_limit_reached = False
     status = EXIT_USAGE
     try:
-        end, status = _run_controller(args.controller, controller_args)
+        end, status = _controller_run.run(args.controller, controller_args)
+        if _native.interrupted():
+            status = _native.interrupted_exit_status()
         wall_time_ms = (time.perf_counter() - started) * 1000.0
         end = _ending(args, simulation, end, status)
-        sys.stdout.flush()
         entries = _report(args, world, scene.current, end, wall_time_ms)
-        sys.stdout.write("\n" + _native.format_entries(entries))
-        sys.stdout.flush()
+        stdout_failed = _print_summary("\n" + _native.format_entries(entries))
         if files is not None:
             kept = maze_mapper._kept
             # On the course's empty floor, the world the controller's supervisor built.
             drawn = world if world is not None else simulation.built_world()
             files.finish(entries, drawn, None if kept is None else kept[0], None if kept is None else kept[2])
+        if stdout_failed is not None:
+            return _stdout_failed(stdout_failed)
+    except maze_mapper.NoSpaceError as e:  # after the summary, as the commands say it
+        print(e, file=sys.stderr)
+        return _native.NO_SPACE_EXIT_STATUS
     except maze_mapper.Error as e:
         print(e, file=sys.stderr)
         return status or EXIT_USAGE
+    except RuntimeError as e:  # a write that failed otherwise: "error: cannot write ..."
+        print(e, file=sys.stderr)
+        return status or 1
     finally:
+        maze_mapper._started_in = None
         simulation.release_current()
         Robot.created = None
         maze_mapper._map_recorder = None

@@ -15,8 +15,9 @@ camera and met by the body:
         size.x as the height and size.y as the radius), recognised by the camera when
         recognitionColors is not empty
 
-Any other node type, a field these types lack, or a rotation about another axis than the
-vertical raises SceneError naming it. With the runner's --world the world is that file: the
+Any other node type, a field these types lack, a rotation about another axis than the
+vertical, or a solid no world holds (a size, or a translation's x or y, beyond the 1000 m of
+the longest world side) raises SceneError naming it. With the runner's --world the world is that file: the
 nodes a controller imports are kept in the tree (getFromDef finds them) but add no solid, and
 the runner says so once.
 """
@@ -137,6 +138,14 @@ def parse_node(text):
     if at + 1 != len(tokens):
         raise SceneError(f"text after the {type_name} node: {' '.join(tokens[at + 1:])}")
     return def_name, type_name, fields
+
+
+def check_extent(type_name, fields):
+    """SceneError for a solid no world holds (its picture would never end)."""
+    for name, value in [("size", v) for v in fields["size"]] + [("translation", v) for v in fields["translation"][:2]]:
+        if abs(value) > _native.MAX_ARENA_SIDE_M:
+            raise SceneError(f"{type_name}.{name}: {value:g} m is beyond any world (at most "
+                             f"{_native.MAX_ARENA_SIDE_M:g} m a side)")
 
 
 def yaw_of_rotation(rotation, what):
@@ -401,6 +410,7 @@ class Scene:
         if parent is not self.root:
             raise SceneError(f"importing into a {parent._type} node is not modelled: only into the root's children")
         def_name, type_name, fields = parse_node(node_string)
+        check_extent(type_name, fields)
         kinds = {name: kind for name, (kind, _) in _NODE_FIELDS[type_name].items()}
         node = Node(self, self._new_id(), type_name, "Solid", def_name, fields, kinds)
         yaw = yaw_of_rotation(fields["rotation"], f"{type_name}.rotation")

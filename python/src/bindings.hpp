@@ -22,6 +22,7 @@ void bind_render(py::module_ &m);     // render, format_cell_matrix
 void bind_world(py::module_ &m);      // World, load_world, score
 void bind_simulator(py::module_ &m);  // Simulation and the webots:: devices
 void bind_run_files(py::module_ &m);  // RunFiles (maze_mapper.run --out), format_entries, option_help
+void bind_signals(py::module_ &m);    // the commands' stop signals (common/interrupt.hpp), for the runner (module.cpp)
 
 // An occupancy grid as Python holds it: the 4D log-odds (exposed as a NumPy view, no copy),
 // the sensor model that updates it, and the cells the robot visited with its heading there.

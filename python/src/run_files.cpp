@@ -244,13 +244,31 @@ PoseTrace &RunFiles::trace() {
   return *trace_;
 }
 
-void RunFiles::on_step(const app::RunStep &step) {
-  if (!trace().record(step.step, step.time_s, step.true_pose)) return;
-  const PoseTrace::Visit &v = trace_->visits().back();
-  replay_.on_step({v.step, {v.x_m, v.y_m}, v.yaw_rad, v.placed}, v.time_s);
+template <typename Record>
+void RunFiles::recording(Record record) {
+  if (failed_) return;
+  try {
+    record();
+  } catch (const common::RuntimeFailure &) {  // common::NoSpaceError
+    failed_ = std::current_exception();
+    trace_.reset();
+  } catch (const common::InputError &) {  // "cannot write DIR/trace.csv: Permission denied"
+    failed_ = std::current_exception();
+    trace_.reset();
+  }
 }
 
-void RunFiles::mark_placed() { trace().mark_placed(); }
+void RunFiles::on_step(const app::RunStep &step) {
+  recording([&] {
+    if (!trace().record(step.step, step.time_s, step.true_pose)) return;
+    const PoseTrace::Visit &v = trace_->visits().back();
+    replay_.on_step({v.step, {v.x_m, v.y_m}, v.yaw_rad, v.placed}, v.time_s);
+  });
+}
+
+void RunFiles::mark_placed() {
+  recording([&] { trace().mark_placed(); });
+}
 
 void RunFiles::keep_map(py::object kept) {
   kept_map_ = &kept.cast<const KeptMap &>();
@@ -260,6 +278,7 @@ void RunFiles::keep_map(py::object kept) {
 
 void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
                       std::optional<float> initial_log_odds) {
+  if (failed_) std::rethrow_exception(failed_);
   // A maze whose controller kept its 4D grid is drawn on its cells; any other run in metres.
   const maze::World *maze = world != nullptr && world->on_lattice() && !grid.is_none() ? world : nullptr;
   const bool metres = world != nullptr && maze == nullptr;

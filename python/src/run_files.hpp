@@ -10,6 +10,7 @@
 // and the metric map kept (maze_mapper.keep_map), if any.
 
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -46,7 +47,8 @@ class RunFiles final : public app::RunObserver {
 
   void on_start(const app::RunStart &) override {}
   // After every control step: its row of trace.csv (opened on first use) and, when due, a
-  // frame of the replay in metres.
+  // frame of the replay in metres. A write that fails (a full disk) is kept for finish(), never
+  // raised into the controller's step: the run goes on, unrecorded from then on.
   void on_step(const app::RunStep &step) override;
   void on_end(const app::RunEnd &) override {}
   // A supervisor set the robot down (a teleport, simulationReset): no path is drawn to its
@@ -65,12 +67,16 @@ class RunFiles final : public app::RunObserver {
   // world's solids, landmarks and the path, map.png the kept metric map (keep_map) and
   // replay.html both.
   // Throws common::InputError when the kept grid's cells are not the maze's, or the kept
-  // map's array changed shape.
+  // map's array changed shape; a write kept from the run (common::NoSpaceError for a full disk)
+  // is thrown first, and then no file is written.
   void finish(const std::vector<EntryTuple> &entries, const maze::World *world, const py::object &grid,
               std::optional<float> initial_log_odds);
 
  private:
   PoseTrace &trace();
+  // Runs `record` (a trace write); a failure is kept in failed_ and the trace dropped.
+  template <typename Record>
+  void recording(Record record);
   // truth.png, map.png (a kept metric map) and replay.html of a run drawn in metres.
   void write_metres_pictures(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks);
   void write_metres_replay(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks);
@@ -82,6 +88,7 @@ class RunFiles final : public app::RunObserver {
   const KeptMap *kept_map_ = nullptr;  // kept_'s (cast once: the steps read it)
   app::MapFrames replay_{app::PathPoses::every_step};
   double body_radius_m_ = 0.0;
+  std::exception_ptr failed_;  // the first write that failed during the run
 };
 
 }  // namespace maze_mapper_python

@@ -2,6 +2,8 @@
 // Simulation and makes it current; the controller's Robot attaches to it and sees only the
 // webots:: devices (the Webots method names), never the maze.
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -28,6 +30,7 @@
 #include "bindings.hpp"
 #include "run_files.hpp"
 #include "common/error.hpp"
+#include "common/interrupt.hpp"
 #include "common/random.hpp"
 #include "maze/world/geometry.hpp"
 #include "maze/world/world.hpp"
@@ -99,9 +102,13 @@ class PySimulation {
   std::int64_t steps() const { return simulation().steps(); }
   const maze::sim::RobotProfile &profile() const { return profile_; }
   void request_stop() { simulation().request_stop(); }
-  // A supervisor set the robot down: the recorded path has no line to its next pose.
+  // Whether this is the process that built the simulation (not a child the controller forked,
+  // whose steps never reach the run or its files).
+  bool in_owner_process() const { return ::getpid() == owner_pid_; }
+  // A supervisor set the robot down: the recorded path has no line to its next pose (never
+  // told the files from a forked child).
   void placed_by_supervisor() {
-    if (files_ != nullptr) files_->mark_placed();
+    if (files_ != nullptr && in_owner_process()) files_->mark_placed();
   }
 
   // From now on `files` observes the run: every control step's trace.csv row and replay
@@ -152,6 +159,7 @@ class PySimulation {
   }
 
   maze::sim::RobotProfile profile_;
+  pid_t owner_pid_ = ::getpid();
   std::unique_ptr<app::RunFrame> frame_;  // the simulation, and the files observing it
   std::unique_ptr<webots::embedded::CurrentSimulation> current_;
   RunFiles *files_ = nullptr;  // files_owner_'s
@@ -194,11 +202,15 @@ class PyRobot {
     owner_ = &simulation_.cast<PySimulation &>();
     names_ = owner_->device_names();
   }
-  // Webots' Robot.step: a negative duration is a mistake (raised); 0 passes no time.
+  // Webots' Robot.step: a negative duration is a mistake (raised); 0 passes no time. A stop
+  // signal recorded (the runner's SIGINT, SIGTERM, SIGHUP) ends the simulation: -1. In a child
+  // the controller forked, -1 at once: only the runner's process steps the run.
   int step(int duration_ms) {
     if (duration_ms < 0) {
       throw common::InputError("Robot.step: the duration must be 0 or more ms (got " + std::to_string(duration_ms) + ")");
     }
+    if (!owner_->in_owner_process()) return -1;
+    if (common::interrupted()) owner_->request_stop();
     const int result = robot_->step(duration_ms);
     owner_->after_step();
     return result;

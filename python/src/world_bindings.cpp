@@ -218,6 +218,7 @@ void bind_world(py::module_ &m) {
           "text", [](const maze::World &w) { return maze::format_world(w.maze(), maze::Format::text_map, w.file); },
           "The maze as a canonical text map (what `maze_mapper show` prints).");
   m.attr("LANDMARK_RADIUS_M") = maze::kLandmarkRadius_m;  // the course's Landmark cylinders
+  m.attr("MAX_ARENA_SIDE_M") = maze::kMaxArenaSide_m;  // the longest side of any world
   m.def("load_world", &load, py::arg("path"), py::kw_only(), py::arg("cell_size_m") = py::none(),
         py::arg("start_position") = py::none(), py::arg("random_start") = false,
         py::arg("seed") = common::kDefaultSeed,

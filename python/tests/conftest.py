@@ -25,11 +25,16 @@ def program(*args, check=True):
     return done.returncode, done.stdout, done.stderr
 
 
-def run_controller(path, *args, cwd=None, env=None):
+def run_controller(path, *args, cwd=None, env=None, timeout=300):
     """python3 -m maze_mapper.run PATH ARGS...; (status, stdout, stderr)."""
     done = subprocess.run([sys.executable, "-m", "maze_mapper.run", str(path), *args],
-                          cwd=cwd or REPO, capture_output=True, text=True, timeout=300, env=env)
+                          cwd=cwd or REPO, capture_output=True, text=True, timeout=timeout, env=env)
     return done.returncode, done.stdout, done.stderr
+
+
+def temporaries_under(folder):
+    """The .NAME.tmp.PID files left anywhere under a folder."""
+    return [os.path.join(d, f) for d, _, files in os.walk(folder) for f in files if ".tmp." in f]
 
 
 def summary_of(text):

@@ -121,6 +121,16 @@ def test_a_node_type_other_than_obstacle_and_landmark_is_refused_naming_it(contr
     assert "node type Solid is not modelled by the embedded simulator (it builds Obstacle and Landmark nodes)" in err
 
 
+def test_a_supervisor_import_of_a_solid_larger_than_any_world_is_refused_at_once(controller_file, tmp_path):
+    source = ("from controller import Supervisor\nrobot = Supervisor()\n"
+              "robot.getRoot().getField('children').importMFNodeFromString(-1, 'Landmark { size 1 1e300 1 }')\n")
+    status, stdout, err = run_controller(controller_file(source), "--out", str(tmp_path / "out"), timeout=60)
+    assert status == 1
+    assert "Landmark.size: 1e+300 m is beyond any world (at most 1000 m a side)" in err
+    assert summary_of(stdout)["end"] == "controller failed"
+    assert (tmp_path / "out" / "truth.png").exists()  # the floor drawn as it stands, at once
+
+
 def test_get_from_def_finds_imported_nodes_and_the_robot_node_reads_its_pose(controller_file):
     body = ("print('def', sup.getFromDef('Obstacle_4').getTypeName(), sup.getFromDef('Obstacle'),\n"
             "      [round(v, 2) for v in sup.getFromDef('Landmark_0').getPosition()])\n"

@@ -1,6 +1,6 @@
 # The fault suites' shared steps (sourced): a case's start and failure, waits with a bound,
-# and what "whole" means for a file. The sourcing script sets `scratch` (a scratch folder),
-# `failures` and `count` (0) before its first case.
+# and what "whole" means for a file (whole_outputs.sh). The sourcing script sets `source_dir`,
+# `scratch` (a scratch folder), `failures` and `count` (0) before its first case.
 fail() {
   failures=$((failures + 1))
   printf 'FAIL: %s: %s\n' "$case_name" "$1"
@@ -36,14 +36,7 @@ wait_for_text() {
     sleep 0.05
   done
 }
-# A file ends with a newline (a CSV or JSON written whole).
-ends_whole() {
-  [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
-}
-# A PNG ends with its IEND chunk.
-png_whole() {
-  [ "$(tail -c 8 "$1" | od -An -c | tr -d ' \n')" = 'IEND256B`202' ]
-}
+. "$source_dir/tests/faults/whole_outputs.sh"  # ends_whole, png_whole
 
 # Waits (at most ~20 s) until process $1 holds file $2 open.
 wait_opened() {

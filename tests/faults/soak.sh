@@ -25,14 +25,7 @@ odd=0
 fault() {
   printf 'soak run %s (%sx%s, SIG%s after %s ms): %s\n' "$i" "$size" "$size" "$sig" "$delay_ms" "$1"
 }
-# A file ends with a newline (a CSV, JSON or YAML written whole).
-ends_whole() {
-  [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
-}
-# A PNG ends with its IEND chunk.
-png_whole() {
-  [ "$(tail -c 8 "$1" | od -An -c | tr -d ' \n')" = 'IEND256B`202' ]
-}
+. "$(dirname "$0")/whole_outputs.sh"  # check_outputs
 
 i=0
 while [ "$i" -lt "$runs" ]; do
@@ -56,18 +49,7 @@ while [ "$i" -lt "$runs" ]; do
     0 | 1) finished=$((finished + 1)) ;;
     *) odd=$((odd + 1)); fault "exit $status" ;;
   esac
-  for f in "$dir"/out/*.csv "$dir"/out/*.json "$dir"/out/*.yaml; do
-    [ ! -e "$f" ] || ends_whole "$f" || { cut=$((cut + 1)); fault "$f cut"; }
-  done
-  for f in "$dir"/out/*.png "$dir"/out/snapshots/*.png; do
-    [ ! -e "$f" ] || png_whole "$f" || { cut=$((cut + 1)); fault "$f cut"; }
-  done
-  found=$(find "$dir/out" -name '.*.tmp.*' 2>/dev/null)
-  if [ -n "$found" ]; then
-    left=$((left + $(printf '%s\n' "$found" | wc -l)))
-    fault "temporaries left: $found"
-    find "$dir/out" -name '.*.tmp.*' -exec rm -f {} +
-  fi
+  check_outputs "$dir/out"
 done
 echo "soak: $runs runs (seed ${3:-1}): $interrupted interrupted, $finished ended first, $odd other exits; $left temporaries left, $cut outputs cut"
 [ "$((left + cut + odd))" -eq 0 ]

@@ -175,4 +175,11 @@ inline void unregister_temporary(int slot) {
   detail::g_temporaries[static_cast<std::size_t>(slot)].state.store(0);
 }
 
+// Forgets every registered temporary without removing it: in a child the process forked (a
+// Python controller's os.fork()), whose registered files are its parent's, never the child's
+// to remove.
+inline void forget_temporaries() {
+  for (detail::TemporarySlot &slot : detail::g_temporaries) slot.state.store(0);
+}
+
 }  // namespace common
