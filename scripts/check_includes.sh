@@ -9,11 +9,11 @@
 set -eu
 source_dir=$(cd "${1:-$(dirname "$0")/..}" && pwd)
 jobs=${2:-2}
-build=$(mktemp -d)
-trap 'rm -rf "$build"' EXIT
+build="$source_dir/build/check-includes"  # configured again each time; nothing is compiled into it
+mkdir -p "$build"
 cmake -S "$source_dir" -B "$build" -G Ninja -DCMAKE_UNITY_BUILD=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DMAZE_MAPPER_PYTHON=AUTO \
   >"$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
-exec python3 - "$build/compile_commands.json" "$source_dir" "$jobs" <<'PY'
+python3 - "$build/compile_commands.json" "$source_dir" "$jobs" <<'PY'
 import json, shlex, subprocess, sys
 from concurrent.futures import ThreadPoolExecutor
 

@@ -85,11 +85,13 @@ def _parse(argv):
     p.add_argument("--wall-limit", type=float,
                    help="wall-clock seconds after which Robot.step() returns -1 (a guard for a class's runs)")
     p.add_argument("-o", "--out", **shared("--out"))
-    args, rest = p.parse_known_args(argv)
-    if rest and rest[0] == "--":
-        rest = rest[1:]
-    elif rest:
-        p.error(f"unrecognized arguments: {' '.join(rest)} (controller arguments follow --)")
+    # Everything after the first `--` is the controller's, whether runner options come before it
+    # or not (argparse would drop a `--` that directly follows the controller's path).
+    split = argv.index("--") if "--" in argv else len(argv)
+    args, unknown = p.parse_known_args(argv[:split])
+    if unknown:
+        p.error(f"unrecognized arguments: {' '.join(unknown)} (controller arguments follow --)")
+    rest = argv[split + 1:]
     if args.max_steps < 1:
         p.error(f"--max-steps must be at least 1 (got {args.max_steps})")
     args.time_limited = False  # whether --time-limit, not --max-steps, bounds the run
@@ -325,7 +327,17 @@ def _stdout_failed(error_number):
     return 1
 
 
+def _secure_standard_streams():
+    """A standard stream the caller closed (`>&-`) is /dev/null, for Python as for the C++ side,
+    so that no file the run opens (its trace) takes its number."""
+    _native.secure_standard_streams()
+    for name, mode in (("stdin", "r"), ("stdout", "w"), ("stderr", "w")):
+        if getattr(sys, name) is None:  # Python found the descriptor closed at its start
+            setattr(sys, name, open(os.devnull, mode))
+
+
 def main(argv=None):
+    _secure_standard_streams()
     _native.install_signal_handlers()
     args, controller_args = _parse(sys.argv[1:] if argv is None else argv)
     maze_mapper._started_in = os.getcwd()  # where the user's paths are taken from (user_path)

@@ -15,6 +15,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/interrupt.hpp"
+#include "common/standard_streams.hpp"
 
 // The commands' handling of SIGINT, SIGTERM and SIGHUP (common/interrupt.hpp) for the Python
 // runner (maze_mapper.run): the same handler, so that a signal while the controller runs stops
@@ -36,6 +37,9 @@ class StopWork {
 }  // namespace
 
 void bind_signals(py::module_ &m) {
+  m.def("secure_standard_streams", &common::secure_standard_streams,
+        "Opens /dev/null on each of the file descriptors 0, 1, 2 that is closed, so that no file the run opens takes "
+        "its number (a trace that became fd 1 would receive the printed summary).");
   m.def("install_signal_handlers", &common::install_signal_handlers,
         "SIGINT, SIGTERM and SIGHUP as the commands take them: the process ends (its unfinished output files "
         "removed, exit status 128 + the signal), or, inside SignalsStopWork, the signal is recorded.");

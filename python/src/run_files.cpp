@@ -21,6 +21,7 @@
 #include "app/run/report.hpp"
 #include "app/run/report_keys.hpp"
 #include "common/error.hpp"
+#include "common/standard_streams.hpp"
 #include "mapping/walls.hpp"
 #include "maze/world/truth_raster.hpp"
 
@@ -171,7 +172,7 @@ void write_maze_replay(app::OutputDir &out, const maze::Maze &truth, const std::
   if (const std::optional<app::Replay> replay = replay_page(truth, title, run, report, steps)) {
     out.write("replay.html", replay->html);
   } else {
-    fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
+    common::print_stderr("warning: replay.html not written: even the final map alone is over {} MiB\n",
                app::kReplayMaxBytes >> 20);
   }
 }
@@ -185,7 +186,7 @@ void RunFiles::write_metres_pictures(const std::vector<PoseTrace::Visit> &visits
 
 void RunFiles::write_metres_replay(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks) {
   if (visits.empty()) {
-    fmt::print(stderr, "note: replay.html not written: the controller took no step\n");
+    common::print_stderr("note: replay.html not written: the controller took no step\n");
     return;
   }
   const PoseTrace::Visit &last = visits.back();
@@ -193,7 +194,7 @@ void RunFiles::write_metres_replay(const std::vector<PoseTrace::Visit> &visits, 
   if (const std::optional<app::Replay> replay = app::replay_html(metres_replay_input(replay_, kept_map(), visits, marks))) {
     out_.write("replay.html", replay->html);
   } else {
-    fmt::print(stderr, "warning: replay.html not written: even the final map alone is over {} MiB\n",
+    common::print_stderr("warning: replay.html not written: even the final map alone is over {} MiB\n",
                app::kReplayMaxBytes >> 20);
   }
 }
@@ -285,7 +286,10 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   const app::Report report = report_of(entries);
   const std::vector<PoseTrace::Visit> none;
   const std::vector<PoseTrace::Visit> &visits = trace_ ? trace_->visits() : none;
-  // In `run --out`'s order: the pictures, summary.json, trace.csv, replay.html.
+  // What matters most first, as `run --out` writes (after a stop signal the files have a
+  // bounded time: app/report/output_dir.hpp): summary.json, trace.csv, the pictures, replay.html.
+  out_.write("summary.json", app::report_json(report).dump(2) + "\n");
+  if (trace_) out_.commit("trace.csv", trace_->file());
   const std::optional<maze::Maze> started =
       maze != nullptr ? std::optional<maze::Maze>(started_maze(maze->maze(), visits)) : std::nullopt;
   const std::optional<MazeRun> run =
@@ -293,8 +297,6 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   const MetresRunMarks marks{world, body_radius_m_, app::replay_summary(report)};
   if (run) write_maze_pictures(out_, *started, *run);
   if (metres) write_metres_pictures(visits, marks);
-  out_.write("summary.json", app::report_json(report).dump(2) + "\n");
-  if (trace_) out_.commit("trace.csv", trace_->file());
   if (run) write_maze_replay(out_, *started, maze->file, *run, report, visits.empty() ? 0 : visits.back().step);
   if (metres) write_metres_replay(visits, marks);
   out_.finish();

@@ -2,6 +2,8 @@
 
 import math
 
+import pytest
+
 from conftest import run_controller, summary_of
 
 DEVICES = '''
@@ -89,6 +91,20 @@ def test_step_returns_minus_one_when_the_simulation_ends(controller_file):
     assert "steps 49 ['--size', '4x4']" in out.splitlines()
     summary = summary_of(out)
     assert summary["end"] == "max steps" and summary["steps"] == "50"
+
+
+@pytest.mark.parametrize("runner_options", [[], ["--max-steps", "20"]])
+def test_everything_after_the_first_double_dash_is_the_controllers(controller_file, runner_options):
+    source = 'import sys\nprint("args", sys.argv[1:])\n'
+    status, out, err = run_controller(controller_file(source), *runner_options, "--", "a", "--b", "--", "c")
+    assert status == 0, err
+    assert "args ['a', '--b', '--', 'c']" in out.splitlines()
+
+
+def test_a_runner_option_after_the_controllers_arguments_is_refused_with_where_they_go(controller_file):
+    status, _, err = run_controller(controller_file("print('ran')\n"), "--bogus")
+    assert status == 2
+    assert err.strip() == "error: unrecognized arguments: --bogus (controller arguments follow --)"
 
 
 def test_the_truth_is_not_in_the_controllers_reach(controller_file):

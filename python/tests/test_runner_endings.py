@@ -24,7 +24,8 @@ def assert_whole(out):
     trace = (out / "trace.csv").read_text()
     assert trace.endswith("\n") and trace.count("step,") == 1
     json.loads((out / "summary.json").read_text())
-    assert (out / "truth.png").read_bytes().endswith(b"IEND\xaeB`\x82")
+    # after a stop signal the pictures get 2 s, summary.json and trace.csv first: whole if written
+    assert not (out / "truth.png").exists() or (out / "truth.png").read_bytes().endswith(b"IEND\xaeB`\x82")
     assert temporaries_under(out) == []
 
 
@@ -163,3 +164,21 @@ def test_standard_output_on_a_full_device_is_one_error_line_and_status_4_with_th
     assert [line for line in done.stderr.splitlines() if not line.startswith("wrote ")] == [
         "error: cannot write standard output: No space left on device"]
     assert_whole(out)
+
+
+@pytest.mark.parametrize("closed", ["stdout", "stderr"])
+def test_a_closed_standard_stream_takes_no_file_of_the_run(controller_file, tmp_path, closed):
+    """`python3 -m maze_mapper.run C.py --out d >&-`: the trace does not become fd 1 and take
+    the printed summary; with stderr closed the run still ends with its status."""
+    controller = controller_file(STEP_ON + "for _ in range(20):\n    robot.step(32)\n")
+    out = tmp_path / "out"
+    command = [sys.executable, "-m", "maze_mapper.run", str(controller), "--world", world("maze8x8.txt"),
+               "--out", str(out)]
+    fd = 1 if closed == "stdout" else 2
+    done = subprocess.run(command, cwd=REPO, pass_fds=(), preexec_fn=lambda: os.close(fd),
+                          stdout=subprocess.DEVNULL if fd == 2 else None, stderr=subprocess.DEVNULL if fd == 1 else None)
+    assert done.returncode == 0
+    trace = (out / "trace.csv").read_text()
+    assert trace.startswith("step,") and trace.count("step,") == 1 and "end:" not in trace
+    json.loads((out / "summary.json").read_text())
+    assert temporaries_under(out) == []
