@@ -1,5 +1,5 @@
 #!/bin/sh
-# Builds the fuzz preset's seven targets and runs each libFuzzer target for N seconds
+# Builds the fuzz preset's nine targets and runs each libFuzzer target for N seconds
 # (default 60) from the committed seed corpus (fuzz/corpus/<target>/, read-only: new inputs
 # go to a scratch directory), JOBS targets at a time (default 1). Fails when any target
 # reports a crash, hang, leak or sanitizer error; the input that did it is left in
@@ -11,7 +11,7 @@ jobs=${2:-1}
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 cmake --preset fuzz >/dev/null
-targets="text_map num xml room robot_json mms_protocol run_cli"
+targets="text_map num xml room robot_json mms_protocol run_cli format batch_csv"
 # shellcheck disable=SC2046 # one word a target
 cmake --build --preset fuzz --target $(for t in $targets; do printf 'fuzz_%s ' "$t"; done)
 artifacts="$root/build/fuzz/artifacts"

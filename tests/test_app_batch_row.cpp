@@ -243,3 +243,41 @@ TEST_CASE("batch: a room run keeps the room options the batch read, with the bat
   CHECK(room.output.quiet);
   CHECK(room.model.kind == sensing::ModelKind::ray);
 }
+
+TEST_CASE("batch: a folder's world with 5 KB of comments before its first statement is run, as show reads it") {
+  const test_cli::TempDir dir("batch_comments");
+  fs::create_directories(dir.path);
+  std::string text;
+  while (text.size() < 5000) text += "# a comment before the room's first statement\n";
+  const std::string room = (dir.path / "commented.room").string();
+  common::write_file_atomically(room, text + "boundary 0 5 0 3\nstart 0.5 0.5 0\ngoal 4 2\n");
+  const app::WorldList all = app::expand_worlds({dir.path.string()}, app::KindChoice::automatic);
+  CHECK(all.worlds == std::vector<std::string>{room});
+  CHECK(all.skipped.empty());
+}
+
+TEST_CASE("batch merge: a quote never closed is refused at the line and column where it opened") {
+  const test_cli::TempDir dir("merge_quote");
+  std::string part = kRowHeader + "\n";
+  const std::string row = "a.txt,maze,,,,,4x4,done,,10,9,,3,100.00,,,,,,\n";
+  part += row + row + "\"b.txt,maze,,,,,4x4,done,,10,9,,3,100.00,,,,,,\n";
+  for (int n = 0; n < 2000; ++n) part += row;  // the record runs on to the end of the text, once
+  CHECK_THROWS_WITH_AS(merge_parts(dir, {part}),
+                       "not a batch CSV row: the quoted field that opens here is never closed", common::InputError);
+  try {
+    app::read_batch_csv_text("p.csv", part);
+    FAIL("no error");
+  } catch (const common::InputError &e) {
+    CHECK(e.diagnostic() == "p.csv:4:1: error: not a batch CSV row: the quoted field that opens here is never closed");
+  }
+}
+
+TEST_CASE("batch merge: a part of NUL bytes is refused at its first byte, not read whole") {
+  const test_cli::TempDir dir("merge_nul");
+  try {
+    merge_parts(dir, {std::string(300'000, '\0')});
+    FAIL("no error");
+  } catch (const common::InputError &e) {
+    CHECK(e.diagnostic().ends_with("part-1.csv:1:1: error: not a batch CSV file: a NUL byte"));
+  }
+}

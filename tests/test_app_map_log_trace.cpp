@@ -7,12 +7,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "common/error.hpp"
+#include "common/input_file.hpp"
 #include "png_reader.hpp"
 #include "app/picture/plain_grid_picture.hpp"
 #include "app/run/run.hpp"
@@ -327,4 +330,22 @@ TEST_CASE("room --model depth: map-log on the run's trace.csv gives the run's gr
     CHECK(occupied > 30);
     CHECK(free_cells > 200);
   }
+}
+
+TEST_CASE("map-log: a log of NUL bytes or one endless line is refused at once, not read whole") {
+  const test_cli::TempDir dir("map_log_limits");
+  std::filesystem::create_directories(dir.path);
+  const std::string file = (dir.path / "log.csv").string();
+  const auto error = [&](const std::string &text) {
+    std::ofstream(file, std::ios::binary) << text;
+    try {
+      test_cli::run({"map-log", file, "--boundary", "0,4,0,4"});
+    } catch (const common::InputError &e) {
+      return e.diagnostic().substr(file.size());
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error(std::string(300'000, '\0')) == ":1:1: error: not a log (CSV) file: a NUL byte");
+  CHECK(error("t,x,y,theta,bump_right,bump_left,bump_front\n" + std::string(common::kMiB + 1, '1')) ==
+        ":2: error: not a log (CSV) file: line 2 is longer than 1 MiB");
 }

@@ -11,6 +11,7 @@
 #include "app/run/run_options.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
+#include "common/input_file.hpp"
 #include "maze/sim/profile.hpp"
 
 namespace {
@@ -121,4 +122,14 @@ TEST_CASE("profile JSON: a run reads its profile file once, and its copies share
   app::RunOptions fresh;
   fresh.robot = file;
   CHECK(app::robot_profile(fresh).lidars.at(0).max_range_m == 7.5);
+}
+
+TEST_CASE("robot profile file: one larger than 1 MiB or holding a NUL byte is refused before it is read whole") {
+  const test_cli::TempDir dir("profile_limits");
+  std::filesystem::create_directories(dir.path);
+  const std::string file = (dir.path / "big.json").string();
+  std::ofstream(file) << std::string(common::kMiB + 1, ' ');
+  CHECK_THROWS_WITH_AS(app::resolve_robot(file), "not a robot profile (JSON) file: more than 1 MiB", common::InputError);
+  std::ofstream(file) << std::string(70'000, '\0');
+  CHECK_THROWS_WITH_AS(app::resolve_robot(file), "not a robot profile (JSON) file: a NUL byte", common::InputError);
 }

@@ -3,12 +3,18 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "cli_runner.hpp"
+#include "common/atomic_file.hpp"
 #include "common/csv.hpp"
+#include "common/error.hpp"
+#include "common/input_file.hpp"
 #include "common/fixed_decimal.hpp"
 #include "common/parse_number.hpp"
 #include "common/random.hpp"
@@ -101,4 +107,43 @@ TEST_CASE("append_fixed and append_int write what fmt writes, byte for byte") {
   common::append_int(ints, std::int64_t{-1234567890123});
   common::append_int(ints, 0);
   CHECK(ints == "-12345678901230");
+}
+
+TEST_CASE("CsvRecords: a quoted field holds a line end; a quote never closed names where it opened") {
+  common::CsvRecords records("a,\"b\nc\",d\r\ne,f\n\"g,h\nx\ny");
+  common::CsvRecord r = records.next();
+  REQUIRE(r.fields.size() == 3);
+  CHECK(r.fields[1].text == "b\nc");
+  CHECK(r.fields[2].text == "d");
+  CHECK(r.line == 1);
+  CHECK_FALSE(r.open_quote);
+  r = records.next();
+  CHECK(r.line == 3);
+  CHECK(r.fields.size() == 2);
+  CHECK_FALSE(r.open_quote);
+  r = records.next();
+  CHECK(r.line == 4);
+  CHECK(r.open_quote == std::pair{4, 1});
+  CHECK(records.done());
+}
+
+TEST_CASE("read_text: a file past its limits is refused as the bytes that break them arrive") {
+  const test_cli::TempDir dir("read_text");
+  std::filesystem::create_directories(dir.path);
+  const std::string file = (dir.path / "t").string();
+  const auto error = [&](const std::string &text, const common::InputLimits &limits) {
+    common::write_file_atomically(file, text);
+    try {
+      return common::read_text(file, "T", limits) == text ? std::string("(read)") : std::string("(other)");
+    } catch (const common::InputError &e) {
+      return e.diagnostic().substr(file.size());
+    }
+  };
+  CHECK(error("ab\ncd\n", {6, 2}) == "(read)");
+  CHECK(error("ab\ncd\ne", {6, 2}) == ": error: not a T file: more than 6 bytes");
+  CHECK(error("ab\ncde\n", {100, 2}) == ":2: error: not a T file: line 2 is longer than 2 bytes");
+  CHECK(error(std::string("ab\nc\0d\n", 7), {100}) == ":2:2: error: not a T file: a NUL byte");
+  CHECK(error(std::string("ab\nc\0d\n", 7), {100, 100, false}) == "(read)");
+  CHECK(common::size_text(common::kMiB) == "1 MiB");
+  CHECK(common::size_text(1024 * common::kMiB) == "1 GiB");
 }

@@ -188,11 +188,10 @@ TEST_CASE("room format: a name ending in a carriage return before a comment lose
 }
 
 TEST_CASE("room format: detected by content, after comments and blank lines") {
-  CHECK(maze::looks_like_room(kRoom));
-  CHECK(maze::looks_like_room("\n\n   # x\nrect 0 0 1 1\n"));
-  CHECK(!maze::looks_like_room("# only a comment\n"));
-  CHECK(!maze::looks_like_room("bondary 0 5 0 3\n"));
   CHECK(maze::detect_format(kRoom, "f") == maze::Format::room);
+  CHECK(maze::detect_format("\n\n   # x\nrect 0 0 1 1\n", "f") == maze::Format::room);
+  CHECK_THROWS_AS(maze::detect_format("# only a comment\n", "f"), common::InputError);
+  CHECK_THROWS_AS(maze::detect_format("bondary 0 5 0 3\n", "f"), common::InputError);
   CHECK(maze::detect_format("o---o\n", "f") == maze::Format::text_map);
   CHECK(maze::format_for_output("x/ROOM.Room") == maze::Format::room);
 }

@@ -5,7 +5,6 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <ostream>
 #include <streambuf>
@@ -32,30 +31,22 @@ class NullBuffer : public std::streambuf {
   std::streamsize xsputn(const char *, std::streamsize n) override { return n; }
 };
 
-// The first bytes of a file (enough for maze::detect_format).
-std::string head_of(const fs::path &path) {
-  std::ifstream file(path, std::ios::binary);
-  std::string head(4096, '\0');
-  file.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(file.gcount()));
-  return head;
-}
-
 // What a file's content is: no world, a maze, or an arena (a room file, the course's XML of
 // obstacles). A file whose format is known but does not read is the format's kind (it is run,
 // to say why).
 enum class Content { none, maze, arena };
 
 Content content_of(const fs::path &path) {
-  const std::string head = head_of(path);
   maze::Format format{};
   try {
-    format = maze::detect_format(head, path.string());
+    format = maze::read_world_format(path.string());  // as far as telling it takes, as show tells it
   } catch (const common::InputError &) {
     return Content::none;
   }
   try {
-    const std::string text = format == maze::Format::xml ? maze::read_file(path.string()) : head;  // XML: the whole
+    if (format == maze::Format::room) return Content::arena;
+    if (format != maze::Format::xml) return Content::maze;
+    const std::string text = maze::read_world_file(path.string()).text;  // XML: the whole tells
     return maze::holds_arena(text, format, path.string()) ? Content::arena : Content::maze;
   } catch (const common::InputError &) {
     return Content::maze;

@@ -153,6 +153,11 @@ std::vector<std::string> shard_of(const std::vector<std::string> &worlds, Shard 
 // "FILE:LINE:COL: error: ..."), and a part given twice: the same file again (its real path),
 // or one holding the same rows as an earlier one.
 std::vector<BatchRow> read_batch_csvs(const std::vector<std::string> &files);
+// One part's rows from its text, as read_batch_csvs reads a file's (its errors but those of
+// reading a file or of a part given twice). A quote never closed is refused where it opened
+// ("FILE:LINE:COL: error: not a batch CSV row: the quoted field that opens here is never
+// closed"), in time proportional to the text.
+std::vector<BatchRow> read_batch_csv_text(const std::string &file, std::string_view text);
 
 // 130 when interrupted, 0 when every run succeeded, 2 when every world was bad input, else 1.
 int batch_exit_status(const std::vector<BatchItem> &items);

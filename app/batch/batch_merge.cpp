@@ -1,9 +1,8 @@
 // batch --shard K/N and batch merge (see app/batch/batch.hpp).
 
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/csv.hpp"
+#include "common/input_file.hpp"
 #include "common/parse_number.hpp"
 #include "app/batch/batch.hpp"
 #include "common/error.hpp"
@@ -69,14 +69,10 @@ BatchRow row_in(const PartLayout &layout, const std::vector<common::CsvField> &f
   return row;
 }
 
-// The whole file; a UTF-8 byte order mark before the header is dropped, CRLF line ends read as LF.
-std::string part_text(const std::string &file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read the file");
-  std::ostringstream text;
-  text << in.rdbuf();  // nothing for an empty file: its header is then missing
-  std::string s = text.str();
-  if (std::string_view(s).starts_with(kUtf8Bom)) s.erase(0, kUtf8Bom.size());
+// A part's text as its rows are read: a UTF-8 byte order mark before the header dropped,
+// CRLF line ends read as LF.
+std::string lf_text(std::string_view s) {
+  if (s.starts_with(kUtf8Bom)) s.remove_prefix(kUtf8Bom.size());
   std::string lf;
   lf.reserve(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -85,29 +81,39 @@ std::string part_text(const std::string &file) {
   return lf;
 }
 
-// The rows of one part's text.
+// The whole file (within common::kCsvLimits), as lf_text has it.
+std::string part_text(const std::string &file) {
+  try {
+    // The header is looked at as soon as it has come: a file that is no batch CSV is not read on.
+    const auto header = [&file](std::string_view line) {
+      if (line.ends_with('\r')) line.remove_suffix(1);
+      layout_of(file, lf_text(line));
+    };
+    return lf_text(common::read_text(file, "batch CSV", common::kCsvLimits, header));  // "" when empty: no header
+  } catch (const common::InputError &e) {
+    if (!e.where().file.empty()) throw;  // not a batch CSV
+    throw common::InputError(common::SourceLocation{file, 0, 0}, "cannot read the file");
+  }
+}
+
+// The rows of one part's text. A quoted field may hold a line end (a path with one): its
+// record goes on on the next line; a quote never closed is named where it opened.
 void read_rows(const std::string &file, const std::string &text, std::vector<BatchRow> &rows) {
-  std::istringstream in(text);
-  std::string line;
-  if (!std::getline(in, line)) line.clear();
-  const PartLayout layout = layout_of(file, line);
-  for (int number = 2; std::getline(in, line); ++number) {
-    // A quoted field may hold a newline (a path with one): the record goes on on the next line.
-    const RowPlace at{file, number};
-    std::optional<std::vector<common::CsvField>> fields = common::csv_fields(line);
-    std::string more;
-    while (!fields && std::getline(in, more)) {
-      ++number;
-      line += '\n';
-      line += more;
-      fields = common::csv_fields(line);
+  const std::size_t header_end = std::min(text.find('\n'), text.size());
+  const PartLayout layout = layout_of(file, text.substr(0, header_end));
+  common::CsvRecords records(std::string_view(text).substr(std::min(header_end + 1, text.size())), 2);
+  while (!records.done()) {
+    const common::CsvRecord record = records.next();
+    if (record.open_quote) {
+      throw common::InputError(common::SourceLocation{file, record.open_quote->first, record.open_quote->second},
+                               "not a batch CSV row: the quoted field that opens here is never closed");
     }
-    if (!fields || fields->size() != layout.names.size()) {
-      throw common::InputError(common::SourceLocation{file, at.line, 0},
+    if (record.fields.size() != layout.names.size()) {
+      throw common::InputError(common::SourceLocation{file, record.line, 0},
                                fmt::format("not a batch CSV row ({} fields: {})", layout.names.size(),
                                            layout.older ? layout.older->text : std::string_view(batch_csv_header())));
     }
-    rows.push_back(row_in(layout, *fields, at));
+    rows.push_back(row_in(layout, record.fields, RowPlace{file, record.line}));
   }
 }
 
@@ -159,6 +165,12 @@ std::vector<BatchRow> read_batch_csvs(const std::vector<std::string> &files) {
     refuse_repeated_part(files, texts, i);
     read_rows(files[i], texts[i], rows);
   }
+  return rows;
+}
+
+std::vector<BatchRow> read_batch_csv_text(const std::string &file, std::string_view text) {
+  std::vector<BatchRow> rows;
+  read_rows(file, lf_text(text), rows);
   return rows;
 }
 

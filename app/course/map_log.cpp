@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/error.hpp"
+#include "common/input_file.hpp"
 #include "common/parse_number.hpp"
 #include "common/standard_streams.hpp"
 
@@ -39,7 +39,7 @@ void check_sensor_options(const MapLogInput &input, sensing::BumpDepthSensor sen
 }
 
 // The fields of one line of the log (common/csv.hpp), blanks around each removed.
-std::vector<common::CsvField> split_fields(const std::string &file, int number, const std::string &line) {
+std::vector<common::CsvField> split_fields(const std::string &file, int number, std::string_view line) {
   std::optional<std::vector<common::CsvField>> fields = common::csv_fields(line);
   if (!fields) throw common::InputError({file, number, 1}, "a quoted field is not closed on its line");
   for (common::CsvField &f : *fields) f.text = std::string(common::trim_blanks(f.text));
@@ -130,11 +130,30 @@ sensing::PoseStep parse_step(const std::string &file, int line, const std::vecto
   return s;
 }
 
+// The log's text (within common::kCsvLimits: /dev/zero or an endless line fails at once).
+std::string log_text(const std::string &path) {
+  try {
+    return common::read_text(path, "log (CSV)", common::kCsvLimits);
+  } catch (const common::InputError &e) {
+    if (!e.where().file.empty()) throw;  // not a log
+    throw common::InputError(fmt::format("cannot read {}", path));
+  }
+}
+
+// The next line of `text` from `offset` (without its "\n"); false at the end.
+bool next_line(std::string_view text, std::size_t &offset, std::string_view &line) {
+  if (offset >= text.size()) return false;
+  const std::size_t end = std::min(text.find('\n', offset), text.size());
+  line = text.substr(offset, end - offset);
+  offset = end + 1;
+  return true;
+}
+
 Log read_log(const MapLogInput &input) {
-  std::ifstream in(input.log_path);
-  if (!in) throw common::InputError(fmt::format("cannot read {}", input.log_path));
-  std::string line;
-  if (!std::getline(in, line)) throw common::InputError({input.log_path, 0, 0}, "the log is empty; expected a header line");
+  const std::string text = log_text(input.log_path);
+  std::size_t offset = 0;
+  std::string_view line;
+  if (!next_line(text, offset, line)) throw common::InputError({input.log_path, 0, 0}, "the log is empty; expected a header line");
   Columns columns;
   for (const common::CsvField &f : split_fields(input.log_path, 1, line)) columns.names.push_back(f.text);
   Log log;
@@ -149,7 +168,7 @@ Log read_log(const MapLogInput &input) {
                                              : fmt::format("missing column '{}' (or trace.csv's '{}')", name, alias));
     }
   }
-  for (int number = 2; std::getline(in, line); ++number) {
+  for (int number = 2; next_line(text, offset, line); ++number) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const auto fields = split_fields(input.log_path, number, line);
     if (fields.size() != columns.names.size()) {

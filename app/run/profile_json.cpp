@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
+#include "common/input_file.hpp"
 #include "maze/world/world.hpp"
 
 namespace app {
@@ -307,7 +308,7 @@ bool names_a_profile_file(std::string_view robot) {
 
 RobotProfile resolve_robot(const std::string &robot) {
   if (!names_a_profile_file(robot)) return maze::sim::find_profile(robot);
-  return profile_from_json(maze::read_file(robot), robot);
+  return profile_from_json(common::read_text(robot, "robot profile (JSON)", common::kRobotProfileLimits), robot);
 }
 
 }  // namespace app

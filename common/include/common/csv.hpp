@@ -7,10 +7,12 @@
 //                                doubled; any other field is written as it is
 //
 // A reader also takes CRLF line ends (the CR is dropped) and quoted fields anywhere.
+// csv_fields reads one line; CsvRecords reads a text whose quoted fields may hold line ends.
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace common {
@@ -54,5 +56,61 @@ inline std::optional<std::vector<CsvField>> csv_fields(std::string_view line) {
   if (quoted) return std::nullopt;
   return fields;
 }
+
+// One record of a CSV text (CsvRecords): its fields, the line it starts on, and, when the
+// text ends inside a quoted field, the line and column (from 1) where that quote opened.
+struct CsvRecord {
+  std::vector<CsvField> fields;
+  int line = 1;
+  std::optional<std::pair<int, int>> open_quote;
+};
+
+// The records of a CSV text one after another. A record ends at a "\n" outside quotes (a
+// quoted field may hold one: a path with a line end), its CR before it dropped; each byte is
+// looked at once, so a quote never closed costs no more than the text's length: its record
+// runs to the end of the text and names where the quote opened. A field's column counts
+// from the start of the line it starts on.
+class CsvRecords {
+ public:
+  explicit CsvRecords(std::string_view text, int first_line = 1) : text_(text), line_(first_line) {}
+  bool done() const { return pos_ >= text_.size(); }
+
+  CsvRecord next() {
+    CsvRecord record{std::vector<CsvField>(1), line_, std::nullopt};
+    bool quoted = false;
+    std::size_t line_start = pos_;
+    for (; pos_ < text_.size(); ++pos_) {
+      const char c = text_[pos_];
+      const bool last = pos_ + 1 == text_.size();
+      if (c == '\n') {
+        ++line_;
+        line_start = pos_ + 1;
+        if (!quoted) {
+          ++pos_;
+          record.open_quote.reset();
+          return record;
+        }
+        record.fields.back().text += c;
+      } else if (quoted && c == '"' && !last && text_[pos_ + 1] == '"') {
+        record.fields.back().text += '"';
+        ++pos_;
+      } else if (c == '"') {
+        quoted = !quoted;
+        if (quoted) record.open_quote = std::pair{line_, static_cast<int>(pos_ - line_start) + 1};
+      } else if (c == ',' && !quoted) {
+        record.fields.push_back(CsvField{"", static_cast<int>(pos_ - line_start) + 2});
+      } else if (!(c == '\r' && !quoted && (last || text_[pos_ + 1] == '\n'))) {
+        record.fields.back().text += c;
+      }
+    }
+    if (!quoted) record.open_quote.reset();
+    return record;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  int line_;
+};
 
 }  // namespace common

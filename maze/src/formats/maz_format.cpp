@@ -20,15 +20,6 @@ common::SourceLocation at_byte(const std::string &file, std::size_t byte) {
 
 }  // namespace
 
-bool looks_like_maz(std::string_view text) {
-  const std::string_view head = text.substr(0, kMazBytes);
-  // Cell (0,0) is the south-west corner: walled at least to the west and south, never 0 (so a
-  // stream of zeros, /dev/zero, is no maze at all).
-  if (head.empty() || head[0] == '\0') return false;
-  const auto wall_bytes = std::count_if(head.begin(), head.end(), [](char c) { return static_cast<unsigned char>(c) <= 0x0F; });
-  return static_cast<std::size_t>(wall_bytes) * 4 >= head.size() * 3;
-}
-
 Maze read_maz(std::string_view text, const std::string &file) {
   if (text.size() != kMazBytes) {
     throw common::InputError(common::SourceLocation{file, 0, 0},

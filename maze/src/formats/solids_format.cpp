@@ -21,20 +21,11 @@ namespace maze {
 
 namespace {
 
-constexpr std::string_view kKeywords[] = {"name", "boundary", "rect", "wall", "start", "goal"};
-
 // The statement part of a line (before '#', without a trailing '\r').
 std::string_view statement_of(std::string_view line) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
   return line;
-}
-
-bool is_keyword(std::string_view word) {
-  for (const std::string_view k : kKeywords) {
-    if (word == k) return true;
-  }
-  return false;
 }
 
 struct RoomParser {
@@ -135,19 +126,6 @@ SolidStatement solid_statement(const Obstacle &o) {
 }
 
 }  // namespace
-
-bool looks_like_room(std::string_view text) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  while (!text.empty()) {
-    const std::size_t end = text.find('\n');
-    const std::string_view line = text.substr(0, end);
-    const std::vector<LineToken> tokens = line_tokens(statement_of(line));
-    if (!tokens.empty()) return is_keyword(tokens.front().text);
-    if (end == std::string_view::npos) break;
-    text.remove_prefix(end + 1);
-  }
-  return false;
-}
 
 // A wall statement's obstacle; refused (common::InputError) where what is written of it would
 // not read back.

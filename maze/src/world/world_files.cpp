@@ -26,12 +26,11 @@
 #include "maze/formats/wbt_format.hpp"
 #include "maze/formats/xml_solids.hpp"
 #include "maze/formats/xml_format.hpp"
+#include "maze/world/format_detector.hpp"
 
 namespace maze {
 
 namespace {
-
-constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
 
 common::InputError cannot(std::string_view what, const std::string &path, int error) {
   return common::InputError(fmt::format("cannot {} {}: {}", what, path, std::strerror(error)));
@@ -92,26 +91,7 @@ std::string format_name(Format format) {
 
 
 Format detect_format(std::string_view text, const std::string &file) {
-  if (text.empty()) throw common::InputError(common::SourceLocation{file, 0, 0}, "the file is empty; expected a maze");
-  if (looks_like_maz(text)) return Format::maz;
-  std::string_view body = text;
-  if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
-  if (!body.empty() && (body[0] == 'o' || body[0] == '+')) return Format::text_map;
-  if (looks_like_room(body)) return Format::room;
-  const std::size_t first = body.find_first_not_of(" \t\r\n");
-  if (first != std::string_view::npos) {
-    if (body[first] == '<') return Format::xml;
-    if (body[first] >= '0' && body[first] <= '9') return Format::num;
-  }
-  if (body.starts_with("#VRML_SIM")) {
-    throw common::InputError(common::SourceLocation{file, 1, 1},
-                             "a Webots .wbt world, which maze_mapper writes but does not read: use the text map, "
-                             "num or XML world it was made from");
-  }
-  throw common::InputError(common::SourceLocation{file, 1, 1},
-                           "cannot tell the format: expected a text map (first line 'o---o...'), num lines "
-                           "'X Y N E S W', XML '<world>', a room file ('boundary XS XE YS YE', 'rect ...') or a 256-byte "
-                           "binary .maz");
+  return *FormatDetector(file).look(text, true);  // at the end the bytes always tell, or it throws
 }
 
 Maze read_world(std::string_view text, const std::string &file) {
@@ -139,17 +119,17 @@ WorldText read_world_file(const std::string &path) {
   std::string text;
   struct stat status {};
   if (::fstat(file.fd(), &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0) {
-    text.reserve(std::min(static_cast<std::size_t>(status.st_size), kMaxFileBytes) + 1);  // no doubling
+    text.reserve(std::min(static_cast<std::size_t>(status.st_size), common::kMaxWorldBytes) + 1);  // no doubling
   }
+  FormatDetector detector(path);
   std::optional<Format> format;
   char buffer[1 << 16];
   for (;;) {
     const std::size_t n = file.read(buffer, sizeof buffer);
+    if (n > common::kMaxWorldBytes - text.size()) throw cannot("read", path, EFBIG);
     const std::size_t start = text.size();
-    text.append(buffer, n);
-    if (!format && (n == 0 || text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string::npos)) {
-      format = detect_format(text, path);  // throws when the first bytes are no format at all
-    }
+    common::append_within(text, buffer, n, common::kMaxWorldBytes);
+    if (!format) format = detector.look(text, n == 0);  // throws when the first meaningful line is no format
     if (format == Format::maz) {
       if (n == 0 || text.size() > kMazBytes) return {std::move(text), *format};  // read_maz says what is wrong with the size
       continue;
@@ -157,8 +137,19 @@ WorldText read_world_file(const std::string &path) {
     if (const std::size_t nul = text.find('\0', start); nul != std::string::npos) {
       throw common::InputError(location_of(text, nul, path), "a NUL byte: a maze file is text");
     }
-    if (n == 0) return {std::move(text), format ? *format : detect_format(text, path)};
-    if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
+    if (n == 0) return {std::move(text), *format};
+  }
+}
+
+Format read_world_format(const std::string &path) {
+  common::InputFile file(path);
+  FormatDetector detector(path);
+  std::string text;
+  char buffer[1 << 16];
+  for (;;) {
+    const std::size_t n = file.read(buffer, sizeof buffer);
+    text.append(buffer, n);
+    if (const std::optional<Format> format = detector.look(text, n == 0)) return *format;
   }
 }
 
@@ -278,8 +269,8 @@ std::string read_file(const std::string &path) {
   for (;;) {
     const std::size_t n = file.read(buffer, sizeof buffer);
     if (n == 0) return text;
-    text.append(buffer, n);
-    if (text.size() > kMaxFileBytes) throw cannot("read", path, EFBIG);
+    if (n > common::kMaxWorldBytes - text.size()) throw cannot("read", path, EFBIG);
+    common::append_within(text, buffer, n, common::kMaxWorldBytes);
   }
 }
 

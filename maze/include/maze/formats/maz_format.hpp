@@ -21,11 +21,6 @@ namespace maze {
 inline constexpr int kMazCells = 16;
 inline constexpr std::size_t kMazBytes = 256;
 
-// Whether text looks like a binary maze (its first byte, the corner cell, is not 0 and most of
-// its first bytes are 0x00 ... 0x0F), as format detection asks: then read_maz reads it or says
-// what is wrong.
-bool looks_like_maz(std::string_view text);
-
 // Throws common::InputError with the place of the first fault: a size other than 256 bytes,
 // a byte with bits above 0x0F, an open edge, two cells that disagree about the wall between
 // them.

@@ -32,8 +32,8 @@
 
 namespace maze {
 
-// Whether the text reads as a room file (the first statement is a keyword above).
-bool looks_like_room(std::string_view text);
+// The statements' keywords: a room file's first statement starts with one (format_detector.hpp).
+inline constexpr std::string_view kRoomKeywords[] = {"name", "boundary", "rect", "wall", "start", "goal"};
 
 // Reads a room file; `file` names it in messages. Throws common::InputError with the place
 // of the first fault. The arena is not validated (validate_arena) and, without a boundary

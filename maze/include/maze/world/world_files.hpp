@@ -15,9 +15,9 @@ namespace maze {
 // room: an arena's plain format (solids_format.hpp).
 enum class Format { text_map, num, xml, wbt, maz, room };
 
-// The input format by content: '<' first (after blanks) is XML, 'o' or '+' first a text map,
-// a digit first a num file, a room statement first (after blank and '#' comment lines) a room
-// file. Throws common::InputError when it is none of these.
+// The input format by content, by the rule of format_detector.hpp (a .maz's first bytes, else
+// the first line not blank or a comment: '<' XML, 'o' or '+' a text map, a digit num, a room
+// keyword a room file). Throws common::InputError when it is none of these.
 Format detect_format(std::string_view text, const std::string &file);
 
 // Reads a grid maze from text in any input format, validated. Throws common::InputError.
@@ -30,11 +30,16 @@ struct WorldText {
   std::string text;
   Format format = Format::text_map;
 };
-// A world file's text, read in proportion: the format is told from the first bytes that are
-// not blank (so an image or /dev/zero fails at once), reading stops at a NUL byte (an
-// error: no text format holds one) and past a .maz's 256 bytes. Throws common::InputError;
-// common::Interrupted when a stop signal ends a wait (a FIFO's writer, common/input_file.hpp).
+// A world file's text, read in proportion: the format is told as the bytes arrive, as soon
+// as they tell it (format_detector.hpp: an image or /dev/zero fails at once, a file of blank
+// lines after its first 1 MiB), reading stops at a NUL byte (an error: no text format holds
+// one), past a .maz's 256 bytes and past 1 GiB (common::kMaxWorldBytes). Throws
+// common::InputError; common::Interrupted when a stop signal ends a wait (a FIFO's writer,
+// common/input_file.hpp).
 WorldText read_world_file(const std::string &path);
+// The format of a world file, reading only as much of it as telling it takes (the rule and
+// errors of read_world_file).
+Format read_world_format(const std::string &path);
 // read_world_file's text alone.
 std::string read_world_text(const std::string &path);
 
