@@ -67,6 +67,16 @@ add_golden_test(demo_pie_default ARGS demo pie)
 add_golden_test(demo_cone_default ARGS demo cone)
 add_golden_test(demo_cone_sonar_pose ARGS demo cone --sensor sonar --pose 0.5m,0.25m,30 --range 0.8)
 add_golden_test(demo_pie_bad_readings STATUS 2 STDERR ARGS demo pie --readings 1,2)
+
+# The localization lab: Task 1's trilateration (the course's distances; a pose with noise)
+# and Task 2's grid Bayes filter on the shipped 5 x 5 maze, its particle filter and a
+# correction worked by hand.
+add_golden_test(demo_trilaterate_default ARGS demo trilaterate)
+add_golden_test(demo_trilaterate_pose_noise ARGS demo trilaterate --pose 0.7,-1.3 --noise 0.1 --seed 4)
+add_golden_test(demo_localize_default ARGS demo localize)
+add_golden_test(demo_localize_explain ARGS demo localize --start 13 --explain)
+add_golden_test(demo_localize_particles ARGS demo localize --particles)
+add_golden_test(demo_localize_bad_sensor STATUS 2 STDERR ARGS demo localize --sensor 0.8,0.3,0.4,0.6)
 add_golden_test(map_log_room_bump ARGS map-log tests/data/logs/room_bump.csv --cells 12,12 --boundary 0,6,0,6 --bump-radius 0.5)
 add_golden_test(map_log_room_depth ARGS map-log tests/data/logs/room_depth.csv --cells 12,12 --boundary 0,6,0,6)
 add_golden_test(map_log_room_depth_25_base_e ARGS map-log tests/data/logs/room_depth.csv --cells 25,25 --boundary 0,6,0,6 --log-base e)

@@ -229,10 +229,10 @@ TEST_CASE("mms batch: a row a maze; crashes, hangs, garbage and early exits fail
   CHECK(ok == 1);
   CHECK(app::mms_batch_exit_status(items) == 1);
   const std::string table = app::format_mms_batch_table(items, 0.0, list.skipped);
-  CHECK(table.find("total: 8 worlds, 1 ok, 7 failed; goal reached 1 of 8") != std::string::npos);
+  CHECK(table.find("total: 9 worlds, 1 ok, 8 failed; goal reached 1 of 9") != std::string::npos);
   const std::string csv = app::format_mms_batch_csv(items);
   CHECK(csv.starts_with(app::batch_csv_header() + "\n"));
-  CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 10);
   // The rows are the one batch row's: batch merge reads them back as mms rows, the same.
   const test_cli::TempDir dir("mms_batch_csv");
   fs::create_directories(dir.path);

@@ -73,6 +73,8 @@ void add_demo_command(CLI::App &cli, CommandContext &context) {
   add_demo_1d(*demo, context);
   add_demo_pie(*demo, context);
   add_demo_cone(*demo, context);
+  add_demo_trilaterate(*demo, context);
+  add_demo_localize(*demo, context);
   demo->callback([demo, &context] {
     if (!demo->get_subcommands().empty()) return;
     list_demos(*demo, std::cout);

@@ -234,6 +234,11 @@ const std::map<std::string, std::string, std::less<>> &examples() {
                    "  maze_mapper demo pie --pose 1.5,2.5,270 --png pie.png"},
       {"demo cone", "  maze_mapper demo cone\n"
                     "  maze_mapper demo cone --sensor sonar --pose 0,0,90"},
+      {"demo trilaterate", "  maze_mapper demo trilaterate --distances 3.2,4.1,2.9\n"
+                           "  maze_mapper demo trilaterate --pose 0.7,-1.3 --noise 0.1 --seed 4"},
+      {"demo localize", "  maze_mapper demo localize\n"
+                        "  maze_mapper demo localize --start 13 --explain\n"
+                        "  maze_mapper demo localize --particles --seed 7"},
       {"explain", "  maze_mapper explain\n"
                   "  maze_mapper explain --p-free 0.2 --p-occ 0.7 --log-base 10"},
       {"map-log", "  maze_mapper map-log log.csv --boundary -2,2,-2,2\n"

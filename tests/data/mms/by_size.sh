@@ -1,6 +1,6 @@
 #!/bin/sh
 # Misbehaves by the maze's width, for a batch over worlds/: 4 crashes (SIGSEGV), 8 hangs,
-# 16 writes garbage, 32 gives up (status 3); 6 (the open room) drives to the centre and exits.
+# 16 writes garbage, 32 and 5 give up (status 3); 6 (the open room) drives to the centre and exits.
 echo mazeWidth
 read -r width
 case "$width" in
