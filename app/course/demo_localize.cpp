@@ -127,6 +127,18 @@ std::string move_robot(const Setup &s, Robot &r, std::size_t side, common::Rng *
   return fmt::format("the robot goes from cell {} to cell {}", from + 1, r.cell + 1);
 }
 
+// A step's move: the side chosen, the robot moved (with rng: failing with 1 - p) and the move
+// written to `text`; nullopt, with "no move left", when there is none.
+std::optional<std::size_t> take_move(const Setup &s, Robot &r, common::Rng *rng, std::string &text) {
+  const std::optional<std::size_t> side = next_move(s, r);
+  if (!side) {
+    text += "no move left\n";
+    return std::nullopt;
+  }
+  text += fmt::format("move: {} ({})\n", "NESW"[*side], move_robot(s, r, *side, rng));
+  return side;
+}
+
 // The starts from which the robot's moves, every one succeeding, read the walls it read.
 std::vector<int> alike_starts(const loc::WallMap &map, const Robot &r) {
   std::vector<int> alike;
@@ -196,13 +208,11 @@ DemoLocalizeOutput run_grid(const Setup &s) {
   for (int step = 0;; ++step) {
     o.text += fmt::format("\nstep {}\n", step);
     if (step > 0) {
-      const std::optional<std::size_t> side = next_move(s, r);
+      const std::optional<std::size_t> side = take_move(s, r, rng.get(), o.text);
       if (!side) {
         ran_out = true;
-        o.text += "no move left\n";
         break;
       }
-      o.text += fmt::format("move: {} ({})\n", "NESW"[*side], move_robot(s, r, *side, rng.get()));
       belief = loc::predict(s.map, belief, *side, s.in->motion);
       o.text += "after prediction:\n" + belief_grid(s.map, belief);
     }
@@ -235,13 +245,11 @@ DemoLocalizeOutput run_particles(const Setup &s) {
   for (int step = 0;; ++step) {
     o.text += fmt::format("\nstep {}\n", step);
     if (step > 0) {
-      const std::optional<std::size_t> side = next_move(s, r);
+      const std::optional<std::size_t> side = take_move(s, r, robot_rng.get(), o.text);
       if (!side) {
         ran_out = true;
-        o.text += "no move left\n";
         break;
       }
-      o.text += fmt::format("move: {} ({})\n", "NESW"[*side], move_robot(s, r, *side, robot_rng.get()));
       loc::move(particles, s.map, *side, s.in->motion, rng);
       o.text += "after motion:\n" + count_grid(s.map, particles.counts(s.map.cells()));
     }
