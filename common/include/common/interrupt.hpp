@@ -11,7 +11,7 @@
 //     returns; interrupted_exit_status() is then its exit status. A signal that comes once
 //     the guard is gone (the output phase that follows) ends the process as above.
 //
-// Everything the handler does is async-signal-safe: atomics, unlink(2), write(2), _exit(2).
+// Everything the handler does is async-signal-safe: atomics, poll(2), unlink(2), write(2), _exit(2).
 
 #include <poll.h>
 #include <signal.h>
@@ -66,9 +66,6 @@ inline void write_stderr(const char *text) {
   (void)ignored;
 }
 
-// Removes every registered temporary, says why on standard error and exits with 128 + the
-// signal: the handler's default, and what a wait that cannot end on its own does once a stop
-// signal is recorded (common/stdout_buffer.hpp). Async-signal-safe.
 // Removes every registered temporary; true when one was removed. Async-signal-safe.
 inline bool remove_temporaries() {
   bool removed = false;
@@ -78,6 +75,9 @@ inline bool remove_temporaries() {
   return removed;
 }
 
+// Removes every registered temporary, says why on standard error and exits with 128 + the
+// signal: the handler's default, and what a wait that cannot end on its own does once a stop
+// signal is recorded (common/stdout_buffer.hpp). Async-signal-safe.
 [[noreturn]] inline void end_process_for(int signal_number) {
   const bool removed = remove_temporaries();
   write_stderr("\nerror: interrupted by ");
