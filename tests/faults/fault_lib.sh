@@ -1,6 +1,15 @@
-# The fault suites' shared steps (sourced): a case's start and failure, waits with a bound,
-# and what "whole" means for a file (whole_outputs.sh). The sourcing script sets `source_dir`,
-# `scratch` (a scratch folder), `failures` and `count` (0) before its first case.
+# The fault suites' shared steps (sourced by a suite run as SUITE PROGRAM SOURCE_DIR): the
+# program and source folder from the suite's arguments (the working folder then SOURCE_DIR),
+# a scratch folder removed at exit, a case's start and failure, waits with a bound, and what
+# "whole" means for a file (whole_outputs.sh).
+program=$1
+source_dir=$2
+cd "$source_dir" || exit 1
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+failures=0
+count=0
+
 fail() {
   failures=$((failures + 1))
   printf 'FAIL: %s: %s\n' "$case_name" "$1"

@@ -7,15 +7,7 @@
 # files it has written), not after a guessed sleep, except the batch case (see there).
 #   usage: run_faults.sh PROGRAM SOURCE_DIR
 set -u
-program=$1
-source_dir=$2
-cd "$source_dir" || exit 1
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-failures=0
-count=0
-
-. "$source_dir/tests/faults/fault_lib.sh"
+. "$2/tests/faults/fault_lib.sh"  # program, source_dir, the scratch folder, the case steps
 
 lab=worlds/lab4x4.txt
 "$program" generate 24x24 --seed 3 -o "$scratch/maze24.txt" || exit 1

@@ -5,15 +5,7 @@
 # a run cannot own are refused before the robot moves, untouched.
 #   usage: stream_faults.sh PROGRAM SOURCE_DIR
 set -u
-program=$1
-source_dir=$2
-cd "$source_dir" || exit 1
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-failures=0
-count=0
-
-. "$source_dir/tests/faults/fault_lib.sh"
+. "$2/tests/faults/fault_lib.sh"  # program, source_dir, the scratch folder, the case steps
 
 lab=worlds/lab4x4.txt
 "$program" generate 160x160 --seed 2 -o "$scratch/maze160.txt" || exit 1
