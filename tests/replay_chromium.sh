@@ -7,7 +7,8 @@
 # not open at the start, on a maze's page with a boundary band or without room for landmarks
 # on its corners, on a page that loads anything from elsewhere, on a status line or key
 # help cut in a 1024 x 768 or a 1920 x 1080 window, and on a blank screenshot (png_spread).
-# #frame=N then #frame=0 seeks on and back (the path that redraws from nothing).
+# #frame=N then #frame=0 seeks on and back (the path that redraws from nothing). A run with
+# --localize shows its belief in the panel.
 # Skips (exit 77) when chromium is not installed, unless MAZE_MAPPER_REQUIRE_CHROMIUM is set
 # (.ci/run sets it): then a missing chromium fails.
 # SCREENSHOT_DIR, when set, receives the screenshots (maze-1024x768.png, maze-1920x1080.png).
@@ -64,4 +65,13 @@ now_coverage=$(sed -n 's/.*<dd id="now-coverage">\([0-9.]*\)%.*/\1/p' "$dir/dom.
 awk -v c="$now_coverage" 'BEGIN { exit !(c > 0 && c < 100) }' || fail "coverage at move 682 is '$now_coverage', not part of the run's"
 grep -q '<dd id="now-visited">[1-9][0-9]* of 4096 cells</dd>' "$dir/dom.html" || fail "no cells visited at move 682"
 echo "64x64 replay at 1280x900: stage ${view_w}x${view_h}, move 682 of $big_moves, coverage $now_coverage%, zoom 3.375"
+# run --localize: the panel shows the filter's most likely cell at each frame, as the run
+# printed it at that move.
+"$program" run "$(dirname "$0")/../worlds/loc5x5.txt" --localize --start 2,2 --no-trace --out "$dir/loc" \
+  > "$dir/loc.out" || fail "the run with --localize failed"
+printed=$(grep -A 18 '^localize: move 4 ' "$dir/loc.out" | sed -n 's/^most likely: \(cell [0-9]* ([0-9.]*)\)$/\1/p')
+[ -n "$printed" ] || fail "the run with --localize printed no belief at move 4"
+load_page "file://$dir/loc/replay.html#frame=4" "with --localize at move 4"
+grep -q "<dd id=\"now-belief\">$printed</dd>" "$dir/dom.html" || fail "the panel does not show the belief $printed at move 4"
+grep -q '<li id="legend-belief">' "$dir/dom.html" || fail "no legend of the belief"
 echo "replay.html in chromium: ok"

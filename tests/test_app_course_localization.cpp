@@ -1,4 +1,4 @@
-// The localization lab's arithmetic (app/course/localization.hpp) and its two demos: the
+// The localization lab's arithmetic (app/run/localization.hpp) and its two demos: the
 // closed-form trilateration, the cell scores, the grid filter's predict and correct, the
 // particle filter's draws, and the runs over every start of the shipped 5 x 5 world.
 
@@ -10,11 +10,11 @@
 
 #include "app/course/demo_localize.hpp"
 #include "app/course/demo_trilaterate.hpp"
-#include "app/course/localization.hpp"
+#include "app/run/localization.hpp"
 #include "common/error.hpp"
 #include "maze/world/world.hpp"
 
-namespace course_loc = app::course::loc;
+namespace course_loc = app::loc;
 
 namespace {
 

@@ -114,6 +114,7 @@ std::set<std::string> table_flags() {
   collect_flags<maze::sim::SimulationOptions>(flags);
   collect_flags<app::PlanOptions>(flags);
   collect_flags<app::OutputOptions>(flags);
+  collect_flags<app::LocalizationOptions>(flags);
   flags.erase("");
   return flags;
 }
@@ -172,6 +173,7 @@ TEST_CASE("option fields: each bound field sets what the echo shows under its ke
   check_bound_fields_echo<maze::sim::SimulationOptions>();
   check_bound_fields_echo<app::PlanOptions>();
   check_bound_fields_echo<app::OutputOptions>();
+  check_bound_fields_echo<app::LocalizationOptions>();
 }
 
 TEST_CASE("option fields: a table's own parse refuses what it does not read, in an InputError") {
@@ -183,6 +185,7 @@ TEST_CASE("option fields: a table's own parse refuses what it does not read, in 
   check_parses_refuse_wrong_words<maze::sim::SimulationOptions>();
   check_parses_refuse_wrong_words<app::PlanOptions>();
   check_parses_refuse_wrong_words<app::OutputOptions>();
+  check_parses_refuse_wrong_words<app::LocalizationOptions>();
 }
 
 TEST_CASE("run's parse-only command line checks values as the program does") {

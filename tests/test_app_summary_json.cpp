@@ -65,6 +65,7 @@ TEST_CASE("summary.json: every key of the printed summary, on runs that print th
       {"--strategy", "floodfill", "--speed-run"},
       {"--strategy", "floodfill", "--threshold", "0.2", "--plan-to", "0,0"},
       {"--model", "bump", "--log-base", "10", "--threshold", "-0.5", "--max-steps", "2000"},
+      {"--localize", "--motion", "0.9"},
   };
   std::vector<std::string> seen;
   for (const std::vector<std::string> &args : runs) {
@@ -80,7 +81,7 @@ TEST_CASE("summary.json: every key of the printed summary, on runs that print th
   }
   // The runs above did print the optional keys.
   for (const char *key : {"threshold", "goal", "shortest_path", "plan", "plan_length", "search", "speed_run",
-                          "speed_run_turns"}) {
+                          "speed_run_turns", "localization"}) {
     CAPTURE(key);
     CHECK(std::find(seen.begin(), seen.end(), key) != seen.end());
   }

@@ -53,6 +53,7 @@ void add_run_only_options(CLI::App &run, RunOptions &o, ColorChoice &color) {
   add_field_option(run, o.output, "--animate");
   add_width_options(run, o);
   add_field_options(run, o.output, {"--fps", "--speed", "--step"});
+  add_field_options(run, o.localize, {"--localize", "--sensor", "--motion", "--localized"});
 }
 
 void run_in_terminal(const RunOptions &options, CommandContext &context) {

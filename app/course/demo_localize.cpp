@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "app/course/demo_localize_text.hpp"
-#include "app/course/localization.hpp"
+#include "app/run/localization.hpp"
 #include "app/run/option_values.hpp"
 #include "app/run/shipped_worlds.hpp"
 #include "common/error.hpp"
@@ -50,19 +50,9 @@ std::vector<std::size_t> parse_moves(const std::string &text) {
   return sides;
 }
 
-loc::WallSensor parse_sensor(const std::string &text) {
-  loc::WallSensor s;
-  if (text.empty()) return s;
-  const std::vector<double> p = parse_number_list(text, "--sensor", 4);
-  s = {p[0], p[1], p[2], p[3]};
-  loc::validate(s);
-  return s;
-}
-
 void check_numbers(const DemoLocalizeInput &in) {
-  common::require_input(in.motion >= 0.0 && in.motion <= 1.0, fmt::format("--motion must be in [0, 1] (got {:g})", in.motion));
-  common::require_input(in.localized > 0.5 && in.localized <= 1.0,
-                  fmt::format("--localized must be > 0.5 and <= 1 (got {:g})", in.localized));
+  loc::validate_motion(in.motion);
+  loc::validate_localized(in.localized);
   common::require_input(in.max_steps >= 0 && in.max_steps <= 100000,
                   fmt::format("--max-steps must be in [0, 100000] (got {})", in.max_steps));
   if (in.particles) {
@@ -83,7 +73,7 @@ Setup setup_of(const DemoLocalizeInput &in) {
                               kMaxCells, maze.width(), maze.height()));
   s.world_name = world.name();
   s.map = loc::wall_map(maze);
-  s.sensor = parse_sensor(in.sensor);
+  s.sensor = loc::parse_sensor(in.sensor);
   s.start = loc::cell_index(s.map, maze.start());
   if (in.start) {
     common::require_input(*in.start >= 1 && static_cast<std::size_t>(*in.start) <= s.map.cells(),
@@ -166,7 +156,7 @@ std::string header(const Setup &s, const char *filter) {
                  : "no seed: every move succeeds and every reading is exact\n";
   out += fmt::format("localized when one cell holds at least {:g} of the {}; at most {} moves\n\n", in.localized,
                      in.particles ? "particles" : "belief", in.max_steps);
-  return out + numbered_map(s.map);
+  return out + loc::numbered_map(s.map);
 }
 
 std::pair<int, double> most_likely(const std::vector<double> &belief) {
@@ -214,15 +204,15 @@ DemoLocalizeOutput run_grid(const Setup &s) {
         break;
       }
       belief = loc::predict(s.map, belief, *side, s.in->motion);
-      o.text += "after prediction:\n" + belief_grid(s.map, belief);
+      o.text += "after prediction:\n" + loc::belief_grid(s.map, belief);
     }
     r.readings.push_back(loc::read_walls(s.map, s.sensor, r.cell, rng.get()));
-    o.text += "reading: " + reading_words(r.readings.back()) + "\n";
+    o.text += "reading: " + loc::reading_words(r.readings.back()) + "\n";
     if (step == 0 && s.in->explain) o.text += correction_by_hand(s.map, s.sensor, belief, r.readings.back());
     belief = loc::correct(s.map, s.sensor, belief, r.readings.back());
     const auto [cell, share] = most_likely(belief);
     o.result.believed_cell = cell, o.result.believed_share = share;
-    o.text += "after correction:\n" + belief_grid(s.map, belief) + fmt::format("most likely: cell {} ({:.3f})\n", cell, share);
+    o.text += "after correction:\n" + loc::belief_grid(s.map, belief) + fmt::format("most likely: cell {} ({:.3f})\n", cell, share);
     o.result.localized = share >= s.in->localized;
     if (o.result.localized || step >= s.in->max_steps) break;
   }
@@ -240,7 +230,7 @@ DemoLocalizeOutput run_particles(const Setup &s) {
   loc::Particles particles = loc::scatter(n, s.map.cells(), rng);
   DemoLocalizeOutput o;
   o.text = header(s, fmt::format("particle filter ({} particles, seed {})", n, seed).c_str());
-  o.text += "\nparticles scattered uniformly:\n" + count_grid(s.map, particles.counts(s.map.cells()));
+  o.text += "\nparticles scattered uniformly:\n" + loc::count_grid(s.map, particles.counts(s.map.cells()));
   bool ran_out = false;
   for (int step = 0;; ++step) {
     o.text += fmt::format("\nstep {}\n", step);
@@ -251,16 +241,16 @@ DemoLocalizeOutput run_particles(const Setup &s) {
         break;
       }
       loc::move(particles, s.map, *side, s.in->motion, rng);
-      o.text += "after motion:\n" + count_grid(s.map, particles.counts(s.map.cells()));
+      o.text += "after motion:\n" + loc::count_grid(s.map, particles.counts(s.map.cells()));
     }
     r.readings.push_back(loc::read_walls(s.map, s.sensor, r.cell, robot_rng.get()));
-    o.text += "reading: " + reading_words(r.readings.back()) + "\n";
+    o.text += "reading: " + loc::reading_words(r.readings.back()) + "\n";
     loc::resample(particles, s.map, s.sensor, r.readings.back(), rng);
     const std::vector<int> counts = particles.counts(s.map.cells());
     const auto best = std::max_element(counts.begin(), counts.end());
     o.result.believed_cell = static_cast<int>(best - counts.begin()) + 1;
     o.result.believed_share = static_cast<double>(*best) / n;
-    o.text += "after resampling by P(z|cell):\n" + count_grid(s.map, counts) +
+    o.text += "after resampling by P(z|cell):\n" + loc::count_grid(s.map, counts) +
               fmt::format("most particles: cell {} ({} of {}, {:.3f})\n", o.result.believed_cell, *best, n, o.result.believed_share);
     o.result.localized = o.result.believed_share >= s.in->localized;
     if (o.result.localized || step >= s.in->max_steps) break;

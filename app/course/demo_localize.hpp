@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "app/run/localization.hpp"
+
 namespace app::course {
 
 // The world demo localize maps when none is given (a shipped world).
@@ -27,9 +29,9 @@ struct DemoLocalizeInput {
   std::optional<int> start;           // cell number (1 north-west, row by row); none: the world's start
   std::string moves;                  // "N,E,S,...": the robot's moves; empty: the right-hand rule
   int max_steps = 30;
-  double motion = 0.8;                // P(a move succeeds)
+  double motion = loc::kLabMotion;    // P(a move succeeds)
   std::string sensor;                 // "P1,P2,P3,P4"; empty: 0.8,0.2,0.4,0.6
-  double localized = 0.8;             // the share of the belief (or particles) one cell must hold
+  double localized = loc::kLabLocalized;  // the share of the belief (or particles) one cell must hold
   std::optional<std::uint64_t> seed;  // noisy moves and readings; the particles' draws
   std::optional<int> particles;       // a particle filter of this many particles
   bool explain = false;               // step 0's correction worked by hand, cell by cell

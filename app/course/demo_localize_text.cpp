@@ -4,48 +4,6 @@
 
 namespace app::course {
 
-std::string numbered_map(const loc::WallMap &map) {
-  const auto w = static_cast<std::size_t>(map.width), h = static_cast<std::size_t>(map.height);
-  std::string out;
-  for (std::size_t row = 0; row < h; ++row) {
-    out += "o";
-    for (std::size_t col = 0; col < w; ++col) out += map.walls[row * w + col][0] ? "---o" : "   o";
-    out += "\n";
-    out += map.walls[row * w][3] ? "|" : " ";
-    for (std::size_t col = 0; col < w; ++col) {
-      const std::size_t i = row * w + col;
-      out += fmt::format("{:>3}{}", i + 1, map.walls[i][1] ? "|" : " ");
-    }
-    out += "\n";
-  }
-  out += "o";
-  for (std::size_t col = 0; col < w; ++col) out += map.walls[(h - 1) * w + col][2] ? "---o" : "   o";
-  return out + "\n";
-}
-
-std::string belief_grid(const loc::WallMap &map, const std::vector<double> &belief) {
-  const auto w = static_cast<std::size_t>(map.width);
-  std::string out;
-  for (std::size_t i = 0; i < map.cells(); ++i) {
-    out += fmt::format("{}{:.3f}{}", i % w == 0 ? "  " : " ", belief[i], i % w == w - 1 ? "\n" : "");
-  }
-  return out;
-}
-
-std::string count_grid(const loc::WallMap &map, const std::vector<int> &counts) {
-  const auto w = static_cast<std::size_t>(map.width);
-  std::string out;
-  for (std::size_t i = 0; i < map.cells(); ++i) {
-    out += fmt::format(" {:>4}{}", counts[i], i % w == w - 1 ? "\n" : "");
-  }
-  return out;
-}
-
-std::string reading_words(const loc::Reading &z) {
-  return fmt::format("N {}, E {}, S {}, W {}", z[0] ? "wall" : "no wall", z[1] ? "wall" : "no wall",
-                     z[2] ? "wall" : "no wall", z[3] ? "wall" : "no wall");
-}
-
 std::string model_lines(const loc::WallSensor &s, double p_move) {
   return fmt::format("sensor model, each side: P(z=wall|wall) {:g}, P(z=no wall|wall) {:g}, "
                      "P(z=wall|no wall) {:g}, P(z=no wall|no wall) {:g}\n"
@@ -56,7 +14,7 @@ std::string model_lines(const loc::WallSensor &s, double p_move) {
 
 std::string correction_by_hand(const loc::WallMap &map, const loc::WallSensor &s, const std::vector<double> &prior,
                                const loc::Reading &z) {
-  std::string out = "correction by hand: reading " + reading_words(z) + "\n";
+  std::string out = "correction by hand: reading " + loc::reading_words(z) + "\n";
   out += "P(z|cell) = the product over N, E, S, W of P(z_side | the map's side); "
          "posterior = prior x P(z|cell) / sum\n";
   out += fmt::format("cell  walls  {:<31}  {:<6}  {:<17}  posterior\n", "P(z|cell)", "prior", "prior x P(z|cell)");

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "app/course/localization.hpp"
+#include "app/run/localization.hpp"
 #include "app/run/option_values.hpp"
 #include "common/error.hpp"
 #include "common/random.hpp"

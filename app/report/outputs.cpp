@@ -267,6 +267,12 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.caption = map_caption(options);
   input.steps = summary.steps;
   input.reachable_cells = summary.score.reachable_cells;
+  if (summary.localization) {
+    for (const LocalizationUpdate &u : summary.localization->updates) {
+      std::vector<int> &permille = input.belief_permille.emplace_back();
+      for (const double p : u.belief) permille.push_back(static_cast<int>(std::lround(1000.0 * p)));
+    }
+  }
   input.summary = replay_summary(files.report ? *files.report : run_report(options, summary));
   return replay_html(input);
 }

@@ -101,6 +101,23 @@ void append_frames(std::string &out, const ReplayInput &input, std::size_t merge
   out += "]}";
 }
 
+// "belief": each page frame's, its last recorded frame's; null when the run kept none.
+void append_belief(std::string &out, const ReplayInput &input, std::size_t merged) {
+  out += "\"belief\":";
+  const std::vector<std::vector<int>> &b = input.belief_permille;
+  if (b.empty()) {
+    out += "null";
+    return;
+  }
+  out += '[';
+  for (std::size_t first = 0; first < input.frames.size(); first += merged) {
+    if (first > 0) out += ',';
+    const std::size_t last = std::min({first + merged, input.frames.size(), b.size()}) - 1;
+    append_ints(out, std::vector<long>(b[last].begin(), b[last].end()));
+  }
+  out += ']';
+}
+
 void append_marks(std::string &out, const ReplayInput &input) {
   const mapping::Point o = input.grid.origin;
   std::vector<long> goals;
@@ -244,6 +261,8 @@ std::string replay_data_json(const ReplayInput &input, int merged) {
   append_path(out, input);
   out += ',';
   append_frames(out, input, static_cast<std::size_t>(std::max(1, merged)));
+  out += ',';
+  append_belief(out, input, static_cast<std::size_t>(std::max(1, merged)));
   out += ',';
   append_summary(out, input);
   out += '}';

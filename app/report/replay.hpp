@@ -21,7 +21,8 @@
 // page draws wall, a band a map cell wide round it and any grid cells past it, in the room
 // pictures' wall colour; the view holds the band and every landmark whole), and the
 // frames: each the last pose it shows, its step, its simulated time in ms (-1 when not
-// known) and the sub-cells that changed since the previous frame, as pairs (gap, value) in
+// known), its belief when the run localized ("belief": a list a frame of each cell's belief
+// in thousandths, north-west first, row by row; null without --localize) and the sub-cells that changed since the previous frame, as pairs (gap, value) in
 // ascending flat-index order (OccupancyGrid::index; the first gap is the index itself), the
 // value 2 * round(100 * log-odds) + (1 if occupied by the map's rule, else 0), so the page
 // shows log-odds to 0.01 and tells walls exactly as map.png does.
@@ -102,6 +103,9 @@ struct ReplayInput {
   // The world's solids, each as boxes of a raster of it, drawn as wall: the world of a run that
   // keeps no map (its page has no map to show them). Empty: none drawn.
   std::vector<PlainGridBounds> world_solids;
+  // run --localize: the filter's belief after each recorded frame's arrival, each cell's in
+  // thousandths, cell 1 (north-west) first, row by row. Empty: no belief drawn.
+  std::vector<std::vector<int>> belief_permille;
   std::string title;                  // the world
   std::string caption;                // "model cell, K 3"
   std::int64_t steps = 0;             // the run's last step

@@ -160,6 +160,7 @@ std::span<const OptionField<RunOptions>> option_fields() {
       own<O>("simulation", "", [](const O &o) { return echo_fields(o.simulation); }),
       own<O>("plan", "", [](const O &o) { return echo_fields(o.plan); }),
       own<O>("output", "", [](const O &o) { return echo_fields(o.output); }),
+      own<O>("localize", "", [](const O &o) { return echo_fields(o.localize); }),
   };
   return fields;
 }

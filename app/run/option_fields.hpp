@@ -77,6 +77,8 @@ template <>
 std::span<const OptionField<PlanOptions>> option_fields();
 template <>
 std::span<const OptionField<OutputOptions>> option_fields();
+template <>
+std::span<const OptionField<LocalizationOptions>> option_fields();
 // A run in metres' own options; their echo is the room report's own keys, so they have no `echo`.
 template <>
 std::span<const OptionField<MetresOptions>> option_fields();

@@ -80,6 +80,7 @@ robot::DeviceNames devices_of(const maze::sim::RobotProfile &profile) {
 struct RunState {
   bool quit = false;          // q at a --step prompt
   bool interrupted = false;   // Ctrl-C
+  LiveLocalization *localization = nullptr;  // --localize's filter, started
 };
 
 void require_inside(const maze::Maze &maze, mapping::Cell c, const char *option) {
@@ -283,10 +284,11 @@ robot::RunResult drive(const RunOptions &options, const maze::Maze &truth, RunFr
         out, style, truth.width() * truth.height(),
         view_for_terminal(controls.terminal_fd, k, truth.height() * k, truth.width() * k, style.subcell_columns))));
   }
+  if (state.localization != nullptr) observers.add(state.localization);
   std::optional<StepPrompt> prompt;
   if (o.step && controls.in != nullptr) observers.add(&prompt.emplace(*controls.in, controls.prompt));
   // Without the console's, the frame's observers are told directly.
-  RunObserver *told = animation || printed || prompt ? &observers : frame.observer();
+  RunObserver *told = animation || printed || prompt || state.localization ? &observers : frame.observer();
   robot::RunHooks hooks = observed_hooks(told, frame.simulation());
   hooks.stop_requested = controls.interrupted;
   if (prompt) {
@@ -315,6 +317,7 @@ RunSummary summarize(const RunOptions &options, const maze::Maze &truth, const r
   summary.shortest = result.shortest;
   summary.speed_run = result.speed_run;
   summary.speed_run_asked = options.plan.speed_run;
+  if (state.localization != nullptr) summary.localization = state.localization->summary();
   return summary;
 }
 
@@ -359,10 +362,19 @@ RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ost
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);
   assert(options.output.out_dir.empty() || controls.observer != nullptr);
   const CellRunStart cell_start{truth, controller_opts, style.initial_log_odds};
-  frame.start(RunStart{options, simulation.robot(), &cell_start, nullptr});
+  const RunStart start{options, simulation.robot(), &cell_start, nullptr};
+  // --localize prints its belief at each cell where the cells are printed; it refuses a robot
+  // it cannot read walls with before the files are started.
+  std::optional<LiveLocalization> localization;
+  if (options.localize.on) {
+    const bool printing = !options.output.quiet && !options.output.animate;
+    localization.emplace(options.localize, printing ? &out : nullptr).on_start(start);
+  }
+  frame.start(start);
 
   robot::CellController controller(simulation.robot(), controller_opts);
   RunState state;
+  state.localization = localization ? &*localization : nullptr;
   const robot::RunResult result =
       drive(options, truth, frame, controller, style, out, controls, state);
   RunSummary summary = summarize(options, truth, result, state, style);

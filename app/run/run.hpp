@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/run/evaluation.hpp"
+#include "app/run/live_localization.hpp"
 #include "app/run/run_options.hpp"
 #include "app/run/run_observer.hpp"
 #include "maze/world/maze.hpp"
@@ -79,6 +80,7 @@ struct RunSummary {
   std::optional<explore::ShortestPathProof> shortest;  // start to goal, when the maze has goals
   robot::SpeedRun speed_run;
   bool speed_run_asked = false;         // --speed-run: speed_run.time_s must then hold one
+  std::optional<LocalizationSummary> localization;  // --localize: the filter's run
 };
 
 // What the summary says of the known shortest path ("105 cells start to goal, proven").

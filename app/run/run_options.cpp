@@ -57,6 +57,7 @@ bool animating(const RunOptions &o) { return o.output.animate; }
 bool not_animating(const RunOptions &o) { return !o.output.animate; }
 bool planning(const RunOptions &o) { return o.plan.to.has_value() || o.plan.only; }
 bool writing_files(const RunOptions &o) { return !o.output.out_dir.empty(); }
+bool localizing(const RunOptions &o) { return o.localize.on; }
 
 // The run's own rules; the model's are the set-up table's (model_given_options below).
 constexpr OptionUse<RunOptions> kOptionUses[] = {
@@ -69,6 +70,9 @@ constexpr OptionUse<RunOptions> kOptionUses[] = {
     {"--trace-steps", "without --out", writing_files},
     {"--no-replay", "without --out", writing_files},
     {"--picture-format", "without --out", writing_files},
+    {"--sensor", "without --localize", localizing},
+    {"--motion", "without --localize", localizing},
+    {"--localized", "without --localize", localizing},
 };
 
 // The sensing::ModelOption bits of the options given: option_name() is "--p-free/--p-occ"
@@ -190,6 +194,9 @@ void validate(const RunOptions &o) {
   validate_run(o);
   o.simulation.validate();
   validate(o.output);
+  loc::parse_sensor(o.localize.sensor);
+  loc::validate_motion(o.localize.motion);
+  loc::validate_localized(o.localize.localized);
   robot_profile(o);  // a bad profile file fails here, before any world is read
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/picture/drawing.hpp"
+#include "app/run/localization.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/grid_types.hpp"
 #include "sensing/setups.hpp"
@@ -83,6 +84,15 @@ struct MetresOptions {
   std::vector<std::int64_t> snapshot_steps;   // --snapshot-steps: and at these control steps
 };
 
+// run --localize: the localization lab's grid Bayes filter follows the robot, knowing the
+// maze's walls and not its start (app/run/live_localization.hpp).
+struct LocalizationOptions {
+  bool on = false;                          // --localize
+  std::string sensor;                       // --sensor P1,P2,P3,P4; empty: the lab's 0.8,0.2,0.4,0.6
+  double motion = loc::kLabMotion;          // --motion: P(a move succeeds)
+  double localized = loc::kLabLocalized;    // --localized: the share one cell must hold
+};
+
 struct RunOptions {
   std::string world;                    // the path as the user gave it
   maze::WorldOverrides world_overrides; // --cell-size, --start, --goal
@@ -105,6 +115,7 @@ struct RunOptions {
   PlanOptions plan;
   OutputOptions output;
   MetresOptions metres;                 // a run in metres only
+  LocalizationOptions localize;         // run only
 
   // robot_profile()'s memo: the profile read for `resolved_for`, shared by copies.
   mutable std::shared_ptr<const maze::sim::RobotProfile> resolved_profile;

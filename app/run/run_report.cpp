@@ -54,6 +54,28 @@ void add_plan_entries(Report &e, const RunSummary &s) {
   }
 }
 
+// --localize: the verdict printed, the filter's last state and its model in summary.json.
+void add_localization_entries(Report &e, const RunSummary &s) {
+  if (!s.localization || s.localization->updates.empty()) {
+    e.json_only("localization", nullptr);
+    return;
+  }
+  const LocalizationSummary &l = *s.localization;
+  const LocalizationUpdate &last = l.updates.back();
+  Json first = nullptr;
+  if (l.localized_at) first = Json{{"move", l.updates[*l.localized_at].move}, {"step", l.updates[*l.localized_at].step}};
+  e.both("localization", localization_verdict(l),
+         Json{{"localized", last.belief[last.likeliest] >= l.localized_share},
+              {"cell", last.likeliest + 1},
+              {"share", last.belief[last.likeliest]},
+              {"robot_cell", last.robot_cell + 1},
+              {"first_localized", first},
+              {"updates", l.updates.size()},
+              {"sensor", {l.sensor.wall_given_wall, l.sensor.open_given_wall, l.sensor.wall_given_open, l.sensor.open_given_open}},
+              {"motion", l.p_move},
+              {"localized_share", l.localized_share}});
+}
+
 void add_speed_run_entries(Report &e, const RunOptions &o, const RunSummary &s) {
   if (!o.plan.speed_run) {
     e.json_only("search", nullptr);
@@ -117,6 +139,7 @@ Report run_report(const RunOptions &o, const RunSummary &s) {
          Json(two_decimals(s.score.wall_accuracy_percent())));
   add_plan_entries(e, s);
   add_speed_run_entries(e, o, s);
+  add_localization_entries(e, s);
   e.both("sim_time_s", fmt::format("{:.3f}", s.sim_time_s), Json(s.sim_time_s));
   e.both("wall_time_ms", fmt::format("{:.0f}", s.wall_time_ms), Json(s.wall_time_ms));
   return e;

@@ -220,3 +220,87 @@ def test_demo_trilaterate_prints_the_closed_form_and_the_scores_the_formulas_giv
     assert np.allclose(localization.cell_scores(full), scores, atol=1e-12)
     best = int(np.argmax(scores)) + 1
     assert f"most likely: cell {best} ({scores.max():.3f})" in out
+
+
+def parse_live_run(text, rows):
+    """`run --localize`'s updates: (move side or None, reading, printed belief, most likely
+    (cell, share)), and the summary's verdict."""
+    lines = text.splitlines()
+    updates = []
+    for i, line in enumerate(lines):
+        m = re.match(r"localize: (?:the start|move \d+ ([NESW])), the lidar reads (.*)", line)
+        if not m:
+            continue
+        at = i + 2 * rows + 1  # the shaded map: 2 rows + 1 lines
+        belief = np.array([[float(v) for v in lines[at + 1 + k].split()] for k in range(rows)])
+        best = re.match(r"most likely: cell (\d+) \((.*)\)", lines[at + 1 + rows]).groups()
+        z = [not part.endswith("no wall") for part in m.group(2).split(", ")]
+        updates.append((SIDES.index(m.group(1)) if m.group(1) else None, z, belief, (int(best[0]), float(best[1]))))
+    verdict = next(line for line in lines if line.startswith("localization: "))
+    return updates, verdict
+
+
+def check_live_run(path, x, y):
+    """Runs `run PATH --localize --start X,Y` and recomputes every printed belief; returns the
+    verdict line and the moves the first localization took (None when never)."""
+    walls = walls_of(path)
+    rows, cols, _ = walls.shape
+    _, out, _ = program("run", str(path), "--localize", "--start", f"{x},{y}", "--noise", "0")
+    updates, verdict = parse_live_run(out, rows)
+    r, c = rows - 1 - y, x  # the run's cells count from the south-west, the lab's from the north-west
+    belief = np.full((rows, cols), 1.0 / (rows * cols))
+    first = None
+    for move, (side, z, printed, best) in enumerate(updates):
+        if side is not None:
+            belief = predict(belief, walls, side, 0.8)
+            r, c = r + STEP[side][0], c + STEP[side][1]
+        assert z == list(walls[r, c]), (r, c)  # the lidar reads the walls exactly
+        belief = correct(belief, walls, z, (0.8, 0.2, 0.4, 0.6))
+        assert np.abs(printed - belief).max() <= 0.0005 + 1e-12
+        assert best[0] == 1 + int(np.argmax(belief))
+        if best[1] >= 0.8:
+            assert best[0] == 1 + r * cols + c  # never a wrong cell at 0.8 with exact readings
+            first = move if first is None else first
+    assert verdict.endswith(f"the robot is in cell {1 + r * cols + c}"), verdict
+    return verdict, first
+
+
+def test_a_robot_run_with_localize_from_every_start_of_loc5x5_prints_beliefs_the_formulas_give():
+    for x in range(5):
+        for y in range(5):
+            verdict, first = check_live_run(world("loc5x5.txt"), x, y)
+            assert first is not None and first <= 8, verdict
+            assert re.match(r"localization: cell \d+ holds [\d.]+ after \d+ moves, first localized at move "
+                            + str(first), verdict), verdict
+
+
+@pytest.mark.parametrize("size,seed", [("5x5", 1), ("6x6", 4), ("8x8", 9)])
+def test_a_robot_run_with_localize_on_generated_mazes_is_never_sure_of_a_wrong_cell(tmp_path, size, seed):
+    _, text, _ = program("generate", size, "--seed", str(seed))
+    path = tmp_path / "m.txt"
+    path.write_text(text)
+    for x, y in [(0, 0), (1, 2), (3, 3)]:
+        check_live_run(path, x, y)
+
+
+def test_localize_refuses_a_lidar_that_does_not_see_all_four_sides(tmp_path):
+    import json
+    _, text, _ = program("robot", "hambot")
+    robot = json.loads(text)
+    robot["lidars"][0]["fov_rad"] = math.pi
+    robot["lidars"][0]["horizontal_resolution"] = 180
+    path = tmp_path / "half.json"
+    path.write_text(json.dumps(robot))
+    status, out, err = program("run", world("loc5x5.txt"), "--localize", "--robot", str(path), check=False)
+    assert status == 2, out
+    assert err.startswith("error: --localize reads the four sides with the lidar, and its field of view (180 degrees) "
+                          "leaves out the"), err
+
+
+def test_localize_options_without_localize_are_warned_about_and_bad_ones_refused():
+    _, _, err = program("run", world("loc5x5.txt"), "--quiet", "--motion", "0.9")
+    assert "warning: --motion has no effect without --localize" in err
+    status, _, err = program("run", world("loc5x5.txt"), "--localize", "--sensor", "0.8,0.3,0.4,0.6", check=False)
+    assert status == 2 and err.startswith("error: --sensor")
+    status, _, err = program("run", world("loc5x5.txt"), "--localize", "--model", "bump", check=False)
+    assert status == 2 and "--localize reads the walls with a lidar" in err

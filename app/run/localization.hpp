@@ -19,7 +19,7 @@
 #include "common/random.hpp"
 #include "maze/world/maze.hpp"
 
-namespace app::course::loc {
+namespace app::loc {
 
 struct Landmark {
   const char *name;
@@ -80,6 +80,18 @@ struct WallSensor {
 // not add up to 1.
 void validate(const WallSensor &sensor);
 
+// The lab's defaults: a move succeeds with kLabMotion, and the robot is localized when one cell
+// holds kLabLocalized of the belief.
+inline constexpr double kLabMotion = 0.8;
+inline constexpr double kLabLocalized = 0.8;
+
+// "P1,P2,P3,P4" (--sensor) as a sensor model, checked (validate()); empty text: the lab's.
+WallSensor parse_sensor(const std::string &text);
+// Throws common::InputError naming --motion unless p_move is in [0, 1], naming --localized
+// unless share is in (0.5, 1].
+void validate_motion(double p_move);
+void validate_localized(double share);
+
 using Reading = std::array<bool, 4>;  // wall seen N, E, S, W
 
 // P(reading | cell): the product of the four sides' probabilities.
@@ -108,4 +120,4 @@ void move(Particles &particles, const WallMap &map, std::size_t side, double p_m
 void resample(Particles &particles, const WallMap &map, const WallSensor &sensor, const Reading &z,
               common::Rng &rng);
 
-}  // namespace app::course::loc
+}  // namespace app::loc

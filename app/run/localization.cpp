@@ -1,13 +1,14 @@
-#include "app/course/localization.hpp"
+#include "app/run/localization.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "app/run/option_values.hpp"
 #include "common/error.hpp"
 
-namespace app::course::loc {
+namespace app::loc {
 
 Trilateration trilaterate(const std::array<Landmark, 3> &m, const std::array<double, 3> &r) {
   const double x1 = m[0].x_m, y1 = m[0].y_m, x2 = m[1].x_m, y2 = m[1].y_m, x3 = m[2].x_m, y3 = m[2].y_m;
@@ -184,4 +185,21 @@ void resample(Particles &particles, const WallMap &map, const WallSensor &sensor
   particles.cells = std::move(kept);
 }
 
-}  // namespace app::course::loc
+WallSensor parse_sensor(const std::string &text) {
+  WallSensor s;
+  if (text.empty()) return s;
+  const std::vector<double> p = parse_number_list(text, "--sensor", 4);
+  s = {p[0], p[1], p[2], p[3]};
+  validate(s);
+  return s;
+}
+
+void validate_motion(double p_move) {
+  common::require_input(p_move >= 0.0 && p_move <= 1.0, fmt::format("--motion must be in [0, 1] (got {:g})", p_move));
+}
+
+void validate_localized(double share) {
+  common::require_input(share > 0.5 && share <= 1.0, fmt::format("--localized must be > 0.5 and <= 1 (got {:g})", share));
+}
+
+}  // namespace app::loc
