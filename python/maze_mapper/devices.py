@@ -13,7 +13,7 @@ left, z up) and reads, once enabled, what the simulated pose did over the last s
   - Accelerometer.getValues(): the acceleration in m/s^2 in the robot's frame with gravity, as a
     real accelerometer: [0, 0, 9.81] at rest on the flat floor (Webots' default gravity), the
     body's own acceleration (the change of its velocity over the last two steps) added in x and
-    y: ahead and sideways (centripetal in a turn);
+    y: ahead and sideways (centripetal in a turn), read in the frame of the middle pose;
   - LED.set(value) keeps value (Webots' int: 0 off, else a colour index or 0xRRGGBB) and get()
     reads it back.
 
@@ -130,7 +130,8 @@ class Accelerometer(_Sensor):
         (vx0, vy0, _), (vx1, vy1, _) = motion.velocity(1), motion.velocity(2)
         dt = motion.poses[2][0] - motion.poses[1][0]
         ax, ay = (vx1 - vx0) / dt, (vy1 - vy0) / dt
-        c, s = math.cos(motion.yaw()), math.sin(motion.yaw())
+        yaw = motion.poses[1][3]  # the change is the middle pose's: read in its frame
+        c, s = math.cos(yaw), math.sin(yaw)
         return [c * ax + s * ay, -s * ax + c * ay, GRAVITY_M_S2]
 
 
