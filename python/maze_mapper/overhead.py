@@ -4,7 +4,7 @@ and the robot (a dark disc with a line to where it faces). Row 0 is the north ed
 
 import math
 
-SIDE_PX = 400  # pixels on the image's longer side
+SIDE_PX = 320  # pixels on the image's longer side
 
 _FLOOR_RGB = (235, 235, 225)
 _SOLID_RGB = (120, 120, 120)
@@ -32,10 +32,14 @@ def overhead_view(scene):
     image[:] = _FLOOR_RGB
     cast = scene.simulation.cast
     xs = [x_min + (i + 0.5) * metres_per_px for i in range(width)]
+    step = metres_per_px
     for row in range(height):
-        y = y_max - (row + 0.5) * metres_per_px
-        inside = [cast(x, y, 0.0, 1e-6) == 0.0 for x in xs]  # a point in a solid casts 0
-        image[row, np.array(inside, dtype=bool)] = _SOLID_RGB
+        y = y_max - (row + 0.5) * step
+        # A pixel is a solid's when its middle lines, across and down, meet one (a ray cast
+        # from inside a solid is 0 long): a wall thinner than a pixel is drawn too.
+        hit = [cast(x - step / 2, y, 0.0, step) < step or cast(x, y + step / 2, -math.pi / 2, step) < step
+               for x in xs]
+        image[row, np.array(hit, dtype=bool)] = _SOLID_RGB
     grid_x = x_min + (np.arange(width) + 0.5) * metres_per_px
     grid_y = y_max - (np.arange(height) + 0.5) * metres_per_px
     for landmark in scene.landmarks:

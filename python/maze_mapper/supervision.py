@@ -7,7 +7,7 @@ those classes (controller.py imports this module):
       not drawn: there is no 3D window.
   Supervisor.exportImage(filename, quality)
       the 3D view's stand-in: the world seen from above as a PNG (.png; JPEG is refused with
-      an error line), 512 pixels on its longer side: the floor, the solids, the landmarks in
+      an error line), 320 pixels on its longer side: the floor, the solids, the landmarks in
       their colour and the robot; quality checked as Webots checks it (1 to 100).
   Supervisor.worldReload()
       Webots reloads the world and starts the controller again; here the world is put back as

@@ -154,7 +154,7 @@ robot.exportImage({str(tmp_path / "q.png")!r}, 0)
         f"Error: Supervisor.exportImage(): {tmp_path / 'world.jpg'}: the embedded simulator writes PNG (.png) only",
         "Error: wb_supervisor_export_image(): 'quality' argument (0) must be between 1 and 100."]
     data = (tmp_path / "world.png").read_bytes()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", data[16:24]) == (400, 400)
+    assert data[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", data[16:24]) == (320, 320)
 
 
 def test_node_pose_and_velocity_are_webots_matrices_and_vectors(controller_file):
