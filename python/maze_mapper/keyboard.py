@@ -29,9 +29,10 @@ NUMPAD_END), SPACE, one printable character (a letter is its upper-case code, as
 it: `a` and `A` are both 65), or a key code of two or more digits (65 is A). Names are read
 without regard to case. An error is one line, `FILE:LINE:COL: error: ...`.
 
-From a terminal (standard input a terminal, no --keys), the terminal is put in a mode that
-hands each key at once without echoing it (Ctrl-C still stops the run) and is put back as it
-was when the run ends, however it ends, and while the runner is suspended (Ctrl-Z). A terminal
+From a terminal (standard input a terminal, no --keys, the runner not a background job of
+it), the terminal is put in a mode that hands each key at once without echoing it (Ctrl-C
+still stops the run), and put back as it was when the controller ends, fails or is stopped by
+a signal (before the summary), and while the runner is suspended (Ctrl-Z). A terminal
 reports presses, not releases: a key read is pressed for the sample it is read in (held keys
 repeat at the terminal's own rate). Read: printable characters (a lower-case letter as its
 code, an upper-case one with SHIFT), Enter (4, Webots' code for Return), Ctrl+letter (CONTROL),
@@ -294,12 +295,22 @@ def use_script(script):
     state.script = script
 
 
+def _in_background(fd):
+    """Whether the runner is a background job of its controlling terminal fd (changing its mode
+    would stop the runner). A terminal that is not the controlling one: never."""
+    try:
+        return os.tcgetpgrp(fd) != os.getpgrp()
+    except OSError:
+        return False
+
+
 def use_terminal_if_any():
     """Without --keys: the runner's standard input, when it is a terminal, gives the keys."""
     state.__init__()
     try:
-        if sys.stdin is not None and os.isatty(sys.stdin.fileno()):
-            state.terminal = Terminal(sys.stdin.fileno())
+        fd = sys.stdin.fileno() if sys.stdin is not None else -1
+        if fd >= 0 and os.isatty(fd) and not _in_background(fd):
+            state.terminal = Terminal(fd)
     except (OSError, ValueError, ImportError):  # no terminal to read
         state.terminal = None
 
@@ -364,11 +375,12 @@ class Keyboard:
     getKeyCode = getKey
 
     def get_key(self):
-        """The key as Webots' Python API names it ('shift-up', 'control-A', ...); '' for none."""
+        """The key as Webots' Python API names it ('shift-up', 'control-A', ...; Alt is spelt
+        'atl-' there, and so here); '' for none."""
         code = self.getKey()
         if code < 0:
             return ""
-        words = "".join(w for bit, w in ((SHIFT, "shift-"), (CONTROL, "control-"), (ALT, "alt-")) if code & bit)
+        words = "".join(w for bit, w in ((SHIFT, "shift-"), (CONTROL, "control-"), (ALT, "atl-")) if code & bit)
         base = code & KEY
         names = {v: k.lower().replace("_", " ").replace("page", "page ") for k, v in NAMES.items() if k != "SPACE"}
         return words + names.get(base, chr(base))
