@@ -236,8 +236,11 @@ class Robot:
         elif _scene.current is not None and _scene.current.reset_requested:
             _scene.current.reset()
             _devices.forget_targets()
-        _devices.motion.after_step(self)
-        _keyboard.state.sample(self.getTime() * 1000.0)
+        self._step_s = time_step / 1000.0  # the last step's duration (Node.getVelocity)
+        if _devices.requested:  # a Compass, Gyro, Accelerometer or LED from --device
+            _devices.motion.after_step(self)
+        if _keyboard.state.period_ms > 0:
+            _keyboard.state.sample(self.getTime() * 1000.0)
         return result
 
     def _record_path(self, scene):

@@ -124,12 +124,16 @@ def _get_pose(node, from_node=None):
 
 
 def _get_velocity(node):
-    from .devices import motion
+    from .controller import Robot
+    robot = Robot.created
     moving = node is node._scene.robot or getattr(node, "_device", None) is not None
-    if not moving or len(motion.poses) < 2:
+    if not moving or robot is None or robot._before is None or not getattr(robot, "_step_s", 0.0) > 0.0:
         return [0.0] * 6
-    vx, vy, rate = motion.velocity(len(motion.poses) - 1)
-    return [vx, vy, 0.0, 0.0, 0.0, rate]
+    x0, y0, z0, yaw0 = robot._before  # the pose when the last step began
+    x1, y1, z1, yaw1 = node._scene.simulation.pose
+    dt = robot._step_s
+    turn = math.atan2(math.sin(yaw1 - yaw0), math.cos(yaw1 - yaw0))
+    return [(x1 - x0) / dt, (y1 - y0) / dt, (z1 - z0) / dt, 0.0, 0.0, turn / dt]
 
 
 def _parent(node):
