@@ -26,7 +26,8 @@ increasing from line to line; the keys named are held from TIME until the next l
 MODIFIER one of SHIFT, CONTROL, ALT and NAME one of Webots' key names (END, HOME, LEFT, UP,
 RIGHT, DOWN, PAGEUP, PAGEDOWN, NUMPAD_HOME, NUMPAD_LEFT, NUMPAD_UP, NUMPAD_RIGHT, NUMPAD_DOWN,
 NUMPAD_END), SPACE, one printable character (a letter is its upper-case code, as Webots reports
-it: `a` and `A` are both 65), or a key code of two or more digits (65 is A). Names are read
+it: `a` and `A` are both 65; `#` starts a comment, so the # key is written 35), or a key code of
+two or more digits (65 is A). Names are read
 without regard to case. An error is one line, `FILE:LINE:COL: error: ...`.
 
 From a terminal (standard input a terminal, no --keys, the runner not a background job of
@@ -73,15 +74,19 @@ def char_code(char):
 def parse_key(word):
     """The code of one key as a script names it; ValueError (the message, the column in the
     word, from 0) for a key no keyboard has."""
-    parts = word.split("+") if len(word) > 1 else [word]
+    if len(word) > 1 and word.endswith("++"):  # a modifier and the + key
+        head, name = word[:-2], "+"
+    elif len(word) > 1 and "+" in word:
+        head, _, name = word.rpartition("+")
+    else:
+        head, name = "", word
     modifiers = 0
     at = 0
-    for part in parts[:-1]:
+    for part in head.split("+") if head else []:
         if part.upper() not in MODIFIERS:
             raise ValueError(f"'{part}' is no modifier (SHIFT, CONTROL or ALT)", at)
         modifiers |= MODIFIERS[part.upper()]
         at += len(part) + 1
-    name = parts[-1]
     if name.upper() in NAMES:
         return modifiers | NAMES[name.upper()]
     if len(name) == 1 and " " < name <= "~":

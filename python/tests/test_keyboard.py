@@ -53,6 +53,7 @@ def test_a_script_names_keys_as_webots_codes_them():
     assert keyboard.parse_key("SHIFT+A") == Keyboard.SHIFT + 65
     assert keyboard.parse_key("CONTROL+ALT+DOWN") == Keyboard.CONTROL | Keyboard.ALT | Keyboard.DOWN
     assert keyboard.parse_key("SPACE") == 32 and keyboard.parse_key("+") == ord("+")
+    assert keyboard.parse_key("CONTROL++") == Keyboard.CONTROL + ord("+")
     assert keyboard.parse_key("65") == 65 and keyboard.parse_key("7") == ord("7")
 
 
