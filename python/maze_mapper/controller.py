@@ -343,7 +343,8 @@ class Supervisor(Robot):
     """The robot as a Webots supervisor (the course's HamBot is one): the scene tree as far as
     the course's library uses it (scene.py): getRoot, getSelf, getFromDef, getFromId,
     importing Obstacle and Landmark nodes, the robot's translation and rotation (a teleport),
-    simulationReset."""
+    simulationReset; and setLabel, exportImage, worldReload, getSelected, getFromDevice
+    (supervision.py)."""
 
     SIMULATION_MODE_PAUSE = 0
     SIMULATION_MODE_REAL_TIME = 1
