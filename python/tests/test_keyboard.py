@@ -127,17 +127,17 @@ def test_a_bad_key_script_is_named_by_file_line_and_column(controller_file, tmp_
 
 
 def test_keys_typed_in_a_terminal_reach_the_controller_and_the_terminal_is_restored(controller_file):
-    source = ("import sys\nfrom controller import Robot\nr = Robot()\nk = r.getKeyboard()\nk.enable(32)\n"
+    # Each step takes 2 ms of wall-clock time, so the run lasts until the keys come.
+    source = ("import time\nfrom controller import Robot\nr = Robot()\nk = r.getKeyboard()\nk.enable(32)\n"
               "print('ready', flush=True)\n"
-              "while r.step(32) != -1:\n    key = k.getKey()\n    if key != -1:\n        print('key', key, flush=True)\n"
-              "        if key == 81: break\n")
+              "while r.step(32) != -1:\n    time.sleep(0.002)\n    key = k.getKey()\n    if key != -1:\n"
+              "        print('key', key, flush=True)\n        if key == 81: break\n")
     master, slave = os.openpty()
     before = termios.tcgetattr(slave)
     process = subprocess.Popen([sys.executable, "-m", "maze_mapper.run", str(controller_file(source)),
                                 "--wall-limit", "60"], cwd=REPO, stdin=slave, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True)
     try:
-        os.set_blocking(process.stdout.fileno(), True)
         assert process.stdout.readline() == "ready\n"
         assert not termios.tcgetattr(slave)[3] & termios.ECHO  # keys are read at once, not echoed
         os.write(master, b"\x1b[A")
@@ -155,8 +155,8 @@ def test_keys_typed_in_a_terminal_reach_the_controller_and_the_terminal_is_resto
 
 
 def test_the_terminal_is_restored_when_a_signal_stops_the_run(controller_file):
-    source = ("from controller import Robot\nr = Robot()\nr.getKeyboard().enable(32)\nprint('ready', flush=True)\n"
-              "while r.step(32) != -1:\n    pass\n")
+    source = ("import time\nfrom controller import Robot\nr = Robot()\nr.getKeyboard().enable(32)\n"
+              "print('ready', flush=True)\nwhile r.step(32) != -1:\n    time.sleep(0.002)\n")
     master, slave = os.openpty()
     before = termios.tcgetattr(slave)
     process = subprocess.Popen([sys.executable, "-m", "maze_mapper.run", str(controller_file(source)),
