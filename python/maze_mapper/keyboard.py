@@ -267,6 +267,7 @@ class _State:
         self.period_ms = 0
         self.enabled_at_ms = 0.0
         self.samples = 0  # samples taken since the enable
+        self.last_ms = 0.0  # the robot's time at the last step
         self.keys = []  # the keys of the last sample, in order
         self.pointer = 0
 
@@ -275,6 +276,9 @@ class _State:
         self.keys, self.pointer = [], 0
         if self.period_ms <= 0:
             return
+        if now_ms < self.last_ms:  # a simulationReset: the time is back at 0, the sampling goes on from there
+            self.enabled_at_ms, self.samples = 0.0, 0
+        self.last_ms = now_ms
         due = int((now_ms - self.enabled_at_ms + 1e-6) // self.period_ms)
         if due <= self.samples:
             return

@@ -175,3 +175,14 @@ def test_the_terminal_is_restored_when_a_signal_stops_the_run(controller_file):
     assert termios.tcgetattr(slave) == before
     os.close(master)
     os.close(slave)
+
+
+def test_the_keyboard_samples_on_after_a_reset_and_the_script_follows_the_time(controller_file, tmp_path):
+    source = ("from controller import Supervisor\nr = Supervisor()\nk = r.getKeyboard()\nk.enable(32)\n"
+              "for _ in range(10):\n    r.step(32)\nprint(f'{r.getTime():.3f}', k.getKey())\nr.simulationReset()\n"
+              "r.step(32)\nr.step(32)\nprint(f'{r.getTime():.3f}', k.getKey())\n")
+    keys = tmp_path / "k"
+    keys.write_text("0 DOWN\n0.2 UP\n")
+    status, out, err = run_controller(controller_file(source), "--keys", str(keys))
+    assert status == 0, err
+    assert out.splitlines()[:2] == [f"0.320 {Keyboard.UP}", f"0.032 {Keyboard.DOWN}"]
