@@ -1,13 +1,15 @@
 """Webots' Python controller API (the `controller` module of Webots R2023b and later) over
-maze_mapper's embedded simulator: Robot, Supervisor and the devices Lidar, Motor,
-PositionSensor, InertialUnit, GPS, DistanceSensor, TouchSensor, and the course HamBot's Camera
-(with recognition) and Display, with Webots' method names and semantics.
+maze_mapper's embedded simulator: Robot, Supervisor, Keyboard and the devices Lidar, Motor,
+PositionSensor, InertialUnit, GPS, DistanceSensor, TouchSensor, the course HamBot's Camera
+(with recognition) and Display, and Compass, Accelerometer, Gyro and LED where the runner's
+--device adds them (devices.py), with Webots' method names and semantics.
 
 Under `python3 -m maze_mapper.run CONTROLLER.py [--world WORLD]`, `from controller import
 Robot` (or Supervisor) imports this module, so a Webots controller that uses these runs
 unchanged. Where it differs from Webots (docs/python.md, docs/course.md): a disabled sensor
 reads NaN (a disabled lidar None); the Supervisor sees and edits the scene only as far as the
-course's library does (scene.py); Motor.setAcceleration is kept, not modelled.
+course's library does (scene.py, supervision.py); Motor.setAcceleration is kept, not modelled;
+the keyboard is a script of timed keys or the terminal (keyboard.py).
 """
 
 import math
@@ -15,8 +17,13 @@ import sys
 import time
 
 from . import _native
+from . import devices as _devices
+from . import keyboard as _keyboard
 from . import scene as _scene
+from . import supervision as _supervision
 from .camera import Camera, CameraRecognitionObject, Display
+from .devices import LED, Accelerometer, Compass, Gyro
+from .keyboard import Keyboard
 from .scene import Field, Node, SceneError
 
 Device = _native.Device
@@ -160,10 +167,12 @@ _native.Motor.getAcceleration = lambda motor: _accelerations.get(motor.getName()
 
 __all__ = ["Robot", "Supervisor", "Node", "Field", "Device", "Lidar", "LidarPoint", "Motor", "PositionSensor",
            "InertialUnit", "GPS", "DistanceSensor", "TouchSensor", "Camera", "CameraRecognitionObject",
-           "Display", "RangeImage", "SimulationEnded", "SceneError"]
+           "Display", "Keyboard", "Compass", "Accelerometer", "Gyro", "LED", "RangeImage", "SimulationEnded",
+           "SceneError"]
 
-_SUPPORTED = ("Robot", "Supervisor", "Lidar", "Motor", "PositionSensor", "InertialUnit", "GPS",
-              "DistanceSensor", "TouchSensor", "Camera", "Display")
+_SUPPORTED = ("Robot", "Supervisor", "Keyboard", "Lidar", "Motor", "PositionSensor", "InertialUnit", "GPS",
+              "DistanceSensor", "TouchSensor", "Camera", "Display", "Compass", "Accelerometer", "Gyro", "LED")
+_devices.add_camera_methods()
 
 # The wall-clock time (time.perf_counter()) after which the runner ends the simulation (its
 # --wall-limit), or None; and whether a step has ended it so.
@@ -200,7 +209,9 @@ class Robot:
             self.devices["camera"] = Camera("camera")
             self.devices["User Display"] = Display("User Display")
             self.devices["Place Cell Display"] = Display("Place Cell Display", 800, 800)
+        self.devices.update(_devices.extra_devices())  # the runner's --device
         self._names = list(self.devices)
+        self._keyboard = Keyboard(0)  # disabled until enable(), as Webots' robot's keyboard
         if _scene.current is not None:  # where the goals of the controller's own world are found
             _scene.current.goal.namespace = vars(sys.modules["__main__"])
 
@@ -224,6 +235,12 @@ class Robot:
             self._ended = True
         elif _scene.current is not None and _scene.current.reset_requested:
             _scene.current.reset()
+            _devices.forget_targets()
+        self._step_s = time_step / 1000.0  # the last step's duration (Node.getVelocity)
+        if _devices.requested:  # a Compass, Gyro, Accelerometer or LED from --device
+            _devices.motion.after_step(self)
+        if _keyboard.state.period_ms > 0:
+            _keyboard.state.sample(self.getTime() * 1000.0)
         return result
 
     def _record_path(self, scene):
@@ -265,6 +282,14 @@ class Robot:
             print(f'Device "{name}" was not found on robot "{self.getName()}"', file=sys.stderr)
         return device
 
+    def getKeyboard(self):
+        """The robot's keyboard (Webots' Keyboard; keyboard.py): enable(ms), then getKey()."""
+        return self._keyboard
+
+    @property
+    def keyboard(self):
+        return self._keyboard
+
     def getNumberOfDevices(self):
         return len(self._names)
 
@@ -301,12 +326,25 @@ class Robot:
     def getTouchSensor(self, name):
         return self._deprecated("getTouchSensor", name)
 
+    def getCompass(self, name):
+        return self._deprecated("getCompass", name)
+
+    def getAccelerometer(self, name):
+        return self._deprecated("getAccelerometer", name)
+
+    def getGyro(self, name):
+        return self._deprecated("getGyro", name)
+
+    def getLED(self, name):
+        return self._deprecated("getLED", name)
+
 
 class Supervisor(Robot):
     """The robot as a Webots supervisor (the course's HamBot is one): the scene tree as far as
     the course's library uses it (scene.py): getRoot, getSelf, getFromDef, getFromId,
     importing Obstacle and Landmark nodes, the robot's translation and rotation (a teleport),
-    simulationReset."""
+    simulationReset; and setLabel, exportImage, worldReload, getSelected, getFromDevice
+    (supervision.py)."""
 
     SIMULATION_MODE_PAUSE = 0
     SIMULATION_MODE_REAL_TIME = 1
@@ -352,6 +390,10 @@ class Supervisor(Robot):
     def simulationQuit(self, status):
         """The next step returns -1, as when Webots quits."""
         self._scene().simulation.request_stop()
+
+
+# setLabel, exportImage, worldReload, getSelected, getFromDevice (supervision.py).
+_supervision.add_supervisor_methods(Supervisor)
 
 
 def __getattr__(name):

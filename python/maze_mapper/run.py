@@ -38,7 +38,7 @@ import textwrap
 import time
 
 import maze_mapper
-from maze_mapper import _controller_run, _native, controller, scene
+from maze_mapper import _controller_run, _native, controller, devices, keyboard, scene
 from maze_mapper.controller import Robot
 
 _KEY = _native.report_key  # the summary keys, spelled once for every report
@@ -85,6 +85,12 @@ def _parse(argv):
     p.add_argument("--wall-limit", type=float,
                    help="wall-clock seconds after which Robot.step() returns -1 (a guard for a class's runs)")
     p.add_argument("-o", "--out", **shared("--out"))
+    p.add_argument("--keys", metavar="FILE",
+                   help="the keyboard's keys from a script of timed keys (lines 'TIME KEY...', docs/python.md); "
+                        "without it a terminal's keys, else none")
+    p.add_argument("--device", metavar="TYPE[:NAME]", action="append", default=[],
+                   help="adds a compass, accelerometer, gyro or led to the robot (repeatable; NAME defaults to "
+                        "TYPE)")
     # Everything after the first `--` is the controller's, whether runner options come before it
     # or not (argparse would drop a `--` that directly follows the controller's path).
     split = argv.index("--") if "--" in argv else len(argv)
@@ -112,7 +118,23 @@ def _parse(argv):
         p.error(f"--seed must be 0 or more (got {args.seed})")
     if not os.path.isfile(args.controller):
         p.error(f"cannot read {args.controller}: no such file")
+    try:
+        args.device = [devices.parse_device_option(text) for text in args.device]
+    except ValueError as e:
+        p.error(str(e))
     return args, rest
+
+
+def _check_devices(args, simulation):
+    """The --device names against the robot's own devices and each other; maze_mapper.Error."""
+    taken = set(simulation.device_names())
+    if simulation.robot_name.startswith("hambot"):
+        taken |= {"camera", "User Display", "Place Cell Display"}
+    for kind, name in args.device:
+        if name in taken:
+            raise maze_mapper.Error(f"error: --device {kind}:{name}: the robot has a device named {name} already")
+        taken.add(name)
+
 
 
 class _Entries:
@@ -343,8 +365,10 @@ def main(argv=None):
     maze_mapper._started_in = os.getcwd()  # where the user's paths are taken from (user_path)
     try:
         world, simulation = _simulation(args)
+        _check_devices(args, simulation)
+        script = None if args.keys is None else keyboard.read_key_script(args.keys)
         files = _run_files(args)
-    except maze_mapper.Error as e:
+    except (maze_mapper.Error, keyboard.KeyScriptError) as e:
         print(e, file=sys.stderr)
         return EXIT_USAGE
     maze_mapper._kept = None
@@ -354,6 +378,9 @@ def main(argv=None):
     if files is not None:
         simulation.record_trace(files)
     scene.current = scene.Scene(simulation, world_file=args.world, goal=_goal(world))
+    scene.current.world_read = world  # Supervisor.exportImage's floor
+    devices.requested[:] = args.device
+    devices.motion.poses = []
     if world is not None:
         scene.current.add_world_landmarks(world.landmarks)
     random.seed(args.seed)
@@ -362,7 +389,14 @@ def main(argv=None):
     controller.wall_limit_reached = False
     status = EXIT_USAGE
     try:
-        end, status = _controller_run.run(args.controller, controller_args)
+        if script is not None:
+            keyboard.use_script(script)
+        else:
+            keyboard.use_terminal_if_any()
+        try:
+            end, status = _controller_run.run(args.controller, controller_args)
+        finally:
+            keyboard.release()  # the terminal as it was, before the summary
         if _native.interrupted():
             status = _native.interrupted_exit_status()
         wall_time_ms = (time.perf_counter() - started) * 1000.0
@@ -391,6 +425,8 @@ def main(argv=None):
         Robot.created = None
         maze_mapper._map_recorder = None
         controller.wall_deadline = None
+        keyboard.release()
+        devices.requested[:] = []
         scene.current = None
     return status
 

@@ -74,12 +74,12 @@ def test_a_device_of_another_robot(controller_file):
 
 
 def test_what_webots_has_and_we_do_not_is_named(controller_file):
-    status, _, err = run_controller(controller_file("from controller import Keyboard\n"),
+    status, _, err = run_controller(controller_file("from controller import Speaker\n"),
                                     "--world", "worlds/lab4x4.txt")
     assert status == 1
-    assert ("ImportError: maze_mapper's controller module has no Keyboard: the embedded simulator offers "
-            "Robot, Supervisor, Lidar, Motor, PositionSensor, InertialUnit, GPS, DistanceSensor, TouchSensor, "
-            "Camera, Display") in err
+    assert ("ImportError: maze_mapper's controller module has no Speaker: the embedded simulator offers "
+            "Robot, Supervisor, Keyboard, Lidar, Motor, PositionSensor, InertialUnit, GPS, DistanceSensor, "
+            "TouchSensor, Camera, Display, Compass, Accelerometer, Gyro, LED") in err
 
 
 def test_step_returns_minus_one_when_the_simulation_ends(controller_file):
