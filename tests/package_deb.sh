@@ -101,6 +101,18 @@ for f in /usr/share/zsh/vendor-completions/_maze_mapper /usr/share/fish/vendor_c
     grep -qx "$f" "$work/files" || fail "$f is not in the package"
 done
 echo "completion: bash completes 'maze_mapper run --rob' to --robot; zsh and fish installed"
+# As a user's interactive bash has it with bash-completion (which the package recommends): the
+# completion loaded on first use, `complete -p maze_mapper` set, --strategy's words offered.
+if [ -f /usr/share/bash-completion/bash_completion ]; then
+    # shellcheck disable=SC2016
+    got=$(bash -c '. /usr/share/bash-completion/bash_completion; _completion_loader maze_mapper; complete -p maze_mapper
+                   COMP_WORDS=(maze_mapper run --strategy fl); COMP_CWORD=3; _maze_mapper; echo "${COMPREPLY[*]}"')
+    case "$got" in
+        "complete -o filenames -F _maze_mapper maze_mapper"*floodfill*) ;;
+        *) fail "with bash-completion, complete -p maze_mapper and run --strategy fl<TAB> give '$got'" ;;
+    esac
+    echo "completion: with bash-completion, complete -p maze_mapper is set and --strategy fl completes to floodfill"
+fi
 
 if [ -n "$python_module" ]; then
     (cd / && env -u PYTHONPATH -u PYTHONDONTWRITEBYTECODE /usr/bin/python3 -c 'import maze_mapper, numpy; print(maze_mapper.__file__)') > "$work/python.out" ||

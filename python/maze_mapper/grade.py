@@ -1,6 +1,7 @@
 """python3 -m maze_mapper.grade WORLD FOLDER|FILE... [--cell-size M] [--csv FILE]
 python3 -m maze_mapper.grade --controllers FOLDER [--world WORLD|own]... [--starts N]
-    [--goal landmark|COLOR] [--estimate REGEX] [--keep DIR] [--csv FILE]
+    [--goal landmark|COLOR] [--estimate REGEX] [--keep DIR] [--csv FILE] [--shard K/N]
+python3 -m maze_mapper.grade --merge PART.csv... [--csv FILE]
 
 Grades students' 4D grids against a world's truth, as `maze_mapper run` scores its own map:
 one row a grid file (.npz with `grid` and optionally `visited` (n, 2) and `headings`, or a
@@ -19,7 +20,10 @@ or with --goal a landmark's), the position estimates the controller printed (--e
 the map score (coverage, wall accuracy) of the grid the controller kept
 (maze_mapper.keep_grid) or saved in its folder as .npy/.npz during the run, on a maze world;
 then a table a line a student. Files only where asked: --csv FILE the rows, --keep DIR each
-run's folder. Exit status: 0 when every run finished, 1 when one did not, 2 for usage.
+run's folder. --shard K/N runs the K-th of N contiguous parts of the runs (students x worlds
+x starts, in that order), as `maze_mapper batch --shard` cuts its worlds, for a job array;
+--merge joins the parts' CSVs and prints the table the whole class's run prints. Exit status:
+0 when every run finished, 1 when one did not, 2 for usage.
 """
 
 import argparse
@@ -302,13 +306,30 @@ def _read_world(world):
         return None
 
 
-def _student_runs(student, controller, worlds, args, truths):
-    """A student's runs, one after another (a run may save its grid in the student's folder)."""
-    return [run_once(student, controller, w, s, args, truths[w]) for w in worlds for s in range(1, args.starts + 1)]
+def _student_runs(student, controller, runs, args, truths):
+    """A student's runs ((world, start) pairs), one after another (a run may save its grid in
+    the student's folder)."""
+    return [run_once(student, controller, w, s, args, truths[w]) for w, s in runs]
+
+
+def parse_shard(text):
+    """(K, N) from "K/N" with 1 <= K <= N, as `maze_mapper batch --shard` takes it; else None."""
+    match = re.fullmatch(r"([1-9][0-9]*)/([1-9][0-9]*)", text)
+    if match is None or int(match.group(1)) > int(match.group(2)):
+        return None
+    return int(match.group(1)), int(match.group(2))
+
+
+def shard_of(items, shard):
+    """The K-th of N contiguous, near-equal parts of items, as `batch --shard` cuts its worlds:
+    parts 1 to N together are the list, in order."""
+    k, n = shard
+    return items[len(items) * (k - 1) // n:len(items) * k // n]
 
 
 CLASS_USAGE = ("python3 -m maze_mapper.grade --controllers FOLDER [--world WORLD|own]... [--starts N] "
-               "[--goal landmark|COLOR] [--estimate REGEX] [--keep DIR] [--csv FILE]")
+               "[--goal landmark|COLOR] [--estimate REGEX] [--keep DIR] [--csv FILE] [--shard K/N]")
+MERGE_USAGE = "python3 -m maze_mapper.grade --merge PART.csv... [--csv FILE]"
 
 
 def _class_parser():
@@ -340,6 +361,9 @@ def _class_parser():
     p.add_argument("--keep", metavar="DIR",
                    help="keep each run's folder (summary, pictures, replay, controller.log) as DIR/STUDENT/WORLD-START")
     p.add_argument("--csv", help="also write the rows to this CSV file")
+    p.add_argument("--shard", metavar="K/N",
+                   help="run the K-th of N contiguous parts of the runs (students x worlds x starts, in order), "
+                        "as batch --shard; --merge joins the parts' CSVs")
     return p
 
 
@@ -363,6 +387,12 @@ def _class_args(argv):
             p.error(f"cannot read {w}: no such file")
     if args.keep is not None and os.path.exists(args.keep) and not os.path.isdir(args.keep):
         p.error(f"--keep {args.keep}: not a folder")
+    if args.shard is not None:
+        text, args.shard = args.shard, parse_shard(args.shard)
+        if args.shard is None:
+            p.error(f"--shard must be K/N with 1 <= K <= N, e.g. 2/8 (got '{text}')")
+        if not args.csv:
+            p.error("--shard needs --csv FILE (the part's rows, which --merge joins)")
     return args
 
 
@@ -372,39 +402,74 @@ def class_main(argv):
     read = {w: _read_world(w) for w in worlds}
     truths = {w: r if r is not None and r.is_maze else None for w, r in read.items()}  # to score saved grids
     args.lattices = {w: None if r is None else _lab_scores.Lattice.of_world(r, args.cell_size) for w, r in read.items()}
+    every = [(student, w, s) for student in sorted(os.listdir(args.controllers))
+             if os.path.isdir(os.path.join(args.controllers, student)) for w in worlds for s in range(1, args.starts + 1)]
+    mine = shard_of(every, args.shard) if args.shard else every
+    if args.shard and not mine:
+        print(f"warning: --shard {args.shard[0]}/{args.shard[1]}: no runs in this part ({len(every)} in all)",
+              file=sys.stderr)
     students, rows = [], []
-    for student in sorted(os.listdir(args.controllers)):
-        folder = os.path.join(args.controllers, student)
-        if not os.path.isdir(folder):
-            continue
+    for student in sorted({s for s, _, _ in mine}):
+        runs = [(w, k) for s, w, k in mine if s == student]
         try:
-            students.append((student, student_controller(folder, args.controller)))
+            students.append((student, student_controller(os.path.join(args.controllers, student), args.controller),
+                             runs))
         except ValueError as e:
-            rows += [{"student": student, "world": w, "start": s, "result": "not run", "end": "not run",
-                      "error": str(e)} for w in worlds for s in range(1, args.starts + 1)]
+            rows += [{"student": student, "world": w, "start": k, "result": "not run", "end": "not run",
+                      "error": str(e)} for w, k in runs]
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        for runs in pool.map(lambda sc: _student_runs(*sc, worlds, args, truths), students):
+        for runs in pool.map(lambda scr: _student_runs(*scr, args, truths), students):
             rows += runs
     rows.sort(key=lambda r: (r["student"], worlds.index(r["world"]), r["start"]))
     if args.csv:
         write_csv(args.csv, rows, RUN_COLUMNS)
-    for line in class_summary(rows, estimates=args.estimate is not None):
+    return _report_class(rows, args.estimate is not None, args.csv, args.keep)
+
+
+def _report_class(rows, estimates, csv_path, keep):
+    """Prints the table and the totals line; the exit status: 0 when every run finished."""
+    for line in class_summary(rows, estimates=estimates):
         print(line)
     finished = sum(1 for r in rows if r.get("result") == "finished")
     reached = sum(1 for r in rows if r.get("goal") == "reached")
-    where = f"; rows in {args.csv}" if args.csv else ""
-    kept = f"; runs kept in {args.keep}" if args.keep else ""
+    where = f"; rows in {csv_path}" if csv_path else ""
+    kept = f"; runs kept in {keep}" if keep else ""
     print(f"total: {len(rows)} runs, {finished} finished, {reached} reached the goal{where}{kept}")
     return 0 if finished == len(rows) else 1
+
+
+def merge_main(argv):
+    """--merge PART.csv... [--csv FILE]: the parts' rows (--shard's CSVs) in the order given,
+    and the table and totals one run of the whole class prints."""
+    p = _Parser(prog="python3 -m maze_mapper.grade --merge",
+                description="Join the CSVs of grade --controllers --shard parts; print the class's table.")
+    p.add_argument("--merge", nargs="+", required=True, metavar="PART.csv", help="the parts' CSVs, part 1 first")
+    p.add_argument("--csv", help="also write the joined rows to this CSV file")
+    args = p.parse_args(argv)
+    rows = []
+    for path in args.merge:
+        try:
+            with open(path, newline="") as f:
+                reader = csv.DictReader(f)
+                if reader.fieldnames != RUN_COLUMNS:
+                    p.error(f"{path}: not the CSV of a grade --controllers run (its columns differ)")
+                rows += list(reader)
+        except OSError as e:
+            p.error(f"cannot read {path}: {e.strerror}")
+    if args.csv:
+        write_csv(args.csv, rows, RUN_COLUMNS)
+    return _report_class(rows, any(r.get("estimates") for r in rows), args.csv, None)
 
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if any(a == "--controllers" or a.startswith("--controllers=") for a in argv):
         return class_main(argv)
+    if any(a == "--merge" for a in argv):
+        return merge_main(argv)
     p = _Parser(prog="python3 -m maze_mapper.grade",
                 usage="python3 -m maze_mapper.grade WORLD FOLDER|FILE... [--cell-size M] [--csv FILE]\n"
-                      f"       {CLASS_USAGE}",
+                      f"       {CLASS_USAGE}\n       {MERGE_USAGE}",
                 description="Grade students' 4D grids against a world; or, with --controllers, run a class's "
                             "controllers over worlds and starts (its options: --controllers FOLDER --help).",
                 epilog="\n".join(["options with --controllers:", *_class_parser().format_help().split(
