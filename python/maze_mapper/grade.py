@@ -244,8 +244,8 @@ def run_once(student, controller, world, start, args, truth=None):
                "error": errors[-1] if done.returncode != 0 and errors else ""}
         row["result"] = _result(row)
         lattice = args.lattices.get(world)
-        if world == "own" and summary.get("boundary_m"):  # the floor the controller's walls enclose
-            lattice = _lab_scores.Lattice.of_boundary(summary["boundary_m"], args.cell_size)
+        if world == "own" and summary.get("walls_extent_m"):  # the floor the controller's walls enclose
+            lattice = _lab_scores.Lattice.of_boundary(summary["walls_extent_m"], args.cell_size)
         _lab_values(row, summary, out, args, lattice)
     _score_saved_grid(row, truth, folder, since)
     return row

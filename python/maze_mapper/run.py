@@ -140,9 +140,10 @@ def _world_entries(e, args, world, the_scene):
         e.both("world", "the course's empty floor (17 x 17 m)")
         e.both("imported_nodes", str(the_scene.root.getField("children").getCount() - 1),  # all but the robot
                the_scene.root.getField("children").getCount() - 1)
-        # The floor the controller's walls enclose (x_min, x_max, y_min, y_max), where a grader
-        # lays the course's cells.
-        e.json_only("boundary_m", [round(v, 3) for v in the_scene.simulation.built_world().boundary])
+        # Where the controller's walls stand (x_min, x_max, y_min, y_max): where a grader lays
+        # the course's cells.
+        if the_scene.walls_extent_m is not None:
+            e.json_only("walls_extent_m", [round(v, 3) for v in the_scene.walls_extent_m])
     elif world.is_maze:
         e.both("world", args.world)
         e.both("size", f"{world.width}x{world.height}")
