@@ -270,14 +270,15 @@ def _student_line(student, mine, estimates):
         line += [_mean([float(r["estimate_error_m"]) for r in mine if r.get("estimate_error_m")], "{:.2f} m"),
                  _mean([float(r["right_cell"].rstrip("%")) for r in mine if r.get("right_cell")], "{:.0f}%")]
     first = failed[0] if failed else None
+    if first:
+        reason = first.get("error") or (first.get("end") if first.get("end") != first["result"] else "")
+        first = f"{first['world']}, start {first['start']}: {first['result']}{': ' + reason if reason else ''}"
     return line + [
         _mean([float(r["sim_time_s"]) for r in finished if r.get("sim_time_s")], "{:.1f} s"),
         *(_mean([float(r[key].rstrip("%")) for r in mine if r.get(key)], "{:.1f}%")
           for key in (_KEY.coverage, _KEY.wall_accuracy)),
         str(sum(int(r["collisions"]) for r in mine if r.get("collisions"))),
-        f"{first['world']}, start {first['start']}: {first['result']}"
-        f"{': ' + (first.get('error') or first.get('end')) if first['result'] != first.get('end') else ''}"
-        if first else ""]
+        first or ""]
 
 
 def class_summary(rows, estimates=False):
