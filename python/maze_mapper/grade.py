@@ -471,8 +471,9 @@ def main(argv=None):
     p = _Parser(prog="python3 -m maze_mapper.grade",
                 usage="python3 -m maze_mapper.grade WORLD FOLDER|FILE... [--cell-size M] [--csv FILE]\n"
                       f"       {CLASS_USAGE}\n       {MERGE_USAGE}",
-                description="Grade students' 4D grids against a world; or, with --controllers, run a class's "
-                            "controllers over worlds and starts (its options: --controllers FOLDER --help).",
+                description="Grade students' 4D grids against a world; or, with --controllers, run a class's\n"
+                            "controllers over worlds and starts (its options below); --merge joins the CSVs\n"
+                            "of --shard parts.",
                 epilog="\n".join(["options with --controllers:", *_class_parser().format_help().split(
                     "options:\n", 1)[-1].splitlines()]),
                 formatter_class=argparse.RawDescriptionHelpFormatter)
