@@ -166,3 +166,23 @@ def test_help_shows_both_modes_and_no_file_is_written_unasked(tmp_path):
     assert sorted(os.listdir(tmp_path)) == ["class"] and sorted(os.listdir(tmp_path / "class" / "anna")) == ["anna.py"]
     done = grade(tmp_path, "--controllers", "class", "--estimate", "(")
     assert done.returncode == 2 and done.stderr.startswith("error: --estimate (: not a regular expression")
+
+
+def test_shards_merged_print_the_table_and_csv_of_one_run(tmp_path):
+    hand_in(tmp_path / "class", "bug0_landmark.xml", {"anna": REACHES, "cal": CRASHES})
+    common = ["--controllers", "class", "--starts", "2", "--time-limit", "6", "--goal", "landmark"]
+    whole = grade(tmp_path, *common, "--csv", "all.csv")
+    assert whole.returncode == 1, whole.stderr
+    for k in (1, 2, 3):
+        part = grade(tmp_path, *common, "--shard", f"{k}/3", "--csv", f"part-{k}.csv")
+        assert part.returncode == (1 if k == 3 else 0), part.stderr  # parts: anna 1 | anna 2 | cal 1, cal 2
+    assert [len(rows_of(tmp_path / f"part-{k}.csv")) for k in (1, 2, 3)] == [1, 1, 2]
+    (tmp_path / "all.csv").rename(tmp_path / "one.csv")
+    merged = grade(tmp_path, "--merge", "part-1.csv", "part-2.csv", "part-3.csv", "--csv", "all.csv")
+    assert merged.returncode == 1, merged.stderr
+    assert merged.stdout == whole.stdout
+    assert (tmp_path / "all.csv").read_text() == (tmp_path / "one.csv").read_text()
+    done = grade(tmp_path, *common, "--shard", "4/3", "--csv", "x.csv")
+    assert done.returncode == 2 and done.stderr == "error: --shard must be K/N with 1 <= K <= N, e.g. 2/8 (got '4/3')\n"
+    done = grade(tmp_path, "--merge", "class/anna/anna.py")
+    assert done.returncode == 2 and "not the CSV of a grade --controllers run" in done.stderr
