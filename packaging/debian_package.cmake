@@ -58,6 +58,14 @@ if(MAZE_MAPPER_PYTHON_VERSION)
   set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 endif()
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "${_depends}")
+# Recommended: bash-completion, without which bash completes nothing (the package's completion
+# goes where it loads completions from); and the libraries the course's own library imports
+# (fairis_lib: pandas, matplotlib), so that a course's controller runs as it is.
+set(_recommends "bash-completion")
+if(MAZE_MAPPER_PYTHON_VERSION)
+  string(APPEND _recommends ", python3-pandas, python3-matplotlib")
+endif()
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "${_recommends}")
 find_program(MAZE_MAPPER_DPKG dpkg)
 if(MAZE_MAPPER_DPKG)
   execute_process(COMMAND ${MAZE_MAPPER_DPKG} --print-architecture

@@ -14,7 +14,11 @@
 #   python3                     the example mms algorithm in Python (tests/mms_examples.sh)
 #   pybind11-dev python3-dev    the Python module (python/, MAZE_MAPPER_PYTHON) and its tests
 #   python3-numpy python3-pytest
+#   slurmctld slurmd            python/slurm_grade: a class graded by a one-node Slurm job
+#   slurm-client munge parallel array and by GNU parallel (skipped without them)
+#   bash-completion             the package stage: `complete -p maze_mapper` once installed
 # Further package names given as arguments are installed too.
 exec "$(dirname "$0")/install-deps.sh" doctest-dev clang libclang-rt-14-dev universal-ctags tmux chromium \
     dpkg-dev file man-db lintian \
-    python3 pybind11-dev python3-dev python3-numpy python3-pytest "$@"
+    python3 pybind11-dev python3-dev python3-numpy python3-pytest \
+    slurmctld slurmd slurm-client munge parallel bash-completion "$@"

@@ -35,12 +35,18 @@ echo "depends: $depends"
 for needed in libcairo2 fonts-dejavu-core; do
     grep -q "$needed" <<< "$depends" || fail "the package does not depend on $needed (the pictures)"
 done
+recommends=$(dpkg-deb -f "$deb" Recommends)
+echo "recommends: $recommends"
+grep -qF bash-completion <<< "$recommends" || fail "the package does not recommend bash-completion (bash completes nothing without it)"
 python_module=$(dpkg-deb -c "$deb" | awk '{ print $6 }' | grep '/maze_mapper/__init__.py$' || true)
 if [ -n "$python_module" ]; then
     [ "$python_module" = ./usr/lib/python3/dist-packages/maze_mapper/__init__.py ] ||
         fail "the Python module is at $python_module, not in /usr/lib/python3/dist-packages"
     for needed in 'python3 (>=' python3-numpy; do
         grep -qF "$needed" <<< "$depends" || fail "the package has the Python module but no Depends on $needed"
+    done
+    for wanted in python3-pandas python3-matplotlib; do
+        grep -qF "$wanted" <<< "$recommends" || fail "the package has the Python module but does not recommend $wanted (the course's library imports it)"
     done
 fi
 
@@ -55,7 +61,7 @@ echo "lintian: no error, no warning"
 find /usr -xdev | sort > "$work/before"
 export DEBIAN_FRONTEND=noninteractive
 installed=1
-apt-get install -y -qq "$deb" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt install"; }
+apt-get install -y -qq --no-install-recommends "$deb" > "$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt install"; }
 dpkg -L "$package" > "$work/files"
 
 cd "$work"  # under /tmp: no worlds/ here
@@ -95,6 +101,18 @@ for f in /usr/share/zsh/vendor-completions/_maze_mapper /usr/share/fish/vendor_c
     grep -qx "$f" "$work/files" || fail "$f is not in the package"
 done
 echo "completion: bash completes 'maze_mapper run --rob' to --robot; zsh and fish installed"
+# As a user's interactive bash has it with bash-completion (which the package recommends): the
+# completion loaded on first use, `complete -p maze_mapper` set, --strategy's words offered.
+if [ -f /usr/share/bash-completion/bash_completion ]; then
+    # shellcheck disable=SC2016
+    got=$(bash -c '. /usr/share/bash-completion/bash_completion; _completion_loader maze_mapper; complete -p maze_mapper
+                   COMP_WORDS=(maze_mapper run --strategy fl); COMP_CWORD=3; _maze_mapper; echo "${COMPREPLY[*]}"')
+    case "$got" in
+        "complete -o filenames -F _maze_mapper maze_mapper"*floodfill*) ;;
+        *) fail "with bash-completion, complete -p maze_mapper and run --strategy fl<TAB> give '$got'" ;;
+    esac
+    echo "completion: with bash-completion, complete -p maze_mapper is set and --strategy fl completes to floodfill"
+fi
 
 if [ -n "$python_module" ]; then
     (cd / && env -u PYTHONPATH -u PYTHONDONTWRITEBYTECODE /usr/bin/python3 -c 'import maze_mapper, numpy; print(maze_mapper.__file__)') > "$work/python.out" ||

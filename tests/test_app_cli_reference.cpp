@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string_view>
@@ -11,8 +12,11 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/cli/cli_reference.hpp"
+#include "app/cli/completion_values.hpp"
 #include "app/cli/commands.hpp"
 #include "cli_runner.hpp"
 #include "common/error.hpp"
@@ -110,6 +114,36 @@ TEST_CASE("the bash and zsh completions offer every command and option, and say 
       CHECK(zsh_line.find("'" + sub->get_name() + ":") != std::string::npos);
     }
   }
+}
+
+TEST_CASE("the completions offer the words of --strategy, --model, --robot and --color, and the shipped worlds") {
+  const ReferenceProgram program;
+  const std::string bash = app::bash_completion(program.cli);
+  const std::string zsh = app::zsh_completion(program.cli);
+  const std::string fish = app::fish_completion(program.cli);
+  for (const std::string_view flag : app::kWordValuedFlags) {
+    INFO("option: ", flag);
+    const std::vector<std::string> words = app::option_value_words(flag);
+    REQUIRE(words.size() >= 3);
+    const std::string joined = fmt::format("{}", fmt::join(words, " "));
+    CHECK(bash.find(fmt::format("{}) COMPREPLY=($(compgen -W \"{}\" -- \"$cur\")) ;;", flag, joined)) != std::string::npos);
+    CHECK(zsh.find(fmt::format("{}) compadd -- {} ;;", flag, joined)) != std::string::npos);
+    CHECK(fish.find(fmt::format("-l {} -x -a '{}'", flag.substr(2), joined)) != std::string::npos);
+  }
+  CHECK(app::option_value_words("--color") == std::vector<std::string>{"auto", "always", "never"});
+  const std::vector<std::string> strategies = app::option_value_words("--strategy");
+  for (const char *name : {"dfs", "floodfill", "left-wall"}) {
+    CHECK(std::find(strategies.begin(), strategies.end(), name) != strategies.end());
+  }
+  CHECK(app::option_value_words("--out").empty());
+  const std::vector<std::string> worlds = app::shipped_world_names();
+  REQUIRE(std::find(worlds.begin(), worlds.end(), "maze8x8") != worlds.end());
+  CHECK(std::count(worlds.begin(), worlds.end(), "lab4x4") == 1);  // .txt, .num and .xml: one name
+  const std::string shipped = fmt::format("{}", fmt::join(worlds, " "));
+  CHECK(bash.find("shipped=\"" + shipped + "\"") != std::string::npos);
+  CHECK(case_line(bash, "run").find("worlds=\"$shipped\"") != std::string::npos);
+  CHECK(zsh.find("compadd -X 'shipped worlds' -- " + shipped) != std::string::npos);
+  CHECK(fish.find("-a '" + shipped + "' -d 'shipped world'") != std::string::npos);
 }
 
 TEST_CASE("the fish completion has a line for every option of every command") {

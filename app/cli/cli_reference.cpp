@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/cli/completion_values.hpp"
 #include "app/cli/help_format.hpp"
 #include "common/error.hpp"
 
@@ -212,6 +213,22 @@ std::string walk_to_command(std::string_view loop, std::string_view word, const 
                      fmt::arg("loop", loop), fmt::arg("word", word), fmt::arg("paths", paths), fmt::arg("branches", branches));
 }
 
+// Whether the command takes a world (a positional WORLD), where the shipped worlds' names complete.
+bool takes_world(const CLI::App &command) {
+  const std::vector<const CLI::Option *> found = positionals(command);
+  return std::any_of(found.begin(), found.end(), [](const CLI::Option *o) { return o->get_name() == "WORLD"; });
+}
+
+// The case branches offering each word-valued option's words: `offer` formats one ({0} the
+// flag, {1} its words joined by spaces).
+std::string value_branches(std::string_view offer) {
+  std::string out;
+  for (const std::string_view flag : kWordValuedFlags) {
+    out += fmt::format(fmt::runtime(offer), flag, fmt::join(option_value_words(flag), " "));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<CommandNode> visible_commands(const CLI::App &root) {
@@ -293,26 +310,29 @@ std::string bash_completion(const CLI::App &root) {
     const std::string path = slash_path(node.path);
     if (!path.empty()) paths += (paths.empty() ? "" : "|") + path;
     const CompletionWords words = completion_words(*node.app);
-    branches += fmt::format("    \"{}\") commands=\"{}\"; options=\" {} \"; taking_value=\" {} \" ;;\n", path,
-                            fmt::join(words.commands, " "), fmt::join(words.options, " "),
-                            fmt::join(words.taking_value, " "));
+    branches += fmt::format("    \"{}\") commands=\"{}\"; options=\" {} \"; taking_value=\" {} \"; worlds=\"{}\" ;;\n",
+                            path, fmt::join(words.commands, " "), fmt::join(words.options, " "),
+                            fmt::join(words.taking_value, " "), takes_world(*node.app) ? "$shipped" : "");
   }
   return fmt::format(R"(# bash completion for maze_mapper, generated from its command definitions
 # (maze_mapper {ref} bash).
 _maze_mapper() {{
     local cur=${{COMP_WORDS[COMP_CWORD]}} prev=${{COMP_WORDS[COMP_CWORD-1]}}
-    local cmdpath="" word i commands options taking_value
+    local cmdpath="" word i commands options taking_value worlds shipped="{shipped}"
 {walk}    if [[ "$prev" == -* && "$taking_value" == *" $prev "* ]]; then
-        COMPREPLY=($(compgen -f -- "$cur"))
+        case "$prev" in
+{values}            *) COMPREPLY=($(compgen -f -- "$cur")) ;;
+        esac
     elif [[ "$cur" == -* ]]; then
         COMPREPLY=($(compgen -W "$options" -- "$cur"))
     else
-        COMPREPLY=($(compgen -W "$commands" -- "$cur") $(compgen -f -- "$cur"))
+        COMPREPLY=($(compgen -W "$commands $worlds" -- "$cur") $(compgen -f -- "$cur"))
     fi
 }}
 complete -o filenames -F _maze_mapper maze_mapper
 )",
-                     fmt::arg("ref", kReferenceCommand),
+                     fmt::arg("ref", kReferenceCommand), fmt::arg("shipped", fmt::join(shipped_world_names(), " ")),
+                     fmt::arg("values", value_branches("            {}) COMPREPLY=($(compgen -W \"{}\" -- \"$cur\")) ;;\n")),
                      fmt::arg("walk", walk_to_command("i = 1; i < COMP_CWORD; i++", "COMP_WORDS[i]", paths, branches)));
 }
 
@@ -335,28 +355,33 @@ std::string zsh_completion(const CLI::App &root) {
         if (takes_value(*o)) taking_value.push_back(name);
       }
     }
-    branches += fmt::format("    \"{}\") subs=({}); opts=({}); valued=({}) ;;\n", path,
-                            fmt::join(commands, " "), fmt::join(options, " "), fmt::join(taking_value, " "));
+    branches += fmt::format("    \"{}\") subs=({}); opts=({}); valued=({}); worlds={} ;;\n", path,
+                            fmt::join(commands, " "), fmt::join(options, " "), fmt::join(taking_value, " "),
+                            takes_world(*node.app) ? 1 : 0);
   }
   return fmt::format(R"(#compdef maze_mapper
 # zsh completion for maze_mapper, generated from its command definitions
 # (maze_mapper {ref} zsh).
 _maze_mapper() {{
-    local cmdpath="" word i
+    local cmdpath="" word i worlds=0
     # Not commands, options: zsh's own (zsh/parameter) parameters.
     local -a subs opts valued
 {walk}    if (( ${{valued[(Ie)${{words[CURRENT-1]}}]}} )); then
-        _files
+        case ${{words[CURRENT-1]}} in
+{values}            *) _files ;;
+        esac
     elif [[ $PREFIX == -* ]]; then
         _describe -t options option opts
     else
         (( ${{#subs}} )) && _describe -t commands command subs
+        (( worlds )) && compadd -X 'shipped worlds' -- {shipped}
         _files
     fi
 }}
 _maze_mapper "$@"
 )",
-                     fmt::arg("ref", kReferenceCommand),
+                     fmt::arg("ref", kReferenceCommand), fmt::arg("shipped", fmt::join(shipped_world_names(), " ")),
+                     fmt::arg("values", value_branches("            {}) compadd -- {} ;;\n")),
                      fmt::arg("walk", walk_to_command("i = 2; i < CURRENT; i++", "words[i]", paths, branches)));
 }
 
@@ -382,12 +407,20 @@ std::string fish_completion(const CLI::App &root) {
       out += fmt::format("complete -c maze_mapper -n {} -a {} -d {}\n", condition, sub->get_name(),
                          quoted(short_text(sub->get_description())));
     }
+    if (takes_world(*node.app)) {
+      out += fmt::format("complete -c maze_mapper -n {} -a {} -d 'shipped world'\n", condition,
+                         quoted(fmt::format("{}", fmt::join(shipped_world_names(), " "))));
+    }
     for (const CLI::Option *o : named_options(*node.app)) {
       std::string names;
       for (const std::string &l : o->get_lnames()) names += " -l " + l;
       for (const std::string &s : o->get_snames()) names += " -s " + s;
-      out += fmt::format("complete -c maze_mapper -n {}{}{} -d {}\n", condition, names,
-                         takes_value(*o) ? " -r" : "", quoted(short_text(description_text(*o))));
+      const std::vector<std::string> values = o->get_lnames().empty() ? std::vector<std::string>{}
+                                                                     : option_value_words("--" + o->get_lnames()[0]);
+      const std::string taking = values.empty() ? (takes_value(*o) ? " -r" : "")
+                                                : fmt::format(" -x -a {}", quoted(fmt::format("{}", fmt::join(values, " "))));
+      out += fmt::format("complete -c maze_mapper -n {}{}{} -d {}\n", condition, names, taking,
+                         quoted(short_text(description_text(*o))));
     }
   }
   return out;

@@ -26,9 +26,9 @@ int progress_fd(bool quiet, bool animate) {
 }
 
 ColorChoice parse_color_choice(const std::string &text) {
-  if (text == "auto") return ColorChoice::automatic;
-  if (text == "always") return ColorChoice::always;
-  if (text == "never") return ColorChoice::never;
+  for (const ColorWord &w : kColorWords) {
+    if (text == w.word) return w.choice;
+  }
   throw common::InputError(fmt::format("--color must be auto, always or never (got '{}')", text));
 }
 

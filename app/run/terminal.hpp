@@ -3,6 +3,7 @@
 // other stop signals: common/interrupt.hpp.)
 
 #include <string>
+#include <string_view>
 
 #include <atomic>
 #include <chrono>
@@ -20,7 +21,14 @@ bool is_terminal(int fd);
 // --color WHEN: auto colours when the output is a terminal and NO_COLOR is unset or empty
 // (no-color.org); always and never as they say (the command line over the environment).
 enum class ColorChoice { automatic, always, never };
-// "auto", "always", "never"; anything else throws common::InputError naming --color.
+struct ColorWord {
+  std::string_view word;
+  ColorChoice choice;
+};
+// The words --color takes, in the order its help names them (parsing and completion read them).
+inline constexpr ColorWord kColorWords[] = {
+    {"auto", ColorChoice::automatic}, {"always", ColorChoice::always}, {"never", ColorChoice::never}};
+// A word of kColorWords; anything else throws common::InputError naming --color.
 ColorChoice parse_color_choice(const std::string &text);
 bool use_color(ColorChoice choice, int fd);
 

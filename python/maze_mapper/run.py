@@ -14,7 +14,9 @@ serves where it is not.
 When the controller ends, the runner prints a summary; if the controller handed its grid to
 maze_mapper.keep_grid(), the summary scores it against a maze's truth as `maze_mapper run`
 scores its own map; on an arena, a metric map handed to maze_mapper.keep_map() is drawn. With
---out DIR it writes the run's files there (docs/course.md), each whole or absent.
+--out DIR it writes the run's files there (docs/course.md), each whole or absent, with what the
+controller printed (controller.log, and controller_lines.csv: the step and true pose of each
+line).
 SIGINT (Ctrl-C), SIGTERM and SIGHUP stop the run as they stop `maze_mapper run`: the
 controller's next step returns -1 (KeyboardInterrupt in a controller that has not stepped 2 s
 later), the summary's end is `stopped (interrupted by SIGTERM)`, the files are written, and
@@ -38,7 +40,7 @@ import textwrap
 import time
 
 import maze_mapper
-from maze_mapper import _controller_run, _native, controller, devices, keyboard, scene
+from maze_mapper import _controller_log, _controller_run, _native, controller, devices, keyboard, scene
 from maze_mapper.controller import Robot
 
 _KEY = _native.report_key  # the summary keys, spelled once for every report
@@ -160,6 +162,10 @@ def _world_entries(e, args, world, the_scene):
         e.both("world", "the course's empty floor (17 x 17 m)")
         e.both("imported_nodes", str(the_scene.root.getField("children").getCount() - 1),  # all but the robot
                the_scene.root.getField("children").getCount() - 1)
+        # Where the controller's walls stand (x_min, x_max, y_min, y_max): where a grader lays
+        # the course's cells.
+        if the_scene.walls_extent_m is not None:
+            e.json_only("walls_extent_m", [round(v, 3) for v in the_scene.walls_extent_m])
     elif world.is_maze:
         e.both("world", args.world)
         e.both("size", f"{world.width}x{world.height}")
@@ -218,6 +224,21 @@ def _grid_entries(e, world):
         e.both("wrong_sides", f"{n} side{'' if n == 1 else 's'} of visited cells learned wrong: {named}{more}", n)
 
 
+def _landmark_entries(e, the_scene):
+    """summary.json's landmarks (the world's and those the controller's supervisor built), each
+    with its gap at the end: metres between the robot body's edge and the cylinder's surface
+    (0 when they touch), what a lab that asks the robot to stop near a landmark grades."""
+    if not the_scene.landmarks:
+        return
+    x, y, _, _ = the_scene.simulation.pose
+    body = the_scene.simulation.body_radius_m
+    e.json_only("landmarks", [
+        {"x_m": round(m.x, 3), "y_m": round(m.y, 3), "radius_m": round(m.radius, 3),
+         "color": [round(float(c), 3) for c in m.colors[:3]],  # its first recognition colour
+         "gap_m": round(max(0.0, math.hypot(m.x - x, m.y - y) - m.radius - body), 3)}
+        for m in the_scene.landmarks])
+
+
 def _ending(args, simulation, controller_end, status):
     """The run's end and its message, as every run says them: the step limit when the simulation
     ended there (the controller then left its loop, or stepped on and was ended), else how the
@@ -259,6 +280,7 @@ def _report(args, world, the_scene, end, wall_time_ms):
         e.both("goal", "reached" if simulation.goal_reached else "not reached")
     else:
         e.json_only("goal", None)
+    _landmark_entries(e, the_scene)
     _grid_entries(e, world)
     _map_entries(e, world)
     e.both("wall_time_ms", f"{wall_time_ms:.0f}", wall_time_ms)
@@ -393,8 +415,13 @@ def main(argv=None):
             keyboard.use_script(script)
         else:
             keyboard.use_terminal_if_any()
+        log = _controller_log.ControllerLog(simulation)
         try:
-            end, status = _controller_run.run(args.controller, controller_args)
+            if files is None:
+                end, status = _controller_run.run(args.controller, controller_args)
+            else:
+                with log.kept():
+                    end, status = _controller_run.run(args.controller, controller_args)
         finally:
             keyboard.release()  # the terminal as it was, before the summary
         if _native.interrupted():
@@ -407,6 +434,8 @@ def main(argv=None):
             kept = maze_mapper._kept
             # On the course's empty floor, the world the controller's supervisor built.
             drawn = world if world is not None else simulation.built_world()
+            files.keep_text("controller.log", log.text())
+            files.keep_text("controller_lines.csv", log.lines_csv())
             files.finish(entries, drawn, None if kept is None else kept[0], None if kept is None else kept[2])
         if stdout_failed is not None:
             return _stdout_failed(stdout_failed)

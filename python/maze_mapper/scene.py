@@ -375,6 +375,9 @@ class Scene:
         self.goal = goal if goal is not None else Goal()
         self.goal.attach(simulation)
         self.landmarks = []
+        # (x_min, x_max, y_min, y_max) of the walls (Obstacle nodes) the controller built, m;
+        # None before the first: where a grader lays the course's cells on its empty floor.
+        self.walls_extent_m = None
         self.teleported = False  # since the last step (the path length leaves teleports out)
         self.reset_requested = False  # Supervisor.simulationReset, done at the end of the next step
         self._warned = False
@@ -449,12 +452,20 @@ class Scene:
         if type_name == "Obstacle":
             across, along, _height = fields["size"]
             self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
+            self._extend_walls(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
         else:
             height, radius, _ = fields["size"]
             colour = fields.get("color")
             self.simulation.add_cylinder(x, y, radius, height_m=height, colour=None if colour is None else list(colour))
             colors = [c for colour in fields["recognitionColors"] for c in colour]
             self.landmarks.append(Landmark(node, x, y, z, radius, height, yaw, colors))
+
+    def _extend_walls(self, x, y, half_length, half_width, yaw):
+        c, s = math.cos(yaw), math.sin(yaw)
+        xs = [x + i * half_length * c - j * half_width * s for i in (-1, 1) for j in (-1, 1)]
+        ys = [y + i * half_length * s + j * half_width * c for i in (-1, 1) for j in (-1, 1)]
+        old = self.walls_extent_m or (math.inf, -math.inf, math.inf, -math.inf)
+        self.walls_extent_m = (min(old[0], *xs), max(old[1], *xs), min(old[2], *ys), max(old[3], *ys))
 
     def reset(self):
         """Webots' reset from a supervisor (its Supervisor reference's reset matrix): the nodes
@@ -463,6 +474,7 @@ class Scene:
         the run's limits count its whole time."""
         del self.root._values["children"][self._initial_children:]
         self.landmarks[:] = self._initial_landmarks
+        self.walls_extent_m = None
         self.simulation.reset_world()
         self.teleported = True
         self.reset_requested = False

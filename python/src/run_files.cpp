@@ -236,9 +236,16 @@ std::vector<app::NamedInput> named_inputs(const std::vector<std::pair<std::strin
 
 }  // namespace
 
-// The names a Python run writes are among every run's (app::run_output_names): no own names.
 RunFiles::RunFiles(std::string dir, const std::vector<std::pair<std::string, std::string>> &inputs)
-    : out_(std::move(dir), named_inputs(inputs)) {}
+    : out_(std::move(dir), named_inputs(inputs), kControllerFiles) {}
+
+void RunFiles::keep_text(const std::string &name, std::string text) {
+  if (std::find(kControllerFiles.begin(), kControllerFiles.end(), name) == kControllerFiles.end()) {
+    throw py::value_error(fmt::format("{} is not a file of the controller's (controller.log, controller_lines.csv)", name));
+  }
+  std::erase_if(texts_, [&](const auto &kept) { return kept.first == name; });
+  texts_.emplace_back(name, std::move(text));
+}
 
 PoseTrace &RunFiles::trace() {
   if (!trace_) trace_.emplace(out_.path());
@@ -299,6 +306,7 @@ void RunFiles::finish(const std::vector<EntryTuple> &entries, const maze::World 
   if (metres) write_metres_pictures(visits, marks);
   if (run) write_maze_replay(out_, *started, maze->file, *run, report, visits.empty() ? 0 : visits.back().step);
   if (metres) write_metres_replay(visits, marks);
+  for (const auto &[name, text] : texts_) out_.write(name, text);
   out_.finish();
 }
 
@@ -326,6 +334,8 @@ void bind_run_files(py::module_ &m) {
                          grid, initial_log_odds);
           },
           py::arg("entries"), py::arg("world"), py::arg("grid"), py::arg("initial_log_odds"))
+      .def("keep_text", &RunFiles::keep_text, py::arg("name"), py::arg("text"),
+           "A file of the controller's own (controller.log, controller_lines.csv), written at finish().")
       .def("keep_map", &RunFiles::keep_map, py::arg("kept"),
            "The controller's metric map (a KeptMap) from now on: map.png and the replay's map of a run drawn in metres.");
 }

@@ -38,6 +38,11 @@ std::string format_entries(const std::vector<EntryTuple> &entries);
 // The files observe the run's steps, as every kind of run's do (app/run/run_frame.hpp); a
 // Python run's start is its first step, and its end finish(), which brings the runner's
 // report.
+// The names a Python run writes beyond every run's (app::run_output_names): the controller's
+// standard output and error as printed (controller.log) and, a row a line of it, the step it
+// was printed at and the robot's true pose then (controller_lines.csv).
+inline const std::vector<std::string> kControllerFiles = {"controller.log", "controller_lines.csv"};
+
 class RunFiles final : public app::RunObserver {
  public:
   // Prepares DIR (app::OutputDir: created when missing, a dangling link refused and left as
@@ -56,6 +61,9 @@ class RunFiles final : public app::RunObserver {
   void mark_placed();
   // The metric map the controller keeps from now on (a KeptMap: maze_mapper.keep_map).
   void keep_map(py::object kept);
+  // A file of the controller's own (one of kControllerFiles: what it printed), written by
+  // finish() after the run's core files; a name given twice keeps the last text.
+  void keep_text(const std::string &name, std::string text);
   // The robot's body radius, for the replay's robot and goal marks.
   void set_body_radius(double radius_m) { body_radius_m_ = radius_m; }
 
@@ -87,6 +95,7 @@ class RunFiles final : public app::RunObserver {
   py::object kept_ = py::none();  // a KeptMap
   const KeptMap *kept_map_ = nullptr;  // kept_'s (cast once: the steps read it)
   app::MapFrames replay_{app::PathPoses::every_step};
+  std::vector<std::pair<std::string, std::string>> texts_;  // keep_text's, in order
   double body_radius_m_ = 0.0;
   std::exception_ptr failed_;  // the first write that failed during the run
 };

@@ -417,6 +417,8 @@ void bind_simulator(py::module_ &m) {
       .def_property_readonly("time_s", &PySimulation::time_s)
       .def_property_readonly("steps", &PySimulation::steps)
       .def_property_readonly("robot_name", [](const PySimulation &s) { return s.profile().name; })
+      .def_property_readonly("body_radius_m", [](const PySimulation &s) { return s.profile().body_radius_m; },
+                             "The robot's body radius, m.")
       .def("device_names", &PySimulation::device_names);
 
   py::class_<PyRobot>(m, "RobotHandle")

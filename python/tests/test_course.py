@@ -323,8 +323,8 @@ def test_out_on_the_empty_floor_draws_the_world_the_supervisor_built_its_landmar
     out = tmp_path / "out"
     status, stdout, err = run_course(os.path.join(CONTROLLERS, "drive", "drive.py"), "--noise", "0", "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
-    assert f"wrote {out}/: truth.png, summary.json, trace.csv, replay.html" in err.splitlines()
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert f"wrote {out}/: truth.png, summary.json, trace.csv, replay.html, controller.log, controller_lines.csv" in err.splitlines()
     summary = json.loads((out / "summary.json").read_text())
     assert summary["world"] == "the course's empty floor (17 x 17 m)" and summary["end"] == "controller finished"
     assert summary["steps"] == int(summary_of(stdout)["steps"]) > 0
@@ -353,7 +353,7 @@ def test_out_on_the_empty_floor_with_a_kept_map_writes_its_map_png(controller_fi
             "for k in range(10):\n    sup.step(robot.timestep)\n    grid[k, 5] = 2.0\n")
     status, stdout, err = run_course(course_controller(controller_file, body), "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
     assert summary_of(stdout)["map"] == "kept, 34 x 34 cells of 0.5 m from (-8.50, -8.50)"
     data = replay_data_of((out / "replay.html").read_text())
     assert (data["width"], data["height"], data["cell_size_m"]) == (34, 34, 0.5)

@@ -96,7 +96,7 @@ def test_a_class_of_students_runs_over_worlds_and_starts_with_goal_and_map_colum
                            "--world", maze, "--world", arena, "--starts", "2", "--time-limit", "2",
                            "--csv", str(tmp_path / "runs.csv")],
                           cwd=REPO, capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, done.stderr
+    assert done.returncode == 1, done.stderr  # runs failed
     rows = list(csv.DictReader(open(tmp_path / "runs.csv")))
     assert [(r["student"], os.path.basename(r["world"]), r["start"], r["exit"]) for r in rows] == [
         (s, w, n, e) for s, e in (("alice", "0"), ("bob", "1"), ("carol", "0"))
@@ -109,13 +109,15 @@ def test_a_class_of_students_runs_over_worlds_and_starts_with_goal_and_map_colum
     assert rows[4]["error"] == "RuntimeError: lost"
     carol = rows[8:]
     assert {r["end"] for r in carol} == {"time limit"} and {r["sim_time_s"] for r in carol} == {"2.016"}
+    assert [r["result"] for r in rows] == ["finished"] * 4 + ["crashed"] * 4 + ["timed out"] * 4
     lines = done.stdout.splitlines()
-    assert lines[0].split() == ["student", "finished", "goal", "reached", "mean", "time", "coverage", "wall",
-                                "accuracy", "collisions", "first", "failure"]
-    assert lines[1].split()[:4] == ["alice", "4/4", "1/4", "1.8"]
-    assert lines[2].split()[:3] == ["bob", "0/4", "0/4"]
-    assert lines[2].endswith(f"{maze}, start 1: RuntimeError: lost")
-    assert lines[-1] == f"total: 12 runs, 8 finished, 1 reached the goal; rows in {tmp_path / 'runs.csv'}"
+    assert lines[0].split() == ["student", "finished", "timed", "out", "crashed", "goal", "reached", "mean", "time",
+                                "coverage", "wall", "accuracy", "collisions", "first", "failure"]
+    assert lines[1].split()[:6] == ["alice", "4/4", "0", "0", "1/4", "1.8"]
+    assert lines[2].split()[:5] == ["bob", "0/4", "0", "4", "0/4"]
+    assert lines[2].endswith(f"{maze}, start 1: crashed: RuntimeError: lost")
+    assert lines[3].split()[:6] == ["carol", "0/4", "4", "0", "0/4", "-"]
+    assert lines[-1] == f"total: 12 runs, 4 finished, 1 reached the goal; rows in {tmp_path / 'runs.csv'}"
 
 
 def test_a_class_on_the_course_s_own_worlds_draws_the_random_start_from_the_seed(tmp_path):
@@ -131,5 +133,8 @@ def test_a_class_on_the_course_s_own_worlds_draws_the_random_start_from_the_seed
     rows = list(csv.DictReader(open(tmp_path / "runs.csv")))
     assert [(r["student"], r["world"], r["start"], r["exit"]) for r in rows] == [
         ("alice", "own", "1", "0"), ("alice", "own", "2", "0")]
+    # corners.xml's two starts, each once: (-0.75, -1) heading east, (0.75, -0.5) heading west.
+    assert [(round(float(r["final_x"]), 1), round(float(r["final_y"]), 1)) for r in rows] == [(0.8, -1.0),
+                                                                                                (-0.8, -0.5)]
     assert rows[0]["end"] == "controller finished" and 1.49 < float(rows[0]["distance_m"]) < 1.52
     assert {r["goal"] for r in rows} == {"not reached"}  # corners.xml's goal (1.5, 0), as the library read it

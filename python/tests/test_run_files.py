@@ -40,8 +40,8 @@ def test_a_maze_run_writes_the_core_files_with_the_core_keys_in_order(controller
     status, stdout, err = run_controller(controller_file(DRIVE + KEEP_GRID), "--world", world("lab4x4.txt"),
                                          "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
-    assert f"wrote {out}/: map.png, truth.png, summary.json, trace.csv, replay.html" in err.splitlines()
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert f"wrote {out}/: map.png, truth.png, summary.json, trace.csv, replay.html, controller.log, controller_lines.csv" in err.splitlines()
     summary = json.loads((out / "summary.json").read_text())
     keys = list(summary)
     assert [k for k in keys if k in CORE_KEYS] == CORE_KEYS
@@ -76,8 +76,8 @@ def test_an_arena_run_with_a_kept_map_writes_its_map_png_and_a_replay_of_its_his
     status, stdout, err = run_controller(controller_file(KEEP_MAP_DRIVE), "--world", world("thick_arena.xml"),
                                          "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
-    assert f"wrote {out}/: map.png, truth.png, summary.json, trace.csv, replay.html" in err.splitlines()
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "map.png", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert f"wrote {out}/: map.png, truth.png, summary.json, trace.csv, replay.html, controller.log, controller_lines.csv" in err.splitlines()
     assert summary_of(stdout)["map"] == "kept, 34 x 34 cells of 0.5 m from (-8.50, -8.50)"
     assert json.loads((out / "summary.json").read_text())["map"] == "kept"
 
@@ -109,7 +109,7 @@ def test_an_arena_run_without_a_kept_map_writes_a_replay_of_the_path_and_says_wh
     out = tmp_path / "out"
     status, stdout, err = run_controller(controller_file(DRIVE), "--world", world("thick_arena.xml"), "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "replay.html", "summary.json", "trace.csv", "truth.png"]
     assert summary_of(stdout)["map"] == ("none kept (maze_mapper.keep_map hands the runner a metric map: map.png, "
                                          "the replay's map)")
     png = (out / "truth.png").read_bytes()
@@ -130,7 +130,7 @@ def test_a_maze_run_without_a_kept_grid_draws_the_walls_and_the_body_s_path_in_m
     out = tmp_path / "out"
     status, stdout, err = run_controller(controller_file(DRIVE), "--world", world("maze8x8.txt"), "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "replay.html", "summary.json", "trace.csv", "truth.png"]
     summary = json.loads((out / "summary.json").read_text())
     assert summary["grid"] == "none" and "wall_accuracy" not in summary and "coverage" not in summary
     # truth.png: the world's walls in ink and the path in red, no wall painted red as missed
@@ -181,7 +181,7 @@ def test_a_second_run_into_the_same_out_leaves_only_its_own_files(controller_fil
     status, _, err = run_controller(controller_file(DRIVE, name="second.py"), "--world", world("thick_arena.xml"),
                                     "--out", str(out))
     assert status == 0, err
-    assert sorted(os.listdir(out)) == ["notes.txt", "replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(out)) == ["controller.log", "controller_lines.csv", "notes.txt", "replay.html", "summary.json", "trace.csv", "truth.png"]
 
 
 def test_a_maze_run_starts_where_a_supervisor_set_the_robot_down_before_it_moved(controller_file, tmp_path):

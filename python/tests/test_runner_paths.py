@@ -27,7 +27,7 @@ def test_a_relative_out_is_written_where_the_runner_was_started_not_in_the_contr
     status, stdout, err = run_controller(controller, "--world", world("lab4x4.txt"), "--out", "out", cwd=work)
     assert status == 0, err
     assert summary_of(stdout)["end"] == "controller finished"
-    assert sorted(os.listdir(work / "out")) == ["replay.html", "summary.json", "trace.csv", "truth.png"]
+    assert sorted(os.listdir(work / "out")) == ["controller.log", "controller_lines.csv", "replay.html", "summary.json", "trace.csv", "truth.png"]
     assert len((work / "out" / "trace.csv").read_text().splitlines()) == 41
     assert os.listdir(controller.parent / "out") == []
     assert temporaries_under(tmp_path) == []
