@@ -19,11 +19,9 @@
 #include "maze/world/geometry.hpp"
 #include "maze/world/world.hpp"
 #include "maze/world/world_files.hpp"
+#include "test_values.hpp"
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The course's shape: a 4 x 4 m arena of 0.5 m walls (the BoundaryWall's and Obstacle's
 // height) with a wall 1 m long across x = 0, and a landmark of `height_m` at (2, 0.5).
@@ -42,11 +40,11 @@ maze::Arena wall_and_landmark(double height_m) {
 }
 
 // A camera 0.08 m up at (x, 0.5), the landmark's centre half its height up.
-bool hidden(const maze::Arena &a, double camera_x_m, double height_m) {
+bool hidden_from(const maze::Arena &a, double camera_x_m, double height_m) {
   return maze::sim::sight_blocked(a, {camera_x_m, 0.5, 0.08}, {2, 0.5, height_m / 2}, 0.25, 0);
 }
 
-maze::sim::SimulationOptions at(double x, double y, double yaw) {
+maze::sim::SimulationOptions start_at(double x, double y, double yaw) {
   maze::sim::SimulationOptions o;
   o.noise = 0.0;
   o.start = maze::sim::Pose{x, y, yaw};
@@ -54,7 +52,7 @@ maze::sim::SimulationOptions at(double x, double y, double yaw) {
 }
 
 // Beam 180 of the HamBot's fixed lidar (half a beam right of ahead) after one step.
-double ahead_m(webots::embedded::Simulation &sim) {
+double beam_ahead_m(webots::embedded::Simulation &sim) {
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   sim.robot().step(32);
@@ -79,19 +77,19 @@ TEST_CASE("Heights: a 4.5 m landmark behind a 0.5 m wall is seen where the line 
   const maze::Arena a = wall_and_landmark(4.5);
   // From x = -d the line to (2, 0.5, 2.25) crosses x = 0 at 0.08 + 2.17 d / (d + 2) m: above
   // 0.5 m from d = 0.48 m on.
-  CHECK_FALSE(hidden(a, -1.0, 4.5));  // 0.80 m at the wall
-  CHECK_FALSE(hidden(a, -0.6, 4.5));  // 0.58 m
-  CHECK(hidden(a, -0.4, 4.5));        // 0.44 m: the wall hides its centre
-  CHECK(hidden(a, -0.1, 4.5));
+  CHECK_FALSE(hidden_from(a, -1.0, 4.5));  // 0.80 m at the wall
+  CHECK_FALSE(hidden_from(a, -0.6, 4.5));  // 0.58 m
+  CHECK(hidden_from(a, -0.4, 4.5));        // 0.44 m: the wall hides its centre
+  CHECK(hidden_from(a, -0.1, 4.5));
   // In front of the wall nothing is between.
-  CHECK_FALSE(hidden(a, 1.0, 4.5));
+  CHECK_FALSE(hidden_from(a, 1.0, 4.5));
 }
 
 TEST_CASE("Heights: a landmark lower than the wall is hidden behind it from anywhere") {
   const maze::Arena a = wall_and_landmark(0.4);
   for (const double x : {-2.5, -1.0, -0.2}) {
     CAPTURE(x);
-    CHECK(hidden(a, x, 0.4));
+    CHECK(hidden_from(a, x, 0.4));
   }
 }
 
@@ -140,19 +138,19 @@ TEST_CASE("Heights: the lidar at its height passes over a box lower than it and 
   a.obstacles.push_back(box);
   const double slant = 1.0 / std::cos(0.5 * kPi / 180);
   {
-    webots::embedded::Simulation sim(maze::world_of(a), hambot, at(3, 5, 0));
-    CHECK(ahead_m(sim) == doctest::Approx(7.0 * slant).epsilon(1e-3));  // over the box to the boundary
+    webots::embedded::Simulation sim(maze::world_of(a), hambot, start_at(3, 5, 0));
+    CHECK(beam_ahead_m(sim) == doctest::Approx(7.0 * slant).epsilon(1e-3));  // over the box to the boundary
     sim.teleport({3, 5, 0}, -0.05);  // the plane now at 0.08 m: below the box's top
-    CHECK(ahead_m(sim) == doctest::Approx(1.0 * slant).epsilon(1e-3));
+    CHECK(beam_ahead_m(sim) == doctest::Approx(1.0 * slant).epsilon(1e-3));
   }
   a.obstacles.front().height_m = 0.2;
-  webots::embedded::Simulation sim(maze::world_of(a), hambot, at(3, 5, 0));
-  CHECK(ahead_m(sim) == doctest::Approx(1.0 * slant).epsilon(1e-3));
+  webots::embedded::Simulation sim(maze::world_of(a), hambot, start_at(3, 5, 0));
+  CHECK(beam_ahead_m(sim) == doctest::Approx(1.0 * slant).epsilon(1e-3));
 }
 
 TEST_CASE("Heights: the simulation's camera queries see the world's solids with their tops") {
   webots::embedded::Simulation sim(maze::world_of(wall_and_landmark(4.5)), maze::sim::default_profile(),
-                                   at(-1, 0, kPi / 2));
+                                   start_at(-1, 0, kPi / 2));
   CHECK_FALSE(webots::embedded::sight_blocked(sim, {-1.0, 0.5, 0.08}, {2, 0.5, 2.25}, 0.25));
   CHECK(webots::embedded::sight_blocked(sim, {-0.4, 0.5, 0.08}, {2, 0.5, 2.25}, 0.25));
   const auto hits = webots::embedded::hits_along(sim, -1, 0.5, 0, 10);
@@ -162,7 +160,7 @@ TEST_CASE("Heights: the simulation's camera queries see the world's solids with 
 
 TEST_CASE("The course's empty floor: no wall at its edge, beams past it read inf, a robot past it is off the floor") {
   webots::embedded::Simulation sim(maze::world_of(maze::course_empty_floor()), maze::sim::default_profile(),
-                                   at(0, 0, 0));
+                                   start_at(0, 0, 0));
   webots::Lidar *lidar = sim.robot().getLidar("lidar");
   lidar->enable(32);
   sim.robot().step(32);
