@@ -163,3 +163,24 @@ TEST_CASE("a run stopped by --time-limit ends as planned and says so; a huge lim
   CHECK(whole.status == 0);
   CHECK(whole.out.find("end: done\n") != std::string::npos);
 }
+
+TEST_CASE("a landmark standing inside a cell: its sides are walls in the truth where it reaches their band, and the run ends done") {
+  const maze::World world = maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_landmark_in_cell.xml");
+  const maze::Maze &m = world.maze();
+  REQUIRE(m.width() == 11);  // cells of 1 m; the landmark at the centre of (0, 10)
+  REQUIRE(m.landmarks().size() == 1);
+  const maze::Maze k3 = maze::with_solid_sides(m, 3);
+  for (const maze::Side s : maze::kSides) CHECK(k3.has_wall({0, 10}, s));
+  CHECK_FALSE(m.has_wall({0, 10}, maze::Side::east));
+  CHECK_FALSE(k3.has_wall({1, 10}, maze::Side::east));
+  const maze::Maze k5 = maze::with_solid_sides(m, 5);  // the band middles start 0.3 m from the centre
+  CHECK_FALSE(k5.has_wall({0, 10}, maze::Side::east));
+  CHECK_FALSE(k5.has_wall({0, 10}, maze::Side::south));
+  app::RunOptions options;
+  options.output.quiet = true;
+  std::ostringstream sink;
+  const app::RunSummary s = app::run_maze(options, m, sink);
+  CHECK(s.reason == robot::EndReason::done);
+  CHECK(s.message == "");
+  CHECK(s.score.reachable_cells == 120);
+}

@@ -79,7 +79,7 @@ TEST_CASE("profile JSON: a bad value, an unknown key, a missing one or a wrong t
         "r.json: error: lidars[0].max_range_m must be greater than min_range_m (got 0.01 <= 0.05)");
   CHECK(load_error(edited("\"max_range_m\"", "\"max_rang_m\"")) ==
         "r.json: error: lidars[0].max_rang_m is not a known key (known: name, horizontal_resolution, "
-        "fov_rad, min_range_m, max_range_m, noise, frequency_hz, resolution_m)");
+        "fov_rad, min_range_m, max_range_m, noise, frequency_hz, resolution_m, height_m)");
   CHECK(load_error(edited("\"resolution_m\": 0.01", "\"resolution_m\": -1")) ==
         "r.json: error: lidars[0].resolution_m must be a finite number >= 0 (got -1)");
   CHECK(load_error(edited("\"resolution_m\": 0.01", "\"resolution_m\": \"1 cm\"")) ==

@@ -33,7 +33,8 @@ Json to_json(const LidarSpec &l) {
               {"max_range_m", l.max_range_m},
               {"noise", l.noise},
               {"frequency_hz", l.frequency_hz},
-              {"resolution_m", l.resolution_m}};
+              {"resolution_m", l.resolution_m},
+              {"height_m", l.height_m}};
 }
 
 Json to_json(const LookupRow &r) {
@@ -135,15 +136,16 @@ class Node {
   std::string path_;
 };
 
-// resolution_m may be left out (0: ranges not quantised), so a profile saved before lidars
-// had it still loads.
+// resolution_m (0: ranges not quantised) and height_m (0: at the robot's origin) may be left
+// out, so a profile saved before lidars had them still loads.
 LidarSpec read_lidar(const Node &n) {
   n.object({"name", "horizontal_resolution", "fov_rad", "min_range_m", "max_range_m", "noise",
-            "frequency_hz", "resolution_m"},
-           {"resolution_m"});
+            "frequency_hz", "resolution_m", "height_m"},
+           {"resolution_m", "height_m"});
   return {n.text("name"),         n.whole_number("horizontal_resolution"), n.number("fov_rad"),
           n.number("min_range_m"), n.number("max_range_m"),                n.number("noise"),
-          n.number("frequency_hz"), n.has("resolution_m") ? n.number("resolution_m") : 0.0};
+          n.number("frequency_hz"), n.has("resolution_m") ? n.number("resolution_m") : 0.0,
+          n.has("height_m") ? n.number("height_m") : 0.0};
 }
 
 LookupRow read_row(const Node &n) {

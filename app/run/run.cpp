@@ -350,13 +350,15 @@ robot::RunHooks observed_hooks(RunObserver *observer, const webots::embedded::Si
   return hooks;
 }
 
-RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
+RunSummary run_maze(const RunOptions &options, const maze::Maze &world, std::ostream &out,
                     const RunControls &controls) {
   const auto started = std::chrono::steady_clock::now();
+  // Scored on the lattice's truth with its solids in cells (maze::with_solid_sides); simulated on the world.
+  const maze::Maze truth = maze::with_solid_sides(world, options.subcells);
   const maze::sim::RobotProfile &profile = robot_profile(options);
   const robot::ControllerOptions controller_opts = controller_options(options, truth, profile);
   check_fit(options, truth, profile, controller_opts);
-  RunFrame frame(maze::world_of(truth), profile, options.simulation, controls.observer, controls.progress_fd);
+  RunFrame frame(maze::world_of(world), profile, options.simulation, controls.observer, controls.progress_fd);
   webots::embedded::Simulation &simulation = frame.simulation();
   const mapping::SensorModel model(options.sensor);
   render::MapStyle style = map_style(options.output, model, controller_opts, controls.terminal_fd);

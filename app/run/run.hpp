@@ -99,8 +99,9 @@ RunSummary run_world(const RunOptions &options, std::ostream &out, const RunCont
 // block to out; options.world only names it in the summary. The options must be valid
 // (validate()); throws common::InputError when they do not fit this maze or robot: a robot
 // without the sensors the model reads, a grid too large, a plan cell outside the maze, a
-// stuck bumper the robot lacks.
-RunSummary run_maze(const RunOptions &options, const maze::Maze &truth, std::ostream &out,
+// stuck bumper the robot lacks. The map is scored on maze::with_solid_sides(world, K): a
+// landmark standing in a cell walls the sides whose band it reaches.
+RunSummary run_maze(const RunOptions &options, const maze::Maze &world, std::ostream &out,
                     const RunControls &controls = {});
 
 // What a maze lab tells the robot's programmer (ARCHITECTURE.md), as run_maze gives it to the

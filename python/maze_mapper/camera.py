@@ -9,7 +9,14 @@ Recognition follows Webots' Camera and Recognition reference:
   - only solids whose recognitionColors is not empty are recognised: here the course's
     Landmark nodes a supervisor imported;
   - an object is recognised when its projection meets the image, it is within maxRange, and
-    (occlusion 1) the line from the camera to its centre meets no other solid first;
+    it is not occluded. Occlusion is Webots' own test (occlusion TRUE; WbCamera.cpp and
+    WbObjectDetection.cpp): one 3-D ray from the camera to the object's position (a
+    landmark's centre, half its height up), collided with every other solid; each solid it
+    enters gives the distance from that entry to the object's position, and the object is
+    occluded when the largest exceeds half the object's size along the camera's axis (an
+    upright cylinder seen level: its radius). The ray enters a solid only where it passes
+    below the solid's top, so a tall landmark is seen over a lower wall when the line to its
+    centre clears the wall, and hidden when that line meets it;
   - getPosition() is the object's centre in the camera's frame (x ahead, y left, z up, m);
     getOrientation() its rotation relative to the camera (axis-angle); getSize() its width and
     height as the camera sees them (y and z in the camera frame: a cylinder's diameter and
@@ -19,7 +26,10 @@ Recognition follows Webots' Camera and Recognition reference:
     field (the course's Landmark PROTO sets none: "").
 Projection is the pinhole camera's, focal length width / 2 / tan(fov / 2) pixels, square
 pixels. getImage() renders the world from the same pose as Webots' BGRA bytes: the floor,
-walls 0.5 m tall in grey (the course's height), landmarks as their colour, the sky.
+every solid along each column of pixels from the floor to its top (walls grey, landmarks in
+their colour), a nearer one drawn over a farther one, so what stands above a wall shows over
+it; a solid whose world states no height is drawn 0.5 m tall (the course's walls) and hides
+what is behind it; the sky above.
 """
 
 import math
@@ -115,10 +125,8 @@ def recognise(landmark, camera):
     v0, v1 = max(v0, 0.0), min(v1, float(HEIGHT_PX))
     if u0 >= u1 or v0 >= v1:
         return None
-    # Occlusion 1: the line to the centre meets this landmark's own surface first.
-    towards = math.atan2(dy, dx)
-    free = _scene.current.simulation.cast(cx, cy, towards, math.hypot(dx, dy))
-    if free < math.hypot(dx, dy) - landmark.radius - 1e-6:
+    # Occlusion TRUE: Webots' ray test (see the module's description).
+    if _scene.current.simulation.sight_blocked((cx, cy, cz), (landmark.x, landmark.y, landmark.z), landmark.radius):
         return None
     relative_yaw = math.atan2(math.sin(landmark.yaw - yaw), math.cos(landmark.yaw - yaw))
     orientation = [0.0, 0.0, 1.0, relative_yaw] if relative_yaw >= 0.0 else [0.0, 0.0, -1.0, -relative_yaw]
@@ -222,26 +230,10 @@ class Camera:
         return (image[i] + image[i + 1] + image[i + 2]) // 3
 
 
-def _landmark_hit(landmarks, cx, cy, dx, dy):
-    """(distance, landmark) of the nearest landmark along the unit ray, or (inf, None)."""
-    best, hit = math.inf, None
-    for landmark in landmarks:
-        px, py = cx - landmark.x, cy - landmark.y
-        b = px * dx + py * dy
-        c = px * px + py * py - landmark.radius * landmark.radius
-        disc = b * b - c
-        if disc < 0.0 or b > 0.0:
-            continue
-        t = -b - math.sqrt(disc)
-        if t < best:
-            best, hit = t, landmark
-    return best, hit
-
-
 def render(camera):
     """A HEIGHT_PX x WIDTH_PX x 4 uint8 BGRA image of the scene from the camera pose: one ray
-    a column through the simulator's solids, each column a wall (or landmark) from the floor up
-    to its height at that distance."""
+    a column through the simulator's solids, each solid it enters drawn from the floor up to
+    its top at its distance, the farthest first."""
     import numpy as np
     cx, cy, cz, yaw = camera
     f = focal_px()
@@ -249,29 +241,28 @@ def render(camera):
     image[:HEIGHT_PX // 2] = _SKY_BGRA
     image[HEIGHT_PX // 2:] = _FLOOR_BGRA
     simulation = _scene.current.simulation
-    landmarks = _scene.current.landmarks
     rows = np.arange(HEIGHT_PX) + 0.5
     for column in range(WIDTH_PX):
         offset = math.atan2(WIDTH_PX / 2.0 - (column + 0.5), f)
-        angle = yaw + offset
-        dx, dy = math.cos(angle), math.sin(angle)
-        distance = simulation.cast(cx, cy, angle, 1000.0)
-        if not math.isfinite(distance):
-            continue
-        colour, top = _WALL_BGRA, WALL_HEIGHT_M
-        t, landmark = _landmark_hit(landmarks, cx, cy, dx, dy)
-        if landmark is not None and abs(t - distance) < 1e-6:
-            r, g, b = (min(255, int(round(255 * v))) for v in _colour(landmark))
-            colour, top = (b, g, r, 255), landmark.z + landmark.height / 2.0
-        depth = max(distance * math.cos(offset), 1e-6)
-        v_top = HEIGHT_PX / 2.0 - f * (top - cz) / depth
-        v_bottom = HEIGHT_PX / 2.0 + f * cz / depth
-        image[(rows >= v_top) & (rows <= v_bottom), column] = colour
+        hits = []
+        for distance, top, colour in simulation.hits_along(cx, cy, yaw + offset, 1000.0):
+            hits.append((distance, top if math.isfinite(top) else WALL_HEIGHT_M, colour))
+            if not math.isfinite(top):
+                break  # a solid of no stated height hides everything behind it
+        for distance, top, colour in reversed(hits):
+            depth = max(distance * math.cos(offset), 1e-6)
+            v_top = HEIGHT_PX / 2.0 - f * (top - cz) / depth
+            v_bottom = HEIGHT_PX / 2.0 + f * cz / depth
+            image[(rows >= v_top) & (rows <= v_bottom), column] = _bgra(colour)
     return image
 
 
-def _colour(landmark):
-    return landmark.node._values.get("color", [1.0, 1.0, 1.0])
+def _bgra(colour):
+    """A landmark's (r, g, b) in [0, 1] as BGRA bytes; None: a wall's grey."""
+    if colour is None:
+        return _WALL_BGRA
+    r, g, b = (min(255, int(round(255 * v))) for v in colour)
+    return (b, g, r, 255)
 
 
 class Display:

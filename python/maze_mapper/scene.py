@@ -8,12 +8,12 @@ camera and met by the body:
 
     Obstacle { translation X Y Z rotation 0 0 1 A size SX SY SZ }
         a box SX across (its local x) and SY along (its local y) turned A about the vertical,
-        centred on (X, Y); its height SZ only matters to no sensor here (walls stand taller
-        than every sensor)
+        centred on (X, Y), its top at Z + SZ / 2 (the simulator's solids stand on the floor up
+        to their top: a beam or a line of sight above it passes over)
     Landmark { translation X Y Z color R G B recognitionColors [R G B] size H RADIUS _ }
-        an upright cylinder RADIUS round (X, Y), H tall (the course's Landmark PROTO reads
-        size.x as the height and size.y as the radius), recognised by the camera when
-        recognitionColors is not empty
+        an upright cylinder RADIUS round (X, Y), H tall centred at height Z, its top at Z + H / 2
+        (the course's Landmark PROTO reads size.x as the height and size.y as the radius),
+        recognised by the camera when recognitionColors is not empty
 
 Any other node type, a field these types lack, a rotation about another axis than the
 vertical, or a solid no world holds (a size, or a translation's x or y, beyond the 1000 m of
@@ -450,13 +450,14 @@ class Scene:
             return
         x, y, z = fields["translation"]
         if type_name == "Obstacle":
-            across, along, _height = fields["size"]
-            self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
+            across, along, height = fields["size"]
+            self.simulation.add_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0, height_m=z + height / 2.0)
             self._extend_walls(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
         else:
             height, radius, _ = fields["size"]
             colour = fields.get("color")
-            self.simulation.add_cylinder(x, y, radius, height_m=height, colour=None if colour is None else list(colour))
+            self.simulation.add_cylinder(x, y, radius, height_m=z + height / 2.0,
+                                         colour=None if colour is None else list(colour))
             colors = [c for colour in fields["recognitionColors"] for c in colour]
             self.landmarks.append(Landmark(node, x, y, z, radius, height, yaw, colors))
 

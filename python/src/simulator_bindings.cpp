@@ -35,6 +35,7 @@
 #include "maze/world/geometry.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
+#include "maze/sim/simulation_sight.hpp"
 #include "maze/world/world.hpp"
 #include "maze/formats/xml_solids.hpp"
 
@@ -71,19 +72,6 @@ class PySimulation {
     maze::sim::SimulationOptions o = options(seed, noise, max_steps);
     if (world.on_lattice()) o.start = xml_start_pose(world);
     frame_ = std::make_unique<app::RunFrame>(world, profile_, o, nullptr, -1);
-  }
-
-  // The course's floor, kCourseFloorSide_m square centred on the origin, with nothing on it;
-  // the robot at the origin facing north (where a supervisor's load_environment begins).
-  static maze::World empty_floor() {
-    maze::Arena arena;
-    arena.name = "the course's empty floor";
-    const double half = maze::kCourseFloorSide_m / 2.0;
-    arena.x_min_m = -half;
-    arena.x_max_m = half;
-    arena.y_min_m = -half;
-    arena.y_max_m = half;
-    return maze::world_of(std::move(arena));
   }
 
   webots::embedded::Simulation &simulation() { return frame_->simulation(); }
@@ -123,6 +111,7 @@ class PySimulation {
   void after_step() {
     frame_->step(app::step_at(steps(), time_s(), simulation().pose()));
     if (!goal_reached_ && goal_.has_value()) goal_reached_ = at_goal(simulation().pose());
+    if (!left_floor_ && webots::embedded::off_floor(simulation())) left_floor_ = report_left_floor();
   }
 
   // The run's goal: the cells of a lattice (cell_size_m, origin) the robot's centre reaches
@@ -182,6 +171,13 @@ class PySimulation {
   }
   std::optional<Goal> goal_;
   bool goal_reached_ = false;
+  bool left_floor_ = false;  // reported once
+  bool report_left_floor() const {
+    const maze::sim::Pose &p = simulation().pose();
+    py::module_::import("sys").attr("stderr").attr("write")(py::str(
+        "warning: the robot left the floor at ({:.2f}, {:.2f}) m, t = {:.3f} s: past the Floor's edge\n").format(p.x_m, p.y_m, time_s()));
+    return true;
+  }
 };
 
 // The Python simulation object made current last (kept alive by the robots attached to it).
@@ -332,7 +328,7 @@ void bind_simulator(py::module_ &m) {
       .def_static(
           "empty_floor",
           [](const std::string &robot, std::uint64_t seed, std::optional<double> noise, std::int64_t max_steps) {
-            return std::make_unique<PySimulation>(PySimulation::empty_floor(), robot, seed, noise, max_steps);
+            return std::make_unique<PySimulation>(maze::world_of(maze::course_empty_floor()), robot, seed, noise, max_steps);
           },
           py::kw_only(), py::arg("robot") = "hambot", py::arg("seed") = common::kDefaultSeed,
           py::arg("noise") = py::none(), py::arg("max_steps") = 0,
@@ -341,11 +337,13 @@ void bind_simulator(py::module_ &m) {
       .def_property_readonly("in_arena", [](const PySimulation &s) { return s.simulation().on_solid_geometry(); })
       .def(
           "add_box",
-          [](PySimulation &s, double cx, double cy, double half_length, double half_width, double angle) {
-            s.simulation().add_obstacle(maze::Obstacle::oriented(cx, cy, half_length, half_width, angle));
+          [](PySimulation &s, double cx, double cy, double half_length, double half_width, double angle, double height) {
+            maze::Obstacle box = maze::Obstacle::oriented(cx, cy, half_length, half_width, angle);
+            box.height_m = height;
+            s.simulation().add_obstacle(box);
           },
           py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("half_length_m"), py::arg("half_width_m"),
-          py::arg("angle_rad"), "A solid box (its long axis at angle_rad from east) added to the world (a maze's is simulated on its geometry from then on).")
+          py::arg("angle_rad"), py::kw_only(), py::arg("height_m") = maze::kTallerThanEverySensor_m, "A solid box (its long axis at angle_rad from east) added to the world (a maze's is simulated on its geometry from then on).")
       .def(
           "add_cylinder",
           [](PySimulation &s, double cx, double cy, double radius, std::optional<double> height,
@@ -393,6 +391,26 @@ void bind_simulator(py::module_ &m) {
           },
           py::arg("x_m"), py::arg("y_m"), py::arg("angle_rad"), py::arg("max_range_m"),
           "The distance to the first solid along the ray, inf beyond max_range_m.")
+      .def(
+          "hits_along", [](const PySimulation &s, double x, double y, double angle, double max_range) {
+            py::list out;
+            const maze::Arena *g = s.simulation().geometry();
+            for (const auto &h : webots::embedded::hits_along(s.simulation(), x, y, angle, max_range)) {
+              const auto &look = h.disc >= 0 ? g->discs[static_cast<std::size_t>(h.disc)].landmark : std::nullopt;
+              out.append(py::make_tuple(h.distance_m, h.top_m, look ? py::make_tuple(look->red, look->green, look->blue)
+                                                                      : py::object(py::none())));
+            }
+            return out;
+          },
+          py::arg("x_m"), py::arg("y_m"), py::arg("angle_rad"), py::arg("max_range_m"),
+          "Every solid the ray enters, nearest first: (distance, top above the floor, a landmark's (r, g, b) or None).")
+      .def(
+          "sight_blocked", [](const PySimulation &s, std::array<double, 3> a, std::array<double, 3> b, double half_depth) {
+            return webots::embedded::sight_blocked(s.simulation(), {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, half_depth);
+          },
+          py::arg("camera"), py::arg("target"), py::arg("half_depth_m"),
+          "Webots' Recognition occlusion: whether a solid other than the target's cylinder is entered farther than "
+          "half_depth_m from the target along the 3-D segment.")
       .def(
           "make_current",
           [](py::object self) {

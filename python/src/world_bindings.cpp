@@ -74,8 +74,9 @@ std::vector<bool> visited_cells(const explore::Visits &visits) {
   return v;
 }
 
-Score score_grid(const maze::Maze &truth, const mapping::OccupancyGrid &grid, const explore::Visits &visits,
+Score score_grid(const maze::Maze &world, const mapping::OccupancyGrid &grid, const explore::Visits &visits,
                  float initial_log_odds, std::optional<float> threshold) {
+  const maze::Maze truth = maze::with_solid_sides(world, grid.k());  // its solids in cells, as run scores them
   if (grid.width() != truth.width() || grid.height() != truth.height()) {
     throw common::InputError(fmt::format("the grid is {}x{} cells, the world {}x{}", grid.width(), grid.height(),
                                          truth.width(), truth.height()));

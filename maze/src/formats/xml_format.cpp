@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "maze/world/geometry.hpp"
 #include "maze/world/validate.hpp"
 #include "lattice.hpp"
 #include "xml_source.hpp"
@@ -386,6 +387,7 @@ XmlRead read_xml(std::string_view text, const std::string &file, const XmlReadOp
   read_start_and_goals(world, g, src, raw);
   raw.cell_size_m = g.cell;
   raw.wall_thickness_m = thickness_m;
+  raw.wall_height_m = kCourseWallHeight_m;
   raw.origin_x_m = g.origin_x;
   raw.origin_y_m = g.origin_y;
   const common::SourceLocation world_at = src.at(world);

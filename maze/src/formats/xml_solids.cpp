@@ -78,6 +78,7 @@ XmlArenaRead read_xml_arena(std::string_view text, const std::string &file) {
     if (w.x1 == w.x2 && w.y1 == w.y2) throw src.error(w.element, nullptr, "wall has zero length");
     Obstacle o = Obstacle::from_segment(w.x1, w.y1, w.x2, w.y2, w.width, WallEnds::flush);
     o.where = src.at(w.element);
+    o.height_m = kCourseWallHeight_m;
     arena.obstacles.push_back(o);
     if (arena.obstacles.size() > kMaxObstacles) {
       throw src.error(w.element, nullptr, fmt::format("more than {} walls: an arena holds at most {}", kMaxObstacles,

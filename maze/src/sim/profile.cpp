@@ -50,7 +50,10 @@ RobotProfile base_robot(std::string name, std::string description) {
 
 // HamBot's Lidar node this term: 360 beams, fieldOfView 2 pi, near and minRange 0.05,
 // maxRange 12, noise 0.000833, resolution 0.01, type "fixed".
-LidarSpec hambot_lidar() { return {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0, 0.01}; }
+// The course's HamBot.proto mounts its Lidar 0.13 m above the robot's origin.
+constexpr double kHambotLidarHeight_m = 0.13;
+
+LidarSpec hambot_lidar() { return {"lidar", 360, 2.0 * kPi, 0.05, 12.0, 0.000833, 0.0, 0.01, kHambotLidarHeight_m}; }
 
 // Last year's (2025) RotationalMotors: maxVelocity 18 rad/s.
 constexpr double kHambot2025MaxWheelVelocity_rad_s = 18.0;
@@ -64,7 +67,7 @@ void use_2025_motors(RobotProfile &p) {
 // Last year's (2025) Lidar node: minRange 0.07, maxRange 3, noise 0.000833, no resolution,
 // type "rotating" at defaultFrequency 12 Hz.
 LidarSpec hambot_2025_lidar(double max_range_m) {
-  return {"lidar", 360, 2.0 * kPi, 0.07, max_range_m, 0.000833, 12.0, 0.0};
+  return {"lidar", 360, 2.0 * kPi, 0.07, max_range_m, 0.000833, 12.0, 0.0, kHambotLidarHeight_m};
 }
 
 // Three bumpers at 0 and +-45 deg, each covering a 45 deg arc: together the front 135 deg.
@@ -115,7 +118,7 @@ RobotProfile micromouse() {
   p.axle_m = 0.07;
   p.body_radius_m = 0.04;
   p.max_wheel_velocity_rad_s = 80.0;
-  p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.02, 1.0, 0.000833, 0.0, 0.0});
+  p.lidars.push_back({"lidar", 360, 2.0 * kPi, 0.02, 1.0, 0.000833, 0.0, 0.0, 0.02});
   // Its speed run: 2 m/s^2 up to 1 m/s (the motors' 80 rad/s), straights in one go.
   p.speed_run = SpeedRunProfile{2.0, 1.0};
   return p;
@@ -298,6 +301,7 @@ void validate_lidar(const std::string &key, const LidarSpec &l) {
   require_non_negative(key + ".noise", l.noise);
   require_non_negative(key + ".frequency_hz", l.frequency_hz);
   require_non_negative(key + ".resolution_m", l.resolution_m);
+  require_non_negative(key + ".height_m", l.height_m);
 }
 
 void validate_distance_sensor(const std::string &key, const DistanceSensorSpec &d) {

@@ -130,6 +130,7 @@ Simulation::Simulation(const maze::World &world, const maze::sim::RobotProfile &
 
 void Simulation::set_up() {
   initial_pose_ = pose_;
+  lidar_planes_.place(geometry(), lattice(), profile_, height_m_);
   options_.validate();
   basic_step_s_ = options_.basic_time_step_ms / 1000.0;
   // A limit past what the millisecond clock counts (about 292 million years) is none.
@@ -262,7 +263,12 @@ const float *Simulation::lidar_range_image(int device) {
     state.ranges.resize(static_cast<std::size_t>(spec.horizontal_resolution));
     common::Rng rng = rng_for(device);
     const maze::sim::LidarModel &model = lidar_models_[static_cast<std::size_t>(state.spec)];
-    with_solids([&](const auto &solids) { model.range_image(solids, lidar_noise(spec), pose_, rng, state.ranges); });
+    const auto image = [&](const auto &solids) { model.range_image(solids, lidar_noise(spec), pose_, rng, state.ranges); };
+    if (const maze::sim::SolidGeometry *above = lidar_planes_.of(state.spec)) {
+      image(*above);
+    } else {
+      with_solids(image);
+    }
     lidar_beams_cast_ += spec.horizontal_resolution;
     apply_lidar_faults(device, spec, state.ranges);
   }
@@ -278,7 +284,11 @@ const maze::sim::Pose &Simulation::pose_at_step(std::int64_t step) const {
 }
 
 void Simulation::rotating_range_image(int device, DeviceState &state, const maze::sim::LidarSpec &spec) {
-  with_solids([&](const auto &solids) { rotating_range_image_in(solids, device, state, spec); });
+  if (const maze::sim::SolidGeometry *above = lidar_planes_.of(state.spec)) {
+    rotating_range_image_in(*above, device, state, spec);
+  } else {
+    with_solids([&](const auto &solids) { rotating_range_image_in(solids, device, state, spec); });
+  }
 }
 
 template <typename Solids>

@@ -28,6 +28,7 @@ void require_finite_value(double value, const char *what) {
 void Simulation::use_geometry(maze::Arena geometry) {
   solids_.emplace(geometry);
   geometry_ = std::move(geometry);
+  lidar_planes_.place(this->geometry(), lattice(), profile_, height_m_);
 }
 
 void Simulation::rebuild_solids() {
@@ -63,6 +64,7 @@ void Simulation::teleport(const maze::sim::Pose &pose, double z_m) {
   require_finite_value(z_m, "the robot's z");
   pose_ = {pose.x_m, pose.y_m, common::wrap_angle_rad(pose.yaw_rad)};
   height_m_ = z_m;
+  lidar_planes_.place(geometry(), lattice(), profile_, height_m_);
   free_centres_.reset();
   for (DeviceState &state : states_) state.read_at_step = -1;
 }

@@ -61,7 +61,8 @@ bool touches(const Obstacle &o, double x0, double y0, double x1, double y1) {
 }  // namespace
 
 SolidGeometry::SolidGeometry(const Arena &arena)
-    : x_min_m_(arena.x_min_m), y_min_m_(arena.y_min_m), x_max_m_(arena.x_max_m), y_max_m_(arena.y_max_m) {
+    : x_min_m_(arena.x_min_m), y_min_m_(arena.y_min_m), x_max_m_(arena.x_max_m), y_max_m_(arena.y_max_m),
+      walled_(arena.boundary_walled) {
   assert(x_max_m_ > x_min_m_ && y_max_m_ > y_min_m_);
   const double side = std::max(x_max_m_ - x_min_m_, y_max_m_ - y_min_m_);
   bucket_m_ = std::max(side / kMaxBucketsPerSide, kMinBucket_m);
@@ -113,7 +114,7 @@ bool SolidGeometry::inside_bounds(double x_m, double y_m) const {
 }
 
 bool SolidGeometry::inside_solid(double x_m, double y_m) const {
-  if (!inside_bounds(x_m, y_m)) return true;
+  if (!inside_bounds(x_m, y_m)) return walled_;
   const std::size_t b = bucket_index(bucket_of_x(x_m), bucket_of_y(y_m));
   for (std::uint32_t i = first_[b]; i < first_[b + 1]; ++i) {
     const Solid &k = solids_[items_[i]];
@@ -262,7 +263,7 @@ double SolidGeometry::cast_from(const CastOrigin &origin, double dx, double dy, 
     }
     if (bx < 0 || by < 0 || bx >= nx_ || by >= ny_) break;
   }
-  if (best <= boundary_t) return answer(best);
+  if (best <= boundary_t || !walled_) return answer(best);
   nx = exit_x <= exit_y ? (dx > 0.0 ? -1.0 : 1.0) : 0.0;
   ny = exit_x <= exit_y ? 0.0 : (dy > 0.0 ? -1.0 : 1.0);
   return answer(boundary_t);
@@ -280,7 +281,7 @@ double SolidGeometry::cast_brute_force(double x_m, double y_m, double dx, double
   if (!inside_bounds(x_m, y_m)) return kInfinity;
   const double exit_x = dx > 0.0 ? (x_max_m_ - x_m) / dx : dx < 0.0 ? (x_min_m_ - x_m) / dx : kInfinity;
   const double exit_y = dy > 0.0 ? (y_max_m_ - y_m) / dy : dy < 0.0 ? (y_min_m_ - y_m) / dy : kInfinity;
-  double best = std::min(exit_x, exit_y);
+  double best = walled_ ? std::min(exit_x, exit_y) : kInfinity;
   for (const Solid &k : solids_) {
     double hx = 0.0;
     double hy = 0.0;
@@ -358,8 +359,8 @@ bool SolidGeometry::push_out(double &x_m, double &y_m, double radius_m) const {
       y_m += k.aligned ? mv : k.s * mu + k.c * mv;
       moved_this_pass = true;
     }
-    const double cx = std::clamp(x_m, x_min_m_ + radius_m, x_max_m_ - radius_m);
-    const double cy = std::clamp(y_m, y_min_m_ + radius_m, y_max_m_ - radius_m);
+    const double cx = walled_ ? std::clamp(x_m, x_min_m_ + radius_m, x_max_m_ - radius_m) : x_m;
+    const double cy = walled_ ? std::clamp(y_m, y_min_m_ + radius_m, y_max_m_ - radius_m) : y_m;
     if (std::abs(cx - x_m) > kSlop_m || std::abs(cy - y_m) > kSlop_m) {
       x_m = cx;
       y_m = cy;
@@ -421,7 +422,7 @@ std::vector<Contact> SolidGeometry::contacts(double x_m, double y_m, double reac
   }
   const auto side = [&](double qx, double qy) {
     const double d = std::hypot(x_m - qx, y_m - qy);
-    if (d <= reach_m) out.push_back({qx, qy, d});
+    if (walled_ && d <= reach_m) out.push_back({qx, qy, d});
   };
   const double cx = std::clamp(x_m, x_min_m_, x_max_m_);
   const double cy = std::clamp(y_m, y_min_m_, y_max_m_);

@@ -174,6 +174,30 @@ std::array<double, 5> Obstacle::centre_line() const {
           centre_y_m + axis.y_m * half, width};
 }
 
+Arena solids_above(const Arena &arena, double z_m) {
+  Arena above = arena;
+  std::erase_if(above.obstacles, [z_m](const Obstacle &o) { return !(o.height_m > z_m); });
+  std::erase_if(above.discs, [z_m](const ArenaDisc &d) { return !(d.top_m() > z_m); });
+  return above;
+}
+
+bool every_solid_above(const Arena &arena, double z_m) {
+  return std::all_of(arena.obstacles.begin(), arena.obstacles.end(), [z_m](const Obstacle &o) { return o.height_m > z_m; }) &&
+         std::all_of(arena.discs.begin(), arena.discs.end(), [z_m](const ArenaDisc &d) { return d.top_m() > z_m; });
+}
+
+Arena course_empty_floor() {
+  Arena arena;
+  arena.name = "the course's empty floor";
+  const double half = kCourseFloorSide_m / 2.0;
+  arena.x_min_m = -half;
+  arena.x_max_m = half;
+  arena.y_min_m = -half;
+  arena.y_max_m = half;
+  arena.boundary_walled = false;
+  return arena;
+}
+
 ArenaPose Arena::start() const {
   if (!starts.empty()) return starts.front();
   return {(x_min_m + x_max_m) / 2.0, (y_min_m + y_max_m) / 2.0, std::numbers::pi / 2.0};

@@ -163,4 +163,42 @@ std::vector<WallSegment> Maze::wall_segments() const {
   return segments;
 }
 
+namespace {
+
+// Whether the landmark's disc overlaps (not just touches) the square [x0, x1] x [y0, y1].
+bool disc_overlaps(const Landmark &l, double x0, double y0, double x1, double y1) {
+  const double dx = l.x_m - std::clamp(l.x_m, x0, x1);
+  const double dy = l.y_m - std::clamp(l.y_m, y0, y1);
+  return dx * dx + dy * dy < kLandmarkRadius_m * kLandmarkRadius_m;
+}
+
+// Whether a landmark overlaps the middle sub-cell of cell c's band towards s.
+bool band_middle_holds_solid(const Maze &maze, Cell c, Side s, int k) {
+  const double size = maze.cell_size_m();
+  const double sub = size / k;
+  const int mid = k / 2;
+  // The sub-cell's column from the west and row from the south, in sub-cells of the cell.
+  const int column = s == Side::east ? k - 1 : s == Side::west ? 0 : mid;
+  const int row = s == Side::north ? k - 1 : s == Side::south ? 0 : mid;
+  const double x0 = maze.origin_x_m() + c.x * size + column * sub;
+  const double y0 = maze.origin_y_m() + c.y * size + row * sub;
+  return std::any_of(maze.landmarks().begin(), maze.landmarks().end(),
+                     [&](const Landmark &l) { return disc_overlaps(l, x0, y0, x0 + sub, y0 + sub); });
+}
+
+}  // namespace
+
+Maze with_solid_sides(const Maze &maze, int subcells) {
+  Maze scored = maze;
+  if (maze.landmarks().empty()) return scored;
+  for (int y = 0; y < maze.height(); ++y) {
+    for (int x = 0; x < maze.width(); ++x) {
+      for (const Side s : kSides) {
+        if (band_middle_holds_solid(maze, {x, y}, s, subcells)) scored.set_wall({x, y}, s, true);
+      }
+    }
+  }
+  return scored;
+}
+
 }  // namespace maze

@@ -134,6 +134,7 @@ Maze build_maze(const RawMaze &raw) {
   maze.set_landmarks(raw.landmarks);
   for (const Cell g : raw.goals) maze.add_goal(g);
   maze.set_physical(raw.cell_size_m, raw.wall_thickness_m, raw.origin_x_m, raw.origin_y_m);
+  maze.set_wall_height_m(raw.wall_height_m);
   return maze;
 }
 

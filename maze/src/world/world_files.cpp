@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cctype>
 #include <cstddef>
 #include <cstring>
@@ -248,9 +249,12 @@ Arena arena_from_maze(const Maze &maze) {
   a.y_min_m = maze.origin_y_m();
   a.x_max_m = a.x_min_m + maze.width() * s;
   a.y_max_m = a.y_min_m + maze.height() * s;
+  // Walls of a stated height stand on an open floor (the course's); the outer walls close it.
+  a.boundary_walled = !std::isfinite(maze.wall_height_m());
   for (const WallSegment &w : maze.wall_segments()) {
     a.obstacles.push_back(
         Obstacle::from_segment(w.x1_m, w.y1_m, w.x2_m, w.y2_m, maze.wall_thickness_m(), WallEnds::capped));
+    a.obstacles.back().height_m = maze.wall_height_m();
   }
   for (const Landmark &l : maze.landmarks()) {
     a.discs.push_back({l.x_m, l.y_m, kLandmarkRadius_m, ArenaDisc::Look{l.height_m, l.red, l.green, l.blue}});

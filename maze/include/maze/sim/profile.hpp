@@ -30,7 +30,9 @@
 // |               |                              |   0.02-1 m, fixed)                           |
 //
 // Angles are relative to the robot's heading, counter-clockwise positive (+90 deg = left).
-// Distance sensors sit on the body's rim and look outward; the lidar sits at the centre.
+// Distance sensors sit on the body's rim and look outward; the lidar sits at the centre, on
+// the HamBot profiles 0.13 m above the robot's origin (the course's HamBot.proto), on the
+// micromouse at 0.02 m.
 // A distance sensor's value is in metres of distance (its lookup table maps distance d to
 // value d), so the controller reads metres as from the lidar.
 //
@@ -57,6 +59,9 @@ struct LidarSpec {
   // Webots' `resolution`: every range is rounded to the nearest multiple of it (ties away
   // from zero), after the noise; 0: not quantised (Webots' -1). docs/simulator.md says how.
   double resolution_m = 0.0;
+  // The beam plane's height above the robot's origin (Webots: the Lidar's translation z);
+  // a beam is blocked by a solid only where it passes below that solid's top.
+  double height_m = 0.0;
   bool operator==(const LidarSpec &) const = default;
 };
 

@@ -40,6 +40,7 @@
 #include "maze/sim/solid_geometry.hpp"
 #include "maze/sim/profile.hpp"
 #include "maze/sim/lidar_sweep.hpp"
+#include "maze/sim/sight.hpp"
 #include "maze/sim/sensors.hpp"
 #include "maze/sim/wall_grid.hpp"
 
@@ -141,9 +142,10 @@ class Simulation {
   bool on_solid_geometry() const { return solids_.has_value(); }
   const maze::sim::WallGrid &walls() const { return *walls_; }
   const maze::sim::SolidGeometry &solid_geometry() const { return *solids_; }
-  // The world's solids as they are now, a supervisor's additions included (World::geometry()
-  // and the solids added since), while on_solid_geometry(); null on a lattice's wall grid.
+  // The world's solids now, a supervisor's additions included, while on_solid_geometry()
+  // (else null); the world's lattice, if it has one.
   const maze::Arena *geometry() const { return geometry_ ? &*geometry_ : nullptr; }
+  const maze::Maze *lattice() const { return lattice_ ? &*lattice_ : nullptr; }
 
   // The truth, for the composition root, evaluation and tests (never the controller).
   const maze::sim::Pose &pose() const { return pose_; }
@@ -151,17 +153,15 @@ class Simulation {
   std::int64_t time_ms() const { return time_ms_; }
   // Basic time steps since the simulation began, resets included: what the time limit bounds.
   std::int64_t steps() const { return steps_; }
-  // Lidar beams cast so far, every lidar together: a fixed lidar's whole image each step it
-  // is read, a rotating lidar's beams swept since they were last cast (bench/'s unit of work).
+  // Lidar beams cast so far, all lidars: a fixed lidar's image each step it is read, a
+  // rotating lidar's beams swept since last cast (bench/'s unit of work).
   std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
-  // The next Robot::step returns -1 (as when Webots quits).
-  void request_stop() { stop_requested_ = true; }
+  void request_stop() { stop_requested_ = true; }  // the next Robot::step returns -1 (Webots quits)
   // Collisions so far: the steps in which the body met a solid (was held out of it) after a
   // step in which it met none; pressing on against a wall is one collision.
   std::int64_t collisions() const { return collisions_.count; }
 
-  // ---- a supervisor's edits (Webots' Supervisor API; the composition root's, never a
-  // robot-side controller's) ----
+  // ---- a supervisor's edits (Webots' Supervisor API; the composition root's only) ----
   // Adds a solid, seen and met at once (a body it overlaps is pushed out as it moves); a lattice
   // is simulated on its geometry from then on. Throws common::InputError for a bad size.
   void add_obstacle(const maze::Obstacle &obstacle);
@@ -254,6 +254,7 @@ class Simulation {
   std::optional<maze::sim::SolidGeometry> solids_;    // the geometry's solids, when in use
   std::optional<maze::Arena> geometry_;              // the geometry solids_ is built from
   std::optional<maze::Arena> initial_geometry_;      // and as the world began (none: on walls_)
+  maze::sim::LidarPlanes lidar_planes_;               // the solids above each lidar's plane
   maze::sim::Pose initial_pose_;
   double height_m_ = 0.0;                           // the robot's origin above the floor
   maze::sim::Pose pose_;

@@ -5,7 +5,11 @@
 // without landmarks on its WallGrid and every other world on this.
 //
 // The solids are the geometry's obstacles (closed oriented rectangles), its discs (closed
-// circles: upright cylinders) and its boundary, walled all round: outside the boundary is solid, as the walls of a Webots RectangleArena make it.
+// circles: upright cylinders) and its boundary, walled all round unless the geometry says
+// it is open (Arena::boundary_walled): walled, outside the boundary is solid, as the walls
+// of a Webots RectangleArena make it; open (a Webots Floor's edge), a ray leaving it meets
+// nothing more and the body is not held in. Heights play no part here: a beam at a height
+// casts on the solids above it (maze::solids_above).
 // A uniform grid of buckets covers the boundary, each listing the obstacles that touch it
 // (built once, O(obstacles x the buckets each covers)):
 //
@@ -42,7 +46,7 @@ class SolidGeometry {
 
   // Whether the point lies within the boundary (closed).
   bool inside_bounds(double x_m, double y_m) const;
-  // Whether the point lies inside or on an obstacle, or outside the boundary.
+  // Whether the point lies inside or on an obstacle, or outside a walled boundary.
   bool inside_solid(double x_m, double y_m) const;
 
   // A ray origin with what every ray from it shares computed once.
@@ -54,7 +58,7 @@ class SolidGeometry {
   CastOrigin cast_origin(double x_m, double y_m) const;
 
   // Distance from the origin along the unit vector (dx, dy) to the first solid surface (an
-  // obstacle, or the boundary from inside), +infinity beyond max_range_m or from an origin
+  // obstacle, or a walled boundary from inside), +infinity beyond max_range_m or from an origin
   // outside the boundary; 0 from inside an obstacle. normal, when given, receives the unit
   // outward normal of the surface met ((0, 0) when nothing is), the face entered last when
   // the ray meets an edge.
@@ -97,6 +101,7 @@ class SolidGeometry {
   int bucket_of_y(double y_m) const;
 
   double x_min_m_, y_min_m_, x_max_m_, y_max_m_;
+  bool walled_ = true;  // Arena::boundary_walled
   double bucket_m_;
   int nx_, ny_;
   std::vector<Solid> solids_;

@@ -18,9 +18,16 @@
 // half a width longer at each end, so walls meeting at a corner close it.
 //
 // Rectangles are closed: a point on an edge is inside; a ray that touches an edge hits it.
+//
+// Heights: every solid stands on the floor up to its top, z up from the floor in metres. A
+// format that states none (a maze's walls, a room's obstacles, a plain cylinder) gives
+// kTallerThanEverySensor_m, so every beam and line of sight meets it; the course's XML walls
+// are 0.5 m high (its library's Obstacle), a landmark is its own height tall. A horizontal
+// beam at height z is blocked by a solid only when z is below its top (top > z).
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +49,11 @@ struct ArenaPose {
 
 enum class WallEnds { flush, capped };
 
+// The height of a solid whose file states none: above every sensor.
+inline constexpr double kTallerThanEverySensor_m = std::numeric_limits<double>::infinity();
+// The course's walls (its library's Obstacle and BoundaryWall: size z 0.5 m).
+inline constexpr double kCourseWallHeight_m = 0.5;
+
 struct Obstacle {
   double centre_x_m = 0.0;
   double centre_y_m = 0.0;
@@ -52,6 +64,7 @@ struct Obstacle {
   // from_box's extent {x_min, y_min, x_max, y_max}, which bounds() returns while angle_rad is 0
   // (the centre and half sizes, halved, would round it).
   std::optional<std::array<double, 4>> box;
+  double height_m = kTallerThanEverySensor_m;  // its top above the floor
 
   // The axis-aligned rectangle [x0, x1] x [y0, y1] (corners in any order), its extent kept
   // exactly as given.
@@ -91,6 +104,8 @@ struct ArenaDisc {
     double red = 1.0, green = 1.0, blue = 1.0;
   };
   std::optional<Look> landmark = std::nullopt;  // a landmark's (a file's <landmark>, a maze's landmarks)
+  // Its top above the floor: a landmark's height, else kTallerThanEverySensor_m.
+  double top_m() const { return landmark ? landmark->height_m : kTallerThanEverySensor_m; }
 };
 
 struct Arena {
@@ -107,6 +122,10 @@ struct Arena {
   std::vector<common::SourceLocation> start_where;  // one per start
   std::vector<ArenaPoint> goals;
   std::vector<common::SourceLocation> goal_where;  // one per goal
+  // Whether the boundary is walled (a RectangleArena's walls, taller than every sensor: a beam
+  // stops at it, the body stays inside), or the open edge of a Webots Floor (a beam past it
+  // meets nothing and reads +infinity; the body may leave, and a run says so).
+  bool boundary_walled = true;
 
   double width_m() const { return x_max_m - x_min_m; }
   double height_m() const { return y_max_m - y_min_m; }
@@ -117,9 +136,18 @@ struct Arena {
   ArenaPose start() const;
 };
 
+// The solids whose top is above z_m (a beam at that height meets exactly these), the rest of
+// the arena as it is; whether every solid's top is above z_m (then it is the arena itself).
+Arena solids_above(const Arena &arena, double z_m);
+bool every_solid_above(const Arena &arena, double z_m);
+
 // The course's floor (a Webots RectangleArena of 17 x 17 m centred on the origin): an arena
 // whose file gives no boundary is bounded by it.
 inline constexpr double kCourseFloorSide_m = 17.0;
+// The course's empty floor (a Webots Floor: kCourseFloorSide_m square centred on the origin,
+// its edge open) with nothing on it; the robot at the origin facing north, where a
+// supervisor's load_environment begins.
+Arena course_empty_floor();
 // Limits: obstacles per arena, and the boundary's longer side.
 inline constexpr std::size_t kMaxObstacles = 10000;
 inline constexpr double kMaxArenaSide_m = 1000.0;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -102,6 +103,10 @@ class Maze {
   double origin_y_m() const { return origin_y_m_; }
   void set_physical(double cell_size_m, double wall_thickness_m, double origin_x_m,
                     double origin_y_m);
+  // The walls' height above the floor: infinity (above every sensor) unless the file states
+  // one (the course's XML: 0.5 m).
+  double wall_height_m() const { return wall_height_m_; }
+  void set_wall_height_m(double height_m) { wall_height_m_ = height_m; }
 
   // Cells that can be reached from the start through openings; reachable[y * W + x].
   std::vector<bool> reachable_from_start() const;
@@ -138,6 +143,14 @@ class Maze {
   double wall_thickness_m_ = kDefaultWallThickness_m;
   double origin_x_m_ = 0.0;
   double origin_y_m_ = 0.0;
+  double wall_height_m_ = std::numeric_limits<double>::infinity();
 };
+
+// The lattice's truth for scoring with its solids standing in cells (docs/models.md, "A solid
+// inside a cell"): the maze with a wall on every side where a landmark's disc overlaps the
+// middle sub-cell of that side's band, in either cell (K = subcells a cell; the two
+// sub-cells the wall reading judges a side on, controller/mapping/walls.hpp). A landmark on
+// no such sub-cell changes nothing; a maze without landmarks comes back as it is.
+Maze with_solid_sides(const Maze &maze, int subcells);
 
 }  // namespace maze

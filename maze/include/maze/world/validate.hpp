@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct RawMaze {
   std::vector<Landmark> landmarks;
   double cell_size_m = kDefaultCellSize_m;
   double wall_thickness_m = kDefaultWallThickness_m;
+  double wall_height_m = std::numeric_limits<double>::infinity();  // Maze::wall_height_m
   double origin_x_m = 0.0;
   double origin_y_m = 0.0;
   // Where side s of cell c is written in the file; the file name alone if nowhere.
