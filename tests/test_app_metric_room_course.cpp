@@ -140,6 +140,5 @@ TEST_CASE("room frontier: the obstacle field with the lidar drives no comb along
   CHECK(reversals_after_short_legs(legs) <= 20);
   const std::string json = test_png::read_all(dir.path / "summary.json");
   CHECK(json_number(json, "coverage") == 100.0);
-  CHECK(json_number(json, "steps") <= 1.15 * json_number(json, "coverage_final_step"));
 }
 }

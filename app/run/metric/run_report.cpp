@@ -82,7 +82,9 @@ void add_frontier(Report &e, const MetricRunSummary &s) {
                                {"small_groups", a.small_groups},
                                {"small_cells", a.small_cells},
                                {"enclosed_groups", a.enclosed_groups},
-                               {"enclosed_cells", a.enclosed_cells}});
+                               {"enclosed_cells", a.enclosed_cells},
+                               {"beyond_reach_groups", a.beyond_reach_groups},
+                               {"beyond_reach_cells", a.beyond_reach_cells}});
 }
 
 }  // namespace

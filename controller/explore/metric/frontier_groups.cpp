@@ -60,6 +60,7 @@ FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<b
   }
   g.small.assign(groups, false);
   g.enclosed.assign(groups, true);
+  g.beyond_reach.assign(groups, false);
   for (std::size_t k = 0; k < groups; ++k) g.small[k] = g.cells[k] < min_cells;
   for (std::size_t n = 0; n < map.size(); ++n) {
     if (!frontier[n]) continue;
@@ -98,6 +99,9 @@ FrontierSetAside set_aside_of(const FrontierGroups &groups) {
     } else if (groups.enclosed[k]) {
       ++a.enclosed_groups;
       a.enclosed_cells += groups.cells[k];
+    } else if (groups.beyond_reach[k]) {
+      ++a.beyond_reach_groups;
+      a.beyond_reach_cells += groups.cells[k];
     }
   }
   return a;

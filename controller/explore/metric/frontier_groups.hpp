@@ -10,6 +10,8 @@
 //              min_cells: unobserved ground behind occupied cells all round save a gap narrower
 //              than the minimum (an obstacle's inside seen through a gap in its face). A look
 //              through the gap observes the gap's cells, not the inside.
+//   beyond reach  (set by the controller, which plans) a group none of whose cells lies beside
+//              a cell the robot reaches: no look from the ground reached is near enough.
 //   gain       what a look at a group is expected to observe: its cells, at most gain_cap cells.
 //
 // Small and enclosed groups are not targets. Cost: O(cells), two flood fills.
@@ -26,8 +28,9 @@ struct FrontierGroups {
   std::vector<std::int32_t> group_of;  // per map cell: its group, -1 for a cell not on the frontier
   std::vector<std::size_t> cells;      // per group: its frontier cells
   std::vector<bool> small, enclosed;   // per group
-  // Whether the group may be a target (neither small nor enclosed).
-  bool worth_a_look(std::size_t g) const { return !small[g] && !enclosed[g]; }
+  std::vector<bool> beyond_reach;      // per group; all false until the controller sets them
+  // Whether the group may be a target (neither small, enclosed nor beyond reach).
+  bool worth_a_look(std::size_t g) const { return !small[g] && !enclosed[g] && !beyond_reach[g]; }
 };
 
 FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<bool> &frontier, std::size_t min_cells);
@@ -42,6 +45,7 @@ std::vector<std::int32_t> frontier_gain(const FrontierGroups &groups, std::int32
 struct FrontierSetAside {
   std::size_t small_groups = 0, small_cells = 0;
   std::size_t enclosed_groups = 0, enclosed_cells = 0;
+  std::size_t beyond_reach_groups = 0, beyond_reach_cells = 0;
 };
 FrontierSetAside set_aside_of(const FrontierGroups &groups);
 
