@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "explore/metric/frontier.hpp"
+#include "explore/metric/frontier_groups.hpp"
 #include "mapping/sensor_model.hpp"
 #include "plan/metric/wavefront.hpp"
 #include "sensing/metric/map.hpp"
