@@ -73,7 +73,7 @@ struct MetricOptions {
   double stop_distance_m = 0.2;         // a return ahead closer than this (from the centre) stops a leg
   double back_off_m = 0.1;              // wander
   double view_m = 0.5;                  // frontier: a target within this of its frontier
-  double min_frontier_m = 0.3;          // frontier: a group of fewer cells than this is no target
+  double min_frontier_m = 0.1;          // frontier: a group shorter than this is no target
   std::uint64_t seed = 1;               // wander's turns
   double body_radius_m = 0.09;          // the cells under the body count as seen free for planning
   mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS

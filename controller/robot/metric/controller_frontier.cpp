@@ -39,23 +39,13 @@ std::vector<std::size_t> group_in_view(const sensing::MetricMap &map, const expl
   return cells;
 }
 
-// A visit aimed at `aim` ended; `in_view` the aim's group in view of it before. A look that
-// observed none of them counts against every cell of the group: a face whose cells no look
-// observes is set aside after kMaxFrontierAttempts such looks, not cell by cell. Otherwise
-// each cell in view still unobserved counts the visit.
-void count_visit(const sensing::MetricMap &map, const explore::FrontierGroups &groups, std::size_t aim,
-                 const std::vector<std::size_t> &in_view, explore::FrontierVisits &visits,
-                 const explore::MapProgress &now) {
-  const bool observed_some =
-      std::any_of(in_view.begin(), in_view.end(), [&map](std::size_t n) { return !map.unobserved_at(n); });
-  if (observed_some) {
-    for (const std::size_t n : in_view) {
-      if (map.unobserved_at(n)) visits.visited(n, true, now);
-    }
-    return;
-  }
-  for (std::size_t n = 0; n < map.size(); ++n) {
-    if (groups.group_of[n] == groups.group_of[aim]) visits.visited(n, true, now);
+// A visit aimed at `aim` ended; `in_view` the aim's group in view of it before. Each of them
+// still unobserved counts the visit (the look there covered them), so a face of cells no look
+// observes is set aside a view's width at a time, not cell by cell.
+void count_visit(const sensing::MetricMap &map, const std::vector<std::size_t> &in_view,
+                 explore::FrontierVisits &visits, const explore::MapProgress &now) {
+  for (const std::size_t n : in_view) {
+    if (map.unobserved_at(n)) visits.visited(n, true, now);
   }
 }
 
@@ -229,7 +219,8 @@ MetricEnding MetricController::run_frontier() {
     } else if (target) {
       const std::vector<std::size_t> in_view = group_in_view(map_, groups, target->aim, view_cells);
       if (const Motion m = visit_frontier(*target, blocked); m != Motion::ok) return finish(m);
-      count_visit(map_, groups, target->aim, in_view, visits, progress_now(progress));
+      if (!map_.unobserved_at(target->aim)) visits.visited(target->aim, false, progress_now(progress));
+      count_visit(map_, in_view, visits, progress_now(progress));
     } else {
       std::size_t visited = 0;  // set aside after visits; the others had no target
       for (std::size_t n = 0; n < map_.size(); ++n) {
