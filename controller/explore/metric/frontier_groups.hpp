@@ -10,8 +10,9 @@
 //              min_cells: unobserved ground behind occupied cells all round save a gap narrower
 //              than the minimum (an obstacle's inside seen through a gap in its face). A look
 //              through the gap observes the gap's cells, not the inside.
-//   beyond reach  (set by the controller, which plans) a group none of whose cells lies beside
-//              a cell the robot reaches: no look from the ground reached is near enough.
+//   beyond reach  a group a caller that plans finds none of whose cells lies beside a cell the
+//              robot reaches (the metric controller sets none: without their probes the IR
+//              set-ups ended short of the floor behind their arcs).
 //   gain       what a look at a group is expected to observe: its cells, at most gain_cap cells.
 //
 // Small and enclosed groups are not targets. Cost: O(cells), two flood fills.
@@ -28,7 +29,7 @@ struct FrontierGroups {
   std::vector<std::int32_t> group_of;  // per map cell: its group, -1 for a cell not on the frontier
   std::vector<std::size_t> cells;      // per group: its frontier cells
   std::vector<bool> small, enclosed;   // per group
-  std::vector<bool> beyond_reach;      // per group; all false until the controller sets them
+  std::vector<bool> beyond_reach;      // per group; all false unless a caller sets them
   // Whether the group may be a target (neither small, enclosed nor beyond reach).
   bool worth_a_look(std::size_t g) const { return !small[g] && !enclosed[g] && !beyond_reach[g]; }
 };

@@ -24,51 +24,6 @@ std::size_t count_of(const std::vector<bool> &flags) {
   return static_cast<std::size_t>(std::count(flags.begin(), flags.end(), true));
 }
 
-// The cells of the aim's group within view_cells of it (a look at the aim covers them).
-std::vector<std::size_t> group_in_view(const sensing::MetricMap &map, const explore::FrontierGroups &groups,
-                                       std::size_t aim, int view_cells) {
-  std::vector<std::size_t> cells;
-  const sensing::MetricCell a = map.cell_of_index(aim);
-  for (int j = a.j - view_cells; j <= a.j + view_cells; ++j) {
-    for (int i = a.i - view_cells; i <= a.i + view_cells; ++i) {
-      if (!map.contains({i, j})) continue;
-      const std::size_t n = map.index({i, j});
-      if (groups.group_of[n] == groups.group_of[aim]) cells.push_back(n);
-    }
-  }
-  return cells;
-}
-
-// A visit aimed at `aim` ended; `in_view` the aim's group in view of it before. Each of them
-// still unobserved counts the visit (the look there covered them), so a face of cells no look
-// observes is set aside a view's width at a time, not cell by cell.
-void count_visit(const sensing::MetricMap &map, const std::vector<std::size_t> &in_view,
-                 explore::FrontierVisits &visits, const explore::MapProgress &now) {
-  for (const std::size_t n : in_view) {
-    if (map.unobserved_at(n)) visits.visited(n, true, now);
-  }
-}
-
-// Groups none of whose cells lies beside (8 neighbours) a cell reached: no look from the
-// ground reached is close enough to observe them (a mixed cell of an obstacle's face seen free
-// leaves the obstacle's inside beside it, a cell beyond the face).
-void set_aside_beyond_reach(const sensing::MetricMap &map, const std::vector<std::int32_t> &steps,
-                            explore::FrontierGroups &groups) {
-  std::vector<bool> near(groups.cells.size(), false);
-  for (std::size_t n = 0; n < map.size(); ++n) {
-    const std::int32_t g = groups.group_of[n];
-    if (g < 0 || near[static_cast<std::size_t>(g)]) continue;
-    const sensing::MetricCell c = map.cell_of_index(n);
-    for (int dj = -1; dj <= 1; ++dj) {
-      for (int di = -1; di <= 1; ++di) {
-        const sensing::MetricCell nb{c.i + di, c.j + dj};
-        if (map.contains(nb) && steps[map.index(nb)] >= 0) near[static_cast<std::size_t>(g)] = true;
-      }
-    }
-  }
-  for (std::size_t g = 0; g < near.size(); ++g) groups.beyond_reach[g] = !near[g];
-}
-
 std::string cells_text(std::size_t n) { return fmt::format("{} frontier cell{}", n, n == 1 ? "" : "s"); }
 
 }  // namespace
@@ -187,7 +142,6 @@ MetricEnding MetricController::run_frontier() {
     const std::vector<bool> blocked = obstacles(true);
     const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, map_.index(robot_cell()));
     explore::FrontierGroups groups = explore::group_frontier(map_, explore::frontier_cells(map_), min_cells);
-    set_aside_beyond_reach(map_, steps, groups);
     const std::vector<bool> frontier = explore::cells_worth_a_look(groups);
     frontier_left_ = count_of(frontier);
     frontier_aside_ = explore::set_aside_of(groups);
@@ -217,10 +171,8 @@ MetricEnding MetricController::run_frontier() {
       if (const Motion m = sweep(*leg, blocked); m != Motion::ok) return finish(m);
       if (!covered_or_seen_free(leg->aim)) swept[leg->aim] = true;
     } else if (target) {
-      const std::vector<std::size_t> in_view = group_in_view(map_, groups, target->aim, view_cells);
       if (const Motion m = visit_frontier(*target, blocked); m != Motion::ok) return finish(m);
-      if (!map_.unobserved_at(target->aim)) visits.visited(target->aim, false, progress_now(progress));
-      count_visit(map_, in_view, visits, progress_now(progress));
+      visits.visited(target->aim, map_.unobserved_at(target->aim), progress_now(progress));
     } else {
       std::size_t visited = 0;  // set aside after visits; the others had no target
       for (std::size_t n = 0; n < map_.size(); ++n) {
