@@ -34,6 +34,8 @@ Made made() {
   m.summary.observed_cells = 1440;
   m.summary.reachable_free = 1247;
   m.summary.reachable_free_observed = 1229;
+  m.summary.coverage_final_step = 1040;
+  m.summary.path_length_m = 12.3456;
   return m;
 }
 
@@ -54,6 +56,8 @@ TEST_CASE("room report: the summary block is the run's key: value lines, end: in
         "steps: 1096\n"
         "cell_accuracy: 89.13% (1337 of 1500 cells right; observed 1295 of 1440)\n"
         "coverage: 98.56% (1229 of 1247 reachable free cells observed)\n"
+        "coverage_final_step: 1040\n"
+        "path_length_m: 12.35\n"
         "sim_time_s: 35.072\n"
         "wall_time_ms: 350\n");
 }
@@ -68,7 +72,9 @@ TEST_CASE("room report: summary.json has every entry in order, with the core key
   CHECK(keys ==
         "world grid cells_x cells_y cell_m boundary_m model depth strategy robot seed end end_message steps "
         "cell_accuracy cells_right cells_total observed_cells observed_cells_right coverage reachable_free "
-        "reachable_free_observed sim_time_s wall_time_ms ");
+        "reachable_free_observed coverage_final_step path_length_m sim_time_s wall_time_ms ");
+  CHECK(j["coverage_final_step"] == 1040);
+  CHECK(j["path_length_m"] == 12.346);
   CHECK(j["robot"] == "ir-fan");
   CHECK(j["model"] == "pie");
   CHECK(j["cells_x"] == 50);

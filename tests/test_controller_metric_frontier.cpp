@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "explore/metric/frontier.hpp"
+#include "explore/metric/frontier_groups.hpp"
 #include "mapping/sensor_model.hpp"
 #include "plan/metric/wavefront.hpp"
 #include "sensing/metric/map.hpp"
@@ -132,4 +133,58 @@ TEST_CASE("metric frontier: the map's progress only grows") {
   // Fewer cells free for planning than before: the high-water mark stays.
   CHECK(explore::progress_of(m.map, 2, first) == first);
   CHECK(explore::progress_of(m.map, 5, first) == explore::MapProgress{4, 5});
+}
+
+TEST_CASE("metric frontier groups: a small group and an obstacle's inside seen through a gap are no targets") {
+  // West: an open edge of five frontier cells (column 1, beside the seen free column 0).
+  // East: a box, its inside never observed, seen through a gap of one cell in its west face.
+  const PictureMap m({".        ##### ",
+                      ".       .#   # ",
+                      ".       ..   # ",
+                      ".       .#   # ",
+                      ".       .##### "});
+  const std::vector<bool> frontier = explore::frontier_cells(m.map);
+  const explore::FrontierGroups groups = explore::group_frontier(m.map, frontier, 3);
+  REQUIRE(frontier[m.at(1, 2)]);
+  REQUIRE(frontier[m.at(10, 2)]);
+  const auto open = static_cast<std::size_t>(groups.group_of[m.at(1, 2)]);
+  const auto gap = static_cast<std::size_t>(groups.group_of[m.at(10, 2)]);
+  CHECK(groups.cells[open] >= 5);
+  CHECK(groups.worth_a_look(open));
+  CHECK(groups.cells[gap] == 1);
+  CHECK(groups.small[gap]);
+  CHECK(!groups.worth_a_look(gap));
+  const std::vector<bool> looked = explore::cells_worth_a_look(groups);
+  CHECK(looked[m.at(1, 2)]);
+  CHECK(!looked[m.at(10, 2)]);
+  const explore::FrontierSetAside aside = explore::set_aside_of(groups);
+  CHECK(aside.small_cells >= 1);
+  // With a minimum of one cell the gap is no longer small, but what lies behind it is the
+  // box's inside, whose whole frontier is that cell: enclosed at a minimum of two.
+  CHECK(explore::group_frontier(m.map, frontier, 1).worth_a_look(gap));
+  const explore::FrontierGroups two = explore::group_frontier(m.map, frontier, 2);
+  CHECK(two.small[gap]);
+  CHECK(two.enclosed[gap]);
+}
+
+TEST_CASE("metric frontier: a farther target that looks at a larger group wins over a nearer one only by its gain") {
+  // Row 0 free; a frontier cell north of (1, 0) and one north of (3, 0).
+  const PictureMap m({"# ## #",
+                      "......"});
+  const std::vector<bool> aims = explore::frontier_cells(m.map);
+  REQUIRE(aims[m.at(1, 1)]);
+  REQUIRE(aims[m.at(4, 1)]);
+  const explore::FrontierVisits visits(m.map.size());
+  const std::vector<std::int32_t> steps = m.steps_from(0, 0);
+  std::vector<std::int32_t> gain(m.map.size(), 0);
+  gain[m.at(1, 1)] = 1;
+  gain[m.at(4, 1)] = 1;
+  const auto nearest = explore::frontier_target(m.map, 0.6, aims, 1, visits, steps, &gain);
+  REQUIRE(nearest.has_value());
+  CHECK(nearest->aim == m.at(1, 1));
+  // (4, 0) is 3 steps farther than (1, 0), a cost of 9: a gain 8 greater loses, 10 greater wins.
+  gain[m.at(4, 1)] = 9;
+  CHECK(explore::frontier_target(m.map, 0.6, aims, 1, visits, steps, &gain)->aim == m.at(1, 1));
+  gain[m.at(4, 1)] = 11;
+  CHECK(explore::frontier_target(m.map, 0.6, aims, 1, visits, steps, &gain)->aim == m.at(4, 1));
 }

@@ -33,20 +33,21 @@ std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRas
 
 void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, MetricRunSummary &summary) {
   const bool all_seen = summary.reachable_free_observed == summary.reachable_free;
-  if (summary.ending == robot::MetricEnding::incomplete && all_seen) {
-    // What the robot could not observe lies in obstacles or out of reach: the free space is mapped.
-    summary.ending = robot::MetricEnding::done;
-    summary.message += fmt::format(", none of them reachable free space: every one of the {} reachable free cells "
-                                   "is observed", summary.reachable_free);
-  }
-  if (summary.ending == robot::MetricEnding::done && !all_seen) {
-    // The controller found no frontier, yet reachable free space is unobserved: not done.
+  const bool ended_by_frontier =
+      summary.ending == robot::MetricEnding::done || summary.ending == robot::MetricEnding::incomplete;
+  if (!ended_by_frontier) return;
+  std::string detail = summary.message;
+  // The truth decides: done when every reachable free cell is observed, whatever frontier
+  // cells the controller left (in obstacles or out of reach); incomplete otherwise.
+  summary.ending = all_seen ? robot::MetricEnding::done : robot::MetricEnding::incomplete;
+  if (!all_seen) {
     const mapping::Point p = map.centre_of(map.cell_of_index(first_left));
-    summary.ending = robot::MetricEnding::incomplete;
-    summary.message = fmt::format("{} of {} reachable free cells never observed (the first at {:.2f}, {:.2f})",
-                                  summary.reachable_free - summary.reachable_free_observed, summary.reachable_free,
-                                  p.x_m, p.y_m);
+    detail += fmt::format("; {} of {} reachable free cells never observed (the first at {:.2f}, {:.2f})",
+                          summary.reachable_free - summary.reachable_free_observed, summary.reachable_free, p.x_m,
+                          p.y_m);
   }
+  summary.message = fmt::format("{:.2f} % of the reachable free cells observed", 100.0 * summary.observed_share());
+  if (summary.frontier) summary.frontier->detail = detail;
 }
 
 }  // namespace app

@@ -15,9 +15,10 @@ namespace app {
 // (map.size() when none).
 std::size_t score_metric_map(const sensing::MetricMap &map, const maze::TruthRaster &truth, double threshold,
                            MetricRunSummary &summary);
-// Frontier's ending checked against the truth (after score_metric_map): `incomplete` with every
-// reachable free cell observed is `done`; `done` with one never observed (first_left) is
-// `incomplete`.
+// Frontier's ending checked against the truth (after score_metric_map): `done` or `incomplete`
+// becomes `done` when every reachable free cell is observed, else `incomplete` (first_left the
+// first never observed); its message the share observed, the controller's own words and the
+// cells never observed going to summary.frontier's detail.
 void settle_frontier_ending(const sensing::MetricMap &map, std::size_t first_left, MetricRunSummary &summary);
 
 }  // namespace app

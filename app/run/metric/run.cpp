@@ -15,6 +15,7 @@
 
 #include "app/run/metric/map_text.hpp"
 #include "app/run/metric/run_report.hpp"
+#include "app/run/metric/coverage_clock.hpp"
 #include "app/run/metric/evaluation.hpp"
 #include "app/run/profile_json.hpp"
 #include "app/run/run_frame.hpp"
@@ -226,7 +227,8 @@ class RoomLog {
 };
 
 // What the controller says of its run, on the grid `spec`.
-MetricRunSummary summary_of(const robot::MetricController &c, robot::MetricEnding ending, const sensing::MetricGridSpec &spec) {
+MetricRunSummary summary_of(const robot::MetricController &c, robot::MetricEnding ending, const sensing::MetricGridSpec &spec,
+                            bool frontier) {
   MetricRunSummary summary;
   summary.ending = ending;
   summary.message = c.message();
@@ -235,6 +237,7 @@ MetricRunSummary summary_of(const robot::MetricController &c, robot::MetricEndin
   summary.cells_x = spec.cells_x;
   summary.cells_y = spec.cells_y;
   summary.cell_m = spec.cell_m;
+  if (frontier) summary.frontier = MetricRunSummary::FrontierEnd{c.message(), c.frontier_left(), c.frontier_set_aside()};
   if (c.body_observes()) summary.sweep = MetricRunSummary::BodySweep{c.sweep_legs(), c.probe_legs(), c.map().body_observed()};
   return summary;
 }
@@ -301,15 +304,20 @@ MetricRunSummary run_metric_arena(const maze::Arena &arena, const RunOptions &op
 
   // ---- the run ----
   RoomLog log(options, threshold, out);
+  CoverageClock clock(map, truth, *sim.start);
   robot::MetricController controller_loop(simulation.robot(), controller, room, map,
                                           [&](const robot::MetricController &c) {
                                             RunStep step = step_at(c.steps(), c.time_s(), simulation.pose());
                                             step.metres = &c;
+                                            clock.on_step(c.steps(), simulation.pose());
                                             log.on_step(c, step.snapshots);
                                             frame.step(step);
                                           },
                                           interrupted);
-  MetricRunSummary summary = summary_of(controller_loop, controller_loop.run(), spec);
+  MetricRunSummary summary = summary_of(controller_loop, controller_loop.run(), spec,
+                                        options.strategy == explore::StrategyKind::frontier);
+  summary.path_length_m = clock.path_length_m();
+  summary.coverage_final_step = clock.coverage_final_step();
   if (summary.ending == robot::MetricEnding::stopped && interrupted != nullptr && interrupted()) {
     summary.interrupted = true;
     summary.message = "interrupted by " + common::interrupt_name();

@@ -27,6 +27,7 @@
 #include "maze/world/truth_raster.hpp"
 #include "maze/world/world.hpp"
 #include "maze/sim/simulation.hpp"
+#include "explore/metric/frontier_groups.hpp"
 #include "robot/metric/controller.hpp"
 #include "sensing/bump_depth_marks.hpp"
 #include "sensing/range_models.hpp"
@@ -47,12 +48,22 @@ struct MetricRunSummary {
   std::size_t cells_right = 0, cells_total = 0;  // thresholded map against the truth, every cell
   std::size_t observed_cells_right = 0, observed_cells = 0;
   std::size_t reachable_free = 0, reachable_free_observed = 0;
+  double path_length_m = 0.0;            // the robot's true centre, step to step
+  std::int64_t coverage_final_step = 0;  // the step the last reachable free cell observed was first observed
   // Set-ups whose nothing-seen marks nothing (the sonar cone): frontier's sweep legs, the
   // probes among them, and the cells first observed by the robot's body.
   struct BodySweep {
     std::size_t legs = 0, probes = 0, body_observed = 0;
   };
   std::optional<BodySweep> sweep;
+  // frontier: what its controller said when it ended (the frontier left, why; summary.json's
+  // and --verbose's, the end line says the coverage), and the groups it set aside then.
+  struct FrontierEnd {
+    std::string detail;
+    std::size_t left_cells = 0;
+    explore::FrontierSetAside set_aside;
+  };
+  std::optional<FrontierEnd> frontier;
   double observed_share() const {
     return reachable_free == 0 ? 1.0 : static_cast<double>(reachable_free_observed) / static_cast<double>(reachable_free);
   }

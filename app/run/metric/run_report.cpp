@@ -58,6 +58,10 @@ void add_score(Report &e, const MetricRunSummary &s) {
          two_decimals(covered));
   e.json_only("reachable_free", s.reachable_free);
   e.json_only("reachable_free_observed", s.reachable_free_observed);
+  e.both(std::string(report_key::coverage_final_step), std::to_string(s.coverage_final_step),
+         Json(s.coverage_final_step));
+  e.both(std::string(report_key::path_length_m), fmt::format("{:.2f}", s.path_length_m),
+         Json(std::round(s.path_length_m * 1000.0) / 1000.0));
   if (s.sweep) {
     e.both("sweep_legs",
            fmt::format("{} legs onto unobserved ground ({} probes past cells the echoes closed); {} cells first "
@@ -67,6 +71,18 @@ void add_score(Report &e, const MetricRunSummary &s) {
     e.json_only("sweep_probes", s.sweep->probes);
     e.json_only("body_observed", s.sweep->body_observed);
   }
+}
+
+// The frontier left and set aside at the end (summary.json).
+void add_frontier(Report &e, const MetricRunSummary &s) {
+  if (!s.frontier) return;
+  const explore::FrontierSetAside &a = s.frontier->set_aside;
+  e.json_only("frontier", Json{{"detail", s.frontier->detail},
+                               {"left_cells", s.frontier->left_cells},
+                               {"small_groups", a.small_groups},
+                               {"small_cells", a.small_cells},
+                               {"enclosed_groups", a.enclosed_groups},
+                               {"enclosed_cells", a.enclosed_cells}});
 }
 
 }  // namespace
@@ -83,6 +99,7 @@ Report metric_run_report(const RunOptions &options, const std::string &robot_nam
   const std::string ending(robot::to_string(summary.ending));
   e.both("end", end_text(ending, summary.message), Json(ending));
   e.json_only("end_message", summary.message);
+  add_frontier(e, summary);
   e.both("steps", std::to_string(summary.steps), Json(summary.steps));
   add_score(e, summary);
   e.both("sim_time_s", fmt::format("{:.3f}", summary.sim_time_s), Json(summary.sim_time_s));

@@ -104,7 +104,8 @@ void FrontierVisits::set_aside(std::size_t cell, const MapProgress &now) {
 
 std::optional<FrontierTarget> frontier_target(const sensing::MetricMap &map, double free_below_p,
                                               const std::vector<bool> &aims, int view_cells,
-                                              const FrontierVisits &visits, const std::vector<std::int32_t> &steps) {
+                                              const FrontierVisits &visits, const std::vector<std::int32_t> &steps,
+                                              const std::vector<std::int32_t> *gain) {
   const FrontierView view = spread_view(map, free_below_p, aims, view_cells);
   std::vector<std::size_t> candidates;
   for (std::size_t n = 0; n < map.size(); ++n) {
@@ -113,8 +114,10 @@ std::optional<FrontierTarget> frontier_target(const sensing::MetricMap &map, dou
     const int halvings = std::min(visits.attempts(view.nearest[n]), kMaxFrontierAttempts);
     if (view.steps[n] <= std::max(1, view_cells >> halvings)) candidates.push_back(n);
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [&steps](std::size_t a, std::size_t b) { return steps[a] < steps[b]; });
+  const auto cost = [&](std::size_t n) {
+    return std::int64_t{kPathWeight} * steps[n] - (gain != nullptr ? (*gain)[view.nearest[n]] : 0);
+  };
+  std::stable_sort(candidates.begin(), candidates.end(), [&cost](std::size_t a, std::size_t b) { return cost(a) < cost(b); });
   for (const std::size_t n : candidates) {
     if (sees(map, free_below_p, n, view.nearest[n])) return FrontierTarget{n, view.nearest[n]};
   }

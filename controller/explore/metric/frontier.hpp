@@ -4,9 +4,13 @@
 // observe unobserved ground. The controller (robot/metric/controller.hpp) drives and looks.
 //
 //   frontier   a cell never observed beside one seen free (p < 0.5).
-//   target     the nearest cell by steps from the robot (over the ground reached) within
-//              view_cells of a frontier cell (spread over cells not seen occupied) that sees
-//              it: no cell seen occupied (p >= free_below_p) on the line between the centres.
+//   target     a cell reached from the robot within view_cells of a frontier cell (spread
+//              over cells not seen occupied) that sees it: no cell seen occupied
+//              (p >= free_below_p) on the line between the centres. Of those, the one of
+//              least cost kPathWeight x steps - gain, explore_lite's rule (potential scale 3,
+//              gain scale 1): the steps from the robot over the ground reached, the gain that
+//              of the frontier cell's group (explore/metric/frontier_groups.hpp; none: 0), so
+//              the nearest wins unless a farther one looks at a larger group.
 //              Each visit that left its frontier cell unobserved halves the view it is aimed
 //              at from (at least one cell), so the robot comes closer each time.
 //   set aside  by itself, never with the rest: a frontier cell aimed at kMaxFrontierAttempts
@@ -24,6 +28,9 @@
 #include "sensing/metric/map.hpp"
 
 namespace explore {
+
+// The cost of a target: kPathWeight cells of gain for each step of path.
+inline constexpr int kPathWeight = 3;
 
 // Visits to a frontier cell that leave it unobserved before it is set aside.
 inline constexpr int kMaxFrontierAttempts = 3;
@@ -69,9 +76,10 @@ struct FrontierTarget {
 
 // The target for the flagged frontier cells (`aims`), or nothing when none is in view of a
 // cell reached. steps: from the robot per cell (-1 not reached); free_below_p: the planner's
-// threshold.
+// threshold; gain: per frontier cell, its group's (nullptr: none).
 std::optional<FrontierTarget> frontier_target(const sensing::MetricMap &map, double free_below_p,
                                               const std::vector<bool> &aims, int view_cells,
-                                              const FrontierVisits &visits, const std::vector<std::int32_t> &steps);
+                                              const FrontierVisits &visits, const std::vector<std::int32_t> &steps,
+                                              const std::vector<std::int32_t> *gain = nullptr);
 
 }  // namespace explore

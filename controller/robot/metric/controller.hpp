@@ -19,8 +19,10 @@
 //   frontier   plan through cells seen free (p < free_below_p, observed, where the body,
 //              body_radius_m, centred on the cell touches no cell seen occupied, or that the
 //              robot's centre has driven through) to the frontier's target
-//              (explore/metric/frontier.hpp: the nearest cell within view_m of a frontier
-//              cell that sees it), drive the path, then turn a full turn there scanning. A
+//              (explore/metric/frontier.hpp: a cell within view_m of a frontier cell that
+//              sees it, the least path against the gain of its group; groups under
+//              min_frontier_m and enclosed ones are no targets, explore/metric/
+//              frontier_groups.hpp), drive the path, then turn a full turn there scanning. A
 //              frontier cell still unobserved after visits that aimed at it, or left without
 //              a target in a round where none had one, is set aside by itself, and tried again
 //              once the map has progressed. When no frontier cell has a target, a probe drives
@@ -43,6 +45,7 @@
 #include <vector>
 
 #include "explore/metric/frontier.hpp"
+#include "explore/metric/frontier_groups.hpp"
 #include "explore/metric/sweep.hpp"
 #include "explore/strategies.hpp"
 #include "mapping/grid_types.hpp"
@@ -70,6 +73,7 @@ struct MetricOptions {
   double stop_distance_m = 0.2;         // a return ahead closer than this (from the centre) stops a leg
   double back_off_m = 0.1;              // wander
   double view_m = 0.5;                  // frontier: a target within this of its frontier
+  double min_frontier_m = 0.1;          // frontier: a group shorter than this is no target
   std::uint64_t seed = 1;               // wander's turns
   double body_radius_m = 0.09;          // the cells under the body count as seen free for planning
   mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS
@@ -108,8 +112,10 @@ class MetricController {
   const std::vector<std::size_t> &path() const { return path_; }
   const std::vector<std::int32_t> &wave() const { return wave_; }
   const MetricSenses &senses() const { return senses_; }
-  // frontier: cells still unobserved beside seen-free ones when it ended.
+  // frontier: the frontier cells of groups worth a look when it ended
+  // (explore/metric/frontier_groups.hpp), and the groups set aside then and why.
   std::size_t frontier_left() const { return frontier_left_; }
+  const explore::FrontierSetAside &frontier_set_aside() const { return frontier_aside_; }
   // Whether the ground the body covers is observed free (sensing::MetricMap::observe_by_body).
   bool body_observes() const { return body_observes_; }
   // frontier's sweep legs (onto unobserved ground), and how many of them were probes.
@@ -149,7 +155,8 @@ class MetricController {
   std::optional<explore::FrontierTarget> next_frontier_target(const std::vector<bool> &frontier, int view_cells,
                                                               const explore::FrontierVisits &visits,
                                                               const std::vector<std::int32_t> &steps,
-                                                              const explore::MapProgress &progress) const;
+                                                              const explore::MapProgress &progress,
+                                                              const std::vector<std::int32_t> &gain) const;
   // The progress of the map now (explore::progress_of on the planning map).
   explore::MapProgress progress_now(const explore::MapProgress &before) const;
   // Drives to the target and looks around there; a touch or a wedge on the way backs off.
@@ -193,6 +200,7 @@ class MetricController {
   std::vector<bool> under_body_;  // cells the body has stood on: free whatever the map says
   std::vector<bool> driven_;      // cells the centre drove through: never grown over (frontier)
   std::size_t frontier_left_ = 0;
+  explore::FrontierSetAside frontier_aside_;
   std::vector<bool> contact_;     // cells a touch or a wedge of a sweep or wavefront leg marked
   bool body_observes_ = false;  // the ground the body covers is observed free (MetricMap::observe_by_body)
   std::size_t sweep_legs_ = 0, probe_legs_ = 0;  // frontier's sweep legs, and the probes among them

@@ -96,7 +96,8 @@ std::optional<explore::SweepLeg> MetricController::next_sweep_leg(const std::vec
 
 std::optional<explore::FrontierTarget> MetricController::next_frontier_target(
     const std::vector<bool> &frontier, int view_cells, const explore::FrontierVisits &visits,
-    const std::vector<std::int32_t> &steps, const explore::MapProgress &progress) const {
+    const std::vector<std::int32_t> &steps, const explore::MapProgress &progress,
+    const std::vector<std::int32_t> &gain) const {
   // The frontier cells not set aside first; then, when none has a target, those set aside
   // before the map last progressed.
   for (const bool retrying : {false, true}) {
@@ -107,7 +108,7 @@ std::optional<explore::FrontierTarget> MetricController::next_frontier_target(
       any = any || aims[n];
     }
     if (!any) continue;
-    if (auto t = explore::frontier_target(map_, metric_.free_below_p, aims, view_cells, visits, steps)) return t;
+    if (auto t = explore::frontier_target(map_, metric_.free_below_p, aims, view_cells, visits, steps, &gain)) return t;
   }
   return std::nullopt;
 }
@@ -133,14 +134,17 @@ MetricEnding MetricController::run_frontier() {
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
   explore::FrontierVisits visits(map_.size());
   const int view_cells = std::max(1, static_cast<int>(std::floor(metric_.view_m / map_.cell_m())));
+  const auto min_cells = static_cast<std::size_t>(std::max(1.0, std::round(metric_.min_frontier_m / map_.cell_m())));
   if (const Motion m = look_around(); m != Motion::ok) return finish(m);
   explore::MapProgress progress = progress_now({});
   std::vector<bool> swept(map_.size(), false);  // cells a sweep leg or a probe aimed at and left unobserved
   for (;;) {
-    const std::vector<bool> frontier = explore::frontier_cells(map_);
-    frontier_left_ = count_of(frontier);
     const std::vector<bool> blocked = obstacles(true);
     const std::vector<std::int32_t> steps = plan::steps_from(g, blocked, map_.index(robot_cell()));
+    explore::FrontierGroups groups = explore::group_frontier(map_, explore::frontier_cells(map_), min_cells);
+    const std::vector<bool> frontier = explore::cells_worth_a_look(groups);
+    frontier_left_ = count_of(frontier);
+    frontier_aside_ = explore::set_aside_of(groups);
     // Sweep the frontier the body can cover before looking from afar: a look observes only
     // what echoes, a sweep every cell the body goes over (and probes past arcs that hide
     // unobserved ground, frontier or not).
@@ -151,14 +155,17 @@ MetricEnding MetricController::run_frontier() {
       return MetricEnding::done;
     }
     std::optional<explore::FrontierTarget> target;
-    if (!leg) target = next_frontier_target(frontier, view_cells, visits, steps, progress);
+    if (!leg) {
+      target = next_frontier_target(frontier, view_cells, visits, steps, progress,
+                                    explore::frontier_gain(groups, 2 * view_cells));
+    }
     if (!leg && !target) {
       // No frontier cell has a target: each is set aside by itself, tried again once the map
       // progresses; a probe through the cells the map closes (whatever the set-up) may make it.
       for (std::size_t n = 0; n < map_.size(); ++n) {
         if (frontier[n] && !visits.aside(n)) visits.set_aside(n, progress);
       }
-      leg = next_sweep_leg(steps, swept, true);
+      if (options_.model.kind != sensing::ModelKind::ray) leg = next_sweep_leg(steps, swept, true);
     }
     if (leg) {
       if (const Motion m = sweep(*leg, blocked); m != Motion::ok) return finish(m);

@@ -139,19 +139,25 @@ int MetricMarks::level_of(const MetricMap &map, MetricCell c) const {
   return l == kUnmarked ? -1 : l;
 }
 
-void MetricMap::observe_by_body(std::size_t flat) {
-  if (unobserved_at(flat)) ++body_observed_;
-  grid_.log_odds[flat] = model_.update_free(grid_.log_odds[flat]);
+void MetricMap::set_log_odds(std::size_t flat, double value) {
+  const double prior = model_.prior_log_odds();
+  if (value == prior && grid_.log_odds[flat] != prior) ++back_to_prior_;
+  grid_.log_odds[flat] = value;
 }
 
-void MetricMap::observe_contact(std::size_t flat) { grid_.log_odds[flat] = model_.update_occupied(grid_.log_odds[flat]); }
+void MetricMap::observe_by_body(std::size_t flat) {
+  if (unobserved_at(flat)) ++body_observed_;
+  set_log_odds(flat, model_.update_free(grid_.log_odds[flat]));
+}
+
+void MetricMap::observe_contact(std::size_t flat) { set_log_odds(flat, model_.update_occupied(grid_.log_odds[flat])); }
 
 std::size_t MetricMarks::apply(MetricMap &map) {
   const mapping::SensorModel &model = map.model();
   const double increments[2] = {model.increment_for(level_p_[0]), model.increment_for(level_p_[1])};
-  std::vector<double> &values = map.log_grid().log_odds;
+  const std::vector<double> &values = map.log_grid().log_odds;
   for (const std::size_t flat : marked_) {
-    values[flat] = mapping::apply(values[flat], increments[level_[flat]], model.options().clamp);
+    map.set_log_odds(flat, mapping::apply(values[flat], increments[level_[flat]], model.options().clamp));
     level_[flat] = kUnmarked;
   }
   const std::size_t count = marked_.size();

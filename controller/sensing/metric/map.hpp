@@ -119,6 +119,9 @@ class MetricMap {
   void observe_contact(std::size_t flat);
   // Cells whose first observation was the body's.
   std::size_t body_observed() const { return body_observed_; }
+  // Updates (apply, observe_by_body, observe_contact) that left an observed cell exactly at
+  // l(prior) again, evidence for and against cancelling out: unobserved_at says it again.
+  std::size_t back_to_prior() const { return back_to_prior_; }
 
   // The grid of log-odds, and the bump and depth options with this grid's boundary, cells
   // and prior in base 10 (the bump and depth set-ups' homework numbers).
@@ -134,6 +137,10 @@ class MetricMap {
   mapping::GridGeometry geometry_;
   LogOddsGrid grid_;
   std::size_t body_observed_ = 0;
+  std::size_t back_to_prior_ = 0;
+  // Sets a cell's log-odds, counting a return to l(prior).
+  void set_log_odds(std::size_t flat, double value);
+  friend class MetricMarks;
 };
 
 // One scan's marks: per cell the strongest level (0 strongest). apply() gives each marked
