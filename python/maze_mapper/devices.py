@@ -62,14 +62,13 @@ class _Motion:
 motion = _Motion()
 
 
-class _Sensor:
-    """A device that reads after enable(sampling_period) (ms)."""
+class _Device:
+    """What every device answers: its name, and a model of "" (none is set here)."""
 
     NODE_TYPE = ""
 
     def __init__(self, name):
         self._name = name
-        self._period_ms = 0
 
     def getName(self):
         return self._name
@@ -80,6 +79,14 @@ class _Sensor:
     @property
     def name(self):
         return self._name
+
+
+class _Sensor(_Device):
+    """A device that reads after enable(sampling_period) (ms)."""
+
+    def __init__(self, name):
+        super().__init__(name)
+        self._period_ms = 0
 
     def enable(self, sampling_period):
         self._period_ms = int(sampling_period)
@@ -135,24 +142,14 @@ class Accelerometer(_Sensor):
         return [c * ax + s * ay, -s * ax + c * ay, GRAVITY_M_S2]
 
 
-class LED:
+class LED(_Device):
     """Webots' LED: set(value) kept, get() reads it back (0 at the start: off)."""
 
     NODE_TYPE = "LED"
 
     def __init__(self, name):
-        self._name = name
+        super().__init__(name)
         self._value = 0
-
-    def getName(self):
-        return self._name
-
-    def getModel(self):
-        return ""
-
-    @property
-    def name(self):
-        return self._name
 
     def set(self, value):
         self._value = int(value)
