@@ -267,7 +267,9 @@ std::optional<Replay> replay_file(const RunOptions &options, const RunSummary &s
   input.caption = map_caption(options);
   input.steps = summary.steps;
   input.reachable_cells = summary.score.reachable_cells;
-  if (summary.localization) {
+  // The belief of a maze small enough to keep it at every cell (live_localization.hpp).
+  if (summary.localization && !summary.localization->updates.empty() &&
+      !summary.localization->updates.front().belief.empty()) {
     for (const LocalizationUpdate &u : summary.localization->updates) {
       std::vector<int> &permille = input.belief_permille.emplace_back();
       for (const double p : u.belief) permille.push_back(static_cast<int>(std::lround(1000.0 * p)));

@@ -46,12 +46,6 @@ std::size_t likeliest_of(const std::vector<double> &belief) {
 
 }  // namespace
 
-bool LocalizationSummary::localized_now() const {
-  if (updates.empty()) return false;
-  const LocalizationUpdate &last = updates.back();
-  return last.belief[last.likeliest] >= localized_share && last.likeliest == last.robot_cell;
-}
-
 // The beam towards compass side `side` when the robot faces `yaw_rad`; common::InputError when
 // the lidar has none.
 int beam_for_side(const webots::Lidar &lidar, std::size_t side, double yaw_rad) {
@@ -112,8 +106,9 @@ void LiveLocalization::update(const robot::MoveReport &arrival, std::int64_t ste
   last_cell_ = arrival.cell;
   u.reading = lidar_walls(*lidar_, mapping::yaw_rad(arrival.heading), cell_size_m_);
   belief_ = loc::correct(map_, summary_.sensor, belief_, u.reading);
-  u.belief = belief_;
+  if (map_.cells() <= kMaxKeptBeliefCells) u.belief = belief_;
   u.likeliest = likeliest_of(belief_);
+  u.share = belief_[u.likeliest];
   u.robot_cell = loc::cell_index(map_, maze::Cell{arrival.cell.x, arrival.cell.y});
   if (!summary_.localized_at && belief_[u.likeliest] >= summary_.localized_share)
     summary_.localized_at = summary_.updates.size();
@@ -125,15 +120,15 @@ void LiveLocalization::print(const LocalizationUpdate &u) const {
   std::string text = u.side ? fmt::format("localize: move {} {}, ", u.move, "NESW"[*u.side])
                             : std::string("localize: the start, ");
   text += fmt::format("the lidar reads {}\n", loc::reading_words(u.reading));
-  text += loc::belief_map(map_, u.belief) + loc::belief_grid(map_, u.belief);
-  text += fmt::format("most likely: cell {} ({:.3f})\n\n", u.likeliest + 1, u.belief[u.likeliest]);
+  if (!u.belief.empty()) text += loc::belief_map(map_, u.belief) + loc::belief_grid(map_, u.belief);
+  text += fmt::format("most likely: cell {} ({:.3f})\n\n", u.likeliest + 1, u.share);
   *out_ << text;
 }
 
 std::string localization_verdict(const LocalizationSummary &s) {
   if (s.updates.empty()) return "no reading was made";
   const LocalizationUpdate &last = s.updates.back();
-  const double share = last.belief[last.likeliest];
+  const double share = last.share;
   if (share < s.localized_share) {
     return fmt::format("not localized: most likely cell {} holds {:.3f} (below {:g}) after {} moves; the robot is in cell {}",
                        last.likeliest + 1, share, s.localized_share, last.move, last.robot_cell + 1);

@@ -30,8 +30,11 @@ struct LocalizationUpdate {
   int move = 0;                        // cell-to-cell moves so far
   std::optional<std::size_t> side;     // the move's side (0 N, 1 E, 2 S, 3 W); none at move 0
   loc::Reading reading{};              // the four sides as the lidar read them
-  std::vector<double> belief;          // after the correction, cell 1 (north-west) first
+  // After the correction, cell 1 (north-west) first; kept on mazes of at most
+  // kMaxKeptBeliefCells cells, else empty.
+  std::vector<double> belief;
   std::size_t likeliest = 0;           // the most likely cell's index (the first of the largest)
+  double share = 0.0;                  // its belief
   std::size_t robot_cell = 0;          // where the robot's odometry says it is (index); not the filter's
 };
 
@@ -43,17 +46,20 @@ struct LocalizationSummary {
   std::optional<std::size_t> localized_at;  // the first update whose likeliest cell held localized_share
   std::vector<LocalizationUpdate> updates;  // the start's first
   int width = 0;                            // the maze's cells a row
-  // True when the last update's likeliest cell holds localized_share and is the robot's.
-  bool localized_now() const;
 };
+
+// The largest maze whose belief is printed at every cell and kept for the replay (as demo
+// localize prints it); a larger one prints and keeps the most likely cell alone.
+inline constexpr std::size_t kMaxKeptBeliefCells = 400;
 
 // Reads walls with `lidar`: the four sides' beams, chosen by `yaw_rad` (the robot's heading);
 // a side is a wall when its beam ends within `cell_size_m`. Throws common::InputError when the
 // lidar does not look all round (a side it cannot see).
 loc::Reading lidar_walls(const webots::Lidar &lidar, double yaw_rad, double cell_size_m);
 
-// The observer that runs the filter; prints each update to `out` (none: silent) as the belief
-// map, its numbers and the most likely cell.
+// The observer that runs the filter; prints each update to `out` (none: silent): the reading,
+// the belief map and its numbers (on mazes of at most kMaxKeptBeliefCells cells) and the most
+// likely cell.
 class LiveLocalization final : public RunObserver {
  public:
   LiveLocalization(const LocalizationOptions &options, std::ostream *out);

@@ -65,9 +65,9 @@ void add_localization_entries(Report &e, const RunSummary &s) {
   Json first = nullptr;
   if (l.localized_at) first = Json{{"move", l.updates[*l.localized_at].move}, {"step", l.updates[*l.localized_at].step}};
   e.both("localization", localization_verdict(l),
-         Json{{"localized", last.belief[last.likeliest] >= l.localized_share},
+         Json{{"localized", last.share >= l.localized_share},
               {"cell", last.likeliest + 1},
-              {"share", last.belief[last.likeliest]},
+              {"share", last.share},
               {"robot_cell", last.robot_cell + 1},
               {"first_localized", first},
               {"updates", l.updates.size()},
