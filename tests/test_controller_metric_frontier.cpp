@@ -63,10 +63,63 @@ TEST_CASE("metric frontier: the cells never observed beside one seen free") {
                       "..#   ",
                       "...   ",
                       "..#   "});
-  CHECK(rows_of(m.map, explore::frontier_cells(m.map)) == std::vector<std::string>{"FF----",
+  CHECK(rows_of(m.map, explore::frontier_cells(m.map, false)) == std::vector<std::string>{"FF----",
                                                                                    "------",
                                                                                    "---F--",
                                                                                    "------"});
+}
+
+TEST_CASE("metric frontier: with the lidar, no frontier behind a cell a beam has ended in, whatever its log-odds") {
+  // A wall's face crosses the middle row: grazing beams free its cells on balance, one beam
+  // ended in (2, 1). Behind it, the wall's inside (row 2) is never observed.
+  PictureMap m({"      ",
+                "......",
+                "......"});
+  sensing::MetricMarks hit(0.9, 0.1);
+  hit.mark(m.map, sensing::MetricCell{2, 1}, sensing::kMetricOccupied);
+  hit.apply(m.map);
+  sensing::MetricMarks grazing(0.9, 0.1);
+  grazing.mark(m.map, sensing::MetricCell{2, 1}, sensing::kMetricFree);
+  grazing.apply(m.map);
+  sensing::MetricMarks again(0.9, 0.1);
+  again.mark(m.map, sensing::MetricCell{2, 1}, sensing::kMetricFree);
+  again.apply(m.map);
+  REQUIRE(m.map.probability_at(m.at(2, 1)) < 0.5);
+  CHECK(m.map.marked_occupied_at(m.at(2, 1)));
+  CHECK(!m.map.marked_occupied_at(m.at(3, 1)));
+  // Any set-up: every cell of row 2 borders one seen free.
+  CHECK(rows_of(m.map, explore::frontier_cells(m.map, false)) == std::vector<std::string>{"FFFFFF", "------", "------"});
+  // The lidar: (2, 2) lies behind the cell the beam ended in.
+  CHECK(rows_of(m.map, explore::frontier_cells(m.map, true)) == std::vector<std::string>{"FF-FFF", "------", "------"});
+  // A touch marks a surface too.
+  m.map.observe_contact(m.at(4, 1));
+  CHECK(m.map.marked_occupied_at(m.at(4, 1)));
+}
+
+TEST_CASE("metric frontier: a group no cell of which the body could stand on is no target") {
+  // West: open unobserved ground. East: a gap of one cell between two obstacles' faces, beside
+  // cells seen occupied, so closed to the body (the planner's grown cells).
+  const PictureMap m({"   ..#   ",
+                      "   ..    ",
+                      "   ..#   "});
+  const std::vector<bool> frontier = explore::frontier_cells(m.map, false);
+  REQUIRE(frontier[m.at(2, 1)]);
+  REQUIRE(frontier[m.at(5, 1)]);
+  std::vector<bool> closed(m.map.size(), false);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 4; i < 7; ++i) closed[m.at(i, j)] = true;  // the 8 neighbours of (5, 0) and (5, 2)
+  }
+  const explore::FrontierGroups groups = explore::group_frontier(m.map, frontier, 1, &closed);
+  const auto open = static_cast<std::size_t>(groups.group_of[m.at(2, 1)]);
+  const auto gap = static_cast<std::size_t>(groups.group_of[m.at(5, 1)]);
+  CHECK(groups.worth_a_look(open));
+  CHECK(groups.no_room[gap]);
+  CHECK(!groups.worth_a_look(gap));
+  const explore::FrontierSetAside aside = explore::set_aside_of(groups);
+  CHECK(aside.no_room_groups == 1);
+  CHECK(aside.no_room_cells == groups.cells[gap]);
+  // Without the body's closed cells, no group lacks room.
+  CHECK(explore::group_frontier(m.map, frontier, 1).worth_a_look(gap));
 }
 
 TEST_CASE("metric frontier: the target is the nearest cell reached that sees a frontier cell") {
@@ -77,7 +130,7 @@ TEST_CASE("metric frontier: the target is the nearest cell reached that sees a f
                       "######"});
   const explore::FrontierVisits visits(m.map.size());
   const std::vector<std::int32_t> steps = m.steps_from(1, 1);
-  std::vector<bool> aims = explore::frontier_cells(m.map);
+  std::vector<bool> aims = explore::frontier_cells(m.map, false);
   REQUIRE(aims[m.at(5, 1)]);
   REQUIRE(aims[m.at(0, 3)] == false);  // beside no cell seen free
   const auto t = explore::frontier_target(m.map, 0.6, aims, 5, visits, steps);
@@ -143,7 +196,7 @@ TEST_CASE("metric frontier groups: a small group and an obstacle's inside seen t
                       ".       ..   # ",
                       ".       .#   # ",
                       ".       .##### "});
-  const std::vector<bool> frontier = explore::frontier_cells(m.map);
+  const std::vector<bool> frontier = explore::frontier_cells(m.map, false);
   const explore::FrontierGroups groups = explore::group_frontier(m.map, frontier, 3);
   REQUIRE(frontier[m.at(1, 2)]);
   REQUIRE(frontier[m.at(10, 2)]);
@@ -171,7 +224,7 @@ TEST_CASE("metric frontier: a farther target that looks at a larger group wins o
   // Row 0 free; a frontier cell north of (1, 0) and one north of (3, 0).
   const PictureMap m({"# ## #",
                       "......"});
-  const std::vector<bool> aims = explore::frontier_cells(m.map);
+  const std::vector<bool> aims = explore::frontier_cells(m.map, false);
   REQUIRE(aims[m.at(1, 1)]);
   REQUIRE(aims[m.at(4, 1)]);
   const explore::FrontierVisits visits(m.map.size());

@@ -82,7 +82,9 @@ void add_frontier(Report &e, const MetricRunSummary &s) {
                                {"small_groups", a.small_groups},
                                {"small_cells", a.small_cells},
                                {"enclosed_groups", a.enclosed_groups},
-                               {"enclosed_cells", a.enclosed_cells}});
+                               {"enclosed_cells", a.enclosed_cells},
+                               {"no_room_groups", a.no_room_groups},
+                               {"no_room_cells", a.no_room_cells}});
 }
 
 }  // namespace

@@ -18,6 +18,11 @@ bool seen_free(const sensing::MetricMap &map, std::size_t n) {
   return !map.unobserved_at(n) && map.probability_at(n) < 0.5;
 }
 
+// Seen free and never marked occupied: a beam may cross it into the cell beside it.
+bool seen_clear(const sensing::MetricMap &map, std::size_t n) {
+  return seen_free(map, n) && !map.marked_occupied_at(n);
+}
+
 // Cells within view_cells steps (over cells not seen occupied) of a frontier cell: their
 // steps (-1 beyond), and the frontier cell each is nearest.
 struct FrontierView {
@@ -79,14 +84,16 @@ MapProgress progress_of(const sensing::MetricMap &map, std::size_t free_for_plan
   return now;
 }
 
-std::vector<bool> frontier_cells(const sensing::MetricMap &map) {
+std::vector<bool> frontier_cells(const sensing::MetricMap &map, bool occupied_marks_are_echo_ends) {
   std::vector<bool> cells(map.size(), false);
   for (std::size_t n = 0; n < map.size(); ++n) {
     if (!map.unobserved_at(n)) continue;
     const MetricCell c = map.cell_of_index(n);
     for (const auto &d : kNeighbours) {
       const MetricCell nb{c.i + d.first, c.j + d.second};
-      if (map.contains(nb) && seen_free(map, map.index(nb))) cells[n] = true;
+      if (!map.contains(nb)) continue;
+      const std::size_t k = map.index(nb);
+      if (occupied_marks_are_echo_ends ? seen_clear(map, k) : seen_free(map, k)) cells[n] = true;
     }
   }
   return cells;

@@ -47,7 +47,11 @@ struct MapProgress {
 MapProgress progress_of(const sensing::MetricMap &map, std::size_t free_for_planning, const MapProgress &before);
 
 // Frontier cells: never observed, beside a cell seen free (p < 0.5), one flag a map cell.
-std::vector<bool> frontier_cells(const sensing::MetricMap &map);
+// occupied_marks_are_echo_ends (the lidar: a cell it marks occupied holds a beam's end): beside
+// a cell seen free that was never marked occupied (MetricMap::marked_occupied_at); a cell an
+// obstacle's face crosses is free on balance when more beams graze it than end in it, and no
+// beam crosses it into the cell behind the face.
+std::vector<bool> frontier_cells(const sensing::MetricMap &map, bool occupied_marks_are_echo_ends);
 
 // The visits aimed at each frontier cell, and the cells set aside (see above).
 class FrontierVisits {

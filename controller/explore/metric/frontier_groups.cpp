@@ -44,7 +44,8 @@ std::size_t label(const sensing::MetricMap &map, const std::vector<bool> &in, co
 
 }  // namespace
 
-FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<bool> &frontier, std::size_t min_cells) {
+FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<bool> &frontier, std::size_t min_cells,
+                              const std::vector<bool> *closed_to_body) {
   FrontierGroups g;
   const std::size_t groups = label(map, frontier, kEight, g.group_of);
   std::vector<bool> unobserved(map.size());
@@ -60,11 +61,13 @@ FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<b
   }
   g.small.assign(groups, false);
   g.enclosed.assign(groups, true);
+  g.no_room.assign(groups, closed_to_body != nullptr);
   for (std::size_t k = 0; k < groups; ++k) g.small[k] = g.cells[k] < min_cells;
   for (std::size_t n = 0; n < map.size(); ++n) {
     if (!frontier[n]) continue;
     const auto k = static_cast<std::size_t>(g.group_of[n]);
     if (region_frontier[static_cast<std::size_t>(region_of[n])] >= min_cells) g.enclosed[k] = false;
+    if (closed_to_body != nullptr && !(*closed_to_body)[n]) g.no_room[k] = false;
   }
   return g;
 }
@@ -98,6 +101,9 @@ FrontierSetAside set_aside_of(const FrontierGroups &groups) {
     } else if (groups.enclosed[k]) {
       ++a.enclosed_groups;
       a.enclosed_cells += groups.cells[k];
+    } else if (groups.no_room[k]) {
+      ++a.no_room_groups;
+      a.no_room_cells += groups.cells[k];
     }
   }
   return a;

@@ -21,8 +21,10 @@
 //              robot's centre has driven through) to the frontier's target
 //              (explore/metric/frontier.hpp: a cell within view_m of a frontier cell that
 //              sees it, the least path against the gain of its group; groups under
-//              min_frontier_m and enclosed ones are no targets, explore/metric/
-//              frontier_groups.hpp), drive the path, then turn a full turn there scanning. A
+//              min_frontier_m, enclosed ones and those none of whose cells the body could
+//              stand on are no targets, explore/metric/frontier_groups.hpp; with the lidar a
+//              frontier cell borders a cell no beam has ended in), drive the path, then turn
+//              a full turn there scanning. A
 //              frontier cell still unobserved after visits that aimed at it, or left without
 //              a target in a round where none had one, is set aside by itself, and tried again
 //              once the map has progressed. When no frontier cell has a target, a probe drives

@@ -94,6 +94,7 @@ MetricMap::MetricMap(const MetricGridSpec &spec, const mapping::SensorModel &mod
   grid_.cells_y = spec_.cells_y;
   grid_.log_odds.assign(static_cast<std::size_t>(spec_.cells_x) * static_cast<std::size_t>(spec_.cells_y),
                         model_.prior_log_odds());
+  marked_occupied_.assign(grid_.log_odds.size(), false);
 }
 
 std::optional<MetricCell> MetricMap::cell_at(mapping::Point p) const {
@@ -150,7 +151,10 @@ void MetricMap::observe_by_body(std::size_t flat) {
   set_log_odds(flat, model_.update_free(grid_.log_odds[flat]));
 }
 
-void MetricMap::observe_contact(std::size_t flat) { set_log_odds(flat, model_.update_occupied(grid_.log_odds[flat])); }
+void MetricMap::observe_contact(std::size_t flat) {
+  marked_occupied_[flat] = true;
+  set_log_odds(flat, model_.update_occupied(grid_.log_odds[flat]));
+}
 
 std::size_t MetricMarks::apply(MetricMap &map) {
   const mapping::SensorModel &model = map.model();
@@ -158,6 +162,7 @@ std::size_t MetricMarks::apply(MetricMap &map) {
   const std::vector<double> &values = map.log_grid().log_odds;
   for (const std::size_t flat : marked_) {
     map.set_log_odds(flat, mapping::apply(values[flat], increments[level_[flat]], model.options().clamp));
+    if (level_[flat] == kMetricOccupied) map.marked_occupied_[flat] = true;
     level_[flat] = kUnmarked;
   }
   const std::size_t count = marked_.size();

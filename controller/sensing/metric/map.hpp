@@ -117,6 +117,11 @@ class MetricMap {
   void observe_by_body(std::size_t flat);
   // The body touched something in this cell: one occupied update (l(p_occ) - l(prior)).
   void observe_contact(std::size_t flat);
+  // A scan's marks (MetricMarks::apply) or a touch (observe_contact) have marked this cell
+  // occupied at least once: a beam ended in it, a cone's arc or a contact lay on it. It holds
+  // a surface, whatever its log-odds say now (a cell the face of an obstacle crosses is hit by
+  // the beams that meet the face and crossed by those that graze it).
+  bool marked_occupied_at(std::size_t flat) const { return marked_occupied_[flat]; }
   // Cells whose first observation was the body's.
   std::size_t body_observed() const { return body_observed_; }
   // Updates (apply, observe_by_body, observe_contact) that left an observed cell exactly at
@@ -136,6 +141,7 @@ class MetricMap {
   const mapping::SensorModel &model_;
   mapping::GridGeometry geometry_;
   LogOddsGrid grid_;
+  std::vector<bool> marked_occupied_;
   std::size_t body_observed_ = 0;
   std::size_t back_to_prior_ = 0;
   // Sets a cell's log-odds, counting a return to l(prior).
