@@ -15,14 +15,14 @@
 
 namespace {
 
-const std::string kScripts = std::string(TEST_DATA_DIR) + "/mms/";
+const std::string kLegScripts = std::string(TEST_DATA_DIR) + "/mms/";
 
-struct Robot {
+struct LegRobot {
   std::string name;  // empty: mms's default (hambot)
   std::optional<double> cell_size_m;
 };
 
-app::MmsRun drive(const std::string &world, const Robot &robot, app::MmsWalls walls, std::vector<std::string> command) {
+app::MmsRun drive_mms(const std::string &world, const LegRobot &robot, app::MmsWalls walls, std::vector<std::string> command) {
   app::RunOptions options;
   options.world = world;
   options.world_overrides.cell_size_m = robot.cell_size_m;
@@ -36,15 +36,15 @@ app::MmsRun drive(const std::string &world, const Robot &robot, app::MmsWalls wa
   return app::run_mms_world(options, mms, out);
 }
 
-const std::string kOpenRoom = std::string(WORLDS_DIR) + "/open_room6x6.txt";
+const std::string kLegOpenRoom = std::string(WORLDS_DIR) + "/open_room6x6.txt";
 
 // Simulated seconds of `moveForward` with these counts from the start of the open room, less
 // those of a run that does not move; checks the five cells were driven without a crash.
-double forward_s(const Robot &robot, app::MmsWalls walls, std::vector<std::string> counts) {
-  std::vector<std::string> command{kScripts + "forward.sh"};
+double forward_leg_s(const LegRobot &robot, app::MmsWalls walls, std::vector<std::string> counts) {
+  std::vector<std::string> command{kLegScripts + "forward.sh"};
   command.insert(command.end(), counts.begin(), counts.end());
-  const app::MmsRun standing = drive(kOpenRoom, robot, walls, {kScripts + "forward.sh"});
-  const app::MmsRun run = drive(kOpenRoom, robot, walls, command);
+  const app::MmsRun standing = drive_mms(kLegOpenRoom, robot, walls, {kLegScripts + "forward.sh"});
+  const app::MmsRun run = drive_mms(kLegOpenRoom, robot, walls, command);
   INFO(run.mms.message);
   CHECK(run.mms.end == app::MmsEnd::exited);
   CHECK(run.summary.moves == 5);
@@ -53,10 +53,10 @@ double forward_s(const Robot &robot, app::MmsWalls walls, std::vector<std::strin
   return run.summary.sim_time_s - standing.summary.sim_time_s;
 }
 
-void check_sensed_leg_as_truth(const Robot &robot) {
-  const double truth_s = forward_s(robot, app::MmsWalls::truth, {"5"});
-  const double sensed_s = forward_s(robot, app::MmsWalls::sensed, {"5"});
-  const double five_moves_s = forward_s(robot, app::MmsWalls::sensed, {"1", "1", "1", "1", "1"});
+void check_sensed_leg_as_truth(const LegRobot &robot) {
+  const double truth_s = forward_leg_s(robot, app::MmsWalls::truth, {"5"});
+  const double sensed_s = forward_leg_s(robot, app::MmsWalls::sensed, {"5"});
+  const double five_moves_s = forward_leg_s(robot, app::MmsWalls::sensed, {"1", "1", "1", "1", "1"});
   CAPTURE(truth_s);
   CAPTURE(sensed_s);
   CAPTURE(five_moves_s);
@@ -73,11 +73,11 @@ TEST_CASE("mms: moveForward 5 over cells the lidar sees open ramps once with sen
 
 TEST_CASE("mms: moveForward 5 towards a wall three cells on stops before it, crash, in one leg in both wall modes") {
   const std::string world = std::string(TEST_DATA_DIR) + "/worlds/wall_ahead6x6.txt";
-  const Robot hambot{"", std::nullopt};
-  const app::MmsRun standing = drive(world, hambot, app::MmsWalls::truth, {kScripts + "forward.sh"});
+  const LegRobot hambot{"", std::nullopt};
+  const app::MmsRun standing = drive_mms(world, hambot, app::MmsWalls::truth, {kLegScripts + "forward.sh"});
   std::vector<double> leg_s;
   for (const app::MmsWalls walls : {app::MmsWalls::truth, app::MmsWalls::sensed}) {
-    const app::MmsRun run = drive(world, hambot, walls, {kScripts + "wall_ahead.sh"});
+    const app::MmsRun run = drive_mms(world, hambot, walls, {kLegScripts + "wall_ahead.sh"});
     INFO(run.mms.message);
     CHECK(run.mms.end == app::MmsEnd::exited);  // every answer as expected (crash, wall, 5)
     CHECK(run.summary.moves == 3);
@@ -93,10 +93,10 @@ TEST_CASE("mms: moveForward 5 towards a wall three cells on stops before it, cra
 TEST_CASE("mms: a straight past the lidar's reach is driven in legs as far as it sees, the five cells all the same") {
   // The micromouse's lidar reaches 1 m: from a cell's centre, in 0.5 m cells, the sides of two
   // cells on (0.25 and 0.75 m away, with the quarter-cell margin), not the third's.
-  const Robot short_sight{"micromouse", 0.5};
-  const double truth_s = forward_s(short_sight, app::MmsWalls::truth, {"5"});
-  const double sensed_s = forward_s(short_sight, app::MmsWalls::sensed, {"5"});
-  const double five_moves_s = forward_s(short_sight, app::MmsWalls::sensed, {"1", "1", "1", "1", "1"});
+  const LegRobot short_sight{"micromouse", 0.5};
+  const double truth_s = forward_leg_s(short_sight, app::MmsWalls::truth, {"5"});
+  const double sensed_s = forward_leg_s(short_sight, app::MmsWalls::sensed, {"5"});
+  const double five_moves_s = forward_leg_s(short_sight, app::MmsWalls::sensed, {"1", "1", "1", "1", "1"});
   CAPTURE(truth_s);
   CAPTURE(sensed_s);
   CAPTURE(five_moves_s);
