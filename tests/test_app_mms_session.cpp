@@ -419,7 +419,7 @@ namespace {
 // Five cells north from the start of open_room6x6 with `robot` (empty: mms's default), as one
 // moveForward 5 and as five moveForward: each a ramped leg with the robot's speed profile.
 // --walls truth knows every side ahead open, so the five cells are one leg; in --walls sensed
-// a side the grid does not know yet ends the leg: never slower than cell by cell.
+// the leg reaches as far as the robot knows: never slower than cell by cell.
 void check_one_leg_beats_five_moves(const std::string &robot, std::optional<double> cell_size_m) {
   const auto drive = [&](std::vector<std::string> counts, app::MmsWalls walls) {
     app::RunOptions options;

@@ -402,3 +402,33 @@ TEST_CASE("cell model: readings split evenly between wall and opening leave the 
   ranges[268] = ranges[272];
   CHECK(east() == mapping::SideState::open);     // two near of five: the median is far
 }
+
+TEST_CASE("cell model: the beams down a straight read the sides ahead, a wall where they stop, none past reach") {
+  // A corridor one cell wide and six long, a wall across it on the north side of (0,3); the
+  // robot at the centre of (0,0) facing north.
+  const testing_world::TextMaze corridor(
+      "o---o\n|   |\no   o\n|   |\no---o\n|   |\no   o\n|   |\no   o\n|   |\no   o\n|   |\no---o");
+  const auto boxes = testing_world::wall_boxes(corridor, 1.0, 0.012);
+  const mapping::Point origin{0.5, 0.5};
+  const OccupancyGrid grid(geometry(3, 1, 6), 0.0f);
+  const ModelOptions options;
+  const auto north_of = [&](const sensing::LidarScan &scan, int y) {
+    return sensing::read_side_ahead(options, grid, scan, Cell{0, y}, mapping::Heading::north);
+  };
+  const std::vector<float> far = testing_world::range_image(boxes, origin, kPi / 2, 360, 2 * kPi, 0.05, 12.0);
+  const sensing::LidarScan far_scan = testing_world::hambot_scan(origin, kPi / 2, far);
+  for (const int y : {0, 1, 2}) CHECK(north_of(far_scan, y) == mapping::SideState::open);
+  CHECK(north_of(far_scan, 3) == mapping::SideState::wall);
+  CHECK(north_of(far_scan, 4) == mapping::SideState::wall);  // behind the wall: the beams stop short of it
+
+  // A lidar reaching 2 m sees the sides 0.5 and 1.5 m on (with the quarter-cell margin), not 2.5 m.
+  const std::vector<float> near = testing_world::range_image(boxes, origin, kPi / 2, 360, 2 * kPi, 0.05, 2.0);
+  sensing::LidarScan near_scan = testing_world::hambot_scan(origin, kPi / 2, near);
+  near_scan.max_range_m = 2.0;
+  CHECK(north_of(near_scan, 0) == mapping::SideState::open);
+  CHECK(north_of(near_scan, 1) == mapping::SideState::open);
+  CHECK(north_of(near_scan, 2) == mapping::SideState::unknown);
+  // The robot's own side reads as before: no return there is an opening.
+  CHECK(sensing::read_cell_side(options, grid, near_scan, Cell{0, 0}, mapping::Heading::north) ==
+        mapping::SideState::open);
+}

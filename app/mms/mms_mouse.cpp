@@ -123,14 +123,13 @@ MmsOutcome MmsMouse::turn(Heading h) {
 
 // How many cells from the robot's on along its heading, at most `most`, can be driven in one
 // leg: the side ahead of its own cell has been checked open; each further one must be known
-// open already (the truth, or the map in --walls sensed), as a leg does not stop to look.
+// open already, as a leg does not stop to look: the truth, or in --walls sensed what the
+// robot knows (its grid, and its last scan down the straight: CommandController::open_ahead).
 int MmsMouse::straight_known_open(int most) const {
+  if (options_.walls == MmsWalls::sensed) return std::max(1, controller_.open_ahead(heading_, most));
   int cells = 1;
   Cell c = mapping::neighbour(controller_.cell(), heading_);
-  while (cells < most) {
-    const bool open = options_.walls == MmsWalls::truth ? !truth_.has_wall(maze::Cell{c.x, c.y}, to_side(heading_))
-                                                         : controller_.side(c, heading_) == SideState::open;
-    if (!open) break;
+  while (cells < most && !truth_.has_wall(maze::Cell{c.x, c.y}, to_side(heading_))) {
     ++cells;
     c = mapping::neighbour(c, heading_);
   }

@@ -11,8 +11,9 @@
 //                   at a corner post)
 //   moveForward N   crash when N < 1, N > kMaxMoveCells or a wall is right ahead (nothing
 //                   moves, nothing counted); else the robot drives the straight in legs
-//                   over the cells known open (each leg accelerating and decelerating once,
-//                   with the robot's speed profile), looking at each side not known before
+//                   over the cells known open (the truth; sensed: its grid and its last
+//                   scan down the straight), each leg accelerating and decelerating once
+//                   with the robot's speed profile, looking at each side not known before
 //                   crossing it, and stops before a wall on the way (crash), else ack
 //   turns           the robot turns in place; ack
 //   wasReset        false (there is no reset button); ackReset drives the robot back to the

@@ -31,6 +31,19 @@ Cell CommandController::cell() const { return body_->cell; }
 
 SideState CommandController::side(Cell c, Heading h) const { return body_->walls(c, h); }
 
+int CommandController::open_ahead(Heading h, int most) const {
+  const CellRobot &b = *body_;
+  int cells = 0;
+  for (Cell c = b.cell; cells < most && b.grid.contains(mapping::neighbour(c, h)); c = mapping::neighbour(c, h)) {
+    const SideState held = b.walls(c, h);
+    const SideState seen = b.senses.sees_side_ahead(b.cell, c, h);
+    const bool open = (held == SideState::open || seen == SideState::open) && held != SideState::wall && seen != SideState::wall;
+    if (!open) break;
+    ++cells;
+  }
+  return cells;
+}
+
 Motion CommandController::look(Heading h, SideState &state) {
   CellRobot &b = *body_;
   state = b.walls(b.cell, h);

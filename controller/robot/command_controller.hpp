@@ -40,6 +40,12 @@ class CommandController {
   mapping::Cell cell() const;
   // The side's state as the grid holds it now (no looking).
   mapping::SideState side(mapping::Cell c, mapping::Heading h) const;
+  // How many cells along h, at most `most`, the robot knows it can drive without stopping:
+  // the sides from its own cell's on, each held open by the grid or seen clear by its last
+  // lidar scan when that was taken in this cell (the beams down the straight: Senses::
+  // sees_side_ahead), and called a wall by neither; the first other side, or the grid's
+  // edge, ends them. No looking: 0 when its own side is not known open.
+  int open_ahead(mapping::Heading h, int most) const;
   // Side h of the robot's cell as its sensors tell it: a side the grid does not know yet is
   // looked at first (face it, scan again up to max_rescans times at rest); `state` is
   // unknown only when it stayed unknown. The robot may be left facing h.

@@ -59,6 +59,13 @@ mapping::SideState Senses::reads_side(Cell c, mapping::Heading h) const {
   return sensing::read_range_side(grid_, range_readings_, c, h);
 }
 
+mapping::SideState Senses::sees_side_ahead(Cell from, Cell c, mapping::Heading h) const {
+  if (!setup_.reads_lidar() || previous_scan_.ranges.empty() || previous_scan_cell_ != from) {
+    return mapping::SideState::unknown;
+  }
+  return sensing::read_side_ahead(options_.model, grid_, previous_scan_, c, h);
+}
+
 Point Senses::position(Cell c) const { return drive_.gps().value_or(grid_.centre_of(c)); }
 
 Point Senses::mounted(Point centre, double angle_rad, double offset_m) const {
@@ -79,6 +86,7 @@ void Senses::scan_lidar(sensing::LidarMark mark, Cell c, std::int64_t step) {
   previous_scan_ = s;
   previous_scan_.ranges = previous_ranges_;
   previous_scan_step_ = step;
+  previous_scan_cell_ = c;
 }
 
 void Senses::scan_ranges(sensing::RangeMark mark, Cell c) {

@@ -44,6 +44,10 @@ class Senses {
   // lidar scan (sensing::read_cell_side), or of range readings (sensing::read_range_side);
   // unknown before the first scan and for bumpers.
   mapping::SideState reads_side(mapping::Cell c, mapping::Heading h) const;
+  // What the last lidar scan, when it was taken in cell `from`, sees of side h of cell c
+  // further along h (sensing::read_side_ahead: a side past the lidar's reach is unknown);
+  // unknown without such a scan, and for set-ups without a lidar.
+  mapping::SideState sees_side_ahead(mapping::Cell from, mapping::Cell c, mapping::Heading h) const;
 
   // Bumpers: the readings now, marked (not applied); true when one is pressed.
   bool gather_bumps(mapping::Cell c);
@@ -76,6 +80,7 @@ class Senses {
   sensing::LidarScan previous_scan_;
   std::vector<float> previous_ranges_;
   std::int64_t previous_scan_step_ = 0;
+  mapping::Cell previous_scan_cell_{};
 };
 
 }  // namespace robot

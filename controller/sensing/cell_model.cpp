@@ -1,6 +1,7 @@
 #include "sensing/cell_model.hpp"
 
 #include <cassert>
+#include <limits>
 #include <numbers>
 
 namespace sensing {
@@ -50,10 +51,10 @@ void mark_cell_side(const OccupancyGrid &grid, Cell c, Heading h, bool wall, Sca
   }
 }
 
-}  // namespace
-
-SideState read_cell_side(const ModelOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
-                         Cell c, Heading h) {
+// The side's reading by the medians along h; no return counts as open when reach_m (the
+// lidar's reach, infinite for the robot's own cell) passes the side plus the margin.
+SideState read_side(const ModelOptions &options, const OccupancyGrid &grid, const LidarScan &scan, Cell c, Heading h,
+                    double reach_m) {
   const auto beam = scan.beam_towards(yaw_rad(h));
   if (!beam) return SideState::unknown;
   const auto medians = scan.medians(*beam, kCellModelHalfWindow_rad);
@@ -63,7 +64,22 @@ SideState read_cell_side(const ModelOptions &options, const OccupancyGrid &grid,
   // An even split (two short returns, two long: a pair of spikes beside a dropped beam)
   // says nothing either way: the side stays unknown, and the robot looks again.
   if (wall(medians->lower) != wall(medians->upper)) return SideState::unknown;
-  return wall(medians->lower) ? SideState::wall : SideState::open;
+  if (wall(medians->lower)) return SideState::wall;
+  const auto beyond_reach = [&](float range) { return scan.kind_of(range) != ReadingKind::hit && reach_m < limit_m; };
+  if (beyond_reach(medians->lower) || beyond_reach(medians->upper)) return SideState::unknown;
+  return SideState::open;
+}
+
+}  // namespace
+
+SideState read_cell_side(const ModelOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
+                         Cell c, Heading h) {
+  return read_side(options, grid, scan, c, h, std::numeric_limits<double>::infinity());
+}
+
+SideState read_side_ahead(const ModelOptions &options, const OccupancyGrid &grid, const LidarScan &scan,
+                          Cell c, Heading h) {
+  return read_side(options, grid, scan, c, h, scan.max_range_m);
 }
 
 void mark_cell_model(const ModelOptions &options, const OccupancyGrid &grid,

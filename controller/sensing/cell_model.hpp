@@ -33,4 +33,12 @@ void mark_cell_model(const ModelOptions &options, const mapping::OccupancyGrid &
 mapping::SideState read_cell_side(const ModelOptions &options, const mapping::OccupancyGrid &grid,
                                   const LidarScan &scan, mapping::Cell c, mapping::Heading h);
 
+// What a scan says of side h of cell c seen from afar, down the beams along h (c further
+// along h from the scan's origin, or the origin's own cell): the same medians and rule as
+// read_cell_side, except that no return says open only when the lidar reaches past the side
+// plus wall_margin cells (a side beyond its reach is unknown). A robot reads the sides ahead
+// of it this way before driving a straight without stopping.
+mapping::SideState read_side_ahead(const ModelOptions &options, const mapping::OccupancyGrid &grid,
+                                   const LidarScan &scan, mapping::Cell c, mapping::Heading h);
+
 }  // namespace sensing
