@@ -183,15 +183,18 @@ app::Figure truth_legend(const maze::World &world, const maze::Arena &shown, con
 }  // namespace
 
 std::string world_truth_png(const maze::World &world, const std::vector<PoseTrace::Visit> &visits, double body_radius_m) {
-  const maze::Arena a = shown_part(world.geometry(), visits);
+  maze::Arena a = shown_part(world.geometry(), visits);
   const double cell_m = std::max(a.width_m(), a.height_m()) / kTruthPictureCells;
   app::PlainGrid grid;
   grid.cells_x = maze::cells_along(a.width_m(), cell_m);
   grid.cells_y = maze::cells_along(a.height_m(), cell_m);
+  // Square cells (a picture's cells are whole pixels, the same across and down): the shorter
+  // side a whole number of them.
+  a.x_max_m = a.x_min_m + grid.cells_x * cell_m;
+  a.y_max_m = a.y_min_m + grid.cells_y * cell_m;
   grid.x0_m = a.x_min_m;
   grid.y0_m = a.y_min_m;
-  grid.cell_w_m = a.width_m() / grid.cells_x;
-  grid.cell_h_m = a.height_m() / grid.cells_y;
+  grid.cell_w_m = grid.cell_h_m = cell_m;
   grid.axes_in_metres = true;
   grid.solid_boundary = walled_boundary(a);
   const maze::TruthRaster truth = maze::rasterise_truth(a, grid.cells_x, grid.cells_y, 0.0);
