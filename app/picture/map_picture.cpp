@@ -63,8 +63,9 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
   const double goal_line = std::max(1.0, cell_px / 14);
   for (const mapping::Cell goal : marks.goals) {
     const PointPx c = cell_centre_at(g, origin, goal);
-    const double side = std::max(cell_px - 2 * (cell_px / 8 + goal_line / 2), least_mark_px);
-    page.stroke_rect({c.x - side / 2, c.y - side / 2, side, side}, goal_line, kGoalColour);
+    const double inset = cell_px / 8 + goal_line / 2;
+    page.stroke_rect({c.x - cell_px / 2 + inset, c.y - cell_px / 2 + inset, cell_px - 2 * inset, cell_px - 2 * inset},
+                     goal_line, kGoalColour);
   }
   if (!marks.planned.empty()) {
     std::vector<PointPx> points;

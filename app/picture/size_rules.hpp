@@ -11,7 +11,9 @@
 //           its side) and a landmark (a disc: its diameter) at least min_mark_px(font), that
 //           is kMarkOfFont of the page's font: at least 8.4 px and a 67th of the page's
 //           height. A mark whose size in the world is larger is drawn at that size (a maze
-//           cell's third for the start, a landmark's radius, the robot's body in a replay).
+//           cell's third for the start, a landmark's radius, the robot's body in a replay). A
+//           maze's goal is a cell, not a point: its frame stays inside its cell, whatever the
+//           page (a larger one would frame the cells beside it).
 //   crop    a picture in metres of a world whose floor has no walls at its edge (the course's
 //           empty 17 x 17 m floor) shows the box round the world's solids, landmarks, start,
 //           goals and the robot's path, grown by crop_margin_m on each side and kept inside

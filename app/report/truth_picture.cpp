@@ -134,9 +134,9 @@ void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const
   draw_landmarks(page, l, m, least_mark_px);  // first: the goals and the start are drawn over them
   const double line = std::max(1.0, l.cell_px / 14);
   for (const maze::Cell goal : m.goals()) {
-    const double side = std::max(l.cell_px - 2 * (l.cell_px / 8 + line / 2), least_mark_px);
-    const double inset = (l.cell_px - side) / 2;
-    page.stroke_rect({l.left(goal) + inset, l.top(goal) + inset, side, side}, line, kGoalColour);
+    const double inset = l.cell_px / 8 + line / 2;
+    page.stroke_rect({l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset}, line,
+                     kGoalColour);
   }
   const double side = std::max({2.0, l.cell_px / 3, least_mark_px});
   const maze::Cell start = m.start();
