@@ -1,8 +1,8 @@
 #include "metres_files.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -183,20 +183,21 @@ app::Figure truth_legend(const maze::World &world, const maze::Arena &shown, con
 }  // namespace
 
 std::string world_truth_png(const maze::World &world, const std::vector<PoseTrace::Visit> &visits, double body_radius_m) {
-  maze::Arena a = shown_part(world.geometry(), visits);
-  const double cell_m = std::max(a.width_m(), a.height_m()) / kTruthPictureCells;
+  const maze::Arena shown = shown_part(world.geometry(), visits);
+  const double cell_m = std::max(shown.width_m(), shown.height_m()) / kTruthPictureCells;
   app::PlainGrid grid;
-  grid.cells_x = maze::cells_along(a.width_m(), cell_m);
-  grid.cells_y = maze::cells_along(a.height_m(), cell_m);
   // Square cells (a picture's cells are whole pixels, the same across and down): the shorter
-  // side a whole number of them.
+  // side covered by a whole number of them, past the shown part by less than one.
+  grid.cells_x = std::max(1, static_cast<int>(std::ceil(shown.width_m() / cell_m - 1e-9)));
+  grid.cells_y = std::max(1, static_cast<int>(std::ceil(shown.height_m() / cell_m - 1e-9)));
+  maze::Arena a = shown;
   a.x_max_m = a.x_min_m + grid.cells_x * cell_m;
   a.y_max_m = a.y_min_m + grid.cells_y * cell_m;
   grid.x0_m = a.x_min_m;
   grid.y0_m = a.y_min_m;
   grid.cell_w_m = grid.cell_h_m = cell_m;
   grid.axes_in_metres = true;
-  grid.solid_boundary = walled_boundary(a);
+  grid.solid_boundary = walled_boundary(shown);
   const maze::TruthRaster truth = maze::rasterise_truth(a, grid.cells_x, grid.cells_y, 0.0);
   grid.tones.resize(truth.occupied.size());
   for (std::size_t i = 0; i < grid.tones.size(); ++i) grid.tones[i] = truth.occupied[i] != 0 ? app::kInk : app::kWhite;
