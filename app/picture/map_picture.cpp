@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "app/picture/size_rules.hpp"
 #include "mapping/walls.hpp"
 
 namespace app {
@@ -46,10 +47,10 @@ PointPx subcell_centre_px(const mapping::GridGeometry &g, PointPx origin, mappin
   return {origin.x + (s.x + 0.5) * scale, origin.y + (g.height_subcells() - 1 - s.y + 0.5) * scale};
 }
 
-// The marks at least `min_mark_px` (a fraction of the font) across, so that a big map's
-// robot and start stay visible when the picture is scaled to a screen.
+// The marks at least `least_mark_px` (size_rules.hpp's min_mark_px) across, so that a big
+// map's robot and start stay visible when the picture is scaled to a screen.
 void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, const MapMarks &marks,
-                double min_mark_px) {
+                double least_mark_px) {
   const int scale = map_scale(g);
   const double cell_px = g.subcells * scale;
   // Landmarks first: the other marks are drawn over them.
@@ -57,7 +58,7 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
   for (const LandmarkMark &l : marks.landmarks) {
     const PointPx at{origin.x + (l.at.x_m - g.origin.x_m) * px_per_m,
                      origin.y + (g.height_cells * g.cell_size_m - (l.at.y_m - g.origin.y_m)) * px_per_m};
-    draw_landmark(page, l, at, px_per_m);
+    draw_landmark(page, l, at, px_per_m, least_mark_px);
   }
   const double goal_line = std::max(1.0, cell_px / 14);
   for (const mapping::Cell goal : marks.goals) {
@@ -70,7 +71,7 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
     std::vector<PointPx> points;
     for (const mapping::SubCell s : marks.planned) points.push_back(subcell_centre_px(g, origin, s));
     page.polyline(points, std::max(1.5, scale / 2.0), kPlannedColour);
-    const double r = std::max({3.0, cell_px / 7, min_mark_px / 2});
+    const double r = std::max({3.0, cell_px / 7, least_mark_px / 2});
     page.ringed_disc(points.back(), r, kWhite, std::max(1.5, r / 3), kPlannedColour);
     page.ringed_disc(points.front(), r, kPlannedColour, std::max(1.0, r / 5), kWhite);
   }
@@ -78,9 +79,9 @@ void draw_marks(Drawing &page, const mapping::GridGeometry &g, PointPx origin, c
   const auto path_point = [&](std::size_t i) { return cell_centre_at(g, origin, marks.path[i]); };
   page.polyline(marks.path.size(), path_point, std::max(1.5, cell_px / 9), kPathColour);
   const PointPx start = path_point(0);
-  const double side = std::max({2.0, cell_px / 3, min_mark_px});
+  const double side = std::max({2.0, cell_px / 3, least_mark_px});
   page.fill_rect({start.x - side / 2, start.y - side / 2, side, side}, kStartColour);
-  const double r = std::max({2.0, cell_px / 7, min_mark_px / 2});
+  const double r = std::max({2.0, cell_px / 7, least_mark_px / 2});
   page.ringed_disc(path_point(marks.path.size() - 1), r, kEndColour, std::max(1.0, r / 5), kWhite);
 }
 
@@ -108,8 +109,9 @@ std::string signed_2(double v) { return std::abs(v) < 0.005 ? "0" : fmt::format(
 
 Rgb landmark_fill(const LandmarkMark &landmark) { return landmark.colour.value_or(kLandmarkNeutralTone); }
 
-void draw_landmark(Drawing &page, const LandmarkMark &landmark, PointPx at, double px_per_m) {
-  page.ringed_disc(at, std::max(2.0, landmark.radius_m * px_per_m), landmark_fill(landmark), 1.0, Rgb{0, 0, 0});
+void draw_landmark(Drawing &page, const LandmarkMark &landmark, PointPx at, double px_per_m, double least_mark_px) {
+  const double r = std::max({2.0, landmark.radius_m * px_per_m, least_mark_px / 2});
+  page.ringed_disc(at, r, landmark_fill(landmark), std::max(1.0, r / 8), Rgb{0, 0, 0});
 }
 
 std::vector<LegendItem> landmark_items(const std::vector<LandmarkMark> &landmarks) {
@@ -202,7 +204,7 @@ Drawing map_picture(const mapping::OccupancyGrid &grid, const MapTones &tones, c
   const PointPx origin = inside_margin(g, layout.map_origin);
   drawing.blocks([&](int x, int row) { return tone(grid.at(mapping::SubCell{x, h - 1 - row}), tones); },
                  g.width_subcells(), h, origin, scale, scale);
-  draw_marks(drawing, g, origin, marks, 0.6 * layout.font_px);
+  draw_marks(drawing, g, origin, marks, min_mark_px(layout.font_px));
   draw_figure(drawing, fig, layout);
   return drawing;
 }

@@ -70,9 +70,9 @@ struct LandmarkMark {
 inline constexpr Rgb kLandmarkNeutralTone{128, 128, 128};
 // The fill a landmark is drawn in: its colour, else kLandmarkNeutralTone.
 Rgb landmark_fill(const LandmarkMark &landmark);
-// Draws a landmark as a disc of its fill, its radius at `px_per_m` (2 px at least), ringed in
-// black, centred at `at`.
-void draw_landmark(Drawing &page, const LandmarkMark &landmark, PointPx at, double px_per_m);
+// Draws a landmark as a disc of its fill, its radius at `px_per_m` and its diameter at least
+// `least_mark_px` (app/picture/size_rules.hpp), ringed in black, centred at `at`.
+void draw_landmark(Drawing &page, const LandmarkMark &landmark, PointPx at, double px_per_m, double least_mark_px);
 // The legend's words for these landmarks: "landmark (its colour)" when one has a colour,
 // "landmark, colour not given" (a neutral disc) when one has none; nothing for none.
 std::vector<LegendItem> landmark_items(const std::vector<LandmarkMark> &landmarks);

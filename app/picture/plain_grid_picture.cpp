@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "app/picture/size_rules.hpp"
+
 namespace app {
 namespace {
 
@@ -96,6 +98,7 @@ PlainGridFrame plain_grid_frame(const PlainGrid &g, const Figure &legend) {
   frame.cell_w_m = g.cell_w_m;
   frame.cell_h_m = g.cell_h_m;
   frame.cells_y = g.cells_y;
+  frame.least_mark_px = min_mark_px(layout_figure(with_grid(g, legend)).font_px);
   return frame;
 }
 
@@ -106,6 +109,7 @@ Drawing plain_grid_picture(const PlainGrid &g, Figure legend, const PlainGridOve
   PlainGridFrame frame = plain_grid_frame(g, fig);
   const int band = boundary_band_px(g);
   frame.origin = {layout.map_origin.x + band, layout.map_origin.y + band};
+  frame.least_mark_px = min_mark_px(layout.font_px);
   Drawing page(layout.width, layout.height, format);
   std::vector<Rgb> top_first;
   top_first.reserve(g.tones.size());

@@ -71,6 +71,7 @@ struct PlainGridFrame {
   double cell_w_m = 1.0;
   double cell_h_m = 1.0;
   int cells_y = 0;
+  double least_mark_px = 8.4;  // a mark's least size on this page (app/picture/size_rules.hpp)
   PointPx at(double x_m, double y_m) const;
 };
 

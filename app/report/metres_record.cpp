@@ -1,6 +1,8 @@
 #include "app/report/metres_record.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -19,7 +21,12 @@ namespace {
 MetricPictureMarks picture_marks(const RunOptions &options, const MetresRunStart &start) {
   MetricPictureMarks marks;
   marks.start = start.strategy.start;
-  marks.goal = start.strategy.goal;
+  // The world's goal points, and the run's own goal (--goal, or the one the wavefront plans to)
+  // where it is not one of them.
+  for (const maze::ArenaPoint &g : start.arena.goals) marks.goals.push_back({g.x_m, g.y_m});
+  const std::optional<mapping::Point> own = start.strategy.goal;
+  const auto same = [&own](const mapping::Point &g) { return g.x_m == own->x_m && g.y_m == own->y_m; };
+  if (own && std::none_of(marks.goals.begin(), marks.goals.end(), same)) marks.goals.push_back(*own);
   marks.boundary = PlainGridBounds{start.arena.x_min_m, start.arena.x_max_m, start.arena.y_min_m, start.arena.y_max_m};
   marks.landmarks = landmark_marks(start.arena);
   marks.caption = fmt::format("room {}, {}, --model {}", std::filesystem::path(options.world).filename().string(),
@@ -111,7 +118,7 @@ void MetresRecord::write(OutputDir &out, const MetresRunEnd &end) {
   replay_.fill(page, c.map().geometry());
   page.title = world_;
   page.caption = marks_.caption;
-  if (marks_.goal) page.goals.push_back(*marks_.goal);
+  page.goals = marks_.goals;
   page.goal_side_m = 4.0 * body_radius_m_;
   page.body_radius_m = body_radius_m_;
   page.landmarks = marks_.landmarks;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/picture/size_rules.hpp"
 #include "app/report/replay_page.hpp"
 #include "common/fixed_decimal.hpp"
 #include "mapping/walls.hpp"
@@ -249,11 +250,13 @@ std::string replay_data_json(const ReplayInput &input, int merged) {
   std::string out = fmt::format(
       "{{\"version\":2,\"units\":\"{}\",\"title\":{},\"caption\":{},\"frame_note\":{},\"width\":{},\"height\":{},"
       "\"k\":{},\"cell_size_m\":{},\"origin\":[{},{}],\"initial\":{},\"occupied_increment\":{:.4f},"
-      "\"free_increment\":{:.4f},\"steps\":{},\"reachable\":{},\"body_mm\":{},\"goal_mm\":{},",
+      "\"free_increment\":{:.4f},\"steps\":{},\"reachable\":{},\"body_mm\":{},\"goal_mm\":{},"
+      "\"mark_rule\":[{},{},{}],",
       input.units == ReplayUnits::cells ? "cells" : "metres", quoted(input.title), quoted(input.caption),
       quoted(frame_note(input, merged)), g.width_cells, g.height_cells, g.subcells, g.cell_size_m, g.origin.x_m,
       g.origin.y_m, replay_value(input.initial_log_odds, t), t.occupied_increment, t.free_increment, input.steps,
-      input.reachable_cells, milli(input.body_radius_m), milli(input.goal_side_m));
+      input.reachable_cells, milli(input.body_radius_m), milli(input.goal_side_m), kMarkOfFont, kLeastFontPx,
+      kFontShareOfHeight);
   // About 12 bytes a change and 24 a pose: reserved, so that the data is not copied as it grows.
   out.reserve(out.size() + 12 * input.changes.size() + 24 * input.path.size() + 4096);
   append_marks(out, input);

@@ -20,7 +20,10 @@
 // boundary ("boundary_mm": x_min, y_min, x_max, y_max in mm, or [] for none: outside it the
 // page draws wall, a band a map cell wide round it and any grid cells past it, in the room
 // pictures' wall colour; the view holds the band and every landmark whole), and the
-// frames: each the last pose it shows, its step, its simulated time in ms (-1 when not
+// marks' size rule ("mark_rule": kMarkOfFont, kLeastFontPx, kFontShareOfHeight of
+// app/picture/size_rules.hpp: the start, the robot, the goals and the landmarks at least
+// mark_rule[0] x max(mark_rule[1], the view's height / mark_rule[2]) screen pixels at any
+// zoom), and the frames: each the last pose it shows, its step, its simulated time in ms (-1 when not
 // known), its belief when the run localized ("belief": a list a frame of each cell's belief
 // in thousandths, north-west first, row by row; null without --localize) and the sub-cells that changed since the previous frame, as pairs (gap, value) in
 // ascending flat-index order (OccupancyGrid::index; the first gap is the index itself), the

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "app/picture/map_picture.hpp"
+#include "app/picture/size_rules.hpp"
 
 namespace app {
 namespace {
@@ -27,12 +28,12 @@ struct TruthLayout {
 };
 
 // Each landmark a disc of its colour and the course's radius, ringed in black.
-void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m) {
+void draw_landmarks(Drawing &page, const TruthLayout &l, const maze::Maze &m, double least_mark_px) {
   const double px_per_m = l.cell_px / m.cell_size_m();
   for (const LandmarkMark &mark : landmark_marks(m)) {
     const PointPx at{l.origin.x + l.side_px + (mark.at.x_m - m.origin_x_m()) * px_per_m,
                      l.origin.y + l.side_px + (m.height() * m.cell_size_m() - (mark.at.y_m - m.origin_y_m())) * px_per_m};
-    draw_landmark(page, mark, at, px_per_m);
+    draw_landmark(page, mark, at, px_per_m, least_mark_px);
   }
 }
 
@@ -122,7 +123,7 @@ Drawing::RectsInRows sides_judged(const TruthLayout &l, const TruthInput &in, co
 }
 
 void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const std::vector<bool> &reachable,
-                double min_mark_px) {
+                double least_mark_px) {
   const maze::Maze &m = *in.truth;
   const auto cell_tone = [&](int x, int row) {
     const std::size_t i = flat(m, maze::Cell{x, m.height() - 1 - row});
@@ -130,14 +131,14 @@ void draw_cells(Drawing &page, const TruthLayout &l, const TruthInput &in, const
   };
   page.blocks(cell_tone, m.width(), m.height(), {l.origin.x + l.side_px, l.origin.y + l.side_px}, l.cell_px, l.cell_px);
   page.fill_rects(unscored_walls(l, m, reachable), kUnscoredWallColour);
-  draw_landmarks(page, l, m);  // first: the goals and the start are drawn over them
+  draw_landmarks(page, l, m, least_mark_px);  // first: the goals and the start are drawn over them
   const double line = std::max(1.0, l.cell_px / 14);
   for (const maze::Cell goal : m.goals()) {
     const double inset = l.cell_px / 8 + line / 2;
     page.stroke_rect({l.left(goal) + inset, l.top(goal) + inset, l.cell_px - 2 * inset, l.cell_px - 2 * inset}, line,
                      kGoalColour);
   }
-  const double side = std::max({2.0, l.cell_px / 3, min_mark_px});
+  const double side = std::max({2.0, l.cell_px / 3, least_mark_px});
   const maze::Cell start = m.start();
   page.fill_rect({l.left(start) + (l.cell_px - side) / 2, l.top(start) + (l.cell_px - side) / 2, side, side}, kStartColour);
 }
@@ -243,7 +244,7 @@ Drawing truth_picture(const TruthInput &in, PictureFormat format, const std::opt
   const FigureLayout layout = page ? layout_figure(fig, *page) : layout_figure(fig);
   const TruthLayout l = layout_of(in, layout.map_origin);
   Drawing drawing(layout.width, layout.height, format);
-  draw_cells(drawing, l, in, reachable, 0.6 * layout.font_px);
+  draw_cells(drawing, l, in, reachable, app::min_mark_px(layout.font_px));
   drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::right), kRightWallColour);
   drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::missed), kMissedColour);
   drawing.fill_rects(sides_judged(l, in, reachable, SideVerdict::phantom), kPhantomColour);

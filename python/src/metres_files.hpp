@@ -2,13 +2,14 @@
 // The pictures and the replay of a Python controller's run drawn in metres (python3 -m
 // maze_mapper.run --out): on an arena, and on a maze whose controller kept no cell grid.
 //
-//   truth.png    the world (its solids, boundary and landmarks) and the robot's path: no score,
-//                for the runner knows no map to score
+//   truth.png    the world (its solids, boundary and landmarks), the robot's path, the start,
+//                the goals and the robot: no score, for the runner knows no map to score; on an
+//                open floor cropped to what stands and moved on it (shown_part)
 //   map.png      the metric map the controller kept (maze_mapper.keep_map), drawn as `room
 //                --out` draws its map.png (app/picture/metric/map_pictures.hpp), with the path
 //   replay.html  the one replay page (app/report/replay.hpp) in metres: every pose of
 //                trace.csv, the kept map's frames (app/report/map_frames.hpp); without a kept
-//                map the world's walls and the path over a grid never observed
+//                map the world's walls and the path over a grid never observed, on shown_part
 
 #include <string>
 #include <utility>
@@ -29,8 +30,15 @@ struct MetresRunMarks {
   std::vector<std::pair<std::string, std::string>> summary;  // the printed summary's lines
 };
 
-// truth.png: the world and the path from `visits`.
-std::string world_truth_png(const maze::World &world, const std::vector<PoseTrace::Visit> &visits);
+// The part of the world a picture of the run shows (app/picture/size_rules.hpp's crop): a
+// walled world whole; on an open floor (the course's empty 17 x 17 m floor, a course world
+// whose walls stand on it) the box round its solids, landmarks, goals, the start and the path
+// from `visits`, grown by crop_margin_m, within the floor.
+maze::Arena shown_part(const maze::Arena &arena, const std::vector<PoseTrace::Visit> &visits);
+
+// truth.png: the world's shown_part, its solids and landmarks, the path from `visits`, the
+// start, the goals and the robot (its body of body_radius_m) where it ended.
+std::string world_truth_png(const maze::World &world, const std::vector<PoseTrace::Visit> &visits, double body_radius_m);
 
 // map.png of the kept map, with the path from `visits`.
 std::string kept_map_png(const KeptMap &kept, const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks);

@@ -181,7 +181,7 @@ void write_maze_replay(app::OutputDir &out, const maze::Maze &truth, const std::
 
 void RunFiles::write_metres_pictures(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks) {
   if (kept_map() != nullptr) out_.write("map.png", kept_map_png(*kept_map(), visits, marks));
-  out_.write("truth.png", world_truth_png(*marks.world, visits));
+  out_.write("truth.png", world_truth_png(*marks.world, visits, marks.body_radius_m));
 }
 
 void RunFiles::write_metres_replay(const std::vector<PoseTrace::Visit> &visits, const MetresRunMarks &marks) {

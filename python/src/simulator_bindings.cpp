@@ -122,6 +122,10 @@ class PySimulation {
     goal_reached_ = goal_reached_ || at_goal(simulation().pose());
   }
   bool goal_reached() const { return goal_reached_; }
+  // The goal points set_goal gave (none for goal cells or no goal).
+  std::vector<std::pair<double, double>> goal_points() const {
+    return goal_ ? goal_->points : std::vector<std::pair<double, double>>{};
+  }
 
   // The device names of the robot, in the order Webots' Robot lists a robot's devices here:
   // motors, encoders, IMU, GPS, lidars, distance sensors, bumpers.
@@ -361,10 +365,19 @@ void bind_simulator(py::module_ &m) {
           [](const PySimulation &s) -> std::optional<maze::World> {
             const maze::Arena *geometry = s.simulation().geometry();
             if (geometry == nullptr) return std::nullopt;
-            return maze::World(*geometry, "", maze::Format::room);
+            maze::Arena arena = *geometry;
+            // The goal points the runner found with the controller's world (the course's empty floor).
+            if (arena.goals.empty()) {
+              for (const auto &[x, y] : s.goal_points()) {
+                arena.goals.push_back({x, y});
+                arena.goal_where.emplace_back();
+              }
+            }
+            return maze::World(arena, "", maze::Format::room);
           },
-          "The world as it stands now: the one the simulation began with and the solids a supervisor added since, "
-          "or None while a maze's walls are untouched (its World is the file's).")
+          "The world as it stands now: the one the simulation began with and the solids a supervisor added since "
+          "(with the goal points set_goal gave where it names none), or None while a maze's walls are untouched "
+          "(its World is the file's).")
       .def(
           "teleport",
           [](PySimulation &s, double x, double y, double z, double yaw) {

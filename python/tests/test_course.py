@@ -331,19 +331,66 @@ def test_out_on_the_empty_floor_draws_the_world_the_supervisor_built_its_landmar
     # The replay in metres over the 17 x 17 m floor, the four landmarks corners.xml's library
     # imported at their places (mm from the floor's corner, radius 0.25 m) in their colours.
     data = replay_data_of((out / "replay.html").read_text())
-    assert data["units"] == "metres" and data["boundary_mm"] == [0, 0, 17000, 17000]
+    assert data["units"] == "metres" and data["boundary_mm"] == []  # the floor's edge is no wall
+    corner = data["origin"]  # the shown part's south-west corner (the crop: test below)
+
+    def mm(x, y):
+        return [round((x - corner[0]) * 1000), round((y - corner[1]) * 1000)]
     marks = [tuple(data["landmarks"][i:i + 6]) for i in range(0, len(data["landmarks"]), 6)]
-    assert sorted(marks) == sorted([(10000, 10000, 250, 255, 0, 0), (7000, 10000, 250, 0, 255, 0),
-                                    (7000, 7000, 250, 0, 0, 255), (11000, 6000, 250, 255, 255, 0)])
+    assert sorted(marks) == sorted([(*mm(1.5, 1.5), 250, 255, 0, 0), (*mm(-1.5, 1.5), 250, 0, 255, 0),
+                                    (*mm(-1.5, -1.5), 250, 0, 0, 255), (*mm(2.5, -2.5), 250, 255, 255, 0)])
     # The library's random start is a teleport after the first step: the replay starts there,
-    # the step before it left out (corners.xml's (-0.75, -1) in mm from the corner).
+    # the step before it left out (corners.xml's (-0.75, -1)).
     assert len(data["path"]["steps"]) == summary["steps"] - 1
     assert data["path"]["placed"] == [] and data["path"]["start"] == 0
-    assert data["path"]["xy_mm"][0:2] == [7750, 7500]
+    assert data["path"]["xy_mm"][0:2] == mm(-0.75, -1.0)
     # truth.png: the imported walls solid, the landmarks in their colours, the robot's path.
     colours = set(map(tuple, png_pixels((out / "truth.png").read_bytes()).reshape(-1, 3).tolist()))
     for colour in [(255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 0)]:
         assert colour in colours, colour
+
+
+def colour_centre(pixels, colour):
+    """The mean (x, y) of the pixels in colour, or None."""
+    import numpy as np
+    ys, xs = np.nonzero(np.all(pixels == colour, axis=2))
+    return (xs.mean(), ys.mean()) if len(xs) else None
+
+
+def test_out_on_the_empty_floor_crops_the_pictures_to_the_world_built_and_the_path_with_start_goal_and_robot(tmp_path):
+    out = tmp_path / "out"
+    status, stdout, err = run_course(os.path.join(CONTROLLERS, "drive", "drive.py"), "--noise", "0", "--out", str(out))
+    assert status == 0, err
+    # The replay shows the box round corners.xml's walls (-2 to 2 m), its landmarks (the yellow
+    # one at (2.5, -2.5), 0.25 m round), its goal and the path, grown by half a metre (a tenth of
+    # the 4.8 m box is less): not the 17 x 17 m floor.
+    data = replay_data_of((out / "replay.html").read_text())
+    x0, y0 = data["origin"]
+    x1, y1 = x0 + data["width"] * data["cell_size_m"], y0 + data["height"] * data["cell_size_m"]
+    assert x0 <= -2.5 and y0 <= -3.25 and x1 >= 3.25 and y1 >= 2.5
+    assert x0 >= -2.6 and y0 >= -3.35 and x1 <= 3.35 and y1 <= 2.6
+    # The goal the course's library read with its world, (1.5, 0), in mm from the shown corner.
+    assert data["goals"] == [round((1.5 - x0) * 1000), round((0.0 - y0) * 1000)]
+    assert data["mark_rule"] == [0.6, 14, 40]
+    # truth.png on the same box: the red (1.5, 1.5) and blue (-1.5, -1.5) landmarks 3 m apart
+    # span about half the map (600 px over some 6 m), where on the whole floor they spanned a
+    # sixth; the start, the goal and the robot's end marked where they are.
+    pixels = png_pixels((out / "truth.png").read_bytes())
+    red, blue = colour_centre(pixels, (255, 0, 0)), colour_centre(pixels, (0, 0, 255))
+    px_per_m = (red[0] - blue[0]) / 3.0
+    assert px_per_m > 80
+    assert abs((blue[1] - red[1]) / 3.0 - px_per_m) < 1
+
+    def at(x, y):
+        return round(red[0] + (x - 1.5) * px_per_m), round(red[1] - (y - 1.5) * px_per_m)
+    final = json.loads((out / "summary.json").read_text())["final_pose"]
+
+    def near(where, half):
+        x, y = at(*where)
+        return pixels[y - half:y + half + 1, x - half:x + half + 1].reshape(-1, 3).tolist()
+    assert [20, 170, 40] in near((-0.75, -1.0), 2)  # the start
+    assert [30, 90, 220] in near((final["x_m"], final["y_m"]), 5)  # the robot (a white tick its heading)
+    assert [240, 170, 0] in near((1.5, 0.0), 20) and [240, 170, 0] not in near((-1.5, 0.0), 20)  # the goal
 
 
 def test_out_on_the_empty_floor_with_a_kept_map_writes_its_map_png(controller_file, tmp_path):

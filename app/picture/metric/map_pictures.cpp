@@ -85,13 +85,20 @@ std::vector<PointPx> draw_trail(Drawing &page, const PlainGridFrame &frame, mapp
   return trail;
 }
 
-double mark_px(const PlainGridFrame &frame) { return std::max(4.0, frame.cell_w_px * 0.8); }
+// A mark's size: most of a map cell, and at least the page's least (app/picture/size_rules.hpp).
+double mark_px(const PlainGridFrame &frame) { return std::max(frame.cell_w_px * 0.8, frame.least_mark_px); }
 
-void draw_goal(Drawing &page, const PlainGridFrame &frame, const MetricPictureMarks &marks) {
-  if (!marks.goal) return;
-  const PointPx g = frame.at(marks.goal->x_m, marks.goal->y_m);
+void draw_goals(Drawing &page, const PlainGridFrame &frame, const MetricPictureMarks &marks) {
   const double side = mark_px(frame) * 1.5;
-  page.stroke_rect({g.x - side / 2, g.y - side / 2, side, side}, std::max(1.5, side / 6), kGoalColour);
+  for (const mapping::Point &goal : marks.goals) {
+    const PointPx g = frame.at(goal.x_m, goal.y_m);
+    page.stroke_rect({g.x - side / 2, g.y - side / 2, side, side}, std::max(1.5, side / 6), kGoalColour);
+  }
+}
+
+void draw_start(Drawing &page, const PlainGridFrame &frame, PointPx start) {
+  const double side = mark_px(frame);
+  page.fill_rect({start.x - side / 2, start.y - side / 2, side, side}, kStartColour);
 }
 
 void draw_robot(Drawing &page, const PlainGridFrame &frame, const MetricRobotMarks &robot) {
@@ -112,7 +119,7 @@ void draw_plan(Drawing &page, const PlainGridFrame &frame, const sensing::Metric
 // Under every other mark: the landmarks, each a disc of its radius.
 void draw_room_landmarks(Drawing &page, const PlainGridFrame &frame, const MetricPictureMarks &marks) {
   for (const LandmarkMark &l : marks.landmarks) {
-    draw_landmark(page, l, frame.at(l.at.x_m, l.at.y_m), frame.cell_w_px / frame.cell_w_m);
+    draw_landmark(page, l, frame.at(l.at.x_m, l.at.y_m), frame.cell_w_px / frame.cell_w_m, frame.least_mark_px);
   }
 }
 
@@ -139,7 +146,7 @@ Figure map_legend(const MetricPictureMarks &marks, const MapTones &tones, bool h
                   {Swatch::square, kStartColour, "start"},
                   {Swatch::disc, kEndColour, "robot"}};
   if (has_plan) legend.items.push_back({Swatch::line, kPlannedColour, "last plan"});
-  if (marks.goal) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
+  if (!marks.goals.empty()) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
   add_world_items(legend, marks);
   legend.bar = map_tone_bar(tones, "never observed (prior)");
   return legend;
@@ -156,7 +163,9 @@ Figure truth_legend(const MetricPictureMarks &marks, const MetricTruthScores &sc
                   {Swatch::box, kUnknownTone, "never observed"},
                   {Swatch::box, kUnreachableFreeTone, "free, not reachable"},
                   {Swatch::line, kPathColour, "trajectory"},
+                  {Swatch::square, kStartColour, "start"},
                   {Swatch::disc, kEndColour, "robot"}};
+  if (!marks.goals.empty()) legend.items.push_back({Swatch::frame, kGoalColour, "goal"});
   add_world_items(legend, marks);
   return legend;
 }
@@ -207,9 +216,8 @@ std::string metric_map_picture(const sensing::MetricMap &map, const MetricRobotM
     draw_room_landmarks(page, frame, marks);
     const std::vector<PointPx> trail = draw_trail(page, frame, marks.start, robot);
     draw_plan(page, frame, map, robot.plan);
-    const double side = mark_px(frame);
-    page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
-    draw_goal(page, frame, marks);
+    draw_start(page, frame, trail.front());
+    draw_goals(page, frame, marks);
     draw_robot(page, frame, robot);
   };
   return plain_grid_picture(g, map_legend(marks, tones, robot.plan.size() >= 2), overlay, format,
@@ -225,8 +233,8 @@ std::string metric_truth_picture(const robot::MetricController &c, const maze::T
     draw_room_landmarks(page, frame, marks);
     const MetricRobotMarks robot = robot_marks(c);
     const std::vector<PointPx> trail = draw_trail(page, frame, marks.start, robot);
-    const double side = mark_px(frame);
-    page.fill_rect({trail.front().x - side / 2, trail.front().y - side / 2, side, side}, kStartColour);
+    draw_start(page, frame, trail.front());
+    draw_goals(page, frame, marks);
     draw_robot(page, frame, robot);
   };
   return plain_grid_picture(g, truth_legend(marks, scores), overlay, format, metric_page(map, marks)).encode();
@@ -252,7 +260,7 @@ std::string metric_wave_picture(const robot::MetricController &c, const MetricPi
   const PlainGridOverlay overlay = [&](Drawing &page, const PlainGridFrame &frame) {
     draw_room_landmarks(page, frame, marks);
     draw_plan(page, frame, c.map(), c.path());
-    draw_goal(page, frame, marks);
+    draw_goals(page, frame, marks);
     draw_robot(page, frame, robot_marks(c));
   };
   return plain_grid_picture(g, wave_legend(marks, top, c.path().size() >= 2), overlay, format,
@@ -264,7 +272,7 @@ PageFrame metric_page(const sensing::MetricMap &map, const MetricPictureMarks &m
   const PlainGrid g = room_grid(map, marks, [](std::size_t) { return kWhite; });
   MetricPictureMarks widest = marks;
   widest.when = "step 9999999, 99999.9 s";
-  widest.goal = mapping::Point{};
+  widest.goals = {mapping::Point{}};
   const MetricTruthScores scores{"100.00%", "100.00%"};
   const auto most = static_cast<std::int32_t>(map.size()) + plan::kWaveGoal;
   // The map's legend with the default tones: its colour bar is as wide whatever the set-up.

@@ -8,7 +8,7 @@
 //
 //   map    the log-odds in map.png's tones (occupied dark, free light, graded by the
 //          set-up's own increments; never observed blue-grey), the trajectory in red from the
-//          start (green square) to the robot (blue disc), the last plan in magenta, the goal
+//          start (green square) to the robot (blue disc), the last plan in magenta, each goal
 //          a yellow frame; a colour bar of the tones and a scale bar.
 //   wave   the wavefront's numbers as the labs grade them, drawn: blocked cells (1, the
 //          obstacles grown) dark grey, the goal (2) yellow, each cell the wave reached in a
@@ -18,7 +18,10 @@
 //          cell_accuracy and coverage count it (their percentages in the legend): occupied
 //          cells learned right near-black, missed (mapped free) red, phantoms (occupied on
 //          the map, free in truth) magenta, free cells white where reachable and light grey
-//          where not, cells never observed blue-grey; the trajectory, start and robot over it.
+//          where not, cells never observed blue-grey; the trajectory, start, goals and robot
+//          over it.
+// The marks (start, robot, goals, landmarks) follow app/picture/size_rules.hpp: at least
+// min_mark_px of the page's font, larger where a map cell is.
 
 #include <cstddef>
 #include <cstdint>
@@ -40,7 +43,7 @@ namespace app {
 // What both pictures mark besides the controller's own state.
 struct MetricPictureMarks {
   mapping::Point start;
-  std::optional<mapping::Point> goal;
+  std::vector<mapping::Point> goals;  // the world's goal points and the run's --goal, each a frame
   std::optional<PlainGridBounds> boundary;  // the world's boundary (solid all round), within the map's extent
   std::vector<LandmarkMark> landmarks;
   std::string caption;  // the legend's first line: the world, the strategy, the set-up
