@@ -105,6 +105,11 @@ struct DeviceState {
   std::vector<std::int64_t> beam_steps;
   std::vector<std::int64_t> last_pass;  // scratch: LidarSweep::last_pass_steps
   double cache[3] = {0.0, 0.0, 0.0};
+  // A rotating lidar's head: where it stood (revolutions from ahead) when its sweep began at
+  // enabled_at_step, and whether that was a frequency change (then a beam the head has not
+  // passed since keeps its reading).
+  double sweep_start_rev = 0.0;
+  bool sweep_resumed = false;
 };
 
 // The pose at the end of a step.
@@ -166,6 +171,15 @@ class Simulation {
   // is simulated on its geometry from then on. Throws common::InputError for a bad size.
   void add_obstacle(const maze::Obstacle &obstacle);
   void add_disc(const maze::ArenaDisc &disc);
+  // Takes a solid out of the world, the world's own or a supervisor's (Webots' Node.remove):
+  // remove_obstacle cuts from every box the part of its centre line that footprint covers,
+  // footprint lying along it (parallel or square to 0.01 rad, on its centre line and no more
+  // than 0.01 m wider: the course's library writes two decimals); a piece left no longer than
+  // the box is thick goes too (a lattice's walls are joined into runs, and a node may stand for
+  // one cell's side of a run). remove_disc takes the cylinders centred within 0.01 m of (x, y).
+  // Seen at once; the number of solids cut or taken (0: none there).
+  int remove_obstacle(const maze::Obstacle &footprint);
+  int remove_disc(double x_m, double y_m);
   // Moves the robot to pose, its origin z_m above the floor (a supervisor's translation and
   // rotation): wheels as they were, every reading afresh, GPS z reading z_m from then on.
   void teleport(const maze::sim::Pose &pose, double z_m);
@@ -187,6 +201,11 @@ class Simulation {
 
   const float *lidar_range_image(int device);
   const maze::sim::LidarSpec &lidar_spec(int device) const;
+  // Webots' wb_lidar_set_frequency on a rotating lidar: its head turns at frequency_hz from
+  // now on, on from where it stands (each beam keeps its reading until the head passes it
+  // again); lidar_spec(device).frequency_hz reads it. The caller checks the range; throws
+  // common::InputError for a fixed lidar or a frequency not above 0.
+  void set_lidar_frequency(int device, double frequency_hz);
 
   void motor_set_position(int device, double position_rad);
   void motor_set_velocity(int device, double velocity_rad_s);
@@ -212,6 +231,9 @@ class Simulation {
   void set_up();
   // The solids from now on: the geometry's (SolidGeometry), kept as geometry_.
   void use_geometry(maze::Arena geometry);
+  // A rotating lidar's sweep begun again at enabled_at_step, the head at start_rev, at the
+  // spec's frequency.
+  void restart_sweep(DeviceState &state, double start_rev);
   // The solids built again from geometry_ after a supervisor's edit.
   void rebuild_solids();
   // f(the solids): the one choice between the wall grid and the geometry, made once per query.
