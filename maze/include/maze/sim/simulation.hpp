@@ -158,8 +158,7 @@ class Simulation {
   std::int64_t time_ms() const { return time_ms_; }
   // Basic time steps since the simulation began, resets included: what the time limit bounds.
   std::int64_t steps() const { return steps_; }
-  // Lidar beams cast so far, all lidars: a fixed lidar's image each step it is read, a
-  // rotating lidar's beams swept since last cast (bench/'s unit of work).
+  // Lidar beams cast so far, all lidars (bench/'s unit of work): fixed images read, rotating beams swept.
   std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
   void request_stop() { stop_requested_ = true; }  // the next Robot::step returns -1 (Webots quits)
   // Collisions so far: the steps in which the body met a solid (was held out of it) after a
@@ -171,13 +170,7 @@ class Simulation {
   // is simulated on its geometry from then on. Throws common::InputError for a bad size.
   void add_obstacle(const maze::Obstacle &obstacle);
   void add_disc(const maze::ArenaDisc &disc);
-  // Takes a solid out of the world, the world's own or a supervisor's (Webots' Node.remove):
-  // remove_obstacle cuts from every box the part of its centre line that footprint covers,
-  // footprint lying along it (parallel or square to 0.01 rad, on its centre line and no more
-  // than 0.01 m wider: the course's library writes two decimals); a piece left no longer than
-  // the box is thick goes too (a lattice's walls are joined into runs, and a node may stand for
-  // one cell's side of a run). remove_disc takes the cylinders centred within 0.01 m of (x, y).
-  // Seen at once; the number of solids cut or taken (0: none there).
+  // Node.remove: takes what footprint covers of boxes along it, or cylinders at (x, y); how many.
   int remove_obstacle(const maze::Obstacle &footprint);
   int remove_disc(double x_m, double y_m);
   // Moves the robot to pose, its origin z_m above the floor (a supervisor's translation and
@@ -201,10 +194,7 @@ class Simulation {
 
   const float *lidar_range_image(int device);
   const maze::sim::LidarSpec &lidar_spec(int device) const;
-  // Webots' wb_lidar_set_frequency on a rotating lidar: its head turns at frequency_hz from
-  // now on, on from where it stands (each beam keeps its reading until the head passes it
-  // again); lidar_spec(device).frequency_hz reads it. The caller checks the range; throws
-  // common::InputError for a fixed lidar or a frequency not above 0.
+  // A rotating lidar's head turns at frequency_hz on from where it stands (InputError: fixed).
   void set_lidar_frequency(int device, double frequency_hz);
 
   void motor_set_position(int device, double position_rad);
@@ -227,23 +217,17 @@ class Simulation {
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
-  // The constructor's part once the solids are set.
-  void set_up();
-  // The solids from now on: the geometry's (SolidGeometry), kept as geometry_.
-  void use_geometry(maze::Arena geometry);
-  // A rotating lidar's sweep begun again at enabled_at_step, the head at start_rev, at the
-  // spec's frequency.
-  void restart_sweep(DeviceState &state, double start_rev);
-  // The solids built again from geometry_ after a supervisor's edit.
-  void rebuild_solids();
+  void set_up();  // the constructor's part once the solids are set
+  void use_geometry(maze::Arena geometry);  // the solids from now on: the geometry's, kept as geometry_
+  void restart_sweep(DeviceState &state, double start_rev);  // from enabled_at_step, the head at start_rev
+  void rebuild_solids();  // the solids built again from geometry_ after a supervisor's edit
   // f(the solids): the one choice between the wall grid and the geometry, made once per query.
   template <typename F>
   decltype(auto) with_solids(F &&f) const;
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
                                const maze::sim::LidarSpec &spec);
-  // One basic step of the differential drive: exact arcs at the wheels' constant rates.
-  void advance(double dt_s);
+  void advance(double dt_s);  // one basic step of the drive: exact arcs at the wheels' constant rates
   void turn_wheel(Wheel &wheel, double rate_rad_s, double h_s, bool arrives);
   // The body along the arc of wheel rates (rad/s) for h_s: one arc in free space, arcs of at
   // most a tenth of the body radius each (pushed out of walls after each) near walls.
@@ -280,9 +264,8 @@ class Simulation {
   maze::sim::Pose initial_pose_;
   double height_m_ = 0.0;                           // the robot's origin above the floor
   maze::sim::Pose pose_;
-  // Where the body's centre touches no wall (WallGrid::free_centres), computed when the
-  // body last left the previous box: inside it, a physics substep needs no push_out. The
-  // pose only changes in advance(), so the box cannot go stale.
+  // Where the body's centre touches no wall (WallGrid::free_centres), computed when the body last
+  // left the previous box: inside it a substep needs no push_out (the pose changes in advance()).
   std::optional<maze::sim::Box> free_centres_;
   static constexpr int kLeftWheel = 0, kRightWheel = 1;  // wheels_[kLeftWheel]: left motor, encoder
   Wheel wheels_[2];
