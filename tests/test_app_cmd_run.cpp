@@ -164,23 +164,46 @@ TEST_CASE("a run stopped by --time-limit ends as planned and says so; a huge lim
   CHECK(whole.out.find("end: done\n") != std::string::npos);
 }
 
-TEST_CASE("a landmark standing inside a cell: its sides are walls in the truth where it reaches their band, and the run ends done") {
+TEST_CASE("a landmark standing inside a cell: the truth walls it in where it stands on the robot's path, and the run ends done") {
   const maze::World world = maze::load_world(std::string(TEST_DATA_DIR) + "/worlds/course_landmark_in_cell.xml");
   const maze::Maze &m = world.maze();
-  REQUIRE(m.width() == 11);  // cells of 1 m; the landmark at the centre of (0, 10)
+  REQUIRE(m.width() == 11);  // cells of 1 m; the landmark (radius 0.25 m) at the centre of (0, 10)
   REQUIRE(m.landmarks().size() == 1);
-  const maze::Maze k3 = maze::with_solid_sides(m, 3);
-  for (const maze::Side s : maze::kSides) CHECK(k3.has_wall({0, 10}, s));
   CHECK_FALSE(m.has_wall({0, 10}, maze::Side::east));
-  CHECK_FALSE(k3.has_wall({1, 10}, maze::Side::east));
-  const maze::Maze k5 = maze::with_solid_sides(m, 5);  // the band middles start 0.3 m from the centre
-  CHECK_FALSE(k5.has_wall({0, 10}, maze::Side::east));
-  CHECK_FALSE(k5.has_wall({0, 10}, maze::Side::south));
-  app::RunOptions options;
-  options.output.quiet = true;
-  std::ostringstream sink;
-  const app::RunSummary s = app::run_maze(options, m, sink);
-  CHECK(s.reason == robot::EndReason::done);
-  CHECK(s.message == "");
-  CHECK(s.score.reachable_cells == 120);
+  for (const int k : {3, 5, 7, 9}) {
+    CAPTURE(k);
+    const maze::Maze truth = maze::with_solid_sides(m, k);
+    for (const maze::Side s : maze::kSides) CHECK(truth.has_wall({0, 10}, s));
+    CHECK_FALSE(truth.has_wall({1, 10}, maze::Side::east));
+    CHECK_FALSE(truth.has_wall({0, 9}, maze::Side::south));
+  }
+  struct Case {
+    sensing::ModelKind model;
+    int k;
+  };
+  using sensing::ModelKind;
+  for (const Case c : {Case{ModelKind::cell, 3}, Case{ModelKind::cell, 5}, Case{ModelKind::cell, 7},
+                       Case{ModelKind::ray, 3}, Case{ModelKind::ray, 5}}) {
+    CAPTURE(c.model == ModelKind::ray);
+    CAPTURE(c.k);
+    app::RunOptions options;
+    options.output.quiet = true;
+    options.model.kind = c.model;
+    options.subcells = c.k;
+    std::ostringstream sink;
+    const app::RunSummary s = app::run_maze(options, m, sink);
+    CHECK(s.reason == robot::EndReason::done);
+    CHECK(s.message == "");
+    CHECK(s.score.reachable_cells == 120);
+  }
+}
+
+TEST_CASE("a solid standing in a cell far from its sides leaves them open in the truth") {
+  maze::Maze m(3, 3);
+  m.set_physical(2.0, m.wall_thickness_m(), 0.0, 0.0);  // the 0.25 m landmark at a 2 m cell's centre
+  m.set_landmarks({maze::Landmark{3.0, 3.0, 1.5, 1.0, 1.0, 0.0}});
+  const maze::Maze truth = maze::with_solid_sides(m, 3);  // reaches no sub-cell past the centre's
+  for (const maze::Side s : maze::kSides) CHECK_FALSE(truth.has_wall({1, 1}, s));
+  const maze::Maze k9 = maze::with_solid_sides(m, 9);  // sub-cells of 0.22 m: the one after the centre's holds it
+  for (const maze::Side s : maze::kSides) CHECK(k9.has_wall({1, 1}, s));
 }

@@ -4,8 +4,14 @@
 // The side of cell c towards h is judged on two sub-cells: the middle of c's band h and the
 // middle of the neighbour's opposite band (the two halves of the wall, either side of the
 // boundary; the neighbour's only when it is inside the grid).
-//   unknown  neither sub-cell was ever updated (its value is still the initial l(prior))
-//   wall     an observed one is more likely occupied than not: log-odds > 0, i.e. p > 0.5
+//   unknown  neither sub-cell was ever updated (its value is still the initial l(prior)),
+//            and no sub-cell of the path below holds a solid
+//   wall     an observed one is more likely occupied than not: log-odds > 0, i.e. p > 0.5;
+//            or a solid stands on the robot's path across the side: an observed sub-cell
+//            strictly between either cell's centre and its band middle, along the middle
+//            row or column (none at K = 3), has log-odds > 0 (p > 0.5 whatever
+//            --threshold: the classroom threshold calls a sub-cell seen free once occupied,
+//            and every path sub-cell of a visited cell is)
 //   open     observed, and none is above 0
 // The threshold is absolute (p > 0.5), whatever the prior: with a prior other than 0.5 an
 // unobserved sub-cell is "unknown", not a wall or an opening, and one update from the

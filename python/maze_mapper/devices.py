@@ -216,28 +216,26 @@ def forget_targets():
 
 
 LIDAR_VERTICAL_FOV_RAD = 0.2  # Webots' Lidar verticalFieldOfView default (no course lidar sets it)
-LIDAR_MIN_FREQUENCY_HZ = 1.0  # Webots' Lidar minFrequency and maxFrequency defaults
-LIDAR_MAX_FREQUENCY_HZ = 25.0
 
 
 def _set_frequency(lidar, frequency):
-    """Webots' range check; the head turns at the robot file's frequency (a fixed lidar has none
-    here), so another frequency is warned about, not taken."""
-    if not LIDAR_MIN_FREQUENCY_HZ <= frequency <= LIDAR_MAX_FREQUENCY_HZ:
-        print(f"Error: wb_lidar_set_frequency() out of frequency range [{LIDAR_MIN_FREQUENCY_HZ:f}, "
-              f"{LIDAR_MAX_FREQUENCY_HZ:f}].", file=sys.stderr)
+    """Webots' wb_lidar_set_frequency: the range check (its error line, nothing changes), then a
+    rotating lidar's head turns at the new frequency from where it stands (getFrequency returns
+    it); on a fixed lidar, which has no head to turn, a warning says the call changes nothing."""
+    low, high = lidar.getMinFrequency(), lidar.getMaxFrequency()
+    if not low <= frequency <= high:
+        print(f"Error: wb_lidar_set_frequency() out of frequency range [{low:f}, {high:f}].", file=sys.stderr)
         return
-    current = lidar.getFrequency()
-    if frequency != current:
-        what = "a fixed lidar (no turning head)" if current == 0.0 else f"its head turning at {current:g} Hz"
-        print(f"Warning: Lidar.setFrequency({frequency:g}): not modelled: the embedded simulator's "
-              f"{lidar.getName()} is {what}, as the robot's file says", file=sys.stderr)
+    if not lidar.getFrequency() > 0.0:
+        print(f"Warning: Lidar.setFrequency({frequency:g}): {lidar.getName()} is a fixed lidar: it has no head "
+              "to turn, the call changes nothing", file=sys.stderr)
+        return
+    sys.stderr.flush()
+    lidar._set_rotating_frequency(float(frequency))
 
 
 _native.Lidar.getVerticalFov = lambda lidar: LIDAR_VERTICAL_FOV_RAD
 _native.Lidar.vertical_fov = property(_native.Lidar.getVerticalFov)
-_native.Lidar.getMinFrequency = lambda lidar: LIDAR_MIN_FREQUENCY_HZ
-_native.Lidar.getMaxFrequency = lambda lidar: LIDAR_MAX_FREQUENCY_HZ
 _native.Lidar.setFrequency = _set_frequency
 
 _native.GPS.LOCAL = 0  # Webots' WorldInfo.gpsCoordinateSystem "local" (the default) and "WGS84"

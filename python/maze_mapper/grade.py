@@ -1,6 +1,6 @@
 """python3 -m maze_mapper.grade WORLD FOLDER|FILE... [--cell-size M] [--csv FILE]
 python3 -m maze_mapper.grade --controllers FOLDER [--world WORLD|own]... [--starts N]
-    [--goal landmark|COLOR] [--estimate REGEX] [--keep DIR] [--csv FILE] [--shard K/N]
+    [--goal landmark|COLOR] [--estimate REGEX] [--keys FILE] [--keep DIR] [--csv FILE] [--shard K/N]
 python3 -m maze_mapper.grade --merge PART.csv... [--csv FILE]
 
 Grades students' 4D grids against a world's truth, as `maze_mapper run` scores its own map:
@@ -19,7 +19,8 @@ simulated time, distance, collisions, final pose, whether the goal was reached (
 or with --goal a landmark's), the position estimates the controller printed (--estimate), and
 the map score (coverage, wall accuracy) of the grid the controller kept
 (maze_mapper.keep_grid) or saved in its folder as .npy/.npz during the run, on a maze world;
-then a table a line a student. Files only where asked: --csv FILE the rows, --keep DIR each
+then a table a line a student. --keys FILE hands the runner's --keys FILE (a script of timed
+keys for the Keyboard) to every run, for a teleoperation lab. Files only where asked: --csv FILE the rows, --keep DIR each
 run's folder. --shard K/N runs the K-th of N contiguous parts of the runs (students x worlds
 x starts, in that order), as `maze_mapper batch --shard` cuts its worlds, for a job array;
 --merge joins the parts' CSVs and prints the table the whole class's run prints. Exit status:
@@ -39,7 +40,7 @@ import tempfile
 import time
 
 import maze_mapper
-from maze_mapper import _lab_scores
+from maze_mapper import _lab_scores, keyboard
 
 _KEY = maze_mapper._native.report_key  # the summary keys, spelled once for every report
 
@@ -227,6 +228,8 @@ def run_once(student, controller, world, start, args, truth=None):
         command = [sys.executable, "-m", "maze_mapper.run", os.path.abspath(controller), "--seed", str(seed),
                    "--time-limit", str(args.time_limit), "--wall-limit", str(args.wall_limit),
                    "--out", os.path.abspath(out)]
+        if args.keys is not None:
+            command += ["--keys", args.keys]
         if world != "own":
             command += ["--world", os.path.abspath(world), "--start", f"pos:{start}"]
         since = time.time() - 1.0  # file times may be coarser than the clock
@@ -329,7 +332,7 @@ def shard_of(items, shard):
 
 
 CLASS_USAGE = ("python3 -m maze_mapper.grade --controllers FOLDER [--world WORLD|own]... [--starts N] "
-               "[--goal landmark|COLOR] [--estimate REGEX] [--keep DIR] [--csv FILE] [--shard K/N]")
+               "[--goal landmark|COLOR] [--estimate REGEX] [--keys FILE] [--keep DIR] [--csv FILE] [--shard K/N]")
 MERGE_USAGE = "python3 -m maze_mapper.grade --merge PART.csv... [--csv FILE]"
 
 
@@ -358,6 +361,8 @@ def _class_parser():
     p.add_argument("--cell-size", type=float, default=1.0, metavar="M",
                    help="the cells of an arena world that --estimate numbers (default 1, the course's); "
                         "a maze's are its own")
+    p.add_argument("--keys", metavar="FILE",
+                   help="every run's keyboard keys from this script of timed keys (the runner's --keys FILE)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="students run at once (default: the cores)")
     p.add_argument("--keep", metavar="DIR",
                    help="keep each run's folder (summary, pictures, replay, controller.log) as DIR/STUDENT/WORLD-START")
@@ -382,6 +387,13 @@ def _class_args(argv):
             args.estimate = re.compile(args.estimate)
         except re.error as e:
             p.error(f"--estimate {args.estimate}: not a regular expression ({e})")
+    if args.keys is not None:
+        try:
+            keyboard.read_key_script(args.keys)  # its errors once, here, not in every run
+        except keyboard.KeyScriptError as e:
+            print(e, file=sys.stderr)
+            sys.exit(2)
+        args.keys = os.path.abspath(args.keys)  # runs start in the controllers' folders
     args.worlds = args.world or ["own"]
     for w in args.worlds:
         if w != "own" and not os.path.isfile(w):

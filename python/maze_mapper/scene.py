@@ -4,7 +4,7 @@ environment writes them (`Obstacle` and `Landmark`, with DEF names). maze_mapper
 Scene a run (`scene.current`); controller.Supervisor and the camera read it.
 
 An imported node becomes a solid of the simulated world at once, seen by the lidar and the
-camera and met by the body:
+camera and met by the body (and Node.remove takes it out again: supervision.py):
 
     Obstacle { translation X Y Z rotation 0 0 1 A size SX SY SZ }
         a box SX across (its local x) and SY along (its local y) turned A about the vertical,
@@ -387,7 +387,7 @@ class Scene:
                                {"name": robot_type}, {"translation": "SFVec3f", "rotation": "SFRotation",
                                                       "name": "SFString"})
         self.root._values["children"].append(self.robot)
-        self._initial_children = 1
+        self._initial_children = list(self.root._values["children"])
         self._initial_landmarks = []
 
     def _new_id(self):
@@ -437,7 +437,7 @@ class Scene:
                         fields, {name: kind for name, (kind, _) in schema.items()})
             self.root._values["children"].append(node)
             self.landmarks.append(Landmark(node, x, y, height / 2.0, radius, height, 0.0, list(colour)))
-        self._initial_children = len(self.root._values["children"])
+        self._initial_children = list(self.root._values["children"])
         self._initial_landmarks = list(self.landmarks)
 
     def _build(self, type_name, fields, yaw, node):
@@ -470,10 +470,10 @@ class Scene:
 
     def reset(self):
         """Webots' reset from a supervisor (its Supervisor reference's reset matrix): the nodes
-        imported since the start are gone, the robot is back at its start with its motors and
+        imported since the start are gone, those of the world removed since are back, the robot is back at its start with its motors and
         encoders at 0, and the simulated time is 0 again. The controller is not restarted, and
         the run's limits count its whole time."""
-        del self.root._values["children"][self._initial_children:]
+        self.root._values["children"][:] = self._initial_children
         self.landmarks[:] = self._initial_landmarks
         self.walls_extent_m = None
         self.simulation.reset_world()

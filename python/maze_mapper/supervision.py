@@ -24,10 +24,15 @@ those classes (controller.py imports this module):
       [vx, vy, vz, wx, wy, wz] in the world (m/s, rad/s) over the last step: the robot's and its
       devices'; zeros for the solids, which do not move.
   Node.remove()
-      takes a node out of the tree: a node imported while the runner's --world holds the world
-      (it added no solid). Removing the root prints Webots' error; removing the robot, or a
-      solid the simulated world holds, raises SceneError (the simulator cannot take a solid
-      out of its world).
+      takes a node of the root's children out of the tree and its solid out of the simulated
+      world at once, as Webots does: the lidar, the distance sensors, the camera (recognition
+      and getImage), the body and the pictures meet it no more. An Obstacle takes out what its
+      box covers of the world's boxes and walls (with the runner's --world, the walls the
+      course's library imports as Obstacles stand for the world file's own: removing one takes
+      that wall out, a lattice's one cell side of a run of walls); a Landmark takes the
+      cylinder at its centre (the world's landmarks are nodes from the start). Removing the
+      root prints Webots' error; removing the robot or a device's node raises SceneError.
+      simulationReset brings the world's removed nodes back, as it takes the imported ones.
   Node.getParentNode()
       the root for its children, the robot's node for a device's node, None for the root.
   Node.resetPhysics()
@@ -155,10 +160,21 @@ def _remove(node):
     children = scene.root._values["children"]
     if getattr(node, "_device", None) is not None or not any(child is node for child in children):
         raise SceneError(f"removing {node!r} is not modelled: only the root's children can be removed")
-    if scene.world_file is None or any(landmark.node is node for landmark in scene.landmarks):
-        raise SceneError(f"removing {node!r} is not modelled: its solid stays in the simulated world "
-                         "(the embedded simulator cannot take a solid out)")
+    _remove_solid(node)
     children[:] = [child for child in children if child is not node]
+
+
+def _remove_solid(node):
+    """Takes the node's solid out of the simulated world (none there: nothing to take)."""
+    scene = node._scene
+    x, y, _ = node._values["translation"]
+    if node._type == "Obstacle":
+        yaw = _scene.yaw_of_rotation(node._values["rotation"], "Obstacle.rotation")
+        across, along, _ = node._values["size"]
+        scene.simulation.remove_box(x, y, along / 2.0, across / 2.0, yaw + math.pi / 2.0)
+    elif node._type == "Landmark":
+        scene.simulation.remove_cylinder(x, y)
+        scene.landmarks[:] = [landmark for landmark in scene.landmarks if landmark.node is not node]
 
 
 Node.getPose = _get_pose

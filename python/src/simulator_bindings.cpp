@@ -267,6 +267,9 @@ void bind_devices(py::module_ &m) {
       .def("getMinRange", &webots::Lidar::getMinRange)
       .def("getMaxRange", &webots::Lidar::getMaxRange)
       .def("getFrequency", &webots::Lidar::getFrequency)
+      .def("getMinFrequency", &webots::Lidar::getMinFrequency)
+      .def("getMaxFrequency", &webots::Lidar::getMaxFrequency)
+      .def("_set_rotating_frequency", &webots::Lidar::setFrequency, py::arg("frequency"))
       .def_property_readonly("horizontal_resolution", &webots::Lidar::getHorizontalResolution)
       .def_property_readonly("number_of_layers", &webots::Lidar::getNumberOfLayers)
       .def_property_readonly("fov", &webots::Lidar::getFov)
@@ -360,6 +363,18 @@ void bind_simulator(py::module_ &m) {
           py::arg("height_m") = py::none(), py::arg("colour") = py::none(),
           "A solid upright cylinder added to the world (a maze's is simulated on its geometry from then on); with "
           "a colour (red, green, blue, 0 to 1) a landmark, drawn in it.")
+      .def(
+          "remove_box",
+          [](PySimulation &s, double cx, double cy, double half_length, double half_width, double angle) {
+            return s.simulation().remove_obstacle(maze::Obstacle::oriented(cx, cy, half_length, half_width, angle));
+          },
+          py::arg("centre_x_m"), py::arg("centre_y_m"), py::arg("half_length_m"), py::arg("half_width_m"),
+          py::arg("angle_rad"),
+          "Takes out what the box covers of the world's boxes and walls (Node.remove): the number cut or taken.")
+      .def(
+          "remove_cylinder", [](PySimulation &s, double cx, double cy) { return s.simulation().remove_disc(cx, cy); },
+          py::arg("centre_x_m"), py::arg("centre_y_m"),
+          "Takes out the world's cylinders centred on (x, y) (Node.remove): how many.")
       .def(
           "built_world",
           [](const PySimulation &s) -> std::optional<maze::World> {

@@ -138,3 +138,43 @@ def test_a_class_on_the_course_s_own_worlds_draws_the_random_start_from_the_seed
                                                                                                 (-0.8, -0.5)]
     assert rows[0]["end"] == "controller finished" and 1.49 < float(rows[0]["distance_m"]) < 1.52
     assert {r["goal"] for r in rows} == {"not reached"}  # corners.xml's goal (1.5, 0), as the library read it
+
+
+KEY_PRINTER = """from controller import Robot
+robot = Robot()
+keyboard = robot.getKeyboard()
+keyboard.enable(32)
+for _ in range(40):
+    robot.step(32)
+    key = keyboard.getKey()
+    if key != -1:
+        print(f"key {robot.getTime():.3f} {key}")
+"""
+
+
+def test_keys_hands_its_script_of_timed_keys_to_every_run_and_a_bad_script_is_a_usage_error(tmp_path):
+    hand_ins = tmp_path / "class"
+    for student in ("alice", "bob"):
+        (hand_ins / student).mkdir(parents=True)
+        (hand_ins / student / f"{student}.py").write_text(KEY_PRINTER)
+    keys = tmp_path / "drive.keys"
+    keys.write_text("0.5 UP\n0.6 -\n")
+    command = [sys.executable, "-m", "maze_mapper.grade", "--controllers", str(hand_ins),
+               "--world", os.path.join(WORLDS, "lattice_maze.xml"), "--keep", str(tmp_path / "runs")]
+    done = subprocess.run(command + ["--keys", os.path.relpath(keys, REPO)], cwd=REPO, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    for student in ("alice", "bob"):
+        log = (tmp_path / "runs" / student / "lattice_maze-1" / "controller.log").read_text()
+        # UP (315) held from 0.5 s to 0.6 s: the samples at 0.512 s and 0.544 s, 0.576 s
+        assert [line for line in log.splitlines() if line.startswith("key ")] == [
+            "key 0.512 315", "key 0.544 315", "key 0.576 315"], log
+    command[command.index("--keep") + 1] = str(tmp_path / "plain")
+    without = subprocess.run(command, cwd=REPO, capture_output=True, text=True, timeout=300)
+    assert without.returncode == 0, without.stderr
+    log = (tmp_path / "plain" / "alice" / "lattice_maze-1" / "controller.log").read_text()
+    assert "key " not in log  # no script, no terminal: getKey() returns -1
+    keys.write_text("0.5 UP\n0.2 -\n")
+    bad = subprocess.run(command + ["--keys", str(keys)], cwd=REPO, capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 2 and bad.stderr.startswith(f"{keys}:2:") and bad.stderr.count("\n") == 1, bad.stderr
+    assert bad.stdout == ""

@@ -121,8 +121,7 @@ print(camera.saveImage({str(tmp_path / "view.png")!r}, 100), camera.saveImage({s
     assert lines[3:] == ["-1", "0 -1"]
     assert err.splitlines() == [
         "Error: wb_lidar_set_frequency() out of frequency range [1.000000, 25.000000].",
-        "Warning: Lidar.setFrequency(5): not modelled: the embedded simulator's lidar is a fixed lidar (no "
-        "turning head), as the robot's file says",
+        "Warning: Lidar.setFrequency(5): lidar is a fixed lidar: it has no head to turn, the call changes nothing",
         "Error: wb_camera_set_fov() out of zoom range [0.785400, 0.785400].",
         "Error: Camera.saveImage(): no image: enable the camera first",
         f"Error: Camera.saveImage(): {tmp_path / 'view.jpg'}: JPEG is not written by the embedded simulator: "
@@ -130,6 +129,82 @@ print(camera.saveImage({str(tmp_path / "view.png")!r}, 100), camera.saveImage({s
     data = (tmp_path / "view.png").read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", data[16:24]) == (224, 224)
     assert not (tmp_path / "view.jpg").exists()
+
+
+def test_set_frequency_turns_a_rotating_lidar_s_head_at_the_new_frequency_from_where_it_stands(controller_file):
+    # Webots' reference (lidar.md): setFrequency sets the rotating head's frequency, within
+    # [minFrequency, maxFrequency]; getFrequency returns it; the head turns once enabled.
+    body = """
+lidar = robot.getDevice("lidar")
+def swept():
+    return sum(1 for r in lidar.getRangeImage() if r != 0.0)  # a beam the head has not passed reads 0
+print(lidar.getFrequency(), lidar.getMinFrequency(), lidar.getMaxFrequency())
+lidar.setFrequency(26)
+lidar.setFrequency(2)
+print(lidar.getFrequency())
+lidar.enable(step)
+robot.step(step)
+first = swept()
+for _ in range(4):
+    robot.step(step)
+five = swept()
+lidar.setFrequency(10)
+robot.step(step)
+print(first, five, swept(), lidar.getFrequency())
+for _ in range(3):
+    robot.step(step)
+print(swept())
+"""
+    lines, err = _run(controller_file, body, "--robot", "hambot-2025")
+    assert lines[0] == "12.0 1.0 25.0" and lines[1] == "2.0"
+    first, five, six, frequency = lines[2].split()
+    # 2 Hz x 32 ms: 0.064 of a turn a step (23 of 360 beams), 0.32 in five steps (115); then
+    # 10 Hz: 0.32 a step more, on from there (not from ahead again: 115 would be swept again)
+    assert abs(int(first) - 23) <= 1 and abs(int(five) - 115) <= 1 and abs(int(six) - 230) <= 1, lines
+    assert frequency == "10.0" and lines[3] == "360"
+    assert err.splitlines() == ["Error: wb_lidar_set_frequency() out of frequency range [1.000000, 25.000000]."]
+
+
+def test_removing_a_world_s_landmark_and_a_wall_takes_them_out_of_the_lidar_and_camera(controller_file):
+    # Webots' Node.remove takes the node out of the scene: nothing sees or meets it any more.
+    body = """
+lidar, camera = robot.getDevice("lidar"), robot.getDevice("camera")
+lidar.enable(step)
+camera.enable(step)
+camera.recognitionEnable(step)
+n = lidar.getHorizontalResolution()
+def look(what):
+    robot.step(step)
+    image = lidar.getRangeImage()
+    ahead = min(image[n // 2 - 2:n // 2 + 3])
+    behind = min(image[:3] + image[-3:])
+    pixels = camera.getImage()
+    yellow = sum(1 for i in range(0, len(pixels), 4)
+                 if pixels[i + 2] > 200 and pixels[i + 1] > 200 and pixels[i] < 60)  # BGRA
+    print(what, round(ahead, 2), round(behind, 2), camera.getRecognitionNumberOfObjects(), yellow > 0)
+children = robot.getRoot().getField("children")
+look("before")
+# the west wall's metre beside the robot, as the course's library imports a wall (two decimals)
+children.importMFNodeFromString(-1, 'DEF W Obstacle { translation -2.00 0.50 0.25 rotation 0.00 0.00 1.00 0.00 '
+                                    'size 0.01 1.00 0.50 }')
+robot.getFromDef("W").remove()
+landmark = [children.getMFNode(i) for i in range(children.getCount())
+            if children.getMFNode(i).getTypeName() == "Landmark"][0]
+landmark.remove()
+look("after")
+robot.simulationReset()
+robot.step(step)
+print([children.getMFNode(i).getTypeName() for i in range(children.getCount())])
+"""
+    start = ["--world", "python/tests/course_shape/WebotsSim/worlds/bug0_landmark.xml", "--start", "pos:1"]
+    lines, err = _run(controller_file, body, *start)
+    before, after = lines[0].split(), lines[1].split()
+    # from (-1.5, 0.1) facing east: the landmark (radius 0.25) at (1.5, 0) ahead, the west wall behind
+    assert before[0] == "before" and abs(float(before[1]) - 2.75) < 0.03 and abs(float(before[2]) - 0.49) < 0.03
+    assert before[3:] == ["1", "True"]
+    assert after[0] == "after" and float(after[1]) > 3.4 and float(after[2]) > 2.0  # the wall behind: inf or far
+    assert after[3:] == ["0", "False"]
+    assert lines[2] == "['HamBot', 'Landmark']"  # the reset brings the world's landmark back
 
 
 def test_supervisor_labels_selection_images_and_devices(controller_file, tmp_path):
@@ -200,16 +275,20 @@ landmark.getField("recognitionColors").removeMF(-1)
 robot.step(step)
 print(camera.getRecognitionNumberOfObjects(), landmark.getField("recognitionColors").getCount())
 root.removeMF(5)
-try:
-    landmark.remove()
-except ValueError as e:
-    print(e)
+lidar = robot.getDevice("lidar")
+lidar.enable(step)
+robot.step(step)
+print(round(lidar.getRangeImage()[180], 2))
+landmark.remove()
+robot.step(step)
+print(lidar.getRangeImage()[180], robot.getFromDef("L"), root.getCount())
 """
     lines, err = _run(controller_file, body)
     assert lines[0] == "True 25 5 8 23"
     assert lines[1] == "the field translation is an SFVec3f, not an SFFloat"
     assert lines[2:4] == ["1", "0 0"]
-    assert lines[4].startswith("removing <Node L id=") and "its solid stays in the simulated world" in lines[4]
+    assert abs(float(lines[4]) - 2.75) < 0.03  # the landmark 3 m ahead, radius 0.25
+    assert lines[5] == "inf None 1"  # removed: the empty floor has no edge
     assert err == ("Error: wb_supervisor_field_remove_mf() called with an out-of-bound index: 5 "
                    "(should be between -2 and 1).\n")
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <numeric>
 
 namespace maze::sim {
@@ -33,11 +34,14 @@ std::size_t first_true(std::size_t lo, std::size_t hi, Predicate holds) {
 
 }  // namespace
 
-LidarSweep::LidarSweep(const LidarModel &model, double revolutions_per_step)
+LidarSweep::LidarSweep(const LidarModel &model, double revolutions_per_step, double start_revolutions)
     : revolutions_per_step_(revolutions_per_step) {
   assert(revolutions_per_step > 0.0);
   const int n = model.spec().horizontal_resolution;
-  for (int i = 0; i < n; ++i) phase_.push_back(model.sweep_phase(i));
+  for (int i = 0; i < n; ++i) {
+    const double u = model.sweep_phase(i) - start_revolutions;
+    phase_.push_back(u - std::floor(u));
+  }
   by_phase_.resize(static_cast<std::size_t>(n));
   std::iota(by_phase_.begin(), by_phase_.end(), 0);
   std::stable_sort(by_phase_.begin(), by_phase_.end(), [&](int a, int b) {

@@ -215,15 +215,6 @@ int Simulation::step(int duration_ms) {
   return stop_requested_ ? -1 : 0;
 }
 
-void Simulation::set_sampling_period(int device, int period_ms) {
-  DeviceState &state = states_[static_cast<std::size_t>(device)];
-  const int period = std::max(0, period_ms);
-  if (period > 0 && state.sampling_period_ms == 0) state.enabled_at_step = steps_;
-  if (period == 0) state.enabled_at_step = -1;
-  state.sampling_period_ms = period;
-  state.read_at_step = -1;
-}
-
 int Simulation::sampling_period(int device) const {
   return states_[static_cast<std::size_t>(device)].sampling_period_ms;
 }
@@ -316,6 +307,7 @@ void Simulation::rotating_range_image_in(const Solids &solids, int device, Devic
   for (std::size_t b = 0; b < n; ++b) {
     const auto i = static_cast<int>(b);
     const std::int64_t s = state.last_pass[b];
+    if (s == 0 && state.sweep_resumed) continue;  // not passed since the frequency changed
     const std::int64_t step = s == 0 ? 0 : state.enabled_at_step + s;
     if (state.beam_steps[b] == step) continue;  // the head has not passed it since
     state.beam_steps[b] = step;

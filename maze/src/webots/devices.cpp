@@ -15,9 +15,18 @@
 #include <webots/Robot.hpp>
 #include <webots/TouchSensor.hpp>
 
+#include <fmt/format.h>
+
+#include "common/standard_streams.hpp"
 #include "maze/sim/simulation.hpp"
 
 namespace webots {
+
+namespace {
+// Webots' Lidar minFrequency and maxFrequency defaults (no robot file here sets them).
+constexpr double kLidarMinFrequency_hz = 1.0;
+constexpr double kLidarMaxFrequency_hz = 25.0;
+}  // namespace
 
 // ---- Device ----
 
@@ -90,6 +99,21 @@ double Lidar::getFov() const { return simulation().lidar_spec(index()).fov_rad; 
 double Lidar::getMinRange() const { return simulation().lidar_spec(index()).min_range_m; }
 double Lidar::getMaxRange() const { return simulation().lidar_spec(index()).max_range_m; }
 double Lidar::getFrequency() const { return simulation().lidar_spec(index()).frequency_hz; }
+double Lidar::getMinFrequency() const { return kLidarMinFrequency_hz; }
+double Lidar::getMaxFrequency() const { return kLidarMaxFrequency_hz; }
+void Lidar::setFrequency(double frequency) {
+  if (!(frequency >= kLidarMinFrequency_hz && frequency <= kLidarMaxFrequency_hz)) {
+    common::print_stderr("Error: wb_lidar_set_frequency() out of frequency range [{:f}, {:f}].\n",
+                         kLidarMinFrequency_hz, kLidarMaxFrequency_hz);
+    return;
+  }
+  if (!(getFrequency() > 0.0)) {
+    common::print_stderr("Warning: Lidar.setFrequency({}): {} is a fixed lidar: it has no head to turn, the "
+                         "call changes nothing\n", frequency, getName());
+    return;
+  }
+  simulation().set_lidar_frequency(index(), frequency);
+}
 
 // ---- Motor ----
 

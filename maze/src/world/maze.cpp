@@ -172,18 +172,24 @@ bool disc_overlaps(const Landmark &l, double x0, double y0, double x1, double y1
   return dx * dx + dy * dy < kLandmarkRadius_m * kLandmarkRadius_m;
 }
 
-// Whether a landmark overlaps the middle sub-cell of cell c's band towards s.
-bool band_middle_holds_solid(const Maze &maze, Cell c, Side s, int k) {
+// Whether a landmark overlaps a sub-cell of cell c on the robot's path from its centre to
+// side s: along the middle row or column, from the sub-cell after the centre to the band
+// middle (k odd; at K = 3 the band middle alone; the rule of controller/mapping/walls.hpp).
+bool path_holds_solid(const Maze &maze, Cell c, Side s, int k) {
   const double size = maze.cell_size_m();
   const double sub = size / k;
   const int mid = k / 2;
-  // The sub-cell's column from the west and row from the south, in sub-cells of the cell.
-  const int column = s == Side::east ? k - 1 : s == Side::west ? 0 : mid;
-  const int row = s == Side::north ? k - 1 : s == Side::south ? 0 : mid;
-  const double x0 = maze.origin_x_m() + c.x * size + column * sub;
-  const double y0 = maze.origin_y_m() + c.y * size + row * sub;
-  return std::any_of(maze.landmarks().begin(), maze.landmarks().end(),
-                     [&](const Landmark &l) { return disc_overlaps(l, x0, y0, x0 + sub, y0 + sub); });
+  const int step_column = s == Side::east ? 1 : s == Side::west ? -1 : 0;
+  const int step_row = s == Side::north ? 1 : s == Side::south ? -1 : 0;
+  for (int n = 1; n <= mid; ++n) {
+    // The sub-cell's column from the west and row from the south, in sub-cells of the cell.
+    const double x0 = maze.origin_x_m() + c.x * size + (mid + step_column * n) * sub;
+    const double y0 = maze.origin_y_m() + c.y * size + (mid + step_row * n) * sub;
+    const bool hit = std::any_of(maze.landmarks().begin(), maze.landmarks().end(),
+                                 [&](const Landmark &l) { return disc_overlaps(l, x0, y0, x0 + sub, y0 + sub); });
+    if (hit) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -194,7 +200,7 @@ Maze with_solid_sides(const Maze &maze, int subcells) {
   for (int y = 0; y < maze.height(); ++y) {
     for (int x = 0; x < maze.width(); ++x) {
       for (const Side s : kSides) {
-        if (band_middle_holds_solid(maze, {x, y}, s, subcells)) scored.set_wall({x, y}, s, true);
+        if (path_holds_solid(maze, {x, y}, s, subcells)) scored.set_wall({x, y}, s, true);
       }
     }
   }

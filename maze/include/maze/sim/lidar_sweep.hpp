@@ -15,8 +15,10 @@ namespace maze::sim {
 
 class LidarSweep {
  public:
-  // revolutions_per_step > 0.
-  LidarSweep(const LidarModel &model, double revolutions_per_step);
+  // revolutions_per_step > 0. start_revolutions: where the head stands when the sweep
+  // begins, in revolutions clockwise from ahead (0 when enabled; where it had turned to when
+  // its frequency changes); a beam then lies at phase u_i - start_revolutions (mod 1).
+  LidarSweep(const LidarModel &model, double revolutions_per_step, double start_revolutions = 0.0);
 
   // The step (1 .. steps_enabled) of beam i's last pass at or before steps_enabled steps,
   // 0 when the head has not reached it yet. The reference: one beam, a division and two

@@ -105,6 +105,11 @@ struct DeviceState {
   std::vector<std::int64_t> beam_steps;
   std::vector<std::int64_t> last_pass;  // scratch: LidarSweep::last_pass_steps
   double cache[3] = {0.0, 0.0, 0.0};
+  // A rotating lidar's head: where it stood (revolutions from ahead) when its sweep began at
+  // enabled_at_step, and whether that was a frequency change (then a beam the head has not
+  // passed since keeps its reading).
+  double sweep_start_rev = 0.0;
+  bool sweep_resumed = false;
 };
 
 // The pose at the end of a step.
@@ -153,8 +158,7 @@ class Simulation {
   std::int64_t time_ms() const { return time_ms_; }
   // Basic time steps since the simulation began, resets included: what the time limit bounds.
   std::int64_t steps() const { return steps_; }
-  // Lidar beams cast so far, all lidars: a fixed lidar's image each step it is read, a
-  // rotating lidar's beams swept since last cast (bench/'s unit of work).
+  // Lidar beams cast so far, all lidars (bench/'s unit of work): fixed images read, rotating beams swept.
   std::int64_t lidar_beams_cast() const { return lidar_beams_cast_; }
   void request_stop() { stop_requested_ = true; }  // the next Robot::step returns -1 (Webots quits)
   // Collisions so far: the steps in which the body met a solid (was held out of it) after a
@@ -166,6 +170,9 @@ class Simulation {
   // is simulated on its geometry from then on. Throws common::InputError for a bad size.
   void add_obstacle(const maze::Obstacle &obstacle);
   void add_disc(const maze::ArenaDisc &disc);
+  // Node.remove: takes what footprint covers of boxes along it, or cylinders at (x, y); how many.
+  int remove_obstacle(const maze::Obstacle &footprint);
+  int remove_disc(double x_m, double y_m);
   // Moves the robot to pose, its origin z_m above the floor (a supervisor's translation and
   // rotation): wheels as they were, every reading afresh, GPS z reading z_m from then on.
   void teleport(const maze::sim::Pose &pose, double z_m);
@@ -187,6 +194,8 @@ class Simulation {
 
   const float *lidar_range_image(int device);
   const maze::sim::LidarSpec &lidar_spec(int device) const;
+  // A rotating lidar's head turns at frequency_hz on from where it stands (InputError: fixed).
+  void set_lidar_frequency(int device, double frequency_hz);
 
   void motor_set_position(int device, double position_rad);
   void motor_set_velocity(int device, double velocity_rad_s);
@@ -208,20 +217,17 @@ class Simulation {
 
   template <typename D>
   void add_device(const std::string &name, Kind kind, int spec);
-  // The constructor's part once the solids are set.
-  void set_up();
-  // The solids from now on: the geometry's (SolidGeometry), kept as geometry_.
-  void use_geometry(maze::Arena geometry);
-  // The solids built again from geometry_ after a supervisor's edit.
-  void rebuild_solids();
+  void set_up();  // the constructor's part once the solids are set
+  void use_geometry(maze::Arena geometry);  // the solids from now on: the geometry's, kept as geometry_
+  void restart_sweep(DeviceState &state, double start_rev);  // from enabled_at_step, the head at start_rev
+  void rebuild_solids();  // the solids built again from geometry_ after a supervisor's edit
   // f(the solids): the one choice between the wall grid and the geometry, made once per query.
   template <typename F>
   decltype(auto) with_solids(F &&f) const;
   template <typename Solids>
   void rotating_range_image_in(const Solids &solids, int device, DeviceState &state,
                                const maze::sim::LidarSpec &spec);
-  // One basic step of the differential drive: exact arcs at the wheels' constant rates.
-  void advance(double dt_s);
+  void advance(double dt_s);  // one basic step of the drive: exact arcs at the wheels' constant rates
   void turn_wheel(Wheel &wheel, double rate_rad_s, double h_s, bool arrives);
   // The body along the arc of wheel rates (rad/s) for h_s: one arc in free space, arcs of at
   // most a tenth of the body radius each (pushed out of walls after each) near walls.
@@ -258,9 +264,8 @@ class Simulation {
   maze::sim::Pose initial_pose_;
   double height_m_ = 0.0;                           // the robot's origin above the floor
   maze::sim::Pose pose_;
-  // Where the body's centre touches no wall (WallGrid::free_centres), computed when the
-  // body last left the previous box: inside it, a physics substep needs no push_out. The
-  // pose only changes in advance(), so the box cannot go stale.
+  // Where the body's centre touches no wall (WallGrid::free_centres), computed when the body last
+  // left the previous box: inside it a substep needs no push_out (the pose changes in advance()).
   std::optional<maze::sim::Box> free_centres_;
   static constexpr int kLeftWheel = 0, kRightWheel = 1;  // wheels_[kLeftWheel]: left motor, encoder
   Wheel wheels_[2];

@@ -147,10 +147,12 @@ class Maze {
 };
 
 // The lattice's truth for scoring with its solids standing in cells (docs/models.md, "A solid
-// inside a cell"): the maze with a wall on every side where a landmark's disc overlaps the
-// middle sub-cell of that side's band, in either cell (K = subcells a cell; the two
-// sub-cells the wall reading judges a side on, controller/mapping/walls.hpp). A landmark on
-// no such sub-cell changes nothing; a maze without landmarks comes back as it is.
+// inside a cell"): the maze with a wall on every side where a landmark's disc overlaps a
+// sub-cell on the robot's path across it: in either cell, along the middle row or column,
+// the sub-cells after the centre up to that side's band middle (K = subcells a cell, odd; at
+// K = 3 the band middle alone: the sub-cells the wall reading judges a side on,
+// controller/mapping/walls.hpp). A landmark on no such sub-cell changes nothing; a maze
+// without landmarks comes back as it is.
 Maze with_solid_sides(const Maze &maze, int subcells);
 
 }  // namespace maze

@@ -33,6 +33,14 @@ class Lidar : public Device {
   // Hz: a rotating lidar's head frequency; 0 for a fixed lidar here (a real Webots returns
   // the node's defaultFrequency, 10 Hz unless set, whatever the type).
   double getFrequency() const;
+  // Hz: the range setFrequency takes, Webots' minFrequency and maxFrequency defaults (1, 25).
+  double getMinFrequency() const;
+  double getMaxFrequency() const;
+  // A rotating lidar's head turns at `frequency` Hz from now on, on from where it stands
+  // (each beam keeps its reading until the head passes it again) and getFrequency() returns
+  // it. Outside [getMinFrequency(), getMaxFrequency()]: Webots' error line on stderr, nothing
+  // changes. On a fixed lidar (no head to turn) a warning line says the call has no effect.
+  void setFrequency(double frequency);
 
  private:
   friend class embedded::Simulation;
