@@ -42,6 +42,10 @@ TEST_CASE("room options: one that does nothing for the strategy or model asked i
                                  "warning: --dilate has no effect without --strategy wavefront (frontier keeps the "
                                  "body's radius clear)"});
   CHECK(room_warnings({"--goal", "--dilate"}, with(StrategyKind::wavefront)).empty());
+  CHECK(room_warnings({"--verbose"}, with(StrategyKind::wander)) ==
+        std::vector<std::string>{"warning: --verbose has no effect without --strategy frontier (its frontier left and "
+                                 "set aside are the details)"});
+  CHECK(room_warnings({"--verbose"}, with(StrategyKind::frontier)).empty());
   CHECK(room_warnings({"--waypoints", "--laps"}, with(StrategyKind::wander)) ==
         std::vector<std::string>{"warning: --waypoints has no effect without --strategy waypoints",
                                  "warning: --laps has no effect without --strategy waypoints"});

@@ -126,6 +126,20 @@ TEST_CASE("room frontier: the IR room's summary says the path, the step the cove
   CHECK(json.find("\"frontier\": {") != std::string::npos);
 }
 
+TEST_CASE("room frontier: --verbose prints why the run ended after the end line") {
+  const std::string world = std::string(WORLDS_DIR) + "/ir_room.room";
+  const test_cli::Ran ran = test_cli::run({"room", world, "--strategy", "frontier", "--quiet", "--verbose"});
+  CHECK(ran.status == 0);
+  const std::size_t end = ran.out.find("\nend: done (");
+  const std::size_t frontier = ran.out.find("\nfrontier: no frontier left; set aside: ");
+  REQUIRE(end != std::string::npos);
+  REQUIRE(frontier != std::string::npos);
+  CHECK(frontier > end);
+  CHECK(ran.out.find("without room for the body (") != std::string::npos);
+  // Without it the line is not printed.
+  CHECK(test_cli::run({"room", world, "--strategy", "frontier", "--quiet"}).out.find("\nfrontier: ") == std::string::npos);
+}
+
 TEST_SUITE("acceptance") {
 TEST_CASE("room frontier: the obstacle field with the lidar drives no comb along the obstacles") {
   // With probes for the lidar, and the unobserved insides of the walls behind their faces as

@@ -69,6 +69,7 @@ void add_room_options(CLI::App &cmd, RoomInput &in) {
   add_model_options(cmd, o.sensor);
   add_clamp_option(cmd, o.sensor);
   add_field_option(cmd, o.output, "--quiet");
+  add_field_options(cmd, o.metres, {"--verbose"});
   add_out_option(cmd, o.output.out_dir);
 }
 

@@ -127,6 +127,13 @@ std::span<const OptionField<MetresOptions>> option_fields() {
                           "left (default none: each from the rim, trace.csv's depths from the centre)");
                     },
                     [](Metres &o, const std::string &text) { o.depth_origin = point_of(text, "--depth-origin"); }),
+      metres_plain("--verbose",
+                   [](const Metres &) {
+                     return std::string(
+                         "frontier: after the end line, why it ended: the frontier cells left and the groups set "
+                         "aside (as summary.json's frontier)");
+                   },
+                   [](Metres &o) -> FieldRef { return &o.verbose; }),
   };
   return fields;
 }

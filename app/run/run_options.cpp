@@ -242,6 +242,7 @@ namespace {
 
 bool waypoints(const RunOptions &o) { return o.strategy == explore::StrategyKind::waypoints; }
 bool wavefront(const RunOptions &o) { return o.strategy == explore::StrategyKind::wavefront; }
+bool frontier(const RunOptions &o) { return o.strategy == explore::StrategyKind::frontier; }
 
 // The rules of a run in metres; the depth rays' read like the set-up table's (app/run/model_rules.hpp).
 constexpr OptionUse<RunOptions> kMetresOptionUses[] = {
@@ -249,6 +250,7 @@ constexpr OptionUse<RunOptions> kMetresOptionUses[] = {
     {"--laps", "without --strategy waypoints", waypoints},
     {"--goal", "without --strategy wavefront", wavefront},
     {"--dilate", "without --strategy wavefront (frontier keeps the body's radius clear)", wavefront},
+    {"--verbose", "without --strategy frontier (its frontier left and set aside are the details)", frontier},
 };
 
 }  // namespace

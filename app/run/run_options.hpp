@@ -82,6 +82,7 @@ struct MetresOptions {
   std::optional<mapping::Point> depth_origin;
   std::vector<double> snapshots_at_s;         // --snapshots-at: the map printed at these simulated seconds
   std::vector<std::int64_t> snapshot_steps;   // --snapshot-steps: and at these control steps
+  bool verbose = false;  // --verbose: frontier's details (the frontier left and set aside) after the end line
 };
 
 // run --localize: the localization lab's grid Bayes filter follows the robot, knowing the

@@ -73,18 +73,30 @@ void add_score(Report &e, const MetricRunSummary &s) {
   }
 }
 
-// The frontier left and set aside at the end (summary.json).
-void add_frontier(Report &e, const MetricRunSummary &s) {
+// The frontier left and set aside at the end: summary.json's, and with --verbose a line after
+// the end line.
+void add_frontier(Report &e, const MetricRunSummary &s, bool verbose) {
   if (!s.frontier) return;
   const explore::FrontierSetAside &a = s.frontier->set_aside;
-  e.json_only("frontier", Json{{"detail", s.frontier->detail},
-                               {"left_cells", s.frontier->left_cells},
-                               {"small_groups", a.small_groups},
-                               {"small_cells", a.small_cells},
-                               {"enclosed_groups", a.enclosed_groups},
-                               {"enclosed_cells", a.enclosed_cells},
-                               {"no_room_groups", a.no_room_groups},
-                               {"no_room_cells", a.no_room_cells}});
+  Json json{{"detail", s.frontier->detail},
+            {"left_cells", s.frontier->left_cells},
+            {"small_groups", a.small_groups},
+            {"small_cells", a.small_cells},
+            {"enclosed_groups", a.enclosed_groups},
+            {"enclosed_cells", a.enclosed_cells},
+            {"no_room_groups", a.no_room_groups},
+            {"no_room_cells", a.no_room_cells}};
+  if (!verbose) {
+    e.json_only("frontier", std::move(json));
+    return;
+  }
+  const std::string detail = s.frontier->detail.empty() ? "no frontier left" : s.frontier->detail;
+  e.both("frontier",
+         fmt::format("{}; set aside: {} small groups ({} cells), {} enclosed ({} cells), {} without room for the "
+                     "body ({} cells)",
+                     detail, a.small_groups, a.small_cells, a.enclosed_groups, a.enclosed_cells, a.no_room_groups,
+                     a.no_room_cells),
+         std::move(json));
 }
 
 }  // namespace
@@ -101,7 +113,7 @@ Report metric_run_report(const RunOptions &options, const std::string &robot_nam
   const std::string ending(robot::to_string(summary.ending));
   e.both("end", end_text(ending, summary.message), Json(ending));
   e.json_only("end_message", summary.message);
-  add_frontier(e, summary);
+  add_frontier(e, summary, options.metres.verbose);
   e.both("steps", std::to_string(summary.steps), Json(summary.steps));
   add_score(e, summary);
   e.both("sim_time_s", fmt::format("{:.3f}", summary.sim_time_s), Json(summary.sim_time_s));
