@@ -35,6 +35,7 @@ what is behind it; the sky above.
 import math
 
 from . import scene as _scene
+from .devices import _Device, _Sensor
 
 WIDTH_PX = 224
 HEIGHT_PX = 224
@@ -136,28 +137,12 @@ def recognise(landmark, camera):
         list(landmark.colors), "")
 
 
-class Camera:
+class Camera(_Sensor):
     """The course HamBot's camera (Webots' Camera, with recognition)."""
 
     def __init__(self, name="camera"):
-        self._name = name
-        self._period_ms = 0
+        super().__init__(name)
         self._recognition_ms = 0
-
-    def getName(self):
-        return self._name
-
-    def getModel(self):
-        return ""
-
-    def enable(self, sampling_period):
-        self._period_ms = int(sampling_period)
-
-    def disable(self):
-        self._period_ms = 0
-
-    def getSamplingPeriod(self):
-        return self._period_ms
 
     def getWidth(self):
         return WIDTH_PX
@@ -265,20 +250,15 @@ def _bgra(colour):
     return (b, g, r, 255)
 
 
-class Display:
+class Display(_Device):
     """The course HamBot's "User Display" (Webots' Display, 64 x 64): it accepts every drawing
     call and shows nothing (there is no window here)."""
 
     RGB, RGBA, ARGB, BGRA, ABGR = 0x3, 0x4, 0x5, 0x6, 0x7
 
     def __init__(self, name="User Display", width=64, height=64):
-        self._name, self._width, self._height = name, width, height
-
-    def getName(self):
-        return self._name
-
-    def getModel(self):
-        return ""
+        super().__init__(name)
+        self._width, self._height = width, height
 
     def getWidth(self):
         return self._width
