@@ -91,6 +91,11 @@ TEST_CASE("metric frontier: with the lidar, no frontier behind a cell a beam has
   CHECK(rows_of(m.map, explore::frontier_cells(m.map, false)) == std::vector<std::string>{"FFFFFF", "------", "------"});
   // The lidar: (2, 2) lies behind the cell the beam ended in.
   CHECK(rows_of(m.map, explore::frontier_cells(m.map, true)) == std::vector<std::string>{"FF-FFF", "------", "------"});
+  // One cell at a time (what a visit's drive watches its aim with) says the same.
+  CHECK(!explore::is_frontier_cell(m.map, m.at(2, 2), true));
+  CHECK(explore::is_frontier_cell(m.map, m.at(2, 2), false));
+  CHECK(explore::is_frontier_cell(m.map, m.at(3, 2), true));
+  CHECK(!explore::is_frontier_cell(m.map, m.at(3, 1), true));  // seen free
   // A touch marks a surface too.
   m.map.observe_contact(m.at(4, 1));
   CHECK(m.map.marked_occupied_at(m.at(4, 1)));

@@ -84,18 +84,21 @@ MapProgress progress_of(const sensing::MetricMap &map, std::size_t free_for_plan
   return now;
 }
 
+bool is_frontier_cell(const sensing::MetricMap &map, std::size_t n, bool occupied_marks_are_echo_ends) {
+  if (!map.unobserved_at(n)) return false;
+  const MetricCell c = map.cell_of_index(n);
+  for (const auto &d : kNeighbours) {
+    const MetricCell nb{c.i + d.first, c.j + d.second};
+    if (!map.contains(nb)) continue;
+    const std::size_t k = map.index(nb);
+    if (occupied_marks_are_echo_ends ? seen_clear(map, k) : seen_free(map, k)) return true;
+  }
+  return false;
+}
+
 std::vector<bool> frontier_cells(const sensing::MetricMap &map, bool occupied_marks_are_echo_ends) {
   std::vector<bool> cells(map.size(), false);
-  for (std::size_t n = 0; n < map.size(); ++n) {
-    if (!map.unobserved_at(n)) continue;
-    const MetricCell c = map.cell_of_index(n);
-    for (const auto &d : kNeighbours) {
-      const MetricCell nb{c.i + d.first, c.j + d.second};
-      if (!map.contains(nb)) continue;
-      const std::size_t k = map.index(nb);
-      if (occupied_marks_are_echo_ends ? seen_clear(map, k) : seen_free(map, k)) cells[n] = true;
-    }
-  }
+  for (std::size_t n = 0; n < map.size(); ++n) cells[n] = is_frontier_cell(map, n, occupied_marks_are_echo_ends);
   return cells;
 }
 

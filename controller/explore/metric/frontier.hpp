@@ -46,6 +46,9 @@ struct MapProgress {
 // The progress after a round whose planning map left `free_for_planning` cells open.
 MapProgress progress_of(const sensing::MetricMap &map, std::size_t free_for_planning, const MapProgress &before);
 
+// Whether cell n is a frontier cell (frontier_cells below says which).
+bool is_frontier_cell(const sensing::MetricMap &map, std::size_t n, bool occupied_marks_are_echo_ends);
+
 // Frontier cells: never observed, beside a cell seen free (p < 0.5), one flag a map cell.
 // occupied_marks_are_echo_ends (the lidar: a cell it marks occupied holds a beam's end): beside
 // a cell seen free that was never marked occupied (MetricMap::marked_occupied_at); a cell an

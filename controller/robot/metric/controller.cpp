@@ -129,7 +129,7 @@ MetricCell MetricController::robot_cell() const {
           clampi((position_.y_m - b.y_start_m) / map_.cell_m(), map_.cells_y())};
 }
 
-Motion MetricController::go_to(Point p, StopWhen when, bool *stopped) {
+Motion MetricController::go_to(Point p, StopWhen when, bool *stopped, const std::function<bool()> *done) {
   *stopped = false;
   const double ex = p.x_m - position_.x_m;
   const double ey = p.y_m - position_.y_m;
@@ -140,6 +140,7 @@ Motion MetricController::go_to(Point p, StopWhen when, bool *stopped) {
   const std::function<void()> none;
   bool hit = false;
   const std::function<bool()> stop = [&] {
+    if (done != nullptr && (*done)()) return true;
     if (when == StopWhen::never) return false;
     hit = when == StopWhen::obstacle_ahead ? blocked_ahead() : touching_ahead();
     return hit;

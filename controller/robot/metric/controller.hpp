@@ -21,10 +21,12 @@
 //              robot's centre has driven through) to the frontier's target
 //              (explore/metric/frontier.hpp: a cell within view_m of a frontier cell that
 //              sees it, the least path against the gain of its group; groups under
-//              min_frontier_m, enclosed ones and those none of whose cells the body could
-//              stand on are no targets, explore/metric/frontier_groups.hpp; with the lidar a
-//              frontier cell borders a cell no beam has ended in), drive the path, then turn
-//              a full turn there scanning. A
+//              min_frontier_m (lidar_min_frontier_m with the lidar), enclosed ones and those
+//              none of whose cells the body could stand on are no targets,
+//              explore/metric/frontier_groups.hpp; with the lidar a frontier cell borders a
+//              cell no beam has ended in), drive the path, then turn a full turn there
+//              scanning; the drive ends early once its frontier cell is no longer one (seen
+//              on the way). A
 //              frontier cell still unobserved after visits that aimed at it, or left without
 //              a target in a round where none had one, is set aside by itself, and tried again
 //              once the map has progressed. When no frontier cell has a target, a probe drives
@@ -76,6 +78,7 @@ struct MetricOptions {
   double back_off_m = 0.1;              // wander
   double view_m = 0.5;                  // frontier: a target within this of its frontier
   double min_frontier_m = 0.1;          // frontier: a group shorter than this is no target
+  double lidar_min_frontier_m = 0.3;    // the same with the lidar: a shorter gap lies between echoes
   std::uint64_t seed = 1;               // wander's turns
   double body_radius_m = 0.09;          // the cells under the body count as seen free for planning
   mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS
@@ -138,8 +141,9 @@ class MetricController {
   // A bump, or a return ahead about to touch the body (legs planned on the grown map).
   bool touching_ahead() const;
   enum class StopWhen { never, obstacle_ahead, touching };
-  // Turn to p, then drive straight to it, ending early as `when` says; sets *stopped then.
-  Motion go_to(mapping::Point p, StopWhen when, bool *stopped);
+  // Turn to p, then drive straight to it, ending early as `when` says (sets *stopped then) or
+  // once `done` says the drive has served its end (nullptr: never).
+  Motion go_to(mapping::Point p, StopWhen when, bool *stopped, const std::function<bool()> *done = nullptr);
   Motion look_around();
   std::vector<bool> obstacles(bool unknown_blocked) const;
   // The cells seen occupied grown for planning: wavefront by `dilate` cells (the lab's rule);
@@ -161,12 +165,14 @@ class MetricController {
                                                               const std::vector<std::int32_t> &gain) const;
   // The progress of the map now (explore::progress_of on the planning map).
   explore::MapProgress progress_now(const explore::MapProgress &before) const;
-  // Drives to the target and looks around there; a touch or a wedge on the way backs off.
+  // Drives to the target and looks around there; a touch or a wedge on the way backs off; the
+  // aim seen on the way (no frontier cell any more) ends the visit there.
   Motion visit_frontier(const explore::FrontierTarget &t, const std::vector<bool> &blocked);
   // Why frontier ended `incomplete`: the cells out of reach and those set aside.
   std::string frontier_left_message(std::size_t unreachable, std::size_t aside) const;
-  // Drives path_'s corners until its end, a touch (sets *stopped) or the rest of it seen blocked.
-  Motion drive_path_corners(bool *stopped);
+  // Drives path_'s corners until its end, a touch (sets *stopped), the rest of it seen blocked
+  // or `done` saying the drive has served its end (nullptr: never).
+  Motion drive_path_corners(bool *stopped, const std::function<bool()> *done = nullptr);
   // Straight back by back_off_m.
   Motion back_off();
   // The planner's view of the body's own observations (explore/metric/sweep.hpp).

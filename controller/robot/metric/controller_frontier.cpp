@@ -28,7 +28,7 @@ std::string cells_text(std::size_t n) { return fmt::format("{} frontier cell{}",
 
 }  // namespace
 
-Motion MetricController::drive_path_corners(bool *stopped) {
+Motion MetricController::drive_path_corners(bool *stopped, const std::function<bool()> *done) {
   *stopped = false;
   // Drive the path's corners: cells where the direction changes, and the last.
   for (std::size_t k = 1; k < path_.size(); ++k) {
@@ -38,11 +38,11 @@ Motion MetricController::drive_path_corners(bool *stopped) {
       const long d2 = static_cast<long>(path_[k + 1]) - static_cast<long>(path_[k]);
       if (d1 == d2) continue;
     }
-    if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[k])), StopWhen::touching, stopped);
+    if (const Motion m = go_to(map_.centre_of(map_.cell_of_index(path_[k])), StopWhen::touching, stopped, done);
         m != Motion::ok) {
       return m;
     }
-    if (*stopped) return Motion::ok;
+    if (*stopped || (done != nullptr && (*done)())) return Motion::ok;
     // The map grew while driving: stop when the rest of the path is now blocked.
     bool now_blocked = false;
     const std::vector<bool> fresh = obstacles(false);
@@ -68,14 +68,18 @@ Motion MetricController::visit_frontier(const explore::FrontierTarget &t, const 
   const auto path = plan::descend(g, wave_, here);
   path_ = path ? *path : std::vector<std::size_t>{here};
   bool stopped = false;
-  Motion driven = drive_path_corners(&stopped);
+  // The drive ends once the aim is no frontier cell: seen on the way, or no cell seen clear
+  // beside it any more; there is nothing left to look at there.
+  const bool lidar = sensing::uses_lidar(options_.model.kind);
+  const std::function<bool()> aim_resolved = [&] { return !explore::is_frontier_cell(map_, t.aim, lidar); };
+  Motion driven = drive_path_corners(&stopped, &aim_resolved);
   if (driven == Motion::no_progress) {
     // Wedged on something the map had not shown (a corner between the beams): stopped, as
     // by a touch; the visit counts against its frontier cell like any other.
     stopped = true;
     driven = Motion::ok;
   }
-  if (driven != Motion::ok) return driven;
+  if (driven != Motion::ok || aim_resolved()) return driven;
   if (stopped) {
     // Back off a little before planning again (from a wedge it may not get far).
     if (const Motion m = back_off(); m != Motion::ok && m != Motion::no_progress) return m;
@@ -134,7 +138,9 @@ MetricEnding MetricController::run_frontier() {
   const plan::FlatGrid g{map_.cells_x(), map_.cells_y()};
   explore::FrontierVisits visits(map_.size());
   const int view_cells = std::max(1, static_cast<int>(std::floor(metric_.view_m / map_.cell_m())));
-  const auto min_cells = static_cast<std::size_t>(std::max(1.0, std::round(metric_.min_frontier_m / map_.cell_m())));
+  const bool lidar = sensing::uses_lidar(options_.model.kind);
+  const double min_frontier_m = lidar ? metric_.lidar_min_frontier_m : metric_.min_frontier_m;
+  const auto min_cells = static_cast<std::size_t>(std::max(1.0, std::round(min_frontier_m / map_.cell_m())));
   if (const Motion m = look_around(); m != Motion::ok) return finish(m);
   explore::MapProgress progress = progress_now({});
   std::vector<bool> swept(map_.size(), false);  // cells a sweep leg or a probe aimed at and left unobserved
@@ -144,7 +150,6 @@ MetricEnding MetricController::run_frontier() {
     // Groups without room for the body are set aside where the cells seen occupied hold an echo's
     // end (the lidar) or the body's own contacts stand over the arcs (the sweep); the IR's arcs
     // close cells of open floor (generated arenas fell to 64 %).
-    const bool lidar = sensing::uses_lidar(options_.model.kind);
     const std::vector<bool> closed_to_body = obstacles(false);
     explore::FrontierGroups groups = explore::group_frontier(map_, explore::frontier_cells(map_, lidar), min_cells,
                                                              lidar || body_observes_ ? &closed_to_body : nullptr);
