@@ -21,12 +21,11 @@
 //              robot's centre has driven through) to the frontier's target
 //              (explore/metric/frontier.hpp: a cell within view_m of a frontier cell that
 //              sees it, the least path against the gain of its group; groups under
-//              min_frontier_m (lidar_min_frontier_m with the lidar), enclosed ones and those
-//              none of whose cells the body could stand on are no targets,
-//              explore/metric/frontier_groups.hpp; with the lidar a frontier cell borders a
-//              cell no beam has ended in), drive the path, then turn a full turn there
-//              scanning; the drive ends early once its frontier cell is no longer one (seen
-//              on the way). A
+//              min_frontier_m, enclosed ones and those none of whose cells the body could
+//              stand on are no targets, explore/metric/frontier_groups.hpp; with the lidar a
+//              frontier cell borders a cell no beam has ended in), drive the path, then turn
+//              a full turn there scanning; the drive ends early once its frontier cell is no
+//              longer one (seen on the way). A
 //              frontier cell still unobserved after visits that aimed at it, or left without
 //              a target in a round where none had one, is set aside by itself, and tried again
 //              once the map has progressed. When no frontier cell has a target, a probe drives
@@ -78,7 +77,6 @@ struct MetricOptions {
   double back_off_m = 0.1;              // wander
   double view_m = 0.5;                  // frontier: a target within this of its frontier
   double min_frontier_m = 0.1;          // frontier: a group shorter than this is no target
-  double lidar_min_frontier_m = 0.3;    // the same with the lidar: a shorter gap lies between echoes
   std::uint64_t seed = 1;               // wander's turns
   double body_radius_m = 0.09;          // the cells under the body count as seen free for planning
   mapping::Point start;                 // where the robot starts (the lab gives it): odometry's origin without a GPS

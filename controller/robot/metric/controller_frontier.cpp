@@ -139,8 +139,7 @@ MetricEnding MetricController::run_frontier() {
   explore::FrontierVisits visits(map_.size());
   const int view_cells = std::max(1, static_cast<int>(std::floor(metric_.view_m / map_.cell_m())));
   const bool lidar = sensing::uses_lidar(options_.model.kind);
-  const double min_frontier_m = lidar ? metric_.lidar_min_frontier_m : metric_.min_frontier_m;
-  const auto min_cells = static_cast<std::size_t>(std::max(1.0, std::round(min_frontier_m / map_.cell_m())));
+  const auto min_cells = static_cast<std::size_t>(std::max(1.0, std::round(metric_.min_frontier_m / map_.cell_m())));
   if (const Motion m = look_around(); m != Motion::ok) return finish(m);
   explore::MapProgress progress = progress_now({});
   std::vector<bool> swept(map_.size(), false);  // cells a sweep leg or a probe aimed at and left unobserved
