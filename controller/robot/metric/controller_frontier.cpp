@@ -79,11 +79,12 @@ Motion MetricController::visit_frontier(const explore::FrontierTarget &t, const 
     stopped = true;
     driven = Motion::ok;
   }
-  if (driven != Motion::ok || aim_resolved()) return driven;
+  if (driven != Motion::ok) return driven;
   if (stopped) {
     // Back off a little before planning again (from a wedge it may not get far).
     if (const Motion m = back_off(); m != Motion::ok && m != Motion::no_progress) return m;
   }
+  if (aim_resolved()) return Motion::ok;
   if (map_.index(robot_cell()) == t.target || !stopped) return look_around();
   return Motion::ok;
 }
