@@ -4,14 +4,17 @@
 # compiles when an earlier file of its batch has it; a plain `cmake -S . -B build` then fails.
 # This configures a build without unity mode (configure only: seconds), then runs each
 # translation unit's own compile command, outside tests/, with -fsyntax-only, JOBS at a time,
-# and fails naming the files that do not compile, with their first error.
+# and fails naming the files that do not compile, with their first error. The compiler is
+# clang++ when there is one: it parses these files in about two thirds of g++'s time, over
+# the same libstdc++ headers, so an include missing for one is missing for the other.
 #   usage: scripts/check_includes.sh [SOURCE_DIR] [JOBS]
 set -eu
 source_dir=$(cd "${1:-$(dirname "$0")/..}" && pwd)
 jobs=${2:-2}
 build="$source_dir/build/check-includes"  # configured again each time; nothing is compiled into it
 mkdir -p "$build"
-cmake -S "$source_dir" -B "$build" -G Ninja -DCMAKE_UNITY_BUILD=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DMAZE_MAPPER_PYTHON=AUTO \
+compiler=$(command -v clang++ || command -v c++)
+cmake -S "$source_dir" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_UNITY_BUILD=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DMAZE_MAPPER_PYTHON=AUTO \
   >"$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
 python3 - "$build/compile_commands.json" "$source_dir" "$jobs" <<'PY'
 import json, shlex, subprocess, sys

@@ -32,12 +32,22 @@ struct Png {
   int height = 0;
   std::vector<unsigned char> rgb;
   std::vector<int> at(int x, int y) const {
-    REQUIRE(x >= 0);
-    REQUIRE(y >= 0);
-    REQUIRE(x < width);
-    REQUIRE(y < height);
-    const auto i = static_cast<std::size_t>((y * width + x) * 3);
+    const std::size_t i = offset(x, y);
     return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+  // Whether pixel (x, y) is colour c, without a copy (for scans over every pixel).
+  bool is(int x, int y, app::Rgb c) const {
+    const std::size_t i = offset(x, y);
+    return rgb[i] == c.r && rgb[i + 1] == c.g && rgb[i + 2] == c.b;
+  }
+
+ private:
+  // One branch a pixel, not four assertions: the scans read every pixel of a picture.
+  std::size_t offset(int x, int y) const {
+    if (x < 0 || y < 0 || x >= width || y >= height) {
+      FAIL("pixel (" << x << ", " << y << ") outside a " << width << " x " << height << " picture");
+    }
+    return static_cast<std::size_t>((y * width + x) * 3);
   }
 };
 

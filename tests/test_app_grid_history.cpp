@@ -30,7 +30,7 @@ int unknown_pixels(const Png &png, int map_height) {
   int n = 0;
   for (int y = 0; y < map_height; ++y) {
     for (int x = 0; x < png.width; ++x) {
-      if (png.at(x, y) == std::vector<int>{app::kUnknownTone.r, app::kUnknownTone.g, app::kUnknownTone.b}) ++n;
+      if (png.is(x, y, app::kUnknownTone)) ++n;
     }
   }
   return n;

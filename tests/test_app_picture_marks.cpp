@@ -28,7 +28,7 @@ using test_png::rgb;
 
 // The run of pixels in colour c along row y through x (0 when (x, y) is not in c).
 int run_across(const test_png::Png &png, int x, int y, app::Rgb c) {
-  if (png.at(x, y) != rgb(c)) return 0;
+  if (!png.is(x, y, c)) return 0;
   int left = x;
   int right = x;
   while (left > 0 && png.at(left - 1, y) == rgb(c)) --left;
@@ -41,7 +41,7 @@ int pixels_near(const test_png::Png &png, app::PointPx at, int half, app::Rgb c)
   int n = 0;
   for (int y = static_cast<int>(at.y) - half; y <= static_cast<int>(at.y) + half; ++y) {
     for (int x = static_cast<int>(at.x) - half; x <= static_cast<int>(at.x) + half; ++x) {
-      if (x >= 0 && y >= 0 && x < png.width && y < png.height && png.at(x, y) == rgb(c)) ++n;
+      if (x >= 0 && y >= 0 && x < png.width && y < png.height && png.is(x, y, c)) ++n;
     }
   }
   return n;

@@ -87,7 +87,7 @@ struct Case {
 std::pair<int, int> first_pixel_of(const test_png::Png &png, app::Rgb c) {
   for (int y = 0; y < png.height; ++y) {
     for (int x = 0; x < png.width; ++x) {
-      if (png.at(x, y) == test_png::rgb(c)) return {x, y};
+      if (png.is(x, y, c)) return {x, y};
     }
   }
   return {-1, -1};
