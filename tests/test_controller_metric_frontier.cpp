@@ -10,6 +10,7 @@
 
 #include "explore/metric/frontier.hpp"
 #include "explore/metric/frontier_groups.hpp"
+#include "explore/metric/sweep.hpp"
 #include "mapping/sensor_model.hpp"
 #include "plan/metric/wavefront.hpp"
 #include "sensing/metric/map.hpp"
@@ -101,7 +102,7 @@ TEST_CASE("metric frontier: with the lidar, no frontier behind a cell a beam has
   CHECK(m.map.marked_occupied_at(m.at(4, 1)));
 }
 
-TEST_CASE("metric frontier: a group no cell of which the body could stand on is no target") {
+TEST_CASE("metric frontier: a group no cell of which the body could cover is no target") {
   // West: open unobserved ground. East: a gap of one cell between two obstacles' faces, beside
   // cells seen occupied, so closed to the body (the planner's grown cells).
   const PictureMap m({"   ..#   ",
@@ -125,6 +126,10 @@ TEST_CASE("metric frontier: a group no cell of which the body could stand on is 
   CHECK(aside.no_room_cells == groups.cells[gap]);
   // Without the body's closed cells, no group lacks room.
   CHECK(explore::group_frontier(m.map, frontier, 1).worth_a_look(gap));
+  // A cell the body cannot stand on but covers from a neighbouring cell open to it has room,
+  // as the judge counts it reachable: here (6, 1), east of the gap, is open.
+  closed[m.at(6, 1)] = false;
+  CHECK(explore::group_frontier(m.map, frontier, 1, &closed).worth_a_look(gap));
 }
 
 TEST_CASE("metric frontier: the target is the nearest cell reached that sees a frontier cell") {
@@ -245,4 +250,21 @@ TEST_CASE("metric frontier: a farther target that looks at a larger group wins o
   CHECK(explore::frontier_target(m.map, 0.6, aims, 1, visits, steps, &gain)->aim == m.at(1, 1));
   gain[m.at(4, 1)] = 11;
   CHECK(explore::frontier_target(m.map, 0.6, aims, 1, visits, steps, &gain)->aim == m.at(4, 1));
+}
+
+TEST_CASE("metric sweep: a leg's rest observes nothing only over ground seen and a line seen free") {
+  // A leg along the middle row from (1, 1) east to (5, 1), for a body of radius 0.09 m (it
+  // overlaps the rows either side by 0.04 m).
+  const auto adds_nothing = [](const std::vector<std::string> &rows) {
+    const PictureMap m(rows);
+    const explore::BodyView view{
+        m.map, 0.09, [&](std::size_t n) { return !m.map.unobserved_at(n) && m.map.probability_at(n) >= 0.5; },
+        [&](std::size_t n) { return !m.map.unobserved_at(n) && m.map.probability_at(n) < 0.5; }};
+    return explore::body_path_adds_nothing(view, m.map.centre_of({1, 1}), m.map.centre_of({5, 1}));
+  };
+  CHECK(adds_nothing({".......", ".......", "......."}));
+  CHECK(adds_nothing({"...#...", ".......", "......."}));   // seen occupied beside the line: nothing to learn
+  CHECK(!adds_nothing({"... ...", ".......", "......."}));  // unobserved under the body's side
+  CHECK(!adds_nothing({".......", "...#...", "......."}));  // on the line: the body may find it open
+  CHECK(!adds_nothing({".......", "..... .", "......."}));  // the leg's end unobserved
 }

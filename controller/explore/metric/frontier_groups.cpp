@@ -42,6 +42,19 @@ std::size_t label(const sensing::MetricMap &map, const std::vector<bool> &in, co
   return static_cast<std::size_t>(next);
 }
 
+// Whether a body centred on a cell open to it (not closed_to_body) could cover cell n: n is
+// one, or beside one (8-neighbours: within the body's radius and half a cell's diagonal of its
+// centre, as the judge's reach has it).
+bool body_covers(const sensing::MetricMap &map, const std::vector<bool> &closed_to_body, std::size_t n) {
+  if (!closed_to_body[n]) return true;
+  const MetricCell c = map.cell_of_index(n);
+  for (const auto &d : kEight) {
+    const MetricCell nb{c.i + d.first, c.j + d.second};
+    if (map.contains(nb) && !closed_to_body[map.index(nb)]) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<bool> &frontier, std::size_t min_cells,
@@ -67,7 +80,7 @@ FrontierGroups group_frontier(const sensing::MetricMap &map, const std::vector<b
     if (!frontier[n]) continue;
     const auto k = static_cast<std::size_t>(g.group_of[n]);
     if (region_frontier[static_cast<std::size_t>(region_of[n])] >= min_cells) g.enclosed[k] = false;
-    if (closed_to_body != nullptr && !(*closed_to_body)[n]) g.no_room[k] = false;
+    if (closed_to_body != nullptr && body_covers(map, *closed_to_body, n)) g.no_room[k] = false;
   }
   return g;
 }

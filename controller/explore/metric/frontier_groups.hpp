@@ -10,11 +10,14 @@
 //              min_cells: unobserved ground behind occupied cells all round save a gap narrower
 //              than the minimum (an obstacle's inside seen through a gap in its face). A look
 //              through the gap observes the gap's cells, not the inside.
-//   no room    a group none of whose cells the body could stand on (each within the body's
-//              radius of a cell seen occupied, the planner's closed cells): the unobserved inside
-//              of an obstacle behind a face, a sliver between two faces. The judge counts a cell
-//              as reachable only where the body clear of the occupied cells can go, so a look
-//              there observes no reachable ground, whatever it finds.
+//   no room    a group none of whose cells the body could cover: each cell and its eight
+//              neighbours closed to the body (within its radius of a cell seen occupied, the
+//              planner's closed cells): the unobserved inside of an obstacle behind a face, a
+//              sliver between two faces. The judge counts a cell as reachable only where the
+//              body clear of the occupied cells can cover it (from a centre in a neighbouring
+//              cell at most), so a look there observes no reachable ground, whatever it finds.
+//              A cell the body covers without standing on it (in a corner the arcs of a sonar
+//              closed, on the grid's edge) has room.
 //   beyond reach  a group a caller that plans finds none of whose cells lies beside a cell the
 //              robot reaches (the metric controller sets none: without their probes the IR
 //              set-ups ended short of the floor behind their arcs).

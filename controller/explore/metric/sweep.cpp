@@ -44,6 +44,26 @@ std::optional<MetricCell> first_unobserved_past(const BodyView &view, MetricCell
   return std::nullopt;
 }
 
+// Whether `holds` holds for every cell a body centred at p overlaps (a cell off the grid: no).
+bool all_cells_under(const BodyView &view, Point p, const std::function<bool(std::size_t)> &holds) {
+  const double r = view.body_radius_m;
+  const sensing::MetricMap &map = view.map;
+  const auto lo = map.cell_at({p.x_m - r, p.y_m - r});
+  const auto hi = map.cell_at({p.x_m + r, p.y_m + r});
+  if (!lo || !hi) return false;
+  for (int j = lo->j; j <= hi->j; ++j) {
+    for (int i = lo->i; i <= hi->i; ++i) {
+      const Point c = map.centre_of({i, j});
+      const double h = map.cell_m() / 2;
+      const double gx = std::max(0.0, std::abs(p.x_m - c.x_m) - h);
+      const double gy = std::max(0.0, std::abs(p.y_m - c.y_m) - h);
+      if (std::hypot(gx, gy) >= r) continue;  // the square is out of the body's reach
+      if (!holds(map.index({i, j}))) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool body_clear_at_edge(const BodyView &view, Point p) {
@@ -56,21 +76,18 @@ bool body_clear_at_edge(const BodyView &view, Point p) {
 }
 
 bool body_clear_at(const BodyView &view, Point p) {
-  const double r = view.body_radius_m;
-  const sensing::MetricMap &map = view.map;
-  if (!body_clear_at_edge(view, p)) return false;
-  const auto lo = map.cell_at({p.x_m - r, p.y_m - r});
-  const auto hi = map.cell_at({p.x_m + r, p.y_m + r});
-  if (!lo || !hi) return false;
-  for (int j = lo->j; j <= hi->j; ++j) {
-    for (int i = lo->i; i <= hi->i; ++i) {
-      const Point c = map.centre_of({i, j});
-      const double h = map.cell_m() / 2;
-      const double gx = std::max(0.0, std::abs(p.x_m - c.x_m) - h);
-      const double gy = std::max(0.0, std::abs(p.y_m - c.y_m) - h);
-      if (std::hypot(gx, gy) >= r) continue;  // the square is out of the body's reach
-      if (view.seen_occupied(map.index({i, j}))) return false;
-    }
+  return body_clear_at_edge(view, p) && all_cells_under(view, p, [&](std::size_t n) { return !view.seen_occupied(n); });
+}
+
+bool body_path_adds_nothing(const BodyView &view, Point from, Point to) {
+  const double length_m = std::hypot(to.x_m - from.x_m, to.y_m - from.y_m);
+  const int samples = 1 + static_cast<int>(std::ceil(length_m / (view.map.cell_m() / 2)));
+  for (int k = 0; k <= samples; ++k) {
+    const double t = static_cast<double>(k) / samples;
+    const Point p{from.x_m + t * (to.x_m - from.x_m), from.y_m + t * (to.y_m - from.y_m)};
+    const auto c = view.map.cell_at(p);
+    if (!c || !view.covered_or_seen_free(view.map.index(*c))) return false;
+    if (!all_cells_under(view, p, [&](std::size_t n) { return !view.map.unobserved_at(n); })) return false;
   }
   return true;
 }

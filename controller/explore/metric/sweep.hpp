@@ -3,7 +3,8 @@
 // ground for a set-up whose nothing-seen marks nothing (the sonar cone), and the probes every
 // set-up drives when no frontier cell has a target (explore/metric/frontier.hpp). A leg goes
 // from a cell reached through seen-free cells (`from`) onto a cell `aim`, ending at `end`;
-// the controller (robot/metric/controller.hpp) drives it and stops it on a touch or a wedge.
+// the controller (robot/metric/controller.hpp) drives it and stops it on a touch or a wedge,
+// or once the rest of it would observe nothing (body_path_adds_nothing).
 //
 //   sweep leg  to the nearest unobserved cell not yet swept beside one covered or seen free
 //              (by steps from the robot): onto its centre and on straight over unobserved
@@ -48,6 +49,12 @@ struct SweepLeg {
 // Whether a body centred at p stays within the grid; and overlaps no cell seen occupied.
 bool body_clear_at_edge(const BodyView &view, mapping::Point p);
 bool body_clear_at(const BodyView &view, mapping::Point p);
+
+// Whether the body driven straight from `from` to `to` would observe nothing more: every cell
+// its centre would cross covered or seen free, and every cell it would overlap observed. A
+// cell seen occupied on its line keeps a leg going (the body may find an arc's cell open), as
+// does an unobserved one it would overlap.
+bool body_path_adds_nothing(const BodyView &view, mapping::Point from, mapping::Point to);
 
 // The sweep leg (above), or none in the body's reach. grown: the planning map without the
 // unobserved cells; steps: from the robot per cell (-1 not reached); swept: cells a leg aimed

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "plan/metric/wavefront.hpp"
@@ -34,12 +35,18 @@ Motion MetricController::sweep(const explore::SweepLeg &leg, const std::vector<b
   const auto path = plan::descend(g, wave_, here);
   path_ = path ? *path : std::vector<std::size_t>{here};
   bool stopped = false;
-  Motion m = drive_path_corners(&stopped);
+  // The leg ends where the rest would observe nothing (explore::body_path_adds_nothing): on
+  // the way to its start, the whole leg; on the leg, what is left of it.
+  const explore::BodyView view = body_view();
+  const mapping::Point start = map_.centre_of(map_.cell_of_index(leg.from));
+  const std::function<bool()> leg_adds_nothing = [&] { return explore::body_path_adds_nothing(view, start, leg.end); };
+  Motion m = drive_path_corners(&stopped, &leg_adds_nothing);
   if (m == Motion::ok && !stopped && map_.index(robot_cell()) == leg.from) {
     // Onto unobserved ground: a return ahead about to touch the body stops it, as does a
     // wedge on what the echoes missed.
     path_.push_back(leg.aim);
-    m = go_to(leg.end, StopWhen::touching, &stopped);
+    const std::function<bool()> adds_nothing = [&] { return explore::body_path_adds_nothing(view, position_, leg.end); };
+    m = go_to(leg.end, StopWhen::touching, &stopped, &adds_nothing);
   }
   if (m == Motion::no_progress) {
     stopped = true;
