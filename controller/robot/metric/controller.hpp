@@ -22,7 +22,7 @@
 //              (explore/metric/frontier.hpp: a cell within view_m of a frontier cell that
 //              sees it, the least path against the gain of its group; groups under
 //              min_frontier_m, enclosed ones and those none of whose cells the body could
-//              stand on are no targets, explore/metric/frontier_groups.hpp; with the lidar a
+//              cover are no targets, explore/metric/frontier_groups.hpp; with the lidar a
 //              frontier cell borders a cell no beam has ended in), drive the path, then turn
 //              a full turn there scanning; the drive ends early once its frontier cell is no
 //              longer one (seen on the way). A
@@ -181,7 +181,8 @@ class MetricController {
   std::optional<explore::SweepLeg> next_sweep_leg(const std::vector<std::int32_t> &steps,
                                                   const std::vector<bool> &swept, bool probe_only);
   // Drives to leg.from through `blocked`, then to leg.end; a touch or a wedge stops the leg
-  // and the robot backs off.
+  // and the robot backs off; the drive ends once the rest of the leg would observe nothing
+  // (explore::body_path_adds_nothing).
   Motion sweep(const explore::SweepLeg &leg, const std::vector<bool> &blocked);
   // A sweep or wavefront leg stopped by a touch or a wedge: the cell just ahead of the body's
   // rim is observed occupied (MetricMap::observe_contact) and stays so for planning; false when

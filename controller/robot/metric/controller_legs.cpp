@@ -45,7 +45,9 @@ Motion MetricController::sweep(const explore::SweepLeg &leg, const std::vector<b
     // Onto unobserved ground: a return ahead about to touch the body stops it, as does a
     // wedge on what the echoes missed.
     path_.push_back(leg.aim);
-    const std::function<bool()> adds_nothing = [&] { return explore::body_path_adds_nothing(view, position_, leg.end); };
+    const std::function<bool()> adds_nothing = [&] {
+      return explore::body_path_adds_nothing(view, position_, leg.end);
+    };
     m = go_to(leg.end, StopWhen::touching, &stopped, &adds_nothing);
   }
   if (m == Motion::no_progress) {
