@@ -198,6 +198,7 @@ std::vector<std::string> needs(const std::string &path, const std::string &scrat
   if (path == "scan") return {lab, "--pose", "0.5,0.5,0"};
   if (path == "convert") return {lab, scratch + "/out.num"};
   if (path == "generate") return {"4x4"};
+  if (path == "generate arena") return {"3x3"};
   if (path == "map-log") return {std::string(TEST_DATA_DIR) + "/logs/room_bump.csv", "--boundary", "0,6,0,6"};
   return {};
 }

@@ -249,7 +249,10 @@ const std::map<std::string, std::string, std::less<>> &examples() {
       {"convert", "  maze_mapper convert maze.txt maze.num\n"
                   "  maze_mapper convert maze.txt maze.wbt      # a Webots world"},
       {"generate", "  maze_mapper generate 8x8 --seed 3 -o maze.txt\n"
-                   "  maze_mapper generate 16x16 --loops 0.1 --algorithm kruskal"},
+                   "  maze_mapper generate 16x16 --loops 0.1 --algorithm kruskal\n"
+                   "  maze_mapper generate arena 3x3 --obstacles 4 --sides 0.2,0.8 -o arena.room"},
+      {"generate arena", "  maze_mapper generate arena 3x3 --obstacles 4 --sides 0.2,0.8 -o arena.room\n"
+                         "  maze_mapper generate arena 10x10 --rotated --seed 7 -o course.xml"},
       {"scan", "  maze_mapper scan maze.txt --pose 0.5,0.5,90\n"
                "  maze_mapper scan maze.txt --pose 1.5,0.5,0 --noise 0"},
       {"robot", "  maze_mapper robot                        # the profiles\n"

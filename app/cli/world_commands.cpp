@@ -1,5 +1,6 @@
 // The world subcommands: worlds, show, convert, generate.
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -7,7 +8,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -15,12 +18,17 @@
 #include "app/cli/cli_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/report/webots_export.hpp"
+#include "app/run/option_values.hpp"
 #include "app/run/shipped_worlds.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/parse_number.hpp"
 #include "common/standard_streams.hpp"
 #include "maze/formats/geometry_text.hpp"
 #include "maze/generate/generator.hpp"
+#include "maze/generate/solids_generator.hpp"
+#include "maze/formats/solids_format.hpp"
+#include "maze/world/world_files.hpp"
 #include "maze/formats/text_map.hpp"
 #include "maze/world/world.hpp"
 #include "maze/formats/xml_format.hpp"
@@ -163,22 +171,91 @@ void add_convert_command(CLI::App &cli, CommandContext &context) {
   });
 }
 
+namespace {
+
+// "WxH" in metres ("3x3", "10x6.5"): two finite numbers; common::InputError otherwise (the
+// generator checks their range).
+std::array<double, 2> parse_arena_size(const std::string &text) {
+  const std::size_t x = text.find_first_of("xX");
+  const std::string_view whole(text);
+  const bool split = x != std::string::npos;
+  const std::optional<double> w = split ? common::parse_number<double>(whole.substr(0, x)) : std::nullopt;
+  const std::optional<double> h = split ? common::parse_number<double>(whole.substr(x + 1)) : std::nullopt;
+  common::require_input(w && h, fmt::format("an arena's size is WxH in metres, e.g. 3x3 (got '{}')", text));
+  return {*w, *h};
+}
+
+// `generate arena`: rectangles placed at random on a floor (maze::generate_arena), as a room
+// file on standard output or written as OUT's extension says (.room or .xml).
+void add_generate_arena_command(CLI::App &generate, CommandContext &context) {
+  auto *cmd = generate.add_subcommand("arena", "generate a random arena of rectangles and print it as a room file");
+  struct Args {
+    std::string size, sides, out;
+    maze::ArenaGeneration generation;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("WxH", args->size,
+                  fmt::format("the floor in metres, e.g. 3x3 (1 to {:g} each way), walled all round", maze::kMaxArenaSide_m))
+      ->required();
+  add_seed_option(*cmd, args->generation.seed, "the arena; the same seed gives the same arena");
+  cmd->add_option("--obstacles", args->generation.obstacles,
+                  fmt::format("how many rectangles (default {}; fewer when the start or the goal leaves no room)",
+                              args->generation.obstacles));
+  cmd->add_option("--sides", args->sides,
+                  fmt::format("MIN,MAX: each rectangle's sides in metres, uniform between (default {:g},{:g})",
+                              args->generation.min_side_m, args->generation.max_side_m));
+  cmd->add_flag("--rotated", args->generation.rotated, "rectangles at random angles (default axis-aligned)");
+  cmd->add_option("-o,--out", args->out, "FILE: write there (.room or .xml, the course's format) instead of standard output");
+  cmd->callback([&generate, args, &context] {
+    // A maze's option typed before `arena` would do nothing: refused before anything is written.
+    for (const CLI::Option *option : generate.get_options()) {
+      common::require_input(option->count() == 0 || option->get_name() == "--help",
+                            fmt::format("{} is the maze's, given before `arena`; an arena's options follow `arena`",
+                                        option->get_name()));
+    }
+    const std::array<double, 2> size = parse_arena_size(args->size);
+    args->generation.width_m = size[0];
+    args->generation.height_m = size[1];
+    if (!args->sides.empty()) {
+      const std::vector<double> sides = parse_number_list(args->sides, "--sides", 2);
+      args->generation.min_side_m = sides[0];
+      args->generation.max_side_m = sides[1];
+    }
+    const maze::Arena arena = maze::generate_arena(args->generation);
+    if (args->out.empty()) {
+      std::cout << maze::write_room(arena);
+    } else {
+      maze::save_arena(arena, args->out);  // .room or .xml; any other format is refused
+    }
+    context.status = 0;
+  });
+}
+
+}  // namespace
+
 void add_generate_command(CLI::App &cli, CommandContext &context) {
-  auto *cmd = cli.add_subcommand("generate", "generate a random maze and print it as a text map");
+  auto *cmd =
+      cli.add_subcommand("generate", "generate a random maze and print it as a text map (`generate arena`: an arena)");
+  cmd->require_subcommand(0, 1);
+  add_generate_arena_command(*cmd, context);
   struct Args {
     std::string size, algorithm = "dfs", out;
     std::uint64_t seed = common::kDefaultSeed;
     double loops = 0.0;
   };
   auto args = std::make_shared<Args>();
-  cmd->add_option("WxH", args->size, "maze size in cells, e.g. 16x16 (1 to 4096 each way)")->required();
+  // Required unless `generate arena` is the command (checked below: CLI11 would ask for it there too).
+  cmd->add_option("WxH", args->size, "maze size in cells, e.g. 16x16 (1 to 4096 each way)");
   add_seed_option(*cmd, args->seed, "the maze; the same seed gives the same maze");
   cmd->add_option("--loops", args->loops,
                   fmt::format("fraction (0 to 1) of the perfect maze's interior walls removed (default {})", args->loops));
   cmd->add_option("--algorithm", args->algorithm, fmt::format("dfs, kruskal or prim (default {})", args->algorithm));
   cmd->add_option("-o,--out", args->out, "FILE: write there (format by extension) instead of standard output");
   add_old_spelling(*cmd, "--output", "-o/--out", [args](const std::string &file) { args->out = file; });
-  cmd->callback([args, &context] {
+  cmd->callback([cmd, args, &context] {
+    if (cmd->got_subcommand("arena")) return;
+    common::require_input(!args->size.empty(),
+                          "generate needs the maze's size WxH, e.g. 16x16 (or `generate arena WxH`)");
     const maze::Cell size = maze::parse_size(args->size);
     maze::GeneratorOptions options{size.x, size.y, args->seed, args->loops, maze::parse_algorithm(args->algorithm)};
     options.validate();
