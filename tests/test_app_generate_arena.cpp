@@ -6,12 +6,14 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "common/error.hpp"
 #include "maze/formats/solids_format.hpp"
 #include "maze/generate/solids_generator.hpp"
 #include "maze/world/world.hpp"
+#include "maze/world/world_files.hpp"
 
 namespace {
 
@@ -46,17 +48,22 @@ TEST_CASE("generate arena prints the library's arena for the seed, sides and cou
   CHECK(test_cli::run({"generate", "arena", "6x4.5"}).out == maze::write_room(maze::generate_arena(g)));
 }
 
-TEST_CASE("generate arena -o writes a .room or the course's .xml that loads back as the same arena") {
+TEST_CASE("generate arena -o writes the room file it prints, or the course's .xml, each loading as the arena") {
   const test_cli::TempDir dir("generate_arena");
   std::filesystem::create_directories(dir.path);
+  const std::vector<std::string> args{"generate", "arena", "3x3", "--obstacles", "4", "--seed", "2"};
+  const std::string printed = test_cli::run(args).out;
   for (const char *name : {"a.room", "a.xml"}) {
     const std::string file = (dir.path / name).string();
-    CHECK(test_cli::run({"generate", "arena", "3x3", "--obstacles", "4", "--seed", "2", "-o", file}).out.empty());
+    std::vector<std::string> to_file = args;
+    to_file.insert(to_file.end(), {"-o", file});
+    CHECK(test_cli::run(to_file).out.empty());
     const maze::World world = maze::load_world(file);
     REQUIRE(!world.on_lattice());
     CHECK(world.arena().obstacles.size() == 4);
     CHECK(world.arena().width_m() == doctest::Approx(3.0));
   }
+  CHECK(maze::read_file((dir.path / "a.room").string()) == printed);
 }
 
 TEST_CASE("generate arena refuses a size, a list or a file format it cannot take, in one line, writing nothing") {
