@@ -75,6 +75,8 @@ TEST_CASE("generate arena refuses a size, a list or a file format it cannot take
   CHECK(refusal({"generate", "arena", "3x3", "--sides", "0.8"}) == "error: --sides needs 2 numbers (got 1)");
   CHECK(refusal({"generate", "arena", "3x3", "--sides", "0.8,0.2"}) ==
         "error: obstacle sides need 0 < min <= max (got 0.8 and 0.2 m)");
+  CHECK(refusal({"generate", "arena", "3x3", "--sides", "0.2,inf"}) ==
+        "error: obstacle sides need 0 < min <= max (got 0.2 and inf m)");
   const std::string text_map = (dir.path / "a.txt").string();
   CHECK(refusal({"generate", "arena", "3x3", "-o", text_map}) ==
         "error: a text map file holds a grid maze; an arena is written as .room or .xml");

@@ -1,5 +1,6 @@
 #include "maze/generate/solids_generator.hpp"
 
+#include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -22,7 +23,8 @@ Arena generate_arena(const ArenaGeneration &g) {
   if (g.obstacles < 0 || static_cast<std::size_t>(g.obstacles) > kMaxObstacles) {
     throw common::InputError(fmt::format("a generated arena has 0 to {} obstacles (got {})", kMaxObstacles, g.obstacles));
   }
-  if (!(g.min_side_m > 0.0 && g.min_side_m <= g.max_side_m) || !(g.clearance_m >= 0.0)) {
+  const bool sides_ok = g.min_side_m > 0.0 && g.min_side_m <= g.max_side_m && std::isfinite(g.max_side_m);
+  if (!sides_ok || !(g.clearance_m >= 0.0)) {
     throw common::InputError(fmt::format("obstacle sides need 0 < min <= max (got {} and {} m)", g.min_side_m,
                                          g.max_side_m));
   }

@@ -24,7 +24,7 @@ struct ArenaGeneration {
 // The arena: rectangles with centres uniform over the boundary, each drawn again (up to 100
 // times) while it comes within the clearance of the start or the goal. Validated. Throws
 // common::InputError for a boundary smaller than 1 x 1 m, a negative count, or sides that are
-// not 0 < min <= max.
+// not finite with 0 < min <= max.
 Arena generate_arena(const ArenaGeneration &options);
 
 }  // namespace maze
